@@ -1,0 +1,55 @@
+using System.CommandLine;
+using System.Reflection;
+
+namespace Ballistic.Cli;
+
+/// <summary>
+/// The <c>ballistic</c> command line: the root command and its subcommands, runnable in-process with any writers
+/// so that tests can drive it exactly as a user would.
+/// </summary>
+public static class BallisticCli
+{
+    /// <summary>The one-paragraph description shown at the top of <c>--help</c>.</summary>
+    public const string Description =
+        "Ballistic: plans and animates sequences of ballistic jumps for legged characters through 3D levels " +
+        "(Y up, metres, seconds, gravity (0, -9.81, 0)).";
+
+    /// <summary>The tool's version, from the assembly's informational version.</summary>
+    public static string Version =>
+        typeof(BallisticCli).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
+        ?? typeof(BallisticCli).Assembly.GetName().Version?.ToString()
+        ?? "unknown";
+
+    /// <summary>Builds the root command with every subcommand.</summary>
+    public static RootCommand BuildRootCommand()
+    {
+        RootCommand root = new(Description);
+
+        // The stock --version reports the entry assembly, which is the test host when the tool runs in-process.
+        foreach (Option option in root.Options)
+        {
+            if (option is VersionOption)
+            {
+                option.Action = new PrintVersionAction();
+            }
+        }
+
+        return root;
+    }
+
+    /// <summary>
+    /// Parses <paramref name="args"/> and runs the chosen command, writing normal output to <paramref name="output"/>
+    /// and errors to <paramref name="error"/>.
+    /// </summary>
+    /// <returns>The process exit code: 0 on success, non-zero on any error.</returns>
+    public static int Run(string[] args, TextWriter output, TextWriter error)
+    {
+        ArgumentNullException.ThrowIfNull(args);
+        ArgumentNullException.ThrowIfNull(output);
+        ArgumentNullException.ThrowIfNull(error);
+
+        RootCommand root = BuildRootCommand();
+        ParseResult parsed = root.Parse(args);
+        return parsed.Invoke(new InvocationConfiguration { Output = output, Error = error });
+    }
+}

@@ -1,0 +1,14 @@
+using System.Reflection;
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Addon;
+
+/// <summary>Facts about the planner library the addon runs on, shown in the editor and checked by tests.</summary>
+public static class BallisticAddonInfo
+{
+    /// <summary>The informational version of the loaded <c>Ballistic.Planner</c> assembly.</summary>
+    public static string PlannerVersion =>
+        typeof(Aabb).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
+        ?? typeof(Aabb).Assembly.GetName().Version?.ToString()
+        ?? "unknown";
+}
