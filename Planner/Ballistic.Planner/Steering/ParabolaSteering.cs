@@ -1,0 +1,268 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Planner.Steering;
+
+/// <summary>
+/// The closed-form parabola steering method (VALIDSTEER): links two root poses by a ballistic arc whose takeoff
+/// velocity lies in the takeoff friction cone, whose reversed landing velocity lies in the landing cone, whose
+/// speeds respect the character's limits, and along which the trunk box never touches the level.
+/// </summary>
+/// <remarks>
+/// In the vertical plane through both poses, with horizontal distance X and rise Z, a takeoff angle α above the
+/// horizontal fixes the parabola: ẋ² = g X² / (2 (X tan α − Z)). Every constraint is an interval of α, computed in
+/// closed form; the midpoint of their intersection is tried first, then fixed fractions of it when the trunk
+/// collides or the apex is too high (Campana et al. 2016; planning notes §1).
+/// </remarks>
+public sealed class ParabolaSteering
+{
+    /// <summary>Fractions of the admissible angle interval tried in order.</summary>
+    private static readonly double[] Fractions = [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875];
+
+    private readonly ICollisionWorld? _world;
+
+    /// <summary>Creates a steering method.</summary>
+    /// <param name="limits">Speed limits, gravity and tolerances.</param>
+    /// <param name="trunkHalfExtents">Half extents (metres) of the trunk box W0, in the trunk frame.</param>
+    /// <param name="world">The level; <c>null</c> for an empty world (no collision checks).</param>
+    public ParabolaSteering(SteeringLimits limits, Vector3 trunkHalfExtents, ICollisionWorld? world)
+    {
+        ArgumentNullException.ThrowIfNull(limits);
+        if (!(MathF.Min(trunkHalfExtents.X, MathF.Min(trunkHalfExtents.Y, trunkHalfExtents.Z)) > 0f))
+        {
+            throw new ArgumentOutOfRangeException(nameof(trunkHalfExtents), trunkHalfExtents, "Trunk half extents must be positive.");
+        }
+
+        Limits = limits;
+        TrunkHalfExtents = trunkHalfExtents;
+        _world = world;
+    }
+
+    /// <summary>Speed limits, gravity and tolerances in force.</summary>
+    public SteeringLimits Limits { get; }
+
+    /// <summary>Half extents of the trunk box W0, metres.</summary>
+    public Vector3 TrunkHalfExtents { get; }
+
+    /// <summary>Finds a jump from <paramref name="from"/> to <paramref name="to"/>, or the reason there is none.</summary>
+    /// <param name="from">Takeoff root pose.</param>
+    /// <param name="fromCone">Centroidal friction cone at takeoff; the takeoff velocity must lie in it.</param>
+    /// <param name="to">Landing root pose.</param>
+    /// <param name="toCone">Centroidal friction cone at landing; the reversed landing velocity must lie in it.</param>
+    public SteeringResult Steer(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone)
+    {
+        SteeringFailure failure = TryAngleInterval(from.Position, fromCone, to.Position, toCone, out AngleInterval interval);
+        if (failure != SteeringFailure.None)
+        {
+            return SteeringResult.Fail(failure);
+        }
+
+        // The apex rises with α: if even the flattest admissible arc is too high, none will do.
+        if (ApexHeight(from.Position, interval, interval.Min) > Limits.MaxApexHeight)
+        {
+            return SteeringResult.Fail(SteeringFailure.ApexTooHigh);
+        }
+
+        bool anyLowEnough = false;
+        foreach (double fraction in Fractions)
+        {
+            double alpha = interval.Min + (fraction * (interval.Max - interval.Min));
+            if (ApexHeight(from.Position, interval, alpha) > Limits.MaxApexHeight)
+            {
+                continue;
+            }
+
+            anyLowEnough = true;
+            BallisticArc arc = MakeArc(from, to, interval, alpha);
+            if (_world is null || IsCollisionFree(arc))
+            {
+                return new SteeringResult(SteeringFailure.None, arc);
+            }
+        }
+
+        return SteeringResult.Fail(anyLowEnough ? SteeringFailure.Collision : SteeringFailure.ApexTooHigh);
+    }
+
+    /// <summary>
+    /// The interval of takeoff angles α (radians above the horizontal, toward the landing) that satisfy the cone and
+    /// speed constraints, ignoring collisions and the apex bound.
+    /// </summary>
+    public SteeringFailure TryAngleInterval(Vector3 from, in FrictionCone fromCone, Vector3 to, in FrictionCone toCone, out AngleInterval interval)
+    {
+        interval = default;
+        double g = Limits.Gravity;
+        double dx = (double)to.X - from.X;
+        double dz = (double)to.Z - from.Z;
+        double x = Math.Sqrt((dx * dx) + (dz * dz));
+        double z = (double)to.Y - from.Y;
+        if (!(x >= Limits.MinHorizontalDistance))
+        {
+            return SteeringFailure.TooClose;
+        }
+
+        Vector3 heading = new((float)(dx / x), 0f, (float)(dz / x));
+
+        // Through the goal: tan α > Z / X.
+        double lo = Math.Atan2(z, x) + Limits.AngleMargin;
+        double hi = (Math.PI / 2.0) - Limits.AngleMargin;
+
+        // Takeoff cone cut by the vertical plane: α ∈ [β₁ − δ₁, β₁ + δ₁].
+        if (!TryCut(fromCone, heading, out double beta1, out double delta1))
+        {
+            return SteeringFailure.TakeoffConeMissesPlane;
+        }
+
+        lo = Math.Max(lo, beta1 - delta1);
+        hi = Math.Min(hi, beta1 + delta1);
+
+        // Landing cone: the reversed landing velocity at angle λ + π must lie in the cone, so λ lies in the cut of
+        // the flipped axis; tan λ = 2Z/X − tan α decreases with α.
+        if (!TryCut(toCone, heading, out double beta2, out double delta2))
+        {
+            return SteeringFailure.LandingConeMissesPlane;
+        }
+
+        double flipped = beta2 >= 0.0 ? beta2 - Math.PI : beta2 + Math.PI;
+        double lambdaLo = Math.Max(flipped - delta2, -Math.PI / 2.0);
+        double lambdaHi = Math.Min(flipped + delta2, Math.PI / 2.0);
+        if (!(lambdaLo < lambdaHi))
+        {
+            return SteeringFailure.LandingCone;
+        }
+
+        double slope = 2.0 * z / x;
+        if (lambdaHi < Math.PI / 2.0)
+        {
+            lo = Math.Max(lo, Math.Atan(slope - Math.Tan(lambdaHi)));
+        }
+
+        if (lambdaLo > -Math.PI / 2.0)
+        {
+            hi = Math.Min(hi, Math.Atan(slope - Math.Tan(lambdaLo)));
+        }
+
+        // Takeoff speed: g X² u² − 2 X V² u + g X² + 2 Z V² ≤ 0 with u = tan α.
+        if (!TrySpeedBounds((double)Limits.TakeoffSpeedMax * Limits.TakeoffSpeedMax, g, x, z, out double uLo, out double uHi))
+        {
+            return SteeringFailure.TakeoffSpeed;
+        }
+
+        lo = Math.Max(lo, Math.Atan(uLo));
+        hi = Math.Min(hi, Math.Atan(uHi));
+
+        // Landing speed: |V_imp|² = |V₀|² − 2 g Z ≤ V_f², the same quadratic with W² = V_f² + 2 g Z.
+        double w2 = ((double)Limits.LandingSpeedMax * Limits.LandingSpeedMax) + (2.0 * g * z);
+        if (w2 <= 0.0 || !TrySpeedBounds(w2, g, x, z, out uLo, out uHi))
+        {
+            return SteeringFailure.LandingSpeed;
+        }
+
+        lo = Math.Max(lo, Math.Atan(uLo));
+        hi = Math.Min(hi, Math.Atan(uHi));
+
+        if (!(lo < hi))
+        {
+            return SteeringFailure.EmptyAngleInterval;
+        }
+
+        interval = new AngleInterval(lo, hi, x, z, heading);
+        return SteeringFailure.None;
+    }
+
+    /// <summary>True when no trunk box sampled along the arc touches the level.</summary>
+    /// <remarks>
+    /// Samples are spaced in time so that no point of the trunk moves more than its smallest half extent between
+    /// two of them (translation at the fastest speed of the arc plus rotation of its farthest corner), so the
+    /// check cannot step over an obstacle as thin as a single triangle.
+    /// </remarks>
+    public bool IsCollisionFree(in BallisticArc arc)
+    {
+        if (_world is null)
+        {
+            return true;
+        }
+
+        float spacing = MathF.Min(TrunkHalfExtents.X, MathF.Min(TrunkHalfExtents.Y, TrunkHalfExtents.Z));
+        float speed = MathF.Max(arc.TakeoffVelocity.Length(), arc.LandingVelocity.Length());
+        float dot = MathF.Min(1f, MathF.Abs(Quaternion.Dot(arc.StartRotation, arc.EndRotation)));
+        float turn = 2f * MathF.Acos(dot);
+        float cornerSpeed = arc.FlightTime > 0f ? turn / arc.FlightTime * TrunkHalfExtents.Length() : 0f;
+        float pointSpeed = speed + cornerSpeed;
+        int steps = Math.Max(1, (int)MathF.Ceiling(arc.FlightTime * pointSpeed / spacing));
+        for (int i = 0; i <= steps; i++)
+        {
+            float t = arc.FlightTime * i / steps;
+            RootPose pose = arc.PoseAt(t);
+            if (_world.Overlaps(new OrientedBox(pose.Position, TrunkHalfExtents, pose.Rotation)))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private BallisticArc MakeArc(in RootPose from, in RootPose to, in AngleInterval interval, double alpha)
+    {
+        double g = Limits.Gravity;
+        double u = Math.Tan(alpha);
+        double xDot = Math.Sqrt(g * interval.X * interval.X / (2.0 * ((interval.X * u) - interval.Z)));
+        double flightTime = interval.X / xDot;
+        Vector3 velocity = new(
+            (float)(xDot * interval.Heading.X),
+            (float)(xDot * u),
+            (float)(xDot * interval.Heading.Z));
+        return new BallisticArc(from, to, velocity, (float)flightTime, Limits.Gravity);
+    }
+
+    private double ApexHeight(Vector3 from, in AngleInterval interval, double alpha)
+    {
+        double g = Limits.Gravity;
+        double u = Math.Tan(alpha);
+        double xDot2 = g * interval.X * interval.X / (2.0 * ((interval.X * u) - interval.Z));
+        double vy = Math.Sqrt(xDot2) * u;
+        double flightTime = interval.X / Math.Sqrt(xDot2);
+        double tApex = Math.Clamp(vy / g, 0.0, flightTime);
+        return from.Y + (vy * tApex) - (0.5 * g * tApex * tApex);
+    }
+
+    /// <summary>
+    /// Cuts the cone by the vertical plane spanned by the heading and +Y. With the axis at in-plane angle β and
+    /// in-plane length ρ, directions at angle γ in the plane lie in the cone when |γ − β| ≤ δ = acos(cos φ / ρ).
+    /// </summary>
+    private bool TryCut(in FrictionCone cone, Vector3 heading, out double beta, out double delta)
+    {
+        double nTheta = Vector3.Dot(cone.Axis, heading);
+        double nUp = cone.Axis.Y;
+        double rho = Math.Sqrt((nTheta * nTheta) + (nUp * nUp));
+        beta = Math.Atan2(nUp, nTheta);
+        double cosPhi = 1.0 / Math.Sqrt(1.0 + ((double)cone.Mu * cone.Mu));
+        if (rho <= cosPhi)
+        {
+            delta = 0.0;
+            return false;
+        }
+
+        delta = Math.Acos(cosPhi / rho);
+        return delta >= Limits.MinConeCutHalfAngle;
+    }
+
+    /// <summary>Roots of g X² u² − 2 X S u + g X² + 2 Z S ≤ 0 for the squared speed bound S.</summary>
+    private static bool TrySpeedBounds(double speed2, double g, double x, double z, out double uLo, out double uHi)
+    {
+        double discriminant = (speed2 * speed2) - (g * ((g * x * x) + (2.0 * z * speed2)));
+        if (discriminant < 0.0)
+        {
+            uLo = uHi = 0.0;
+            return false;
+        }
+
+        double root = Math.Sqrt(discriminant);
+        uLo = (speed2 - root) / (g * x);
+        uHi = (speed2 + root) / (g * x);
+        return true;
+    }
+}
