@@ -1,0 +1,76 @@
+using System.Buffers.Binary;
+using System.Security.Cryptography;
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Planner.Levels;
+
+/// <summary>
+/// A level as the planner sees it: a soup of world-space triangles (metres, Y up), each with a material. Build one
+/// with <see cref="LevelBuilder"/> (raw arrays) or load a glTF file; both check the input.
+/// </summary>
+public sealed class Level
+{
+    private string? _fingerprint;
+
+    internal Level(Triangle[] triangles, int[] materialIndices, LevelMaterial[] materials, int droppedDegenerate, string source)
+    {
+        Triangles = triangles;
+        MaterialIndices = materialIndices;
+        Materials = materials;
+        DroppedDegenerateTriangles = droppedDegenerate;
+        Source = source;
+        Bounds = Aabb.Empty;
+        foreach (Triangle t in triangles)
+        {
+            Bounds = Aabb.Union(Bounds, t.Bounds);
+        }
+    }
+
+    /// <summary>The triangles, world space; none is degenerate and every coordinate is finite.</summary>
+    public IReadOnlyList<Triangle> Triangles { get; }
+
+    /// <summary>For each triangle, the index of its material in <see cref="Materials"/>.</summary>
+    public IReadOnlyList<int> MaterialIndices { get; }
+
+    /// <summary>The level's materials.</summary>
+    public IReadOnlyList<LevelMaterial> Materials { get; }
+
+    /// <summary>How many zero-area triangles the input held; they were dropped.</summary>
+    public int DroppedDegenerateTriangles { get; }
+
+    /// <summary>Where the level came from (a file path, or a name given by code).</summary>
+    public string Source { get; }
+
+    /// <summary>World bounds of all triangles.</summary>
+    public Aabb Bounds { get; }
+
+    /// <summary>
+    /// A hex SHA-256 of the triangles and their friction overrides: two levels with the same fingerprint plan the
+    /// same. Roadmap files record it so that a roadmap is never used on another level.
+    /// </summary>
+    public string Fingerprint => _fingerprint ??= ComputeFingerprint();
+
+    /// <summary>The friction of triangle <paramref name="triangle"/>: its material's override, else <paramref name="defaultFriction"/>.</summary>
+    public float FrictionOf(int triangle, float defaultFriction) =>
+        Materials[MaterialIndices[triangle]].Friction ?? defaultFriction;
+
+    private string ComputeFingerprint()
+    {
+        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+        Span<byte> buffer = stackalloc byte[40];
+        for (int i = 0; i < Triangles.Count; i++)
+        {
+            Triangle t = Triangles[i];
+            float friction = Materials[MaterialIndices[i]].Friction ?? float.NaN;
+            ReadOnlySpan<float> values = [t.A.X, t.A.Y, t.A.Z, t.B.X, t.B.Y, t.B.Z, t.C.X, t.C.Y, t.C.Z, friction];
+            for (int k = 0; k < values.Length; k++)
+            {
+                BinaryPrimitives.WriteSingleLittleEndian(buffer[(k * 4)..], values[k]);
+            }
+
+            hash.AppendData(buffer);
+        }
+
+        return Convert.ToHexStringLower(hash.GetHashAndReset());
+    }
+}
