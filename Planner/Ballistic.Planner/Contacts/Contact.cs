@@ -1,0 +1,11 @@
+using System.Numerics;
+
+namespace Ballistic.Planner.Contacts;
+
+/// <summary>An estimated contact of one limb with the level.</summary>
+/// <param name="Limb">Index of the limb in the character's limb list.</param>
+/// <param name="Position">Contact point: the centre of the limb workspace's intersection with the surface, world metres.</param>
+/// <param name="Normal">Unit surface normal at the contact, world space, pointing out of the surface.</param>
+/// <param name="Mu">Coulomb friction coefficient of the surface.</param>
+/// <param name="Surface">Id of the contact surface touched.</param>
+public readonly record struct Contact(int Limb, Vector3 Position, Vector3 Normal, float Mu, int Surface);

@@ -1,0 +1,83 @@
+using System.Numerics;
+
+namespace Ballistic.Planner.Geometry;
+
+/// <summary>
+/// Clips a triangle by an oriented box (Sutherland–Hodgman against its six face planes) and measures the part
+/// inside: the area and centroid of the intersection, used to estimate where a limb's workspace meets a surface.
+/// </summary>
+public static class BoxClipper
+{
+    /// <summary>A triangle clipped by six planes has at most 9 vertices.</summary>
+    private const int MaxVertices = 12;
+
+    /// <summary>
+    /// The area (square metres) and centroid (world metres) of the part of <paramref name="triangle"/> inside
+    /// <paramref name="box"/>. Area 0 when they do not overlap in a region of positive area.
+    /// </summary>
+    public static (float Area, Vector3 Centroid) ClipArea(in OrientedBox box, in Triangle triangle)
+    {
+        Span<Vector3> a = stackalloc Vector3[MaxVertices];
+        Span<Vector3> b = stackalloc Vector3[MaxVertices];
+        a[0] = box.ToLocal(triangle.A);
+        a[1] = box.ToLocal(triangle.B);
+        a[2] = box.ToLocal(triangle.C);
+        int count = 3;
+        Vector3 h = box.HalfExtents;
+        for (int axis = 0; axis < 3 && count > 0; axis++)
+        {
+            float limit = axis == 0 ? h.X : axis == 1 ? h.Y : h.Z;
+            count = ClipPlane(a[..count], b, axis, limit, sign: 1f);
+            count = ClipPlane(b[..count], a, axis, limit, sign: -1f);
+        }
+
+        if (count < 3)
+        {
+            return (0f, box.Center);
+        }
+
+        // Fan triangulation from the first vertex: area-weighted centroid.
+        Vector3 origin = a[0];
+        float twiceArea = 0f;
+        Vector3 weighted = Vector3.Zero;
+        for (int i = 1; i + 1 < count; i++)
+        {
+            float part = Vector3.Cross(a[i] - origin, a[i + 1] - origin).Length();
+            twiceArea += part;
+            weighted += (origin + a[i] + a[i + 1]) * (part / 3f);
+        }
+
+        if (!(twiceArea > 0f))
+        {
+            return (0f, box.Center);
+        }
+
+        return (twiceArea * 0.5f, box.ToWorld(weighted / twiceArea));
+    }
+
+    /// <summary>Keeps the part of the polygon where sign · coordinate ≤ limit.</summary>
+    private static int ClipPlane(ReadOnlySpan<Vector3> input, Span<Vector3> output, int axis, float limit, float sign)
+    {
+        int count = 0;
+        for (int i = 0; i < input.Length; i++)
+        {
+            Vector3 current = input[i];
+            Vector3 next = input[(i + 1) % input.Length];
+            float dc = (sign * Component(current, axis)) - limit;
+            float dn = (sign * Component(next, axis)) - limit;
+            if (dc <= 0f)
+            {
+                output[count++] = current;
+            }
+
+            if ((dc < 0f && dn > 0f) || (dc > 0f && dn < 0f))
+            {
+                output[count++] = current + ((next - current) * (dc / (dc - dn)));
+            }
+        }
+
+        return count;
+    }
+
+    private static float Component(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;
+}
