@@ -172,11 +172,14 @@ public sealed class ParabolaSteering
         return SteeringFailure.None;
     }
 
-    /// <summary>True when no trunk box sampled along the arc touches the level.</summary>
+    /// <summary>True when the trunk box never touches the level during the flight.</summary>
     /// <remarks>
-    /// Samples are spaced in time so that no point of the trunk moves more than its smallest half extent between
-    /// two of them (translation at the fastest speed of the arc plus rotation of its farthest corner), so the
-    /// check cannot step over an obstacle as thin as a single triangle.
+    /// Conservative and continuous: the flight is cut into intervals over which no point of the trunk moves more
+    /// than its smallest half extent (translation at the arc's top speed plus rotation of its farthest corner). Over
+    /// an interval every trunk position lies inside the mid-interval trunk grown by the largest distance a point can
+    /// travel in half the interval, so that grown box being free proves the whole interval free. Where it is not,
+    /// the interval is halved, down to a growth of <see cref="SteeringLimits.CollisionTolerance"/>. A thin obstacle
+    /// can therefore never be stepped over, and the trunk's corners cannot clip one between samples.
     /// </remarks>
     public bool IsCollisionFree(in BallisticArc arc)
     {
@@ -192,17 +195,33 @@ public sealed class ParabolaSteering
         float cornerSpeed = arc.FlightTime > 0f ? turn / arc.FlightTime * TrunkHalfExtents.Length() : 0f;
         float pointSpeed = speed + cornerSpeed;
         int steps = Math.Max(1, (int)MathF.Ceiling(arc.FlightTime * pointSpeed / spacing));
-        for (int i = 0; i <= steps; i++)
+        for (int i = 0; i < steps; i++)
         {
-            float t = arc.FlightTime * i / steps;
-            RootPose pose = arc.PoseAt(t);
-            if (_world.Overlaps(new OrientedBox(pose.Position, TrunkHalfExtents, pose.Rotation)))
+            if (!IntervalIsFree(arc, arc.FlightTime * i / steps, arc.FlightTime * (i + 1) / steps, pointSpeed, depth: 0))
             {
                 return false;
             }
         }
 
         return true;
+    }
+
+    private bool IntervalIsFree(in BallisticArc arc, float t0, float t1, float pointSpeed, int depth)
+    {
+        float mid = 0.5f * (t0 + t1);
+        float growth = pointSpeed * 0.5f * (t1 - t0);
+        RootPose pose = arc.PoseAt(mid);
+        if (!_world!.Overlaps(new OrientedBox(pose.Position, TrunkHalfExtents + new Vector3(growth), pose.Rotation)))
+        {
+            return true;
+        }
+
+        if (growth <= Limits.CollisionTolerance || depth >= 24)
+        {
+            return false;
+        }
+
+        return IntervalIsFree(arc, t0, mid, pointSpeed, depth + 1) && IntervalIsFree(arc, mid, t1, pointSpeed, depth + 1);
     }
 
     private BallisticArc MakeArc(in RootPose from, in RootPose to, in AngleInterval interval, double alpha)

@@ -42,6 +42,12 @@ public sealed record SteeringLimits
     /// </summary>
     public float MinConeCutHalfAngle { get; init; } = 0.01f;
 
+    /// <summary>
+    /// Distance (metres) within which the trunk may not pass the level during a flight: the resolution of the
+    /// continuous collision check. Poses closer than this to the level cannot take off or land.
+    /// </summary>
+    public float CollisionTolerance { get; init; } = 1e-3f;
+
     /// <summary>Margin (radians) kept above the straight-line angle atan(Z/X), below which no parabola reaches the goal.</summary>
     public float AngleMargin { get; init; } = 1e-3f;
 

@@ -1,0 +1,23 @@
+namespace Ballistic.Planner.Planning;
+
+/// <summary>How a bake or a query ended (after OMPL's planner status).</summary>
+public enum PlannerStatus
+{
+    /// <summary>Done as asked: the roadmap reached its target, or a path was found.</summary>
+    Exact,
+
+    /// <summary>The time budget ran out first.</summary>
+    Timeout,
+
+    /// <summary>No valid root pose could be placed at the start.</summary>
+    InvalidStart,
+
+    /// <summary>No valid root pose could be placed at the goal.</summary>
+    InvalidGoal,
+
+    /// <summary>Cancelled through its <see cref="CancellationToken"/>.</summary>
+    Cancelled,
+
+    /// <summary>The roadmap holds no sequence of jumps from start to goal.</summary>
+    NoPath,
+}

@@ -1,0 +1,71 @@
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Steering;
+using Ballistic.Planner.Surfaces;
+
+namespace Ballistic.Planner.Planning;
+
+/// <summary>
+/// Everything the planner derives from one level and one character, built once and shared by bakes and queries:
+/// the collision hierarchy, contact surfaces, contact estimator, sampler and steering method. Thread-safe.
+/// </summary>
+public sealed class PlanningScene
+{
+    private PlanningScene(Level level, ReducedCharacter character, TriangleBvh bvh, SurfaceSet surfaces, ContactEstimator estimator, TrunkSampler sampler, ParabolaSteering steering)
+    {
+        Level = level;
+        Character = character;
+        Bvh = bvh;
+        Surfaces = surfaces;
+        Estimator = estimator;
+        Sampler = sampler;
+        Steering = steering;
+    }
+
+    /// <summary>The level.</summary>
+    public Level Level { get; }
+
+    /// <summary>The reduced character.</summary>
+    public ReducedCharacter Character { get; }
+
+    /// <summary>Collision hierarchy over the level's triangles.</summary>
+    public TriangleBvh Bvh { get; }
+
+    /// <summary>Contact surfaces of the level.</summary>
+    public SurfaceSet Surfaces { get; }
+
+    /// <summary>Contact and cone estimation.</summary>
+    public ContactEstimator Estimator { get; }
+
+    /// <summary>Root pose sampler.</summary>
+    public TrunkSampler Sampler { get; }
+
+    /// <summary>The parabola steering method with the character's limits.</summary>
+    public ParabolaSteering Steering { get; }
+
+    /// <summary>Builds the scene.</summary>
+    /// <param name="level">The level.</param>
+    /// <param name="character">The character.</param>
+    /// <param name="maxApexAboveLevel">
+    /// How far above the level's highest point (metres) the trunk may rise at a jump's apex; <c>null</c> for no bound.
+    /// </param>
+    /// <param name="sampler">Sampler settings; defaults when <c>null</c>.</param>
+    /// <param name="surfaces">Surface grouping settings; defaults when <c>null</c>.</param>
+    public static PlanningScene Create(Level level, ReducedCharacter character, float? maxApexAboveLevel = 4f, SamplerSettings? sampler = null, SurfaceSettings? surfaces = null)
+    {
+        ArgumentNullException.ThrowIfNull(level);
+        ArgumentNullException.ThrowIfNull(character);
+        var bvh = new TriangleBvh(level.Triangles);
+        SurfaceSet surfaceSet = SurfaceSet.Build(level, surfaces);
+        var estimator = new ContactEstimator(level, bvh, surfaceSet, character);
+        var trunkSampler = new TrunkSampler(level, bvh, surfaceSet, character, estimator, sampler);
+        SteeringLimits limits = maxApexAboveLevel is float margin
+            ? character.Limits with { MaxApexHeight = level.Bounds.Max.Y + margin }
+            : character.Limits;
+        var steering = new ParabolaSteering(limits, character.TrunkHalfExtents, bvh);
+        return new PlanningScene(level, character, bvh, surfaceSet, estimator, trunkSampler, steering);
+    }
+}

@@ -1,0 +1,10 @@
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Planner.Query;
+
+/// <summary>One jump of a planned path: the takeoff and landing nodes and the arc between them.</summary>
+/// <param name="Takeoff">The node jumped from (start, roadmap node or goal).</param>
+/// <param name="Landing">The node landed on.</param>
+/// <param name="Arc">The ballistic arc of the trunk centre.</param>
+public sealed record Jump(RoadmapNode Takeoff, RoadmapNode Landing, BallisticArc Arc);

@@ -1,0 +1,11 @@
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+
+namespace Ballistic.Planner.Roadmaps;
+
+/// <summary>A node of the roadmap: a valid root pose with its estimated contacts and centroidal friction cone.</summary>
+/// <param name="Id">Index of the node in its roadmap.</param>
+/// <param name="Pose">Root pose (trunk centre and orientation, world space).</param>
+/// <param name="Cone">Centroidal friction cone at the pose.</param>
+/// <param name="Contacts">Estimated limb contacts.</param>
+public sealed record RoadmapNode(int Id, RootPose Pose, FrictionCone Cone, IReadOnlyList<Contact> Contacts);
