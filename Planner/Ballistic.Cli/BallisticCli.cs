@@ -23,7 +23,14 @@ public static class BallisticCli
     /// <summary>Builds the root command with every subcommand.</summary>
     public static RootCommand BuildRootCommand()
     {
-        RootCommand root = new(Description);
+        RootCommand root = new(Description)
+        {
+            CliCommands.Bake(),
+            CliCommands.Plan(),
+            CliCommands.Demo(),
+            CliCommands.Levels(),
+        };
+        root.Options.Add(CliCommands.Verbose);
 
         // The stock --version reports the entry assembly, which is the test host when the tool runs in-process.
         foreach (Option option in root.Options)

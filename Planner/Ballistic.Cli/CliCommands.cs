@@ -1,0 +1,206 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Gltf;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Levels.Generation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Reports;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Cli;
+
+/// <summary>The subcommands of the tool.</summary>
+internal static class CliCommands
+{
+    public static readonly Option<bool> Verbose = new("--verbose") { Description = "Print stack traces with errors.", Recursive = true };
+
+    private static Option<string> LevelOption() => new("--level") { Description = "Level file (.glb or .gltf), Y up, metres.", Required = true };
+
+    private static Option<string> CharacterOption() => new("--character") { Description = $"Character preset: {string.Join(", ", CharacterPresets.Names)}.", Required = true };
+
+    private static Option<int> SeedOption() => new("--seed") { Description = "Seed of every random choice.", DefaultValueFactory = _ => 1 };
+
+    private static Option<int> ThreadsOption() => new("--threads") { Description = "Worker threads (the roadmap does not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
+
+    private static Option<double?> TimeLimitOption() => new("--time-limit") { Description = "Bake time budget in seconds." };
+
+    public static Command Bake()
+    {
+        Option<string> level = LevelOption();
+        Option<string> character = CharacterOption();
+        Option<int> seed = SeedOption();
+        Option<int> threads = ThreadsOption();
+        Option<int?> maxNodes = new("--max-nodes") { Description = "Stop at this many nodes (default 200 unless --time-limit is given)." };
+        Option<double?> timeLimit = TimeLimitOption();
+        Option<string> output = new("--out") { Description = "Roadmap file to write.", Required = true };
+        var command = new Command("bake", "Bake a jump roadmap for a character on a level and save it.") { level, character, seed, threads, maxNodes, timeLimit, output };
+        command.SetAction(parse => Guard(parse, () =>
+        {
+            TextWriter stdout = parse.InvocationConfiguration.Output;
+            TextWriter stderr = parse.InvocationConfiguration.Error;
+            Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!);
+            ReducedCharacter chr = CharacterPresets.Get(parse.GetValue(character)!);
+            TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
+            int? nodes = parse.GetValue(maxNodes) ?? (limit is null ? 200 : null);
+            var scene = PlanningScene.Create(lvl, chr);
+            var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = parse.GetValue(threads), MaxNodes = nodes, TimeLimit = limit };
+            Validate(settings);
+            ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
+            BakeResult result = new RoadmapBaker(scene).Bake(settings, progress: progress);
+            progress?.Finish();
+            stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
+            stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
+            if (result.Roadmap.Nodes.Count == 0 || result.Status is PlannerStatus.Cancelled)
+            {
+                throw new CliException($"Nothing written: {result.Reason}.");
+            }
+
+            string path = parse.GetValue(output)!;
+            RoadmapFile.Save(result.Roadmap, path);
+            stdout.WriteLine($"written: {path}");
+            return 0;
+        }));
+        return command;
+    }
+
+    public static Command Plan()
+    {
+        Option<string> level = LevelOption();
+        Option<string> character = CharacterOption();
+        Option<string?> roadmap = new("--roadmap") { Description = "Roadmap file from 'bake'; without it the tool bakes first." };
+        Option<string> from = new("--from") { Description = "Start point x,y,z (metres), on or near a surface.", Required = true };
+        Option<string> to = new("--to") { Description = "Goal point x,y,z (metres), on or near a surface.", Required = true };
+        Option<int> seed = SeedOption();
+        Option<int> threads = ThreadsOption();
+        Option<int> maxNodes = new("--max-nodes") { Description = "When baking: the most nodes before giving up on connecting start and goal.", DefaultValueFactory = _ => 400 };
+        Option<double?> timeLimit = TimeLimitOption();
+        Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/1).", Required = true };
+        Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
+        var command = new Command("plan", "Plan a sequence of jumps from one point to another and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg };
+        command.SetAction(parse => Guard(parse, () =>
+        {
+            string levelPath = parse.GetValue(level)!;
+            var pipeline = new PlanPipeline
+            {
+                LevelPath = levelPath,
+                Level = CliInputs.LoadLevel(levelPath),
+                Character = CharacterPresets.Get(parse.GetValue(character)!),
+                From = CliInputs.ParsePoint(parse.GetValue(from)!, "--from"),
+                To = CliInputs.ParsePoint(parse.GetValue(to)!, "--to"),
+                RoadmapPath = parse.GetValue(roadmap),
+                Seed = parse.GetValue(seed),
+                Threads = Positive(parse.GetValue(threads), "--threads"),
+                MaxNodes = Positive(parse.GetValue(maxNodes), "--max-nodes"),
+                TimeLimit = Seconds(parse.GetValue(timeLimit), "--time-limit"),
+            };
+            (PlanReport result, Roadmap used) = pipeline.Run(parse.InvocationConfiguration.Error);
+            PlanPipeline.Write(result, used, parse.GetValue(report)!, parse.GetValue(svg), parse.InvocationConfiguration.Output);
+            return result.Result.Status == PlannerStatus.Exact ? 0 : 1;
+        }));
+        return command;
+    }
+
+    public static Command Demo()
+    {
+        Option<string> output = new("--out") { Description = "Folder for the report, picture and roadmap.", DefaultValueFactory = _ => "out" };
+        Option<int> threads = ThreadsOption();
+        var command = new Command("demo", "The main job: the skeleton crosses the bundled desert; writes a report, an SVG and the roadmap.") { output, threads };
+        command.SetAction(parse => Guard(parse, () =>
+        {
+            TextWriter stdout = parse.InvocationConfiguration.Output;
+            var clock = Stopwatch.StartNew();
+            string? path = CliInputs.FindBundledLevel("desert");
+            Level level = path is null ? CliInputs.Generated("desert") : CliInputs.LoadLevel(path);
+            double loadSeconds = clock.Elapsed.TotalSeconds;
+            ReducedCharacter skeleton = CharacterPresets.Skeleton();
+            var scene = PlanningScene.Create(level, skeleton);
+            Vector3 from = CliInputs.OnGround(scene.Bvh, -9.5f, -7.5f, 0f);
+            Vector3 to = CliInputs.OnGround(scene.Bvh, 9.5f, 7.5f, 0f);
+            stdout.WriteLine($"level: {path ?? level.Source}: {level.Triangles.Count} triangles, {scene.Surfaces.Surfaces.Count} contact surfaces");
+            stdout.WriteLine($"character: {skeleton}");
+            stdout.WriteLine($"from ({from.X:0.##}, {from.Y:0.##}, {from.Z:0.##}) to ({to.X:0.##}, {to.Y:0.##}, {to.Z:0.##})");
+            var pipeline = new PlanPipeline
+            {
+                LevelPath = path ?? "desert (generated)",
+                Level = level,
+                Character = skeleton,
+                Scene = scene,
+                From = from,
+                To = to,
+                Threads = Positive(parse.GetValue(threads), "--threads"),
+                MaxNodes = 600,
+            };
+            pipeline.Timings["loadLevel"] = loadSeconds;
+            (PlanReport report, Roadmap roadmap) = pipeline.Run(parse.InvocationConfiguration.Error);
+            string folder = parse.GetValue(output)!;
+            RoadmapFile.Save(roadmap, Path.Combine(folder, "desert-skeleton.roadmap"));
+            PlanPipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout);
+            return report.Result.Status == PlannerStatus.Exact ? 0 : 1;
+        }));
+        return command;
+    }
+
+    public static Command Levels()
+    {
+        Option<string> output = new("--out") { Description = "Folder to write the levels to.", DefaultValueFactory = _ => Path.Combine("Scenes", "levels") };
+        var generate = new Command("generate", $"Write the procedural levels ({string.Join(", ", LevelGenerator.Names)}) as GLB files.") { output };
+        generate.SetAction(parse => Guard(parse, () =>
+        {
+            string folder = parse.GetValue(output)!;
+            foreach (string name in LevelGenerator.Names)
+            {
+                IReadOnlyList<LevelMesh> meshes = LevelGenerator.Generate(name);
+                string path = Path.Combine(folder, name + ".glb");
+                GltfLevelWriter.Save(path, meshes);
+                parse.InvocationConfiguration.Output.WriteLine($"{path}: {meshes.Sum(m => m.Indices.Length / 3)} triangles");
+            }
+
+            return 0;
+        }));
+        return new Command("levels", "Procedural levels.") { generate };
+    }
+
+    /// <summary>Runs a command body, turning expected failures into one line on standard error and exit code 1.</summary>
+    internal static int Guard(ParseResult parse, Func<int> body)
+    {
+        TextWriter stderr = parse.InvocationConfiguration.Error;
+        try
+        {
+            return body();
+        }
+        catch (Exception e) when (e is CliException or LevelException or CharacterException or RoadmapFileException or GltfException or ArgumentException or IOException or UnauthorizedAccessException)
+        {
+            stderr.WriteLine($"error: {e.Message}");
+            if (parse.GetValue(Verbose))
+            {
+                stderr.WriteLine(e);
+            }
+
+            return 1;
+        }
+    }
+
+    private static TimeSpan? Seconds(double? value, string option) => value switch
+    {
+        null => null,
+        > 0 when double.IsFinite(value.Value) => TimeSpan.FromSeconds(value.Value),
+        _ => throw new CliException($"{option} takes a positive number of seconds, not {value}."),
+    };
+
+    private static int Positive(int value, string option) =>
+        value > 0 ? value : throw new CliException($"{option} must be at least 1, not {value}.");
+
+    private static void Validate(BakeSettings settings)
+    {
+        try
+        {
+            settings.Validate();
+        }
+        catch (ArgumentException e)
+        {
+            throw new CliException(e.Message, e);
+        }
+    }
+}

@@ -1,0 +1,85 @@
+using System.Globalization;
+using System.Numerics;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Levels.Generation;
+
+namespace Ballistic.Cli;
+
+/// <summary>Parsing and loading of the tool's inputs, each failure a <see cref="CliException"/> naming the input.</summary>
+internal static class CliInputs
+{
+    /// <summary>Parses "x,y,z" (metres, invariant culture).</summary>
+    public static Vector3 ParsePoint(string text, string option)
+    {
+        string[] parts = text.Split(',', StringSplitOptions.TrimEntries);
+        if (parts.Length == 3 &&
+            float.TryParse(parts[0], NumberStyles.Float, CultureInfo.InvariantCulture, out float x) &&
+            float.TryParse(parts[1], NumberStyles.Float, CultureInfo.InvariantCulture, out float y) &&
+            float.TryParse(parts[2], NumberStyles.Float, CultureInfo.InvariantCulture, out float z) &&
+            float.IsFinite(x) && float.IsFinite(y) && float.IsFinite(z))
+        {
+            return new Vector3(x, y, z);
+        }
+
+        throw new CliException($"{option} takes a point as x,y,z in metres (for example 1.5,0,-2), not '{text}'.");
+    }
+
+    /// <summary>Loads a level file (.glb or .gltf).</summary>
+    public static Level LoadLevel(string path)
+    {
+        if (!File.Exists(path))
+        {
+            throw new CliException($"Level file '{path}' does not exist.");
+        }
+
+        string extension = Path.GetExtension(path).ToLowerInvariant();
+        if (extension is not (".glb" or ".gltf"))
+        {
+            throw new CliException($"Level file '{path}' is not glTF: give a .glb or .gltf file.");
+        }
+
+        return GltfLevelLoader.Load(path);
+    }
+
+    /// <summary>
+    /// The bundled level file <paramref name="name"/>.glb under Scenes/levels, looked for upwards from the current
+    /// folder and from the tool's own folder; <c>null</c> when it is not there.
+    /// </summary>
+    public static string? FindBundledLevel(string name)
+    {
+        foreach (string start in new[] { Directory.GetCurrentDirectory(), AppContext.BaseDirectory })
+        {
+            for (DirectoryInfo? dir = new(start); dir is not null; dir = dir.Parent)
+            {
+                string candidate = Path.Combine(dir.FullName, "Scenes", "levels", name + ".glb");
+                if (File.Exists(candidate))
+                {
+                    return candidate;
+                }
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>Builds a generated level in memory.</summary>
+    public static Level Generated(string name)
+    {
+        var builder = new LevelBuilder($"{name} (generated)");
+        foreach (LevelMesh mesh in LevelGenerator.Generate(name))
+        {
+            builder.AddMesh(mesh.Name, mesh.Positions, mesh.Indices, Matrix4x4.Identity, mesh.Material);
+        }
+
+        return builder.Build();
+    }
+
+    /// <summary>The highest surface point under (x, z), or the given height when there is none.</summary>
+    public static Vector3 OnGround(TriangleBvh bvh, float x, float z, float fallbackY)
+    {
+        float top = bvh.Bounds.Max.Y + 1f;
+        float depth = top - bvh.Bounds.Min.Y + 2f;
+        return bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point : new Vector3(x, fallbackY, z);
+    }
+}

@@ -1,0 +1,161 @@
+using System.Numerics;
+using System.Text;
+using System.Text.Json;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Reports;
+
+/// <summary>
+/// Writes a plan as the <c>ballistic.plan/1</c> JSON report other tools read. Positions are trunk centres in world
+/// metres (Y up), rotations unit quaternions [x, y, z, w], velocities m/s, times seconds.
+/// </summary>
+public static class PlanReportWriter
+{
+    /// <summary>The schema name written in every report.</summary>
+    public const string Schema = "ballistic.plan/1";
+
+    /// <summary>The status names used in reports, by <see cref="PlannerStatus"/>.</summary>
+    public static string StatusName(PlannerStatus status) => status switch
+    {
+        PlannerStatus.Exact => "exact",
+        PlannerStatus.NoPath => "no_path",
+        PlannerStatus.Timeout => "timeout",
+        PlannerStatus.InvalidStart => "invalid_start",
+        PlannerStatus.InvalidGoal => "invalid_goal",
+        PlannerStatus.Cancelled => "cancelled",
+        _ => throw new ArgumentOutOfRangeException(nameof(status), status, "Unknown status."),
+    };
+
+    /// <summary>The report as indented UTF-8 JSON.</summary>
+    public static byte[] ToJson(PlanReport report)
+    {
+        ArgumentNullException.ThrowIfNull(report);
+        ReducedCharacter character = report.Scene.Character;
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        {
+            w.WriteStartObject();
+            w.WriteString("schema", Schema);
+            w.WriteString("level", report.LevelPath);
+            w.WriteStartObject("character");
+            w.WriteString("name", character.Name);
+            Vector("trunkHalfExtents", character.TrunkHalfExtents);
+            w.WriteNumber("takeoffSpeedMax", character.TakeoffSpeedMax);
+            w.WriteNumber("landingSpeedMax", character.LandingSpeedMax);
+            Vector("gravity", new Vector3(0f, -character.Limits.Gravity, 0f));
+            w.WriteNumber("friction", character.Friction);
+            w.WriteNumber("requiredContacts", character.RequiredContacts);
+            w.WriteStartArray("limbs");
+            foreach (Limb limb in character.Limbs)
+            {
+                w.WriteStringValue(limb.Name);
+            }
+
+            w.WriteEndArray();
+            w.WriteEndObject();
+
+            w.WriteStartObject("request");
+            Vector("from", report.From);
+            Vector("to", report.To);
+            w.WriteEndObject();
+
+            w.WriteString("status", StatusName(report.Result.Status));
+            w.WriteString("reason", report.Result.Reason);
+
+            w.WriteStartObject("roadmap");
+            w.WriteNumber("nodes", report.RoadmapNodes);
+            w.WriteNumber("edges", report.RoadmapEdges);
+            w.WriteNumber("seed", report.Seed);
+            w.WriteNumber("bakeSeconds", Math.Round(report.BakeSeconds, 6));
+            w.WriteEndObject();
+
+            w.WriteNumber("totalFlightTime", report.Result.TotalFlightTime);
+            w.WriteStartArray("jumps");
+            foreach (Jump jump in report.Result.Jumps)
+            {
+                w.WriteStartObject();
+                w.WritePropertyName("takeoff");
+                Pose(jump.Takeoff);
+                w.WritePropertyName("landing");
+                Pose(jump.Landing);
+                Vector("takeoffVelocity", jump.Arc.TakeoffVelocity);
+                Vector("landingVelocity", jump.Arc.LandingVelocity);
+                w.WriteNumber("flightTime", jump.Arc.FlightTime);
+                w.WriteNumber("arcLength", jump.Arc.ArcLength);
+                Vector("apex", jump.Arc.Apex);
+                w.WriteEndObject();
+            }
+
+            w.WriteEndArray();
+
+            w.WriteStartObject("timings");
+            foreach ((string name, double seconds) in report.Timings)
+            {
+                w.WriteNumber(name, Math.Round(seconds, 6));
+            }
+
+            w.WriteEndObject();
+            w.WriteEndObject();
+
+            void Vector(string name, Vector3 v)
+            {
+                w.WriteStartArray(name);
+                w.WriteNumberValue(v.X);
+                w.WriteNumberValue(v.Y);
+                w.WriteNumberValue(v.Z);
+                w.WriteEndArray();
+            }
+
+            void Pose(RoadmapNode node)
+            {
+                w.WriteStartObject();
+                Vector("position", node.Pose.Position);
+                w.WriteStartArray("rotation");
+                w.WriteNumberValue(node.Pose.Rotation.X);
+                w.WriteNumberValue(node.Pose.Rotation.Y);
+                w.WriteNumberValue(node.Pose.Rotation.Z);
+                w.WriteNumberValue(node.Pose.Rotation.W);
+                w.WriteEndArray();
+                w.WriteStartObject("cone");
+                Vector("axis", node.Cone.Axis);
+                w.WriteNumber("mu", node.Cone.Mu);
+                w.WriteEndObject();
+                w.WriteStartArray("contacts");
+                foreach (Contact c in node.Contacts)
+                {
+                    w.WriteStartObject();
+                    w.WriteString("limb", character.Limbs[c.Limb].Name);
+                    Vector("position", c.Position);
+                    Vector("normal", c.Normal);
+                    w.WriteNumber("mu", c.Mu);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }
+        }
+
+        return stream.ToArray();
+    }
+
+    /// <summary>Writes the report to <paramref name="path"/>, creating its folder.</summary>
+    public static void Save(PlanReport report, string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
+        if (directory is not null)
+        {
+            Directory.CreateDirectory(directory);
+        }
+
+        File.WriteAllBytes(path, ToJson(report));
+    }
+
+    /// <summary>The report as a string (for tests and logs).</summary>
+    public static string ToJsonString(PlanReport report) => Encoding.UTF8.GetString(ToJson(report));
+}

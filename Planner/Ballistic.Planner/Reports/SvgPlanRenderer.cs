@@ -1,0 +1,310 @@
+using System.Globalization;
+using System.Numerics;
+using System.Text;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Reports;
+
+/// <summary>
+/// Draws a plan as an SVG page: a top view (the level as a shaded height map seen from +Y, the roadmap's nodes and
+/// jumps, the path) and a side profile along the line from start to goal (the level's silhouette in a corridor
+/// around that line, the path's parabolas, the takeoff and landing friction cones).
+/// </summary>
+public static class SvgPlanRenderer
+{
+    private const float PageWidth = 1000f;
+    private const float Margin = 30f;
+    private const float Corridor = 1.5f;
+
+    /// <summary>The SVG text of the report's plan over its roadmap (<paramref name="roadmap"/> may be <c>null</c>).</summary>
+    public static string Render(PlanReport report, Roadmap? roadmap)
+    {
+        ArgumentNullException.ThrowIfNull(report);
+        TriangleBvh bvh = report.Scene.Bvh;
+        Aabb bounds = report.Scene.Level.Bounds;
+        PlanResult result = report.Result;
+        var svg = new StringBuilder();
+
+        // Top view geometry: world X → right, world Z → down.
+        float worldW = bounds.Max.X - bounds.Min.X;
+        float worldD = bounds.Max.Z - bounds.Min.Z;
+        float topScale = MathF.Min((PageWidth - (2 * Margin)) / MathF.Max(worldW, 1e-3f), 520f / MathF.Max(worldD, 1e-3f));
+        float topW = worldW * topScale;
+        float topH = worldD * topScale;
+        float topX = (PageWidth - topW) / 2f;
+        const float topY = 70f;
+        float Tx(Vector3 p) => topX + ((p.X - bounds.Min.X) * topScale);
+        float Ty(Vector3 p) => topY + ((p.Z - bounds.Min.Z) * topScale);
+
+        // Side profile geometry: the path unrolled. Each jump keeps its own vertical plane (the plane its cones were
+        // cut by); the horizontal axis is the distance travelled along the path, the vertical axis the height.
+        var segments = new List<(Vector3 From, Vector3 To, float Offset)>();
+        float travelled = 0f;
+        if (result.Jumps.Count == 0)
+        {
+            segments.Add((report.From, report.To, 0f));
+        }
+        else
+        {
+            foreach (Jump jump in result.Jumps)
+            {
+                segments.Add((jump.Arc.Start, jump.Arc.End, travelled));
+                travelled += Horizontal(jump.Arc.End - jump.Arc.Start).Length();
+            }
+        }
+
+        const float lead = 1.5f;
+        float sMin = -lead;
+        float sMax = segments[^1].Offset + Horizontal(segments[^1].To - segments[^1].From).Length() + lead;
+        const int profileSamples = 480;
+        var profile = new float[profileSamples + 1];
+        for (int i = 0; i <= profileSamples; i++)
+        {
+            float s = sMin + ((sMax - sMin) * i / profileSamples);
+            Vector3 column = AlongPath(segments, s);
+            Vector3 heading = HeadingAt(segments, s);
+            Vector3 side = Vector3.Cross(Vector3.UnitY, heading);
+            float best = float.NaN;
+            for (int c = -2; c <= 2; c++)
+            {
+                Vector3 probe = column + (side * (Corridor * c / 4f));
+                if (GroundHeight(bvh, bounds, probe.X, probe.Z) is float h && !(h <= best))
+                {
+                    best = h;
+                }
+            }
+
+            profile[i] = best;
+        }
+
+        var pathPoints = new List<Vector3> { report.From, report.To };
+        foreach (Jump jump in result.Jumps)
+        {
+            for (int k = 0; k <= 24; k++)
+            {
+                pathPoints.Add(jump.Arc.PositionAt(jump.Arc.FlightTime * k / 24f));
+            }
+        }
+
+        float yLow = MathF.Min(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Min.Y).Min(), pathPoints.Min(p => p.Y)) - 0.5f;
+        float yHigh = MathF.Max(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Max.Y).Max(), pathPoints.Max(p => p.Y)) + 0.5f;
+        float profileScale = MathF.Min((PageWidth - (2 * Margin)) / (sMax - sMin), 240f / (yHigh - yLow));
+        float profileX = (PageWidth - ((sMax - sMin) * profileScale)) / 2f;
+        float profileY = topY + topH + 60f;
+        float profileH = (yHigh - yLow) * profileScale;
+        float Sx(float s) => profileX + ((s - sMin) * profileScale);
+        float Py(float y) => profileY + ((yHigh - y) * profileScale);
+        float pageH = profileY + profileH + 70f;
+
+        svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{PageWidth}\" height=\"{pageH:0}\" viewBox=\"0 0 {PageWidth} {pageH:0}\" font-family=\"sans-serif\" font-size=\"12\">\n"));
+        svg.Append("<rect width=\"100%\" height=\"100%\" fill=\"#fbfaf7\"/>\n");
+        string status = PlanReportWriter.StatusName(result.Status);
+        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"26\" font-size=\"18\" font-weight=\"bold\">Ballistic plan: {Escape(report.Scene.Character.Name)} on {Escape(Path.GetFileName(report.LevelPath))}</text>\n"));
+        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"46\">{status}: {Escape(result.Reason)}; {result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
+
+        // Top view.
+        svg.Append(Invariant($"<text x=\"{topX}\" y=\"{topY - 8}\" font-weight=\"bold\">Top view (X right, Z down; shading = height {bounds.Min.Y:0.0}…{bounds.Max.Y:0.0} m)</text>\n"));
+        string map = HeightMapPng(bvh, bounds, Math.Max(2, (int)MathF.Min(topW, 480f)), Math.Max(2, (int)(MathF.Min(topW, 480f) * topH / topW)));
+        svg.Append(Invariant($"<image x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{map}\"/>\n"));
+        svg.Append(Invariant($"<rect x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" fill=\"none\" stroke=\"#555\"/>\n"));
+        if (roadmap is not null)
+        {
+            svg.Append("<g stroke=\"#2b4c7e\" stroke-opacity=\"0.25\" stroke-width=\"0.7\">\n");
+            foreach (RoadmapEdge edge in roadmap.Edges)
+            {
+                Vector3 a = roadmap.Nodes[edge.From].Pose.Position;
+                Vector3 b = roadmap.Nodes[edge.To].Pose.Position;
+                svg.Append(Invariant($"<line x1=\"{Tx(a):0.#}\" y1=\"{Ty(a):0.#}\" x2=\"{Tx(b):0.#}\" y2=\"{Ty(b):0.#}\"/>\n"));
+            }
+
+            svg.Append("</g>\n<g fill=\"#2b4c7e\">\n");
+            foreach (RoadmapNode node in roadmap.Nodes)
+            {
+                svg.Append(Invariant($"<circle cx=\"{Tx(node.Pose.Position):0.#}\" cy=\"{Ty(node.Pose.Position):0.#}\" r=\"2\"/>\n"));
+            }
+
+            svg.Append("</g>\n");
+        }
+
+        for (int k = 0; k < result.Jumps.Count; k++)
+        {
+            Jump jump = result.Jumps[k];
+            svg.Append(Invariant($"<line x1=\"{Tx(jump.Arc.Start):0.#}\" y1=\"{Ty(jump.Arc.Start):0.#}\" x2=\"{Tx(jump.Arc.End):0.#}\" y2=\"{Ty(jump.Arc.End):0.#}\" stroke=\"#e8590c\" stroke-width=\"3\"/>\n"));
+            svg.Append(Invariant($"<circle cx=\"{Tx(jump.Arc.Start):0.#}\" cy=\"{Ty(jump.Arc.Start):0.#}\" r=\"4\" fill=\"#fff\" stroke=\"#e8590c\" stroke-width=\"2\"/>\n"));
+            svg.Append(Invariant($"<text x=\"{Tx(jump.Arc.Start) + 5:0.#}\" y=\"{Ty(jump.Arc.Start) - 5:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{k + 1}</text>\n"));
+        }
+
+        Marker(svg, Tx(report.From), Ty(report.From), "#2f9e44", "start");
+        Marker(svg, Tx(report.To), Ty(report.To), "#c92a2a", "goal");
+
+        // Side profile.
+        svg.Append(Invariant($"<text x=\"{profileX}\" y=\"{profileY - 8}\" font-weight=\"bold\">Side profile along the path, unrolled (level within {Corridor / 2f:0.##} m of the track; 1 m = {profileScale:0.#} px both ways)</text>\n"));
+        var ground = new StringBuilder();
+        ground.Append(Invariant($"M {Sx(sMin):0.#} {Py(yLow):0.#} "));
+        for (int i = 0; i <= profileSamples; i++)
+        {
+            float s = sMin + ((sMax - sMin) * i / profileSamples);
+            float h = float.IsFinite(profile[i]) ? profile[i] : yLow;
+            ground.Append(Invariant($"L {Sx(s):0.#} {Py(h):0.#} "));
+        }
+
+        ground.Append(Invariant($"L {Sx(sMax):0.#} {Py(yLow):0.#} Z"));
+        svg.Append(Invariant($"<path d=\"{ground}\" fill=\"#d9c9a3\" stroke=\"#8c7851\" stroke-width=\"1\"/>\n"));
+        for (int j = 0; j < result.Jumps.Count; j++)
+        {
+            Jump jump = result.Jumps[j];
+            float offset = segments[j].Offset;
+            Vector3 heading = Horizontal(jump.Arc.End - jump.Arc.Start);
+            heading = heading.LengthSquared() > 1e-9f ? Vector3.Normalize(heading) : Vector3.UnitX;
+            float X(Vector3 p) => Sx(offset + Vector3.Dot(Horizontal(p - jump.Arc.Start), heading));
+            var arc = new StringBuilder();
+            for (int k = 0; k <= 40; k++)
+            {
+                Vector3 p = jump.Arc.PositionAt(jump.Arc.FlightTime * k / 40f);
+                arc.Append(Invariant($"{(k == 0 ? "M" : "L")} {X(p):0.#} {Py(p.Y):0.#} "));
+            }
+
+            svg.Append(Invariant($"<path d=\"{arc}\" fill=\"none\" stroke=\"#e8590c\" stroke-width=\"2.5\"/>\n"));
+            Cone(svg, jump.Takeoff, jump.Arc.Start, heading, X, Py, profileScale, "#1971c2");
+            Cone(svg, jump.Landing, jump.Arc.End, heading, X, Py, profileScale, "#9c36b5");
+            Vector3 tip = jump.Arc.Start + (jump.Arc.TakeoffVelocity * 0.08f);
+            svg.Append(Invariant($"<line x1=\"{X(jump.Arc.Start):0.#}\" y1=\"{Py(jump.Arc.Start.Y):0.#}\" x2=\"{X(tip):0.#}\" y2=\"{Py(tip.Y):0.#}\" stroke=\"#000\" stroke-width=\"1.5\"/>\n"));
+            svg.Append(Invariant($"<text x=\"{X(jump.Arc.Start) + 3:0.#}\" y=\"{Py(jump.Arc.Start.Y) + 16:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{j + 1}</text>\n"));
+        }
+
+        float legendY = pageH - 22f;
+        svg.Append(Invariant($"<g font-size=\"11\"><line x1=\"{Margin}\" y1=\"{legendY}\" x2=\"{Margin + 24}\" y2=\"{legendY}\" stroke=\"#e8590c\" stroke-width=\"3\"/><text x=\"{Margin + 30}\" y=\"{legendY + 4}\">path (trunk centre)</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 150}\" y1=\"{legendY}\" x2=\"{Margin + 174}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 180}\" y=\"{legendY + 4}\">roadmap jumps</text>"));
+        svg.Append(Invariant($"<path d=\"M {Margin + 290} {legendY + 5} L {Margin + 300} {legendY - 6} L {Margin + 310} {legendY + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/><text x=\"{Margin + 316}\" y=\"{legendY + 4}\">takeoff cone</text>"));
+        svg.Append(Invariant($"<path d=\"M {Margin + 400} {legendY + 5} L {Margin + 410} {legendY - 6} L {Margin + 420} {legendY + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/><text x=\"{Margin + 426}\" y=\"{legendY + 4}\">landing cone</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 510}\" y1=\"{legendY}\" x2=\"{Margin + 534}\" y2=\"{legendY}\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"{Margin + 540}\" y=\"{legendY + 4}\">takeoff velocity (×0.08 s)</text></g>\n"));
+        svg.Append("</svg>\n");
+        return svg.ToString();
+    }
+
+    /// <summary>Writes the SVG to <paramref name="path"/>, creating its folder.</summary>
+    public static void Save(PlanReport report, Roadmap? roadmap, string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
+        if (directory is not null)
+        {
+            Directory.CreateDirectory(directory);
+        }
+
+        File.WriteAllText(path, Render(report, roadmap), new UTF8Encoding(false));
+    }
+
+    /// <summary>The friction cone of a node cut by the profile plane, drawn as a wedge at <paramref name="at"/>.</summary>
+    private static void Cone(StringBuilder svg, RoadmapNode node, Vector3 at, Vector3 along, Func<Vector3, float> px, Func<float, float> py, float scale, string color)
+    {
+        float length = 28f / scale;
+        float half = node.Cone.HalfAngle;
+        Vector3 axis = node.Cone.Axis;
+        float a = MathF.Atan2(axis.Y, Vector3.Dot(axis, along));
+        Vector3 Ray(float angle) => at + (((along * MathF.Cos(angle)) + (Vector3.UnitY * MathF.Sin(angle))) * length);
+        Vector3 r1 = Ray(a - half);
+        Vector3 r2 = Ray(a + half);
+        svg.Append(Invariant($"<path d=\"M {px(at):0.#} {py(at.Y):0.#} L {px(r1):0.#} {py(r1.Y):0.#} L {px(r2):0.#} {py(r2.Y):0.#} Z\" fill=\"{color}\" fill-opacity=\"0.2\" stroke=\"{color}\" stroke-width=\"1\"/>\n"));
+    }
+
+    private static void Marker(StringBuilder svg, float x, float y, string color, string label)
+    {
+        svg.Append(Invariant($"<g stroke=\"{color}\" stroke-width=\"2.5\"><line x1=\"{x - 6:0.#}\" y1=\"{y - 6:0.#}\" x2=\"{x + 6:0.#}\" y2=\"{y + 6:0.#}\"/><line x1=\"{x - 6:0.#}\" y1=\"{y + 6:0.#}\" x2=\"{x + 6:0.#}\" y2=\"{y - 6:0.#}\"/></g>"));
+        svg.Append(Invariant($"<text x=\"{x + 8:0.#}\" y=\"{y + 14:0.#}\" fill=\"{color}\" font-weight=\"bold\">{label}</text>\n"));
+    }
+
+    private static Vector3 Horizontal(Vector3 v) => new(v.X, 0f, v.Z);
+
+    /// <summary>The point of the unrolled path at distance <paramref name="s"/> (extrapolated before and after it).</summary>
+    private static Vector3 AlongPath(List<(Vector3 From, Vector3 To, float Offset)> segments, float s)
+    {
+        for (int i = 0; i < segments.Count; i++)
+        {
+            (Vector3 from, Vector3 to, float offset) = segments[i];
+            float length = Horizontal(to - from).Length();
+            if (s <= offset + length || i == segments.Count - 1)
+            {
+                Vector3 heading = length > 1e-6f ? Horizontal(to - from) / length : Vector3.UnitX;
+                return from + (heading * (s - offset));
+            }
+        }
+
+        return segments[^1].To;
+    }
+
+    private static Vector3 HeadingAt(List<(Vector3 From, Vector3 To, float Offset)> segments, float s)
+    {
+        foreach ((Vector3 from, Vector3 to, float offset) in segments)
+        {
+            float length = Horizontal(to - from).Length();
+            if (s <= offset + length)
+            {
+                return length > 1e-6f ? Horizontal(to - from) / length : Vector3.UnitX;
+            }
+        }
+
+        Vector3 last = Horizontal(segments[^1].To - segments[^1].From);
+        return last.LengthSquared() > 1e-12f ? Vector3.Normalize(last) : Vector3.UnitX;
+    }
+
+    /// <summary>Height of the highest surface under (x, z), or null where there is none.</summary>
+    private static float? GroundHeight(TriangleBvh bvh, Aabb bounds, float x, float z)
+    {
+        float top = bounds.Max.Y + 1f;
+        float depth = top - bounds.Min.Y + 2f;
+        return bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
+    }
+
+    private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height)
+    {
+        var heights = new float[width * height];
+        var normals = new Vector3[width * height];
+        float top = bounds.Max.Y + 1f;
+        float depth = top - bounds.Min.Y + 2f;
+        for (int j = 0; j < height; j++)
+        {
+            for (int i = 0; i < width; i++)
+            {
+                float x = bounds.Min.X + ((bounds.Max.X - bounds.Min.X) * (i + 0.5f) / width);
+                float z = bounds.Min.Z + ((bounds.Max.Z - bounds.Min.Z) * (j + 0.5f) / height);
+                bool hit = bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit result);
+                heights[(j * width) + i] = hit ? result.Point.Y : float.NaN;
+                normals[(j * width) + i] = hit ? result.Normal : Vector3.UnitY;
+            }
+        }
+
+        float span = MathF.Max(bounds.Max.Y - bounds.Min.Y, 1e-3f);
+        var light = Vector3.Normalize(new Vector3(-0.5f, 1f, -0.4f));
+        byte[] rgb = new byte[width * height * 3];
+        for (int p = 0; p < heights.Length; p++)
+        {
+            Vector3 color;
+            if (float.IsNaN(heights[p]))
+            {
+                color = new Vector3(0.55f, 0.7f, 0.85f); // nothing below: water or void
+            }
+            else
+            {
+                float t = (heights[p] - bounds.Min.Y) / span;
+                Vector3 low = new(0.45f, 0.42f, 0.36f);
+                Vector3 high = new(0.96f, 0.9f, 0.78f);
+                float shade = 0.55f + (0.45f * MathF.Max(0f, Vector3.Dot(normals[p], light)));
+                color = Vector3.Lerp(low, high, t) * shade;
+            }
+
+            rgb[3 * p] = (byte)Math.Clamp(color.X * 255f, 0f, 255f);
+            rgb[(3 * p) + 1] = (byte)Math.Clamp(color.Y * 255f, 0f, 255f);
+            rgb[(3 * p) + 2] = (byte)Math.Clamp(color.Z * 255f, 0f, 255f);
+        }
+
+        return Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, rgb));
+    }
+
+    private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
+
+    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}
