@@ -1,0 +1,143 @@
+using System.Numerics;
+using System.Text.Json;
+using Ballistic.Cli;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Cli;
+
+public sealed class CliJobTests
+{
+    private string _folder = "";
+
+    [SetUp]
+    public void MakeFolder()
+    {
+        _folder = Path.Combine(Path.GetTempPath(), $"ballistic-cli-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(_folder);
+    }
+
+    [TearDown]
+    public void RemoveFolder() => Directory.Delete(_folder, recursive: true);
+
+    [Test]
+    public void PlanWritesAReportWhoseJumpsObeyThePhysics()
+    {
+        string report = Path.Combine(_folder, "plan.json");
+        string svg = Path.Combine(_folder, "plan.svg");
+        (int code, string output, string error) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton",
+            "--from", "-6,0,0", "--to", "11.5,1,0", "--threads", "2", "--report", report, "--svg", svg);
+        Assert.That(code, Is.Zero, error);
+        Assert.That(output, Does.Contain("status: exact"));
+
+        using JsonDocument json = JsonDocument.Parse(File.ReadAllBytes(report));
+        JsonElement root = json.RootElement;
+        Assert.Multiple(() =>
+        {
+            Assert.That(root.GetProperty("schema").GetString(), Is.EqualTo("ballistic.plan/1"));
+            Assert.That(root.GetProperty("status").GetString(), Is.EqualTo("exact"));
+            Assert.That(root.GetProperty("character").GetProperty("name").GetString(), Is.EqualTo("skeleton"));
+            Assert.That(Vec(root.GetProperty("character").GetProperty("gravity")), Is.EqualTo(new Vector3(0f, -9.81f, 0f)));
+            Assert.That(root.GetProperty("roadmap").GetProperty("nodes").GetInt32(), Is.GreaterThan(1));
+            Assert.That(root.GetProperty("request").GetProperty("from").GetArrayLength(), Is.EqualTo(3));
+            Assert.That(root.TryGetProperty("timings", out _), Is.True);
+        });
+
+        // Re-check the physics from the report alone, as another tool would.
+        float takeoffMax = root.GetProperty("character").GetProperty("takeoffSpeedMax").GetSingle();
+        float landingMax = root.GetProperty("character").GetProperty("landingSpeedMax").GetSingle();
+        JsonElement jumps = root.GetProperty("jumps");
+        Assert.That(jumps.GetArrayLength(), Is.GreaterThanOrEqualTo(3));
+        Vector3? previousLanding = null;
+        foreach (JsonElement jump in jumps.EnumerateArray())
+        {
+            Vector3 p0 = Vec(jump.GetProperty("takeoff").GetProperty("position"));
+            Vector3 p1 = Vec(jump.GetProperty("landing").GetProperty("position"));
+            Vector3 v0 = Vec(jump.GetProperty("takeoffVelocity"));
+            Vector3 v1 = Vec(jump.GetProperty("landingVelocity"));
+            float t = jump.GetProperty("flightTime").GetSingle();
+            Vector3 end = p0 + (v0 * t) + (0.5f * t * t * new Vector3(0f, -9.81f, 0f));
+            Assert.That(Vector3.Distance(end, p1), Is.LessThan(5e-3f), "the arc lands on the landing pose");
+            Assert.That(Vector3.Distance(v0 + (t * new Vector3(0f, -9.81f, 0f)), v1), Is.LessThan(1e-3f));
+            Assert.That(v0.Length(), Is.LessThanOrEqualTo(takeoffMax * 1.0001f));
+            Assert.That(v1.Length(), Is.LessThanOrEqualTo(landingMax * 1.0001f));
+            Assert.That(InCone(jump.GetProperty("takeoff").GetProperty("cone"), v0), Is.True, "takeoff velocity in the takeoff cone");
+            Assert.That(InCone(jump.GetProperty("landing").GetProperty("cone"), -v1), Is.True, "reversed landing velocity in the landing cone");
+            Assert.That(jump.GetProperty("takeoff").GetProperty("contacts").GetArrayLength(), Is.GreaterThanOrEqualTo(2));
+            if (previousLanding is Vector3 landing)
+            {
+                Assert.That(p0, Is.EqualTo(landing), "each jump starts where the previous one landed");
+            }
+
+            previousLanding = p1;
+        }
+
+        string picture = File.ReadAllText(svg);
+        Assert.That(picture, Does.StartWith("<svg").And.Contain("Top view").And.Contain("Side profile").And.Contain("data:image/png;base64,"));
+    }
+
+    [Test]
+    public void BakeThenPlanWithTheSavedRoadmap()
+    {
+        string roadmap = Path.Combine(_folder, "course.roadmap");
+        (int bakeCode, string bakeOutput, string bakeError) = Run("bake", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--max-nodes", "80", "--out", roadmap);
+        Assert.That(bakeCode, Is.Zero, bakeError);
+        Assert.That(bakeOutput, Does.Contain("80 nodes"));
+
+        string report = Path.Combine(_folder, "r.json");
+        (int code, string output, string error) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
+        Assert.That(code, Is.Zero, error);
+        Assert.That(output, Does.Contain("roadmap: 80 nodes"));
+        Assert.That(output, Does.Contain("loadRoadmap"));
+
+        // The same roadmap for another character is refused in one line.
+        (int wrong, _, string wrongError) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "frog", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
+        Assert.Multiple(() =>
+        {
+            Assert.That(wrong, Is.EqualTo(1));
+            Assert.That(wrongError.Trim(), Does.StartWith("error: ").And.Contain("'skeleton', not 'frog'"));
+            Assert.That(wrongError.Trim().Split('\n'), Has.Length.EqualTo(1), "one line, no stack trace");
+        });
+    }
+
+    [Test]
+    public void BadInputIsOneLineNamingTheProblem()
+    {
+        string level = RepositoryFiles.Level("gap-course");
+        string report = Path.Combine(_folder, "r.json");
+        string notGltf = Path.Combine(_folder, "level.obj");
+        File.WriteAllText(notGltf, "v 0 0 0");
+        var cases = new (string[] Args, string Expected)[]
+        {
+            (["plan", "--level", "nope.glb", "--character", "skeleton", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "does not exist"),
+            (["plan", "--level", notGltf, "--character", "skeleton", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "not glTF"),
+            (["plan", "--level", level, "--character", "dragon", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "Unknown character 'dragon'"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "0;0", "--to", "1,0,0", "--report", report], "--from takes a point"),
+            (["bake", "--level", level, "--character", "skeleton", "--threads", "0", "--out", Path.Combine(_folder, "x")], "Threads must be at least 1"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid root pose within 1.5 m of the start"),
+        };
+        foreach ((string[] args, string expected) in cases)
+        {
+            (int code, _, string error) = Run(args);
+            Assert.That(code, Is.Not.Zero, string.Join(' ', args));
+            Assert.That(error + (File.Exists(report) ? File.ReadAllText(report) : ""), Does.Contain(expected), string.Join(' ', args));
+        }
+    }
+
+    private static bool InCone(JsonElement cone, Vector3 v)
+    {
+        Vector3 axis = Vec(cone.GetProperty("axis"));
+        float mu = cone.GetProperty("mu").GetSingle();
+        float angle = MathF.Acos(Math.Clamp(Vector3.Dot(Vector3.Normalize(v), Vector3.Normalize(axis)), -1f, 1f));
+        return angle <= MathF.Atan(mu) + 1e-3f;
+    }
+
+    private static Vector3 Vec(JsonElement e) => new(e[0].GetSingle(), e[1].GetSingle(), e[2].GetSingle());
+
+    private static (int Code, string Output, string Error) Run(params string[] args)
+    {
+        using var output = new StringWriter();
+        using var error = new StringWriter();
+        int code = BallisticCli.Run(args, output, error);
+        return (code, output.ToString(), error.ToString());
+    }
+}

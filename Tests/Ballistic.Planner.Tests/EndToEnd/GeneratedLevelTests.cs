@@ -1,0 +1,86 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Levels.Generation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.EndToEnd;
+
+[Category("EndToEnd")]
+public sealed class GeneratedLevelTests
+{
+    [TestCase("desert", "skeleton", -9.5f, -7.5f, 9.5f, 7.5f)]
+    [TestCase("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f)]
+    [TestCase("gap-course", "skeleton", -6f, 0f, 11.5f, 0f)]
+    [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
+    public void PlansAcrossTheBundledLevelsObeyThePhysics(string levelName, string characterName, float x0, float z0, float x1, float z1)
+    {
+        Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
+        var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
+        Vector3 from = Highest(scene.Bvh, x0, z0);
+        Vector3 to = Highest(scene.Bvh, x1, z1);
+
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 800, Start = from, Goal = to, StopWhenConnected = true });
+        Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
+        Assert.That(plan.Jumps, Is.Not.Empty);
+        PhysicsChecks.AssertNode(scene, plan.Start!, "start");
+        PhysicsChecks.AssertNode(scene, plan.Goal!, "goal");
+        for (int k = 0; k < plan.Jumps.Count; k++)
+        {
+            Jump jump = plan.Jumps[k];
+            PhysicsChecks.AssertNode(scene, jump.Landing, $"landing {k}");
+            PhysicsChecks.AssertJump(scene, jump.Takeoff, jump.Landing, jump.Arc, $"{levelName} jump {k}");
+            if (k > 0)
+            {
+                Assert.That(jump.Takeoff, Is.SameAs(plan.Jumps[k - 1].Landing));
+            }
+        }
+    }
+
+    [TestCase("desert")]
+    [TestCase("pond")]
+    [TestCase("gap-course")]
+    [TestCase("rooftops")]
+    public void CommittedLevelFilesAreWhatTheGeneratorWrites(string name)
+    {
+        byte[] expected = GltfLevelWriter.ToBytes(LevelGenerator.Generate(name));
+        byte[] committed = File.ReadAllBytes(RepositoryFiles.Level(name));
+        Assert.That(committed.SequenceEqual(expected), Is.True, $"Scenes/levels/{name}.glb differs from the generator: run 'ballistic levels generate'.");
+    }
+
+    [Test]
+    public void GeneratedLevelsHaveThePapersTriangleCounts()
+    {
+        int Count(string name) => LevelGenerator.Generate(name).Sum(m => m.Indices.Length / 3);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Count("desert"), Is.EqualTo(47_733).Within(2).Percent);
+            Assert.That(Count("pond"), Is.EqualTo(6_994).Within(5).Percent);
+            Assert.That(Count("rooftops"), Is.EqualTo(449_267).Within(5).Percent);
+        });
+    }
+
+    /// <summary>The highest surface point within 4 m of (x, z): a roof rather than the street below it.</summary>
+    private static Vector3 Highest(TriangleBvh bvh, float x, float z)
+    {
+        Vector3 best = new(x, float.NegativeInfinity, z);
+        for (float dx = -4f; dx <= 4f; dx += 1f)
+        {
+            for (float dz = -4f; dz <= 4f; dz += 1f)
+            {
+                float top = bvh.Bounds.Max.Y + 1f;
+                if (bvh.Raycast(new Vector3(x + dx, top, z + dz), new Vector3(0f, -(top - bvh.Bounds.Min.Y + 1f), 0f), 1f, out RayHit hit) && hit.Point.Y > best.Y + 0.01f)
+                {
+                    best = hit.Point;
+                }
+            }
+        }
+
+        return best;
+    }
+}
