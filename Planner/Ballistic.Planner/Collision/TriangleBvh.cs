@@ -129,6 +129,47 @@ public sealed class TriangleBvh : ICollisionWorld
         return true;
     }
 
+    /// <summary>
+    /// Adds to <paramref name="results"/> every triangle whose bounding box meets <paramref name="box"/>: a quick,
+    /// conservative gathering (it may include triangles that only come near the box).
+    /// </summary>
+    public void TrianglesNear(Aabb box, List<int> results)
+    {
+        ArgumentNullException.ThrowIfNull(results);
+        if (_nodes.Length == 0 || box.IsEmpty)
+        {
+            return;
+        }
+
+        Span<int> stack = stackalloc int[StackSize];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            ref readonly Node node = ref _nodes[stack[--top]];
+            if (!node.Bounds.Intersects(box))
+            {
+                continue;
+            }
+
+            if (node.Count > 0)
+            {
+                for (int i = node.Start; i < node.Start + node.Count; i++)
+                {
+                    if (_triangleBounds[i].Intersects(box))
+                    {
+                        results.Add(_originalIndex[i]);
+                    }
+                }
+
+                continue;
+            }
+
+            stack[top++] = node.Start;
+            stack[top++] = node.Start + 1;
+        }
+    }
+
     /// <summary>Adds to <paramref name="results"/> every triangle that touches the axis-aligned box.</summary>
     public void TrianglesInBox(Aabb box, List<int> results)
     {

@@ -38,16 +38,20 @@ public sealed class ContactEstimator
         _character = character;
     }
 
-    /// <summary>Checks the trunk, estimates the contacts and computes the cone of <paramref name="pose"/>.</summary>
-    public PoseEvaluation Evaluate(in RootPose pose)
-    {
-        if (_bvh.Overlaps(new OrientedBox(pose.Position, _character.TrunkHalfExtents, pose.Rotation)))
-        {
-            return new PoseEvaluation(pose, PoseValidity.TrunkCollides, [], default);
-        }
+    [ThreadStatic]
+    private static List<int>? s_scratch;
 
+    /// <summary>Checks the trunk, estimates the contacts and computes the cone of <paramref name="pose"/>.</summary>
+    public PoseEvaluation Evaluate(in RootPose pose) =>
+        _bvh.Overlaps(new OrientedBox(pose.Position, _character.TrunkHalfExtents, pose.Rotation))
+            ? new PoseEvaluation(pose, PoseValidity.TrunkCollides, [], default)
+            : EvaluateContacts(pose);
+
+    /// <summary>Estimates the contacts and cone of a pose whose trunk is already known to be free.</summary>
+    internal PoseEvaluation EvaluateContacts(in RootPose pose)
+    {
         var contacts = new List<Contact>(_character.Limbs.Count);
-        var touched = new List<int>();
+        List<int> touched = s_scratch ??= new List<int>(64);
         for (int limbIndex = 0; limbIndex < _character.Limbs.Count; limbIndex++)
         {
             if (TryEstimate(limbIndex, pose, touched, out Contact contact))
@@ -88,8 +92,9 @@ public sealed class ContactEstimator
             return false;
         }
 
-        // Area, area-weighted centroid and normal of the intersection, per surface.
-        var perSurface = new Dictionary<int, (float Area, Vector3 Moment, Vector3 Normal)>();
+        // Area, area-weighted centroid and normal of the intersection, per surface (few per workspace: a list).
+        Span<SurfacePart> parts = stackalloc SurfacePart[16];
+        int partCount = 0;
         foreach (int t in scratch)
         {
             int surface = _surfaces.SurfaceOf(t);
@@ -111,18 +116,35 @@ public sealed class ContactEstimator
                 continue;
             }
 
-            (float Area, Vector3 Moment, Vector3 Normal) sum = perSurface.GetValueOrDefault(surface);
-            perSurface[surface] = (sum.Area + area, sum.Moment + (centroid * area), sum.Normal + (normal * area));
+            int slot = 0;
+            while (slot < partCount && parts[slot].Surface != surface)
+            {
+                slot++;
+            }
+
+            if (slot == partCount)
+            {
+                if (partCount == parts.Length)
+                {
+                    continue; // more than 16 surfaces in one workspace: the rest are tiny slivers
+                }
+
+                parts[partCount++] = new SurfacePart { Surface = surface };
+            }
+
+            parts[slot].Area += area;
+            parts[slot].Moment += centroid * area;
+            parts[slot].Normal += normal * area;
         }
 
         int best = -1;
         float bestArea = MinContactArea;
-        foreach ((int surface, (float area, _, _)) in perSurface)
+        for (int i = 0; i < partCount; i++)
         {
-            if (area > bestArea || (area == bestArea && surface < best))
+            if (parts[i].Area > bestArea || (parts[i].Area == bestArea && best >= 0 && parts[i].Surface < parts[best].Surface))
             {
-                best = surface;
-                bestArea = area;
+                best = i;
+                bestArea = parts[i].Area;
             }
         }
 
@@ -131,10 +153,18 @@ public sealed class ContactEstimator
             return false;
         }
 
-        (float a, Vector3 moment, Vector3 weightedNormal) = perSurface[best];
-        ContactSurface chosen = _surfaces.Surfaces[best];
-        float mu = _level.Materials[chosen.MaterialIndex].Friction ?? _character.Friction;
-        contact = new Contact(limbIndex, moment / a, Vector3.Normalize(weightedNormal), mu, best);
+        SurfacePart chosen = parts[best];
+        ContactSurface surfaceInfo = _surfaces.Surfaces[chosen.Surface];
+        float mu = _level.Materials[surfaceInfo.MaterialIndex].Friction ?? _character.Friction;
+        contact = new Contact(limbIndex, chosen.Moment / chosen.Area, Vector3.Normalize(chosen.Normal), mu, chosen.Surface);
         return true;
+    }
+
+    private struct SurfacePart
+    {
+        public int Surface;
+        public float Area;
+        public Vector3 Moment;
+        public Vector3 Normal;
     }
 }

@@ -32,7 +32,7 @@ public sealed record BakeSettings
     /// <summary>Stop as soon as the start reaches the goal (needs both).</summary>
     public bool StopWhenConnected { get; init; }
 
-    /// <summary>Radius (metres) around start and goal searched for a valid root pose.</summary>
+    /// <summary>Radius (metres) around start and goal searched for a valid root pose: the pose stands on a surface point within this distance of the requested point.</summary>
     public float ProjectionRadius { get; init; } = 1.5f;
 
     /// <summary>Checks the values.</summary>

@@ -17,6 +17,7 @@ public sealed class PathQuery
 {
     private readonly PlanningScene _scene;
     private readonly Roadmap _roadmap;
+    private SearchGraph? _graph;
 
     /// <summary>Creates a query over a roadmap baked for the scene's level and character.</summary>
     /// <exception cref="ArgumentException">The roadmap was baked for another level or character.</exception>
@@ -67,6 +68,7 @@ public sealed class PathQuery
             extra.Add((start.Id, goal.Id, direct.Arc));
         }
 
+        int connected = 0;
         foreach (int j in Nearest(start.Pose.Position, settings.MaxNeighbours))
         {
             RoadmapNode node = _roadmap.Nodes[j];
@@ -74,9 +76,14 @@ public sealed class PathQuery
             if (r.Succeeded)
             {
                 extra.Add((start.Id, j, r.Arc));
+                if (++connected >= settings.Connections)
+                {
+                    break;
+                }
             }
         }
 
+        connected = 0;
         foreach (int j in Nearest(goal.Pose.Position, settings.MaxNeighbours))
         {
             RoadmapNode node = _roadmap.Nodes[j];
@@ -84,6 +91,10 @@ public sealed class PathQuery
             if (r.Succeeded)
             {
                 extra.Add((j, goal.Id, r.Arc));
+                if (++connected >= settings.Connections)
+                {
+                    break;
+                }
             }
         }
 
@@ -93,31 +104,33 @@ public sealed class PathQuery
             : new PlanResult(PlannerStatus.Exact, $"{path.Count} jumps found", start, goal, path, clock.Elapsed);
     }
 
-    /// <summary>A* over the roadmap plus the query's extra edges; cost = flight time, heuristic = horizontal distance / top speed.</summary>
+    /// <summary>
+    /// A* over the roadmap plus the query's extra edges. Cost: flight time. Heuristic: horizontal distance to the
+    /// goal divided by the fastest horizontal speed of any edge, a lower bound on the remaining flight time (every
+    /// jump covers its horizontal distance at most that fast), so the path found is of least total flight time.
+    /// </summary>
     private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, List<(int From, int To, BallisticArc Arc)> extra)
     {
-        int count = _roadmap.Nodes.Count + 2;
-        var extraOut = new List<int>[count];
+        SearchGraph graph = Graph();
+        int roadmapCount = graph.Positions.Length;
+        int count = roadmapCount + 2;
+        var extraOut = new List<int>?[count];
+        float fastest = _roadmap.MaxHorizontalSpeed;
         for (int e = 0; e < extra.Count; e++)
         {
             (extraOut[extra[e].From] ??= []).Add(e);
+            fastest = MathF.Max(fastest, extra[e].Arc.HorizontalSpeed);
         }
 
-        float topSpeed = _scene.Character.TakeoffSpeedMax;
-        Vector3 target = goal.Pose.Position;
-        float Heuristic(int node)
-        {
-            Vector3 p = node == start.Id ? start.Pose.Position : node == goal.Id ? target : _roadmap.Nodes[node].Pose.Position;
-            return new Vector2(target.X - p.X, target.Z - p.Z).Length() / topSpeed;
-        }
-
+        float inverseSpeed = fastest > 0f ? 1f / fastest : 0f;
+        Vector2 target = new(goal.Pose.Position.X, goal.Pose.Position.Z);
         var cost = new float[count];
         Array.Fill(cost, float.PositiveInfinity);
-        var cameFrom = new (int Node, BallisticArc Arc)[count];
+        var cameFrom = new (int Node, int Edge)[count]; // edge ≥ 0: roadmap edge; < 0: extra edge ~index
         var closed = new bool[count];
-        var open = new PriorityQueue<int, (float F, int Id)>();
+        var open = new PriorityQueue<int, float>();
         cost[start.Id] = 0f;
-        open.Enqueue(start.Id, (Heuristic(start.Id), start.Id));
+        open.Enqueue(start.Id, 0f);
         while (open.TryDequeue(out int node, out _))
         {
             if (closed[node])
@@ -128,26 +141,22 @@ public sealed class PathQuery
             closed[node] = true;
             if (node == goal.Id)
             {
-                return Reconstruct(start, goal, cameFrom);
+                return Reconstruct(start, goal, cameFrom, extra);
             }
 
-            void Relax(int next, in BallisticArc arc)
+            float here = cost[node];
+            if (node < roadmapCount)
             {
-                float candidate = cost[node] + arc.FlightTime;
-                if (!closed[next] && candidate < cost[next])
+                for (int i = graph.Offsets[node]; i < graph.Offsets[node + 1]; i++)
                 {
-                    cost[next] = candidate;
-                    cameFrom[next] = (node, arc);
-                    open.Enqueue(next, (candidate + Heuristic(next), next));
-                }
-            }
-
-            if (node < _roadmap.Nodes.Count)
-            {
-                foreach (int e in _roadmap.Outgoing(node))
-                {
-                    RoadmapEdge edge = _roadmap.Edges[e];
-                    Relax(edge.To, edge.Arc);
+                    int next = graph.Targets[i];
+                    float candidate = here + graph.Times[i];
+                    if (!closed[next] && candidate < cost[next])
+                    {
+                        cost[next] = candidate;
+                        cameFrom[next] = (node, graph.EdgeIndex[i]);
+                        open.Enqueue(next, candidate + (Vector2.Distance(target, graph.Positions[next]) * inverseSpeed));
+                    }
                 }
             }
 
@@ -155,7 +164,15 @@ public sealed class PathQuery
             {
                 foreach (int e in list)
                 {
-                    Relax(extra[e].To, extra[e].Arc);
+                    int next = extra[e].To;
+                    float candidate = here + extra[e].Arc.FlightTime;
+                    if (!closed[next] && candidate < cost[next])
+                    {
+                        cost[next] = candidate;
+                        cameFrom[next] = (node, ~e);
+                        Vector2 p = next == goal.Id ? target : graph.Positions[next];
+                        open.Enqueue(next, candidate + (Vector2.Distance(target, p) * inverseSpeed));
+                    }
                 }
             }
         }
@@ -163,13 +180,53 @@ public sealed class PathQuery
         return null;
     }
 
-    private List<Jump> Reconstruct(RoadmapNode start, RoadmapNode goal, (int Node, BallisticArc Arc)[] cameFrom)
+    /// <summary>The roadmap in compressed rows for the search, rebuilt when the roadmap has grown.</summary>
+    private SearchGraph Graph()
+    {
+        if (_graph is { } g && g.EdgeCount == _roadmap.Edges.Count && g.Positions.Length == _roadmap.Nodes.Count)
+        {
+            return g;
+        }
+
+        int n = _roadmap.Nodes.Count;
+        var offsets = new int[n + 1];
+        var positions = new Vector2[n];
+        for (int i = 0; i < n; i++)
+        {
+            offsets[i + 1] = offsets[i] + _roadmap.Outgoing(i).Count;
+            Vector3 p = _roadmap.Nodes[i].Pose.Position;
+            positions[i] = new Vector2(p.X, p.Z);
+        }
+
+        var targets = new int[offsets[n]];
+        var times = new float[offsets[n]];
+        var edges = new int[offsets[n]];
+        for (int i = 0; i < n; i++)
+        {
+            int k = offsets[i];
+            foreach (int e in _roadmap.Outgoing(i))
+            {
+                targets[k] = _roadmap.EdgeTargets[e];
+                times[k] = _roadmap.EdgeFlightTimes[e];
+                edges[k++] = e;
+            }
+        }
+
+        _graph = new SearchGraph(offsets, targets, times, edges, positions, _roadmap.Edges.Count);
+        return _graph;
+    }
+
+    private sealed record SearchGraph(int[] Offsets, int[] Targets, float[] Times, int[] EdgeIndex, Vector2[] Positions, int EdgeCount);
+
+    private List<Jump> Reconstruct(RoadmapNode start, RoadmapNode goal, (int Node, int Edge)[] cameFrom, List<(int From, int To, BallisticArc Arc)> extra)
     {
         RoadmapNode NodeAt(int id) => id == start.Id ? start : id == goal.Id ? goal : _roadmap.Nodes[id];
         var jumps = new List<Jump>();
         for (int node = goal.Id; node != start.Id; node = cameFrom[node].Node)
         {
-            jumps.Add(new Jump(NodeAt(cameFrom[node].Node), NodeAt(node), cameFrom[node].Arc));
+            int edge = cameFrom[node].Edge;
+            BallisticArc arc = edge >= 0 ? _roadmap.Edges[edge].Arc : extra[~edge].Arc;
+            jumps.Add(new Jump(NodeAt(cameFrom[node].Node), NodeAt(node), arc));
         }
 
         jumps.Reverse();

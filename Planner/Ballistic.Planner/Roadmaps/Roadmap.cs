@@ -9,6 +9,8 @@ public sealed class Roadmap
     private readonly List<RoadmapNode> _nodes = [];
     private readonly List<RoadmapEdge> _edges = [];
     private readonly List<List<int>> _outgoing = [];
+    private readonly List<int> _edgeTargets = [];
+    private readonly List<float> _edgeFlightTimes = [];
 
     /// <summary>Creates an empty roadmap for a level and character.</summary>
     /// <param name="levelFingerprint">The level's <see cref="Levels.Level.Fingerprint"/>.</param>
@@ -41,6 +43,15 @@ public sealed class Roadmap
     /// <summary>The edges, in insertion order.</summary>
     public IReadOnlyList<RoadmapEdge> Edges => _edges;
 
+    /// <summary>The fastest horizontal speed (m/s) of any edge: flight time ≥ horizontal distance / this, an admissible A* bound.</summary>
+    public float MaxHorizontalSpeed { get; private set; }
+
+    /// <summary>Landing node of each edge, by edge index (a compact copy for searches).</summary>
+    public IReadOnlyList<int> EdgeTargets => _edgeTargets;
+
+    /// <summary>Flight time of each edge in seconds, by edge index (a compact copy for searches).</summary>
+    public IReadOnlyList<float> EdgeFlightTimes => _edgeFlightTimes;
+
     /// <summary>Indices (into <see cref="Edges"/>) of the edges leaving node <paramref name="node"/>.</summary>
     public IReadOnlyList<int> Outgoing(int node) => _outgoing[node];
 
@@ -69,6 +80,9 @@ public sealed class Roadmap
 
         _outgoing[edge.From].Add(_edges.Count);
         _edges.Add(edge);
+        _edgeTargets.Add(edge.To);
+        _edgeFlightTimes.Add(edge.Arc.FlightTime);
+        MaxHorizontalSpeed = MathF.Max(MaxHorizontalSpeed, edge.Arc.HorizontalSpeed);
     }
 
     /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/>.</summary>

@@ -23,6 +23,7 @@ public sealed class TrunkSampler
     private readonly ContactEstimator _estimator;
     private readonly int[] _candidates;
     private readonly double[] _cumulativeArea;
+    private readonly bool[] _isCandidate;
 
     /// <summary>Creates a sampler.</summary>
     public TrunkSampler(Level level, TriangleBvh bvh, SurfaceSet surfaces, ReducedCharacter character, ContactEstimator estimator, SamplerSettings? settings = null)
@@ -43,9 +44,11 @@ public sealed class TrunkSampler
         var candidates = new List<int>();
         var cumulative = new List<double>();
         double total = 0;
+        _isCandidate = new bool[level.Triangles.Count];
         for (int t = 0; t < level.Triangles.Count; t++)
         {
-            if (IsCandidate(t))
+            _isCandidate[t] = IsCandidate(t);
+            if (_isCandidate[t])
             {
                 total += level.Triangles[t].Area;
                 candidates.Add(t);
@@ -89,18 +92,53 @@ public sealed class TrunkSampler
     /// Draws valid poses whose surface point lies within <paramref name="radius"/> metres of <paramref name="point"/>
     /// and returns the one whose trunk centre is closest to the point, or <c>null</c> when none is found.
     /// </summary>
-    public PoseEvaluation? SampleNear(Random random, Vector3 point, float radius, int wanted = 24)
+    public PoseEvaluation? SampleNear(Random random, Vector3 point, float radius, int wanted = 3)
     {
         ArgumentNullException.ThrowIfNull(random);
+
+        // Fast path: surfaces below points of the disc around the query point, found by vertical rays.
+        PoseEvaluation? best = null;
+        float bestDistance = float.PositiveInfinity;
+        int found = 0;
+        for (int ray = 0; ray < 32 && found < wanted; ray++)
+        {
+            float angle = (float)(random.NextDouble() * 2.0 * Math.PI);
+            float distance = radius * MathF.Sqrt((float)random.NextDouble());
+            Vector3 origin = point + new Vector3(distance * MathF.Cos(angle), radius, distance * MathF.Sin(angle));
+            if (!_bvh.Raycast(origin, new Vector3(0f, -2f * radius, 0f), 1f, out RayHit hit) ||
+                !_isCandidate[hit.Triangle] || Vector3.Distance(hit.Point, point) > radius)
+            {
+                continue;
+            }
+
+            PoseEvaluation? pose = TryAt(random, hit.Triangle, hit.Point);
+            if (pose is not null)
+            {
+                found++;
+                float d = Vector3.Distance(pose.Pose.Position, point);
+                if (d < bestDistance)
+                {
+                    best = pose;
+                    bestDistance = d;
+                }
+            }
+        }
+
+        return best ?? SampleNearAnySurface(random, point, radius, wanted);
+    }
+
+    /// <summary>The general path of <see cref="SampleNear"/>: every candidate triangle near the point, chosen by area.</summary>
+    private PoseEvaluation? SampleNearAnySurface(Random random, Vector3 point, float radius, int wanted)
+    {
         var nearby = new List<int>();
-        _bvh.TrianglesInBox(new Aabb(point - new Vector3(radius), point + new Vector3(radius)), nearby);
+        _bvh.TrianglesNear(new Aabb(point - new Vector3(radius), point + new Vector3(radius)), nearby);
         nearby.Sort();
         var candidates = new List<int>();
         var cumulative = new List<double>();
         double total = 0;
         foreach (int t in nearby)
         {
-            if (IsCandidate(t))
+            if (_isCandidate[t])
             {
                 // Weight by the part of the triangle near the point, approximated by its area.
                 total += _level.Triangles[t].Area;
@@ -189,7 +227,7 @@ public sealed class TrunkSampler
             position += push * Settings.RepairStep;
         }
 
-        PoseEvaluation evaluation = _estimator.Evaluate(new RootPose(position, rotation));
+        PoseEvaluation evaluation = _estimator.EvaluateContacts(new RootPose(position, rotation));
         return evaluation.IsValid ? evaluation : null;
     }
 

@@ -1,0 +1,173 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Cli;
+
+/// <summary>
+/// <c>bench</c>: the paper's planning columns (roadmap construction time to its node counts, Table 1) on the
+/// bundled levels, plus query time on a 1,000-node roadmap and the throughput of the two innermost operations.
+/// Medians over several runs; one thread unless told otherwise, like the paper's single core.
+/// </summary>
+internal static class BenchCommand
+{
+    private static readonly (string Level, string Character, int Nodes, double PaperSeconds)[] Scenarios =
+    [
+        ("desert", "skeleton", 22, 0.51),
+        ("pond", "frog", 47, 0.76),
+        ("rooftops", "jumperman", 142, 44.93),
+        ("rooftops", "skeleton", 1256, 107.13),
+    ];
+
+    public static Command Create()
+    {
+        Option<int> runs = new("--runs") { Description = "Runs per measurement; the median is printed.", DefaultValueFactory = _ => 5 };
+        Option<int> threads = new("--threads") { Description = "Bake threads (the paper used one core).", DefaultValueFactory = _ => 1 };
+        Option<string?> only = new("--only") { Description = "Run only the scenarios whose level or character contains this text." };
+        var command = new Command("bench", "Benchmark bakes to the paper's node counts, queries, steering and box queries; prints medians.") { runs, threads, only };
+        command.SetAction(parse => CliCommands.Guard(parse, () =>
+        {
+            int n = parse.GetValue(runs);
+            int t = parse.GetValue(threads);
+            if (n < 1 || t < 1)
+            {
+                throw new CliException("--runs and --threads must be at least 1.");
+            }
+
+            Run(parse.InvocationConfiguration.Output, n, t, parse.GetValue(only));
+            return 0;
+        }));
+        return command;
+    }
+
+    private static void Run(TextWriter output, int runs, int threads, string? only)
+    {
+        output.WriteLine($"Ballistic bench: median of {runs} runs, {threads} bake thread(s), .NET {Environment.Version}, {Environment.ProcessorCount} cores");
+        output.WriteLine();
+        output.WriteLine("| scenario | triangles | roadmap CT (s) | nodes | jumps | paper CT (s) |");
+        output.WriteLine("|---|---:|---:|---:|---:|---:|");
+        var levels = new Dictionary<string, Level>();
+        foreach ((string levelName, string characterName, int nodes, double paper) in Scenarios)
+        {
+            if (only is not null && !levelName.Contains(only, StringComparison.OrdinalIgnoreCase) && !characterName.Contains(only, StringComparison.OrdinalIgnoreCase))
+            {
+                continue;
+            }
+
+            Level level = levels.TryGetValue(levelName, out Level? cached) ? cached : levels[levelName] = LoadBundled(levelName);
+            var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
+            var baker = new RoadmapBaker(scene);
+            var times = new List<double>();
+            BakeResult? last = null;
+            baker.Bake(new BakeSettings { Seed = 1_000, MaxNodes = Math.Min(nodes, 50), Threads = threads }); // warm-up, not counted
+            for (int r = 0; r < runs; r++)
+            {
+                last = baker.Bake(new BakeSettings { Seed = r + 1, MaxNodes = nodes, Threads = threads });
+                times.Add(last.Elapsed.TotalSeconds);
+            }
+
+            output.WriteLine($"| {characterName} on {levelName} | {level.Triangles.Count:N0} | {Median(times):0.0000} | {last!.Roadmap.Nodes.Count} | {last.Roadmap.Edges.Count} | {paper} |");
+        }
+
+        if (only is not null && !"desert".Contains(only, StringComparison.OrdinalIgnoreCase) && !"skeleton".Contains(only, StringComparison.OrdinalIgnoreCase))
+        {
+            return;
+        }
+
+        // Query, steering and box queries on the desert with the skeleton.
+        Level desert = levels.TryGetValue("desert", out Level? d) ? d : LoadBundled("desert");
+        var desertScene = PlanningScene.Create(desert, CharacterPresets.Skeleton());
+        Roadmap roadmap = new RoadmapBaker(desertScene).Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap;
+        var query = new PathQuery(desertScene, roadmap);
+        var random = new Random(3);
+        var queryTimes = new List<double>();
+        int found = 0;
+        const int warmUp = 100;
+        for (int q = 0; q < warmUp + Math.Max(100, runs * 40); q++)
+        {
+            RoadmapNode a = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            RoadmapNode b = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            Vector3 from = a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position;
+            Vector3 to = b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position;
+            var clock = Stopwatch.StartNew();
+            PlanResult result = query.Plan(from, to, new QuerySettings { Seed = q });
+            if (q >= warmUp)
+            {
+                queryTimes.Add(clock.Elapsed.TotalMilliseconds);
+                found += result.Status == PlannerStatus.Exact ? 1 : 0;
+            }
+        }
+
+        output.WriteLine();
+        output.WriteLine($"query on a {roadmap.Nodes.Count}-node, {roadmap.Edges.Count}-jump desert roadmap: median {Median(queryTimes):0.000} ms over {queryTimes.Count} queries after {warmUp} warm-up queries ({found} found a path)");
+
+        ParabolaSteering steering = desertScene.Steering;
+        var pairs = new List<(RoadmapNode A, RoadmapNode B)>();
+        for (int i = 0; i < 20_000; i++)
+        {
+            pairs.Add((roadmap.Nodes[random.Next(roadmap.Nodes.Count)], roadmap.Nodes[random.Next(roadmap.Nodes.Count)]));
+        }
+
+        var near = pairs.Where(p => Vector3.Distance(p.A.Pose.Position, p.B.Pose.Position) < 6f).Take(2_000).ToList();
+        var steerRates = new List<double>();
+        int valid = 0;
+        for (int r = -1; r < runs; r++) // run −1 warms up
+        {
+            var clock = Stopwatch.StartNew();
+            valid = 0;
+            foreach ((RoadmapNode a, RoadmapNode b) in near)
+            {
+                valid += steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone).Succeeded ? 1 : 0;
+            }
+
+            if (r >= 0)
+            {
+                steerRates.Add(near.Count / clock.Elapsed.TotalSeconds);
+            }
+        }
+
+        output.WriteLine($"steering (pairs within 6 m, {valid} of {near.Count} valid, with collision checks): median {Median(steerRates):N0} pairs/s");
+
+        var boxes = roadmap.Nodes.Select(node => new OrientedBox(node.Pose.Position - new Vector3(0f, 0.3f, 0f), desertScene.Character.TrunkHalfExtents, node.Pose.Rotation)).ToArray();
+        var boxRates = new List<double>();
+        int hits = 0;
+        for (int r = -1; r < runs; r++) // run −1 warms up
+        {
+            var clock = Stopwatch.StartNew();
+            hits = 0;
+            for (int rep = 0; rep < 20; rep++)
+            {
+                foreach (OrientedBox box in boxes)
+                {
+                    hits += desertScene.Bvh.Overlaps(box) ? 1 : 0;
+                }
+            }
+
+            if (r >= 0)
+            {
+                boxRates.Add(20.0 * boxes.Length / clock.Elapsed.TotalSeconds);
+            }
+        }
+
+        output.WriteLine($"trunk box vs level ({desert.Triangles.Count:N0} triangles, {hits / 20} of {boxes.Length} touching): median {Median(boxRates):N0} queries/s");
+    }
+
+    private static Level LoadBundled(string name)
+    {
+        string? path = CliInputs.FindBundledLevel(name);
+        return path is null ? CliInputs.Generated(name) : CliInputs.LoadLevel(path);
+    }
+
+    private static double Median(List<double> values)
+    {
+        var sorted = values.Order().ToList();
+        return sorted.Count % 2 == 1 ? sorted[sorted.Count / 2] : 0.5 * (sorted[(sorted.Count / 2) - 1] + sorted[sorted.Count / 2]);
+    }
+}
