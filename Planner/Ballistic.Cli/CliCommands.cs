@@ -52,6 +52,10 @@ internal static class CliCommands
             progress?.Finish();
             stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
             stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
+            if (result.SteeringRejections.Count > 0)
+            {
+                stdout.WriteLine("rejected jumps: " + string.Join(", ", result.SteeringRejections.OrderByDescending(r => r.Value).Select(r => $"{r.Key} {r.Value}")));
+            }
             if (result.Roadmap.Nodes.Count == 0 || result.Status is PlannerStatus.Cancelled)
             {
                 throw new CliException($"Nothing written: {result.Reason}.");

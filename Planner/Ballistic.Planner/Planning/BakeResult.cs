@@ -1,4 +1,5 @@
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Planning;
 
@@ -11,4 +12,8 @@ namespace Ballistic.Planner.Planning;
 /// <param name="GoalNode">Id of the goal node, when a goal was given and placed.</param>
 /// <param name="SteeringCalls">How many times the steering method ran.</param>
 /// <param name="SamplesDrawn">How many node samples were attempted (each of up to the sampler's attempts).</param>
-public sealed record BakeResult(Roadmap Roadmap, PlannerStatus Status, string Reason, TimeSpan Elapsed, int? StartNode, int? GoalNode, long SteeringCalls, long SamplesDrawn);
+public sealed record BakeResult(Roadmap Roadmap, PlannerStatus Status, string Reason, TimeSpan Elapsed, int? StartNode, int? GoalNode, long SteeringCalls, long SamplesDrawn)
+{
+    /// <summary>How many steering calls failed, by reason (the original planner's failure counters).</summary>
+    public IReadOnlyDictionary<SteeringFailure, long> SteeringRejections { get; init; } = new Dictionary<SteeringFailure, long>();
+}

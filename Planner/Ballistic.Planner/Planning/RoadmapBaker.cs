@@ -86,7 +86,7 @@ public sealed class RoadmapBaker
                     reason += "; the start does not reach the goal yet";
                 }
 
-                return new BakeResult(roadmap, status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample);
+                return new BakeResult(roadmap, status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample) { SteeringRejections = counters.Rejections };
             }
 
             if (emptyRounds >= MaxEmptyRounds)
@@ -94,7 +94,8 @@ public sealed class RoadmapBaker
                 long attempts = (long)MaxEmptyRounds * settings.BatchSize * _scene.Sampler.Settings.MaxAttempts;
                 return new BakeResult(roadmap, PlannerStatus.NoPath,
                     $"no valid root pose found in the last {attempts} attempts: {_scene.Character.Name} can stand nowhere else on this level",
-                    clock.Elapsed, startNode, goalNode, counters.Steering, nextSample);
+                    clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
+                { SteeringRejections = counters.Rejections };
             }
 
             int batch = settings.BatchSize;
@@ -194,6 +195,8 @@ public sealed class RoadmapBaker
 
         for (int n = 0; n < pairs.Count; n++)
         {
+            counters.Count(forward[n]);
+            counters.Count(backward[n]);
             (int i, int j) = pairs[n];
             if (forward[n].Succeeded)
             {
@@ -286,5 +289,15 @@ public sealed class RoadmapBaker
     private sealed class Counters
     {
         public long Steering { get; set; }
+
+        public Dictionary<SteeringFailure, long> Rejections { get; } = [];
+
+        public void Count(in SteeringResult result)
+        {
+            if (!result.Succeeded)
+            {
+                Rejections[result.Failure] = Rejections.GetValueOrDefault(result.Failure) + 1;
+            }
+        }
     }
 }

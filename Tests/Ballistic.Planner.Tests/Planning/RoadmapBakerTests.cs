@@ -4,6 +4,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Planning;
@@ -19,6 +20,8 @@ public sealed class RoadmapBakerTests
         Assert.That(result.Status, Is.EqualTo(PlannerStatus.Exact), result.Reason);
         Assert.That(result.Roadmap.Nodes, Has.Count.EqualTo(60));
         Assert.That(result.Roadmap.Edges, Has.Count.GreaterThan(60));
+        Assert.That(result.SteeringRejections.Values.Sum() + result.Roadmap.Edges.Count, Is.EqualTo(result.SteeringCalls), "every steering call is an edge or a counted rejection");
+        Assert.That(result.SteeringRejections.Keys, Does.Contain(SteeringFailure.Collision), "the wall and platform edges block some jumps");
         foreach (RoadmapNode node in result.Roadmap.Nodes)
         {
             PhysicsChecks.AssertNode(Scene.Value, node, $"node {node.Id}");
