@@ -1,7 +1,6 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
-using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -29,13 +28,7 @@ public class PlanningBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var builder = new LevelBuilder("desert");
-        foreach (LevelMesh mesh in LevelGenerator.Desert())
-        {
-            builder.AddMesh(mesh.Name, mesh.Positions, mesh.Indices, Matrix4x4.Identity, mesh.Material);
-        }
-
-        _scene = PlanningScene.Create(builder.Build(), CharacterPresets.Skeleton());
+        _scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
         _baker = new RoadmapBaker(_scene);
         Roadmap roadmap = _baker.Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000 }).Roadmap;
         _query = new PathQuery(_scene, roadmap);

@@ -64,16 +64,7 @@ internal static class CliInputs
     }
 
     /// <summary>Builds a generated level in memory.</summary>
-    public static Level Generated(string name)
-    {
-        var builder = new LevelBuilder($"{name} (generated)");
-        foreach (LevelMesh mesh in LevelGenerator.Generate(name))
-        {
-            builder.AddMesh(mesh.Name, mesh.Positions, mesh.Indices, Matrix4x4.Identity, mesh.Material);
-        }
-
-        return builder.Build();
-    }
+    public static Level Generated(string name) => LevelGenerator.BuildLevel(name);
 
     /// <summary>The highest surface point under (x, z), or the given height when there is none.</summary>
     public static Vector3 OnGround(TriangleBvh bvh, float x, float z, float fallbackY)

@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using System.Text.Json;
 using System.Text.Json.Nodes;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Gltf;
 
@@ -169,13 +170,7 @@ public sealed class GlbWriter
     public void Save(string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (directory is not null)
-        {
-            Directory.CreateDirectory(directory);
-        }
-
-        File.WriteAllBytes(path, ToBytes());
+        OutputFile.Write(path, ToBytes());
     }
 
     private int AddView(byte[] bytes, int? target)

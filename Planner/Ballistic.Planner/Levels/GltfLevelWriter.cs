@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Levels;
 
@@ -61,13 +62,7 @@ public static class GltfLevelWriter
     public static void Save(string path, IReadOnlyList<LevelMesh> meshes)
     {
         ArgumentNullException.ThrowIfNull(path);
-        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (directory is not null)
-        {
-            Directory.CreateDirectory(directory);
-        }
-
-        File.WriteAllBytes(path, ToBytes(meshes));
+        OutputFile.Write(path, ToBytes(meshes));
     }
 
     private static Vector3[] SmoothNormals(Vector3[] positions, int[] indices)

@@ -3,6 +3,7 @@ using System.Text;
 using System.Text.Json;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
@@ -147,13 +148,7 @@ public static class PlanReportWriter
     public static void Save(PlanReport report, string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (directory is not null)
-        {
-            Directory.CreateDirectory(directory);
-        }
-
-        File.WriteAllBytes(path, ToJson(report));
+        OutputFile.Write(path, ToJson(report));
     }
 
     /// <summary>The report as a string (for tests and logs).</summary>

@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Text;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 
@@ -189,13 +190,7 @@ public static class SvgPlanRenderer
     public static void Save(PlanReport report, Roadmap? roadmap, string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (directory is not null)
-        {
-            Directory.CreateDirectory(directory);
-        }
-
-        File.WriteAllText(path, Render(report, roadmap), new UTF8Encoding(false));
+        OutputFile.Write(path, new UTF8Encoding(false).GetBytes(Render(report, roadmap)));
     }
 
     /// <summary>The friction cone of a node cut by the profile plane, drawn as a wedge at <paramref name="at"/>.</summary>

@@ -4,6 +4,7 @@ using System.Security.Cryptography;
 using System.Text;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Roadmaps;
@@ -72,23 +73,7 @@ public static class RoadmapFile
     public static void Save(Roadmap roadmap, string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        byte[] bytes = ToBytes(roadmap);
-        string full = Path.GetFullPath(path);
-        string directory = Path.GetDirectoryName(full) ?? ".";
-        Directory.CreateDirectory(directory);
-        string temporary = Path.Combine(directory, $".{Path.GetFileName(full)}.{Environment.ProcessId}.tmp");
-        try
-        {
-            File.WriteAllBytes(temporary, bytes);
-            File.Move(temporary, full, overwrite: true);
-        }
-        finally
-        {
-            if (File.Exists(temporary))
-            {
-                File.Delete(temporary);
-            }
-        }
+        OutputFile.Write(path, ToBytes(roadmap));
     }
 
     /// <summary>Reads a roadmap file and checks that it was baked for this level and character.</summary>

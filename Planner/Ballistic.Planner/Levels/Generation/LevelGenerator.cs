@@ -31,6 +31,19 @@ public static class LevelGenerator
         _ => throw new ArgumentException($"Unknown level '{name}'. Generated levels: {string.Join(", ", Names)}.", nameof(name)),
     };
 
+    /// <summary>The level called <paramref name="name"/>, built in memory (the same triangles as its GLB file).</summary>
+    /// <exception cref="ArgumentException">No generated level has that name.</exception>
+    public static Level BuildLevel(string name)
+    {
+        var builder = new LevelBuilder($"{name} (generated)");
+        foreach (LevelMesh mesh in Generate(name))
+        {
+            builder.AddMesh(mesh.Name, mesh.Positions, mesh.Indices, Matrix4x4.Identity, mesh.Material);
+        }
+
+        return builder.Build();
+    }
+
     /// <summary>Height of the desert's dunes at (x, z), metres.</summary>
     public static float DuneHeight(float x, float z)
     {
