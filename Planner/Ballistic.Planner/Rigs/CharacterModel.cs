@@ -1,0 +1,68 @@
+namespace Ballistic.Planner.Rigs;
+
+/// <summary>
+/// A whole character: its rig, its limbs, its reference poses and the bone radii used for collision and for the
+/// exported mesh. The reduced model the planner uses is derived from it by sampling its joints (<see cref="ReducedModelBuilder"/>).
+/// </summary>
+public sealed class CharacterModel
+{
+    /// <summary>Creates a character model, checking that every reference pose fits the rig.</summary>
+    /// <exception cref="RigException">A pose has the wrong number of angles or leaves a joint's limits, or a radius is missing.</exception>
+    public CharacterModel(string name, Rig rig, IReadOnlyList<RigLimb> limbs, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> boneRadii, float[] contactPose, float[] flexionPose, float[] extendingPose)
+    {
+        ArgumentNullException.ThrowIfNull(rig);
+        ArgumentNullException.ThrowIfNull(limbs);
+        ArgumentNullException.ThrowIfNull(trunkJoints);
+        ArgumentNullException.ThrowIfNull(boneRadii);
+        if (limbs.Count == 0)
+        {
+            throw new RigException($"Character '{name}' has no limbs.");
+        }
+
+        if (boneRadii.Count != rig.Joints.Count)
+        {
+            throw new RigException($"Character '{name}': {boneRadii.Count} bone radii for {rig.Joints.Count} joints.");
+        }
+
+        foreach ((string poseName, float[] pose) in new[] { ("contact", contactPose), ("flexion", flexionPose), ("extending", extendingPose) })
+        {
+            if (pose is null || pose.Length != rig.DofCount || !rig.WithinLimits(pose))
+            {
+                throw new RigException($"Character '{name}': the {poseName} pose must give {rig.DofCount} angles within the joint limits.");
+            }
+        }
+
+        Name = name;
+        Rig = rig;
+        Limbs = [.. limbs];
+        TrunkJoints = [.. trunkJoints];
+        BoneRadii = [.. boneRadii];
+        ContactPose = contactPose;
+        FlexionPose = flexionPose;
+        ExtendingPose = extendingPose;
+    }
+
+    /// <summary>Character name; the reduced model and presets use the same.</summary>
+    public string Name { get; }
+
+    /// <summary>The kinematic skeleton.</summary>
+    public Rig Rig { get; }
+
+    /// <summary>The limbs, in the order of the reduced model's limbs.</summary>
+    public IReadOnlyList<RigLimb> Limbs { get; }
+
+    /// <summary>Joints that belong to the trunk (bounded by W0) rather than to a limb.</summary>
+    public IReadOnlyList<int> TrunkJoints { get; }
+
+    /// <summary>Radius (metres) of the bone from each joint's parent to the joint (the root's is its own).</summary>
+    public IReadOnlyList<float> BoneRadii { get; }
+
+    /// <summary>The pose limbs take when in contact (standing, ready).</summary>
+    public float[] ContactPose { get; }
+
+    /// <summary>The crouched pose before takeoff and after landing.</summary>
+    public float[] FlexionPose { get; }
+
+    /// <summary>The stretched pose at the apex of a jump.</summary>
+    public float[] ExtendingPose { get; }
+}

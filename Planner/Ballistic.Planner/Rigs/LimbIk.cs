@@ -1,0 +1,259 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using MathNet.Numerics.LinearAlgebra;
+using DenseVector = MathNet.Numerics.LinearAlgebra.Vector<double>;
+
+namespace Ballistic.Planner.Rigs;
+
+/// <summary>
+/// Damped-least-squares inverse kinematics for one limb with the root locked: moves only the limb chain's angles,
+/// within their limits, to put the effector's contact point on a target and, optionally, its contact normal along a
+/// target normal. Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e, clamped, repeated; restarts from other configurations when stuck.
+/// A target it cannot reach is reported as a failure and leaves the configuration untouched.
+/// </summary>
+public sealed class LimbIk
+{
+    private const int MaxRows = 5;
+
+    /// <summary>Creates a solver for a rig.</summary>
+    public LimbIk(Rig rig, IkSettings? settings = null)
+    {
+        ArgumentNullException.ThrowIfNull(rig);
+        Rig = rig;
+        Settings = settings ?? new IkSettings();
+    }
+
+    /// <summary>The rig.</summary>
+    public Rig Rig { get; }
+
+    /// <summary>Solver parameters.</summary>
+    public IkSettings Settings { get; }
+
+    /// <summary>
+    /// Moves <paramref name="limb"/>'s angles in <paramref name="q"/> so that its contact point reaches
+    /// <paramref name="target"/> (world metres) and, when given, its contact normal points along
+    /// <paramref name="targetNormal"/>.
+    /// </summary>
+    /// <param name="root">Root pose, fixed.</param>
+    /// <param name="q">Configuration: read as the starting point, updated only on success.</param>
+    /// <param name="limb">The limb to move.</param>
+    /// <param name="target">Target contact point, world metres.</param>
+    /// <param name="targetNormal">Target contact normal (unit, world), or <c>null</c> for position only.</param>
+    /// <param name="seed">Seed of the restarts' starting configurations.</param>
+    public IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed = 0)
+    {
+        ArgumentNullException.ThrowIfNull(limb);
+        float[] trial = q.ToArray();
+        int iterations = 0;
+        IkResult best = new(false, float.PositiveInfinity, float.PositiveInfinity, 0);
+        Random? random = null;
+        for (int attempt = 0; attempt <= Settings.Restarts; attempt++)
+        {
+            if (attempt > 0)
+            {
+                random ??= new Random(seed);
+                q.CopyTo(trial);
+                foreach (int d in limb.ChainDofs)
+                {
+                    JointAxis axis = Rig.Dofs[d];
+                    trial[d] = axis.Min + ((float)random.NextDouble() * (axis.Max - axis.Min));
+                }
+            }
+
+            IkResult result = Iterate(root, trial, limb, target, targetNormal);
+            iterations += result.Iterations;
+            if (result.Success)
+            {
+                trial.CopyTo(q);
+                return result with { Iterations = iterations };
+            }
+
+            if (result.PositionError < best.PositionError)
+            {
+                best = result;
+            }
+        }
+
+        return best with { Success = false, Iterations = iterations };
+    }
+
+    private IkResult Iterate(in RootPose root, float[] q, RigLimb limb, Vector3 target, Vector3? targetNormal)
+    {
+        int joints = Rig.Joints.Count;
+        Span<Vector3> positions = joints <= 128 ? stackalloc Vector3[joints] : new Vector3[joints];
+        Span<Quaternion> rotations = joints <= 128 ? stackalloc Quaternion[joints] : new Quaternion[joints];
+        int n = limb.ChainDofs.Count;
+        int rows = targetNormal is null ? 3 : 5;
+        Span<double> jacobian = stackalloc double[MaxRows * 64];
+        Span<double> error = stackalloc double[MaxRows];
+        Span<double> step = stackalloc double[64];
+        if (n > 64)
+        {
+            throw new RigException($"Limb '{limb.Name}' has {n} degrees of freedom; the IK handles at most 64.");
+        }
+
+        Vector3 goalNormal = targetNormal is Vector3 tn ? Vector3.Normalize(tn) : Vector3.UnitY;
+        float positionError = float.PositiveInfinity;
+        float normalError = 0f;
+        for (int iteration = 0; iteration < Settings.MaxIterations; iteration++)
+        {
+            Rig.Solve(root, q, positions, rotations);
+            Vector3 p = limb.EffectorPosition(positions, rotations);
+            Vector3 e = target - p;
+            positionError = e.Length();
+            Vector3 normal = limb.EffectorNormal(rotations);
+            normalError = targetNormal is null ? 0f : MathF.Acos(Math.Clamp(Vector3.Dot(normal, goalNormal), -1f, 1f));
+            bool positionOk = positionError <= Settings.PositionTolerance * 0.1f;
+            bool normalOk = normalError <= Settings.NormalTolerance * 0.25f;
+            if (positionOk && normalOk)
+            {
+                return new IkResult(true, positionError, normalError, iteration);
+            }
+
+            // Rows: position (3), then the normal's rotation error on two axes perpendicular to the current normal.
+            Vector3 u = Vector3.Normalize(Vector3.Cross(normal, MathF.Abs(normal.X) < 0.9f ? Vector3.UnitX : Vector3.UnitY));
+            Vector3 v = Vector3.Cross(normal, u);
+            Vector3 omega = Vector3.Cross(normal, goalNormal);
+            error[0] = e.X;
+            error[1] = e.Y;
+            error[2] = e.Z;
+            if (rows == 5)
+            {
+                error[3] = Settings.NormalWeight * Vector3.Dot(omega, u);
+                error[4] = Settings.NormalWeight * Vector3.Dot(omega, v);
+            }
+
+            for (int c = 0; c < n; c++)
+            {
+                int dof = limb.ChainDofs[c];
+                Vector3 axis = Rig.WorldAxis(dof, q, rotations);
+                Vector3 linear = Vector3.Cross(axis, p - positions[Rig.JointOfDof(dof)]);
+                jacobian[c] = linear.X;
+                jacobian[n + c] = linear.Y;
+                jacobian[(2 * n) + c] = linear.Z;
+                if (rows == 5)
+                {
+                    jacobian[(3 * n) + c] = Settings.NormalWeight * Vector3.Dot(axis, u);
+                    jacobian[(4 * n) + c] = Settings.NormalWeight * Vector3.Dot(axis, v);
+                }
+            }
+
+            if (Settings.UseMathNet)
+            {
+                SolveMathNet(jacobian[..(rows * n)], error[..rows], step[..n], rows, n, Settings.Damping);
+            }
+            else
+            {
+                SolveSmall(jacobian[..(rows * n)], error[..rows], step[..n], rows, n, Settings.Damping);
+            }
+
+            double largest = 0;
+            for (int c = 0; c < n; c++)
+            {
+                largest = Math.Max(largest, Math.Abs(step[c]));
+            }
+
+            double scale = largest > Settings.MaxStep ? Settings.MaxStep / largest : 1.0;
+            for (int c = 0; c < n; c++)
+            {
+                int dof = limb.ChainDofs[c];
+                q[dof] = Rig.Dofs[dof].Clamp(q[dof] + (float)(step[c] * scale));
+            }
+        }
+
+        Rig.Solve(root, q, positions, rotations);
+        positionError = Vector3.Distance(target, limb.EffectorPosition(positions, rotations));
+        normalError = targetNormal is null ? 0f : MathF.Acos(Math.Clamp(Vector3.Dot(limb.EffectorNormal(rotations), goalNormal), -1f, 1f));
+        bool success = positionError <= Settings.PositionTolerance && normalError <= Settings.NormalTolerance;
+        return new IkResult(success, positionError, normalError, Settings.MaxIterations);
+    }
+
+    /// <summary>Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e with a Cholesky factorisation of the small m × m system.</summary>
+    internal static void SolveSmall(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n, double damping)
+    {
+        Span<double> a = stackalloc double[MaxRows * MaxRows];
+        for (int r = 0; r < m; r++)
+        {
+            for (int c = 0; c <= r; c++)
+            {
+                double sum = 0;
+                for (int k = 0; k < n; k++)
+                {
+                    sum += j[(r * n) + k] * j[(c * n) + k];
+                }
+
+                a[(r * m) + c] = sum + (r == c ? damping * damping : 0);
+            }
+        }
+
+        // Cholesky: A = L Lᵀ, in place in the lower triangle.
+        for (int r = 0; r < m; r++)
+        {
+            for (int c = 0; c <= r; c++)
+            {
+                double sum = a[(r * m) + c];
+                for (int k = 0; k < c; k++)
+                {
+                    sum -= a[(r * m) + k] * a[(c * m) + k];
+                }
+
+                a[(r * m) + c] = r == c ? Math.Sqrt(Math.Max(sum, 1e-18)) : sum / a[(c * m) + c];
+            }
+        }
+
+        Span<double> x = stackalloc double[MaxRows];
+        for (int r = 0; r < m; r++)
+        {
+            double sum = e[r];
+            for (int k = 0; k < r; k++)
+            {
+                sum -= a[(r * m) + k] * x[k];
+            }
+
+            x[r] = sum / a[(r * m) + r];
+        }
+
+        for (int r = m - 1; r >= 0; r--)
+        {
+            double sum = x[r];
+            for (int k = r + 1; k < m; k++)
+            {
+                sum -= a[(k * m) + r] * x[k];
+            }
+
+            x[r] = sum / a[(r * m) + r];
+        }
+
+        for (int c = 0; c < n; c++)
+        {
+            double sum = 0;
+            for (int r = 0; r < m; r++)
+            {
+                sum += j[(r * n) + c] * x[r];
+            }
+
+            dq[c] = sum;
+        }
+    }
+
+    /// <summary>The same step computed with MathNet.Numerics dense matrices and its Cholesky solver.</summary>
+    internal static void SolveMathNet(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n, double damping)
+    {
+        Matrix<double> jacobian = Matrix<double>.Build.Dense(m, n, (r, c) => 0);
+        for (int r = 0; r < m; r++)
+        {
+            for (int c = 0; c < n; c++)
+            {
+                jacobian[r, c] = j[(r * n) + c];
+            }
+        }
+
+        Matrix<double> system = (jacobian * jacobian.Transpose()) + Matrix<double>.Build.DenseIdentity(m).Multiply(damping * damping);
+        DenseVector x = system.Cholesky().Solve(DenseVector.Build.DenseOfArray(e.ToArray()));
+        DenseVector step = jacobian.TransposeThisAndMultiply(x);
+        for (int c = 0; c < n; c++)
+        {
+            dq[c] = step[c];
+        }
+    }
+}

@@ -1,0 +1,91 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Planner.Rigs;
+
+/// <summary>
+/// Derives the planner's reduced character from a whole character: the trunk box W0 bounds the trunk's bones in the
+/// contact pose; each limb's workspace Wk bounds where its contact point goes over random configurations of its
+/// joints (the central part of that cloud, trimmed per axis, so rare extreme reaches do not count).
+/// </summary>
+public static class ReducedModelBuilder
+{
+    /// <summary>
+    /// The trunk box of the given joints, bones padded by their radii, in the root joint's frame with the root
+    /// joint at the origin and the rig in <paramref name="pose"/>: its centre and half extents, metres.
+    /// </summary>
+    public static (Vector3 Center, Vector3 HalfExtents) TrunkBox(IReadOnlyList<Joint> joints, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> radii, float[] pose)
+    {
+        ArgumentNullException.ThrowIfNull(joints);
+        ArgumentNullException.ThrowIfNull(trunkJoints);
+        ArgumentNullException.ThrowIfNull(radii);
+        var rig = new Rig(joints, Vector3.Zero);
+        var positions = new Vector3[joints.Count];
+        var rotations = new Quaternion[joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
+        Aabb box = Aabb.Empty;
+        foreach (int j in trunkJoints)
+        {
+            float r = radii[j];
+            box = Aabb.Union(box, new Aabb(positions[j] - new Vector3(r), positions[j] + new Vector3(r)));
+        }
+
+        return (box.Center, box.HalfExtents);
+    }
+
+    /// <summary>
+    /// The reduced character of <paramref name="model"/>, with the speeds, friction and required contacts given.
+    /// </summary>
+    /// <param name="model">The whole character.</param>
+    /// <param name="requiredContacts">How many limbs must touch.</param>
+    /// <param name="takeoffSpeedMax">Largest takeoff speed, m/s.</param>
+    /// <param name="landingSpeedMax">Largest landing speed, m/s.</param>
+    /// <param name="friction">Default friction.</param>
+    /// <param name="samples">Random configurations per limb.</param>
+    /// <param name="trim">Fraction of the cloud cut off at each end of each axis.</param>
+    public static ReducedCharacter Derive(CharacterModel model, int requiredContacts, float takeoffSpeedMax, float landingSpeedMax, float friction, int samples = 4_000, float trim = 0.03f)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        Rig rig = model.Rig;
+        (_, Vector3 trunkHalf) = TrunkBox(rig.Joints, model.TrunkJoints, model.BoneRadii, model.ContactPose);
+        var identity = new RootPose(Vector3.Zero, Quaternion.Identity);
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var limbs = new List<Limb>();
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            RigLimb limb = model.Limbs[l];
+            var random = new Random(1_000 + l);
+            var xs = new float[samples];
+            var ys = new float[samples];
+            var zs = new float[samples];
+            float[] q = (float[])model.ContactPose.Clone();
+            for (int s = 0; s < samples; s++)
+            {
+                foreach (int d in limb.ChainDofs)
+                {
+                    JointAxis axis = rig.Dofs[d];
+                    q[d] = axis.Min + ((float)random.NextDouble() * (axis.Max - axis.Min));
+                }
+
+                rig.Solve(identity, q, positions, rotations);
+                Vector3 p = limb.EffectorPosition(positions, rotations);
+                xs[s] = p.X;
+                ys[s] = p.Y;
+                zs[s] = p.Z;
+            }
+
+            Array.Sort(xs);
+            Array.Sort(ys);
+            Array.Sort(zs);
+            int lo = (int)(trim * samples);
+            int hi = samples - 1 - lo;
+            var min = new Vector3(xs[lo], ys[lo], zs[lo]);
+            var max = new Vector3(xs[hi], ys[hi], zs[hi]);
+            limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter));
+        }
+
+        return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction);
+    }
+}

@@ -1,0 +1,190 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Rigs.Procedural;
+
+namespace Ballistic.Planner.Tests.Rigs;
+
+public sealed class RigTests
+{
+    private static readonly Lazy<CharacterModel> Humanoid = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
+
+    [Test]
+    public void HumanoidHasAboutFortyDegreesOfFreedomAndStandsOnItsFeet()
+    {
+        CharacterModel model = Humanoid.Value;
+        Rig rig = model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        RigLimb left = model.Limbs[0];
+        Vector3 sole = left.EffectorPosition(positions, rotations);
+        Assert.Multiple(() =>
+        {
+            Assert.That(rig.DofCount, Is.InRange(36, 44));
+            Assert.That(model.Limbs.Select(l => l.Name), Is.EqualTo(new[] { "left_foot", "right_foot", "left_hand", "right_hand" }));
+            Assert.That(sole.Y, Is.LessThan(-0.6f), "feet below the trunk centre");
+            Assert.That(sole.X, Is.GreaterThan(0f), "the left foot is on +X");
+            Assert.That(Vector3.Dot(left.EffectorNormal(rotations), -Vector3.UnitY), Is.GreaterThan(0.8f), "soles face down when standing");
+        });
+    }
+
+    [Test]
+    public void WorldAxesMatchFiniteDifferencesOfTheEffector()
+    {
+        CharacterModel model = Humanoid.Value;
+        Rig rig = model.Rig;
+        var random = new Random(8);
+        var root = new RootPose(new Vector3(1f, 2f, 3f), Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(0.3f, 1f, 0.2f)), 0.7f));
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var moved = new Vector3[rig.Joints.Count];
+        var movedRotations = new Quaternion[rig.Joints.Count];
+        foreach (RigLimb limb in model.Limbs)
+        {
+            float[] q = RandomPose(rig, limb, random, model.ContactPose);
+            rig.Solve(root, q, positions, rotations);
+            Vector3 p = limb.EffectorPosition(positions, rotations);
+            foreach (int d in limb.ChainDofs)
+            {
+                Vector3 predicted = Vector3.Cross(rig.WorldAxis(d, q, rotations), p - positions[rig.JointOfDof(d)]);
+                const float h = 1e-3f;
+                float[] q2 = (float[])q.Clone();
+                q2[d] += h;
+                rig.Solve(root, q2, moved, movedRotations);
+                Vector3 measured = (limb.EffectorPosition(moved, movedRotations) - p) / h;
+                Assert.That(Vector3.Distance(predicted, measured), Is.LessThan(2e-3f + (0.01f * predicted.Length())), $"{limb.Name}, dof {d}");
+            }
+        }
+    }
+
+    [Test]
+    public void IkReachesReachableTargetsWithinAMillimetreAndKeepsLimits([Values] bool useMathNet)
+    {
+        CharacterModel model = Humanoid.Value;
+        Rig rig = model.Rig;
+        var ik = new LimbIk(rig, new IkSettings { UseMathNet = useMathNet });
+        var random = new Random(21);
+        var root = new RootPose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.5f));
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        int solved = 0;
+        const int cases = 200;
+        for (int i = 0; i < cases; i++)
+        {
+            RigLimb limb = model.Limbs[i % model.Limbs.Count];
+            float[] goal = RandomPose(rig, limb, random, model.ContactPose);
+            rig.Solve(root, goal, positions, rotations);
+            Vector3 target = limb.EffectorPosition(positions, rotations);
+            Vector3 normal = limb.EffectorNormal(rotations);
+
+            float[] q = (float[])model.ContactPose.Clone();
+            IkResult result = ik.Solve(root, q, limb, target, normal, seed: i);
+            if (!result.Success)
+            {
+                Assert.That(q, Is.EqualTo(model.ContactPose), "a failed solve leaves the configuration untouched");
+                continue;
+            }
+
+            solved++;
+            rig.Solve(root, q, positions, rotations);
+            Assert.That(Vector3.Distance(limb.EffectorPosition(positions, rotations), target), Is.LessThanOrEqualTo(1e-3f), $"case {i}");
+            Assert.That(MathF.Acos(Math.Clamp(Vector3.Dot(limb.EffectorNormal(rotations), normal), -1f, 1f)), Is.LessThanOrEqualTo(15f * MathF.PI / 180f), $"case {i}");
+            Assert.That(rig.WithinLimits(q), Is.True, $"case {i}: joint limits");
+            for (int d = 0; d < q.Length; d++)
+            {
+                if (!limb.ChainDofs.Contains(d))
+                {
+                    Assert.That(q[d], Is.EqualTo(model.ContactPose[d]), $"case {i}: dof {d} is not in the limb and must not move");
+                }
+            }
+        }
+
+        Assert.That(solved, Is.GreaterThanOrEqualTo(cases * 95 / 100), "reachable targets are reached");
+    }
+
+    [Test]
+    public void IkReportsUnreachableTargetsAsFailures()
+    {
+        CharacterModel model = Humanoid.Value;
+        var ik = new LimbIk(model.Rig);
+        var root = new RootPose(Vector3.Zero, Quaternion.Identity);
+        foreach (RigLimb limb in model.Limbs)
+        {
+            float[] q = (float[])model.ContactPose.Clone();
+            IkResult far = ik.Solve(root, q, limb, new Vector3(0f, -3f, 2f), null);
+            IkResult behindHead = ik.Solve(root, q, limb, new Vector3(0f, 0.5f, -0.9f), -Vector3.UnitY);
+            Assert.Multiple(() =>
+            {
+                Assert.That(far.Success, Is.False, limb.Name);
+                Assert.That(far.PositionError, Is.GreaterThan(1f), limb.Name);
+                Assert.That(behindHead.Success, Is.False, limb.Name);
+                Assert.That(q, Is.EqualTo(model.ContactPose), limb.Name);
+            });
+        }
+    }
+
+    [Test]
+    public void SmallSolverAndMathNetAgree()
+    {
+        var random = new Random(4);
+        for (int trial = 0; trial < 50; trial++)
+        {
+            int m = trial % 2 == 0 ? 3 : 5;
+            int n = 3 + random.Next(8);
+            double[] j = [.. Enumerable.Range(0, m * n).Select(_ => random.NextDouble() - 0.5)];
+            double[] e = [.. Enumerable.Range(0, m).Select(_ => random.NextDouble() - 0.5)];
+            double[] a = new double[n];
+            double[] b = new double[n];
+            LimbIk.SolveSmall(j, e, a, m, n, 0.03);
+            LimbIk.SolveMathNet(j, e, b, m, n, 0.03);
+            for (int k = 0; k < n; k++)
+            {
+                Assert.That(a[k], Is.EqualTo(b[k]).Within(1e-9 + (1e-7 * Math.Abs(b[k]))));
+            }
+        }
+    }
+
+    [Test]
+    public void DerivedReducedModelPutsFeetBelowAndHandsBesideTheTrunk()
+    {
+        ReducedCharacter reduced = ReducedModelBuilder.Derive(Humanoid.Value, 2, 8f, 12f, 0.5f);
+        Limb foot = reduced.Limbs[0];
+        Limb hand = reduced.Limbs[2];
+        Assert.Multiple(() =>
+        {
+            Assert.That(reduced.TrunkHalfExtents.Y, Is.InRange(0.3f, 0.6f));
+            Assert.That(foot.WorkspaceCenter.Y + foot.WorkspaceHalfExtents.Y, Is.LessThan(0f), "the feet's workspace lies below the trunk centre");
+            Assert.That(foot.WorkspaceCenter.Y - foot.WorkspaceHalfExtents.Y, Is.LessThan(-0.9f), "legs reach about a metre down");
+            Assert.That(hand.WorkspaceCenter.X, Is.GreaterThan(0.1f), "left hand on the left");
+            Assert.That(reduced.TakeoffSpeedMax, Is.EqualTo(8f));
+        });
+    }
+
+    [Test]
+    public void LimbsNamingMissingBonesAreRejectedByName()
+    {
+        Rig rig = Humanoid.Value.Rig;
+        Assert.Multiple(() =>
+        {
+            Assert.That(() => new RigLimb(rig, "tail", LimbKind.Foot, "tailbone", "left_ankle", Vector3.Zero, -Vector3.UnitY, NormalFilter.None),
+                Throws.TypeOf<RigException>().With.Message.Contains("'tailbone'").And.Message.Contains("tail"));
+            Assert.That(() => new RigLimb(rig, "odd", LimbKind.Foot, "left_hip", "right_ankle", Vector3.Zero, -Vector3.UnitY, NormalFilter.None),
+                Throws.TypeOf<RigException>().With.Message.Contains("not an ancestor"));
+            Assert.That(() => new RigLimb(rig, "stiff", LimbKind.Foot, "pelvis", "pelvis", Vector3.Zero, -Vector3.UnitY, NormalFilter.None),
+                Throws.TypeOf<RigException>().With.Message.Contains("no joints that move"));
+        });
+    }
+
+    private static float[] RandomPose(Rig rig, RigLimb limb, Random random, float[] basis)
+    {
+        float[] q = (float[])basis.Clone();
+        foreach (int d in limb.ChainDofs)
+        {
+            JointAxis axis = rig.Dofs[d];
+            q[d] = axis.Min + ((float)random.NextDouble() * (axis.Max - axis.Min));
+        }
+
+        return q;
+    }
+}
