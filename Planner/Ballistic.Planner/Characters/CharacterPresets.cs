@@ -1,10 +1,13 @@
 using System.Numerics;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Rigs.Procedural;
 
 namespace Ballistic.Planner.Characters;
 
 /// <summary>
 /// The reduced characters of the original scenarios (planning notes §7): friction, speed limits, limbs and how
-/// many must touch follow the original scripts; the trunk and workspace boxes are set by hand here.
+/// many must touch follow the original scripts. The humanoids' trunk and workspace boxes are derived from their
+/// rigs; the frog's and the ant's are still set by hand.
 /// </summary>
 public static class CharacterPresets
 {
@@ -22,26 +25,32 @@ public static class CharacterPresets
         _ => throw new CharacterException($"Unknown character '{name}'. Known characters: {string.Join(", ", Names)}."),
     };
 
-    /// <summary>A 1.8 m humanoid skeleton: two feet and two hands, any two must touch; μ 0.5, 8 m/s takeoff, 12 m/s landing.</summary>
-    public static ReducedCharacter Skeleton()
+    /// <summary>
+    /// A 1.8 m humanoid skeleton: two feet and two hands, any two must touch; μ 0.5, 8 m/s takeoff, 12 m/s landing.
+    /// Trunk and workspaces derived from the 39-DOF humanoid rig (<see cref="HumanoidBuilder"/>).
+    /// </summary>
+    public static ReducedCharacter Skeleton() => SkeletonReduced.Value;
+
+    /// <summary>
+    /// A city-scale superhero: the humanoid rig with feet that need level ground and hands that may push off walls;
+    /// any two must touch; μ 1.2, 30 m/s takeoff and landing.
+    /// </summary>
+    public static ReducedCharacter Jumperman() => JumpermanReduced.Value;
+
+    /// <summary>The whole character behind a preset, for animation; <c>null</c> for presets that have no rig yet.</summary>
+    public static CharacterModel? Model(string name) => name?.ToLowerInvariant() switch
     {
-        NormalFilter up = NormalFilter.Upward(0.3f);
-        Vector3 foot = new(0.18f, 0.30f, 0.30f);
-        Vector3 hand = new(0.30f, 0.55f, 0.35f);
-        return new ReducedCharacter(
-            "skeleton",
-            new Vector3(0.22f, 0.42f, 0.14f),
-            [
-                new Limb("left_foot", LimbKind.Foot, new Vector3(0.12f, -1.05f, 0.05f), foot, Quaternion.Identity, up),
-                new Limb("right_foot", LimbKind.Foot, new Vector3(-0.12f, -1.05f, 0.05f), foot, Quaternion.Identity, up),
-                new Limb("left_hand", LimbKind.Hand, new Vector3(0.40f, -0.25f, 0.25f), hand, Quaternion.Identity, up),
-                new Limb("right_hand", LimbKind.Hand, new Vector3(-0.40f, -0.25f, 0.25f), hand, Quaternion.Identity, up),
-            ],
-            requiredContacts: 2,
-            takeoffSpeedMax: 8f,
-            landingSpeedMax: 12f,
-            friction: 0.5f);
-    }
+        "skeleton" => SkeletonModel.Value,
+        "jumperman" => JumpermanModel.Value,
+        _ => null,
+    };
+
+    private static readonly Lazy<CharacterModel> SkeletonModel = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
+    private static readonly Lazy<CharacterModel> JumpermanModel = new(() => HumanoidBuilder.Build("jumperman", handsOnWalls: true));
+
+    private static readonly Lazy<ReducedCharacter> SkeletonReduced = new(() => ReducedModelBuilder.Derive(SkeletonModel.Value, requiredContacts: 2, takeoffSpeedMax: 8f, landingSpeedMax: 12f, friction: 0.5f));
+
+    private static readonly Lazy<ReducedCharacter> JumpermanReduced = new(() => ReducedModelBuilder.Derive(JumpermanModel.Value, requiredContacts: 2, takeoffSpeedMax: 30f, landingSpeedMax: 30f, friction: 1.2f));
 
     /// <summary>A 35 cm frog with long hind legs: all four limbs must touch; μ 1.2, 5 m/s takeoff, 9 m/s landing.</summary>
     public static ReducedCharacter Frog()
@@ -79,29 +88,5 @@ public static class CharacterPresets
         }
 
         return new ReducedCharacter("ant", new Vector3(0.12f, 0.07f, 0.30f), limbs, requiredContacts: 3, takeoffSpeedMax: 8f, landingSpeedMax: 11f, friction: 1.2f);
-    }
-
-    /// <summary>
-    /// A city-scale superhero: feet need level ground, hands may push off walls; any two must touch;
-    /// μ 1.2, 30 m/s takeoff and landing.
-    /// </summary>
-    public static ReducedCharacter Jumperman()
-    {
-        NormalFilter feet = NormalFilter.Upward(0.6f);
-        Vector3 foot = new(0.18f, 0.30f, 0.30f);
-        Vector3 hand = new(0.35f, 0.60f, 0.45f);
-        return new ReducedCharacter(
-            "jumperman",
-            new Vector3(0.22f, 0.42f, 0.14f),
-            [
-                new Limb("left_foot", LimbKind.Foot, new Vector3(0.12f, -1.05f, 0.05f), foot, Quaternion.Identity, feet),
-                new Limb("right_foot", LimbKind.Foot, new Vector3(-0.12f, -1.05f, 0.05f), foot, Quaternion.Identity, feet),
-                new Limb("left_hand", LimbKind.Hand, new Vector3(0.45f, 0.05f, 0.30f), hand, Quaternion.Identity, NormalFilter.None),
-                new Limb("right_hand", LimbKind.Hand, new Vector3(-0.45f, 0.05f, 0.30f), hand, Quaternion.Identity, NormalFilter.None),
-            ],
-            requiredContacts: 2,
-            takeoffSpeedMax: 30f,
-            landingSpeedMax: 30f,
-            friction: 1.2f);
     }
 }

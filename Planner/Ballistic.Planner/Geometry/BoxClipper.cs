@@ -24,6 +24,12 @@ public static class BoxClipper
         a[2] = box.ToLocal(triangle.C);
         int count = 3;
         Vector3 h = box.HalfExtents;
+        if (Inside(a[0], h) && Inside(a[1], h) && Inside(a[2], h))
+        {
+            // Wholly inside: nothing to clip.
+            return (triangle.Area, triangle.Centroid);
+        }
+
         for (int axis = 0; axis < 3 && count > 0; axis++)
         {
             float limit = axis == 0 ? h.X : axis == 1 ? h.Y : h.Z;
@@ -78,6 +84,8 @@ public static class BoxClipper
 
         return count;
     }
+
+    private static bool Inside(Vector3 p, Vector3 h) => MathF.Abs(p.X) <= h.X && MathF.Abs(p.Y) <= h.Y && MathF.Abs(p.Z) <= h.Z;
 
     private static float Component(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;
 }

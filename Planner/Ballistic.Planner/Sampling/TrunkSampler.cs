@@ -58,6 +58,9 @@ public sealed class TrunkSampler
 
         _candidates = [.. candidates];
         _cumulativeArea = [.. cumulative];
+        StanceLift = MathF.Max(
+            character.TrunkHalfExtents.Y + 0.02f,
+            character.Limbs.Select(l => -l.WorkspaceCenter.Y).OrderDescending().Take(character.RequiredContacts).Average());
     }
 
     /// <summary>Attempts and repair parameters.</summary>
@@ -92,7 +95,7 @@ public sealed class TrunkSampler
     /// Draws valid poses whose surface point lies within <paramref name="radius"/> metres of <paramref name="point"/>
     /// and returns the one whose trunk centre is closest to the point, or <c>null</c> when none is found.
     /// </summary>
-    public PoseEvaluation? SampleNear(Random random, Vector3 point, float radius, int wanted = 3)
+    public PoseEvaluation? SampleNear(Random random, Vector3 point, float radius, int wanted = 2)
     {
         ArgumentNullException.ThrowIfNull(random);
 
@@ -111,7 +114,7 @@ public sealed class TrunkSampler
                 continue;
             }
 
-            PoseEvaluation? pose = TryAt(random, hit.Triangle, hit.Point);
+            PoseEvaluation? pose = TryAt(random, hit.Triangle, hit.Point, StanceLift * (0.9f + (0.2f * (float)random.NextDouble())));
             if (pose is not null)
             {
                 found++;
@@ -191,15 +194,21 @@ public sealed class TrunkSampler
         return best;
     }
 
-    /// <summary>One attempt at a surface point of a triangle: orient, lift, repair, evaluate.</summary>
-    private PoseEvaluation? TryAt(Random random, int triangle, Vector3 surfacePoint)
+    /// <summary>
+    /// The height above a surface at which the character stands naturally: the mean depth of the workspace centres of
+    /// the lowest limbs it needs in contact (never inside its own trunk).
+    /// </summary>
+    public float StanceLift { get; }
+
+    /// <summary>One attempt at a surface point of a triangle: orient, lift (randomly when <paramref name="lift"/> is null), repair, evaluate.</summary>
+    private PoseEvaluation? TryAt(Random random, int triangle, Vector3 surfacePoint, float? lift = null)
     {
         Vector3 normal = _level.Triangles[triangle].Normal;
         float yaw = (float)(random.NextDouble() * 2.0 * Math.PI);
         Quaternion rotation = AlignUp(normal) * Quaternion.CreateFromAxisAngle(Vector3.UnitY, yaw);
         float low = _character.TrunkHalfExtents.Y + 0.02f;
         float high = MathF.Max(low, _character.Reach);
-        Vector3 position = surfacePoint + (normal * (low + ((float)random.NextDouble() * (high - low))));
+        Vector3 position = surfacePoint + (normal * (lift ?? (low + ((float)random.NextDouble() * (high - low)))));
 
         var hits = new List<int>();
         for (int step = 0; ; step++)

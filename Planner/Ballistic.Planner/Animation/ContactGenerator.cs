@@ -1,0 +1,225 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// Whole-body contact generation by projecting the contact reference pose onto the level (paper ref. [3], planning
+/// notes §6.1): with the root fixed, each limb looks for surface points inside its workspace that its filter
+/// accepts, nearest first to where the reference pose puts its effector (the planner's estimated contact is one of
+/// them), starts IK from the nearest sample of its database, and keeps the first solution whose bones stay out of
+/// the level. Limbs that find no contact keep the reference pose. The result is valid when the generated contacts'
+/// centroidal cone accepts the jump's velocity.
+/// </summary>
+public sealed class ContactGenerator
+{
+    private const int CandidatesPerLimb = 4;
+
+    private readonly PlanningScene _scene;
+    private readonly LimbSampleDatabase[] _databases;
+    private readonly BodyCollision _collision;
+
+    /// <summary>Creates a generator for a character model on a scene baked for its reduced model.</summary>
+    /// <exception cref="RigException">The model's limbs do not match the scene character's limbs by name and order.</exception>
+    public ContactGenerator(PlanningScene scene, CharacterModel model, IkSettings? ik = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(model);
+        if (!model.Limbs.Select(l => l.Name).SequenceEqual(scene.Character.Limbs.Select(l => l.Name)))
+        {
+            throw new RigException($"Character '{model.Name}': its limbs ({string.Join(", ", model.Limbs.Select(l => l.Name))}) do not match the planner's ({string.Join(", ", scene.Character.Limbs.Select(l => l.Name))}).");
+        }
+
+        _scene = scene;
+        Model = model;
+        Ik = new LimbIk(model.Rig, ik ?? new IkSettings { Restarts = 1, MaxIterations = 40 });
+        _databases = [.. model.Limbs.Select(l => new LimbSampleDatabase(model, l))];
+        _collision = new BodyCollision(scene.Bvh);
+    }
+
+    /// <summary>The whole character.</summary>
+    public CharacterModel Model { get; }
+
+    /// <summary>The IK used for projections.</summary>
+    public LimbIk Ik { get; }
+
+    /// <summary>Bone collision checks.</summary>
+    public BodyCollision Collision => _collision;
+
+    /// <summary>The sample database of limb <paramref name="limb"/>.</summary>
+    public LimbSampleDatabase Database(int limb) => _databases[limb];
+
+    /// <summary>Generates a contact pose at <paramref name="root"/>.</summary>
+    /// <param name="root">The root pose, fixed.</param>
+    /// <param name="estimated">The planner's estimated contacts at this pose (tried among the candidates), or empty.</param>
+    /// <param name="velocity">The velocity the contacts must produce (takeoff velocity) or absorb (reversed landing velocity), m/s.</param>
+    public ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    {
+        ArgumentNullException.ThrowIfNull(estimated);
+        Rig rig = Model.Rig;
+        float[] q = (float[])Model.ContactPose.Clone();
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(root, q, positions, rotations);
+        var contacts = new List<LimbContact>();
+        var nearby = new List<int>();
+        for (int l = 0; l < Model.Limbs.Count; l++)
+        {
+            RigLimb limb = Model.Limbs[l];
+            Vector3 reference = limb.EffectorPosition(positions, rotations);
+            if (TryContact(root, q, l, reference, estimated, nearby, out LimbContact contact))
+            {
+                contacts.Add(contact);
+            }
+            else
+            {
+                KeepFree(root, q, l);
+            }
+        }
+
+        if (contacts.Count == 0)
+        {
+            return new ContactConfiguration(root, q, contacts, default, false, "no limb could reach a surface");
+        }
+
+        Vector3 sum = Vector3.Zero;
+        float mu = float.PositiveInfinity;
+        foreach (LimbContact c in contacts)
+        {
+            sum += c.Normal;
+            mu = MathF.Min(mu, c.Mu);
+        }
+
+        if (sum.Length() < ContactEstimator.ForceClosureThreshold)
+        {
+            return new ContactConfiguration(root, q, contacts, default, false, "the generated contacts' normals cancel out");
+        }
+
+        var cone = new FrictionCone(sum, mu);
+        bool accepts = cone.Contains(velocity, 1e-3f);
+        return new ContactConfiguration(root, q, contacts, cone, accepts, accepts ? null : "the generated contacts' cone does not contain the jump's velocity");
+    }
+
+    /// <summary>Puts limb <paramref name="l"/> in a free pose that does not pass through the level: the contact pose, the flexion pose, or a database sample.</summary>
+    public void KeepFree(in RootPose root, float[] q, int l)
+    {
+        RigLimb limb = Model.Limbs[l];
+        Rig rig = Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        foreach (float[] pose in new[] { Model.ContactPose, Model.FlexionPose, Model.ExtendingPose })
+        {
+            foreach (int d in limb.ChainDofs)
+            {
+                q[d] = pose[d];
+            }
+
+            rig.Solve(root, q, positions, rotations);
+            if (!_collision.LimbCollides(limb, positions, rotations, null))
+            {
+                return;
+            }
+        }
+
+        LimbSampleDatabase database = _databases[l];
+        for (int s = 0; s < Math.Min(database.Count, 200); s++)
+        {
+            database.Apply(s, q);
+            rig.Solve(root, q, positions, rotations);
+            if (!_collision.LimbCollides(limb, positions, rotations, null))
+            {
+                return;
+            }
+        }
+
+        foreach (int d in limb.ChainDofs)
+        {
+            q[d] = Model.ContactPose[d];
+        }
+    }
+
+    /// <summary>Tries to put limb <paramref name="l"/> on a surface point, nearest to its reference effector position first.</summary>
+    private bool TryContact(in RootPose root, float[] q, int l, Vector3 reference, IReadOnlyList<Contact> estimated, List<int> nearby, out LimbContact contact)
+    {
+        contact = default;
+        RigLimb limb = Model.Limbs[l];
+        Limb reducedLimb = _scene.Character.Limbs[l];
+        OrientedBox workspace = reducedLimb.WorkspaceAt(root);
+        nearby.Clear();
+        _scene.Bvh.OverlappingTriangles(workspace, nearby);
+        var candidates = new List<(float Distance, Vector3 Point, Vector3 Normal, float Mu)>();
+        foreach (int t in nearby)
+        {
+            int surface = _scene.Surfaces.SurfaceOf(t);
+            Triangle triangle = _scene.Level.Triangles[t];
+            Vector3 normal = triangle.Normal;
+            if (surface < 0 || !limb.Filter.Accepts(normal))
+            {
+                continue;
+            }
+
+            Vector3 point = triangle.ClosestPoint(reference);
+            candidates.Add((Vector3.Distance(point, reference), point, normal, _scene.Level.FrictionOf(t, _scene.Character.Friction)));
+        }
+
+        foreach (Contact c in estimated)
+        {
+            if (c.Limb == l)
+            {
+                candidates.Add((Vector3.Distance(c.Position, reference), c.Position, c.Normal, c.Mu));
+            }
+        }
+
+        candidates.Sort((a, b) => a.Distance.CompareTo(b.Distance));
+        Rig rig = Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        float[] trial = (float[])q.Clone();
+        Vector3? previous = null;
+        int tried = 0;
+        foreach ((_, Vector3 point, Vector3 normal, float mu) in candidates)
+        {
+            if (tried >= CandidatesPerLimb)
+            {
+                break;
+            }
+
+            if (previous is Vector3 p && Vector3.Distance(p, point) < 0.02f)
+            {
+                continue; // neighbouring triangles give the same closest point
+            }
+
+            previous = point;
+            tried++;
+            Array.Copy(q, trial, q.Length);
+            Vector3 local = Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation));
+            int start = _databases[l].Nearest(local);
+            if (start >= 0)
+            {
+                _databases[l].Apply(start, trial);
+            }
+
+            IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: l);
+            if (!result.Success)
+            {
+                continue;
+            }
+
+            rig.Solve(root, trial, positions, rotations);
+            if (_collision.LimbCollides(limb, positions, rotations, point))
+            {
+                continue;
+            }
+
+            Array.Copy(trial, q, q.Length);
+            contact = new LimbContact(l, point, normal, mu);
+            return true;
+        }
+
+        return false;
+    }
+}
