@@ -17,7 +17,7 @@ namespace Ballistic.Planner.Animation;
 /// </summary>
 public sealed class ContactGenerator
 {
-    private const int CandidatesPerLimb = 4;
+    private const int CandidatesPerLimb = 6;
 
     private readonly PlanningScene _scene;
     private readonly LimbSampleDatabase[] _databases;
@@ -60,6 +60,68 @@ public sealed class ContactGenerator
     public ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
     {
         ArgumentNullException.ThrowIfNull(estimated);
+        ContactConfiguration projected = Project(root, estimated, velocity);
+        if (projected.Valid || estimated.Count == 0)
+        {
+            return projected;
+        }
+
+        // The projected contacts' cone rejects the velocity: fall back on the planner's estimated contacts, whose
+        // cone accepted it, reached by IK where the limbs can.
+        ContactConfiguration planned = OnEstimated(root, estimated, velocity);
+        return planned.Valid || planned.Contacts.Count > projected.Contacts.Count ? planned : projected;
+    }
+
+    private ContactConfiguration OnEstimated(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    {
+        Rig rig = Model.Rig;
+        float[] q = (float[])Model.ContactPose.Clone();
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var contacts = new List<LimbContact>();
+        float[] trial = (float[])q.Clone();
+        for (int l = 0; l < Model.Limbs.Count; l++)
+        {
+            bool made = false;
+            foreach (Contact c in estimated)
+            {
+                if (c.Limb != l)
+                {
+                    continue;
+                }
+
+                // The estimate is the centre of a patch, which on a curved surface lies off it: project it back.
+                if (OnSurface(c.Position, Model.Limbs[l]) is not { } surface)
+                {
+                    continue;
+                }
+
+                Array.Copy(q, trial, q.Length);
+                int start = _databases[l].Nearest(Vector3.Transform(surface.Point - root.Position, Quaternion.Conjugate(root.Rotation)));
+                if (start >= 0)
+                {
+                    _databases[l].Apply(start, trial);
+                }
+
+                if (TrySolve(root, trial, Model.Limbs[l], surface.Point, surface.Normal, positions, rotations))
+                {
+                    Array.Copy(trial, q, q.Length);
+                    contacts.Add(new LimbContact(l, surface.Point, surface.Normal, c.Mu));
+                    made = true;
+                }
+            }
+
+            if (!made)
+            {
+                KeepFree(root, q, l);
+            }
+        }
+
+        return Finish(root, q, contacts, velocity);
+    }
+
+    private ContactConfiguration Project(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    {
         Rig rig = Model.Rig;
         float[] q = (float[])Model.ContactPose.Clone();
         var positions = new Vector3[rig.Joints.Count];
@@ -81,6 +143,11 @@ public sealed class ContactGenerator
             }
         }
 
+        return Finish(root, q, contacts, velocity);
+    }
+
+    private static ContactConfiguration Finish(in RootPose root, float[] q, List<LimbContact> contacts, Vector3 velocity)
+    {
         if (contacts.Count == 0)
         {
             return new ContactConfiguration(root, q, contacts, default, false, "no limb could reach a surface");
@@ -179,8 +246,59 @@ public sealed class ContactGenerator
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         float[] trial = (float[])q.Clone();
-        Vector3? previous = null;
+
+        // First the database: samples nearest the contact pose whose contact point lies within 6 cm of an acceptable
+        // surface, started from that very sample; then the surface points nearest the reference effector position.
+        LimbSampleDatabase database = _databases[l];
         int tried = 0;
+        var near = new List<int>();
+        for (int s = 0; s < database.Count && tried < CandidatesPerLimb; s++)
+        {
+            Vector3 world = root.ToWorld(database.PointOf(s));
+            if (!workspace.Contains(world))
+            {
+                continue;
+            }
+
+            near.Clear();
+            _scene.Bvh.TrianglesNear(new Aabb(world - new Vector3(0.06f), world + new Vector3(0.06f)), near);
+            float bestDistance = 0.06f;
+            (Vector3 Point, Vector3 Normal, float Mu)? best = null;
+            foreach (int t in near)
+            {
+                Triangle triangle = _scene.Level.Triangles[t];
+                if (_scene.Surfaces.SurfaceOf(t) < 0 || !limb.Filter.Accepts(triangle.Normal))
+                {
+                    continue;
+                }
+
+                Vector3 point = triangle.ClosestPoint(world);
+                float distance = Vector3.Distance(point, world);
+                if (distance < bestDistance)
+                {
+                    bestDistance = distance;
+                    best = (point, triangle.Normal, _scene.Level.FrictionOf(t, _scene.Character.Friction));
+                }
+            }
+
+            if (best is not { } found)
+            {
+                continue;
+            }
+
+            tried++;
+            Array.Copy(q, trial, q.Length);
+            database.Apply(s, trial);
+            if (TrySolve(root, trial, limb, found.Point, found.Normal, positions, rotations))
+            {
+                Array.Copy(trial, q, q.Length);
+                contact = new LimbContact(l, found.Point, found.Normal, found.Mu);
+                return true;
+            }
+        }
+
+        Vector3? previous = null;
+        tried = 0;
         foreach ((_, Vector3 point, Vector3 normal, float mu) in candidates)
         {
             if (tried >= CandidatesPerLimb)
@@ -197,29 +315,60 @@ public sealed class ContactGenerator
             tried++;
             Array.Copy(q, trial, q.Length);
             Vector3 local = Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation));
-            int start = _databases[l].Nearest(local);
+            int start = database.Nearest(local);
             if (start >= 0)
             {
-                _databases[l].Apply(start, trial);
+                database.Apply(start, trial);
             }
 
-            IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: l);
-            if (!result.Success)
+            if (TrySolve(root, trial, limb, point, normal, positions, rotations))
             {
-                continue;
+                Array.Copy(trial, q, q.Length);
+                contact = new LimbContact(l, point, normal, mu);
+                return true;
             }
-
-            rig.Solve(root, trial, positions, rotations);
-            if (_collision.LimbCollides(limb, positions, rotations, point))
-            {
-                continue;
-            }
-
-            Array.Copy(trial, q, q.Length);
-            contact = new LimbContact(l, point, normal, mu);
-            return true;
         }
 
         return false;
+    }
+
+    /// <summary>The nearest point, within 20 cm, of a surface the limb may touch, with that surface's normal.</summary>
+    private (Vector3 Point, Vector3 Normal)? OnSurface(Vector3 point, RigLimb limb)
+    {
+        var near = new List<int>();
+        _scene.Bvh.TrianglesNear(new Aabb(point - new Vector3(0.2f), point + new Vector3(0.2f)), near);
+        (Vector3 Point, Vector3 Normal)? best = null;
+        float bestDistance = 0.2f;
+        foreach (int t in near)
+        {
+            Triangle triangle = _scene.Level.Triangles[t];
+            if (_scene.Surfaces.SurfaceOf(t) < 0 || !limb.Filter.Accepts(triangle.Normal))
+            {
+                continue;
+            }
+
+            Vector3 closest = triangle.ClosestPoint(point);
+            float distance = Vector3.Distance(closest, point);
+            if (distance < bestDistance)
+            {
+                bestDistance = distance;
+                best = (closest, triangle.Normal);
+            }
+        }
+
+        return best;
+    }
+
+    /// <summary>IK to a surface point with the contact face against the surface, then the bone check.</summary>
+    private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
+    {
+        IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: 1);
+        if (!result.Success)
+        {
+            return false;
+        }
+
+        Model.Rig.Solve(root, trial, positions, rotations);
+        return !_collision.LimbCollides(limb, positions, rotations, point);
     }
 }

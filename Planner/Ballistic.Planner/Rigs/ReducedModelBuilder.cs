@@ -7,7 +7,9 @@ namespace Ballistic.Planner.Rigs;
 /// <summary>
 /// Derives the planner's reduced character from a whole character: the trunk box W0 bounds the trunk's bones in the
 /// contact pose; each limb's workspace Wk bounds where its contact point goes over random configurations of its
-/// joints (the central part of that cloud, trimmed per axis, so rare extreme reaches do not count).
+/// joints in which the contact face could rest on a surface the limb may touch (the central part of that cloud,
+/// trimmed per axis, so rare extreme reaches do not count). Contacts estimated inside Wk are then ones the whole
+/// body can really make.
 /// </summary>
 public static class ReducedModelBuilder
 {
@@ -44,7 +46,7 @@ public static class ReducedModelBuilder
     /// <param name="friction">Default friction.</param>
     /// <param name="samples">Random configurations per limb.</param>
     /// <param name="trim">Fraction of the cloud cut off at each end of each axis.</param>
-    public static ReducedCharacter Derive(CharacterModel model, int requiredContacts, float takeoffSpeedMax, float landingSpeedMax, float friction, int samples = 4_000, float trim = 0.03f)
+    public static ReducedCharacter Derive(CharacterModel model, int requiredContacts, float takeoffSpeedMax, float landingSpeedMax, float friction, int samples = 4_000, float trim = 0.05f)
     {
         ArgumentNullException.ThrowIfNull(model);
         Rig rig = model.Rig;
@@ -57,11 +59,11 @@ public static class ReducedModelBuilder
         {
             RigLimb limb = model.Limbs[l];
             var random = new Random(1_000 + l);
-            var xs = new float[samples];
-            var ys = new float[samples];
-            var zs = new float[samples];
+            var xs = new List<float>(samples);
+            var ys = new List<float>(samples);
+            var zs = new List<float>(samples);
             float[] q = (float[])model.ContactPose.Clone();
-            for (int s = 0; s < samples; s++)
+            for (int s = 0; s < samples * 8 && xs.Count < samples; s++)
             {
                 foreach (int d in limb.ChainDofs)
                 {
@@ -70,17 +72,29 @@ public static class ReducedModelBuilder
                 }
 
                 rig.Solve(identity, q, positions, rotations);
+
+                // The surface under the contact face would have the face's reversed normal: the limb must accept it.
+                if (!limb.Filter.Accepts(-limb.EffectorNormal(rotations)))
+                {
+                    continue;
+                }
+
                 Vector3 p = limb.EffectorPosition(positions, rotations);
-                xs[s] = p.X;
-                ys[s] = p.Y;
-                zs[s] = p.Z;
+                xs.Add(p.X);
+                ys.Add(p.Y);
+                zs.Add(p.Z);
             }
 
-            Array.Sort(xs);
-            Array.Sort(ys);
-            Array.Sort(zs);
-            int lo = (int)(trim * samples);
-            int hi = samples - 1 - lo;
+            if (xs.Count < 16)
+            {
+                throw new RigException($"Character '{model.Name}', limb '{limb.Name}': almost no configuration puts its contact face on a surface it may touch.");
+            }
+
+            xs.Sort();
+            ys.Sort();
+            zs.Sort();
+            int lo = (int)(trim * xs.Count);
+            int hi = xs.Count - 1 - lo;
             var min = new Vector3(xs[lo], ys[lo], zs[lo]);
             var max = new Vector3(xs[hi], ys[hi], zs[hi]);
             limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter));

@@ -1,0 +1,235 @@
+using System.Numerics;
+using System.Text.Json.Nodes;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// Writes a character and its jump animation as one animated, skinned glTF binary (Godot and Blender import it):
+/// an <c>Armature</c> node holding the joint hierarchy (node names = joint names), a mesh of one box per bone skinned
+/// rigidly to it, and one clip whose channels are the root joint's translation and rotation (its world placement on
+/// the parabola) and every joint's local rotation, keyed at the animation's frames with linear interpolation.
+/// </summary>
+public static class AnimatedGlbWriter
+{
+    /// <summary>The animation as GLB bytes, with clip name <paramref name="clip"/>.</summary>
+    public static byte[] ToBytes(JumpAnimation animation, string clip = "jumps")
+    {
+        ArgumentNullException.ThrowIfNull(animation);
+        CharacterModel model = animation.Model;
+        Rig rig = model.Rig;
+        int jointCount = rig.Joints.Count;
+        var writer = new GlbWriter();
+
+        // Nodes: Armature, then one node per joint (node index = joint index + 1), then the skinned mesh node.
+        var bindPositions = new Vector3[jointCount];
+        var bindRotations = new Quaternion[jointCount];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, bindPositions, bindRotations);
+        var armatureChildren = new JsonArray();
+        writer.Add("nodes", new JsonObject { ["name"] = "Armature", ["children"] = armatureChildren });
+        for (int j = 0; j < jointCount; j++)
+        {
+            Joint joint = rig.Joints[j];
+            Vector3 translation = j == 0 ? bindPositions[0] : joint.Offset;
+            Quaternion rotation = j == 0 ? bindRotations[0] : rig.LocalRotation(j, model.ContactPose);
+            var node = new JsonObject
+            {
+                ["name"] = joint.Name,
+                ["translation"] = Array(translation),
+                ["rotation"] = Array(rotation),
+            };
+            var children = new JsonArray();
+            for (int c = 0; c < jointCount; c++)
+            {
+                if (rig.Joints[c].Parent == j)
+                {
+                    children.Add(c + 1);
+                }
+            }
+
+            if (children.Count > 0)
+            {
+                node["children"] = children;
+            }
+
+            writer.Add("nodes", node);
+            if (j == 0)
+            {
+                armatureChildren.Add(1);
+            }
+        }
+
+        // Skinned mesh: a box along each bone (parent → joint) bound to the parent, and one at each effector.
+        var positions = new List<Vector3>();
+        var indices = new List<int>();
+        var joints = new List<byte>();
+        for (int j = 0; j < jointCount; j++)
+        {
+            int parent = rig.Joints[j].Parent;
+            if (parent >= 0)
+            {
+                AddBox(positions, indices, joints, bindPositions[parent], bindPositions[j], model.BoneRadii[j], bindRotations[parent], parent);
+            }
+            else
+            {
+                AddBox(positions, indices, joints, bindPositions[0] - new Vector3(0f, model.BoneRadii[0] * 0.5f, 0f), bindPositions[0] + new Vector3(0f, model.BoneRadii[0] * 0.5f, 0f), model.BoneRadii[0], bindRotations[0], 0);
+            }
+        }
+
+        foreach (RigLimb limb in model.Limbs)
+        {
+            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
+            AddBox(positions, indices, joints, bindPositions[limb.EffectorJoint], tip, model.BoneRadii[limb.EffectorJoint], bindRotations[limb.EffectorJoint], limb.EffectorJoint);
+        }
+
+        int material = writer.Add("materials", new JsonObject
+        {
+            ["name"] = $"{model.Name} bones",
+            ["pbrMetallicRoughness"] = new JsonObject { ["baseColorFactor"] = new JsonArray(0.85f, 0.82f, 0.74f, 1f), ["metallicFactor"] = 0f, ["roughnessFactor"] = 0.7f },
+            ["doubleSided"] = true,
+        });
+        float[] weights = new float[positions.Count * 4];
+        for (int v = 0; v < positions.Count; v++)
+        {
+            weights[4 * v] = 1f;
+        }
+
+        int positionAccessor = writer.AddVector3([.. positions]);
+        int jointAccessor = writer.AddJoints([.. joints]);
+        int weightAccessor = writer.AddFloats(weights, "VEC4", 4, 34962);
+        int indexAccessor = writer.AddIndices([.. indices]);
+        int mesh = writer.Add("meshes", new JsonObject
+        {
+            ["name"] = model.Name,
+            ["primitives"] = new JsonArray(new JsonObject
+            {
+                ["attributes"] = new JsonObject { ["POSITION"] = positionAccessor, ["JOINTS_0"] = jointAccessor, ["WEIGHTS_0"] = weightAccessor },
+                ["indices"] = indexAccessor,
+                ["material"] = material,
+            }),
+        });
+
+        float[] inverseBind = new float[jointCount * 16];
+        for (int j = 0; j < jointCount; j++)
+        {
+            Matrix4x4 world = Matrix4x4.CreateFromQuaternion(bindRotations[j]) * Matrix4x4.CreateTranslation(bindPositions[j]);
+            Matrix4x4.Invert(world, out Matrix4x4 inverse);
+            Write(inverseBind.AsSpan(16 * j), inverse);
+        }
+
+        int inverseBindAccessor = writer.AddFloats(inverseBind, "MAT4", 16);
+        var skinJoints = new JsonArray();
+        for (int j = 0; j < jointCount; j++)
+        {
+            skinJoints.Add(j + 1);
+        }
+
+        int skin = writer.Add("skins", new JsonObject { ["name"] = model.Name, ["joints"] = skinJoints, ["inverseBindMatrices"] = inverseBindAccessor, ["skeleton"] = 1 });
+        int meshNode = writer.Add("nodes", new JsonObject { ["name"] = $"{model.Name}_mesh", ["mesh"] = mesh, ["skin"] = skin });
+
+        // The clip.
+        int frames = animation.Frames.Count;
+        float[] times = new float[frames];
+        var rootTranslations = new Vector3[frames];
+        var rotations = new float[jointCount][];
+        for (int j = 0; j < jointCount; j++)
+        {
+            rotations[j] = new float[frames * 4];
+        }
+
+        for (int f = 0; f < frames; f++)
+        {
+            AnimationFrame frame = animation.Frames[f];
+            times[f] = frame.Time;
+            rootTranslations[f] = frame.Root.ToWorld(rig.RootOffset + rig.Joints[0].Offset);
+            for (int j = 0; j < jointCount; j++)
+            {
+                Quaternion r = j == 0 ? Quaternion.Normalize(frame.Root.Rotation * rig.LocalRotation(0, frame.Angles)) : rig.LocalRotation(j, frame.Angles);
+                rotations[j][4 * f] = r.X;
+                rotations[j][(4 * f) + 1] = r.Y;
+                rotations[j][(4 * f) + 2] = r.Z;
+                rotations[j][(4 * f) + 3] = r.W;
+            }
+        }
+
+        EnsureShortestPaths(rotations, frames);
+        int input = writer.AddFloats(times, "SCALAR", 1);
+        var samplers = new JsonArray();
+        var channels = new JsonArray();
+        samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddVector3(rootTranslations, target: null), ["interpolation"] = "LINEAR" });
+        channels.Add(new JsonObject { ["sampler"] = 0, ["target"] = new JsonObject { ["node"] = 1, ["path"] = "translation" } });
+        for (int j = 0; j < jointCount; j++)
+        {
+            if (j > 0 && rig.DofsOf(j) == 0)
+            {
+                continue;
+            }
+
+            samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddFloats(rotations[j], "VEC4", 4), ["interpolation"] = "LINEAR" });
+            channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = j + 1, ["path"] = "rotation" } });
+        }
+
+        writer.Add("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels });
+        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["name"] = model.Name, ["nodes"] = new JsonArray(0, meshNode) });
+        return writer.ToBytes();
+    }
+
+    /// <summary>Writes the animation to <paramref name="path"/>.</summary>
+    public static void Save(JumpAnimation animation, string path, string clip = "jumps") => OutputFile.Write(path, ToBytes(animation, clip));
+
+    /// <summary>Flips quaternion keys whose dot product with the previous key is negative, so slerp takes the short way.</summary>
+    private static void EnsureShortestPaths(float[][] rotations, int frames)
+    {
+        foreach (float[] keys in rotations)
+        {
+            for (int f = 1; f < frames; f++)
+            {
+                float dot = (keys[4 * f] * keys[4 * (f - 1)]) + (keys[(4 * f) + 1] * keys[(4 * (f - 1)) + 1]) + (keys[(4 * f) + 2] * keys[(4 * (f - 1)) + 2]) + (keys[(4 * f) + 3] * keys[(4 * (f - 1)) + 3]);
+                if (dot < 0f)
+                {
+                    for (int k = 0; k < 4; k++)
+                    {
+                        keys[(4 * f) + k] = -keys[(4 * f) + k];
+                    }
+                }
+            }
+        }
+    }
+
+    private static void AddBox(List<Vector3> positions, List<int> indices, List<byte> joints, Vector3 a, Vector3 b, float radius, Quaternion frame, int joint)
+    {
+        Vector3 axis = b - a;
+        float length = axis.Length();
+        Vector3 along = length > 1e-5f ? axis / length : Vector3.Transform(Vector3.UnitY, frame);
+        Vector3 side = Vector3.Cross(along, MathF.Abs(along.Y) < 0.9f ? Vector3.UnitY : Vector3.UnitX);
+        side = Vector3.Normalize(side) * radius;
+        Vector3 up = Vector3.Normalize(Vector3.Cross(side, along)) * radius;
+        int start = positions.Count;
+        for (int i = 0; i < 8; i++)
+        {
+            Vector3 p = ((i & 1) == 0 ? a : b) + ((i & 2) == 0 ? -side : side) + ((i & 4) == 0 ? -up : up);
+            positions.Add(p);
+            joints.AddRange([(byte)joint, 0, 0, 0]);
+        }
+
+        int[] faces = [0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3];
+        foreach (int f in faces)
+        {
+            indices.Add(start + f);
+        }
+    }
+
+    private static JsonArray Array(Vector3 v) => new(v.X, v.Y, v.Z);
+
+    private static JsonArray Array(Quaternion q) => new(q.X, q.Y, q.Z, q.W);
+
+    private static void Write(Span<float> target, Matrix4x4 m)
+    {
+        // System.Numerics (row vectors) written row by row is glTF's column-major order.
+        float[] values = [m.M11, m.M12, m.M13, m.M14, m.M21, m.M22, m.M23, m.M24, m.M31, m.M32, m.M33, m.M34, m.M41, m.M42, m.M43, m.M44];
+        values.CopyTo(target);
+    }
+}

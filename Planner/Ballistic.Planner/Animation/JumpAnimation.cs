@@ -1,0 +1,116 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// A whole-body animation of a path of jumps: frames at a fixed rate (per jump, the last frame falls exactly on
+/// landing), the contact phases, and the arcs, from which the root is evaluated exactly at any time.
+/// </summary>
+public sealed class JumpAnimation
+{
+    private readonly float[] _jumpStarts;
+
+    /// <summary>Creates an animation.</summary>
+    public JumpAnimation(CharacterModel model, IReadOnlyList<BallisticArc> arcs, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, int failedContactPoses, int collidingFrames)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        ArgumentNullException.ThrowIfNull(arcs);
+        ArgumentNullException.ThrowIfNull(frames);
+        Model = model;
+        Arcs = [.. arcs];
+        Frames = [.. frames];
+        ContactPhases = [.. contactPhases];
+        FailedContactPoses = failedContactPoses;
+        CollidingFrames = collidingFrames;
+        _jumpStarts = new float[arcs.Count + 1];
+        for (int i = 0; i < arcs.Count; i++)
+        {
+            _jumpStarts[i + 1] = _jumpStarts[i] + arcs[i].FlightTime;
+        }
+    }
+
+    /// <summary>The character.</summary>
+    public CharacterModel Model { get; }
+
+    /// <summary>The jumps' arcs, in order.</summary>
+    public IReadOnlyList<BallisticArc> Arcs { get; }
+
+    /// <summary>The frames, in time order.</summary>
+    public IReadOnlyList<AnimationFrame> Frames { get; }
+
+    /// <summary>When each limb holds which contact point.</summary>
+    public IReadOnlyList<ContactPhase> ContactPhases { get; }
+
+    /// <summary>Duration of the clip, seconds (the sum of the flight times).</summary>
+    public float Duration => _jumpStarts[^1];
+
+    /// <summary>How many takeoff or landing contact poses could not be generated to satisfy the no-slip test (the estimated contacts were then kept).</summary>
+    public int FailedContactPoses { get; }
+
+    /// <summary>How many frames still have a limb passing through the level after re-sampling.</summary>
+    public int CollidingFrames { get; }
+
+    /// <summary>Clip time at which jump <paramref name="jump"/> takes off, seconds.</summary>
+    public float JumpStart(int jump) => _jumpStarts[jump];
+
+    /// <summary>The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola.</summary>
+    public RootPose RootAt(float time)
+    {
+        int jump = JumpIndex(time);
+        return Arcs[jump].PoseAt(Math.Clamp(time - _jumpStarts[jump], 0f, Arcs[jump].FlightTime));
+    }
+
+    /// <summary>The full pose at clip time <paramref name="time"/>: the root on the parabola, the angles interpolated between frames.</summary>
+    public (RootPose Root, float[] Angles) Sample(float time)
+    {
+        int hi = 0;
+        int lo = Frames.Count - 1;
+        while (hi < lo)
+        {
+            int mid = (hi + lo) / 2;
+            if (Frames[mid].Time < time)
+            {
+                hi = mid + 1;
+            }
+            else
+            {
+                lo = mid;
+            }
+        }
+
+        AnimationFrame after = Frames[hi];
+        AnimationFrame before = Frames[Math.Max(0, hi - 1)];
+        float span = after.Time - before.Time;
+        float w = span > 0f ? Math.Clamp((time - before.Time) / span, 0f, 1f) : 1f;
+        float[] angles = new float[after.Angles.Length];
+        for (int i = 0; i < angles.Length; i++)
+        {
+            angles[i] = float.Lerp(before.Angles[i], after.Angles[i], w);
+        }
+
+        return (RootAt(time), angles);
+    }
+
+    /// <summary>World positions and rotations of every joint at <paramref name="time"/>.</summary>
+    public void Joints(float time, Span<Vector3> positions, Span<Quaternion> rotations)
+    {
+        (RootPose root, float[] angles) = Sample(time);
+        Model.Rig.Solve(root, angles, positions, rotations);
+    }
+
+    private int JumpIndex(float time)
+    {
+        for (int i = 0; i < Arcs.Count; i++)
+        {
+            if (time < _jumpStarts[i + 1])
+            {
+                return i;
+            }
+        }
+
+        return Arcs.Count - 1;
+    }
+}
