@@ -82,7 +82,9 @@ internal static class CliCommands
         Option<double?> timeLimit = TimeLimitOption();
         Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/1).", Required = true };
         Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
-        var command = new Command("plan", "Plan a sequence of jumps from one point to another and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg };
+        Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path (humanoid characters)." };
+        Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
+        var command = new Command("plan", "Plan a sequence of jumps from one point to another and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb };
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
@@ -99,8 +101,24 @@ internal static class CliCommands
                 MaxNodes = Positive(parse.GetValue(maxNodes), "--max-nodes"),
                 TimeLimit = Seconds(parse.GetValue(timeLimit), "--time-limit"),
             };
+            string reportPath = parse.GetValue(report)!;
+            string? glbPath = parse.GetValue(glb);
+            if (glbPath is not null && !parse.GetValue(animate))
+            {
+                throw new CliException("--glb goes with --animate.");
+            }
+
+            if (parse.GetValue(animate))
+            {
+                glbPath ??= Path.ChangeExtension(reportPath, ".glb");
+                if (CharacterPresets.Model(pipeline.Character.Name) is null)
+                {
+                    throw new CliException($"The character '{pipeline.Character.Name}' has no rig yet, so it cannot be animated; the humanoids (skeleton, jumperman) can.");
+                }
+            }
+
             (PlanReport result, Roadmap used) = pipeline.Run(parse.InvocationConfiguration.Error);
-            PlanPipeline.Write(result, used, parse.GetValue(report)!, parse.GetValue(svg), parse.InvocationConfiguration.Output);
+            PlanPipeline.Write(result, used, reportPath, parse.GetValue(svg), parse.InvocationConfiguration.Output, glbPath);
             return result.Result.Status == PlannerStatus.Exact ? 0 : 1;
         }));
         return command;
@@ -110,7 +128,7 @@ internal static class CliCommands
     {
         Option<string> output = new("--out") { Description = "Folder for the report, picture and roadmap.", DefaultValueFactory = _ => "out" };
         Option<int> threads = ThreadsOption();
-        var command = new Command("demo", "The main job: the skeleton crosses the bundled desert; writes a report, an SVG and the roadmap.") { output, threads };
+        var command = new Command("demo", "The main job: the skeleton crosses the bundled desert; writes a report, an SVG, an animated GLB and the roadmap.") { output, threads };
         command.SetAction(parse => Guard(parse, () =>
         {
             TextWriter stdout = parse.InvocationConfiguration.Output;
@@ -140,7 +158,7 @@ internal static class CliCommands
             (PlanReport report, Roadmap roadmap) = pipeline.Run(parse.InvocationConfiguration.Error);
             string folder = parse.GetValue(output)!;
             RoadmapFile.Save(roadmap, Path.Combine(folder, "desert-skeleton.roadmap"));
-            PlanPipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout);
+            PlanPipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout, Path.Combine(folder, "desert-skeleton.glb"));
             return report.Result.Status == PlannerStatus.Exact ? 0 : 1;
         }));
         return command;

@@ -1,10 +1,12 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Reports;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Cli;
@@ -89,8 +91,22 @@ internal sealed class PlanPipeline
         new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings));
 
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
-    public static void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output)
+    public static void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
     {
+        string? animationLine = null;
+        if (glbPath is not null && report.Result.Status == PlannerStatus.Exact)
+        {
+            CharacterModel model = CharacterPresets.Model(report.Scene.Character.Name)
+                ?? throw new CliException($"The character '{report.Scene.Character.Name}' has no rig yet, so it cannot be animated; the humanoids (skeleton, jumperman) can.");
+            var clock = Stopwatch.StartNew();
+            JumpAnimation animation = new JumpAnimator(report.Scene, model).Animate(report.Result.Jumps);
+            AnimatedGlbWriter.Save(animation, glbPath, "jumps");
+            var timings = new Dictionary<string, double>(report.Timings) { ["animate"] = clock.Elapsed.TotalSeconds };
+            string relative = Path.GetRelativePath(Path.GetDirectoryName(Path.GetFullPath(reportPath))!, Path.GetFullPath(glbPath));
+            report = report with { Timings = timings, Animation = new AnimationReport(relative, "jumps", animation) };
+            animationLine = $"animation: {animation.Duration:0.00} s, {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases, {animation.FailedContactPoses} of {2 * animation.Arcs.Count} contact poses failing the no-slip test; {glbPath}";
+        }
+
         PlanReportWriter.Save(report, reportPath);
         if (svgPath is not null)
         {
@@ -103,6 +119,11 @@ internal sealed class PlanPipeline
         if (r.Jumps.Count > 0)
         {
             output.WriteLine($"path: {r.Jumps.Count} jumps, {r.TotalFlightTime:0.00} s of flight, {r.Jumps.Sum(j => j.Arc.ArcLength):0.0} m of arcs");
+        }
+
+        if (animationLine is not null)
+        {
+            output.WriteLine(animationLine);
         }
 
         output.WriteLine("timings: " + string.Join(", ", report.Timings.Select(t => $"{t.Key} {t.Value * 1000:0.#} ms")));

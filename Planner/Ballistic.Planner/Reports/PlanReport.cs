@@ -15,4 +15,8 @@ namespace Ballistic.Planner.Reports;
 /// <param name="BakeSeconds">Duration of the bake (0 when loaded from a file).</param>
 /// <param name="Result">The query result.</param>
 /// <param name="Timings">Named durations in seconds (load, bake, query…).</param>
-public sealed record PlanReport(string LevelPath, PlanningScene Scene, Vector3 From, Vector3 To, int RoadmapNodes, int RoadmapEdges, int Seed, double BakeSeconds, PlanResult Result, IReadOnlyDictionary<string, double> Timings);
+public sealed record PlanReport(string LevelPath, PlanningScene Scene, Vector3 From, Vector3 To, int RoadmapNodes, int RoadmapEdges, int Seed, double BakeSeconds, PlanResult Result, IReadOnlyDictionary<string, double> Timings)
+{
+    /// <summary>The whole-body animation of the path, when one was made.</summary>
+    public AnimationReport? Animation { get; init; }
+}

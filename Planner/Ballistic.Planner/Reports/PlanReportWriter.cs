@@ -1,11 +1,13 @@
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Reports;
@@ -93,6 +95,11 @@ public static class PlanReportWriter
 
             w.WriteEndArray();
 
+            if (report.Animation is { } animation)
+            {
+                WriteAnimation(w, animation);
+            }
+
             w.WriteStartObject("timings");
             foreach ((string name, double seconds) in report.Timings)
             {
@@ -142,6 +149,48 @@ public static class PlanReportWriter
         }
 
         return stream.ToArray();
+    }
+
+    private static void WriteAnimation(Utf8JsonWriter w, AnimationReport report)
+    {
+        JumpAnimation animation = report.Animation;
+        w.WriteStartObject("animation");
+        w.WriteString("glb", report.GlbPath.Replace('\\', '/'));
+        w.WriteString("clip", report.Clip);
+        w.WriteNumber("duration", animation.Duration);
+        w.WriteNumber("frames", animation.Frames.Count);
+        w.WriteNumber("failedContactPoses", animation.FailedContactPoses);
+        w.WriteStartObject("limbs");
+        foreach (RigLimb limb in animation.Model.Limbs)
+        {
+            w.WriteStartObject(limb.Name);
+            w.WriteString("effectorBone", animation.Model.Rig.Joints[limb.EffectorJoint].Name);
+            w.WriteStartArray("effectorOffset");
+            w.WriteNumberValue(limb.EffectorOffset.X);
+            w.WriteNumberValue(limb.EffectorOffset.Y);
+            w.WriteNumberValue(limb.EffectorOffset.Z);
+            w.WriteEndArray();
+            w.WriteEndObject();
+        }
+
+        w.WriteEndObject();
+        w.WriteStartArray("contactPhases");
+        foreach (ContactPhase phase in animation.ContactPhases)
+        {
+            w.WriteStartObject();
+            w.WriteString("limb", animation.Model.Limbs[phase.Limb].Name);
+            w.WriteStartArray("position");
+            w.WriteNumberValue(phase.Position.X);
+            w.WriteNumberValue(phase.Position.Y);
+            w.WriteNumberValue(phase.Position.Z);
+            w.WriteEndArray();
+            w.WriteNumber("from", phase.From);
+            w.WriteNumber("to", phase.To);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
     }
 
     /// <summary>Writes the report to <paramref name="path"/>, creating its folder.</summary>

@@ -1,10 +1,12 @@
 using System.Globalization;
 using System.Numerics;
 using System.Text;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Reports;
@@ -169,6 +171,11 @@ public static class SvgPlanRenderer
             }
 
             svg.Append(Invariant($"<path d=\"{arc}\" fill=\"none\" stroke=\"#e8590c\" stroke-width=\"2.5\"/>\n"));
+            if (report.Animation is { } animated)
+            {
+                Poses(svg, animated.Animation, j, X, Py);
+            }
+
             Cone(svg, jump.Takeoff, jump.Arc.Start, heading, X, Py, profileScale, "#1971c2");
             Cone(svg, jump.Landing, jump.Arc.End, heading, X, Py, profileScale, "#9c36b5");
             Vector3 tip = jump.Arc.Start + (jump.Arc.TakeoffVelocity * 0.08f);
@@ -191,6 +198,38 @@ public static class SvgPlanRenderer
     {
         ArgumentNullException.ThrowIfNull(path);
         OutputFile.Write(path, new UTF8Encoding(false).GetBytes(Render(report, roadmap)));
+    }
+
+    /// <summary>Stick figures of the animated character at five moments of jump <paramref name="jump"/>, in its plane.</summary>
+    private static void Poses(StringBuilder svg, JumpAnimation animation, int jump, Func<Vector3, float> px, Func<float, float> py)
+    {
+        Rig rig = animation.Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        float start = animation.JumpStart(jump);
+        float duration = animation.Arcs[jump].FlightTime;
+        svg.Append("<g stroke=\"#343a40\" stroke-width=\"1.4\" stroke-linecap=\"round\" stroke-opacity=\"0.75\">\n");
+        foreach (float f in new[] { 0f, 0.25f, 0.5f, 0.75f, 1f })
+        {
+            animation.Joints(start + (f * duration), positions, rotations);
+            for (int j = 1; j < rig.Joints.Count; j++)
+            {
+                Vector3 a = positions[rig.Joints[j].Parent];
+                Vector3 b = positions[j];
+                svg.Append(Invariant($"<line x1=\"{px(a):0.#}\" y1=\"{py(a.Y):0.#}\" x2=\"{px(b):0.#}\" y2=\"{py(b.Y):0.#}\"/>"));
+            }
+
+            foreach (RigLimb limb in animation.Model.Limbs)
+            {
+                Vector3 a = positions[limb.EffectorJoint];
+                Vector3 b = limb.EffectorPosition(positions, rotations);
+                svg.Append(Invariant($"<line x1=\"{px(a):0.#}\" y1=\"{py(a.Y):0.#}\" x2=\"{px(b):0.#}\" y2=\"{py(b.Y):0.#}\"/>"));
+            }
+
+            svg.Append('\n');
+        }
+
+        svg.Append("</g>\n");
     }
 
     /// <summary>The friction cone of a node cut by the profile plane, drawn as a wedge at <paramref name="at"/>.</summary>

@@ -76,6 +76,37 @@ public sealed class CliJobTests
     }
 
     [Test]
+    public void PlanAnimateWritesAGlbAndTheAnimationSection()
+    {
+        string report = Path.Combine(_folder, "animated.json");
+        string glb = Path.Combine(_folder, "models", "skeleton.glb");
+        (int code, string output, string error) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton",
+            "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--animate", "--glb", glb);
+        Assert.That(code, Is.Zero, error);
+        Assert.That(output, Does.Contain("animation:"));
+        Assert.That(File.Exists(glb), Is.True);
+
+        using JsonDocument json = JsonDocument.Parse(File.ReadAllBytes(report));
+        JsonElement animation = json.RootElement.GetProperty("animation");
+        Assert.Multiple(() =>
+        {
+            Assert.That(animation.GetProperty("glb").GetString(), Is.EqualTo("models/skeleton.glb"), "relative to the report");
+            Assert.That(animation.GetProperty("clip").GetString(), Is.EqualTo("jumps"));
+            Assert.That(animation.GetProperty("duration").GetSingle(), Is.EqualTo(json.RootElement.GetProperty("totalFlightTime").GetSingle()).Within(1e-3f));
+            Assert.That(animation.GetProperty("limbs").GetProperty("left_foot").GetProperty("effectorBone").GetString(), Is.EqualTo("left_ankle"));
+            Assert.That(animation.GetProperty("contactPhases").GetArrayLength(), Is.GreaterThan(0));
+        });
+        foreach (JsonElement phase in animation.GetProperty("contactPhases").EnumerateArray())
+        {
+            Assert.That(phase.GetProperty("to").GetSingle(), Is.GreaterThanOrEqualTo(phase.GetProperty("from").GetSingle()));
+        }
+
+        (int frog, _, string frogError) = Run("plan", "--level", RepositoryFiles.Level("pond"), "--character", "frog", "--from", "-0.5,0,-5.8", "--to", "0.5,0,4.6", "--report", report, "--animate");
+        Assert.That(frog, Is.EqualTo(1));
+        Assert.That(frogError, Does.Contain("no rig yet"));
+    }
+
+    [Test]
     public void BakeThenPlanWithTheSavedRoadmap()
     {
         string roadmap = Path.Combine(_folder, "course.roadmap");
