@@ -82,7 +82,7 @@ internal static class CliCommands
         Option<double?> timeLimit = TimeLimitOption();
         Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/1).", Required = true };
         Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
-        Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path (humanoid characters)." };
+        Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path and write an animated GLB." };
         Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
         var command = new Command("plan", "Plan a sequence of jumps from one point to another and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb };
         command.SetAction(parse => Guard(parse, () =>
@@ -111,10 +111,6 @@ internal static class CliCommands
             if (parse.GetValue(animate))
             {
                 glbPath ??= Path.ChangeExtension(reportPath, ".glb");
-                if (CharacterPresets.Model(pipeline.Character.Name) is null)
-                {
-                    throw new CliException($"The character '{pipeline.Character.Name}' has no rig yet, so it cannot be animated; the humanoids (skeleton, jumperman) can.");
-                }
             }
 
             (PlanReport result, Roadmap used) = pipeline.Run(parse.InvocationConfiguration.Error);

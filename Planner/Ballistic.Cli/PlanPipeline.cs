@@ -96,8 +96,7 @@ internal sealed class PlanPipeline
         string? animationLine = null;
         if (glbPath is not null && report.Result.Status == PlannerStatus.Exact)
         {
-            CharacterModel model = CharacterPresets.Model(report.Scene.Character.Name)
-                ?? throw new CliException($"The character '{report.Scene.Character.Name}' has no rig yet, so it cannot be animated; the humanoids (skeleton, jumperman) can.");
+            CharacterModel model = CharacterPresets.Model(report.Scene.Character.Name);
             var clock = Stopwatch.StartNew();
             JumpAnimation animation = new JumpAnimator(report.Scene, model).Animate(report.Result.Jumps);
             AnimatedGlbWriter.Save(animation, glbPath, "jumps");

@@ -1,4 +1,3 @@
-using System.Numerics;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Rigs.Procedural;
 
@@ -6,8 +5,8 @@ namespace Ballistic.Planner.Characters;
 
 /// <summary>
 /// The reduced characters of the original scenarios (planning notes §7): friction, speed limits, limbs and how
-/// many must touch follow the original scripts. The humanoids' trunk and workspace boxes are derived from their
-/// rigs; the frog's and the ant's are still set by hand.
+/// many must touch follow the original scripts; every trunk box and limb workspace is derived from the character's
+/// rig by sampling its joints (<see cref="ReducedModelBuilder"/>).
 /// </summary>
 public static class CharacterPresets
 {
@@ -37,56 +36,35 @@ public static class CharacterPresets
     /// </summary>
     public static ReducedCharacter Jumperman() => JumpermanReduced.Value;
 
-    /// <summary>The whole character behind a preset, for animation; <c>null</c> for presets that have no rig yet.</summary>
-    public static CharacterModel? Model(string name) => name?.ToLowerInvariant() switch
+    /// <summary>The whole character (rig, limbs, reference poses) behind a preset.</summary>
+    /// <exception cref="CharacterException">No preset has that name.</exception>
+    public static CharacterModel Model(string name) => name?.ToLowerInvariant() switch
     {
         "skeleton" => SkeletonModel.Value,
         "jumperman" => JumpermanModel.Value,
-        _ => null,
+        "frog" => FrogModel.Value,
+        "ant" => AntModel.Value,
+        _ => throw new CharacterException($"Unknown character '{name}'. Known characters: {string.Join(", ", Names)}."),
     };
 
     private static readonly Lazy<CharacterModel> SkeletonModel = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
     private static readonly Lazy<CharacterModel> JumpermanModel = new(() => HumanoidBuilder.Build("jumperman", handsOnWalls: true));
 
+    private static readonly Lazy<CharacterModel> FrogModel = new(FrogBuilder.Build);
+
+    private static readonly Lazy<CharacterModel> AntModel = new(AntBuilder.Build);
+
+    private static readonly Lazy<ReducedCharacter> FrogReduced = new(() => ReducedModelBuilder.Derive(FrogModel.Value, requiredContacts: 4, takeoffSpeedMax: 5f, landingSpeedMax: 9f, friction: 1.2f));
+
+    private static readonly Lazy<ReducedCharacter> AntReduced = new(() => ReducedModelBuilder.Derive(AntModel.Value, requiredContacts: 3, takeoffSpeedMax: 8f, landingSpeedMax: 11f, friction: 1.2f));
+
     private static readonly Lazy<ReducedCharacter> SkeletonReduced = new(() => ReducedModelBuilder.Derive(SkeletonModel.Value, requiredContacts: 2, takeoffSpeedMax: 8f, landingSpeedMax: 12f, friction: 0.5f));
 
     private static readonly Lazy<ReducedCharacter> JumpermanReduced = new(() => ReducedModelBuilder.Derive(JumpermanModel.Value, requiredContacts: 2, takeoffSpeedMax: 30f, landingSpeedMax: 30f, friction: 1.2f));
 
-    /// <summary>A 35 cm frog with long hind legs: all four limbs must touch; μ 1.2, 5 m/s takeoff, 9 m/s landing.</summary>
-    public static ReducedCharacter Frog()
-    {
-        NormalFilter any = NormalFilter.None;
-        Vector3 fore = new(0.08f, 0.10f, 0.10f);
-        Vector3 hind = new(0.12f, 0.12f, 0.15f);
-        return new ReducedCharacter(
-            "frog",
-            new Vector3(0.09f, 0.06f, 0.15f),
-            [
-                new Limb("left_fore", LimbKind.Hand, new Vector3(0.12f, -0.13f, 0.13f), fore, Quaternion.Identity, any),
-                new Limb("right_fore", LimbKind.Hand, new Vector3(-0.12f, -0.13f, 0.13f), fore, Quaternion.Identity, any),
-                new Limb("left_hind", LimbKind.Foot, new Vector3(0.16f, -0.15f, -0.12f), hind, Quaternion.Identity, any),
-                new Limb("right_hind", LimbKind.Foot, new Vector3(-0.16f, -0.15f, -0.12f), hind, Quaternion.Identity, any),
-            ],
-            requiredContacts: 4,
-            takeoffSpeedMax: 5f,
-            landingSpeedMax: 9f,
-            friction: 1.2f);
-    }
+    /// <summary>A 35 cm frog with long hind legs: all four limbs must touch; μ 1.2, 5 m/s takeoff, 9 m/s landing (rig: <see cref="FrogBuilder"/>).</summary>
+    public static ReducedCharacter Frog() => FrogReduced.Value;
 
-    /// <summary>A 60 cm six-legged ant: any three legs must touch; μ 1.2, 8 m/s takeoff, 11 m/s landing.</summary>
-    public static ReducedCharacter Ant()
-    {
-        NormalFilter up = NormalFilter.Upward(0.3f);
-        Vector3 leg = new(0.16f, 0.14f, 0.12f);
-        var limbs = new List<Limb>();
-        string[] rows = ["front", "middle", "hind"];
-        float[] z = [0.22f, 0f, -0.22f];
-        for (int i = 0; i < 3; i++)
-        {
-            limbs.Add(new Limb($"left_{rows[i]}", LimbKind.Foot, new Vector3(0.28f, -0.17f, z[i]), leg, Quaternion.Identity, up));
-            limbs.Add(new Limb($"right_{rows[i]}", LimbKind.Foot, new Vector3(-0.28f, -0.17f, z[i]), leg, Quaternion.Identity, up));
-        }
-
-        return new ReducedCharacter("ant", new Vector3(0.12f, 0.07f, 0.30f), limbs, requiredContacts: 3, takeoffSpeedMax: 8f, landingSpeedMax: 11f, friction: 1.2f);
-    }
+    /// <summary>A 60 cm six-legged ant: any three legs must touch; μ 1.2, 8 m/s takeoff, 11 m/s landing (rig: <see cref="AntBuilder"/>).</summary>
+    public static ReducedCharacter Ant() => AntReduced.Value;
 }

@@ -24,7 +24,7 @@ public sealed class JumpAnimatorTests
         Vector3 to = Ground(scene.Bvh, 9.5f, 7.5f);
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
         PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
-        JumpAnimation animation = new JumpAnimator(scene, CharacterPresets.Model("skeleton")!).Animate(plan.Jumps);
+        JumpAnimation animation = new JumpAnimator(scene, CharacterPresets.Model("skeleton")).Animate(plan.Jumps);
         return (scene, plan, animation);
     });
 
