@@ -29,6 +29,7 @@ public static class BallisticCli
             CliCommands.Plan(),
             CliCommands.Demo(),
             CliCommands.Levels(),
+            CliCommands.Characters(),
             BenchCommand.Create(),
         };
         root.Options.Add(CliCommands.Verbose);

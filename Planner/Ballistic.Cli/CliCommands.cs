@@ -1,12 +1,15 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Reports;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Cli;
@@ -180,6 +183,28 @@ internal static class CliCommands
         return new Command("levels", "Procedural levels.") { generate };
     }
 
+    public static Command Characters()
+    {
+        Option<string> output = new("--out") { Description = "Folder to write the characters to.", DefaultValueFactory = _ => Path.Combine("Scenes", "characters") };
+        var generate = new Command("generate", "Write the four characters as rigged GLB files with their limb specs (NAME.glb, NAME.limbs.json).") { output };
+        generate.SetAction(parse => Guard(parse, () =>
+        {
+            string folder = parse.GetValue(output)!;
+            foreach (string name in CharacterPresets.Names)
+            {
+                CharacterModel model = CharacterPresets.Model(name);
+                string glb = Path.Combine(folder, name + ".glb");
+                string spec = Path.Combine(folder, name + ".limbs.json");
+                OutputFile.Write(glb, AnimatedGlbWriter.ToBytes(model));
+                CharacterSpecFile.Save(model, CharacterPresets.Get(name), spec);
+                parse.InvocationConfiguration.Output.WriteLine($"{glb}: {model.Rig.Joints.Count} bones, {model.Rig.DofCount} degrees of freedom, {model.Limbs.Count} limbs; {spec}");
+            }
+
+            return 0;
+        }));
+        return new Command("characters", "The characters' rigs.") { generate };
+    }
+
     /// <summary>Runs a command body, turning expected failures into one line on standard error and exit code 1.</summary>
     internal static int Guard(ParseResult parse, Func<int> body)
     {
@@ -188,7 +213,7 @@ internal static class CliCommands
         {
             return body();
         }
-        catch (Exception e) when (e is CliException or LevelException or CharacterException or RoadmapFileException or GltfException or ArgumentException or IOException or UnauthorizedAccessException)
+        catch (Exception e) when (e is CliException or LevelException or CharacterException or RigException or RoadmapFileException or GltfException or ArgumentException or IOException or UnauthorizedAccessException)
         {
             stderr.WriteLine($"error: {e.Message}");
             if (parse.GetValue(Verbose))

@@ -19,7 +19,18 @@ public static class AnimatedGlbWriter
     public static byte[] ToBytes(JumpAnimation animation, string clip = "jumps")
     {
         ArgumentNullException.ThrowIfNull(animation);
-        CharacterModel model = animation.Model;
+        return Build(animation.Model, animation, clip);
+    }
+
+    /// <summary>The character alone, in its rest pose (every angle 0), as a skinned GLB without animation.</summary>
+    public static byte[] ToBytes(CharacterModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        return Build(model, null, "");
+    }
+
+    private static byte[] Build(CharacterModel model, JumpAnimation? animation, string clip)
+    {
         Rig rig = model.Rig;
         int jointCount = rig.Joints.Count;
         var writer = new GlbWriter();
@@ -27,14 +38,16 @@ public static class AnimatedGlbWriter
         // Nodes: Armature, then one node per joint (node index = joint index + 1), then the skinned mesh node.
         var bindPositions = new Vector3[jointCount];
         var bindRotations = new Quaternion[jointCount];
-        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, bindPositions, bindRotations);
+        // Bind pose = rest pose (every angle 0), so that a reader applying the limb spec's angles gets this rig back.
+        float[] rest = new float[rig.DofCount];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), rest, bindPositions, bindRotations);
         var armatureChildren = new JsonArray();
         writer.Add("nodes", new JsonObject { ["name"] = "Armature", ["children"] = armatureChildren });
         for (int j = 0; j < jointCount; j++)
         {
             Joint joint = rig.Joints[j];
             Vector3 translation = j == 0 ? bindPositions[0] : joint.Offset;
-            Quaternion rotation = j == 0 ? bindRotations[0] : rig.LocalRotation(j, model.ContactPose);
+            Quaternion rotation = j == 0 ? bindRotations[0] : rig.LocalRotation(j, rest);
             var node = new JsonObject
             {
                 ["name"] = joint.Name,
@@ -130,6 +143,12 @@ public static class AnimatedGlbWriter
         int skin = writer.Add("skins", new JsonObject { ["name"] = model.Name, ["joints"] = skinJoints, ["inverseBindMatrices"] = inverseBindAccessor, ["skeleton"] = 1 });
         int meshNode = writer.Add("nodes", new JsonObject { ["name"] = $"{model.Name}_mesh", ["mesh"] = mesh, ["skin"] = skin });
 
+        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["name"] = model.Name, ["nodes"] = new JsonArray(0, meshNode) });
+        if (animation is null)
+        {
+            return writer.ToBytes();
+        }
+
         // The clip.
         int frames = animation.Frames.Count;
         float[] times = new float[frames];
@@ -173,7 +192,6 @@ public static class AnimatedGlbWriter
         }
 
         writer.Add("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels });
-        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["name"] = model.Name, ["nodes"] = new JsonArray(0, meshNode) });
         return writer.ToBytes();
     }
 
