@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
@@ -157,6 +158,81 @@ internal static class BenchCommand
         }
 
         output.WriteLine($"trunk box vs level ({desert.Triangles.Count:N0} triangles, {hits / 20} of {boxes.Length} touching): median {Median(boxRates):N0} queries/s");
+
+        Animation(output, runs, levels);
+    }
+
+    /// <summary>Whole-body synthesis on a path across each bundled level: contact generation time and success, time per jump.</summary>
+    private static void Animation(TextWriter output, int runs, Dictionary<string, Level> levels)
+    {
+        (string Level, string Character, Vector3 From, Vector3 To)[] paths =
+        [
+            ("desert", "skeleton", new Vector3(-9.5f, 0f, -7.5f), new Vector3(9.5f, 0f, 7.5f)),
+            ("pond", "frog", new Vector3(-0.5f, 0f, -5.8f), new Vector3(0.5f, 0f, 4.6f)),
+            ("gap-course", "ant", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
+            ("gap-course", "skeleton", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
+        ];
+        output.WriteLine();
+        output.WriteLine("| path | jumps | contact generation (ms, median) | contact poses valid | synthesis per jump (ms, median) |");
+        output.WriteLine("|---|---:|---:|---:|---:|");
+        int valid = 0;
+        int total = 0;
+        foreach ((string levelName, string characterName, Vector3 from, Vector3 to) in paths)
+        {
+            Level level = levels.TryGetValue(levelName, out Level? cached) ? cached : levels[levelName] = LoadBundled(levelName);
+            var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
+            Vector3 start = CliInputs.OnGround(scene.Bvh, from.X, from.Z, from.Y);
+            Vector3 goal = CliInputs.OnGround(scene.Bvh, to.X, to.Z, to.Y);
+            BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = start, Goal = goal, StopWhenConnected = true });
+            PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(start, goal);
+            if (plan.Status != PlannerStatus.Exact)
+            {
+                output.WriteLine($"| {characterName} on {levelName} | no path: {plan.Reason} | | | |");
+                continue;
+            }
+
+            var animator = new JumpAnimator(scene, CharacterPresets.Model(characterName));
+            var generation = new List<double>();
+            int pathValid = 0;
+            for (int r = -1; r < runs; r++)
+            {
+                foreach (Jump jump in plan.Jumps)
+                {
+                    var clock = Stopwatch.StartNew();
+                    var takeoff = animator.Contacts.Generate(jump.Arc.Takeoff, jump.Takeoff.Contacts, jump.Arc.TakeoffVelocity);
+                    double first = clock.Elapsed.TotalMilliseconds;
+                    clock.Restart();
+                    var landing = animator.Contacts.Generate(jump.Arc.Landing, jump.Landing.Contacts, -jump.Arc.LandingVelocity);
+                    if (r >= 0)
+                    {
+                        generation.Add(first);
+                        generation.Add(clock.Elapsed.TotalMilliseconds);
+                    }
+
+                    if (r == 0)
+                    {
+                        pathValid += (takeoff.Valid ? 1 : 0) + (landing.Valid ? 1 : 0);
+                    }
+                }
+            }
+
+            var synthesis = new List<double>();
+            for (int r = -1; r < runs; r++)
+            {
+                var clock = Stopwatch.StartNew();
+                animator.Animate(plan.Jumps);
+                if (r >= 0)
+                {
+                    synthesis.Add(clock.Elapsed.TotalMilliseconds / plan.Jumps.Count);
+                }
+            }
+
+            valid += pathValid;
+            total += 2 * plan.Jumps.Count;
+            output.WriteLine($"| {characterName} on {levelName} | {plan.Jumps.Count} | {Median(generation):0.000} | {pathValid} of {2 * plan.Jumps.Count} | {Median(synthesis):0.00} |");
+        }
+
+        output.WriteLine($"contact generation success over these paths: {valid} of {total} ({100.0 * valid / Math.Max(1, total):0.0}%)");
     }
 
     private static Level LoadBundled(string name)

@@ -19,9 +19,13 @@ public sealed class ContactGenerator
 {
     private const int CandidatesPerLimb = 6;
 
+    /// <summary>Only the samples closest to the contact pose are tried as contacts: the comfortable ones.</summary>
+    private const int DatabaseScan = 400;
+
     private readonly PlanningScene _scene;
     private readonly LimbSampleDatabase[] _databases;
     private readonly BodyCollision _collision;
+    private readonly float[] _reach;
 
     /// <summary>Creates a generator for a character model on a scene baked for its reduced model.</summary>
     /// <exception cref="RigException">The model's limbs do not match the scene character's limbs by name and order.</exception>
@@ -38,6 +42,7 @@ public sealed class ContactGenerator
         Model = model;
         Ik = new LimbIk(model.Rig, ik ?? new IkSettings { Restarts = 1, MaxIterations = 40 });
         _databases = [.. model.Limbs.Select(l => new LimbSampleDatabase(model, l))];
+        _reach = [.. model.Limbs.Select(l => l.Chain.Skip(1).Sum(j => model.Rig.Joints[j].Offset.Length()) + l.EffectorOffset.Length())];
         _collision = new BodyCollision(scene.Bvh);
     }
 
@@ -219,6 +224,10 @@ public sealed class ContactGenerator
         nearby.Clear();
         _scene.Bvh.OverlappingTriangles(workspace, nearby);
         var candidates = new List<(float Distance, Vector3 Point, Vector3 Normal, float Mu)>();
+        Aabb surfaceBounds = Aabb.Empty;
+        Vector3 slabNormal = Vector3.Zero;
+        Vector3 slabCentre = Vector3.Zero;
+        float slabArea = 0f;
         foreach (int t in nearby)
         {
             int surface = _scene.Surfaces.SurfaceOf(t);
@@ -231,6 +240,11 @@ public sealed class ContactGenerator
 
             Vector3 point = triangle.ClosestPoint(reference);
             candidates.Add((Vector3.Distance(point, reference), point, normal, _scene.Level.FrictionOf(t, _scene.Character.Friction)));
+            surfaceBounds = Aabb.Union(surfaceBounds, triangle.Bounds);
+            float area = triangle.Area;
+            slabNormal += normal * area;
+            slabCentre += triangle.Centroid * area;
+            slabArea += area;
         }
 
         foreach (Contact c in estimated)
@@ -246,16 +260,33 @@ public sealed class ContactGenerator
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         float[] trial = (float[])q.Clone();
+        rig.Solve(root, q, positions, rotations);
+        Vector3 limbRoot = positions[limb.RootJoint];
 
         // First the database: samples nearest the contact pose whose contact point lies within 6 cm of an acceptable
         // surface, started from that very sample; then the surface points nearest the reference effector position.
         LimbSampleDatabase database = _databases[l];
+        Aabb surfaceNear = surfaceBounds.Inflate(0.06f); // samples farther from every acceptable surface cannot touch one
+
+        // The acceptable surfaces lie in a slab around their mean plane: samples outside it need no triangle query.
+        Vector3 slabAxis = slabNormal.LengthSquared() > 1e-12f ? Vector3.Normalize(slabNormal) : Vector3.UnitY;
+        slabCentre = slabArea > 0f ? slabCentre / slabArea : Vector3.Zero;
+        float slabHalf = 0.06f;
+        foreach (int t in nearby)
+        {
+            if (_scene.Surfaces.SurfaceOf(t) >= 0 && limb.Filter.Accepts(_scene.Level.Triangles[t].Normal))
+            {
+                Triangle tri = _scene.Level.Triangles[t];
+                slabHalf = MathF.Max(slabHalf, 0.06f + MathF.Max(MathF.Abs(Vector3.Dot(tri.A - slabCentre, slabAxis)), MathF.Max(MathF.Abs(Vector3.Dot(tri.B - slabCentre, slabAxis)), MathF.Abs(Vector3.Dot(tri.C - slabCentre, slabAxis)))));
+            }
+        }
+
         int tried = 0;
         var near = new List<int>();
-        for (int s = 0; s < database.Count && tried < CandidatesPerLimb; s++)
+        for (int s = 0; s < Math.Min(database.Count, DatabaseScan) && tried < CandidatesPerLimb; s++)
         {
             Vector3 world = root.ToWorld(database.PointOf(s));
-            if (!workspace.Contains(world))
+            if (!surfaceNear.Contains(world) || MathF.Abs(Vector3.Dot(world - slabCentre, slabAxis)) > slabHalf || !workspace.Contains(world))
             {
                 continue;
             }
@@ -312,6 +343,11 @@ public sealed class ContactGenerator
             }
 
             previous = point;
+            if (Vector3.Distance(point, limbRoot) > _reach[l])
+            {
+                continue; // farther than the stretched limb: no IK can get there
+            }
+
             tried++;
             Array.Copy(q, trial, q.Length);
             Vector3 local = Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation));
