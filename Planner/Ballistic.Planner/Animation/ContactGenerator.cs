@@ -198,7 +198,7 @@ public sealed class ContactGenerator
         }
 
         LimbSampleDatabase database = _databases[l];
-        for (int s = 0; s < Math.Min(database.Count, 200); s++)
+        for (int s = 0; s < database.Count; s++)
         {
             database.Apply(s, q);
             rig.Solve(root, q, positions, rotations);

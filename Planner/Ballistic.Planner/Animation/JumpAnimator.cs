@@ -15,7 +15,7 @@ namespace Ballistic.Planner.Animation;
 /// </summary>
 public sealed class JumpAnimator
 {
-    private const int MaxResamples = 24;
+    private const int MaxResamples = 64;
 
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
@@ -215,9 +215,18 @@ public sealed class JumpAnimator
             bool clear = false;
             for (int attempt = 0; attempt <= MaxResamples && !clear; attempt++)
             {
-                if (attempt > 0)
+                // Re-sampling: the tucked and contact poses first, then random samples of the limb's database.
+                if (attempt is 1 or 2)
                 {
-                    _contacts.Database(l).Apply(random.Next(Math.Min(_contacts.Database(l).Count, 400)), limbApex);
+                    float[] pose = attempt == 1 ? Model.FlexionPose : Model.ContactPose;
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        limbApex[d] = pose[d];
+                    }
+                }
+                else if (attempt > 2)
+                {
+                    _contacts.Database(l).Apply(random.Next(_contacts.Database(l).Count), limbApex);
                 }
 
                 clear = true;
