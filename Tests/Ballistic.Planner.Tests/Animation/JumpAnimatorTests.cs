@@ -2,7 +2,6 @@ using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
@@ -20,8 +19,8 @@ public sealed class JumpAnimatorTests
     {
         Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
-        Vector3 from = Ground(scene.Bvh, -9.5f, -7.5f);
-        Vector3 to = Ground(scene.Bvh, 9.5f, 7.5f);
+        Vector3 from = LevelPoints.Ground(scene.Bvh, -9.5f, -7.5f)!.Value;
+        Vector3 to = LevelPoints.Ground(scene.Bvh, 9.5f, 7.5f)!.Value;
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
         PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
         JumpAnimation animation = new JumpAnimator(scene, CharacterPresets.Model("skeleton")).Animate(plan.Jumps);
@@ -145,18 +144,44 @@ public sealed class JumpAnimatorTests
         }
     }
 
+    [TestCase("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f)]
+    [TestCase("gap-course", "ant", -6f, 0f, 11.5f, 0f)]
+    [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
+    public void EveryCharacterAnimatesOnItsLevel(string levelName, string characterName, float x0, float z0, float x1, float z1)
+    {
+        Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
+        var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
+        Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
+        Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 800, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
+        CharacterModel model = CharacterPresets.Model(characterName);
+        JumpAnimation animation = new JumpAnimator(scene, model).Animate(plan.Jumps);
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        Assert.Multiple(() =>
+        {
+            Assert.That(animation.CollidingFrames, Is.Zero, "no limb through the level");
+            Assert.That(animation.FailedContactPoses, Is.LessThanOrEqualTo(animation.Arcs.Count / 5), "contact poses pass the no-slip test");
+            Assert.That(animation.ContactPhases, Is.Not.Empty);
+        });
+        foreach (ContactPhase phase in animation.ContactPhases)
+        {
+            for (float t = phase.From; t <= phase.To + 1e-6f; t += 1f / 240f)
+            {
+                animation.Joints(MathF.Min(t, phase.To), positions, rotations);
+                Assert.That(Vector3.Distance(model.Limbs[phase.Limb].EffectorPosition(positions, rotations), phase.Position), Is.LessThanOrEqualTo(0.01f), $"{characterName} {model.Limbs[phase.Limb].Name} slides at {t:0.000} s");
+            }
+        }
+    }
+
     [Test]
     public void ContactGenerationSucceedsAlmostAlways()
     {
         JumpAnimation animation = Desert.Value.Animation;
         int poses = 2 * animation.Arcs.Count;
         Assert.That(animation.FailedContactPoses, Is.LessThanOrEqualTo(poses / 10), $"{animation.FailedContactPoses} of {poses} contact poses failed");
-    }
-
-    private static Vector3 Ground(TriangleBvh bvh, float x, float z)
-    {
-        bvh.Raycast(new Vector3(x, bvh.Bounds.Max.Y + 1f, z), new Vector3(0f, -(bvh.Bounds.Max.Y - bvh.Bounds.Min.Y + 2f), 0f), 1f, out RayHit hit);
-        return hit.Point;
     }
 
     private static float DistanceToLevel(PlanningScene scene, Vector3 p)

@@ -1,6 +1,5 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Collision;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
@@ -20,8 +19,8 @@ public sealed class GeneratedLevelTests
     {
         Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
         var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
-        Vector3 from = Highest(scene.Bvh, x0, z0);
-        Vector3 to = Highest(scene.Bvh, x1, z1);
+        Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
+        Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
 
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 800, Start = from, Goal = to, StopWhenConnected = true });
         Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
@@ -63,24 +62,5 @@ public sealed class GeneratedLevelTests
             Assert.That(Count("pond"), Is.EqualTo(6_994).Within(5).Percent);
             Assert.That(Count("rooftops"), Is.EqualTo(449_267).Within(5).Percent);
         });
-    }
-
-    /// <summary>The highest surface point within 4 m of (x, z): a roof rather than the street below it.</summary>
-    private static Vector3 Highest(TriangleBvh bvh, float x, float z)
-    {
-        Vector3 best = new(x, float.NegativeInfinity, z);
-        for (float dx = -4f; dx <= 4f; dx += 1f)
-        {
-            for (float dz = -4f; dz <= 4f; dz += 1f)
-            {
-                float top = bvh.Bounds.Max.Y + 1f;
-                if (bvh.Raycast(new Vector3(x + dx, top, z + dz), new Vector3(0f, -(top - bvh.Bounds.Min.Y + 1f), 0f), 1f, out RayHit hit) && hit.Point.Y > best.Y + 0.01f)
-                {
-                    best = hit.Point;
-                }
-            }
-        }
-
-        return best;
     }
 }
