@@ -130,6 +130,12 @@ public static class AnimatedGlbWriter
         {
             Matrix4x4 world = Matrix4x4.CreateFromQuaternion(bindRotations[j]) * Matrix4x4.CreateTranslation(bindPositions[j]);
             Matrix4x4.Invert(world, out Matrix4x4 inverse);
+
+            // glTF requires the affine row of an inverse bind matrix to be exactly (0, 0, 0, 1).
+            inverse.M14 = 0f;
+            inverse.M24 = 0f;
+            inverse.M34 = 0f;
+            inverse.M44 = 1f;
             Write(inverseBind.AsSpan(16 * j), inverse);
         }
 
