@@ -1,0 +1,52 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels.Generation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using BenchmarkDotNet.Attributes;
+
+namespace Ballistic.Benchmarks;
+
+/// <summary>Whole-body synthesis of the skeleton on a path across the generated desert: one contact pose, one jump.</summary>
+[MemoryDiagnoser]
+public class AnimationBenchmarks
+{
+    private JumpAnimator _animator = null!;
+    private Jump[] _jumps = [];
+    private int _next;
+
+    /// <summary>Plans a path across the desert and prepares the animator (its limb databases).</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        var scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
+        Vector3 Ground(float x, float z)
+        {
+            scene.Bvh.Raycast(new Vector3(x, 10f, z), new Vector3(0f, -20f, 0f), 1f, out var hit);
+            return hit.Point;
+        }
+
+        Vector3 from = Ground(-9.5f, -7.5f);
+        Vector3 to = Ground(9.5f, 7.5f);
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true });
+        _jumps = [.. new PathQuery(scene, bake.Roadmap).Plan(from, to).Jumps];
+        _animator = new JumpAnimator(scene, CharacterPresets.Model("skeleton"));
+    }
+
+    /// <summary>One takeoff contact pose (projection of the reference pose, IK, bone checks, cone test).</summary>
+    [Benchmark]
+    public bool GenerateContactPose()
+    {
+        Jump jump = _jumps[_next++ % _jumps.Length];
+        return _animator.Contacts.Generate(jump.Arc.Takeoff, jump.Takeoff.Contacts, jump.Arc.TakeoffVelocity).Valid;
+    }
+
+    /// <summary>One whole jump: contact poses, held contacts, apex, interpolation and bone checks.</summary>
+    [Benchmark]
+    public int SynthesiseJump()
+    {
+        Jump jump = _jumps[_next++ % _jumps.Length];
+        return _animator.Animate([jump]).Frames.Count;
+    }
+}
