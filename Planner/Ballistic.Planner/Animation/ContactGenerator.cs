@@ -96,7 +96,7 @@ public sealed class ContactGenerator
                 }
 
                 // The estimate is the centre of a patch, which on a curved surface lies off it: project it back.
-                if (OnSurface(c.Position, Model.Limbs[l]) is not { } surface)
+                if (NearestSurfacePoint(c.Position, Model.Limbs[l], 0.2f, []) is not { } surface)
                 {
                     continue;
                 }
@@ -291,27 +291,7 @@ public sealed class ContactGenerator
                 continue;
             }
 
-            near.Clear();
-            _scene.Bvh.TrianglesNear(new Aabb(world - new Vector3(0.06f), world + new Vector3(0.06f)), near);
-            float bestDistance = 0.06f;
-            (Vector3 Point, Vector3 Normal, float Mu)? best = null;
-            foreach (int t in near)
-            {
-                Triangle triangle = _scene.Level.Triangles[t];
-                if (_scene.Surfaces.SurfaceOf(t) < 0 || !limb.Filter.Accepts(triangle.Normal))
-                {
-                    continue;
-                }
-
-                Vector3 point = triangle.ClosestPoint(world);
-                float distance = Vector3.Distance(point, world);
-                if (distance < bestDistance)
-                {
-                    bestDistance = distance;
-                    best = (point, triangle.Normal, _scene.Level.FrictionOf(t, _scene.Character.Friction));
-                }
-            }
-
+            (Vector3 Point, Vector3 Normal, float Mu)? best = NearestSurfacePoint(world, limb, 0.06f, near);
             if (best is not { } found)
             {
                 continue;
@@ -368,14 +348,17 @@ public sealed class ContactGenerator
         return false;
     }
 
-    /// <summary>The nearest point, within 20 cm, of a surface the limb may touch, with that surface's normal.</summary>
-    private (Vector3 Point, Vector3 Normal)? OnSurface(Vector3 point, RigLimb limb)
+    /// <summary>
+    /// The nearest point within <paramref name="radius"/> metres of <paramref name="point"/> on a surface the limb may
+    /// touch, with that surface's normal and friction; <c>null</c> when there is none.
+    /// </summary>
+    private (Vector3 Point, Vector3 Normal, float Mu)? NearestSurfacePoint(Vector3 point, RigLimb limb, float radius, List<int> scratch)
     {
-        var near = new List<int>();
-        _scene.Bvh.TrianglesNear(new Aabb(point - new Vector3(0.2f), point + new Vector3(0.2f)), near);
-        (Vector3 Point, Vector3 Normal)? best = null;
-        float bestDistance = 0.2f;
-        foreach (int t in near)
+        scratch.Clear();
+        _scene.Bvh.TrianglesNear(new Aabb(point - new Vector3(radius), point + new Vector3(radius)), scratch);
+        (Vector3 Point, Vector3 Normal, float Mu)? best = null;
+        float bestDistance = radius;
+        foreach (int t in scratch)
         {
             Triangle triangle = _scene.Level.Triangles[t];
             if (_scene.Surfaces.SurfaceOf(t) < 0 || !limb.Filter.Accepts(triangle.Normal))
@@ -388,7 +371,7 @@ public sealed class ContactGenerator
             if (distance < bestDistance)
             {
                 bestDistance = distance;
-                best = (closest, triangle.Normal);
+                best = (closest, triangle.Normal, _scene.Level.FrictionOf(t, _scene.Character.Friction));
             }
         }
 
