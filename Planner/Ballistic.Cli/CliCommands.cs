@@ -21,7 +21,7 @@ internal static class CliCommands
 
     private static Option<string> LevelOption() => new("--level") { Description = "Level file (.glb or .gltf), Y up, metres.", Required = true };
 
-    private static Option<string> CharacterOption() => new("--character") { Description = $"Character preset: {string.Join(", ", CharacterPresets.Names)}.", Required = true };
+    private static Option<string> CharacterOption() => new("--character") { Description = $"Character preset ({string.Join(", ", CharacterPresets.Names)}), or a limb spec NAME.limbs.json with its rigged NAME.glb beside it.", Required = true };
 
     private static Option<int> SeedOption() => new("--seed") { Description = "Seed of every random choice.", DefaultValueFactory = _ => 1 };
 
@@ -44,7 +44,7 @@ internal static class CliCommands
             TextWriter stdout = parse.InvocationConfiguration.Output;
             TextWriter stderr = parse.InvocationConfiguration.Error;
             Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!);
-            ReducedCharacter chr = CharacterPresets.Get(parse.GetValue(character)!);
+            ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!).Reduced;
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
             int? nodes = parse.GetValue(maxNodes) ?? (limit is null ? 200 : null);
             var scene = PlanningScene.Create(lvl, chr);
@@ -91,11 +91,13 @@ internal static class CliCommands
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
+            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!);
             var pipeline = new PlanPipeline
             {
                 LevelPath = levelPath,
                 Level = CliInputs.LoadLevel(levelPath),
-                Character = CharacterPresets.Get(parse.GetValue(character)!),
+                Character = reduced,
+                Model = model,
                 From = CliInputs.ParsePoint(parse.GetValue(from)!, "--from"),
                 To = CliInputs.ParsePoint(parse.GetValue(to)!, "--to"),
                 RoadmapPath = parse.GetValue(roadmap),
@@ -117,7 +119,7 @@ internal static class CliCommands
             }
 
             (PlanReport result, Roadmap used) = pipeline.Run(parse.InvocationConfiguration.Error);
-            PlanPipeline.Write(result, used, reportPath, parse.GetValue(svg), parse.InvocationConfiguration.Output, glbPath);
+            pipeline.Write(result, used, reportPath, parse.GetValue(svg), parse.InvocationConfiguration.Output, glbPath);
             return result.Result.Status == PlannerStatus.Exact ? 0 : 1;
         }));
         return command;
@@ -147,6 +149,7 @@ internal static class CliCommands
                 LevelPath = path ?? "desert (generated)",
                 Level = level,
                 Character = skeleton,
+                Model = CharacterPresets.Model("skeleton"),
                 Scene = scene,
                 From = from,
                 To = to,
@@ -157,7 +160,7 @@ internal static class CliCommands
             (PlanReport report, Roadmap roadmap) = pipeline.Run(parse.InvocationConfiguration.Error);
             string folder = parse.GetValue(output)!;
             RoadmapFile.Save(roadmap, Path.Combine(folder, "desert-skeleton.roadmap"));
-            PlanPipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout, Path.Combine(folder, "desert-skeleton.glb"));
+            pipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout, Path.Combine(folder, "desert-skeleton.glb"));
             return report.Result.Status == PlannerStatus.Exact ? 0 : 1;
         }));
         return command;

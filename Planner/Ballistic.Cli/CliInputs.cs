@@ -1,8 +1,10 @@
 using System.Globalization;
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
+using Ballistic.Planner.Rigs;
 
 namespace Ballistic.Cli;
 
@@ -61,6 +63,29 @@ internal static class CliInputs
         }
 
         return null;
+    }
+
+    /// <summary>
+    /// The character named on the command line: a preset name, or a limb spec file (<c>NAME.limbs.json</c>) whose
+    /// rigged glTF sits beside it as <c>NAME.glb</c> (or <c>NAME.gltf</c>).
+    /// </summary>
+    public static (ReducedCharacter Reduced, CharacterModel Model) Character(string value)
+    {
+        if (!value.EndsWith(".json", StringComparison.OrdinalIgnoreCase))
+        {
+            return (CharacterPresets.Get(value), CharacterPresets.Model(value));
+        }
+
+        if (!File.Exists(value))
+        {
+            throw new CliException($"Limb spec '{value}' does not exist.");
+        }
+
+        string stem = value.EndsWith(".limbs.json", StringComparison.OrdinalIgnoreCase) ? value[..^".limbs.json".Length] : value[..^".json".Length];
+        string? gltf = new[] { stem + ".glb", stem + ".gltf" }.FirstOrDefault(File.Exists)
+            ?? throw new CliException($"Limb spec '{value}' needs its rigged character beside it as {Path.GetFileName(stem)}.glb or .gltf.");
+        (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, value);
+        return (reduced, model);
     }
 
     /// <summary>Builds a generated level in memory.</summary>

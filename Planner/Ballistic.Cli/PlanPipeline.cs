@@ -20,6 +20,8 @@ internal sealed class PlanPipeline
 
     public required ReducedCharacter Character { get; init; }
 
+    public required CharacterModel Model { get; init; }
+
     public required Vector3 From { get; init; }
 
     public required Vector3 To { get; init; }
@@ -91,12 +93,12 @@ internal sealed class PlanPipeline
         new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings));
 
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
-    public static void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
+    public void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
     {
         string? animationLine = null;
         if (glbPath is not null && report.Result.Status == PlannerStatus.Exact)
         {
-            CharacterModel model = CharacterPresets.Model(report.Scene.Character.Name);
+            CharacterModel model = Model;
             var clock = Stopwatch.StartNew();
             JumpAnimation animation = new JumpAnimator(report.Scene, model).Animate(report.Result.Jumps);
             AnimatedGlbWriter.Save(animation, glbPath, "jumps");

@@ -104,6 +104,24 @@ public sealed class CliJobTests
     }
 
     [Test]
+    public void ACharacterCanBeGivenAsALimbSpecFile()
+    {
+        string spec = Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "ant.limbs.json");
+        string report = Path.Combine(_folder, "ant.json");
+        (int code, string output, string error) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", spec,
+            "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--animate");
+        Assert.That(code, Is.Zero, error);
+        Assert.That(output, Does.Contain("animation:"));
+
+        string lonely = Path.Combine(_folder, "lonely.limbs.json");
+        File.Copy(spec, lonely);
+        (int missing, _, string missingError) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", lonely,
+            "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
+        Assert.That(missing, Is.EqualTo(1));
+        Assert.That(missingError, Does.Contain("lonely.glb"));
+    }
+
+    [Test]
     public void BakeThenPlanWithTheSavedRoadmap()
     {
         string roadmap = Path.Combine(_folder, "course.roadmap");
