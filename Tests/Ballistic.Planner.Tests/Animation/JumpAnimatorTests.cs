@@ -149,12 +149,7 @@ public sealed class JumpAnimatorTests
     [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
     public void EveryCharacterAnimatesOnItsLevel(string levelName, string characterName, float x0, float z0, float x1, float z1)
     {
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
-        var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
-        Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
-        Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
-        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 800, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
-        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        (PlanningScene scene, _, PlanResult plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
         Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
         CharacterModel model = CharacterPresets.Model(characterName);
         JumpAnimation animation = new JumpAnimator(scene, model).Animate(plan.Jumps);

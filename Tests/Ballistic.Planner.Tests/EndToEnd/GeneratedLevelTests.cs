@@ -1,5 +1,3 @@
-using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
@@ -17,14 +15,8 @@ public sealed class GeneratedLevelTests
     [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
     public void PlansAcrossTheBundledLevelsObeyThePhysics(string levelName, string characterName, float x0, float z0, float x1, float z1)
     {
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
-        var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
-        Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
-        Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
-
-        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 800, Start = from, Goal = to, StopWhenConnected = true });
+        (PlanningScene scene, BakeResult bake, PlanResult plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
         Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
-        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
         Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
         Assert.That(plan.Jumps, Is.Not.Empty);
         PhysicsChecks.AssertNode(scene, plan.Start!, "start");
