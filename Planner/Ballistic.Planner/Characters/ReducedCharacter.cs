@@ -13,6 +13,8 @@ namespace Ballistic.Planner.Characters;
 /// </summary>
 public sealed class ReducedCharacter
 {
+    private string? _fingerprint;
+
     /// <summary>Creates a character, checking every value.</summary>
     /// <exception cref="CharacterException">A value is out of range, limb names repeat, or more limbs are required than exist.</exception>
     public ReducedCharacter(string name, Vector3 trunkHalfExtents, IReadOnlyList<Limb> limbs, int requiredContacts, float takeoffSpeedMax, float landingSpeedMax, float friction)
@@ -119,24 +121,23 @@ public sealed class ReducedCharacter
     }
 
     /// <summary>A hex SHA-256 of everything that affects planning; roadmap files record it.</summary>
-    public string Fingerprint
-    {
-        get
-        {
-            using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
-            hash.AppendData(Encoding.UTF8.GetBytes(Name));
-            Append(hash, TrunkHalfExtents.X, TrunkHalfExtents.Y, TrunkHalfExtents.Z, RequiredContacts, TakeoffSpeedMax, LandingSpeedMax, Friction, Limits.Gravity);
-            foreach (Limb limb in Limbs)
-            {
-                hash.AppendData(Encoding.UTF8.GetBytes(limb.Name));
-                Vector3 c = limb.WorkspaceCenter;
-                Vector3 h = limb.WorkspaceHalfExtents;
-                Quaternion q = limb.WorkspaceRotation;
-                Append(hash, (int)limb.Kind, c.X, c.Y, c.Z, h.X, h.Y, h.Z, q.X, q.Y, q.Z, q.W, limb.Filter.Direction.X, limb.Filter.Direction.Y, limb.Filter.Direction.Z, limb.Filter.MinCosine);
-            }
+    public string Fingerprint => _fingerprint ??= ComputeFingerprint();
 
-            return Convert.ToHexStringLower(hash.GetHashAndReset());
+    private string ComputeFingerprint()
+    {
+        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+        hash.AppendData(Encoding.UTF8.GetBytes(Name));
+        Append(hash, TrunkHalfExtents.X, TrunkHalfExtents.Y, TrunkHalfExtents.Z, RequiredContacts, TakeoffSpeedMax, LandingSpeedMax, Friction, Limits.Gravity);
+        foreach (Limb limb in Limbs)
+        {
+            hash.AppendData(Encoding.UTF8.GetBytes(limb.Name));
+            Vector3 c = limb.WorkspaceCenter;
+            Vector3 h = limb.WorkspaceHalfExtents;
+            Quaternion q = limb.WorkspaceRotation;
+            Append(hash, (int)limb.Kind, c.X, c.Y, c.Z, h.X, h.Y, h.Z, q.X, q.Y, q.Z, q.W, limb.Filter.Direction.X, limb.Filter.Direction.Y, limb.Filter.Direction.Z, limb.Filter.MinCosine);
         }
+
+        return Convert.ToHexStringLower(hash.GetHashAndReset());
     }
 
     /// <inheritdoc />
