@@ -98,7 +98,7 @@ internal static class BenchCommand
             Vector3 from = a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position;
             Vector3 to = b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position;
             var clock = Stopwatch.StartNew();
-            PlanResult result = query.Plan(from, to, new QuerySettings { Seed = q });
+            PlanResult result = query.Plan(from, to);
             if (q >= warmUp)
             {
                 queryTimes.Add(clock.Elapsed.TotalMilliseconds);

@@ -8,6 +8,7 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Reports;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Cli;
 
@@ -36,7 +37,7 @@ internal sealed class PlanPipeline
 
     public TimeSpan? TimeLimit { get; init; }
 
-    public float Radius { get; init; } = 1.5f;
+    public EndpointTolerance Tolerance { get; init; } = new();
 
     public PlanningScene? Scene { get; init; }
 
@@ -68,7 +69,7 @@ internal sealed class PlanPipeline
                 Start = From,
                 Goal = To,
                 StopWhenConnected = true,
-                ProjectionRadius = Radius,
+                Tolerance = Tolerance,
             };
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(error) ? new ConsoleProgress(error, MaxNodes) : null;
             BakeResult bake = new RoadmapBaker(scene).Bake(settings, progress: progress);
@@ -84,7 +85,7 @@ internal sealed class PlanPipeline
         }
 
         clock.Restart();
-        PlanResult result = new PathQuery(scene, roadmap).Plan(From, To, new QuerySettings { Seed = Seed, ProjectionRadius = Radius });
+        PlanResult result = new PathQuery(scene, roadmap).Plan(From, To, new QuerySettings { Tolerance = Tolerance });
         Timings["query"] = clock.Elapsed.TotalSeconds;
         return (Report(scene, roadmap, bakeSeconds, result), roadmap);
     }

@@ -96,7 +96,7 @@ public sealed class ContactGenerator
                 }
 
                 // The estimate is the centre of a patch, which on a curved surface lies off it: project it back.
-                if (NearestSurfacePoint(c.Position, Model.Limbs[l], 0.2f, []) is not { } surface)
+                if (NearestSurfacePoint(c.Position, Model.Limbs[l], root.Position, 0.2f, []) is not { } surface)
                 {
                     continue;
                 }
@@ -239,6 +239,11 @@ public sealed class ContactGenerator
             }
 
             Vector3 point = triangle.ClosestPoint(reference);
+            if (!ContactEstimator.FacesTrunk(normal, point, root.Position))
+            {
+                continue; // the far side of a thin slab: no limb can press on it from here
+            }
+
             candidates.Add((Vector3.Distance(point, reference), point, normal, _scene.Level.FrictionOf(t, _scene.Character.Friction)));
             surfaceBounds = Aabb.Union(surfaceBounds, triangle.Bounds);
             float area = triangle.Area;
@@ -291,7 +296,7 @@ public sealed class ContactGenerator
                 continue;
             }
 
-            (Vector3 Point, Vector3 Normal, float Mu)? best = NearestSurfacePoint(world, limb, 0.06f, near);
+            (Vector3 Point, Vector3 Normal, float Mu)? best = NearestSurfacePoint(world, limb, root.Position, 0.06f, near);
             if (best is not { } found)
             {
                 continue;
@@ -350,9 +355,10 @@ public sealed class ContactGenerator
 
     /// <summary>
     /// The nearest point within <paramref name="radius"/> metres of <paramref name="point"/> on a surface the limb may
-    /// touch, with that surface's normal and friction; <c>null</c> when there is none.
+    /// touch whose face is turned toward the trunk centre <paramref name="trunk"/>, with that surface's normal and
+    /// friction; <c>null</c> when there is none.
     /// </summary>
-    private (Vector3 Point, Vector3 Normal, float Mu)? NearestSurfacePoint(Vector3 point, RigLimb limb, float radius, List<int> scratch)
+    private (Vector3 Point, Vector3 Normal, float Mu)? NearestSurfacePoint(Vector3 point, RigLimb limb, Vector3 trunk, float radius, List<int> scratch)
     {
         scratch.Clear();
         _scene.Bvh.TrianglesNear(new Aabb(point - new Vector3(radius), point + new Vector3(radius)), scratch);
@@ -368,7 +374,7 @@ public sealed class ContactGenerator
 
             Vector3 closest = triangle.ClosestPoint(point);
             float distance = Vector3.Distance(closest, point);
-            if (distance < bestDistance)
+            if (distance < bestDistance && ContactEstimator.FacesTrunk(triangle.Normal, closest, trunk))
             {
                 bestDistance = distance;
                 best = (closest, triangle.Normal, _scene.Level.FrictionOf(t, _scene.Character.Friction));

@@ -14,6 +14,7 @@ namespace Ballistic.Planner.Characters;
 public sealed class ReducedCharacter
 {
     private string? _fingerprint;
+    private HeightRange? _stanceLift;
 
     /// <summary>Creates a character, checking every value.</summary>
     /// <exception cref="CharacterException">A value is out of range, limb names repeat, or more limbs are required than exist.</exception>
@@ -120,6 +121,26 @@ public sealed class ReducedCharacter
         }
     }
 
+    /// <summary>
+    /// How high the trunk centre stands above the surface under its supporting contacts, along the trunk's up axis
+    /// (metres): root poses are sampled in this range. Derived from the rig, from about 70 % (moderately bent legs)
+    /// to 100 % (legs near straight) of its rest-pose height; when not set, from the trunk's half height to
+    /// <see cref="Reach"/>.
+    /// </summary>
+    public HeightRange StanceLift
+    {
+        get => _stanceLift ?? new HeightRange(TrunkHalfExtents.Y + 0.02f, MathF.Max(TrunkHalfExtents.Y + 0.02f, Reach));
+        init
+        {
+            if (!value.IsValid || value.Min < TrunkHalfExtents.Y)
+            {
+                throw new CharacterException($"Character '{Name}': the stance lift must be a finite range above the trunk's half height ({TrunkHalfExtents.Y:0.###} m), not {value.Min:0.###}–{value.Max:0.###} m.");
+            }
+
+            _stanceLift = value;
+        }
+    }
+
     /// <summary>A hex SHA-256 of everything that affects planning; roadmap files record it.</summary>
     public string Fingerprint => _fingerprint ??= ComputeFingerprint();
 
@@ -127,7 +148,7 @@ public sealed class ReducedCharacter
     {
         using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
         hash.AppendData(Encoding.UTF8.GetBytes(Name));
-        Append(hash, TrunkHalfExtents.X, TrunkHalfExtents.Y, TrunkHalfExtents.Z, RequiredContacts, TakeoffSpeedMax, LandingSpeedMax, Friction, Limits.Gravity);
+        Append(hash, TrunkHalfExtents.X, TrunkHalfExtents.Y, TrunkHalfExtents.Z, RequiredContacts, TakeoffSpeedMax, LandingSpeedMax, Friction, Limits.Gravity, StanceLift.Min, StanceLift.Max);
         foreach (Limb limb in Limbs)
         {
             hash.AppendData(Encoding.UTF8.GetBytes(limb.Name));

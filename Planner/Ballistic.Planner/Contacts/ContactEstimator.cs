@@ -9,8 +9,10 @@ namespace Ballistic.Planner.Contacts;
 
 /// <summary>
 /// FINDCONTACTS and COMPUTECONE of the paper: for a root pose, each limb whose workspace Wk touches an acceptable
-/// surface gets an estimated contact at the centre of Wk's intersection with the largest such surface; the
-/// centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. Thread-safe.
+/// surface gets an estimated contact on the largest such surface, at the point of the mesh nearest the centre of Wk's
+/// intersection with it, with the normal of the triangle that point lies on. A surface is acceptable when the limb's
+/// filter accepts it and its face is turned toward the trunk (the underside of a slab the workspace pierces is not).
+/// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. Thread-safe.
 /// </summary>
 public sealed class ContactEstimator
 {
@@ -111,7 +113,7 @@ public sealed class ContactEstimator
             }
 
             (float area, Vector3 centroid) = BoxClipper.ClipArea(workspace, triangle);
-            if (area <= 0f)
+            if (area <= 0f || !FacesTrunk(normal, centroid, pose.Position))
             {
                 continue;
             }
@@ -153,12 +155,56 @@ public sealed class ContactEstimator
             return false;
         }
 
+        // The patch's centre lies off a curved surface: the contact is the point of the patch's own mesh nearest to
+        // it, or when that point leaves Wk the centre of the triangle's piece inside Wk (on the triangle and inside Wk,
+        // the piece being convex), with that triangle's normal.
         SurfacePart chosen = parts[best];
+        Vector3 centre = chosen.Moment / chosen.Area;
+        Vector3 position = default;
+        Vector3 onNormal = default;
+        float nearest = float.PositiveInfinity;
+        foreach (int t in scratch)
+        {
+            if (_surfaces.SurfaceOf(t) != chosen.Surface)
+            {
+                continue;
+            }
+
+            Triangle triangle = _level.Triangles[t];
+            Vector3 normal = triangle.Normal;
+            if (!limb.Filter.Accepts(normal))
+            {
+                continue;
+            }
+
+            (float area, Vector3 centroid) = BoxClipper.ClipArea(workspace, triangle);
+            if (area <= 0f || !FacesTrunk(normal, centroid, pose.Position))
+            {
+                continue;
+            }
+
+            // Nearest to the centre along the surface; the triangle's own clipped centre is where the contact goes.
+            Vector3 closest = triangle.ClosestPoint(centre);
+            float distance = Vector3.DistanceSquared(closest, centre);
+            if (distance < nearest)
+            {
+                nearest = distance;
+                position = workspace.Contains(closest) ? closest : centroid;
+                onNormal = normal;
+            }
+        }
+
         ContactSurface surfaceInfo = _surfaces.Surfaces[chosen.Surface];
         float mu = _level.Materials[surfaceInfo.MaterialIndex].Friction ?? _character.Friction;
-        contact = new Contact(limbIndex, chosen.Moment / chosen.Area, Vector3.Normalize(chosen.Normal), mu, chosen.Surface);
+        contact = new Contact(limbIndex, position, onNormal, mu, chosen.Surface);
         return true;
     }
+
+    /// <summary>
+    /// True when a face of unit normal <paramref name="normal"/> at <paramref name="point"/> is turned toward the
+    /// trunk centre <paramref name="trunk"/>: a limb can only press on the side of a surface it stands on.
+    /// </summary>
+    public static bool FacesTrunk(Vector3 normal, Vector3 point, Vector3 trunk) => Vector3.Dot(normal, trunk - point) > 0f;
 
     private struct SurfacePart
     {

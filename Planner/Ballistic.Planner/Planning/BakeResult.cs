@@ -1,4 +1,5 @@
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Planning;
@@ -16,4 +17,10 @@ public sealed record BakeResult(Roadmap Roadmap, PlannerStatus Status, string Re
 {
     /// <summary>How many steering calls failed, by reason (the original planner's failure counters).</summary>
     public IReadOnlyDictionary<SteeringFailure, long> SteeringRejections { get; init; } = new Dictionary<SteeringFailure, long>();
+
+    /// <summary>Where the requested start put the start node (or why it could not), when a start was given.</summary>
+    public EndpointPlacement? StartPlacement { get; init; }
+
+    /// <summary>Where the requested goal put the goal node (or why it could not), when a goal was given.</summary>
+    public EndpointPlacement? GoalPlacement { get; init; }
 }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Planning;
 
@@ -23,17 +24,17 @@ public sealed record BakeSettings
     /// <summary>Node samples drawn per round; termination is checked between rounds.</summary>
     public int BatchSize { get; init; } = 16;
 
-    /// <summary>Optional start point (world metres): projected to a node before sampling, as node 0.</summary>
+    /// <summary>Optional start point (world metres): placed as node 0 before sampling (<see cref="TrunkSampler.Place"/>).</summary>
     public Vector3? Start { get; init; }
 
-    /// <summary>Optional goal point (world metres): projected to a node before sampling, as node 1.</summary>
+    /// <summary>Optional goal point (world metres): placed as the node after the start before sampling.</summary>
     public Vector3? Goal { get; init; }
 
     /// <summary>Stop as soon as the start reaches the goal (needs both).</summary>
     public bool StopWhenConnected { get; init; }
 
-    /// <summary>Radius (metres) around start and goal searched for a valid root pose: the pose stands on a surface point within this distance of the requested point.</summary>
-    public float ProjectionRadius { get; init; } = 1.5f;
+    /// <summary>How close the start and goal nodes' contacts must come to the requested points (<see cref="TrunkSampler.Place"/>).</summary>
+    public EndpointTolerance Tolerance { get; init; } = new();
 
     /// <summary>Checks the values.</summary>
     /// <exception cref="ArgumentException">A value is out of range, or no condition would ever stop the bake.</exception>
@@ -59,10 +60,7 @@ public sealed record BakeSettings
             throw new ArgumentException("MaxNeighbours and BatchSize must be at least 1.");
         }
 
-        if (!(ProjectionRadius > 0f))
-        {
-            throw new ArgumentException($"ProjectionRadius must be positive, not {ProjectionRadius}.");
-        }
+        Tolerance.Validate();
 
         if (StopWhenConnected && (Start is null || Goal is null))
         {

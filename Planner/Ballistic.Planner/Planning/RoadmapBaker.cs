@@ -47,12 +47,14 @@ public sealed class RoadmapBaker
 
         int? startNode = null;
         int? goalNode = null;
+        EndpointPlacement? startPlacement = null;
+        EndpointPlacement? goalPlacement = null;
         if (settings.Start is Vector3 start)
         {
-            PoseEvaluation? pose = _scene.Sampler.SampleNear(SeedMixer.Create(settings.Seed, -1), start, settings.ProjectionRadius);
-            if (pose is null)
+            startPlacement = _scene.Sampler.Place(start, settings.Tolerance);
+            if (startPlacement.Pose is not { } pose)
             {
-                return new BakeResult(roadmap, PlannerStatus.InvalidStart, NoPoseNear("start", start, settings.ProjectionRadius), clock.Elapsed, null, null, 0, 0);
+                return new BakeResult(roadmap, PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, clock.Elapsed, null, null, 0, 0) { StartPlacement = startPlacement };
             }
 
             startNode = Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
@@ -60,11 +62,12 @@ public sealed class RoadmapBaker
 
         if (settings.Goal is Vector3 goal)
         {
-            PoseEvaluation? pose = _scene.Sampler.SampleNear(SeedMixer.Create(settings.Seed, -2), goal, settings.ProjectionRadius);
-            if (pose is null)
+            goalPlacement = _scene.Sampler.Place(goal, settings.Tolerance);
+            if (goalPlacement.Pose is not { } pose)
             {
                 return new BakeResult(new Roadmap(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, settings.Seed),
-                    PlannerStatus.InvalidGoal, NoPoseNear("goal", goal, settings.ProjectionRadius), clock.Elapsed, null, null, counters.Steering, 0);
+                    PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, clock.Elapsed, null, null, counters.Steering, 0)
+                { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
 
             goalNode = Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
@@ -86,7 +89,8 @@ public sealed class RoadmapBaker
                     reason += "; the start does not reach the goal yet";
                 }
 
-                return new BakeResult(roadmap, status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample) { SteeringRejections = counters.Rejections };
+                return new BakeResult(roadmap, status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
+                { SteeringRejections = counters.Rejections, StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
 
             if (emptyRounds >= MaxEmptyRounds)
@@ -95,7 +99,7 @@ public sealed class RoadmapBaker
                 return new BakeResult(roadmap, PlannerStatus.NoPath,
                     $"no valid root pose found in the last {attempts} attempts: {_scene.Character.Name} can stand nowhere else on this level",
                     clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
-                { SteeringRejections = counters.Rejections };
+                { SteeringRejections = counters.Rejections, StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
 
             int batch = settings.BatchSize;
@@ -282,9 +286,6 @@ public sealed class RoadmapBaker
 
     private static bool Connected(Roadmap roadmap, int? start, int? goal) =>
         start is int s && goal is int g && roadmap.Reaches(s, g);
-
-    private static string NoPoseNear(string what, Vector3 point, float radius) =>
-        $"no valid root pose within {radius:0.##} m of the {what} ({point.X:0.###}, {point.Y:0.###}, {point.Z:0.###})";
 
     private sealed class Counters
     {

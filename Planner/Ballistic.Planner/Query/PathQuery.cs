@@ -40,68 +40,103 @@ public sealed class PathQuery
     }
 
     /// <summary>Plans from the point <paramref name="from"/> to the point <paramref name="to"/> (world metres).</summary>
-    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings = null)
+    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings = null) => Plan(from, to, settings, rejected: null);
+
+    /// <summary>
+    /// Plans from the point <paramref name="from"/> to the point <paramref name="to"/> (world metres), never using a
+    /// jump between the node pairs in <paramref name="rejected"/> (node ids as in <see cref="Jump"/>: roadmap ids, or
+    /// the start's and goal's ids). Start and goal are placed by <see cref="TrunkSampler.Place"/>, deterministically:
+    /// when the roadmap already holds that very pose (a bake given the same points), that node is used as is.
+    /// </summary>
+    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected)
     {
         settings ??= new QuerySettings();
         var clock = Stopwatch.StartNew();
-        PoseEvaluation? startPose = _scene.Sampler.SampleNear(SeedMixer.Create(settings.Seed, -11), from, settings.ProjectionRadius);
-        if (startPose is null)
+        EndpointPlacement startPlacement = _scene.Sampler.Place(from, settings.Tolerance);
+        if (startPlacement.Pose is not { } startPose)
         {
-            return Fail(PlannerStatus.InvalidStart, $"no valid root pose within {settings.ProjectionRadius:0.##} m of the start {Format(from)}", null, null, clock);
+            return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
         }
 
-        PoseEvaluation? goalPose = _scene.Sampler.SampleNear(SeedMixer.Create(settings.Seed, -12), to, settings.ProjectionRadius);
+        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance);
         int n = _roadmap.Nodes.Count;
-        var start = new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
-        if (goalPose is null)
+        RoadmapNode start = Existing(startPose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
+        if (goalPlacement.Pose is not { } goalPose)
         {
-            return Fail(PlannerStatus.InvalidGoal, $"no valid root pose within {settings.ProjectionRadius:0.##} m of the goal {Format(to)}", start, null, clock);
+            return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, start, null, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
         }
 
-        var goal = new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts);
+        RoadmapNode goal = Existing(goalPose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
+        if (goal.Id == start.Id)
+        {
+            return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+        }
 
-        // Extra edges of the query: start → roadmap, roadmap → goal, start → goal.
+        // Extra edges of the query: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
         var extra = new List<(int From, int To, BallisticArc Arc)>();
+        bool startIsNew = start.Id >= n;
+        bool goalIsNew = goal.Id >= n;
         SteeringResult direct = _scene.Steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone);
-        if (direct.Succeeded)
+        if (direct.Succeeded && (startIsNew || goalIsNew))
         {
             extra.Add((start.Id, goal.Id, direct.Arc));
         }
 
-        int connected = 0;
-        foreach (int j in Nearest(start.Pose.Position, settings.MaxNeighbours))
+        if (startIsNew)
         {
-            RoadmapNode node = _roadmap.Nodes[j];
-            SteeringResult r = _scene.Steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
-            if (r.Succeeded)
+            int connected = 0;
+            foreach (int j in Nearest(start.Pose.Position, settings.MaxNeighbours))
             {
-                extra.Add((start.Id, j, r.Arc));
-                if (++connected >= settings.Connections)
+                RoadmapNode node = _roadmap.Nodes[j];
+                SteeringResult r = _scene.Steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
+                if (r.Succeeded && rejected?.Contains((start.Id, j)) != true)
                 {
-                    break;
+                    extra.Add((start.Id, j, r.Arc));
+                    if (++connected >= settings.Connections)
+                    {
+                        break;
+                    }
                 }
             }
         }
 
-        connected = 0;
-        foreach (int j in Nearest(goal.Pose.Position, settings.MaxNeighbours))
+        if (goalIsNew)
         {
-            RoadmapNode node = _roadmap.Nodes[j];
-            SteeringResult r = _scene.Steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
-            if (r.Succeeded)
+            int connected = 0;
+            foreach (int j in Nearest(goal.Pose.Position, settings.MaxNeighbours))
             {
-                extra.Add((j, goal.Id, r.Arc));
-                if (++connected >= settings.Connections)
+                RoadmapNode node = _roadmap.Nodes[j];
+                SteeringResult r = _scene.Steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
+                if (r.Succeeded && rejected?.Contains((j, goal.Id)) != true)
                 {
-                    break;
+                    extra.Add((j, goal.Id, r.Arc));
+                    if (++connected >= settings.Connections)
+                    {
+                        break;
+                    }
                 }
             }
         }
 
-        List<Jump>? path = AStar(start, goal, extra);
-        return path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal", start, goal, clock)
+        List<Jump>? path = AStar(start, goal, extra, rejected);
+        PlanResult result = path is null
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {rejected.Count} jumps set aside" : ""), start, goal, clock)
             : new PlanResult(PlannerStatus.Exact, $"{path.Count} jumps found", start, goal, path, clock.Elapsed);
+        return result with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+    }
+
+    /// <summary>The roadmap node with exactly this pose (the bake placed the same point), or <c>null</c>.</summary>
+    private RoadmapNode? Existing(PoseEvaluation pose)
+    {
+        foreach (RoadmapNode node in _roadmap.Nodes)
+        {
+            if (node.Pose == pose.Pose)
+            {
+                return node;
+            }
+        }
+
+        return null;
     }
 
     /// <summary>
@@ -109,7 +144,7 @@ public sealed class PathQuery
     /// goal divided by the fastest horizontal speed of any edge, a lower bound on the remaining flight time (every
     /// jump covers its horizontal distance at most that fast), so the path found is of least total flight time.
     /// </summary>
-    private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, List<(int From, int To, BallisticArc Arc)> extra)
+    private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, List<(int From, int To, BallisticArc Arc)> extra, IReadOnlySet<(int From, int To)>? rejected)
     {
         SearchGraph graph = Graph();
         int roadmapCount = graph.Positions.Length;
@@ -151,7 +186,7 @@ public sealed class PathQuery
                 {
                     int next = graph.Targets[i];
                     float candidate = here + graph.Times[i];
-                    if (!closed[next] && candidate < cost[next])
+                    if (!closed[next] && candidate < cost[next] && rejected?.Contains((node, next)) != true)
                     {
                         cost[next] = candidate;
                         cameFrom[next] = (node, graph.EdgeIndex[i]);
@@ -166,7 +201,7 @@ public sealed class PathQuery
                 {
                     int next = extra[e].To;
                     float candidate = here + extra[e].Arc.FlightTime;
-                    if (!closed[next] && candidate < cost[next])
+                    if (!closed[next] && candidate < cost[next] && rejected?.Contains((node, next)) != true)
                     {
                         cost[next] = candidate;
                         cameFrom[next] = (node, ~e);

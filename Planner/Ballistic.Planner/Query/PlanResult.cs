@@ -1,17 +1,24 @@
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Query;
 
 /// <summary>The outcome of a path query.</summary>
 /// <param name="Status"><see cref="PlannerStatus.Exact"/> when a path was found, otherwise why not.</param>
 /// <param name="Reason">One sentence explaining the status.</param>
-/// <param name="Start">The start node placed near the requested start point, when one could be placed.</param>
-/// <param name="Goal">The goal node placed near the requested goal point, when one could be placed.</param>
+/// <param name="Start">The start node placed at the requested start point (a roadmap node when the roadmap holds that very pose), when one could be placed.</param>
+/// <param name="Goal">The goal node placed at the requested goal point, when one could be placed.</param>
 /// <param name="Jumps">The jumps from start to goal, in order; empty unless the status is exact.</param>
 /// <param name="Elapsed">Wall-clock duration of the query.</param>
 public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode? Start, RoadmapNode? Goal, IReadOnlyList<Jump> Jumps, TimeSpan Elapsed)
 {
+    /// <summary>Where the requested start put the start stance (distances included), when the query got that far.</summary>
+    public EndpointPlacement? StartPlacement { get; init; }
+
+    /// <summary>Where the requested goal put the goal stance (distances included), when the query got that far.</summary>
+    public EndpointPlacement? GoalPlacement { get; init; }
+
     /// <summary>Total flight time of the path, seconds.</summary>
     public float TotalFlightTime => Jumps.Sum(j => j.Arc.FlightTime);
 }

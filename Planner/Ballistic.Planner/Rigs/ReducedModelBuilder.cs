@@ -100,6 +100,45 @@ public static class ReducedModelBuilder
             limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter));
         }
 
-        return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction);
+        return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction)
+        {
+            StanceLift = StanceLift(model, requiredContacts, trunkHalf),
+        };
+    }
+
+    /// <summary>Lowest share of the rest-pose root height the root keeps above its contacts in stance.</summary>
+    public const float StanceLowest = 0.7f;
+
+    /// <summary>
+    /// The range of heights (metres) of the trunk centre above the supporting surface in stance: the root joint
+    /// between <see cref="StanceLowest"/> and 100 % of its standing height above the contacts, the trunk centre
+    /// keeping its offset from the root joint. The standing height is the higher of the rest pose's (every angle at
+    /// zero: legs as modelled, near straight for a humanoid) and the contact pose's (for rigs modelled with splayed
+    /// legs, such as an insect); the contacts are the <paramref name="requiredContacts"/> lowest limbs' contact points.
+    /// </summary>
+    public static HeightRange StanceLift(CharacterModel model, int requiredContacts, Vector3 trunkHalfExtents)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        Rig rig = model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        float rootHeight = 0f;
+        float centreAboveRoot = 0f;
+        foreach (float[] pose in new[] { rig.Neutral(), model.ContactPose })
+        {
+            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
+            float contacts = model.Limbs
+                .Select(l => l.EffectorPosition(positions, rotations).Y)
+                .Order()
+                .Take(Math.Clamp(requiredContacts, 1, model.Limbs.Count))
+                .Average();
+            rootHeight = MathF.Max(rootHeight, positions[0].Y - contacts); // root joint above the contacts
+            centreAboveRoot = -positions[0].Y; // the trunk centre is the origin
+        }
+
+        float floor = trunkHalfExtents.Y + 0.02f;
+        float max = MathF.Max(floor, rootHeight + centreAboveRoot);
+        float min = Math.Clamp((StanceLowest * rootHeight) + centreAboveRoot, floor, max);
+        return new HeightRange(min, max);
     }
 }

@@ -10,9 +10,10 @@ namespace Ballistic.Planner.Sampling;
 
 /// <summary>
 /// VALIDTRUNKRANDOMSAMPLE: draws root poses near the level's contact surfaces: a triangle chosen by area, a uniform
-/// point on it, the trunk's up axis along the triangle normal with a random yaw, lifted to a random height the
-/// limbs can reach, pushed out of collision, and kept when the trunk is free and enough limbs touch. Thread-safe;
-/// all randomness comes from the <see cref="Random"/> passed in.
+/// point on it, the trunk's up axis along the triangle normal with a random yaw, lifted to a random height of the
+/// character's stance range (<see cref="ReducedCharacter.StanceLift"/>, no squats), pushed out of collision, and kept
+/// when the trunk is free and enough limbs touch. Also places requested start and goal points
+/// (<see cref="Place"/>). Thread-safe; all randomness comes from the <see cref="Random"/> passed in.
 /// </summary>
 public sealed class TrunkSampler
 {
@@ -24,6 +25,7 @@ public sealed class TrunkSampler
     private readonly int[] _candidates;
     private readonly double[] _cumulativeArea;
     private readonly bool[] _isCandidate;
+    private readonly HeightRange _lift;
 
     /// <summary>Creates a sampler.</summary>
     public TrunkSampler(Level level, TriangleBvh bvh, SurfaceSet surfaces, ReducedCharacter character, ContactEstimator estimator, SamplerSettings? settings = null)
@@ -58,10 +60,22 @@ public sealed class TrunkSampler
 
         _candidates = [.. candidates];
         _cumulativeArea = [.. cumulative];
-        StanceLift = MathF.Max(
-            character.TrunkHalfExtents.Y + 0.02f,
-            character.Limbs.Select(l => -l.WorkspaceCenter.Y).OrderDescending().Take(character.RequiredContacts).Average());
+
+        // Above the depth that as many workspaces as must touch reach, no pose is valid: the range slides down to it,
+        // keeping its width, never into the trunk's own half height.
+        HeightRange stance = character.StanceLift;
+        float reachable = character.Limbs
+            .Select(l => -l.WorkspaceAt(new RootPose(Vector3.Zero, Quaternion.Identity)).Bounds.Min.Y)
+            .OrderDescending()
+            .ElementAt(character.RequiredContacts - 1);
+        float floor = character.TrunkHalfExtents.Y + 0.02f;
+        float high = MathF.Max(floor, MathF.Min(stance.Max, reachable));
+        float low = MathF.Max(floor, MathF.Min(stance.Min, high - (stance.Max - stance.Min)));
+        _lift = new HeightRange(MathF.Min(low, high), high);
     }
+
+    /// <summary>Heights (metres) of the trunk centre above the surface point at which poses are tried.</summary>
+    public HeightRange Lift => _lift;
 
     /// <summary>Attempts and repair parameters.</summary>
     public SamplerSettings Settings { get; }
@@ -91,124 +105,148 @@ public sealed class TrunkSampler
         return null;
     }
 
+    /// <summary>Rings of the placement search inside the tolerance are this far apart, metres.</summary>
+    private const float PlacementStep = 0.1f;
+
+    /// <summary>Beyond the tolerance the search goes on this far (metres), coarser, only to say how far the nearest valid pose is.</summary>
+    private const float PlacementBeyond = 1.5f;
+
+    private static readonly float[] PlacementLifts = [0.5f, 0.25f, 0.75f, 0f, 1f];
+
     /// <summary>
-    /// Draws valid poses whose surface point lies within <paramref name="radius"/> metres of <paramref name="point"/>
-    /// and returns the one whose trunk centre is closest to the point, or <c>null</c> when none is found.
+    /// Places a start or goal: searches valid poses standing on surfaces by increasing horizontal distance from
+    /// <paramref name="point"/> (rings 10 cm apart, each surface point met by a vertical segment reaching
+    /// <see cref="EndpointTolerance.UpDown"/> + 0.3 m above and below the point, eight yaws, five lifts in the stance
+    /// range) and keeps, on the first ring that has any, the pose whose contacts' centre is nearest the point within
+    /// the tolerance. Never a pose on another floor or step: the contact centre must lie within the tolerance.
+    /// Deterministic: the same point and tolerance give the same pose. When none is found, the search goes on
+    /// beyond the tolerance only to report how far the nearest valid pose stands.
     /// </summary>
-    public PoseEvaluation? SampleNear(Random random, Vector3 point, float radius, int wanted = 2)
+    /// <exception cref="ArgumentException">The tolerance is not positive, or the point is not finite.</exception>
+    public EndpointPlacement Place(Vector3 point, EndpointTolerance tolerance)
     {
-        ArgumentNullException.ThrowIfNull(random);
+        tolerance.Validate();
+        if (!float.IsFinite(point.X) || !float.IsFinite(point.Y) || !float.IsFinite(point.Z))
+        {
+            throw new ArgumentException($"The point ({point.X}, {point.Y}, {point.Z}) is not finite.", nameof(point));
+        }
 
-        // Fast path: surfaces below points of the disc around the query point, found by vertical rays.
+        float window = tolerance.UpDown + 0.3f;
+        float nearest = float.PositiveInfinity;
         PoseEvaluation? best = null;
-        float bestDistance = float.PositiveInfinity;
-        int found = 0;
-        for (int ray = 0; ray < 32 && found < wanted; ray++)
+        Vector3 bestCentre = default;
+        float bestScore = float.PositiveInfinity;
+        var hits = new List<RayHit>();
+        float radius = 0f;
+        for (int ring = 0; radius <= tolerance.Across + PlacementBeyond; ring++)
         {
-            float angle = (float)(random.NextDouble() * 2.0 * Math.PI);
-            float distance = radius * MathF.Sqrt((float)random.NextDouble());
-            Vector3 origin = point + new Vector3(distance * MathF.Cos(angle), radius, distance * MathF.Sin(angle));
-            if (!_bvh.Raycast(origin, new Vector3(0f, -2f * radius, 0f), 1f, out RayHit hit) ||
-                !_isCandidate[hit.Triangle] || Vector3.Distance(hit.Point, point) > radius)
+            bool beyond = radius > tolerance.Across + PlacementStep;
+            float spacing = beyond ? 2.5f * PlacementStep : PlacementStep;
+            int count = ring == 0 ? 1 : Math.Max(6, (int)MathF.Ceiling(2f * MathF.PI * radius / spacing));
+            for (int i = 0; i < count; i++)
             {
-                continue;
-            }
-
-            PoseEvaluation? pose = TryAt(random, hit.Triangle, hit.Point, StanceLift * (0.9f + (0.2f * (float)random.NextDouble())));
-            if (pose is not null)
-            {
-                found++;
-                float d = Vector3.Distance(pose.Pose.Position, point);
-                if (d < bestDistance)
+                float angle = (2f * MathF.PI * i / count) + (0.37f * ring);
+                Vector3 column = point + new Vector3(radius * MathF.Cos(angle), 0f, radius * MathF.Sin(angle));
+                VerticalHits(column, point.Y + window, point.Y - window, hits);
+                foreach (RayHit hit in hits)
                 {
-                    best = pose;
-                    bestDistance = d;
-                }
-            }
-        }
+                    if (!_isCandidate[hit.Triangle] || !(hit.Normal.Y > 0.05f))
+                    {
+                        continue; // nothing to stand on: a wall, a ceiling or a face no limb may touch
+                    }
 
-        return best ?? SampleNearAnySurface(random, point, radius, wanted);
-    }
+                    for (int y = 0; y < 8; y++)
+                    {
+                        foreach (float lift in beyond ? PlacementLifts.AsSpan(0, 1) : PlacementLifts)
+                        {
+                            PoseEvaluation? pose = TryPose(hit.Triangle, hit.Point, y * MathF.PI / 4f, _lift.Lerp(lift));
+                            if (pose is null)
+                            {
+                                continue;
+                            }
 
-    /// <summary>The general path of <see cref="SampleNear"/>: every candidate triangle near the point, chosen by area.</summary>
-    private PoseEvaluation? SampleNearAnySurface(Random random, Vector3 point, float radius, int wanted)
-    {
-        var nearby = new List<int>();
-        _bvh.TrianglesNear(new Aabb(point - new Vector3(radius), point + new Vector3(radius)), nearby);
-        nearby.Sort();
-        var candidates = new List<int>();
-        var cumulative = new List<double>();
-        double total = 0;
-        foreach (int t in nearby)
-        {
-            if (_isCandidate[t])
-            {
-                // Weight by the part of the triangle near the point, approximated by its area.
-                total += _level.Triangles[t].Area;
-                candidates.Add(t);
-                cumulative.Add(total);
-            }
-        }
-
-        if (candidates.Count == 0)
-        {
-            return null;
-        }
-
-        int[] candidateArray = [.. candidates];
-        double[] cumulativeArray = [.. cumulative];
-        PoseEvaluation? best = null;
-        float bestDistance = float.PositiveInfinity;
-        int found = 0;
-        for (int attempt = 0; attempt < Settings.MaxAttempts && found < wanted; attempt++)
-        {
-            int triangle = PickByArea(random, candidateArray, cumulativeArray);
-            Triangle tri = _level.Triangles[triangle];
-
-            // A point of the triangle within the radius: sample, or fall back to the closest point.
-            Vector3 surfacePoint = SamplePoint(random, tri);
-            if (Vector3.Distance(surfacePoint, point) > radius)
-            {
-                surfacePoint = tri.ClosestPoint(point);
-                if (Vector3.Distance(surfacePoint, point) > radius)
-                {
-                    continue;
+                            Vector3 centre = ContactCentre(pose);
+                            float across = new Vector2(centre.X - point.X, centre.Z - point.Z).Length();
+                            float upDown = MathF.Abs(centre.Y - point.Y);
+                            if (across <= tolerance.Across && upDown <= tolerance.UpDown)
+                            {
+                                float score = MathF.Sqrt(((across / tolerance.Across) * (across / tolerance.Across)) + ((upDown / tolerance.UpDown) * (upDown / tolerance.UpDown)));
+                                if (score < bestScore)
+                                {
+                                    (best, bestCentre, bestScore) = (pose, centre, score);
+                                }
+                            }
+                            else
+                            {
+                                nearest = MathF.Min(nearest, Vector3.Distance(centre, point));
+                            }
+                        }
+                    }
                 }
             }
 
-            PoseEvaluation? pose = TryAt(random, triangle, surfacePoint);
-            if (pose is null)
+            if (best is not null)
             {
-                continue;
+                return new EndpointPlacement(point, best, bestCentre, new Vector2(bestCentre.X - point.X, bestCentre.Z - point.Z).Length(), MathF.Abs(bestCentre.Y - point.Y), null);
             }
 
-            found++;
-            float distance = Vector3.Distance(pose.Pose.Position, point);
-            if (distance < bestDistance)
-            {
-                best = pose;
-                bestDistance = distance;
-            }
+            radius += beyond ? 2.5f * PlacementStep : PlacementStep;
         }
 
-        return best;
+        return new EndpointPlacement(point, null, point, float.PositiveInfinity, float.PositiveInfinity, float.IsFinite(nearest) ? nearest : null);
+    }
+
+    /// <summary>The centre of a pose's contacts, world metres.</summary>
+    public static Vector3 ContactCentre(PoseEvaluation pose)
+    {
+        ArgumentNullException.ThrowIfNull(pose);
+        Vector3 sum = Vector3.Zero;
+        foreach (Contact c in pose.Contacts)
+        {
+            sum += c.Position;
+        }
+
+        return pose.Contacts.Count > 0 ? sum / pose.Contacts.Count : pose.Pose.Position;
+    }
+
+    /// <summary>Every triangle met by the vertical segment at (x, z) of <paramref name="column"/> from <paramref name="top"/> down to <paramref name="bottom"/>, top first.</summary>
+    private void VerticalHits(Vector3 column, float top, float bottom, List<RayHit> hits)
+    {
+        hits.Clear();
+        var origin = new Vector3(column.X, top, column.Z);
+        float remaining = top - bottom;
+        for (int guard = 0; guard < 16 && remaining > 0f; guard++)
+        {
+            if (!_bvh.Raycast(origin, new Vector3(0f, -remaining, 0f), 1f, out RayHit hit))
+            {
+                break;
+            }
+
+            hits.Add(hit);
+            float travelled = (remaining * hit.Distance) + 1e-4f;
+            origin.Y -= travelled;
+            remaining -= travelled;
+        }
+    }
+
+    /// <summary>One attempt at a surface point of a triangle: orient with a random yaw, lift to a random height of the stance range, repair, evaluate.</summary>
+    private PoseEvaluation? TryAt(Random random, int triangle, Vector3 surfacePoint)
+    {
+        float yaw = (float)(random.NextDouble() * 2.0 * Math.PI);
+        float lift = _lift.Lerp((float)random.NextDouble());
+        return TryPose(triangle, surfacePoint, yaw, lift);
     }
 
     /// <summary>
-    /// The height above a surface at which the character stands naturally: the mean depth of the workspace centres of
-    /// the lowest limbs it needs in contact (never inside its own trunk).
+    /// A pose standing on a surface point of a triangle: the trunk's up along the triangle normal turned by
+    /// <paramref name="yaw"/> radians, the trunk centre <paramref name="lift"/> metres above the point, pushed out of
+    /// collision; <c>null</c> unless it is valid.
     /// </summary>
-    public float StanceLift { get; }
-
-    /// <summary>One attempt at a surface point of a triangle: orient, lift (randomly when <paramref name="lift"/> is null), repair, evaluate.</summary>
-    private PoseEvaluation? TryAt(Random random, int triangle, Vector3 surfacePoint, float? lift = null)
+    private PoseEvaluation? TryPose(int triangle, Vector3 surfacePoint, float yaw, float lift)
     {
         Vector3 normal = _level.Triangles[triangle].Normal;
-        float yaw = (float)(random.NextDouble() * 2.0 * Math.PI);
         Quaternion rotation = AlignUp(normal) * Quaternion.CreateFromAxisAngle(Vector3.UnitY, yaw);
-        float low = _character.TrunkHalfExtents.Y + 0.02f;
-        float high = MathF.Max(low, _character.Reach);
-        Vector3 position = surfacePoint + (normal * (lift ?? (low + ((float)random.NextDouble() * (high - low)))));
+        Vector3 position = surfacePoint + (normal * lift);
 
         var hits = new List<int>();
         for (int step = 0; ; step++)

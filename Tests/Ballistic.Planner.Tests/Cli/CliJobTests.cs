@@ -159,7 +159,7 @@ public sealed class CliJobTests
             (["plan", "--level", level, "--character", "dragon", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "Unknown character 'dragon'"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "0;0", "--to", "1,0,0", "--report", report], "--from takes a point"),
             (["bake", "--level", level, "--character", "skeleton", "--threads", "0", "--out", Path.Combine(_folder, "x")], "Threads must be at least 1"),
-            (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid root pose within 1.5 m of the start"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid pose stands within 0.5 m across and 0.25 m up/down of the start"),
         };
         foreach ((string[] args, string expected) in cases)
         {

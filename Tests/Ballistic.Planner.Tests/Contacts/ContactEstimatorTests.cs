@@ -37,6 +37,65 @@ public sealed class ContactEstimatorTests
     }
 
     [Test]
+    public void AWorkspacePiercingAThinSlabTakesItsTopNeverItsUnderside()
+    {
+        // 3 cm slabs at several heights under a frog (no normal filter: it accepts any face): the workspaces reach
+        // through the slab, so both faces lie inside them; only the top faces the trunk.
+        ReducedCharacter frog = CharacterPresets.Frog();
+        foreach (float thickness in new[] { 0.02f, 0.05f, 0.1f })
+        {
+            Level level = new LevelBuilder("slab").AddBox(new Vector3(-1f, -thickness, -1f), new Vector3(1f, 0f, 1f)).Build();
+            ContactEstimator estimator = Estimator(level, frog);
+            for (float lift = 0.07f; lift <= 0.13f; lift += 0.02f)
+            {
+                var pose = new RootPose(new Vector3(0f, lift, 0f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, lift * 10f));
+                PoseEvaluation evaluation = estimator.Evaluate(pose);
+                Assert.That(evaluation.Contacts, Is.Not.Empty, $"{thickness} m slab, lift {lift}");
+                foreach (Contact c in evaluation.Contacts)
+                {
+                    Assert.That(c.Normal.Y, Is.GreaterThan(0.99f), $"{frog.Limbs[c.Limb].Name} takes a face turned away from the trunk ({thickness} m slab, lift {lift})");
+                    Assert.That(c.Position.Y, Is.EqualTo(0f).Within(1e-4f));
+                }
+
+                if (evaluation.IsValid)
+                {
+                    Assert.That(evaluation.Cone.Axis.Y, Is.GreaterThan(0.99f), "the cone is not tilted by an underside");
+                }
+            }
+        }
+    }
+
+    [Test]
+    public void EstimatedContactsOnCurvedGroundLieOnTheMeshWithItsNormal()
+    {
+        (Level level, _) = ForeignLevels.Get("curved");
+        ReducedCharacter skeleton = CharacterPresets.Skeleton();
+        ContactEstimator estimator = Estimator(level, skeleton);
+        var bvh = new TriangleBvh(level.Triangles);
+        var random = new Random(5);
+        int checkedContacts = 0;
+        for (int i = 0; i < 300; i++)
+        {
+            float x = -6f + (12f * (float)random.NextDouble());
+            float z = -6f + (12f * (float)random.NextDouble());
+            var pose = new RootPose(new Vector3(x, ForeignLevels.CurvedHeight(x, z) + 1.1f, z), Quaternion.CreateFromAxisAngle(Vector3.UnitY, (float)random.NextDouble() * 6f));
+            PoseEvaluation evaluation = estimator.Evaluate(pose);
+            foreach (Contact c in evaluation.Contacts)
+            {
+                var near = new List<int>();
+                bvh.TrianglesNear(new Aabb(c.Position - new Vector3(0.05f), c.Position + new Vector3(0.05f)), near);
+                int nearest = near.MinBy(t => Vector3.Distance(level.Triangles[t].ClosestPoint(c.Position), c.Position));
+                Assert.That(Vector3.Distance(level.Triangles[nearest].ClosestPoint(c.Position), c.Position), Is.LessThanOrEqualTo(1e-3f), "contact on the mesh");
+                Assert.That(near.Any(t => Vector3.Distance(level.Triangles[t].ClosestPoint(c.Position), c.Position) < 1e-3f && Vector3.Dot(level.Triangles[t].Normal, c.Normal) > 0.9999f), Is.True, "with the normal of a triangle it lies on");
+                Assert.That(skeleton.Limbs[c.Limb].WorkspaceAt(pose).Contains(c.Position), Is.True, "inside its workspace");
+                checkedContacts++;
+            }
+        }
+
+        Assert.That(checkedContacts, Is.GreaterThan(200));
+    }
+
+    [Test]
     public void TooHighOrInsideTheFloorIsInvalid()
     {
         Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, 0f).Build();

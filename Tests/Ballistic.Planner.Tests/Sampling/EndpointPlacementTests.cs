@@ -1,0 +1,124 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Sampling;
+
+/// <summary>Plans start and end where asked: on the bar, on the step, on open ground; never on the floor beside it.</summary>
+public sealed class EndpointPlacementTests
+{
+    private static readonly Lazy<PlanningScene> Slabs = new(() => PlanningScene.Create(ForeignLevels.Get("thin-slabs").Level, CharacterPresets.Skeleton()));
+
+    private static readonly Lazy<PlanningScene> Stairs = new(() => PlanningScene.Create(ForeignLevels.Get("stairs").Level, CharacterPresets.Skeleton()));
+
+    [TestCase(-2.5f, 0.8f, 4f, TestName = "A goal on top of a 20 cm bar stands on the bar")]
+    [TestCase(0.5f, 0.95f, 0f, TestName = "A goal on a 5 cm slab stands on the slab")]
+    [TestCase(-6f, 0f, 0f, TestName = "A goal on open ground stands on it")]
+    public void TheStanceStandsOnTheRequestedSurface(float x, float y, float z)
+    {
+        var point = new Vector3(x, y, z);
+        EndpointPlacement placed = Slabs.Value.Sampler.Place(point, new EndpointTolerance());
+        Assert.That(placed.Placed, Is.True, placed.Failure("goal", new EndpointTolerance()));
+        AssertWithin(placed, point, 0.5f, 0.25f);
+        foreach (Contact c in placed.Pose!.Contacts)
+        {
+            Assert.That(c.Position.Y, Is.EqualTo(y).Within(0.02f), "every contact on the requested surface, not the floor beside it");
+            Assert.That(c.Normal.Y, Is.GreaterThan(0.99f), "on the top face");
+        }
+    }
+
+    [TestCase(3.35f, 0.68f, 0f)]
+    [TestCase(2.75f, 0.51f, 0.5f)]
+    [TestCase(6.5f, 1.36f, 0f)]
+    public void AGoalOnAStepEndsOnThatStep(float x, float y, float z)
+    {
+        var point = new Vector3(x, y, z);
+        EndpointPlacement placed = Stairs.Value.Sampler.Place(point, new EndpointTolerance());
+        Assert.That(placed.Placed, Is.True, placed.Failure("goal", new EndpointTolerance()));
+        AssertWithin(placed, point, 0.5f, 0.25f);
+        Assert.That(placed.Pose!.Contacts.Min(c => c.Position.Y), Is.GreaterThan(y - 0.25f), "no foot on a lower step beyond the tolerance");
+    }
+
+    [Test]
+    public void ATighterToleranceIsHonoured()
+    {
+        var point = new Vector3(-6f, 0f, 0f);
+        var tight = new EndpointTolerance(0.1f, 0.05f);
+        EndpointPlacement placed = Slabs.Value.Sampler.Place(point, tight);
+        Assert.That(placed.Placed, Is.True, placed.Failure("start", tight));
+        AssertWithin(placed, point, 0.1f, 0.05f);
+    }
+
+    [Test]
+    public void APointWithNoStanceWithinToleranceSaysHowFarTheNearestIs()
+    {
+        // 0.9 m above the floor and away from every slab: the floor is 0.9 m down, beyond 0.25 m.
+        var point = new Vector3(-6f, 0.9f, -4f);
+        EndpointPlacement placed = Slabs.Value.Sampler.Place(point, new EndpointTolerance());
+        Assert.That(placed.Placed, Is.False);
+        Assert.That(placed.NearestValid, Is.Null.Or.GreaterThan(0.25f));
+
+        // Beside a 2 m wide hole with 0.3 m tolerance: the nearest stance is found beyond it, and its distance told.
+        Level hole = new LevelBuilder("hole")
+            .AddFloor(-6f, -6f, -1f, 6f, 0f)
+            .AddFloor(1f, -6f, 6f, 6f, 0f)
+            .Build();
+        var scene = PlanningScene.Create(hole, CharacterPresets.Skeleton());
+        var tolerance = new EndpointTolerance(0.3f, 0.25f);
+        EndpointPlacement overHole = scene.Sampler.Place(new Vector3(0f, 0f, 0f), tolerance);
+        Assert.That(overHole.Placed, Is.False);
+        Assert.That(overHole.NearestValid, Is.Not.Null);
+        Assert.That(overHole.NearestValid!.Value, Is.InRange(0.3f, 1.6f));
+        Assert.That(overHole.Failure("goal", tolerance), Does.Contain("nearest valid pose found stands").And.Contain("0.3 m across"));
+    }
+
+    [Test]
+    public void PlacementIsDeterministicAndTheBakedNodesAreTheQuerysNodes()
+    {
+        PlanningScene scene = Slabs.Value;
+        var from = new Vector3(-6f, 0f, 0f);
+        var to = new Vector3(-3f, 0.62f, 0f);
+        EndpointPlacement first = scene.Sampler.Place(from, new EndpointTolerance());
+        EndpointPlacement again = scene.Sampler.Place(from, new EndpointTolerance());
+        Assert.That(again.Pose!.Pose, Is.EqualTo(first.Pose!.Pose));
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 4, MaxNodes = 400, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
+        Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), "the bake connected start and goal, so the query does too");
+            Assert.That(plan.Start!.Id, Is.EqualTo(bake.StartNode));
+            Assert.That(plan.Goal!.Id, Is.EqualTo(bake.GoalNode));
+            Assert.That(plan.StartPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
+            Assert.That(plan.GoalPlacement!.UpDown, Is.LessThanOrEqualTo(0.25f));
+        });
+    }
+
+    [Test]
+    public void TheSameStartAndGoalIsAPlanWithoutJumps()
+    {
+        PlanningScene scene = Slabs.Value;
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 4, MaxNodes = 20, Threads = 2 });
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(new Vector3(-6f, 0f, 0f), new Vector3(-6f, 0f, 0f));
+        Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact));
+        Assert.That(plan.Jumps, Is.Empty);
+        Assert.That(plan.Start, Is.SameAs(plan.Goal));
+    }
+
+    private static void AssertWithin(EndpointPlacement placed, Vector3 point, float across, float upDown)
+    {
+        Vector3 centre = TrunkSampler.ContactCentre(placed.Pose!);
+        Assert.Multiple(() =>
+        {
+            Assert.That(new Vector2(centre.X - point.X, centre.Z - point.Z).Length(), Is.LessThanOrEqualTo(across));
+            Assert.That(MathF.Abs(centre.Y - point.Y), Is.LessThanOrEqualTo(upDown));
+            Assert.That(placed.Across, Is.EqualTo(new Vector2(centre.X - point.X, centre.Z - point.Z).Length()).Within(1e-4f));
+            Assert.That(placed.UpDown, Is.EqualTo(MathF.Abs(centre.Y - point.Y)).Within(1e-4f));
+        });
+    }
+}

@@ -1,0 +1,218 @@
+using System.Numerics;
+using Ballistic.Planner.Levels;
+
+namespace Ballistic.Planner.Tests.Support;
+
+/// <summary>
+/// Levels in the shapes other tools export, not ours: unwelded triangle soups placed by node transforms (some
+/// modelled Z-up and turned, some scaled), single-sided planes, thin slabs, fine curved terrain, stairs, a block to
+/// stand on, a floor with holes and rotated debris, and a low cave. Each comes with requests a user would make.
+/// </summary>
+internal static class ForeignLevels
+{
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave"];
+
+    /// <summary>A level and the start/goal pairs a user would try on it.</summary>
+    public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
+    {
+        "thin-slabs" => ThinSlabs(),
+        "curved" => Curved(),
+        "stairs" => Stairs(),
+        "block" => Block(),
+        "holes-debris" => HolesDebris(),
+        "cave" => Cave(),
+        _ => throw new ArgumentException($"no foreign level '{name}'"),
+    };
+
+    /// <summary>
+    /// A ground plane, slabs 2–10 cm thick floating at 0.5–1.2 m (boxes, as a modeller makes a shelf), a bare
+    /// single-sided plane (no thickness) and a 20 cm wide bar 0.8 m up: goals on top of the slabs and the bar.
+    /// </summary>
+    private static (Level, (Vector3, Vector3)[]) ThinSlabs()
+    {
+        var b = new LevelBuilder("thin-slabs (foreign)");
+        AddSoupQuad(b, "ground", new Vector3(-8f, 0f, -6f), new Vector3(8f, 0f, -6f), new Vector3(8f, 0f, 6f), new Vector3(-8f, 0f, 6f), 8);
+        AddSoupBox(b, "slab_02", new Vector3(-4f, 0.6f, -1f), new Vector3(-2f, 0.62f, 1f));
+        AddSoupBox(b, "slab_05", new Vector3(-0.5f, 0.9f, -1f), new Vector3(1.5f, 0.95f, 1f));
+        AddSoupBox(b, "slab_10", new Vector3(3f, 1.1f, -1f), new Vector3(5f, 1.2f, 1f));
+        AddSoupQuad(b, "plane", new Vector3(3f, 0.5f, 3f), new Vector3(5f, 0.5f, 3f), new Vector3(5f, 0.5f, 5f), new Vector3(3f, 0.5f, 5f), 1);
+        AddSoupBox(b, "bar", new Vector3(-4f, 0.7f, 3.9f), new Vector3(-1f, 0.8f, 4.1f));
+        return (b.Build(), [
+            (new Vector3(-6f, 0f, 0f), new Vector3(-3f, 0.62f, 0f)),
+            (new Vector3(-3f, 0.62f, 0f), new Vector3(0.5f, 0.95f, 0f)),
+            (new Vector3(-6f, 0f, -3f), new Vector3(4f, 1.2f, 0f)),
+            (new Vector3(6f, 0f, 4f), new Vector3(4f, 0.5f, 4f)),
+            (new Vector3(-6f, 0f, 4f), new Vector3(-2.5f, 0.8f, 4f)),
+        ]);
+    }
+
+    /// <summary>Rolling terrain modelled Z-up in centimetres (as a DCC tool exports) with a 0.25 m grid, turned and scaled into place.</summary>
+    private static (Level, (Vector3, Vector3)[]) Curved()
+    {
+        const int n = 64;
+        const float size = 1600f; // centimetres
+        var positions = new List<Vector3>();
+        var indices = new List<int>();
+        for (int i = 0; i < n; i++)
+        {
+            for (int j = 0; j < n; j++)
+            {
+                // Unwelded: every quad its own four corners.
+                Vector3 P(int a, int c)
+                {
+                    float x = (-size / 2f) + (size * a / n);
+                    float y = (-size / 2f) + (size * c / n);
+                    return new Vector3(x, y, CurvedHeight(x / 100f, -y / 100f) * 100f);
+                }
+
+                int s = positions.Count;
+                positions.AddRange([P(i, j), P(i + 1, j), P(i + 1, j + 1), P(i, j + 1)]);
+                indices.AddRange([s, s + 1, s + 2, s, s + 2, s + 3]);
+            }
+        }
+
+        // Z-up centimetres → Y-up metres: rotate −90° about X, scale 0.01.
+        Matrix4x4 toYUp = Matrix4x4.CreateScale(0.01f) * Matrix4x4.CreateRotationX(-MathF.PI / 2f);
+        var b = new LevelBuilder("curved (foreign)");
+        b.AddMesh("terrain", [.. positions], [.. indices], toYUp, TestLevels.Ground);
+        Level level = b.Build();
+        Vector3 At(float x, float z) => new(x, CurvedHeight(x, z), z);
+        return (level, [
+            (At(-6f, -6f), At(6f, 6f)),
+            (At(-5f, 4f), At(5f, -4f)),
+            (At(0f, -6f), At(0f, 6f)),
+            (At(-6f, 0f), At(2.5f, 0.5f)),
+        ]);
+    }
+
+    /// <summary>Height (metres) of the curved terrain at (x, z) metres: hills about 1 m high, slopes up to ~35°.</summary>
+    public static float CurvedHeight(float x, float z) =>
+        (0.6f * MathF.Sin(x * 0.7f) * MathF.Cos(z * 0.6f)) + (0.3f * MathF.Sin((x + z) * 0.9f));
+
+    /// <summary>A flight of 8 steps (17 cm rise, 30 cm run, 2 m wide) up to a landing, modelled as one mesh per step.</summary>
+    private static (Level, (Vector3, Vector3)[]) Stairs()
+    {
+        var b = new LevelBuilder("stairs (foreign)");
+        AddSoupQuad(b, "floor", new Vector3(-6f, 0f, -4f), new Vector3(2f, 0f, -4f), new Vector3(2f, 0f, 4f), new Vector3(-6f, 0f, 4f), 4);
+        for (int s = 0; s < 8; s++)
+        {
+            float x0 = 2f + (0.3f * s);
+            AddSoupBox(b, $"step_{s}", new Vector3(x0, 0f, -1f), new Vector3(x0 + 0.3f, 0.17f * (s + 1), 1f));
+        }
+
+        AddSoupBox(b, "landing", new Vector3(4.4f, 0f, -3f), new Vector3(8f, 1.36f, 3f));
+        return (b.Build(), [
+            (new Vector3(-4f, 0f, 0f), new Vector3(6.5f, 1.36f, 0f)),
+            (new Vector3(-2f, 0f, 2f), new Vector3(3.35f, 0.68f, 0f)),
+            (new Vector3(6.5f, 1.36f, 1.5f), new Vector3(-4f, 0f, -2f)),
+            (new Vector3(0f, 0f, -2f), new Vector3(2.75f, 0.51f, 0.5f)),
+        ]);
+    }
+
+    /// <summary>A 1.2 m block and a 0.5 m crate on open ground: goals on top of them, and back down.</summary>
+    private static (Level, (Vector3, Vector3)[]) Block()
+    {
+        var b = new LevelBuilder("block (foreign)");
+        AddSoupQuad(b, "ground", new Vector3(-8f, 0f, -8f), new Vector3(8f, 0f, -8f), new Vector3(8f, 0f, 8f), new Vector3(-8f, 0f, 8f), 2);
+
+        // The block modelled around its own origin and placed by a node transform (turned 30° about Y).
+        Matrix4x4 place = Matrix4x4.CreateRotationY(MathF.PI / 6f) * Matrix4x4.CreateTranslation(2f, 0f, 1f);
+        AddSoupBox(b, "block", new Vector3(-1f, 0f, -1f), new Vector3(1f, 1.2f, 1f), place);
+        AddSoupBox(b, "crate", new Vector3(-5.4f, 0f, -3.4f), new Vector3(-4.6f, 0.5f, -2.6f));
+        return (b.Build(), [
+            (new Vector3(-4f, 0f, 3f), new Vector3(2f, 1.2f, 1f)),
+            (new Vector3(2f, 1.2f, 1f), new Vector3(-5f, 0.5f, -3f)),
+            (new Vector3(-5f, 0.5f, -3f), new Vector3(5f, 0f, -5f)),
+            (new Vector3(6f, 0f, 6f), new Vector3(-6f, 0f, -6f)),
+        ]);
+    }
+
+    /// <summary>A floor of 1 m tiles with tiles missing (holes to fall through) and rotated crates and planks lying about.</summary>
+    private static (Level, (Vector3, Vector3)[]) HolesDebris()
+    {
+        var b = new LevelBuilder("holes-debris (foreign)");
+        for (int i = -6; i < 6; i++)
+        {
+            for (int j = -4; j < 4; j++)
+            {
+                bool hole = (i is -2 or -1 && j is -1 or 0 or 1) || (i == 2 && j is >= -4 and < 2) || (i == 3 && j is >= -4 and < 2);
+                if (!hole)
+                {
+                    AddSoupQuad(b, $"tile_{i}_{j}", new Vector3(i, 0f, j), new Vector3(i + 1, 0f, j), new Vector3(i + 1, 0f, j + 1), new Vector3(i, 0f, j + 1), 1);
+                }
+            }
+        }
+
+        var random = new Random(7);
+        for (int k = 0; k < 10; k++)
+        {
+            float x = -5.5f + (11f * (float)random.NextDouble());
+            float z = -3.5f + (7f * (float)random.NextDouble());
+            Vector3 half = new(0.1f + (0.3f * (float)random.NextDouble()), 0.05f + (0.2f * (float)random.NextDouble()), 0.1f + (0.3f * (float)random.NextDouble()));
+            Matrix4x4 place = Matrix4x4.CreateRotationZ(0.3f * ((float)random.NextDouble() - 0.5f)) * Matrix4x4.CreateRotationY(6.28f * (float)random.NextDouble()) * Matrix4x4.CreateTranslation(x, half.Y * 0.8f, z);
+            AddSoupBox(b, $"debris_{k}", -half, half, place);
+        }
+
+        return (b.Build(), [
+            (new Vector3(-5f, 0f, 0f), new Vector3(5f, 0f, 0f)),
+            (new Vector3(-5f, 0f, -3f), new Vector3(0.5f, 0f, 3f)),
+            (new Vector3(5f, 0f, -3f), new Vector3(-4f, 0f, 3f)),
+        ]);
+    }
+
+    /// <summary>A tunnel 2.6 m high (floor, walls, ceiling as one inward-facing mesh) with a raised ledge inside.</summary>
+    private static (Level, (Vector3, Vector3)[]) Cave()
+    {
+        var b = new LevelBuilder("cave (foreign)");
+        AddSoupQuad(b, "floor", new Vector3(-8f, 0f, -2f), new Vector3(8f, 0f, -2f), new Vector3(8f, 0f, 2f), new Vector3(-8f, 0f, 2f), 8);
+        AddSoupQuad(b, "ceiling", new Vector3(-8f, 2.6f, 2f), new Vector3(8f, 2.6f, 2f), new Vector3(8f, 2.6f, -2f), new Vector3(-8f, 2.6f, -2f), 8);
+        AddSoupQuad(b, "wall_n", new Vector3(-8f, 0f, 2f), new Vector3(8f, 0f, 2f), new Vector3(8f, 2.6f, 2f), new Vector3(-8f, 2.6f, 2f), 4);
+        AddSoupQuad(b, "wall_s", new Vector3(-8f, 2.6f, -2f), new Vector3(8f, 2.6f, -2f), new Vector3(8f, 0f, -2f), new Vector3(-8f, 0f, -2f), 4);
+        AddSoupBox(b, "ledge", new Vector3(1f, 0f, -2f), new Vector3(3f, 0.4f, 2f));
+        return (b.Build(), [
+            (new Vector3(-6f, 0f, 0f), new Vector3(6f, 0f, 0f)),
+            (new Vector3(-6f, 0f, 1f), new Vector3(2f, 0.4f, 0f)),
+        ]);
+    }
+
+    /// <summary>A quad split into n × n cells, every triangle with its own vertices (no index sharing).</summary>
+    private static void AddSoupQuad(LevelBuilder b, string name, Vector3 p00, Vector3 p10, Vector3 p11, Vector3 p01, int n)
+    {
+        var positions = new List<Vector3>();
+        for (int i = 0; i < n; i++)
+        {
+            for (int j = 0; j < n; j++)
+            {
+                Vector3 P(float u, float v) => Vector3.Lerp(Vector3.Lerp(p00, p10, u), Vector3.Lerp(p01, p11, u), v);
+                float u0 = i / (float)n, u1 = (i + 1) / (float)n, v0 = j / (float)n, v1 = (j + 1) / (float)n;
+                positions.AddRange([P(u0, v0), P(u1, v1), P(u1, v0), P(u0, v0), P(u0, v1), P(u1, v1)]);
+            }
+        }
+
+        // Winding: normal = (p01 − p00) × (p10 − p00) must face "out"; flip each triangle when it does not.
+        Vector3 wanted = Vector3.Cross(p01 - p00, p10 - p00);
+        for (int t = 0; t < positions.Count; t += 3)
+        {
+            Vector3 n0 = Vector3.Cross(positions[t + 1] - positions[t], positions[t + 2] - positions[t]);
+            if (Vector3.Dot(n0, wanted) < 0f)
+            {
+                (positions[t + 1], positions[t + 2]) = (positions[t + 2], positions[t + 1]);
+            }
+        }
+
+        b.AddMesh(name, [.. positions], [.. Enumerable.Range(0, positions.Count)], Matrix4x4.Identity, TestLevels.Ground);
+    }
+
+    /// <summary>A closed box as a triangle soup (outward faces), optionally placed by a transform.</summary>
+    private static void AddSoupBox(LevelBuilder b, string name, Vector3 min, Vector3 max, Matrix4x4? place = null)
+    {
+        var corners = new Vector3[]
+        {
+            new(min.X, min.Y, min.Z), new(max.X, min.Y, min.Z), new(max.X, max.Y, min.Z), new(min.X, max.Y, min.Z),
+            new(min.X, min.Y, max.Z), new(max.X, min.Y, max.Z), new(max.X, max.Y, max.Z), new(min.X, max.Y, max.Z),
+        };
+        int[] faces = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5, 3, 7, 6, 3, 6, 2, 0, 1, 5, 0, 5, 4];
+        Vector3[] soup = [.. faces.Select(i => corners[i])];
+        b.AddMesh(name, soup, [.. Enumerable.Range(0, soup.Length)], place ?? Matrix4x4.Identity, TestLevels.Ground);
+    }
+}

@@ -1,0 +1,363 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Tests.Support;
+
+/// <summary>
+/// An independent checker of a plan and its animation, written from the promises alone (not from the planner's
+/// code): what a user's own verifier would assert. It never throws on a bad plan; it lists what is wrong.
+/// </summary>
+internal static class PlanAudit
+{
+    /// <summary>Stance contacts' centre must lie this close to the requested point, across (metres).</summary>
+    public const float AcrossTolerance = 0.5f;
+
+    /// <summary>… and this close up or down (metres).</summary>
+    public const float UpDownTolerance = 0.25f;
+
+    public static AuditReport Check(string name, PlanningScene scene, Vector3 from, Vector3 to, PlanResult plan, JumpAnimation? animation)
+    {
+        var report = new AuditReport(name, plan.Status, plan.Reason);
+        if (plan.Status != PlannerStatus.Exact)
+        {
+            return report;
+        }
+
+        ReducedCharacter character = scene.Character;
+        RoadmapNode? first = plan.Jumps.Count > 0 ? plan.Jumps[0].Takeoff : plan.Start;
+        RoadmapNode? last = plan.Jumps.Count > 0 ? plan.Jumps[^1].Landing : plan.Goal;
+        if (first is null || last is null)
+        {
+            report.Violations.Add("exact plan without start or goal node");
+            return report;
+        }
+
+        (report.StartAcross, report.StartUpDown) = Offset(first, from);
+        (report.GoalAcross, report.GoalUpDown) = Offset(last, to);
+        if (report.StartAcross > AcrossTolerance || report.StartUpDown > UpDownTolerance)
+        {
+            report.Violations.Add($"starts {report.StartAcross:0.00} m across and {report.StartUpDown:0.00} m up/down from the requested start");
+        }
+
+        if (report.GoalAcross > AcrossTolerance || report.GoalUpDown > UpDownTolerance)
+        {
+            report.Violations.Add($"ends {report.GoalAcross:0.00} m across and {report.GoalUpDown:0.00} m up/down from the requested goal");
+        }
+
+        for (int j = 0; j < plan.Jumps.Count; j++)
+        {
+            Jump jump = plan.Jumps[j];
+            if (j > 0 && plan.Jumps[j - 1].Landing.Id != jump.Takeoff.Id)
+            {
+                report.Violations.Add($"jump {j} does not take off where jump {j - 1} landed");
+            }
+
+            CheckJump(scene, jump, $"jump {j}", report);
+            CheckNode(scene, jump.Takeoff, $"jump {j} takeoff", report);
+            CheckNode(scene, jump.Landing, $"jump {j} landing", report);
+        }
+
+        if (animation is not null)
+        {
+            CheckAnimation(scene, animation, report);
+        }
+
+        return report;
+    }
+
+    private static (float Across, float UpDown) Offset(RoadmapNode node, Vector3 requested)
+    {
+        if (node.Contacts.Count == 0)
+        {
+            return (float.PositiveInfinity, float.PositiveInfinity);
+        }
+
+        Vector3 centre = Vector3.Zero;
+        foreach (Contact c in node.Contacts)
+        {
+            centre += c.Position;
+        }
+
+        centre /= node.Contacts.Count;
+        return (new Vector2(centre.X - requested.X, centre.Z - requested.Z).Length(), MathF.Abs(centre.Y - requested.Y));
+    }
+
+    private static void CheckJump(PlanningScene scene, Jump jump, string context, AuditReport report)
+    {
+        ReducedCharacter c = scene.Character;
+        var arc = jump.Arc;
+        void Fail(string what) => report.Violations.Add($"{context}: {what}");
+        if (Vector3.Distance(arc.PositionAt(0f), jump.Takeoff.Pose.Position) > 1e-3f)
+        {
+            Fail("arc does not start at the takeoff pose");
+        }
+
+        if (Vector3.Distance(arc.PositionAt(arc.FlightTime), jump.Landing.Pose.Position) > 5e-3f)
+        {
+            Fail($"arc lands {Vector3.Distance(arc.PositionAt(arc.FlightTime), jump.Landing.Pose.Position):0.000} m from the landing pose");
+        }
+
+        if (jump.Takeoff.Cone.AngleTo(arc.TakeoffVelocity) > jump.Takeoff.Cone.HalfAngle + 1e-3f)
+        {
+            Fail("takeoff velocity outside the takeoff cone");
+        }
+
+        if (jump.Landing.Cone.AngleTo(-arc.LandingVelocity) > jump.Landing.Cone.HalfAngle + 1e-3f)
+        {
+            Fail("reversed landing velocity outside the landing cone");
+        }
+
+        if (arc.TakeoffVelocity.Length() > c.TakeoffSpeedMax * 1.001f || arc.LandingVelocity.Length() > c.LandingSpeedMax * 1.001f)
+        {
+            Fail("speed above the limits");
+        }
+
+        float speed = MathF.Max(arc.TakeoffVelocity.Length(), arc.LandingVelocity.Length());
+        int steps = Math.Max(8, (int)MathF.Ceiling(arc.FlightTime * speed / 0.02f));
+        for (int k = 0; k <= steps; k++)
+        {
+            RootPose pose = arc.PoseAt(arc.FlightTime * k / steps);
+            if (scene.Bvh.Overlaps(new OrientedBox(pose.Position, c.TrunkHalfExtents, pose.Rotation)))
+            {
+                Fail($"trunk in the level at t = {arc.FlightTime * k / steps:0.000} s");
+                break;
+            }
+        }
+    }
+
+    private static void CheckNode(PlanningScene scene, RoadmapNode node, string context, AuditReport report)
+    {
+        ReducedCharacter c = scene.Character;
+        void Fail(string what) => report.Violations.Add($"{context}: {what}");
+        if (node.Contacts.Count < c.RequiredContacts)
+        {
+            Fail($"{node.Contacts.Count} contacts, {c.RequiredContacts} required");
+        }
+
+        Vector3 sum = Vector3.Zero;
+        foreach (Contact contact in node.Contacts)
+        {
+            sum += contact.Normal;
+            (float distance, Vector3 normal) = NearestSurface(scene, contact.Position);
+            float angle = MathF.Acos(Math.Clamp(Vector3.Dot(normal, contact.Normal), -1f, 1f)) * 180f / MathF.PI;
+            report.MaxContactOffMesh = MathF.Max(report.MaxContactOffMesh, distance);
+            report.MaxContactNormalError = MathF.Max(report.MaxContactNormalError, angle);
+            string limb = c.Limbs[contact.Limb].Name;
+            if (distance > 0.01f)
+            {
+                Fail($"{limb} contact {distance * 100f:0.0} cm off the mesh");
+            }
+            else if (angle > 5f)
+            {
+                Fail($"{limb} contact normal {angle:0.0}° off the surface's");
+            }
+
+            if (Vector3.Dot(contact.Normal, node.Pose.Position - contact.Position) <= 0f)
+            {
+                Fail($"{limb} contact on a face turned away from the trunk");
+            }
+
+            if (!c.Limbs[contact.Limb].Filter.Accepts(contact.Normal))
+            {
+                Fail($"{limb} contact on a surface its limb may not touch");
+            }
+        }
+
+        if (node.Contacts.Count > 0 && sum.Length() > 1e-3f && Vector3.Distance(node.Cone.Axis, Vector3.Normalize(sum)) > 1e-3f)
+        {
+            Fail("cone axis is not the normalised sum of the contact normals");
+        }
+    }
+
+    private static void CheckAnimation(PlanningScene scene, JumpAnimation animation, AuditReport report)
+    {
+        CharacterModel model = animation.Model;
+        Rig rig = model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        report.Animated = true;
+        int before = report.Violations.Count;
+
+        // Stance effectors hold their contact points (sampled at 240 Hz), on the mesh.
+        foreach (ContactPhase phase in animation.ContactPhases)
+        {
+            RigLimb limb = model.Limbs[phase.Limb];
+            for (float t = phase.From; t <= phase.To + 1e-6f; t += 1f / 240f)
+            {
+                animation.Joints(MathF.Min(t, phase.To), positions, rotations);
+                float slip = Vector3.Distance(limb.EffectorPosition(positions, rotations), phase.Position);
+                report.MaxStanceSlip = MathF.Max(report.MaxStanceSlip, slip);
+                if (slip > 0.01f)
+                {
+                    report.Violations.Add($"animation: {limb.Name} {slip * 100f:0.0} cm off its contact at {t:0.000} s");
+                    break;
+                }
+            }
+
+            if (NearestSurface(scene, phase.Position).Distance > 0.01f)
+            {
+                report.Violations.Add($"animation: {limb.Name} holds a point off the mesh");
+            }
+        }
+
+        // No contact point jumps: a limb's next contact within 0.1 s of its last lies within 2 cm of it.
+        foreach (IGrouping<int, ContactPhase> limbPhases in animation.ContactPhases.GroupBy(p => p.Limb))
+        {
+            ContactPhase[] ordered = [.. limbPhases.OrderBy(p => p.From)];
+            for (int i = 1; i < ordered.Length; i++)
+            {
+                float gap = ordered[i].From - ordered[i - 1].To;
+                float moved = Vector3.Distance(ordered[i].Position, ordered[i - 1].Position);
+                if (gap < 0.1f && moved > 0.02f)
+                {
+                    report.MaxContactJump = MathF.Max(report.MaxContactJump, moved);
+                    report.Violations.Add($"animation: {model.Limbs[ordered[i].Limb].Name} contact moves {moved * 100f:0.0} cm in {gap:0.000} s at {ordered[i].From:0.000} s");
+                }
+            }
+        }
+
+        // No bone through the level at any frame: every bone segment (parent → joint, effector → contact point),
+        // less its part within 1 cm of a contact held at that time.
+        int boneHits = 0;
+        for (float t = 0f; t <= animation.Duration + 1e-6f && boneHits == 0; t += 1f / 120f)
+        {
+            float time = MathF.Min(t, animation.Duration);
+            animation.Joints(time, positions, rotations);
+            var held = new List<Vector3>();
+            foreach (ContactPhase p in animation.ContactPhases)
+            {
+                if (time >= p.From - 1e-4f && time <= p.To + 1e-4f)
+                {
+                    held.Add(p.Position);
+                }
+            }
+
+            for (int j = 1; j < rig.Joints.Count && boneHits == 0; j++)
+            {
+                if (SegmentHits(scene.Bvh, positions[rig.Joints[j].Parent], positions[j], held))
+                {
+                    boneHits++;
+                    report.Violations.Add($"animation: bone {rig.Joints[j].Name} in the level at {time:0.000} s");
+                }
+            }
+
+            foreach (RigLimb limb in model.Limbs)
+            {
+                if (boneHits == 0 && SegmentHits(scene.Bvh, positions[limb.EffectorJoint], limb.EffectorPosition(positions, rotations), held))
+                {
+                    boneHits++;
+                    report.Violations.Add($"animation: {limb.Name} sole in the level at {time:0.000} s");
+                }
+            }
+        }
+
+        report.CleanAnimation = report.Violations.Count == before;
+    }
+
+    /// <summary>True when the segment crosses a triangle outside 1 cm of every held contact point.</summary>
+    private static bool SegmentHits(TriangleBvh bvh, Vector3 a, Vector3 b, List<Vector3> held)
+    {
+        const int pieces = 16;
+        for (int k = 0; k < pieces; k++)
+        {
+            Vector3 p = Vector3.Lerp(a, b, k / (float)pieces);
+            Vector3 q = Vector3.Lerp(a, b, (k + 1) / (float)pieces);
+            if (!bvh.Raycast(p, q - p, 1f, out RayHit hit))
+            {
+                continue;
+            }
+
+            bool nearContact = false;
+            foreach (Vector3 c in held)
+            {
+                nearContact |= Vector3.Distance(hit.Point, c) <= 0.01f + (Vector3.Distance(a, b) / pieces);
+            }
+
+            if (!nearContact)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Distance from <paramref name="p"/> to the nearest triangle and that triangle's normal.</summary>
+    public static (float Distance, Vector3 Normal) NearestSurface(PlanningScene scene, Vector3 p)
+    {
+        var near = new List<int>();
+        for (float r = 0.05f; r <= 1.7f; r *= 2f)
+        {
+            near.Clear();
+            scene.Bvh.TrianglesNear(new Aabb(p - new Vector3(r), p + new Vector3(r)), near);
+            if (near.Count > 0)
+            {
+                break;
+            }
+        }
+
+        float best = float.PositiveInfinity;
+        Vector3 normal = Vector3.UnitY;
+        foreach (int t in near)
+        {
+            Triangle tri = scene.Level.Triangles[t];
+            float d = Vector3.Distance(tri.ClosestPoint(p), p);
+            if (d < best - 1e-6f)
+            {
+                best = d;
+                normal = tri.Normal;
+            }
+        }
+
+        return (best, normal);
+    }
+}
+
+/// <summary>What <see cref="PlanAudit"/> found about one plan.</summary>
+internal sealed class AuditReport(string name, PlannerStatus status, string reason)
+{
+    public string Name { get; } = name;
+
+    public PlannerStatus Status { get; } = status;
+
+    public string Reason { get; } = reason;
+
+    public List<string> Violations { get; } = [];
+
+    public float StartAcross { get; set; }
+
+    public float StartUpDown { get; set; }
+
+    public float GoalAcross { get; set; }
+
+    public float GoalUpDown { get; set; }
+
+    public float MaxContactOffMesh { get; set; }
+
+    public float MaxContactNormalError { get; set; }
+
+    public float MaxStanceSlip { get; set; }
+
+    public float MaxContactJump { get; set; }
+
+    public bool Animated { get; set; }
+
+    public bool CleanAnimation { get; set; }
+
+    /// <summary>Exact, every invariant held, animated cleanly.</summary>
+    public bool FullyRight => Status == PlannerStatus.Exact && Violations.Count == 0 && Animated;
+
+    /// <summary>Claimed success although something is wrong: the one outcome never allowed.</summary>
+    public bool WrongAnswer => Status == PlannerStatus.Exact && Violations.Count > 0;
+
+    public override string ToString() =>
+        $"{Name}: {Status} ({Reason})" + (Violations.Count > 0 ? "; " + string.Join("; ", Violations.Take(4)) + (Violations.Count > 4 ? $" (+{Violations.Count - 4} more)" : "") : "");
+}

@@ -1,0 +1,101 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Tests.Support;
+
+/// <summary>
+/// Seeded sweeps of start/goal requests: each case plans (bake until connected, query), animates the whole body
+/// and hands everything to <see cref="PlanAudit"/>.
+/// </summary>
+internal static class Sweep
+{
+    /// <summary>A scene and animator for one level and character, built once per sweep.</summary>
+    public sealed record Setup(string LevelName, PlanningScene Scene, CharacterModel Model, JumpAnimator Animator);
+
+    public static Setup Prepare(string levelName, Level level, string character)
+    {
+        var scene = PlanningScene.Create(level, CharacterPresets.Get(character));
+        CharacterModel model = CharacterPresets.Model(character);
+        return new Setup(levelName, scene, model, new JumpAnimator(scene, model));
+    }
+
+    /// <summary>Plans, animates and audits one request.</summary>
+    public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600)
+    {
+        string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
+        PlanningScene scene = setup.Scene;
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Start = from, Goal = to, StopWhenConnected = true });
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        JumpAnimation? animation = plan.Status == PlannerStatus.Exact && plan.Jumps.Count > 0 ? setup.Animator.Animate(plan.Jumps) : null;
+        return PlanAudit.Check(name, scene, from, to, plan, animation);
+    }
+
+    /// <summary>
+    /// <paramref name="count"/> random pairs of points on surfaces a character stands on (normal within ~37° of up,
+    /// in a contact surface), at most <paramref name="maxDistance"/> metres apart across.
+    /// </summary>
+    public static (Vector3 From, Vector3 To)[] RandomPairs(PlanningScene scene, int count, int seed, float maxDistance)
+    {
+        var triangles = new List<int>();
+        var cumulative = new List<double>();
+        double total = 0;
+        for (int t = 0; t < scene.Level.Triangles.Count; t++)
+        {
+            Triangle tri = scene.Level.Triangles[t];
+            if (tri.Normal.Y >= 0.8f && scene.Surfaces.SurfaceOf(t) >= 0)
+            {
+                total += tri.Area;
+                triangles.Add(t);
+                cumulative.Add(total);
+            }
+        }
+
+        var random = new Random(seed);
+        Vector3 Point()
+        {
+            double r = random.NextDouble() * total;
+            int i = cumulative.BinarySearch(r);
+            Triangle tri = scene.Level.Triangles[triangles[Math.Min(i < 0 ? ~i : i, triangles.Count - 1)]];
+            float r1 = MathF.Sqrt((float)random.NextDouble());
+            float r2 = (float)random.NextDouble();
+            return (tri.A * (1f - r1)) + (tri.B * (r1 * (1f - r2))) + (tri.C * (r1 * r2));
+        }
+
+        var pairs = new List<(Vector3, Vector3)>();
+        while (pairs.Count < count)
+        {
+            Vector3 a = Point();
+            Vector3 b = Point();
+            float across = new Vector2(a.X - b.X, a.Z - b.Z).Length();
+            if (across <= maxDistance && across >= 1f)
+            {
+                pairs.Add((a, b));
+            }
+        }
+
+        return [.. pairs];
+    }
+
+    /// <summary>One line of figures for a set of reports.</summary>
+    public static string Summary(IReadOnlyList<AuditReport> reports)
+    {
+        int exact = reports.Count(r => r.Status == PlannerStatus.Exact);
+        int right = reports.Count(r => r.FullyRight);
+        int wrong = reports.Count(r => r.WrongAnswer);
+        int animated = reports.Count(r => r.Animated);
+        int clean = reports.Count(r => r.CleanAnimation);
+        List<AuditReport> ex = [.. reports.Where(r => r.Status == PlannerStatus.Exact)];
+        string Median(Func<AuditReport, float> f) => ex.Count == 0 ? "-" : $"{ex.Select(f).Order().ElementAt(ex.Count / 2):0.000}";
+        string Max(Func<AuditReport, float> f) => ex.Count == 0 ? "-" : $"{ex.Max(f):0.000}";
+        return $"{reports.Count} cases: {right} fully right ({100.0 * right / reports.Count:0}%), {exact} exact, {wrong} wrong answers, {clean}/{animated} clean animations; " +
+            $"start distance across median {Median(r => r.StartAcross)} max {Max(r => r.StartAcross)} m, up/down median {Median(r => r.StartUpDown)} max {Max(r => r.StartUpDown)} m; " +
+            $"goal across median {Median(r => r.GoalAcross)} max {Max(r => r.GoalAcross)} m, up/down median {Median(r => r.GoalUpDown)} max {Max(r => r.GoalUpDown)} m; " +
+            $"contact off mesh median {Median(r => r.MaxContactOffMesh)} max {Max(r => r.MaxContactOffMesh)} m, normal error max {Max(r => r.MaxContactNormalError)}°";
+    }
+}
