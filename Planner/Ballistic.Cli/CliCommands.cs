@@ -87,7 +87,8 @@ internal static class CliCommands
         Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
         Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path and write an animated GLB." };
         Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
-        var command = new Command("plan", "Plan a sequence of jumps from one point to another and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb };
+        Option<string> tolerance = new("--goal-tolerance") { Description = "How close (metres) the first and last stances' contacts must come to --from and --to: ACROSS[,UPDOWN], horizontally and vertically.", DefaultValueFactory = _ => "0.5,0.25" };
+        var command = new Command("plan", "Plan a sequence of jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance };
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
@@ -105,6 +106,7 @@ internal static class CliCommands
                 Threads = Positive(parse.GetValue(threads), "--threads"),
                 MaxNodes = Positive(parse.GetValue(maxNodes), "--max-nodes"),
                 TimeLimit = Seconds(parse.GetValue(timeLimit), "--time-limit"),
+                Tolerance = CliInputs.ParseTolerance(parse.GetValue(tolerance)!, "--goal-tolerance"),
             };
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);

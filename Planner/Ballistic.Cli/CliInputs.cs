@@ -5,6 +5,7 @@ using Ballistic.Planner.Collision;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Cli;
 
@@ -25,6 +26,24 @@ internal static class CliInputs
         }
 
         throw new CliException($"{option} takes a point as x,y,z in metres (for example 1.5,0,-2), not '{text}'.");
+    }
+
+    /// <summary>Parses "ACROSS[,UPDOWN]" (metres, invariant culture) as an endpoint tolerance; UPDOWN defaults to 0.25 m.</summary>
+    public static EndpointTolerance ParseTolerance(string text, string option)
+    {
+        string[] parts = text.Split(',', StringSplitOptions.TrimEntries);
+        if (parts.Length is 1 or 2 &&
+            float.TryParse(parts[0], NumberStyles.Float, CultureInfo.InvariantCulture, out float across) &&
+            across > 0f && float.IsFinite(across))
+        {
+            float upDown = 0.25f;
+            if (parts.Length == 1 || (float.TryParse(parts[1], NumberStyles.Float, CultureInfo.InvariantCulture, out upDown) && upDown > 0f && float.IsFinite(upDown)))
+            {
+                return new EndpointTolerance(across, upDown);
+            }
+        }
+
+        throw new CliException($"{option} takes ACROSS[,UPDOWN] in metres, both positive (for example 0.5,0.25), not '{text}'.");
     }
 
     /// <summary>Loads a level file (.glb or .gltf).</summary>

@@ -12,7 +12,10 @@ using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Cli;
 
-/// <summary>The plan job shared by <c>plan</c> and <c>demo</c>: load or bake a roadmap, query it, write the report.</summary>
+/// <summary>
+/// The plan job shared by <c>plan</c> and <c>demo</c>: load or bake a roadmap, plan and animate with lazy repair
+/// (<see cref="AnimatedPlanner"/>), write the report.
+/// </summary>
 internal sealed class PlanPipeline
 {
     public required string LevelPath { get; init; }
@@ -50,63 +53,54 @@ internal sealed class PlanPipeline
         PlanningScene scene = Scene ?? PlanningScene.Create(Level, Character);
         Timings["prepareScene"] = clock.Elapsed.TotalSeconds;
 
+        clock.Restart();
+        var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, Model));
+        Timings["prepareAnimator"] = clock.Elapsed.TotalSeconds;
+        clock.Restart();
         Roadmap roadmap;
         double bakeSeconds = 0;
+        AnimatedPlan plan;
         if (RoadmapPath is not null)
         {
-            clock.Restart();
             roadmap = RoadmapFile.Load(RoadmapPath, Level.Fingerprint, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
+            clock.Restart();
+            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance });
+            Timings["planAndAnimate"] = clock.Elapsed.TotalSeconds;
         }
         else
         {
-            var settings = new BakeSettings
-            {
-                Seed = Seed,
-                Threads = Threads,
-                MaxNodes = MaxNodes,
-                TimeLimit = TimeLimit,
-                Start = From,
-                Goal = To,
-                StopWhenConnected = true,
-                Tolerance = Tolerance,
-            };
+            var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance };
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(error) ? new ConsoleProgress(error, MaxNodes) : null;
-            BakeResult bake = new RoadmapBaker(scene).Bake(settings, progress: progress);
+            (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, progress: progress);
             progress?.Finish();
             roadmap = bake.Roadmap;
             bakeSeconds = bake.Elapsed.TotalSeconds;
-            Timings["bake"] = bakeSeconds;
-            if (bake.Status is PlannerStatus.InvalidStart or PlannerStatus.InvalidGoal or PlannerStatus.Cancelled)
-            {
-                var failed = new PlanResult(bake.Status, bake.Reason, null, null, [], TimeSpan.Zero);
-                return (Report(scene, roadmap, bakeSeconds, failed), roadmap);
-            }
+            Timings["bakeAndPlan"] = clock.Elapsed.TotalSeconds;
         }
 
-        clock.Restart();
-        PlanResult result = new PathQuery(scene, roadmap).Plan(From, To, new QuerySettings { Tolerance = Tolerance });
-        Timings["query"] = clock.Elapsed.TotalSeconds;
-        return (Report(scene, roadmap, bakeSeconds, result), roadmap);
+        Animation = plan.Animation;
+        return (Report(scene, roadmap, bakeSeconds, plan.Result) with { Rejected = plan.Rejected }, roadmap);
     }
 
+    /// <summary>The clean whole-body animation of the last plan, when it has one.</summary>
+    public JumpAnimation? Animation { get; private set; }
+
     private PlanReport Report(PlanningScene scene, Roadmap roadmap, double bakeSeconds, PlanResult result) =>
-        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings));
+        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings)) { Tolerance = Tolerance };
 
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
     public void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
     {
         string? animationLine = null;
-        if (glbPath is not null && report.Result.Status == PlannerStatus.Exact)
+        if (glbPath is not null && Animation is { } animation)
         {
-            CharacterModel model = Model;
             var clock = Stopwatch.StartNew();
-            JumpAnimation animation = new JumpAnimator(report.Scene, model).Animate(report.Result.Jumps);
             AnimatedGlbWriter.Save(animation, glbPath, "jumps");
-            var timings = new Dictionary<string, double>(report.Timings) { ["animate"] = clock.Elapsed.TotalSeconds };
+            var timings = new Dictionary<string, double>(report.Timings) { ["writeGlb"] = clock.Elapsed.TotalSeconds };
             string relative = Path.GetRelativePath(Path.GetDirectoryName(Path.GetFullPath(reportPath))!, Path.GetFullPath(glbPath));
             report = report with { Timings = timings, Animation = new AnimationReport(relative, "jumps", animation) };
-            animationLine = $"animation: {animation.Duration:0.00} s, {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases, {animation.FailedContactPoses} of {2 * animation.Arcs.Count} contact poses failing the no-slip test; {glbPath}";
+            animationLine = $"animation: {animation.Duration:0.00} s ({animation.Stances.Sum():0.00} s of stances between jumps), {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases; {glbPath}";
         }
 
         PlanReportWriter.Save(report, reportPath);
@@ -118,6 +112,19 @@ internal sealed class PlanPipeline
         PlanResult r = report.Result;
         output.WriteLine($"status: {PlanReportWriter.StatusName(r.Status)} ({r.Reason})");
         output.WriteLine($"roadmap: {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps, seed {report.Seed}");
+        foreach ((string name, EndpointPlacement? placement) in new[] { ("start", r.StartPlacement), ("goal", r.GoalPlacement) })
+        {
+            if (placement is { Placed: true })
+            {
+                output.WriteLine($"{name}: stance {placement.Across:0.00} m across and {placement.UpDown:0.00} m up/down from the requested point");
+            }
+        }
+
+        if (report.Rejected.Count > 0)
+        {
+            output.WriteLine($"set aside: {report.Rejected.Count} jumps the body could not perform (first: {report.Rejected[0].Reason})");
+        }
+
         if (r.Jumps.Count > 0)
         {
             output.WriteLine($"path: {r.Jumps.Count} jumps, {r.TotalFlightTime:0.00} s of flight, {r.Jumps.Sum(j => j.Arc.ArcLength):0.0} m of arcs");

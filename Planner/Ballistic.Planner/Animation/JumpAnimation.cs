@@ -6,31 +6,60 @@ using Ballistic.Planner.Steering;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// A whole-body animation of a path of jumps: frames at a fixed rate (per jump, the last frame falls exactly on
-/// landing), the contact phases, and the arcs, from which the root is evaluated exactly at any time.
+/// A whole-body animation of a path of jumps: flights and, between two jumps, a stance in which the root stays put
+/// while limbs whose contacts change step one at a time. Frames at a fixed rate (per jump, the last frame falls
+/// exactly on landing), the contact phases, the arcs (the root is evaluated exactly on them at any time in flight)
+/// and the problems found: an animation with problems must not be reported as a success.
 /// </summary>
 public sealed class JumpAnimation
 {
     private readonly float[] _jumpStarts;
 
     /// <summary>Creates an animation.</summary>
-    public JumpAnimation(CharacterModel model, IReadOnlyList<BallisticArc> arcs, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, int failedContactPoses, int collidingFrames)
+    /// <param name="model">The character.</param>
+    /// <param name="arcs">The jumps' arcs, in order.</param>
+    /// <param name="stances">Duration (seconds) of the stance after each jump but the last (one fewer than the arcs).</param>
+    /// <param name="frames">The frames, in time order.</param>
+    /// <param name="contactPhases">When each limb holds which contact point.</param>
+    /// <param name="problems">What could not be animated cleanly, per jump.</param>
+    /// <param name="failedContactPoses">Contact poses that fail the no-slip test.</param>
+    /// <param name="collidingFrames">Frames with a bone through the level.</param>
+    public JumpAnimation(CharacterModel model, IReadOnlyList<BallisticArc> arcs, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames)
     {
         ArgumentNullException.ThrowIfNull(model);
         ArgumentNullException.ThrowIfNull(arcs);
+        ArgumentNullException.ThrowIfNull(stances);
         ArgumentNullException.ThrowIfNull(frames);
+        ArgumentNullException.ThrowIfNull(contactPhases);
+        ArgumentNullException.ThrowIfNull(problems);
+        if (arcs.Count > 0 && stances.Count != arcs.Count - 1)
+        {
+            throw new ArgumentException($"{arcs.Count} jumps need {arcs.Count - 1} stances between them, not {stances.Count}.", nameof(stances));
+        }
+
         Model = model;
         Arcs = [.. arcs];
+        Stances = [.. stances];
         Frames = [.. frames];
         ContactPhases = [.. contactPhases];
+        Problems = [.. problems];
         FailedContactPoses = failedContactPoses;
         CollidingFrames = collidingFrames;
         _jumpStarts = new float[arcs.Count + 1];
         for (int i = 0; i < arcs.Count; i++)
         {
-            _jumpStarts[i + 1] = _jumpStarts[i] + arcs[i].FlightTime;
+            _jumpStarts[i + 1] = _jumpStarts[i] + arcs[i].FlightTime + (i < stances.Count ? stances[i] : 0f);
         }
     }
+
+    /// <summary>Duration (seconds) of the stance after each jump but the last, during which limbs re-step.</summary>
+    public IReadOnlyList<float> Stances { get; }
+
+    /// <summary>What could not be animated cleanly; empty when every jump animates with held contacts and no bone in the level.</summary>
+    public IReadOnlyList<JumpProblem> Problems { get; }
+
+    /// <summary>True when nothing went wrong: every contact pose passes the no-slip test and no bone passes through the level.</summary>
+    public bool IsClean => Problems.Count == 0;
 
     /// <summary>The character.</summary>
     public CharacterModel Model { get; }
@@ -44,7 +73,7 @@ public sealed class JumpAnimation
     /// <summary>When each limb holds which contact point.</summary>
     public IReadOnlyList<ContactPhase> ContactPhases { get; }
 
-    /// <summary>Duration of the clip, seconds (the sum of the flight times).</summary>
+    /// <summary>Duration of the clip, seconds: the flight times and the stances between them.</summary>
     public float Duration => _jumpStarts[^1];
 
     /// <summary>How many takeoff or landing contact poses could not be generated to satisfy the no-slip test (the estimated contacts were then kept).</summary>
@@ -56,7 +85,10 @@ public sealed class JumpAnimation
     /// <summary>Clip time at which jump <paramref name="jump"/> takes off, seconds.</summary>
     public float JumpStart(int jump) => _jumpStarts[jump];
 
-    /// <summary>The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola.</summary>
+    /// <summary>
+    /// The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola in flight, at the
+    /// landing pose during the stance after it.
+    /// </summary>
     public RootPose RootAt(float time)
     {
         int jump = JumpIndex(time);

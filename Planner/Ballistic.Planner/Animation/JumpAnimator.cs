@@ -12,13 +12,31 @@ namespace Ballistic.Planner.Animation;
 /// keeping its contact by IK while the root moves along the arc until the IK fails (takeoff) or from the moment it
 /// succeeds (landing), an extended pose at the apex, and per-angle interpolation between these key poses for each
 /// limb, re-sampling a limb's apex pose when it would pass through the level. The root stays on the parabola.
+/// Between two jumps the root stays at the landing pose; when the landing contacts cannot push off for the next
+/// jump, the limbs whose contacts change step to the new ones one at a time (a swing of
+/// <see cref="StepDuration"/> with the foot lifted clear) while the others hold. Whatever cannot be done cleanly
+/// (no contact pose passing the no-slip test, a bone through the level) is reported per jump in
+/// <see cref="JumpAnimation.Problems"/>, never hidden.
 /// </summary>
 public sealed class JumpAnimator
 {
+    /// <summary>Duration of one limb's step between two jumps, seconds.</summary>
+    public const float StepDuration = 0.3f;
+
     private const int MaxResamples = 64;
+
+    /// <summary>Heights (metres) the effector is lifted by at mid-step, tried in order until the swing is clear.</summary>
+    private static readonly float[] StepLifts = [0.06f, 0.12f, 0.2f];
+
+    /// <summary>Least time (seconds) a limb spends in the air between letting go of one contact point and taking another.</summary>
+    public const float MinAirTime = 0.1f;
+
+    /// <summary>Contact phases are stepped this many times finer than the frame rate, so that held contacts do not slide between frames.</summary>
+    private const int ContactSubsteps = 4;
 
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
+    private readonly BodyCollision _collision;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -27,6 +45,7 @@ public sealed class JumpAnimator
         ArgumentNullException.ThrowIfNull(model);
         _contacts = new ContactGenerator(scene, model);
         _holdIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 12 });
+        _collision = _contacts.Collision;
         Model = model;
     }
 
@@ -46,68 +65,109 @@ public sealed class JumpAnimator
             throw new ArgumentException("There are no jumps to animate.", nameof(jumps));
         }
 
-        if (!(frameRate > 0f))
+        if (!(frameRate > 0f) || !float.IsFinite(frameRate))
         {
             throw new ArgumentException("The frame rate must be positive.", nameof(frameRate));
         }
 
-        var frames = new List<AnimationFrame>();
-        var phases = new List<ContactPhase>();
-        var open = new Dictionary<int, (Vector3 Position, float From)>();
+        // Each jump: its contact poses and flight. The landing contacts push off again when they can.
+        var clips = new List<Clip>();
+        var problems = new List<JumpProblem>();
         int failed = 0;
-        int colliding = 0;
-        float clock = 0f;
-        ContactConfiguration? previousLanding = null;
         for (int j = 0; j < jumps.Count; j++)
         {
-            Jump jump = jumps[j];
-            BallisticArc arc = jump.Arc;
-            ContactConfiguration takeoff = previousLanding is { } landed && landed.Valid && landed.Cone.Contains(arc.TakeoffVelocity, 1e-3f)
-                ? landed
-                : _contacts.Generate(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity);
-            ContactConfiguration landing = _contacts.Generate(arc.Landing, jump.Landing.Contacts, -arc.LandingVelocity);
-            failed += (takeoff.Valid ? 0 : 1) + (landing.Valid ? 0 : 1);
-
-            (AnimationFrame[] jumpFrames, float[] breaks, float[] makes, int bad) = AnimateJump(arc, takeoff, landing, clock, frameRate);
-            colliding += bad;
-
-            // Contact phases: takeoff contacts continue the previous landing's when the same limb holds the same point.
-            var holding = new HashSet<int>();
-            foreach (LimbContact c in takeoff.Contacts)
+            BallisticArc arc = jumps[j].Arc;
+            ContactConfiguration? landed = j > 0 ? clips[j - 1].Landing : null;
+            Clip clip;
+            if (landed is { Valid: true } && landed.Cone.Contains(arc.TakeoffVelocity, 1e-3f))
             {
-                holding.Add(c.Limb);
-                if (open.TryGetValue(c.Limb, out (Vector3 Position, float From) o) && Vector3.Distance(o.Position, c.Position) > 1e-4f)
+                clip = AnimateJump(j, jumps[j], landed, frameRate);
+                if (clip.Problems.Count > 0)
                 {
-                    phases.Add(new ContactPhase(c.Limb, o.Position, o.From, clock));
-                    open.Remove(c.Limb);
+                    Clip fresh = AnimateJump(j, jumps[j], null, frameRate);
+                    clip = fresh.Problems.Count < clip.Problems.Count ? fresh : clip;
                 }
+            }
+            else
+            {
+                clip = AnimateJump(j, jumps[j], null, frameRate);
+            }
 
-                if (!open.ContainsKey(c.Limb))
+            failed += (clip.Takeoff.Valid ? 0 : 1) + (clip.Landing.Valid ? 0 : 1);
+            problems.AddRange(clip.Problems);
+            clips.Add(clip);
+        }
+
+        // Assemble: flights, and between them the stances with their steps; contact phases along the way.
+        var frames = new List<AnimationFrame>();
+        var phases = new List<ContactPhase>();
+        var stances = new List<float>();
+        var open = new Dictionary<int, (Vector3 Position, float From)>();
+        int colliding = 0;
+        float clock = 0f;
+        for (int j = 0; j < clips.Count; j++)
+        {
+            Clip clip = clips[j];
+            if (j == 0)
+            {
+                foreach (LimbContact c in clip.Takeoff.Contacts)
                 {
-                    open[c.Limb] = (c.Position, clock);
+                    open[c.Limb] = (c.Position, 0f);
                 }
+            }
 
-                phases.Add(new ContactPhase(c.Limb, open[c.Limb].Position, open[c.Limb].From, clock + breaks[c.Limb]));
-                open.Remove(c.Limb);
+            // Takeoff contacts are held until they break; landing contacts are held from when they are made.
+            foreach (LimbContact c in clip.Takeoff.Contacts)
+            {
+                if (open.Remove(c.Limb, out (Vector3 Position, float From) o))
+                {
+                    phases.Add(new ContactPhase(c.Limb, o.Position, o.From, clock + clip.Breaks[c.Limb]));
+                }
             }
 
             foreach ((int limb, (Vector3 position, float from)) in open)
             {
-                if (!holding.Contains(limb))
-                {
-                    phases.Add(new ContactPhase(limb, position, from, clock));
-                }
+                phases.Add(new ContactPhase(limb, position, from, clock));
             }
 
             open.Clear();
-            foreach (LimbContact c in landing.Contacts)
+            foreach (LimbContact c in clip.Landing.Contacts)
             {
-                open[c.Limb] = (c.Position, clock + makes[c.Limb]);
+                open[c.Limb] = (c.Position, clock + clip.Makes[c.Limb]);
             }
 
-            frames.AddRange(j == 0 ? jumpFrames : jumpFrames[1..]);
-            clock += arc.FlightTime;
-            previousLanding = landing;
+            foreach (AnimationFrame f in j == 0 ? clip.Frames : clip.Frames[1..])
+            {
+                frames.Add(f with { Time = clock + f.Time });
+            }
+
+            colliding += clip.CollidingFrames;
+            clock += jumps[j].Arc.FlightTime;
+            if (j + 1 < clips.Count)
+            {
+                Stance stance = Restep(j + 1, jumps[j].Arc.Landing, clip.Landing, clips[j + 1].Takeoff, frameRate);
+                problems.AddRange(stance.Problems);
+                foreach ((int limb, float start, LimbContact? next) in stance.Steps)
+                {
+                    if (open.Remove(limb, out (Vector3 Position, float From) o))
+                    {
+                        phases.Add(new ContactPhase(limb, o.Position, o.From, clock + start));
+                    }
+
+                    if (next is LimbContact c)
+                    {
+                        open[limb] = (c.Position, clock + start + StepDuration);
+                    }
+                }
+
+                foreach (AnimationFrame f in stance.Frames.Skip(1))
+                {
+                    frames.Add(f with { Time = clock + f.Time });
+                }
+
+                stances.Add(stance.Duration);
+                clock += stance.Duration;
+            }
         }
 
         foreach ((int limb, (Vector3 position, float from)) in open)
@@ -116,14 +176,32 @@ public sealed class JumpAnimator
         }
 
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
-        return new JumpAnimation(Model, [.. jumps.Select(x => x.Arc)], frames, phases, failed, colliding);
+        problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
+        return new JumpAnimation(Model, [.. jumps.Select(x => x.Arc)], stances, frames, phases, problems, failed, colliding);
     }
 
-    /// <summary>Contact phases are stepped this many times finer than the frame rate, so that held contacts do not slide between frames.</summary>
-    private const int ContactSubsteps = 4;
+    /// <summary>One jump animated on its own: frames from takeoff (t = 0) to landing, the contact poses, when each limb's contact breaks and is made.</summary>
+    private sealed record Clip(AnimationFrame[] Frames, ContactConfiguration Takeoff, ContactConfiguration Landing, float[] Breaks, float[] Makes, int CollidingFrames, List<JumpProblem> Problems);
 
-    private (AnimationFrame[] Frames, float[] Breaks, float[] Makes, int Colliding) AnimateJump(BallisticArc arc, ContactConfiguration takeoff, ContactConfiguration landing, float clock, float frameRate)
+    /// <summary>A stance between two jumps: frames from 0 to its duration, and each step (limb, start time, the contact it steps to).</summary>
+    private sealed record Stance(float Duration, AnimationFrame[] Frames, List<(int Limb, float Start, LimbContact? Next)> Steps, List<JumpProblem> Problems);
+
+    private Clip AnimateJump(int index, Jump jump, ContactConfiguration? takeoffPose, float frameRate)
     {
+        BallisticArc arc = jump.Arc;
+        ContactConfiguration takeoff = takeoffPose ?? _contacts.Generate(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity);
+        ContactConfiguration landing = _contacts.Generate(arc.Landing, jump.Landing.Contacts, -arc.LandingVelocity);
+        var problems = new List<JumpProblem>();
+        if (!takeoff.Valid)
+        {
+            problems.Add(new JumpProblem(index, $"takeoff: {takeoff.Reason}"));
+        }
+
+        if (!landing.Valid)
+        {
+            problems.Add(new JumpProblem(index, $"landing: {landing.Reason}"));
+        }
+
         Rig rig = Model.Rig;
         int frames = Math.Max(2, (int)MathF.Ceiling(arc.FlightTime * frameRate));
         int steps = frames * ContactSubsteps;
@@ -140,6 +218,23 @@ public sealed class JumpAnimator
             held[l] = [];
             breaks[l] = Hold(arc, takeoff, l, 0, +1, steps / 2, held[l], h, steps);
             makes[l] = Hold(arc, landing, l, steps, -1, Math.Max(breaks[l] + 1, steps / 2), held[l], h, steps);
+        }
+
+        // A limb that lets go of one point and takes another must be in the air long enough for the eye (and for a
+        // foot's speed): at least MinAirTime between break and make, shortening both holds about mid-flight.
+        int minAir = (int)MathF.Ceiling(MinAirTime / h);
+        for (int l = 0; l < limbs; l++)
+        {
+            if (ContactOf(takeoff, l) is { } up && ContactOf(landing, l) is { } down && Vector3.Distance(up.Position, down.Position) > 0.02f && makes[l] - breaks[l] < minAir)
+            {
+                int centre = (breaks[l] + makes[l]) / 2;
+                breaks[l] = Math.Max(0, Math.Min(breaks[l], centre - (minAir / 2)));
+                makes[l] = Math.Min(steps, Math.Max(makes[l], breaks[l] + minAir));
+                if (makes[l] - breaks[l] < minAir)
+                {
+                    problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} would move from its takeoff to its landing contact in under {MinAirTime:0.##} s"));
+                }
+            }
         }
 
         // The times that become frames: every frame, and every fine step while some limb holds a contact.
@@ -170,7 +265,7 @@ public sealed class JumpAnimator
         for (int l = 0; l < limbs; l++)
         {
             rig.Solve(apexRoot, apexAngles, positions, rotations);
-            if (_contacts.Collision.LimbCollides(Model.Limbs[l], positions, rotations, null))
+            if (_collision.LimbCollides(Model.Limbs[l], positions, rotations, null))
             {
                 _contacts.KeepFree(apexRoot, apexAngles, l);
             }
@@ -213,6 +308,7 @@ public sealed class JumpAnimator
             float[] to = held[l][makes[l]];
             float[] limbApex = (float[])apexAngles.Clone();
             bool clear = false;
+            float firstHit = -1f;
             for (int attempt = 0; attempt <= MaxResamples && !clear; attempt++)
             {
                 // Re-sampling: the tucked and contact poses first, then random samples of the limb's database.
@@ -229,15 +325,28 @@ public sealed class JumpAnimator
                     _contacts.Database(l).Apply(random.Next(_contacts.Database(l).Count), limbApex);
                 }
 
+                // Every fine step is checked (angles between frames are interpolated the same way), the frames stored.
                 clear = true;
-                for (int k = 0; k < times.Length; k++)
+                int k = 0;
+                float[] probe = new float[rig.DofCount];
+                for (int i = 0; i <= steps; i++)
                 {
-                    int i = times[k];
+                    bool isFrame = k < times.Length && times[k] == i;
+                    float[] target = isFrame ? angles[k] : probe;
+                    if (isFrame)
+                    {
+                        k++;
+                    }
+                    else
+                    {
+                        Array.Copy(angles[Math.Max(0, k - 1)], probe, probe.Length);
+                    }
+
                     if (held[l].TryGetValue(i, out float[]? holding) && (i <= breaks[l] || i >= makes[l]))
                     {
                         foreach (int d in limb.ChainDofs)
                         {
-                            angles[k][d] = holding[d];
+                            target[d] = holding[d];
                         }
 
                         continue;
@@ -245,15 +354,19 @@ public sealed class JumpAnimator
 
                     foreach (int d in limb.ChainDofs)
                     {
-                        angles[k][d] = apex > breaks[l] && apex < makes[l]
+                        target[d] = apex > breaks[l] && apex < makes[l]
                             ? (i <= apex ? float.Lerp(from[d], limbApex[d], (i - breaks[l]) / (float)(apex - breaks[l])) : float.Lerp(limbApex[d], to[d], (i - apex) / (float)(makes[l] - apex)))
                             : float.Lerp(from[d], to[d], (i - breaks[l]) / (float)(makes[l] - breaks[l]));
                     }
 
-                    rig.Solve(arc.PoseAt(Time(i)), angles[k], positions, rotations);
-                    if (_contacts.Collision.LimbCollides(limb, positions, rotations, null))
+                    if (clear)
                     {
-                        clear = false;
+                        rig.Solve(arc.PoseAt(Time(i)), target, positions, rotations);
+                        if (_collision.LimbCollides(limb, positions, rotations, null))
+                        {
+                            clear = false;
+                            firstHit = Time(i);
+                        }
                     }
                 }
             }
@@ -261,17 +374,182 @@ public sealed class JumpAnimator
             if (!clear)
             {
                 colliding++;
+                problems.Add(new JumpProblem(index, $"{limb.Name} passes through the level in flight ({firstHit:0.000} s after takeoff) whatever pose it takes"));
             }
         }
 
+        // Bones of no limb (spine, head, tail…) follow the trunk: nothing to re-sample, so a hit is a problem.
         var result = new AnimationFrame[times.Length];
+        bool trunkReported = false;
         for (int k = 0; k < times.Length; k++)
         {
             float t = Time(times[k]);
-            result[k] = new AnimationFrame(clock + t, arc.PoseAt(t), angles[k]);
+            RootPose root = arc.PoseAt(t);
+            result[k] = new AnimationFrame(t, root, angles[k]);
+            if (!trunkReported)
+            {
+                rig.Solve(root, angles[k], positions, rotations);
+                int bone = _collision.OtherBoneColliding(positions);
+                if (bone >= 0)
+                {
+                    trunkReported = true;
+                    colliding++;
+                    problems.Add(new JumpProblem(index, $"bone '{rig.Joints[bone].Name}' passes through the level {t:0.000} s after takeoff"));
+                }
+            }
         }
 
-        return (result, [.. breaks.Select(b => Time(b))], [.. makes.Select(m => Time(m))], colliding);
+        return new Clip(result, takeoff, landing, [.. breaks.Select(b => Time(b))], [.. makes.Select(m => Time(m))], colliding, problems);
+    }
+
+    /// <summary>
+    /// The stance at <paramref name="root"/> between a landing and the next takeoff: each limb whose contact (or
+    /// pose) differs steps from the landing's to the takeoff's, one at a time, lifted clear of the level at mid-step,
+    /// while the others hold. No step when the takeoff pose is the landing pose.
+    /// </summary>
+    private Stance Restep(int nextJump, RootPose root, ContactConfiguration landing, ContactConfiguration takeoff, float frameRate)
+    {
+        var steps = new List<(int Limb, float Start, LimbContact? Next)>();
+        var problems = new List<JumpProblem>();
+        float[] q = (float[])landing.Angles.Clone();
+        var frames = new List<AnimationFrame> { new(0f, root, (float[])q.Clone()) };
+        if (ReferenceEquals(landing, takeoff))
+        {
+            return new Stance(0f, [.. frames], steps, problems);
+        }
+
+        Rig rig = Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        int perStep = Math.Max(4, (int)MathF.Ceiling(StepDuration * frameRate));
+        float clock = 0f;
+        for (int l = 0; l < Model.Limbs.Count; l++)
+        {
+            RigLimb limb = Model.Limbs[l];
+            LimbContact? from = ContactOf(landing, l);
+            LimbContact? to = ContactOf(takeoff, l);
+            bool samePoint = from is { } a && to is { } b && Vector3.Distance(a.Position, b.Position) <= 1e-4f;
+            bool sameAngles = limb.ChainDofs.All(d => MathF.Abs(q[d] - takeoff.Angles[d]) <= 1e-4f);
+            if ((samePoint || (from is null && to is null)) && sameAngles)
+            {
+                continue;
+            }
+
+            // Mid-step: the effector lifted along the surface normal above the middle of its travel, by IK.
+            float[] start = (float[])q.Clone();
+            float[] end = (float[])q.Clone();
+            foreach (int d in limb.ChainDofs)
+            {
+                end[d] = takeoff.Angles[d];
+            }
+
+            rig.Solve(root, start, positions, rotations);
+            Vector3 p0 = limb.EffectorPosition(positions, rotations);
+            rig.Solve(root, end, positions, rotations);
+            Vector3 p1 = limb.EffectorPosition(positions, rotations);
+            Vector3 up = (from?.Normal ?? Vector3.Zero) + (to?.Normal ?? Vector3.Zero);
+            up = up.LengthSquared() > 1e-6f ? Vector3.Normalize(up) : root.Up;
+            float[][]? path = null;
+            foreach (float lift in StepLifts)
+            {
+                float[] mid = (float[])start.Clone();
+                foreach (int d in limb.ChainDofs)
+                {
+                    mid[d] = float.Lerp(start[d], end[d], 0.5f);
+                }
+
+                _holdIk.Solve(root, mid, limb, ((p0 + p1) * 0.5f) + (up * lift), null);
+                float[][] candidate = Swing(start, mid, end, limb, perStep);
+                if (SwingClear(root, candidate, limb, from, to, positions, rotations))
+                {
+                    path = candidate;
+                    break;
+                }
+            }
+
+            if (path is null)
+            {
+                // No clear lifted swing: the tucked pose at mid-step, then give up honestly.
+                float[] tucked = (float[])start.Clone();
+                foreach (int d in limb.ChainDofs)
+                {
+                    tucked[d] = Model.FlexionPose[d];
+                }
+
+                path = Swing(start, tucked, end, limb, perStep);
+                if (!SwingClear(root, path, limb, from, to, positions, rotations))
+                {
+                    problems.Add(new JumpProblem(nextJump, $"{limb.Name} cannot step to its takeoff contact without passing through the level"));
+                }
+            }
+
+            steps.Add((l, clock, to));
+            for (int k = 1; k < path.Length; k++)
+            {
+                frames.Add(new AnimationFrame(clock + (StepDuration * k / (path.Length - 1)), root, path[k]));
+            }
+
+            Array.Copy(end, q, q.Length);
+            clock += StepDuration;
+        }
+
+        // Angles of no limb (the trunk's) are the contact pose's in both; any difference is taken over at the end.
+        float[] last = (float[])takeoff.Angles.Clone();
+        if (!frames[^1].Angles.AsSpan().SequenceEqual(last))
+        {
+            clock += 1f / frameRate;
+            frames.Add(new AnimationFrame(clock, root, last));
+        }
+
+        return new Stance(clock, [.. frames], steps, problems);
+    }
+
+    /// <summary>Keys of one limb's swing: start → mid → end in <paramref name="count"/> steps (smoothstep in time).</summary>
+    private static float[][] Swing(float[] start, float[] mid, float[] end, RigLimb limb, int count)
+    {
+        var keys = new float[count + 1][];
+        for (int k = 0; k <= count; k++)
+        {
+            float s = k / (float)count;
+            s = s * s * (3f - (2f * s));
+            float[] q = (float[])start.Clone();
+            foreach (int d in limb.ChainDofs)
+            {
+                q[d] = s <= 0.5f ? float.Lerp(start[d], mid[d], s * 2f) : float.Lerp(mid[d], end[d], (s - 0.5f) * 2f);
+            }
+
+            keys[k] = q;
+        }
+
+        return keys;
+    }
+
+    private bool SwingClear(RootPose root, float[][] path, RigLimb limb, LimbContact? from, LimbContact? to, Vector3[] positions, Quaternion[] rotations)
+    {
+        for (int k = 0; k < path.Length; k++)
+        {
+            Model.Rig.Solve(root, path[k], positions, rotations);
+            Vector3? near = k == 0 ? from?.Position : k == path.Length - 1 ? to?.Position : null;
+            if (_collision.LimbCollides(limb, positions, rotations, near))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
+    {
+        foreach (LimbContact c in config.Contacts)
+        {
+            if (c.Limb == limb)
+            {
+                return c;
+            }
+        }
+
+        return null;
     }
 
     /// <summary>
@@ -285,16 +563,7 @@ public sealed class JumpAnimator
         RigLimb limb = Model.Limbs[l];
         float[] q = (float[])config.Angles.Clone();
         held[start] = (float[])q.Clone();
-        LimbContact? target = null;
-        foreach (LimbContact c in config.Contacts)
-        {
-            if (c.Limb == l)
-            {
-                target = c;
-            }
-        }
-
-        if (target is not LimbContact contact)
+        if (ContactOf(config, l) is not LimbContact contact)
         {
             return start;
         }
@@ -312,7 +581,7 @@ public sealed class JumpAnimator
             }
 
             rig.Solve(root, q, positions, rotations);
-            if (_contacts.Collision.LimbCollides(limb, positions, rotations, contact.Position))
+            if (_collision.LimbCollides(limb, positions, rotations, contact.Position))
             {
                 break;
             }

@@ -11,7 +11,8 @@ namespace Ballistic.Planner.Contacts;
 /// FINDCONTACTS and COMPUTECONE of the paper: for a root pose, each limb whose workspace Wk touches an acceptable
 /// surface gets an estimated contact on the largest such surface, at the point of the mesh nearest the centre of Wk's
 /// intersection with it, with the normal of the triangle that point lies on. A surface is acceptable when the limb's
-/// filter accepts it and its face is turned toward the trunk (the underside of a slab the workspace pierces is not).
+/// filter accepts it, its face is turned toward the trunk (the underside of a slab the workspace pierces is not) and
+/// the contact point can be seen from the trunk centre (not the floor under a crate the workspace reaches into).
 /// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. Thread-safe.
 /// </summary>
 public sealed class ContactEstimator
@@ -139,33 +140,64 @@ public sealed class ContactEstimator
             parts[slot].Normal += normal * area;
         }
 
-        int best = -1;
-        float bestArea = MinContactArea;
+        // Surfaces by decreasing area (ties: lower id): the largest one the limb can see from the trunk wins.
+        Span<int> order = stackalloc int[partCount];
         for (int i = 0; i < partCount; i++)
         {
-            if (parts[i].Area > bestArea || (parts[i].Area == bestArea && best >= 0 && parts[i].Surface < parts[best].Surface))
+            order[i] = i;
+        }
+
+        for (int i = 1; i < partCount; i++)
+        {
+            for (int k = i; k > 0 && Before(parts[order[k]], parts[order[k - 1]]); k--)
             {
-                best = i;
-                bestArea = parts[i].Area;
+                (order[k], order[k - 1]) = (order[k - 1], order[k]);
             }
         }
 
-        if (best < 0)
+        foreach (int p in order)
         {
-            return false;
+            if (!(parts[p].Area > MinContactArea))
+            {
+                break;
+            }
+
+            if (PointOn(parts[p], limb, workspace, pose.Position, scratch) is not { } onMesh)
+            {
+                continue;
+            }
+
+            // A surface hidden from the trunk (the floor under a crate the workspace reaches into) cannot be reached.
+            Vector3 seen = onMesh.Position + (onMesh.Normal * 0.01f);
+            if (_bvh.Raycast(pose.Position, seen - pose.Position, 1f, out _))
+            {
+                continue;
+            }
+
+            ContactSurface surfaceInfo = _surfaces.Surfaces[parts[p].Surface];
+            float mu = _level.Materials[surfaceInfo.MaterialIndex].Friction ?? _character.Friction;
+            contact = new Contact(limbIndex, onMesh.Position, onMesh.Normal, mu, parts[p].Surface);
+            return true;
         }
 
-        // The patch's centre lies off a curved surface: the contact is the point of the patch's own mesh nearest to
-        // it, or when that point leaves Wk the centre of the triangle's piece inside Wk (on the triangle and inside Wk,
-        // the piece being convex), with that triangle's normal.
-        SurfacePart chosen = parts[best];
-        Vector3 centre = chosen.Moment / chosen.Area;
-        Vector3 position = default;
-        Vector3 onNormal = default;
+        return false;
+    }
+
+    private static bool Before(in SurfacePart a, in SurfacePart b) => a.Area > b.Area || (a.Area == b.Area && a.Surface < b.Surface);
+
+    /// <summary>
+    /// The patch's centre lies off a curved surface: the contact is the point of the patch's own mesh nearest to it,
+    /// or when that point leaves Wk the centre of the triangle's piece inside Wk (on the triangle and inside Wk, the
+    /// piece being convex), with that triangle's normal.
+    /// </summary>
+    private (Vector3 Position, Vector3 Normal)? PointOn(in SurfacePart part, Limb limb, in OrientedBox workspace, Vector3 trunk, List<int> triangles)
+    {
+        Vector3 centre = part.Moment / part.Area;
+        (Vector3 Position, Vector3 Normal)? best = null;
         float nearest = float.PositiveInfinity;
-        foreach (int t in scratch)
+        foreach (int t in triangles)
         {
-            if (_surfaces.SurfaceOf(t) != chosen.Surface)
+            if (_surfaces.SurfaceOf(t) != part.Surface)
             {
                 continue;
             }
@@ -178,26 +210,21 @@ public sealed class ContactEstimator
             }
 
             (float area, Vector3 centroid) = BoxClipper.ClipArea(workspace, triangle);
-            if (area <= 0f || !FacesTrunk(normal, centroid, pose.Position))
+            if (area <= 0f || !FacesTrunk(normal, centroid, trunk))
             {
                 continue;
             }
 
-            // Nearest to the centre along the surface; the triangle's own clipped centre is where the contact goes.
             Vector3 closest = triangle.ClosestPoint(centre);
             float distance = Vector3.DistanceSquared(closest, centre);
             if (distance < nearest)
             {
                 nearest = distance;
-                position = workspace.Contains(closest) ? closest : centroid;
-                onNormal = normal;
+                best = (workspace.Contains(closest) ? closest : centroid, normal);
             }
         }
 
-        ContactSurface surfaceInfo = _surfaces.Surfaces[chosen.Surface];
-        float mu = _level.Materials[surfaceInfo.MaterialIndex].Friction ?? _character.Friction;
-        contact = new Contact(limbIndex, position, onNormal, mu, chosen.Surface);
-        return true;
+        return best;
     }
 
     /// <summary>

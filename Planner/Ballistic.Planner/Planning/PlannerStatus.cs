@@ -20,4 +20,10 @@ public enum PlannerStatus
 
     /// <summary>The roadmap holds no sequence of jumps from start to goal.</summary>
     NoPath,
+
+    /// <summary>
+    /// Paths exist, but none that the whole body can perform cleanly (contact poses passing the no-slip test, no
+    /// bone through the level, contacts held): every jump set aside is reported with its reason.
+    /// </summary>
+    AnimationFailed,
 }

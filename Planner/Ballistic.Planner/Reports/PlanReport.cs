@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Reports;
 
@@ -19,4 +20,10 @@ public sealed record PlanReport(string LevelPath, PlanningScene Scene, Vector3 F
 {
     /// <summary>The whole-body animation of the path, when one was made.</summary>
     public AnimationReport? Animation { get; init; }
+
+    /// <summary>The endpoint tolerance of the request.</summary>
+    public EndpointTolerance Tolerance { get; init; } = new();
+
+    /// <summary>Jumps set aside because the whole body could not perform them, with the reasons.</summary>
+    public IReadOnlyList<RejectedJump> Rejected { get; init; } = [];
 }

@@ -9,12 +9,16 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Reports;
 
 /// <summary>
 /// Writes a plan as the <c>ballistic.plan/1</c> JSON report other tools read. Positions are trunk centres in world
-/// metres (Y up), rotations unit quaternions [x, y, z, w], velocities m/s, times seconds.
+/// metres (Y up), rotations unit quaternions [x, y, z, w], velocities m/s, times seconds. Besides the jumps it
+/// states where the start and goal stances stand relative to the requested points (<c>start</c>, <c>goal</c>:
+/// contact centre, distances across and up/down) and the jumps set aside because the body could not perform them
+/// (<c>rejectedJumps</c>, with reasons).
 /// </summary>
 public static class PlanReportWriter
 {
@@ -30,6 +34,7 @@ public static class PlanReportWriter
         PlannerStatus.InvalidStart => "invalid_start",
         PlannerStatus.InvalidGoal => "invalid_goal",
         PlannerStatus.Cancelled => "cancelled",
+        PlannerStatus.AnimationFailed => "animation_failed",
         _ => throw new ArgumentOutOfRangeException(nameof(status), status, "Unknown status."),
     };
 
@@ -64,7 +69,15 @@ public static class PlanReportWriter
             w.WriteStartObject("request");
             Vector("from", report.From);
             Vector("to", report.To);
+            w.WriteStartObject("tolerance");
+            w.WriteNumber("across", report.Tolerance.Across);
+            w.WriteNumber("upDown", report.Tolerance.UpDown);
             w.WriteEndObject();
+            w.WriteEndObject();
+
+            // Where the stances stand: their contacts' centre and its distances from the requested points.
+            Placement("start", report.Result.StartPlacement);
+            Placement("goal", report.Result.GoalPlacement);
 
             w.WriteString("status", StatusName(report.Result.Status));
             w.WriteString("reason", report.Result.Reason);
@@ -95,6 +108,18 @@ public static class PlanReportWriter
 
             w.WriteEndArray();
 
+            w.WriteStartArray("rejectedJumps");
+            foreach (RejectedJump rejected in report.Rejected)
+            {
+                w.WriteStartObject();
+                Vector("from", rejected.Takeoff.Pose.Position);
+                Vector("to", rejected.Landing.Pose.Position);
+                w.WriteString("reason", rejected.Reason);
+                w.WriteEndObject();
+            }
+
+            w.WriteEndArray();
+
             if (report.Animation is { } animation)
             {
                 WriteAnimation(w, animation);
@@ -116,6 +141,30 @@ public static class PlanReportWriter
                 w.WriteNumberValue(v.Y);
                 w.WriteNumberValue(v.Z);
                 w.WriteEndArray();
+            }
+
+            void Placement(string name, EndpointPlacement? placement)
+            {
+                if (placement is null)
+                {
+                    return;
+                }
+
+                w.WriteStartObject(name);
+                Vector("requested", placement.Requested);
+                w.WriteBoolean("placed", placement.Placed);
+                if (placement.Placed)
+                {
+                    Vector("contactCentre", placement.ContactCentre);
+                    w.WriteNumber("across", placement.Across);
+                    w.WriteNumber("upDown", placement.UpDown);
+                }
+                else if (placement.NearestValid is float nearest)
+                {
+                    w.WriteNumber("nearestValidPose", nearest);
+                }
+
+                w.WriteEndObject();
             }
 
             void Pose(RoadmapNode node)

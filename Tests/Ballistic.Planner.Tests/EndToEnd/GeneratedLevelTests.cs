@@ -15,7 +15,8 @@ public sealed class GeneratedLevelTests
     [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
     public void PlansAcrossTheBundledLevelsObeyThePhysics(string levelName, string characterName, float x0, float z0, float x1, float z1)
     {
-        (PlanningScene scene, BakeResult bake, PlanResult plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
+        (PlanningScene scene, BakeResult bake, AnimatedPlan animated) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
+        PlanResult plan = animated.Result;
         Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
         Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
         Assert.That(plan.Jumps, Is.Not.Empty);

@@ -96,7 +96,7 @@ public sealed class CharacterSpecFileTests
         Assert.Multiple(() =>
         {
             Assert.That(animation.ContactPhases, Is.Not.Empty);
-            Assert.That(animation.Duration, Is.EqualTo(plan.TotalFlightTime).Within(1e-3f));
+            Assert.That(animation.Duration, Is.EqualTo(plan.TotalFlightTime + animation.Stances.Sum()).Within(1e-3f));
             Assert.That(animation.CollidingFrames, Is.Zero);
         });
     }

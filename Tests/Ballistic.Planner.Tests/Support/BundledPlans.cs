@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
@@ -6,17 +7,20 @@ using Ballistic.Planner.Query;
 
 namespace Ballistic.Planner.Tests.Support;
 
-/// <summary>End-to-end plans on the bundled levels: roofs or ground near two (x, z) points, a bake until they connect, a query.</summary>
+/// <summary>
+/// End-to-end plans on the bundled levels: roofs or ground near two (x, z) points, planned and animated by the
+/// library's one use case (bake until connected, query, animate with lazy repair).
+/// </summary>
 internal static class BundledPlans
 {
-    public static (PlanningScene Scene, BakeResult Bake, PlanResult Plan) Plan(string levelName, string characterName, float x0, float z0, float x1, float z1, int maxNodes = 800)
+    public static (PlanningScene Scene, BakeResult Bake, AnimatedPlan Plan) Plan(string levelName, string characterName, float x0, float z0, float x1, float z1, int maxNodes = 800)
     {
         Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
         var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
         Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
         Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
-        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, Threads = 2, MaxNodes = maxNodes, Start = from, Goal = to, StopWhenConnected = true });
-        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model(characterName)));
+        (AnimatedPlan plan, BakeResult bake) = planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = maxNodes });
         return (scene, bake, plan);
     }
 }

@@ -146,7 +146,7 @@ internal static class PlanAudit
         foreach (Contact contact in node.Contacts)
         {
             sum += contact.Normal;
-            (float distance, Vector3 normal) = NearestSurface(scene, contact.Position);
+            (float distance, Vector3 normal) = NearestSurface(scene, contact.Position, contact.Normal);
             float angle = MathF.Acos(Math.Clamp(Vector3.Dot(normal, contact.Normal), -1f, 1f)) * 180f / MathF.PI;
             report.MaxContactOffMesh = MathF.Max(report.MaxContactOffMesh, distance);
             report.MaxContactNormalError = MathF.Max(report.MaxContactNormalError, angle);
@@ -184,6 +184,7 @@ internal static class PlanAudit
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         report.Animated = true;
+        report.AnimatorProblems = [.. animation.Problems.Select(p => $"jump {p.Jump}: {p.Reason}")];
         int before = report.Violations.Count;
 
         // Stance effectors hold their contact points (sampled at 240 Hz), on the mesh.
@@ -290,8 +291,11 @@ internal static class PlanAudit
         return false;
     }
 
-    /// <summary>Distance from <paramref name="p"/> to the nearest triangle and that triangle's normal.</summary>
-    public static (float Distance, Vector3 Normal) NearestSurface(PlanningScene scene, Vector3 p)
+    /// <summary>
+    /// Distance from <paramref name="p"/> to the nearest triangle and that triangle's normal; among triangles equally
+    /// near (within 1 mm: coincident faces, shared edges) the one whose normal is closest to <paramref name="expected"/>.
+    /// </summary>
+    public static (float Distance, Vector3 Normal) NearestSurface(PlanningScene scene, Vector3 p, Vector3? expected = null)
     {
         var near = new List<int>();
         for (float r = 0.05f; r <= 1.7f; r *= 2f)
@@ -305,15 +309,24 @@ internal static class PlanAudit
         }
 
         float best = float.PositiveInfinity;
+        foreach (int t in near)
+        {
+            best = MathF.Min(best, Vector3.Distance(scene.Level.Triangles[t].ClosestPoint(p), p));
+        }
+
         Vector3 normal = Vector3.UnitY;
+        float agreement = float.NegativeInfinity;
         foreach (int t in near)
         {
             Triangle tri = scene.Level.Triangles[t];
-            float d = Vector3.Distance(tri.ClosestPoint(p), p);
-            if (d < best - 1e-6f)
+            if (Vector3.Distance(tri.ClosestPoint(p), p) <= best + 1e-3f)
             {
-                best = d;
-                normal = tri.Normal;
+                float dot = expected is Vector3 e ? Vector3.Dot(tri.Normal, e) : 0f;
+                if (dot > agreement)
+                {
+                    agreement = dot;
+                    normal = tri.Normal;
+                }
             }
         }
 
@@ -350,6 +363,9 @@ internal sealed class AuditReport(string name, PlannerStatus status, string reas
 
     public bool Animated { get; set; }
 
+    /// <summary>What the animator itself said was wrong (not an audit finding).</summary>
+    public List<string> AnimatorProblems { get; set; } = [];
+
     public bool CleanAnimation { get; set; }
 
     /// <summary>Exact, every invariant held, animated cleanly.</summary>
@@ -359,5 +375,6 @@ internal sealed class AuditReport(string name, PlannerStatus status, string reas
     public bool WrongAnswer => Status == PlannerStatus.Exact && Violations.Count > 0;
 
     public override string ToString() =>
-        $"{Name}: {Status} ({Reason})" + (Violations.Count > 0 ? "; " + string.Join("; ", Violations.Take(4)) + (Violations.Count > 4 ? $" (+{Violations.Count - 4} more)" : "") : "");
+        $"{Name}: {Status} ({Reason})" + (Violations.Count > 0 ? "; " + string.Join("; ", Violations.Take(4)) + (Violations.Count > 4 ? $" (+{Violations.Count - 4} more)" : "") : "") +
+        (AnimatorProblems.Count > 0 ? "; animator: " + string.Join("; ", AnimatorProblems.Take(3)) : "");
 }

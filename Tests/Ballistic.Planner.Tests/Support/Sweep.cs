@@ -16,13 +16,13 @@ namespace Ballistic.Planner.Tests.Support;
 internal static class Sweep
 {
     /// <summary>A scene and animator for one level and character, built once per sweep.</summary>
-    public sealed record Setup(string LevelName, PlanningScene Scene, CharacterModel Model, JumpAnimator Animator);
+    public sealed record Setup(string LevelName, PlanningScene Scene, CharacterModel Model, AnimatedPlanner Planner);
 
     public static Setup Prepare(string levelName, Level level, string character)
     {
         var scene = PlanningScene.Create(level, CharacterPresets.Get(character));
         CharacterModel model = CharacterPresets.Model(character);
-        return new Setup(levelName, scene, model, new JumpAnimator(scene, model));
+        return new Setup(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
     }
 
     /// <summary>Plans, animates and audits one request.</summary>
@@ -30,10 +30,8 @@ internal static class Sweep
     {
         string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
         PlanningScene scene = setup.Scene;
-        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Start = from, Goal = to, StopWhenConnected = true });
-        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
-        JumpAnimation? animation = plan.Status == PlannerStatus.Exact && plan.Jumps.Count > 0 ? setup.Animator.Animate(plan.Jumps) : null;
-        return PlanAudit.Check(name, scene, from, to, plan, animation);
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes });
+        return PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
     }
 
     /// <summary>

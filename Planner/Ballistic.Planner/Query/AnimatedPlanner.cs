@@ -1,0 +1,143 @@
+using System.Diagnostics;
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Query;
+
+/// <summary>
+/// The plan use case: query a roadmap, animate the whole body along the path, and repair lazily: a jump whose
+/// animation is not clean (no contact pose passing the no-slip test, a bone through the level, a contact that
+/// cannot be held or stepped to) is set aside for this request and A* searches again, for a few rounds. The result
+/// is exact only with a clean animation; otherwise a failure naming every jump set aside and why. Never a success
+/// whose animation cuts through the level.
+/// </summary>
+public sealed class AnimatedPlanner
+{
+    /// <summary>Searches made at most per request.</summary>
+    public const int DefaultRounds = 6;
+
+    private readonly PlanningScene _scene;
+
+    /// <summary>Creates the use case for an animator on a scene of its character's reduced model.</summary>
+    public AnimatedPlanner(PlanningScene scene, JumpAnimator animator)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(animator);
+        _scene = scene;
+        Animator = animator;
+    }
+
+    /// <summary>The whole-body animator.</summary>
+    public JumpAnimator Animator { get; }
+
+    /// <summary>
+    /// Bakes a roadmap from the requested start and goal until they connect, plans and animates; when no path
+    /// animates cleanly (or none exists yet), bakes on (the same seed: the larger roadmap holds the smaller one) to
+    /// twice the nodes, up to <see cref="BakeSettings.MaxNodes"/>, and plans again.
+    /// </summary>
+    /// <param name="from">Requested start point, world metres.</param>
+    /// <param name="to">Requested goal point, world metres.</param>
+    /// <param name="bake">Seed, threads, node budget (<see cref="BakeSettings.MaxNodes"/>, required) and endpoint tolerance; its start, goal and stop-when-connected are set here.</param>
+    /// <param name="termination">An extra condition stopping every bake (cancellation, time budget).</param>
+    /// <param name="progress">Receives the bakes' progress.</param>
+    /// <exception cref="ArgumentException">The settings are invalid or have no node budget.</exception>
+    public (AnimatedPlan Plan, BakeResult Bake) BakeAndPlan(Vector3 from, Vector3 to, BakeSettings bake, TerminationCondition? termination = null, IProgress<BakeState>? progress = null)
+    {
+        ArgumentNullException.ThrowIfNull(bake);
+        if (bake.MaxNodes is not int budget)
+        {
+            throw new ArgumentException("BakeAndPlan needs a node budget (BakeSettings.MaxNodes).", nameof(bake));
+        }
+
+        var baker = new RoadmapBaker(_scene);
+        var query = new QuerySettings { Tolerance = bake.Tolerance };
+        BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
+        while (true)
+        {
+            if (result.Status is PlannerStatus.InvalidStart or PlannerStatus.InvalidGoal or PlannerStatus.Cancelled)
+            {
+                var failed = new PlanResult(result.Status, result.Reason, null, null, [], result.Elapsed) { StartPlacement = result.StartPlacement, GoalPlacement = result.GoalPlacement };
+                return (new AnimatedPlan(failed, null, [], 0), result);
+            }
+
+            AnimatedPlan plan = Plan(result.Roadmap, from, to, query);
+            int nodes = result.Roadmap.Nodes.Count;
+            if (plan.Result.Status == PlannerStatus.Exact || nodes >= budget || result.Status != PlannerStatus.Exact)
+            {
+                return (plan, result);
+            }
+
+            int next = Math.Min(budget, Math.Max(64, 2 * nodes));
+            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next }, termination, progress);
+        }
+    }
+
+    /// <summary>Plans from <paramref name="from"/> to <paramref name="to"/> (world metres) on <paramref name="roadmap"/> and animates the path.</summary>
+    /// <param name="roadmap">A roadmap baked for the scene's level and character.</param>
+    /// <param name="from">Requested start point, on or near a surface, world metres.</param>
+    /// <param name="to">Requested goal point, world metres.</param>
+    /// <param name="settings">Query settings (endpoint tolerance, connections).</param>
+    /// <param name="rounds">Searches made at most.</param>
+    /// <param name="frameRate">Animation frames per second.</param>
+    /// <exception cref="ArgumentException">The roadmap was baked for another level or character, or a count is not positive.</exception>
+    public AnimatedPlan Plan(Roadmap roadmap, Vector3 from, Vector3 to, QuerySettings? settings = null, int rounds = DefaultRounds, float frameRate = 60f)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
+        var clock = Stopwatch.StartNew();
+        var query = new PathQuery(_scene, roadmap);
+        var rejectedPairs = new HashSet<(int From, int To)>();
+        var rejected = new List<RejectedJump>();
+        PlanResult result = query.Plan(from, to, settings, rejectedPairs);
+        for (int round = 1; ; round++)
+        {
+            if (result.Status != PlannerStatus.Exact)
+            {
+                PlanResult failed = rejected.Count == 0
+                    ? result
+                    : result with
+                    {
+                        Status = PlannerStatus.AnimationFailed,
+                        Reason = $"no path animates cleanly: {rejected.Count} jumps set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")}) and then {result.Reason}",
+                    };
+                return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, rejected, round);
+            }
+
+            if (result.Jumps.Count == 0)
+            {
+                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, rejected, round);
+            }
+
+            JumpAnimation animation = Animator.Animate(result.Jumps, frameRate);
+            if (animation.IsClean)
+            {
+                string note = rejected.Count == 0 ? "" : $" after setting aside {rejected.Count} jumps the body could not perform";
+                return new AnimatedPlan(result with { Reason = result.Reason + note, Elapsed = clock.Elapsed }, animation, rejected, round);
+            }
+
+            foreach (JumpProblem problem in animation.Problems)
+            {
+                Jump jump = result.Jumps[problem.Jump];
+                if (rejectedPairs.Add((jump.Takeoff.Id, jump.Landing.Id)))
+                {
+                    rejected.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
+                }
+            }
+
+            if (round >= rounds)
+            {
+                PlanResult failed = result with
+                {
+                    Status = PlannerStatus.AnimationFailed,
+                    Reason = $"no path animated cleanly in {rounds} searches: {rejected.Count} jumps set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")})",
+                    Jumps = [],
+                    Elapsed = clock.Elapsed,
+                };
+                return new AnimatedPlan(failed, null, rejected, round);
+            }
+
+            result = query.Plan(from, to, settings, rejectedPairs);
+        }
+    }
+}
