@@ -236,6 +236,33 @@ public sealed class ForeignRigTests
     }
 
     [TestCaseSource(nameof(Characters))]
+    public void ASavedSpecReloadsToTheSameCharacter(string name)
+    {
+        ForeignCharacter character = Character(name);
+        (string gltf, string spec) = character.Write(_folder);
+        (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, spec);
+        string saved = Path.Combine(_folder, "saved.limbs.json");
+        CharacterSpecFile.Save(model, reduced, saved);
+        (CharacterModel again, ReducedCharacter againReduced) = CharacterSpecFile.Load(gltf, saved);
+        Assert.Multiple(() =>
+        {
+            Assert.That(again.Rig.Joints.Select(j => j.Name), Is.EqualTo(model.Rig.Joints.Select(j => j.Name)));
+            Assert.That(again.Rig.DofCount, Is.EqualTo(model.Rig.DofCount));
+            Assert.That(Vector3.Distance(again.Rig.RootOffset, model.Rig.RootOffset), Is.LessThan(1e-5f));
+            Assert.That(Vector3.Distance(againReduced.TrunkHalfExtents, reduced.TrunkHalfExtents), Is.LessThan(1e-5f));
+            Assert.That(again.BoneRadii, Is.EqualTo(model.BoneRadii).Within(1e-6f));
+            Assert.That(again.TrunkJoints, Is.EqualTo(model.TrunkJoints));
+            for (int l = 0; l < model.Limbs.Count; l++)
+            {
+                Assert.That(Vector3.Distance(again.Limbs[l].EffectorOffset, model.Limbs[l].EffectorOffset), Is.LessThan(1e-5f), model.Limbs[l].Name);
+                Assert.That(Vector3.Distance(again.Limbs[l].ContactNormal, model.Limbs[l].ContactNormal), Is.LessThan(1e-5f), model.Limbs[l].Name);
+                Assert.That(again.Limbs[l].Filter, Is.EqualTo(model.Limbs[l].Filter), model.Limbs[l].Name);
+            }
+        });
+        Assert.That(File.ReadAllText(saved), character.Spec.Contains("forwardAxis", StringComparison.Ordinal) ? Does.Contain("\"forwardAxis\": \"") : Does.Not.Contain("forwardAxis"));
+    }
+
+    [TestCaseSource(nameof(Characters))]
     public void TheReducedModelLoadsIntoAPlanningScene(string name)
     {
         ForeignCharacter character = Character(name);
