@@ -22,13 +22,18 @@ namespace Ballistic.Planner.Animation;
 public static class AnimatedGlbWriter
 {
     /// <summary>The animation as GLB bytes, with clip name <paramref name="clip"/>.</summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static byte[] ToBytes(JumpAnimation animation, string clip = "jumps")
     {
         ArgumentNullException.ThrowIfNull(animation);
         return Build(animation.Model, animation, clip);
     }
 
-    /// <summary>The character alone, in its rest pose (every angle 0), as a skinned GLB without animation.</summary>
+    /// <summary>
+    /// The character alone as a skinned GLB without animation: for a character loaded from a glTF, that file made
+    /// self-contained; otherwise the bone boxes in the rest pose (every angle 0).
+    /// </summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static byte[] ToBytes(CharacterModel model)
     {
         ArgumentNullException.ThrowIfNull(model);
@@ -344,6 +349,7 @@ public static class AnimatedGlbWriter
     private static bool Rigid(Matrix4x4 m, out float scale, out Quaternion rotation) => GltfSkeleton.TryRigid(m, out scale, out rotation);
 
     /// <summary>Writes the animation to <paramref name="path"/>.</summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static void Save(JumpAnimation animation, string path, string clip = "jumps") => OutputFile.Write(path, ToBytes(animation, clip));
 
     /// <summary>Flips quaternion keys whose dot product with the previous key is negative, so slerp takes the short way.</summary>

@@ -224,7 +224,12 @@ public sealed class GltfDocument
                     throw new GltfException($"{Name}: node {n} lists child {child?.ToJsonString() ?? "null"}, which is not a node.");
                 }
 
-                if (parents[c] >= 0 || c == n)
+                if (c == n)
+                {
+                    throw new GltfException($"{Name}: node {n} lists itself as a child.");
+                }
+
+                if (parents[c] >= 0)
                 {
                     throw new GltfException($"{Name}: node {c} has more than one parent.");
                 }
