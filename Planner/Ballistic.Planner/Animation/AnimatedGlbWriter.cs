@@ -8,21 +8,32 @@ using Ballistic.Planner.Rigs;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// Writes a character and its jump animation as one animated, skinned glTF binary (Godot and Blender import it):
-/// an <c>Armature</c> node holding the joint hierarchy (node names = joint names), a mesh of one box per bone skinned
-/// rigidly to it, and one clip whose channels are the root joint's translation and rotation (its world placement on
-/// the parabola) and every joint's local rotation, keyed at the animation's frames with linear interpolation.
+/// Writes a character and its jump animation as one animated, skinned glTF binary (Godot and Blender import it).
+/// A character loaded from a user's glTF (<see cref="CharacterModel.Source"/> set) is written as that file: its
+/// scenes, node hierarchy, skinned meshes, materials, textures and images (embedded), skins and clips, with one clip
+/// added whose channels target the original bone nodes: the rotation of every bone that moves, relative to its
+/// glTF parent (so anchor nodes between bones keep their place), and the translation and rotation of every root
+/// bone, relative to its non-bone ancestors' transforms (an <c>Armature</c> rotated or scaled stays as it is). A
+/// character built in code is written as an <c>Armature</c> node holding the joint hierarchy (node names = joint
+/// names), a mesh of one box per bone skinned rigidly to it, and one clip whose channels are the root joint's
+/// translation and rotation (its world placement on the parabola) and every joint's local rotation. Either way the
+/// clip is keyed at the animation's frames with linear interpolation; world frame Y up, metres, seconds.
 /// </summary>
 public static class AnimatedGlbWriter
 {
     /// <summary>The animation as GLB bytes, with clip name <paramref name="clip"/>.</summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static byte[] ToBytes(JumpAnimation animation, string clip = "jumps")
     {
         ArgumentNullException.ThrowIfNull(animation);
         return Build(animation.Model, animation, clip);
     }
 
-    /// <summary>The character alone, in its rest pose (every angle 0), as a skinned GLB without animation.</summary>
+    /// <summary>
+    /// The character alone as a skinned GLB without animation: for a character loaded from a glTF, that file made
+    /// self-contained; otherwise the bone boxes in the rest pose (every angle 0).
+    /// </summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static byte[] ToBytes(CharacterModel model)
     {
         ArgumentNullException.ThrowIfNull(model);
@@ -31,6 +42,11 @@ public static class AnimatedGlbWriter
 
     private static byte[] Build(CharacterModel model, JumpAnimation? animation, string clip)
     {
+        if (model.Source is CharacterSource source)
+        {
+            return BuildFromSource(model, source, animation, clip);
+        }
+
         Rig rig = model.Rig;
         int jointCount = rig.Joints.Count;
         var writer = new GlbWriter();
@@ -201,7 +217,139 @@ public static class AnimatedGlbWriter
         return writer.ToBytes();
     }
 
+    /// <summary>The user's glTF with the clip added: channels on the original bone nodes.</summary>
+    private static byte[] BuildFromSource(CharacterModel model, CharacterSource source, JumpAnimation? animation, string clip)
+    {
+        GlbWriter writer = GlbWriter.From(source.Document);
+        if (animation is null)
+        {
+            return writer.ToBytes();
+        }
+
+        Rig rig = model.Rig;
+        int jointCount = rig.Joints.Count;
+        GltfDocument document = source.Document;
+        int[] parentNode = document.NodeParents();
+        Matrix4x4[] world = document.WorldTransforms();
+        var jointOfNode = new Dictionary<int, int>();
+        for (int j = 0; j < jointCount; j++)
+        {
+            jointOfNode[source.JointNodes[j]] = j;
+        }
+
+        // Per joint: a root bone (no bone above it in the file) gets translation and rotation relative to its
+        // parent node's fixed world transform; any other bone a rotation relative to its parent node, whose world
+        // rotation is its rig parent's times the fixed rotation of the nodes in between (anchors).
+        var isRoot = new bool[jointCount];
+        var between = new Quaternion[jointCount];
+        var parentRotation = new Quaternion[jointCount];
+        var parentPosition = new Vector3[jointCount];
+        var parentScale = new float[jointCount];
+        JsonArray nodes = (JsonArray)writer.Root["nodes"]!;
+        for (int j = 0; j < jointCount; j++)
+        {
+            int node = source.JointNodes[j];
+            int parent = parentNode[node];
+            int boneAbove = parent;
+            while (boneAbove >= 0 && !jointOfNode.ContainsKey(boneAbove))
+            {
+                boneAbove = parentNode[boneAbove];
+            }
+
+            isRoot[j] = boneAbove < 0;
+            Matrix4x4 parentWorld = parent >= 0 ? world[parent] : Matrix4x4.Identity;
+            if (!Rigid(parentWorld, out parentScale[j], out parentRotation[j]))
+            {
+                throw new GltfException($"{document.Name}: the parent of bone '{rig.Joints[j].Name}' is not a rotation with a uniform scale.");
+            }
+
+            parentPosition[j] = parentWorld.Translation;
+            if (!isRoot[j])
+            {
+                Rigid(world[boneAbove], out _, out Quaternion above);
+                between[j] = Quaternion.Normalize(Quaternion.Conjugate(above) * parentRotation[j]);
+            }
+
+            // Animated nodes must carry translation, rotation and scale rather than a matrix.
+            if (nodes[node] is JsonObject json && json["matrix"] is not null && (isRoot[j] || rig.DofsOf(j) > 0))
+            {
+                Matrix4x4 local = document.LocalTransform(json);
+                Rigid(local, out float scale, out Quaternion rotation);
+                json.Remove("matrix");
+                json["translation"] = Array(local.Translation);
+                json["rotation"] = Array(rotation);
+                json["scale"] = new JsonArray(scale, scale, scale);
+            }
+        }
+
+        int frames = animation.Frames.Count;
+        float[] times = new float[frames];
+        var translations = new Vector3[jointCount][];
+        var rotations = new float[jointCount][];
+        for (int j = 0; j < jointCount; j++)
+        {
+            translations[j] = new Vector3[frames];
+            rotations[j] = new float[frames * 4];
+        }
+
+        var positions = new Vector3[jointCount];
+        var worldRotations = new Quaternion[jointCount];
+        for (int f = 0; f < frames; f++)
+        {
+            AnimationFrame frame = animation.Frames[f];
+            times[f] = frame.Time;
+            rig.Solve(frame.Root, frame.Angles, positions, worldRotations);
+            for (int j = 0; j < jointCount; j++)
+            {
+                Quaternion local;
+                if (isRoot[j])
+                {
+                    Quaternion inverse = Quaternion.Conjugate(parentRotation[j]);
+                    translations[j][f] = Vector3.Transform(positions[j] - parentPosition[j], inverse) / parentScale[j];
+                    local = inverse * worldRotations[j];
+                }
+                else
+                {
+                    local = Quaternion.Conjugate(worldRotations[rig.Joints[j].Parent] * between[j]) * worldRotations[j];
+                }
+
+                local = Quaternion.Normalize(local);
+                rotations[j][4 * f] = local.X;
+                rotations[j][(4 * f) + 1] = local.Y;
+                rotations[j][(4 * f) + 2] = local.Z;
+                rotations[j][(4 * f) + 3] = local.W;
+            }
+        }
+
+        EnsureShortestPaths(rotations, frames);
+        int input = writer.AddFloats(times, "SCALAR", 1);
+        var samplers = new JsonArray();
+        var channels = new JsonArray();
+        for (int j = 0; j < jointCount; j++)
+        {
+            int node = source.JointNodes[j];
+            if (isRoot[j])
+            {
+                samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddVector3(translations[j], target: null), ["interpolation"] = "LINEAR" });
+                channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = node, ["path"] = "translation" } });
+            }
+
+            if (isRoot[j] || rig.DofsOf(j) > 0)
+            {
+                samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddFloats(rotations[j], "VEC4", 4), ["interpolation"] = "LINEAR" });
+                channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = node, ["path"] = "rotation" } });
+            }
+        }
+
+        writer.Add("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels });
+        return writer.ToBytes();
+    }
+
+    /// <summary>Splits a row-vector transform into a uniform scale and a rotation; false when it is neither.</summary>
+    private static bool Rigid(Matrix4x4 m, out float scale, out Quaternion rotation) => GltfSkeleton.TryRigid(m, out scale, out rotation);
+
     /// <summary>Writes the animation to <paramref name="path"/>.</summary>
+    /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>
     public static void Save(JumpAnimation animation, string path, string clip = "jumps") => OutputFile.Write(path, ToBytes(animation, clip));
 
     /// <summary>Flips quaternion keys whose dot product with the previous key is negative, so slerp takes the short way.</summary>

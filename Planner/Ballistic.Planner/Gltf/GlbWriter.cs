@@ -22,6 +22,76 @@ public sealed class GlbWriter
         ["asset"] = new JsonObject { ["version"] = "2.0", ["generator"] = "Ballistic" },
     };
 
+    /// <summary>
+    /// A writer holding a copy of <paramref name="document"/>: its JSON (scenes, nodes, meshes, materials, textures,
+    /// skins, animations…) with every buffer merged into the one binary buffer and every image embedded in it, so the
+    /// result is a self-contained GLB. Accessor and buffer view indices are kept, so the copied JSON stays valid;
+    /// further accessors and objects are appended after them.
+    /// </summary>
+    /// <exception cref="GltfException">A buffer or image cannot be read, or the file uses an extension whose data cannot be moved (EXT_meshopt_compression).</exception>
+    public static GlbWriter From(GltfDocument document)
+    {
+        ArgumentNullException.ThrowIfNull(document);
+        if (document.Array("extensionsUsed").Any(e => e is JsonValue v && v.TryGetValue(out string? id) && id == "EXT_meshopt_compression"))
+        {
+            throw new GltfException($"{document.Name} uses EXT_meshopt_compression; export it without compression.");
+        }
+
+        var writer = new GlbWriter();
+        foreach ((string key, JsonNode? value) in document.Root)
+        {
+            if (key is not ("buffers" or "bufferViews" or "accessors"))
+            {
+                writer.Root[key] = value?.DeepClone();
+            }
+        }
+
+        if (writer.Root["asset"] is JsonObject asset)
+        {
+            asset["generator"] = "Ballistic";
+        }
+
+        long[] bases = new long[document.BufferCount];
+        for (int b = 0; b < bases.Length; b++)
+        {
+            bases[b] = writer.Append(document.Buffer(b).Span);
+        }
+
+        for (int v = 0; v < document.Array("bufferViews").Count; v++)
+        {
+            if (document.Array("bufferViews")[v] is not JsonObject view || view["buffer"] is not JsonValue bv || !bv.TryGetValue(out int buffer) || buffer < 0 || buffer >= bases.Length)
+            {
+                throw new GltfException($"{document.Name}: buffer view {v} does not name an existing buffer.");
+            }
+
+            var copy = (JsonObject)view.DeepClone();
+            copy["buffer"] = 0;
+            copy["byteOffset"] = bases[buffer] + ((view["byteOffset"] as JsonValue)?.TryGetValue(out long o) == true ? o : 0L);
+            writer._bufferViews.Add(copy);
+        }
+
+        foreach (JsonNode? accessor in document.Array("accessors"))
+        {
+            writer._accessors.Add(accessor?.DeepClone());
+        }
+
+        if (writer.Root["images"] is JsonArray images)
+        {
+            for (int i = 0; i < images.Count; i++)
+            {
+                if (images[i] is JsonObject image && image["uri"] is not null)
+                {
+                    (byte[] bytes, string mime) = document.ReadImage(i);
+                    image.Remove("uri");
+                    image["bufferView"] = writer.AddView(bytes, null);
+                    image["mimeType"] = mime;
+                }
+            }
+        }
+
+        return writer;
+    }
+
     /// <summary>Appends <paramref name="item"/> to root array <paramref name="key"/> (created when missing) and returns its index.</summary>
     public int Add(string key, JsonObject item)
     {
@@ -171,6 +241,18 @@ public sealed class GlbWriter
     {
         ArgumentNullException.ThrowIfNull(path);
         OutputFile.Write(path, ToBytes());
+    }
+
+    private long Append(ReadOnlySpan<byte> bytes)
+    {
+        while (_binary.Length % 4 != 0)
+        {
+            _binary.WriteByte(0);
+        }
+
+        long at = _binary.Length;
+        _binary.Write(bytes);
+        return at;
     }
 
     private int AddView(byte[] bytes, int? target)

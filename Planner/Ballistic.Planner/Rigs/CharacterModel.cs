@@ -6,6 +6,8 @@ namespace Ballistic.Planner.Rigs;
 /// </summary>
 public sealed class CharacterModel
 {
+    private readonly CharacterSource? _source;
+
     /// <summary>Creates a character model, checking that every reference pose fits the rig.</summary>
     /// <exception cref="RigException">A pose has the wrong number of angles or leaves a joint's limits, or a radius is missing.</exception>
     public CharacterModel(string name, Rig rig, IReadOnlyList<RigLimb> limbs, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> boneRadii, float[] contactPose, float[] flexionPose, float[] extendingPose)
@@ -65,4 +67,17 @@ public sealed class CharacterModel
 
     /// <summary>The stretched pose at the apex of a jump.</summary>
     public float[] ExtendingPose { get; }
+
+    /// <summary>
+    /// The rigged glTF this character was loaded from, with each joint's node, or <c>null</c> for a character built
+    /// in code. When set, the animated GLB carries the file's own meshes and skin rather than bone boxes.
+    /// </summary>
+    /// <exception cref="RigException">The source maps a different number of joints than the rig has.</exception>
+    public CharacterSource? Source
+    {
+        get => _source;
+        init => _source = value is null || value.JointNodes.Count == Rig.Joints.Count
+            ? value
+            : throw new RigException($"Character '{Name}': the source maps {value.JointNodes.Count} joints, but the rig has {Rig.Joints.Count}.");
+    }
 }

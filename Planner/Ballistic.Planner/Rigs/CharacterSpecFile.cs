@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Text;
+using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Characters;
@@ -11,31 +12,42 @@ namespace Ballistic.Planner.Rigs;
 /// <summary>
 /// The limb spec (<c>ballistic.character/1</c> JSON) that turns any rigged glTF character into a
 /// <see cref="CharacterModel"/>: for each limb its root bone, effector bone, contact point offset and contact normal
-/// in the effector bone's frame, contact kind and normal filter; optionally the degrees of freedom and limits of
-/// bones (degrees; limb bones not listed become ball joints of ±90°, other bones are fixed), the trunk bones, bone
-/// radii and the reference poses. Bones are the glTF skin's joints, matched by node name.
+/// in the effector bone's frame, contact kind and normal filter; optionally the glTF scene's up and forward axes,
+/// the degrees of freedom and limits of bones (degrees; limb bones not listed become ball joints of ±90°, other
+/// bones are fixed), the trunk bones, bone radii and the reference poses. Bones are the glTF skin's joints, matched
+/// by node name; a bone's rig parent is its nearest ancestor that is a bone (nodes in between, such as anchors, are
+/// folded into its rest offset and rotation), and when the skin has several root bones the one with the most limb
+/// bones below it is the rig's root joint, which the trunk box follows, the others hanging from it rigidly.
+/// What the spec leaves out is derived from the skinned mesh in the rest pose (see the README's "Characters").
 /// </summary>
 public static class CharacterSpecFile
 {
     /// <summary>The schema name of spec files.</summary>
     public const string Schema = "ballistic.character/1";
 
-    /// <summary>Loads a character from a rigged glTF file and its limb spec.</summary>
-    /// <exception cref="RigException">The spec or the glTF rig is unusable; the message names the file, bone or limb.</exception>
+    /// <summary>Radius of a bone without skinned vertices when the spec gives none, metres.</summary>
+    public const float DefaultBoneRadius = 0.03f;
+
+    /// <summary>
+    /// Loads a character from a rigged glTF file and its limb spec. The model's <see cref="CharacterModel.Source"/>
+    /// is the glTF, so the animated GLB carries its meshes.
+    /// </summary>
+    /// <exception cref="RigException">The spec or the glTF rig is unusable; the message names the file, the limb or bone and the key.</exception>
     public static (CharacterModel Model, ReducedCharacter Reduced) Load(string gltfPath, string specPath)
     {
         ArgumentNullException.ThrowIfNull(gltfPath);
         ArgumentNullException.ThrowIfNull(specPath);
-        JsonObject spec;
+        byte[] bytes;
         try
         {
-            spec = JsonNode.Parse(File.ReadAllBytes(specPath)) as JsonObject ?? throw new RigException($"{specPath} is not a JSON object.");
+            bytes = File.ReadAllBytes(specPath);
         }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException)
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
             throw new RigException($"Limb spec {specPath} cannot be read: {e.Message}", e);
         }
 
+        CharacterSpec spec = CharacterSpecReader.Read(bytes, specPath);
         GltfDocument document;
         try
         {
@@ -50,9 +62,18 @@ public static class CharacterSpecFile
         {
             return Build(document, spec, specPath);
         }
-        catch (Exception e) when (e is InvalidOperationException or FormatException or KeyNotFoundException or NullReferenceException or InvalidCastException)
+        catch (GltfException e)
         {
-            throw new RigException($"Limb spec {specPath} is malformed ({e.Message}).", e);
+            throw new RigException(e.Message, e);
+        }
+        catch (CharacterException e)
+        {
+            throw new RigException($"{specPath}: {e.Message}", e);
+        }
+        catch (Exception e) when (e is not RigException and not OutOfMemoryException)
+        {
+            // A shape of glTF JSON the reader did not foresee: say where, not the runtime's words.
+            throw new RigException($"{document.Name}: the rig cannot be read with {specPath}: the glTF's JSON has an unexpected shape ({e.GetType().Name}).", e);
         }
     }
 
@@ -79,13 +100,25 @@ public static class CharacterSpecFile
             };
         }
 
+        // A character loaded from a glTF leaves out the radii it derived from the mesh (a reload derives them again)
+        // and lists its fixed limb bones (a reload would otherwise make them ball joints).
+        CharacterSource? source = model.Source;
         var joints = new JsonObject();
         var radii = new JsonObject();
         for (int j = 0; j < rig.Joints.Count; j++)
         {
-            radii[rig.Joints[j].Name] = model.BoneRadii[j];
+            if (source is null || j >= source.DerivedRadii.Count || !source.DerivedRadii[j])
+            {
+                radii[rig.Joints[j].Name] = model.BoneRadii[j];
+            }
+
             if (rig.DofsOf(j) == 0)
             {
+                if (source is not null && model.Limbs.Any(l => l.Chain.Contains(j)))
+                {
+                    joints[rig.Joints[j].Name] = new JsonObject { ["axes"] = new JsonArray() };
+                }
+
                 continue;
             }
 
@@ -112,209 +145,208 @@ public static class CharacterSpecFile
             ["boneRadii"] = radii,
             ["poses"] = new JsonObject { ["contact"] = Pose(rig, model.ContactPose), ["flexion"] = Pose(rig, model.FlexionPose), ["extending"] = Pose(rig, model.ExtendingPose) },
         };
-        return Encoding.UTF8.GetBytes(root.ToJsonString(new JsonSerializerOptions { WriteIndented = true }) + "\n");
+        if (source is not null && (source.UpAxis != "+Y" || source.ForwardAxis != "+Z"))
+        {
+            root.Insert(2, "upAxis", source.UpAxis);
+            root.Insert(3, "forwardAxis", source.ForwardAxis);
+        }
+        return Encoding.UTF8.GetBytes(root.ToJsonString(new JsonSerializerOptions { WriteIndented = true, Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping }) + "\n");
     }
 
-    private static (CharacterModel, ReducedCharacter) Build(GltfDocument document, JsonObject spec, string specPath)
+    private static (CharacterModel, ReducedCharacter) Build(GltfDocument document, CharacterSpec spec, string specPath)
     {
-        string schema = spec["schema"]?.GetValue<string>() ?? "";
-        if (schema != Schema)
+        string file = document.Name;
+        RigException Error(string where, string problem) => new($"{specPath}: {where}: {problem}");
+        T Named<T>(Func<T> make)
         {
-            throw new RigException($"{specPath} is not a Ballistic limb spec (schema '{schema}', expected '{Schema}').");
-        }
-
-        string name = spec["name"]?.GetValue<string>() ?? Path.GetFileNameWithoutExtension(specPath);
-        JsonArray skins = document.Array("skins");
-        if (skins.Count == 0)
-        {
-            throw new RigException($"{document.Name} has no skin: a character needs a rigged (skinned) mesh.");
-        }
-
-        JsonArray nodes = document.Array("nodes");
-        int[] skinJoints = [.. ((JsonArray)skins[0]!["joints"]!).Select(j => j!.GetValue<int>())];
-        var parentNode = new int[nodes.Count];
-        Array.Fill(parentNode, -1);
-        for (int n = 0; n < nodes.Count; n++)
-        {
-            foreach (JsonNode? child in nodes[n]?["children"] as JsonArray ?? [])
+            try
             {
-                parentNode[child!.GetValue<int>()] = n;
+                return make();
+            }
+            catch (RigException e) when (!e.Message.StartsWith(specPath, StringComparison.Ordinal))
+            {
+                throw new RigException($"{specPath}: {e.Message}", e);
             }
         }
 
-        var isJoint = new HashSet<int>(skinJoints);
-        int[] roots = [.. skinJoints.Where(j => parentNode[j] < 0 || !isJoint.Contains(parentNode[j]))];
-        if (roots.Length != 1)
-        {
-            throw new RigException($"{document.Name}: the skin's bones must form one hierarchy; it has {roots.Length} root bones.");
-        }
-
-        // Parents before children: the skin's own order when it already is, else breadth-first from the root bone.
-        var order = new List<int>();
-        var seen = new HashSet<int>();
-        bool parentFirst = true;
-        foreach (int j in skinJoints)
-        {
-            parentFirst &= j == roots[0] || seen.Contains(parentNode[j]);
-            seen.Add(j);
-        }
-
-        var queue = new Queue<int>(parentFirst ? [] : [roots[0]]);
-        if (parentFirst)
-        {
-            order.AddRange(skinJoints);
-        }
-
-        while (queue.Count > 0)
-        {
-            int node = queue.Dequeue();
-            order.Add(node);
-            foreach (JsonNode? child in nodes[node]?["children"] as JsonArray ?? [])
-            {
-                int c = child!.GetValue<int>();
-                if (isJoint.Contains(c))
-                {
-                    queue.Enqueue(c);
-                }
-            }
-        }
-
-        string NodeName(int node) => nodes[node]?["name"]?.GetValue<string>() ?? $"node {node}";
-        var index = new Dictionary<int, int>();
-        for (int i = 0; i < order.Count; i++)
-        {
-            index[order[i]] = i;
-        }
+        Quaternion axes = AxesRotation(spec.UpAxis, spec.ForwardAxis);
+        GltfSkeleton skeleton = GltfSkeleton.Read(document, axes, [.. spec.Limbs.SelectMany(l => new[] { l.RootBone, l.EffectorBone })]);
+        string[] names = skeleton.Names;
+        int IndexOf(string bone) => Array.IndexOf(names, bone);
+        int Bone(string bone, string where) => IndexOf(bone) is int i && i >= 0 ? i : throw Error(where, $"'{bone}' is not a bone of {file}.");
 
         // Bones on limb chains move by default; the spec may give any bone its own axes.
-        JsonObject limbs = spec["limbs"] as JsonObject ?? throw new RigException($"{specPath} has no limbs.");
-        var chainBones = new HashSet<string>(StringComparer.Ordinal);
-        foreach ((string limbName, JsonNode? limbNode) in limbs)
+        var chainBones = new HashSet<int>();
+        foreach (LimbSpec limb in spec.Limbs)
         {
-            string rootBone = limbNode?["rootBone"]?.GetValue<string>() ?? throw new RigException($"{specPath}: limb '{limbName}' has no rootBone.");
-            string effectorBone = limbNode["effectorBone"]?.GetValue<string>() ?? throw new RigException($"{specPath}: limb '{limbName}' has no effectorBone.");
-            int effector = order.FindIndex(n => NodeName(n) == effectorBone);
-            if (effector < 0)
+            int effector = IndexOf(limb.EffectorBone) is int e && e >= 0 ? e : throw Error($"limb '{limb.Name}'", $"names the effector bone '{limb.EffectorBone}', which is not a bone of {file}.");
+            int root = IndexOf(limb.RootBone) is int r && r >= 0 ? r : throw Error($"limb '{limb.Name}'", $"names the root bone '{limb.RootBone}', which is not a bone of {file}.");
+            for (int j = effector; j >= 0; j = skeleton.Parents[j])
             {
-                throw new RigException($"{specPath}: limb '{limbName}' names the effector bone '{effectorBone}', which is not a bone of {document.Name}.");
-            }
-
-            if (!order.Any(n => NodeName(n) == rootBone))
-            {
-                throw new RigException($"{specPath}: limb '{limbName}' names the root bone '{rootBone}', which is not a bone of {document.Name}.");
-            }
-
-            for (int node = order[effector]; node >= 0 && isJoint.Contains(node); node = parentNode[node])
-            {
-                chainBones.Add(NodeName(node));
-                if (NodeName(node) == rootBone)
+                chainBones.Add(j);
+                if (j == root)
                 {
                     break;
                 }
             }
         }
 
-        JsonObject jointSpecs = spec["joints"] as JsonObject ?? [];
+        foreach (string bone in spec.Joints.Keys)
+        {
+            Bone(bone, $"joints, bone '{bone}'");
+        }
+
+        foreach (string bone in spec.BoneRadii.Keys)
+        {
+            Bone(bone, $"boneRadii, bone '{bone}'");
+        }
+
         var joints = new List<Joint>();
-        var radii = new List<float>();
-        JsonObject radiusSpecs = spec["boneRadii"] as JsonObject ?? [];
-        float defaultRadius = spec["boneRadius"]?.GetValue<float>() ?? 0.03f;
-        foreach (int node in order)
+        JointAxis[] ball = [new JointAxis(Vector3.UnitX, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitY, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitZ, Radians(-90f), Radians(90f))];
+        for (int j = 0; j < names.Length; j++)
         {
-            string bone = NodeName(node);
-            var json = (JsonObject)nodes[node]!;
-            if (json["scale"] is JsonArray scale && scale.Any(v => MathF.Abs(v!.GetValue<float>() - 1f) > 1e-3f))
-            {
-                throw new RigException($"{document.Name}: bone '{bone}' is scaled; apply the scale before exporting.");
-            }
+            JointAxis[] axesOf = spec.Joints.TryGetValue(names[j], out JointAxis[]? given) ? given : chainBones.Contains(j) && j != 0 ? ball : [];
+            joints.Add(new Joint(names[j], skeleton.Parents[j], skeleton.Offsets[j], skeleton.RestRotations[j], axesOf));
+        }
 
-            Matrix4x4 local = document.LocalTransform(json);
-            Vector3 offset = local.Translation;
-            Quaternion rest = Quaternion.CreateFromRotationMatrix(local);
-            if (node == roots[0])
+        // Radii: the spec's, else from the skinned vertices, else the spec's boneRadius or the default.
+        float?[] meshRadii = MeshDefaults.Radii(joints, skeleton.Points);
+        float fallbackRadius = spec.BoneRadius ?? DefaultBoneRadius;
+        float[] radii = [.. names.Select((n, j) => spec.BoneRadii.TryGetValue(n, out float r) ? r : meshRadii[j] ?? fallbackRadius)];
+        bool[] derivedRadii = [.. names.Select((n, j) => !spec.BoneRadii.ContainsKey(n) && meshRadii[j] is not null)];
+
+        // Trunk: the spec's bones, else the root and every bone above a limb's root bone.
+        var trunk = new List<int>();
+        if (spec.TrunkBones is not null)
+        {
+            foreach (string bone in spec.TrunkBones)
             {
-                // The root bone's frame in world space: its ancestors' transforms folded in.
-                Matrix4x4 world = local;
-                for (int p = parentNode[node]; p >= 0; p = parentNode[p])
+                int j = IndexOf(bone) is int i && i >= 0 ? i : throw Error("key 'trunkBones'", $"trunk bone '{bone}' is not a bone of {file}.");
+                if (!trunk.Contains(j))
                 {
-                    world *= document.LocalTransform((JsonObject)nodes[p]!);
+                    trunk.Add(j);
                 }
-
-                rest = Quaternion.Normalize(Quaternion.CreateFromRotationMatrix(world));
-                offset = Vector3.Zero;
+            }
+        }
+        else
+        {
+            var above = new HashSet<int> { 0 };
+            foreach (LimbSpec limb in spec.Limbs)
+            {
+                for (int j = skeleton.Parents[IndexOf(limb.RootBone)]; j >= 0; j = skeleton.Parents[j])
+                {
+                    above.Add(j);
+                }
             }
 
-            JointAxis[] axes = jointSpecs[bone] is JsonObject js
-                ? [.. ((JsonArray)js["axes"]!).Select(a => new JointAxis(Vector3.Normalize(Vec3(a!["axis"]!)), Radians(a["min"]!.GetValue<float>()), Radians(a["max"]!.GetValue<float>())))]
-                : chainBones.Contains(bone) && node != roots[0]
-                    ? [new JointAxis(Vector3.UnitX, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitY, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitZ, Radians(-90f), Radians(90f))]
-                    : [];
-            joints.Add(new Joint(bone, node == roots[0] ? -1 : index[parentNode[node]], offset, rest, axes));
-            radii.Add(radiusSpecs[bone]?.GetValue<float>() ?? defaultRadius);
+            trunk.AddRange(above.Order());
         }
 
-        int[] trunk = spec["trunkBones"] is JsonArray tb
-            ? [.. tb.Select(b => joints.FindIndex(j => j.Name == b!.GetValue<string>()) is int i && i >= 0 ? i : throw new RigException($"{specPath}: trunk bone '{b}' is not a bone of {document.Name}."))]
-            : [0];
-        var rig0 = new Rig(joints, Vector3.Zero);
-        float[] Pose0(string poseName) => PoseFrom(rig0, spec["poses"]?[poseName] as JsonObject);
-        (Vector3 centre, _) = ReducedModelBuilder.TrunkBox(joints, trunk, radii, Pose0("contact"));
-        var rig = new Rig(joints, -centre);
+        Rig rig0 = Named(() => new Rig(joints, Vector3.Zero));
+        float[] contact0 = PoseFrom(rig0, spec, "contact", specPath);
+
+        // The trunk box bounds the trunk bones' skinned vertices in the contact pose; a bone whose radius the spec
+        // gives, or without vertices, counts as a sphere of its radius around its joint.
+        IReadOnlyList<Vector3>[] trunkPoints = [.. names.Select((n, j) => spec.BoneRadii.ContainsKey(n) ? (IReadOnlyList<Vector3>)[] : skeleton.Points[j])];
+        (Vector3 centre, Vector3 half) = ReducedModelBuilder.TrunkBox(joints, trunk, radii, contact0, trunkPoints);
+        Rig rig = Named(() => new Rig(joints, -centre));
         var rigLimbs = new List<RigLimb>();
-        foreach ((string limbName, JsonNode? limbNode) in limbs)
+        foreach (LimbSpec limb in spec.Limbs)
         {
-            JsonObject filter = limbNode!["normalFilter"] as JsonObject ?? [];
-            rigLimbs.Add(new RigLimb(
-                rig,
-                limbName,
-                limbNode["contact"]?.GetValue<string>() == "hand" ? LimbKind.Hand : LimbKind.Foot,
-                limbNode["rootBone"]!.GetValue<string>(),
-                limbNode["effectorBone"]!.GetValue<string>(),
-                limbNode["effectorOffset"] is JsonNode eo ? Vec3(eo) : Vector3.Zero,
-                limbNode["contactNormal"] is JsonNode cn ? Vec3(cn) : -Vector3.UnitY,
-                filter.Count == 0 ? NormalFilter.None : new NormalFilter(Vector3.Normalize(Vec3(filter["direction"]!)), filter["minCosine"]!.GetValue<float>())));
+            int effector = IndexOf(limb.EffectorBone);
+            Vector3 offset;
+            Vector3 normal;
+            if (limb.EffectorOffset is Vector3 givenOffset)
+            {
+                offset = givenOffset;
+                normal = limb.ContactNormal ?? RestDown(rig, effector);
+            }
+            else
+            {
+                (offset, Vector3 derivedNormal) = MeshDefaults.Contact(rig, effector, skeleton.Points)
+                    ?? throw Error($"limb '{limb.Name}'", $"gives no effectorOffset, and no skinned vertex of {file} is weighted mostly to its effector bone '{limb.EffectorBone}' or the bones below it to derive one from; give effectorOffset (metres, in the effector bone's frame).");
+                normal = limb.ContactNormal ?? derivedNormal;
+            }
+
+            NormalFilter filter = limb.Filter ?? (limb.Kind == LimbKind.Foot ? NormalFilter.Upward(0.5f) : NormalFilter.None);
+            rigLimbs.Add(Named(() => new RigLimb(rig, limb.Name, limb.Kind, limb.RootBone, limb.EffectorBone, offset, normal, filter)));
         }
 
-        var model = new CharacterModel(name, rig, rigLimbs, trunk, radii, PoseFrom(rig, spec["poses"]?["contact"] as JsonObject), PoseFrom(rig, spec["poses"]?["flexion"] as JsonObject), PoseFrom(rig, spec["poses"]?["extending"] as JsonObject));
-        ReducedCharacter reduced;
-        try
+        var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis)) { DerivedRadii = derivedRadii };
+        CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, PoseFrom(rig, spec, "contact", specPath), PoseFrom(rig, spec, "flexion", specPath), PoseFrom(rig, spec, "extending", specPath)) { Source = source });
+        ReducedCharacter reduced = Named(() => ReducedModelBuilder.Derive(
+            model,
+            spec.RequiredContacts ?? Math.Min(2, rigLimbs.Count),
+            spec.TakeoffSpeedMax ?? 8f,
+            spec.LandingSpeedMax ?? 12f,
+            spec.Friction ?? 0.5f));
+        if (trunk.Any(j => trunkPoints[j].Count > 0))
         {
-            reduced = ReducedModelBuilder.Derive(
-                model,
-                spec["requiredContacts"]?.GetValue<int>() ?? Math.Min(2, rigLimbs.Count),
-                spec["takeoffSpeedMax"]?.GetValue<float>() ?? 8f,
-                spec["landingSpeedMax"]?.GetValue<float>() ?? 12f,
-                spec["friction"]?.GetValue<float>() ?? 0.5f);
-        }
-        catch (CharacterException e)
-        {
-            throw new RigException($"{specPath}: {e.Message}", e);
+            // Derive bounds the trunk joints' spheres; the trunk box here bounds the skinned vertices.
+            reduced = new ReducedCharacter(reduced.Name, half, reduced.Limbs, reduced.RequiredContacts, reduced.TakeoffSpeedMax, reduced.LandingSpeedMax, reduced.Friction);
         }
 
         return (model, reduced);
     }
 
-    private static float[] PoseFrom(Rig rig, JsonObject? pose)
+    /// <summary>The rotation taking the glTF scene's <paramref name="up"/> to +Y and <paramref name="forward"/> to +Z.</summary>
+    private static Quaternion AxesRotation(Vector3 up, Vector3 forward)
+    {
+        Vector3 left = Vector3.Cross(up, forward);
+
+        // Rows are the images of the scene's X, Y and Z axes in Ballistic's frame (row vectors).
+        var m = new Matrix4x4(left.X, up.X, forward.X, 0f, left.Y, up.Y, forward.Y, 0f, left.Z, up.Z, forward.Z, 0f, 0f, 0f, 0f, 1f);
+        return Quaternion.Normalize(Quaternion.CreateFromRotationMatrix(m));
+    }
+
+    private static string AxisName(Vector3 axis) => CharacterSpecReader.AxisNames.First(a => a.Value == axis).Key;
+
+    /// <summary>The rest pose's down direction in the frame of joint <paramref name="joint"/>.</summary>
+    private static Vector3 RestDown(Rig rig, int joint)
+    {
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), new float[rig.DofCount], positions, rotations);
+        return Vector3.Normalize(Vector3.Transform(-Vector3.UnitY, Quaternion.Conjugate(rotations[joint])));
+    }
+
+    private static float[] PoseFrom(Rig rig, CharacterSpec spec, string poseName, string specPath)
     {
         float[] q = rig.Neutral();
-        if (pose is null)
+        if (!spec.Poses.TryGetValue(poseName, out IReadOnlyList<(string Bone, float[] Degrees)>? pose))
         {
             return q;
         }
 
-        foreach ((string bone, JsonNode? values) in pose)
+        foreach ((string bone, float[] degrees) in pose)
         {
+            string where = $"pose '{poseName}', bone '{bone}'";
             int j = rig.IndexOf(bone);
             if (j < 0)
             {
-                throw new RigException($"A pose names the bone '{bone}', which is not in the rig.");
+                throw new RigException($"{specPath}: {where}: is not a bone of the rig.");
             }
 
-            var list = (JsonArray)values!;
-            for (int k = 0; k < list.Count && k < rig.DofsOf(j); k++)
+            if (rig.DofsOf(j) == 0)
+            {
+                throw new RigException($"{specPath}: {where}: the bone is fixed (it has no degrees of freedom), so a pose cannot turn it; give it axes under 'joints'.");
+            }
+
+            if (degrees.Length != rig.DofsOf(j))
+            {
+                throw new RigException($"{specPath}: {where}: gives {degrees.Length} angle{(degrees.Length == 1 ? "" : "s")}, but the bone has {rig.DofsOf(j)} degree{(rig.DofsOf(j) == 1 ? "" : "s")} of freedom.");
+            }
+
+            for (int k = 0; k < degrees.Length; k++)
             {
                 int d = rig.FirstDof(j) + k;
-                q[d] = rig.Dofs[d].Clamp(Radians(list[k]!.GetValue<float>()));
+                float angle = Radians(degrees[k]);
+                if (angle < rig.Dofs[d].Min - Radians(0.01f) || angle > rig.Dofs[d].Max + Radians(0.01f))
+                {
+                    throw new RigException($"{specPath}: {where}: angle {k} ({degrees[k]}°) is outside the joint's limits [{Degrees(rig.Dofs[d].Min)}°, {Degrees(rig.Dofs[d].Max)}°].");
+                }
+
+                q[d] = rig.Dofs[d].Clamp(angle);
             }
         }
 
@@ -344,8 +376,6 @@ public static class CharacterSpecFile
     private static JsonArray Vec(Vector3 v) => new(Round(v.X), Round(v.Y), Round(v.Z));
 
     private static float Round(float v) => MathF.Round(v, 6) + 0f; // + 0 turns −0 into 0
-
-    private static Vector3 Vec3(JsonNode node) => new(node[0]!.GetValue<float>(), node[1]!.GetValue<float>(), node[2]!.GetValue<float>());
 
     private static float Degrees(float radians) => MathF.Round(radians * 180f / MathF.PI, 4);
 

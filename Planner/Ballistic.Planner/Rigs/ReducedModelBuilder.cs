@@ -17,7 +17,20 @@ public static class ReducedModelBuilder
     /// The trunk box of the given joints, bones padded by their radii, in the root joint's frame with the root
     /// joint at the origin and the rig in <paramref name="pose"/>: its centre and half extents, metres.
     /// </summary>
-    public static (Vector3 Center, Vector3 HalfExtents) TrunkBox(IReadOnlyList<Joint> joints, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> radii, float[] pose)
+    public static (Vector3 Center, Vector3 HalfExtents) TrunkBox(IReadOnlyList<Joint> joints, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> radii, float[] pose) =>
+        TrunkBox(joints, trunkJoints, radii, pose, null);
+
+    /// <summary>
+    /// The trunk box of the given joints with the rig in <paramref name="pose"/> and the root joint at the origin
+    /// (axes of the trunk frame: +Y up, +Z forward), metres: a trunk joint with points (e.g. its skinned vertices)
+    /// counts as those points, one without as a sphere of its radius around the joint.
+    /// </summary>
+    /// <param name="joints">The rig's joints.</param>
+    /// <param name="trunkJoints">Indices of the trunk's joints.</param>
+    /// <param name="radii">Radius of each joint, metres.</param>
+    /// <param name="pose">One angle per degree of freedom, radians.</param>
+    /// <param name="points">For each joint, points in its frame (metres) that bound it; <c>null</c> or an empty list keeps the sphere.</param>
+    public static (Vector3 Center, Vector3 HalfExtents) TrunkBox(IReadOnlyList<Joint> joints, IReadOnlyList<int> trunkJoints, IReadOnlyList<float> radii, float[] pose, IReadOnlyList<IReadOnlyList<Vector3>>? points)
     {
         ArgumentNullException.ThrowIfNull(joints);
         ArgumentNullException.ThrowIfNull(trunkJoints);
@@ -27,13 +40,27 @@ public static class ReducedModelBuilder
         var rotations = new Quaternion[joints.Count];
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
         Aabb box = Aabb.Empty;
+        bool anyPoints = false;
         foreach (int j in trunkJoints)
         {
+            if (points is not null && points[j].Count > 0)
+            {
+                anyPoints = true;
+                foreach (Vector3 p in points[j])
+                {
+                    Vector3 world = positions[j] + Vector3.Transform(p, rotations[j]);
+                    box = Aabb.Union(box, new Aabb(world, world));
+                }
+
+                continue;
+            }
+
             float r = radii[j];
             box = Aabb.Union(box, new Aabb(positions[j] - new Vector3(r), positions[j] + new Vector3(r)));
         }
 
-        return (box.Center, box.HalfExtents);
+        // Vertices may all lie in a plane; a box needs some thickness.
+        return (box.Center, anyPoints ? Vector3.Max(box.HalfExtents, new Vector3(0.005f)) : box.HalfExtents);
     }
 
     /// <summary>

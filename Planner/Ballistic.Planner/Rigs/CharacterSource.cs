@@ -1,0 +1,55 @@
+using Ballistic.Planner.Gltf;
+
+namespace Ballistic.Planner.Rigs;
+
+/// <summary>
+/// The rigged glTF a <see cref="CharacterModel"/> was loaded from, and which glTF node each of the rig's joints is.
+/// The animated GLB writer uses it to write the user's own meshes, materials, textures, skin and node hierarchy
+/// with the jump clip added, instead of the procedural bone boxes.
+/// </summary>
+public sealed class CharacterSource
+{
+    /// <summary>Creates a source mapping.</summary>
+    /// <param name="document">The glTF the rig was read from.</param>
+    /// <param name="jointNodes">For each rig joint (rig order), the index of its glTF node.</param>
+    /// <param name="upAxis">The spec's <c>upAxis</c> (e.g. "+Z"): the glTF scene's direction that is the character's up.</param>
+    /// <param name="forwardAxis">The spec's <c>forwardAxis</c> (e.g. "-Y"): the glTF scene's direction the character faces.</param>
+    /// <exception cref="RigException">A node index is out of range or repeats, or an axis name is unknown.</exception>
+    public CharacterSource(GltfDocument document, IReadOnlyList<int> jointNodes, string upAxis = "+Y", string forwardAxis = "+Z")
+    {
+        ArgumentNullException.ThrowIfNull(document);
+        ArgumentNullException.ThrowIfNull(jointNodes);
+        ArgumentNullException.ThrowIfNull(upAxis);
+        ArgumentNullException.ThrowIfNull(forwardAxis);
+        int nodes = document.Array("nodes").Count;
+        if (jointNodes.Any(n => n < 0 || n >= nodes) || jointNodes.Distinct().Count() != jointNodes.Count)
+        {
+            throw new RigException($"{document.Name}: the joints' node indices must be distinct nodes of the file.");
+        }
+
+        if (!CharacterSpecReader.AxisNames.ContainsKey(upAxis) || !CharacterSpecReader.AxisNames.ContainsKey(forwardAxis))
+        {
+            throw new RigException($"Unknown axis name '{upAxis}' or '{forwardAxis}' (expected one of {string.Join(", ", CharacterSpecReader.AxisNames.Keys)}).");
+        }
+
+        Document = document;
+        JointNodes = [.. jointNodes];
+        UpAxis = upAxis;
+        ForwardAxis = forwardAxis;
+    }
+
+    /// <summary>The glTF the rig was read from.</summary>
+    public GltfDocument Document { get; }
+
+    /// <summary>For each rig joint, the index of its glTF node.</summary>
+    public IReadOnlyList<int> JointNodes { get; }
+
+    /// <summary>The glTF scene's direction that is the character's up ("+Y" unless the spec said otherwise).</summary>
+    public string UpAxis { get; }
+
+    /// <summary>The glTF scene's direction the character faces ("+Z" unless the spec said otherwise).</summary>
+    public string ForwardAxis { get; }
+
+    /// <summary>For each joint, whether its radius was derived from the skinned mesh (so a saved spec leaves it out and derives it again).</summary>
+    internal IReadOnlyList<bool> DerivedRadii { get; init; } = [];
+}

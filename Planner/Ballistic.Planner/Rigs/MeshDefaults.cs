@@ -1,0 +1,113 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+
+namespace Ballistic.Planner.Rigs;
+
+/// <summary>
+/// Limb spec defaults derived from a rig's skinned vertices (each vertex belongs to the bone with its largest weight
+/// and is given in that bone's rest frame): bone radii, and a limb's contact point and sole normal.
+/// </summary>
+internal static class MeshDefaults
+{
+    /// <summary>Fraction of a bone's vertices that its radius covers.</summary>
+    public const float RadiusPercentile = 0.9f;
+
+    /// <summary>
+    /// The radius of each bone (the segment from the joint's parent to the joint), or <c>null</c> where no vertex
+    /// says: the 90th percentile of the distance to that segment of the parent's vertices that lie nearer it than
+    /// any other of the parent's child segments. The root's radius is that of its own vertices to its nearest child
+    /// segment (or to the joint when it has no child).
+    /// </summary>
+    public static float?[] Radii(IReadOnlyList<Joint> joints, IReadOnlyList<List<Vector3>> points)
+    {
+        var radii = new float?[joints.Count];
+        var distances = new List<float>[joints.Count];
+        for (int j = 0; j < joints.Count; j++)
+        {
+            distances[j] = [];
+        }
+
+        for (int p = 0; p < joints.Count; p++)
+        {
+            int[] children = [.. Enumerable.Range(0, joints.Count).Where(c => joints[c].Parent == p)];
+            foreach (Vector3 point in points[p])
+            {
+                int nearest = -1;
+                float best = point.Length();
+                foreach (int c in children)
+                {
+                    float d = SegmentDistance(point, Vector3.Zero, joints[c].Offset);
+                    if (nearest < 0 || d < best)
+                    {
+                        best = d;
+                        nearest = c;
+                    }
+                }
+
+                if (nearest >= 0)
+                {
+                    distances[nearest].Add(best);
+                }
+
+                if (p == 0)
+                {
+                    distances[0].Add(best);
+                }
+            }
+        }
+
+        for (int j = 0; j < joints.Count; j++)
+        {
+            if (distances[j].Count > 0)
+            {
+                distances[j].Sort();
+                radii[j] = MathF.Max(1e-3f, distances[j][(int)(RadiusPercentile * (distances[j].Count - 1))]);
+            }
+        }
+
+        return radii;
+    }
+
+    /// <summary>
+    /// The contact point and sole normal of a limb in its effector's frame, from the vertices of the effector and
+    /// its descendants in the rest pose (every angle 0): the normal is the rest pose's down direction; the point lies
+    /// at the height of the lowest vertex, at the centre (in the horizontal plane) of the vertices within
+    /// 5 mm + 5 % of the effector's height of it. <c>null</c> when no vertex belongs to the effector or below it.
+    /// </summary>
+    public static (Vector3 Offset, Vector3 Normal)? Contact(Rig rig, int effector, IReadOnlyList<List<Vector3>> points)
+    {
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), new float[rig.DofCount], positions, rotations);
+        Quaternion toEffector = Quaternion.Conjugate(rotations[effector]);
+        Vector3 normal = Vector3.Normalize(Vector3.Transform(-Vector3.UnitY, toEffector));
+        var cloud = new List<Vector3>();
+        for (int j = 0; j < rig.Joints.Count; j++)
+        {
+            if (rig.IsAncestor(effector, j))
+            {
+                cloud.AddRange(points[j].Select(p => positions[j] + Vector3.Transform(p, rotations[j])));
+            }
+        }
+
+        if (cloud.Count == 0)
+        {
+            return null;
+        }
+
+        float low = cloud.Min(p => p.Y);
+        float band = 0.005f + (0.05f * (cloud.Max(p => p.Y) - low));
+        Vector3[] sole = [.. cloud.Where(p => p.Y <= low + band)];
+        float x = (sole.Min(p => p.X) + sole.Max(p => p.X)) * 0.5f;
+        float z = (sole.Min(p => p.Z) + sole.Max(p => p.Z)) * 0.5f;
+        Vector3 offset = Vector3.Transform(new Vector3(x, low, z) - positions[effector], toEffector);
+        return (offset, normal);
+    }
+
+    private static float SegmentDistance(Vector3 p, Vector3 a, Vector3 b)
+    {
+        Vector3 ab = b - a;
+        float t = ab.LengthSquared() > 1e-12f ? Math.Clamp(Vector3.Dot(p - a, ab) / ab.LengthSquared(), 0f, 1f) : 0f;
+        return Vector3.Distance(p, a + (ab * t));
+    }
+}

@@ -1,0 +1,140 @@
+using System.Text.Json.Nodes;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Rigs;
+
+/// <summary>Every bad spec or rig gives one RigException sentence naming the file, the limb or bone and the key; never a runtime message.</summary>
+public sealed class SpecErrorTests
+{
+    private const string Foot = "\"left_foot\":{\"rootBone\":\"left_hip\",\"effectorBone\":\"left_ankle\"";
+    private string _folder = "";
+
+    public static IEnumerable<TestCaseData> BadSpecs()
+    {
+        static TestCaseData Case(string name, string json, params string[] fragments) => new TestCaseData(json, fragments).SetName($"{{m}}({name})");
+        static string Spec(string limbs, string extra = "") => "{\"schema\":\"ballistic.character/1\"," + extra + "\"limbs\":{" + limbs + "}}";
+
+        yield return Case("unknown contact", Spec(Foot + ",\"contact\":\"paw\"}"), "limb 'left_foot'", "'contact'", "\"paw\"", "\"foot\" or \"hand\"");
+        yield return Case("unknown top-level key", Spec(Foot + "}", "\"trunkbones\":[\"pelvis\"],"), "unknown key 'trunkbones'", "trunkBones");
+        yield return Case("unknown limb key", Spec(Foot + ",\"effectorOfset\":[0,0,0]}"), "limb 'left_foot'", "unknown key 'effectorOfset'");
+        yield return Case("unknown filter key", Spec(Foot + ",\"normalFilter\":{\"direction\":[0,1,0],\"minCosine\":0,\"max\":1}}"), "limb 'left_foot'", "'normalFilter'", "unknown key 'max'");
+        yield return Case("number as a string", Spec(Foot + "}", "\"friction\":\"high\","), "key 'friction'", "must be a number", "\"high\"");
+        yield return Case("limbs as a list", "{\"schema\":\"ballistic.character/1\",\"limbs\":[]}", "key 'limbs'", "must be an object");
+        yield return Case("no limbs", "{\"schema\":\"ballistic.character/1\"}", "key 'limbs'", "missing");
+        yield return Case("short vector", Spec(Foot + ",\"effectorOffset\":[0,1]}"), "limb 'left_foot'", "'effectorOffset'", "3 numbers");
+        yield return Case("zero normal", Spec(Foot + ",\"contactNormal\":[0,0,0]}"), "limb 'left_foot'", "'contactNormal'", "zero vector");
+        yield return Case("filter without minCosine", Spec(Foot + ",\"normalFilter\":{\"direction\":[0,1,0]}}"), "limb 'left_foot'", "normalFilter", "no minCosine");
+        yield return Case("minCosine out of range", Spec(Foot + ",\"normalFilter\":{\"direction\":[0,1,0],\"minCosine\":2}}"), "limb 'left_foot'", "normalFilter.minCosine", "[−1, 1]");
+        yield return Case("bone name as a number", Spec("\"left_foot\":{\"rootBone\":3,\"effectorBone\":\"left_ankle\"}"), "limb 'left_foot'", "'rootBone'", "must be a string", "3");
+        yield return Case("no effector bone", Spec("\"left_foot\":{\"rootBone\":\"left_hip\"}"), "limb 'left_foot'", "no effectorBone");
+        yield return Case("limb not an object", Spec("\"left_foot\":\"left_ankle\""), "limb 'left_foot'", "must be an object");
+        yield return Case("unknown up axis", Spec(Foot + "}", "\"upAxis\":\"up\","), "key 'upAxis'", "\"+Z\"", "\"up\"");
+        yield return Case("parallel axes", Spec(Foot + "}", "\"upAxis\":\"+Z\",\"forwardAxis\":\"-Z\","), "'upAxis' and 'forwardAxis'", "perpendicular");
+        yield return Case("axis as a list", Spec(Foot + "}", "\"forwardAxis\":[0,0,1],"), "key 'forwardAxis'", "must be a string");
+        yield return Case("joint of an unknown bone", Spec(Foot + "}", "\"joints\":{\"tail\":{\"axes\":[]}},"), "joints, bone 'tail'", "not a bone");
+        yield return Case("inverted limits", Spec(Foot + "}", "\"joints\":{\"left_knee\":{\"axes\":[{\"axis\":[1,0,0],\"min\":10,\"max\":-10}]}},"), "bone 'left_knee'", "axis 0", "above max");
+        yield return Case("axis without max", Spec(Foot + "}", "\"joints\":{\"left_knee\":{\"axes\":[{\"axis\":[1,0,0],\"min\":10}]}},"), "bone 'left_knee'", "axis 0", "no max");
+        yield return Case("negative radius", Spec(Foot + "}", "\"boneRadii\":{\"left_hip\":-1},"), "boneRadii, bone 'left_hip'", "positive");
+        yield return Case("radius of an unknown bone", Spec(Foot + "}", "\"boneRadii\":{\"tail\":0.1},"), "boneRadii, bone 'tail'", "not a bone");
+        yield return Case("unknown pose", Spec(Foot + "}", "\"poses\":{\"crouch\":{}},"), "'poses'", "unknown key 'crouch'");
+        yield return Case("pose with too few angles", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_knee\":[1,2]}},"), "pose 'contact', bone 'left_knee'", "2 angles", "3 degrees");
+        yield return Case("pose of a fixed bone", Spec(Foot + "}", "\"poses\":{\"flexion\":{\"head\":[10]}},"), "pose 'flexion', bone 'head'", "fixed");
+        yield return Case("pose beyond the limits", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_knee\":[120,0,0]}},"), "pose 'contact', bone 'left_knee'", "120", "limits");
+        yield return Case("pose angle not a number", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_knee\":[\"a\",0,0]}},"), "pose 'contact', bone 'left_knee'", "angle 0", "must be a number");
+        yield return Case("trunk bones not a list", Spec(Foot + "}", "\"trunkBones\":\"pelvis\","), "key 'trunkBones'", "must be a list");
+        yield return Case("unknown trunk bone", Spec(Foot + "}", "\"trunkBones\":[\"torso\"],"), "'trunkBones'", "'torso'", "not a bone");
+        yield return Case("fractional required contacts", Spec(Foot + "}", "\"requiredContacts\":1.5,"), "key 'requiredContacts'", "whole number");
+        yield return Case("too many required contacts", Spec(Foot + "}", "\"requiredContacts\":3,"), "key 'requiredContacts'", "3 required contacts");
+        yield return Case("zero speed", Spec(Foot + "}", "\"takeoffSpeedMax\":0,"), "key 'takeoffSpeedMax'", "positive");
+        yield return Case("null name", Spec(Foot + "}", "\"name\":null,"), "key 'name'", "is null");
+        yield return Case("repeated key", Spec(Foot + ",\"contact\":\"foot\",\"contact\":\"hand\"}"), "limbs.left_foot", "'contact' appears twice");
+        yield return Case("not JSON", "{\"schema\": ", "is not valid JSON");
+        yield return Case("JSON but not an object", "[1, 2]", "is not a Ballistic limb spec");
+        yield return Case("unknown effector", Spec("\"tail\":{\"rootBone\":\"pelvis\",\"effectorBone\":\"tail_tip\"}"), "limb 'tail'", "'tail_tip'", "skeleton.glb");
+        yield return Case("root bone not above the effector", Spec("\"left_foot\":{\"rootBone\":\"right_hip\",\"effectorBone\":\"left_ankle\"}"), "left_foot", "'right_hip' is not an ancestor of 'left_ankle'");
+        yield return Case("effector without vertices", Spec("\"nod\":{\"rootBone\":\"neck\",\"effectorBone\":\"head\"}"), "limb 'nod'", "no effectorOffset", "effector bone 'head'", "give effectorOffset");
+    }
+
+    [SetUp]
+    public void MakeFolder()
+    {
+        _folder = Path.Combine(Path.GetTempPath(), $"ballistic-spec-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(_folder);
+    }
+
+    [TearDown]
+    public void RemoveFolder() => Directory.Delete(_folder, recursive: true);
+
+    [TestCaseSource(nameof(BadSpecs))]
+    public void ABadSpecIsOneSentenceNamingTheFileAndKey(string json, string[] fragments)
+    {
+        string spec = Path.Combine(_folder, "bad.limbs.json");
+        File.WriteAllText(spec, json);
+        RigException error = Assert.Throws<RigException>(() => CharacterSpecFile.Load(Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "skeleton.glb"), spec))!;
+        TestContext.Out.WriteLine(error.Message);
+        Assert.Multiple(() =>
+        {
+            Assert.That(error.Message, Does.Contain("bad.limbs.json").Or.Contain("skeleton.glb"));
+            foreach (string fragment in fragments)
+            {
+                Assert.That(error.Message, Does.Contain(fragment));
+            }
+
+            AssertNoRuntimeWords(error.Message);
+        });
+    }
+
+    [Test]
+    public void BadRigsNameTheNodeAndTheProblem()
+    {
+        ForeignCharacter dog = ForeignCharacters.Dog();
+        string gltf = dog.Rig.WriteGltf(_folder, "dog");
+        string spec = Path.Combine(_folder, "dog.limbs.json");
+        File.WriteAllText(spec, dog.Spec);
+        JsonObject pristine = JsonNode.Parse(File.ReadAllText(gltf))!.AsObject();
+        int Node(JsonObject json, string name) => json["nodes"]!.AsArray().Select((n, i) => (n, i)).First(p => p.n!["name"]!.GetValue<string>() == name).i;
+        string Broken(Action<JsonObject> change)
+        {
+            var json = (JsonObject)pristine.DeepClone();
+            change(json);
+            File.WriteAllText(gltf, json.ToJsonString());
+            string message = Assert.Throws<RigException>(() => CharacterSpecFile.Load(gltf, spec))!.Message;
+            TestContext.Out.WriteLine(message);
+            AssertNoRuntimeWords(message);
+            return message;
+        }
+
+        Assert.Multiple(() =>
+        {
+            string message = Broken(j => j["nodes"]![Node(j, "left_knee")]!["scale"] = new JsonArray(1, 2, 1));
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("bone 'left_knee'").And.Contain("non-uniformly"));
+            message = Broken(j => j["nodes"]![Node(j, "left_hind_foot_anchor")]!["scale"] = new JsonArray(1, 1, 3));
+            Assert.That(message, Does.Contain("node 'left_hind_foot_anchor' (above bone 'left_hind_paw')").And.Contain("non-uniformly"));
+            message = Broken(j => j["nodes"]![Node(j, "left_hind_foot_anchor")]!["scale"] = new JsonArray(-1, 1, 1));
+            Assert.That(message, Does.Contain("left_hind_foot_anchor").And.Contain("mirrored"));
+            message = Broken(j => j["nodes"]![Node(j, "right_knee")]!["name"] = "left_knee");
+            Assert.That(message, Does.Contain("two bones are called 'left_knee'"));
+            message = Broken(j => j["skins"]![0]!["joints"]![3] = 999);
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin 0").And.Contain("999"));
+            message = Broken(j => j["accessors"]![0]!.AsObject().Remove("count"));
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("accessor 0").And.Contain("'count'"));
+            message = Broken(j => j["nodes"]![0]!["translation"] = new JsonArray("a", 0, 0));
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("node 'pelvis' has a malformed translation"));
+            message = Broken(j => j["nodes"]![Node(j, "chest")]!["children"] = new JsonArray(0));
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("cycle"));
+            message = Broken(j => j["skins"]![0]!["joints"] = 5);
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin 0"));
+            message = Broken(j => j["nodes"]![Node(j, "Body")]!["skin"] = "zero");
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin"));
+        });
+    }
+
+    private static void AssertNoRuntimeWords(string message)
+    {
+        foreach (string runtime in new[] { "Object reference", "(Parameter", "Value cannot be null", "Unable to cast", "Index was outside", "The node must be of type", "An item with the same key" })
+        {
+            Assert.That(message, Does.Not.Contain(runtime));
+        }
+    }
+}
