@@ -283,7 +283,10 @@ public static class CharacterSpecFile
         if (trunk.Any(j => trunkPoints[j].Count > 0))
         {
             // Derive bounds the trunk joints' spheres; the trunk box here bounds the skinned vertices.
-            reduced = new ReducedCharacter(reduced.Name, half, reduced.Limbs, reduced.RequiredContacts, reduced.TakeoffSpeedMax, reduced.LandingSpeedMax, reduced.Friction);
+            reduced = new ReducedCharacter(reduced.Name, half, reduced.Limbs, reduced.RequiredContacts, reduced.TakeoffSpeedMax, reduced.LandingSpeedMax, reduced.Friction)
+            {
+                StanceLift = ReducedModelBuilder.StanceLift(model, reduced.RequiredContacts, half),
+            };
         }
 
         return (model, reduced);

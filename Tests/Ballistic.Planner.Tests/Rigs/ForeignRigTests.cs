@@ -138,7 +138,7 @@ public sealed class ForeignRigTests
             frames.Add(new AnimationFrame(f / 30f, root, q));
         }
 
-        var animation = new JumpAnimation(model, Array.Empty<BallisticArc>(), frames, [], 0, 0);
+        var animation = new JumpAnimation(model, Array.Empty<BallisticArc>(), [], frames, [], [], 0, 0);
         byte[] glb = AnimatedGlbWriter.ToBytes(animation, "jumps");
         GltfDocument original = GltfDocument.Load(gltf);
         GltfDocument written = GltfDocument.Parse(glb, name + ".glb", null);
