@@ -12,7 +12,8 @@ namespace Ballistic.Planner.Animation;
 /// such as toes, plus the segment from the effector to its contact point) are thin, since feet rest on the
 /// surface; every other bone (spine, neck, head, tail, ears) is as thick as half its radius
 /// (<see cref="CharacterModel.BoneRadii"/>), since it should not even touch the level. Within
-/// <see cref="ContactClearance"/> of a held contact point a bone may touch. Thread-safe.
+/// <see cref="ContactClearance"/> of a held contact point a bone may touch. Helper bones of a loaded rig that are no
+/// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. Thread-safe.
 /// </summary>
 public sealed class BodyCollision
 {
@@ -63,10 +64,18 @@ public sealed class BodyCollision
             _limbBones[l] = [.. bones];
         }
 
+        // Bones that are no body part (a loaded rig's helper bones: IK targets, control bones) are not checked.
+        IReadOnlyList<bool> body = model.Source?.BodyBones ?? [];
+        bool IsBody(int j) => body.Count == 0 || body[j];
+        for (int l = 0; l < _limbBones.Length; l++)
+        {
+            _limbBones[l] = [.. _limbBones[l].Where(IsBody)];
+        }
+
         var others = new List<int>();
         for (int j = 1; j < rig.Joints.Count; j++)
         {
-            if (!owned[j])
+            if (!owned[j] && IsBody(j))
             {
                 others.Add(j);
             }

@@ -50,6 +50,13 @@ public sealed class CharacterSource
     /// <summary>The glTF scene's direction the character faces ("+Z" unless the spec said otherwise).</summary>
     public string ForwardAxis { get; }
 
+    /// <summary>
+    /// For each joint, whether the bone from its rig parent to it is part of the character's body, to be kept out of
+    /// the level: true when the parent carries skinned vertices (the bone is that body part) and the parent is the
+    /// joint's ancestor in the file (not a root bone hung from the rig's root, such as an IK target). Empty: every bone.
+    /// </summary>
+    public IReadOnlyList<bool> BodyBones { get; init; } = [];
+
     /// <summary>For each joint, whether its radius was derived from the skinned mesh (so a saved spec leaves it out and derives it again).</summary>
     internal IReadOnlyList<bool> DerivedRadii { get; init; } = [];
 }

@@ -272,7 +272,22 @@ public static class CharacterSpecFile
             rigLimbs.Add(Named(() => new RigLimb(rig, limb.Name, limb.Kind, limb.RootBone, limb.EffectorBone, offset, normal, filter)));
         }
 
-        var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis)) { DerivedRadii = derivedRadii };
+        // Body bones: those whose parent carries vertices and is their ancestor in the file (helper bones are not).
+        int[] nodeParents = document.NodeParents();
+        bool[] bodyBones = new bool[names.Length];
+        for (int j = 1; j < names.Length; j++)
+        {
+            int parentNode = skeleton.Nodes[skeleton.Parents[j]];
+            bool ancestor = false;
+            for (int n = nodeParents[skeleton.Nodes[j]]; n >= 0 && !ancestor; n = nodeParents[n])
+            {
+                ancestor = n == parentNode;
+            }
+
+            bodyBones[j] = ancestor && skeleton.Points[skeleton.Parents[j]].Count > 0;
+        }
+
+        var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis)) { DerivedRadii = derivedRadii, BodyBones = bodyBones };
         CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, PoseFrom(rig, spec, "contact", specPath), PoseFrom(rig, spec, "flexion", specPath), PoseFrom(rig, spec, "extending", specPath)) { Source = source });
         ReducedCharacter reduced = Named(() => ReducedModelBuilder.Derive(
             model,

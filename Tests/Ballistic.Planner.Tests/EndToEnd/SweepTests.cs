@@ -1,5 +1,7 @@
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -29,10 +31,19 @@ public sealed class SweepTests
         ("holes-debris", "skeleton"), ("cave", "skeleton"), ("thin-slabs", "frog"), ("stairs", "ant"), ("curved", "ant"),
     ];
 
+    /// <summary>Rigs exported in other tools' shapes (limbs-only specs), on levels with the requests a user would make.</summary>
+    private static readonly (string Rig, string Level)[] ForeignRigs =
+    [
+        ("human", "block"), ("human", "stairs"), ("human-zup", "thin-slabs"), ("dog", "block"), ("dog", "curved"),
+        ("tailed", "stairs"), ("tailed", "holes-debris"),
+    ];
+
     [Test]
     public void NineteenRequestsInTwentyAreFullyRightAndNoneIsAWrongAnswer()
     {
         var all = new List<AuditReport>();
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-sweep-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(folder);
         foreach ((string levelName, string character, int count, float maxDistance) in Bundled)
         {
             Sweep.Setup setup = Sweep.Prepare(levelName, GltfLevelLoader.Load(RepositoryFiles.Level(levelName)), character);
@@ -46,6 +57,23 @@ public sealed class SweepTests
             Record([.. requests.Select(r => Sweep.Run(setup, r.From, r.To))]);
         }
 
+        foreach ((string rigName, string levelName) in ForeignRigs)
+        {
+            ForeignCharacter rig = rigName switch
+            {
+                "human" => ForeignCharacters.Human(zUpScene: false),
+                "human-zup" => ForeignCharacters.Human(zUpScene: true),
+                "dog" => ForeignCharacters.Dog(),
+                _ => ForeignCharacters.TailedQuadruped(),
+            };
+            (string gltf, string spec) = rig.Write(folder);
+            (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, spec);
+            (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
+            Sweep.Setup setup = Sweep.Prepare(levelName, level, model, reduced);
+            Record([.. requests.Select(r => Sweep.Run(setup, r.From, r.To))]);
+        }
+
+        Directory.Delete(folder, recursive: true);
         TestContext.Out.WriteLine("sweep: " + Sweep.Summary(all));
         Assert.That(all.Where(r => r.WrongAnswer).Select(r => r.ToString()), Is.Empty, "a plan reported as exact breaks an invariant");
         Assert.That(all.Count(r => r.FullyRight), Is.GreaterThanOrEqualTo((int)MathF.Ceiling(0.95f * all.Count)), "fewer than 95 % of the requests are fully right");

@@ -225,8 +225,9 @@ internal static class PlanAudit
             }
         }
 
-        // No bone through the level at any frame: every bone segment (parent → joint, effector → contact point),
-        // less its part within 1 cm of a contact held at that time.
+        // No bone through the level at any frame: every bone segment (parent → joint, effector → contact point) of
+        // the body (a loaded rig's helper bones such as IK targets are no body part), less its part within 1 cm of a
+        // contact held at that time.
         int boneHits = 0;
         for (float t = 0f; t <= animation.Duration + 1e-6f && boneHits == 0; t += 1f / 120f)
         {
@@ -241,9 +242,10 @@ internal static class PlanAudit
                 }
             }
 
+            IReadOnlyList<bool> body = model.Source?.BodyBones ?? [];
             for (int j = 1; j < rig.Joints.Count && boneHits == 0; j++)
             {
-                if (SegmentHits(scene.Bvh, positions[rig.Joints[j].Parent], positions[j], held))
+                if ((body.Count == 0 || body[j]) && SegmentHits(scene.Bvh, positions[rig.Joints[j].Parent], positions[j], held))
                 {
                     boneHits++;
                     report.Violations.Add($"animation: bone {rig.Joints[j].Name} in the level at {time:0.000} s");

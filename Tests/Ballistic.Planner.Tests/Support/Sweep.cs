@@ -18,10 +18,13 @@ internal static class Sweep
     /// <summary>A scene and animator for one level and character, built once per sweep.</summary>
     public sealed record Setup(string LevelName, PlanningScene Scene, CharacterModel Model, AnimatedPlanner Planner);
 
-    public static Setup Prepare(string levelName, Level level, string character)
+    public static Setup Prepare(string levelName, Level level, string character) =>
+        Prepare(levelName, level, CharacterPresets.Model(character), CharacterPresets.Get(character));
+
+    /// <summary>A scene and animator for a character loaded from files (a rig made elsewhere).</summary>
+    public static Setup Prepare(string levelName, Level level, CharacterModel model, ReducedCharacter reduced)
     {
-        var scene = PlanningScene.Create(level, CharacterPresets.Get(character));
-        CharacterModel model = CharacterPresets.Model(character);
+        var scene = PlanningScene.Create(level, reduced);
         return new Setup(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
     }
 
