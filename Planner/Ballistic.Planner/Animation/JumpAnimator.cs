@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
@@ -18,7 +19,7 @@ namespace Ballistic.Planner.Animation;
 /// (no contact pose passing the no-slip test, a bone through the level) is reported per jump in
 /// <see cref="JumpAnimation.Problems"/>, never hidden.
 /// </summary>
-public sealed class JumpAnimator
+public sealed class JumpAnimator : IJumpAnimator
 {
     /// <summary>Duration of one limb's step between two jumps, seconds.</summary>
     public const float StepDuration = 0.3f;
@@ -37,6 +38,7 @@ public sealed class JumpAnimator
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
     private readonly BodyCollision _collision;
+    private readonly int _requiredContacts;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -46,6 +48,7 @@ public sealed class JumpAnimator
         _contacts = new ContactGenerator(scene, model);
         _holdIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 12 });
         _collision = _contacts.Collision;
+        _requiredContacts = scene.Character.RequiredContacts;
         Model = model;
     }
 
@@ -54,6 +57,14 @@ public sealed class JumpAnimator
 
     /// <summary>The contact generator (its databases and collision checks).</summary>
     public ContactGenerator Contacts => _contacts;
+
+    /// <inheritdoc />
+    public bool CanStand(PoseEvaluation pose)
+    {
+        ArgumentNullException.ThrowIfNull(pose);
+        ContactConfiguration stance = _contacts.Generate(pose.Pose, pose.Contacts, pose.Cone.Axis);
+        return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count);
+    }
 
     /// <summary>Animates the jumps at <paramref name="frameRate"/> frames per second.</summary>
     /// <exception cref="ArgumentException">No jumps, or a non-positive frame rate.</exception>

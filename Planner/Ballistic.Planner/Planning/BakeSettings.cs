@@ -36,6 +36,13 @@ public sealed record BakeSettings
     /// <summary>How close the start and goal nodes' contacts must come to the requested points (<see cref="TrunkSampler.Place"/>).</summary>
     public EndpointTolerance Tolerance { get; init; } = new();
 
+    /// <summary>
+    /// An extra check the start and goal stances must pass (the whole body can stand there), or <c>null</c>.
+    /// <see cref="Query.AnimatedPlanner"/> sets it to its animator's <see cref="Animation.IJumpAnimator.CanStand"/>, for
+    /// the bake and the query alike, so that both place the same stances.
+    /// </summary>
+    public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
+
     /// <summary>Checks the values.</summary>
     /// <exception cref="ArgumentException">A value is out of range, or no condition would ever stop the bake.</exception>
     public void Validate()

@@ -51,7 +51,7 @@ public sealed class RoadmapBaker
         EndpointPlacement? goalPlacement = null;
         if (settings.Start is Vector3 start)
         {
-            startPlacement = _scene.Sampler.Place(start, settings.Tolerance);
+            startPlacement = _scene.Sampler.Place(start, settings.Tolerance, settings.CanStand);
             if (startPlacement.Pose is not { } pose)
             {
                 return new BakeResult(roadmap, PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, clock.Elapsed, null, null, 0, 0) { StartPlacement = startPlacement };
@@ -62,7 +62,7 @@ public sealed class RoadmapBaker
 
         if (settings.Goal is Vector3 goal)
         {
-            goalPlacement = _scene.Sampler.Place(goal, settings.Tolerance);
+            goalPlacement = _scene.Sampler.Place(goal, settings.Tolerance, settings.CanStand);
             if (goalPlacement.Pose is not { } pose)
             {
                 return new BakeResult(new Roadmap(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, settings.Seed),

@@ -21,7 +21,7 @@ public sealed class AnimatedPlanner
     private readonly PlanningScene _scene;
 
     /// <summary>Creates the use case for an animator on a scene of its character's reduced model.</summary>
-    public AnimatedPlanner(PlanningScene scene, JumpAnimator animator)
+    public AnimatedPlanner(PlanningScene scene, IJumpAnimator animator)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(animator);
@@ -30,7 +30,7 @@ public sealed class AnimatedPlanner
     }
 
     /// <summary>The whole-body animator.</summary>
-    public JumpAnimator Animator { get; }
+    public IJumpAnimator Animator { get; }
 
     /// <summary>
     /// Bakes a roadmap from the requested start and goal until they connect, plans and animates; when no path
@@ -52,6 +52,7 @@ public sealed class AnimatedPlanner
         }
 
         var baker = new RoadmapBaker(_scene);
+        bake = bake with { CanStand = Animator.CanStand };
         var query = new QuerySettings { Tolerance = bake.Tolerance };
         BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
         while (true)
@@ -87,6 +88,7 @@ public sealed class AnimatedPlanner
         ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
         var clock = Stopwatch.StartNew();
         var query = new PathQuery(_scene, roadmap);
+        settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand };
         var rejectedPairs = new HashSet<(int From, int To)>();
         var rejected = new List<RejectedJump>();
         PlanResult result = query.Plan(from, to, settings, rejectedPairs);

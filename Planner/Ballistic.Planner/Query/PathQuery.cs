@@ -52,13 +52,13 @@ public sealed class PathQuery
     {
         settings ??= new QuerySettings();
         var clock = Stopwatch.StartNew();
-        EndpointPlacement startPlacement = _scene.Sampler.Place(from, settings.Tolerance);
+        EndpointPlacement startPlacement = _scene.Sampler.Place(from, settings.Tolerance, settings.CanStand);
         if (startPlacement.Pose is not { } startPose)
         {
             return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
         }
 
-        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance);
+        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
         int n = _roadmap.Nodes.Count;
         RoadmapNode start = Existing(startPose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
         if (goalPlacement.Pose is not { } goalPose)

@@ -8,6 +8,13 @@ public sealed record QuerySettings
     /// <summary>How close the start and goal stances' contacts must come to the requested points (<see cref="TrunkSampler.Place"/>).</summary>
     public EndpointTolerance Tolerance { get; init; } = new();
 
+    /// <summary>
+    /// An extra check the start and goal stances must pass (the whole body can stand there), or <c>null</c>.
+    /// <see cref="Query.AnimatedPlanner"/> sets it to its animator's <see cref="Animation.IJumpAnimator.CanStand"/>, for
+    /// the bake and the query alike, so that both place the same stances.
+    /// </summary>
+    public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
+
     /// <summary>Start and goal are steered to and from at most this many nearest roadmap nodes within reach.</summary>
     public int MaxNeighbours { get; init; } = 32;
 

@@ -61,8 +61,8 @@ public sealed class TrunkSampler
         _candidates = [.. candidates];
         _cumulativeArea = [.. cumulative];
 
-        // Above the depth that as many workspaces as must touch reach, no pose is valid: the range slides down to it,
-        // keeping its width, never into the trunk's own half height.
+        // Above the depth that as many workspaces as must touch reach, no pose is valid: the range is cut there, and
+        // when even its bottom is out of reach it slides down, keeping its width, never into the trunk's half height.
         HeightRange stance = character.StanceLift;
         float reachable = character.Limbs
             .Select(l => -l.WorkspaceAt(new RootPose(Vector3.Zero, Quaternion.Identity)).Bounds.Min.Y)
@@ -70,7 +70,7 @@ public sealed class TrunkSampler
             .ElementAt(character.RequiredContacts - 1);
         float floor = character.TrunkHalfExtents.Y + 0.02f;
         float high = MathF.Max(floor, MathF.Min(stance.Max, reachable));
-        float low = MathF.Max(floor, MathF.Min(stance.Min, high - (stance.Max - stance.Min)));
+        float low = stance.Min <= high ? MathF.Max(floor, stance.Min) : MathF.Max(floor, high - (stance.Max - stance.Min));
         _lift = new HeightRange(MathF.Min(low, high), high);
     }
 
@@ -119,11 +119,17 @@ public sealed class TrunkSampler
     /// <see cref="EndpointTolerance.UpDown"/> + 0.3 m above and below the point, eight yaws, five lifts in the stance
     /// range) and keeps, on the first ring that has any, the pose whose contacts' centre is nearest the point within
     /// the tolerance. Never a pose on another floor or step: the contact centre must lie within the tolerance.
-    /// Deterministic: the same point and tolerance give the same pose. When none is found, the search goes on
+    /// Deterministic: the same point, tolerance and check give the same pose. When none is found, the search goes on
     /// beyond the tolerance only to report how far the nearest valid pose stands.
     /// </summary>
+    /// <param name="point">The requested point, world metres, on or near a surface.</param>
+    /// <param name="tolerance">How close the stance's contacts' centre must come to the point.</param>
+    /// <param name="canStand">
+    /// An extra check a pose must pass to be placed (the whole body can stand there: <see cref="Animation.IJumpAnimator.CanStand"/>);
+    /// <c>null</c> for none.
+    /// </param>
     /// <exception cref="ArgumentException">The tolerance is not positive, or the point is not finite.</exception>
-    public EndpointPlacement Place(Vector3 point, EndpointTolerance tolerance)
+    public EndpointPlacement Place(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand = null)
     {
         tolerance.Validate();
         if (!float.IsFinite(point.X) || !float.IsFinite(point.Y) || !float.IsFinite(point.Z))
@@ -171,7 +177,7 @@ public sealed class TrunkSampler
                             if (across <= tolerance.Across && upDown <= tolerance.UpDown)
                             {
                                 float score = MathF.Sqrt(((across / tolerance.Across) * (across / tolerance.Across)) + ((upDown / tolerance.UpDown) * (upDown / tolerance.UpDown)));
-                                if (score < bestScore)
+                                if (score < bestScore && canStand?.Invoke(pose) != false)
                                 {
                                     (best, bestCentre, bestScore) = (pose, centre, score);
                                 }

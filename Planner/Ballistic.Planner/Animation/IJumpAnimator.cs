@@ -1,0 +1,17 @@
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Query;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// Animates a path of jumps with the whole body and says what it could not do cleanly (the motion validator of
+/// the plan use case, after OMPL's one-method validity interfaces). <see cref="JumpAnimator"/> is the implementation.
+/// </summary>
+public interface IJumpAnimator
+{
+    /// <summary>Animates the jumps at <paramref name="frameRate"/> frames per second; problems go in <see cref="JumpAnimation.Problems"/>, never hidden.</summary>
+    JumpAnimation Animate(IReadOnlyList<Jump> jumps, float frameRate = 60f);
+
+    /// <summary>True when the whole body can stand at <paramref name="pose"/>: as many limbs as the character needs reach the level by IK with no bone through it.</summary>
+    bool CanStand(PoseEvaluation pose);
+}

@@ -1,0 +1,125 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Animation;
+
+/// <summary>Every bone checked, feet that do not teleport, stances at the rig's own height.</summary>
+public sealed class WholeBodyTests
+{
+    [Test]
+    public void BonesOfNoLimbAreCheckedToo()
+    {
+        // The tailed quadruped from another tool: its tail and head are in no limb.
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-tail-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(folder);
+        try
+        {
+            (string gltf, string spec) = ForeignCharacters.TailedQuadruped().Write(folder);
+            (CharacterModel model, _) = CharacterSpecFile.Load(gltf, spec);
+            Rig rig = model.Rig;
+            var positions = new Vector3[rig.Joints.Count];
+            var rotations = new Quaternion[rig.Joints.Count];
+            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+            Level far = new LevelBuilder("far").AddFloor(-5f, -5f, 5f, 5f, -20f).Build();
+            var clear = new BodyCollision(new TriangleBvh(far.Triangles), model);
+            Assert.That(clear.OtherBoneColliding(positions), Is.EqualTo(-1));
+            Assert.That(clear.OtherBones.Select(j => rig.Joints[j].Name), Has.Some.Contains("tail"));
+
+            // A floor through the middle of each tail bone in turn: that bone is found.
+            foreach (int j in clear.OtherBones.Where(j => rig.Joints[j].Name.Contains("tail", StringComparison.Ordinal)))
+            {
+                Vector3 mid = (positions[rig.Joints[j].Parent] + positions[j]) * 0.5f;
+                var across = new LevelBuilder("cut");
+                Vector3 along = Vector3.Normalize(positions[j] - positions[rig.Joints[j].Parent]);
+                Vector3 side = Vector3.Normalize(Vector3.Cross(along, MathF.Abs(along.Y) < 0.9f ? Vector3.UnitY : Vector3.UnitX));
+                Vector3 other = Vector3.Cross(along, side);
+                Vector3[] quad = [mid - side - other, mid + side - other, mid + side + other, mid - side + other];
+                across.AddMesh("plane", quad, [0, 1, 2, 0, 2, 3], Matrix4x4.Identity, TestLevels.Ground);
+                var cut = new BodyCollision(new TriangleBvh(across.Build().Triangles), model);
+                Assert.That(cut.OtherBoneColliding(positions), Is.Not.EqualTo(-1), $"a plane through {rig.Joints[j].Name} is seen");
+            }
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    [Test]
+    public void ContactsChangeOnlyByStepsBetweenJumps()
+    {
+        // Desert, many jumps: no limb's contact moves more than 2 cm within 0.1 s, and stances with steps take time.
+        Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
+        var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
+        (AnimatedPlan plan, _) = planner.BakeAndPlan(LevelPoints.Ground(scene.Bvh, 7.7f, 5.8f)!.Value, LevelPoints.Ground(scene.Bvh, -7.5f, -8.5f)!.Value, new BakeSettings { MaxNodes = 600, Threads = 2 });
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        JumpAnimation animation = plan.Animation!;
+        Assert.That(animation.Arcs, Has.Count.GreaterThan(2));
+        foreach (IGrouping<int, ContactPhase> limb in animation.ContactPhases.GroupBy(p => p.Limb))
+        {
+            ContactPhase[] phases = [.. limb.OrderBy(p => p.From)];
+            for (int i = 1; i < phases.Length; i++)
+            {
+                float gap = phases[i].From - phases[i - 1].To;
+                Assert.That(gap, Is.GreaterThanOrEqualTo(-1e-4f), "phases of one limb do not overlap");
+                if (Vector3.Distance(phases[i].Position, phases[i - 1].Position) > 0.02f)
+                {
+                    Assert.That(gap, Is.GreaterThanOrEqualTo(JumpAnimator.MinAirTime - 1e-3f), $"{animation.Model.Limbs[limb.Key].Name} jumps to a new contact at {phases[i].From:0.000} s");
+                }
+            }
+        }
+
+        // Where a stance re-steps, it lasts whole steps, and its root stands still at the landing pose.
+        for (int j = 0; j < animation.Stances.Count; j++)
+        {
+            float stance = animation.Stances[j];
+            Assert.That(stance, Is.EqualTo(0f).Or.GreaterThanOrEqualTo(JumpAnimator.StepDuration - 1e-4f));
+            float start = animation.JumpStart(j) + animation.Arcs[j].FlightTime;
+            for (float t = start; t <= start + stance; t += 0.05f)
+            {
+                Assert.That(Vector3.Distance(animation.RootAt(t).Position, animation.Arcs[j].End), Is.LessThan(1e-4f));
+            }
+        }
+    }
+
+    [TestCase("skeleton", true)]
+    [TestCase("jumperman", true)]
+    [TestCase("frog", false)]
+    public void StancesStandAtTheRigsOwnHeightNotSquatting(string name, bool legsReachStanding)
+    {
+        // Root joint (pelvis, thorax) at least 70 % of its standing height above the contacts, at most all of it.
+        ReducedCharacter character = CharacterPresets.Get(name);
+        CharacterModel model = CharacterPresets.Model(name);
+        Level floor = new LevelBuilder("floor").AddFloor(-10f, -10f, 10f, 10f, 0f, n: 8).Build();
+        var scene = PlanningScene.Create(floor, character);
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 9, MaxNodes = 60, Threads = 2 });
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
+        float standing = positions[0].Y - model.Limbs.Select(l => l.EffectorPosition(positions, rotations).Y).Order().Take(character.RequiredContacts).Average();
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        standing = MathF.Max(standing, positions[0].Y - model.Limbs.Select(l => l.EffectorPosition(positions, rotations).Y).Order().Take(character.RequiredContacts).Average());
+        Assert.That(bake.Roadmap.Nodes, Has.Count.EqualTo(60));
+
+        // The frog's forelegs do not reach the ground at its standing height: its range slides down to what they reach.
+        Assert.That(scene.Sampler.Lift.Min >= character.StanceLift.Min - 1e-5f, Is.EqualTo(legsReachStanding));
+        foreach (RoadmapNode node in bake.Roadmap.Nodes)
+        {
+            float rootJoint = node.Pose.ToWorld(model.Rig.RootOffset + model.Rig.Joints[0].Offset).Y;
+            Assert.That(rootJoint, Is.LessThanOrEqualTo(standing + 1e-3f), $"{name} node {node.Id} above its standing height");
+            if (legsReachStanding)
+            {
+                Assert.That(rootJoint, Is.GreaterThanOrEqualTo((0.7f * standing) - 1e-3f), $"{name} node {node.Id} squats");
+            }
+        }
+    }
+}
