@@ -122,7 +122,7 @@ internal sealed class PlanPipeline
 
         if (report.Rejected.Count > 0)
         {
-            output.WriteLine($"set aside: {report.Rejected.Count} jumps the body could not perform (first: {report.Rejected[0].Reason})");
+            output.WriteLine($"set aside: {report.Rejected.Count} {(report.Rejected.Count == 1 ? "jump" : "jumps")} the body could not perform (first: {report.Rejected[0].Reason})");
         }
 
         if (r.Jumps.Count > 0)

@@ -101,7 +101,7 @@ public sealed class AnimatedPlanner
                     : result with
                     {
                         Status = PlannerStatus.AnimationFailed,
-                        Reason = $"no path animates cleanly: {rejected.Count} jumps set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")}) and then {result.Reason}",
+                        Reason = $"no path animates cleanly: {Jumps(rejected.Count)} set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")}) and then {result.Reason}",
                     };
                 return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, rejected, round);
             }
@@ -114,7 +114,7 @@ public sealed class AnimatedPlanner
             JumpAnimation animation = Animator.Animate(result.Jumps, frameRate);
             if (animation.IsClean)
             {
-                string note = rejected.Count == 0 ? "" : $" after setting aside {rejected.Count} jumps the body could not perform";
+                string note = rejected.Count == 0 ? "" : $" after setting aside {Jumps(rejected.Count)} the body could not perform";
                 return new AnimatedPlan(result with { Reason = result.Reason + note, Elapsed = clock.Elapsed }, animation, rejected, round);
             }
 
@@ -132,7 +132,7 @@ public sealed class AnimatedPlanner
                 PlanResult failed = result with
                 {
                     Status = PlannerStatus.AnimationFailed,
-                    Reason = $"no path animated cleanly in {rounds} searches: {rejected.Count} jumps set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")})",
+                    Reason = $"no path animated cleanly in {rounds} searches: {Jumps(rejected.Count)} set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")})",
                     Jumps = [],
                     Elapsed = clock.Elapsed,
                 };
@@ -142,4 +142,7 @@ public sealed class AnimatedPlanner
             result = query.Plan(from, to, settings, rejectedPairs);
         }
     }
+
+    /// <summary>"1 jump", "3 jumps".</summary>
+    internal static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
 }

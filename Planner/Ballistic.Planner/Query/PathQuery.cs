@@ -120,8 +120,8 @@ public sealed class PathQuery
 
         List<Jump>? path = AStar(start, goal, extra, rejected);
         PlanResult result = path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {rejected.Count} jumps set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{path.Count} jumps found", start, goal, path, clock.Elapsed);
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {AnimatedPlanner.Jumps(rejected.Count)} set aside" : ""), start, goal, clock)
+            : new PlanResult(PlannerStatus.Exact, $"{AnimatedPlanner.Jumps(path.Count)} found", start, goal, path, clock.Elapsed);
         return result with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
     }
 

@@ -75,6 +75,42 @@ public sealed class CliJobTests
         Assert.That(picture, Does.StartWith("<svg").And.Contain("Top view").And.Contain("Side profile").And.Contain("data:image/png;base64,"));
     }
 
+    [TestCase(null, 0.5f, 0.25f)]
+    [TestCase("0.15,0.05", 0.15f, 0.05f)]
+    [TestCase("0.2", 0.2f, 0.25f)]
+    public void TheReportSaysHowFarTheStancesStandFromTheRequestedPoints(string? tolerance, float across, float upDown)
+    {
+        string report = Path.Combine(_folder, "plan.json");
+        string[] args = ["plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--from", "-6,0,0.3", "--to", "11.5,1,-0.4", "--threads", "2", "--report", report];
+        (int code, string output, string error) = Run([.. args, .. tolerance is null ? Array.Empty<string>() : ["--goal-tolerance", tolerance]]);
+        Assert.That(code, Is.Zero, error);
+        Assert.That(output, Does.Contain("start: stance").And.Contain("goal: stance"));
+        using JsonDocument json = JsonDocument.Parse(File.ReadAllBytes(report));
+        JsonElement root = json.RootElement;
+        Assert.That(root.GetProperty("request").GetProperty("tolerance").GetProperty("across").GetSingle(), Is.EqualTo(across));
+        foreach ((string name, Vector3 requested) in new[] { ("start", new Vector3(-6f, 0f, 0.3f)), ("goal", new Vector3(11.5f, 1f, -0.4f)) })
+        {
+            JsonElement placement = root.GetProperty(name);
+            Vector3 centre = Vec(placement.GetProperty("contactCentre"));
+            Assert.That(placement.GetProperty("placed").GetBoolean(), Is.True);
+            Assert.That(placement.GetProperty("across").GetSingle(), Is.LessThanOrEqualTo(across));
+            Assert.That(placement.GetProperty("upDown").GetSingle(), Is.LessThanOrEqualTo(upDown));
+            Assert.That(new Vector2(centre.X - requested.X, centre.Z - requested.Z).Length(), Is.EqualTo(placement.GetProperty("across").GetSingle()).Within(1e-4f));
+        }
+
+        // The first and last stances' own contacts, as the report lists them, are where the placement says.
+        JsonElement jumps = root.GetProperty("jumps");
+        JsonElement first = jumps[0].GetProperty("takeoff").GetProperty("contacts");
+        Vector3 sum = Vector3.Zero;
+        foreach (JsonElement c in first.EnumerateArray())
+        {
+            sum += Vec(c.GetProperty("position"));
+        }
+
+        Assert.That(Vector3.Distance(sum / first.GetArrayLength(), Vec(root.GetProperty("start").GetProperty("contactCentre"))), Is.LessThan(1e-4f));
+        Assert.That(root.GetProperty("rejectedJumps").ValueKind, Is.EqualTo(JsonValueKind.Array));
+    }
+
     [Test]
     public void PlanAnimateWritesAGlbAndTheAnimationSection()
     {
@@ -160,6 +196,8 @@ public sealed class CliJobTests
             (["plan", "--level", level, "--character", "skeleton", "--from", "0;0", "--to", "1,0,0", "--report", report], "--from takes a point"),
             (["bake", "--level", level, "--character", "skeleton", "--threads", "0", "--out", Path.Combine(_folder, "x")], "Threads must be at least 1"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid pose stands within 0.5 m across and 0.25 m up/down of the start"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "0,1"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "wide"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
         };
         foreach ((string[] args, string expected) in cases)
         {
