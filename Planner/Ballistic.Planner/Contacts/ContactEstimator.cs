@@ -44,6 +44,9 @@ public sealed class ContactEstimator
     [ThreadStatic]
     private static List<int>? s_scratch;
 
+    [ThreadStatic]
+    private static List<Piece>? s_pieces;
+
     /// <summary>Checks the trunk, estimates the contacts and computes the cone of <paramref name="pose"/>.</summary>
     public PoseEvaluation Evaluate(in RootPose pose) =>
         _bvh.Overlaps(new OrientedBox(pose.Position, _character.TrunkHalfExtents, pose.Rotation))
@@ -95,9 +98,12 @@ public sealed class ContactEstimator
             return false;
         }
 
-        // Area, area-weighted centroid and normal of the intersection, per surface (few per workspace: a list).
+        // Area, area-weighted centroid and normal of the intersection, per surface (few per workspace: a list); the
+        // acceptable triangles' pieces inside Wk are kept for placing the contact on one of them.
         Span<SurfacePart> parts = stackalloc SurfacePart[16];
         int partCount = 0;
+        List<Piece> pieces = s_pieces ??= new List<Piece>(64);
+        pieces.Clear();
         foreach (int t in scratch)
         {
             int surface = _surfaces.SurfaceOf(t);
@@ -119,6 +125,7 @@ public sealed class ContactEstimator
                 continue;
             }
 
+            pieces.Add(new Piece(t, surface, centroid));
             int slot = 0;
             while (slot < partCount && parts[slot].Surface != surface)
             {
@@ -162,10 +169,7 @@ public sealed class ContactEstimator
                 break;
             }
 
-            if (PointOn(parts[p], limb, workspace, pose.Position, scratch) is not { } onMesh)
-            {
-                continue;
-            }
+            (Vector3 Position, Vector3 Normal) onMesh = PointOn(parts[p], workspace, pieces);
 
             // A surface hidden from the trunk (the floor under a crate the workspace reaches into) cannot be reached.
             Vector3 seen = onMesh.Position + (onMesh.Normal * 0.01f);
@@ -190,37 +194,25 @@ public sealed class ContactEstimator
     /// or when that point leaves Wk the centre of the triangle's piece inside Wk (on the triangle and inside Wk, the
     /// piece being convex), with that triangle's normal.
     /// </summary>
-    private (Vector3 Position, Vector3 Normal)? PointOn(in SurfacePart part, Limb limb, in OrientedBox workspace, Vector3 trunk, List<int> triangles)
+    private (Vector3 Position, Vector3 Normal) PointOn(in SurfacePart part, in OrientedBox workspace, List<Piece> pieces)
     {
         Vector3 centre = part.Moment / part.Area;
-        (Vector3 Position, Vector3 Normal)? best = null;
+        (Vector3 Position, Vector3 Normal) best = default;
         float nearest = float.PositiveInfinity;
-        foreach (int t in triangles)
+        foreach (Piece piece in pieces)
         {
-            if (_surfaces.SurfaceOf(t) != part.Surface)
+            if (piece.Surface != part.Surface)
             {
                 continue;
             }
 
-            Triangle triangle = _level.Triangles[t];
-            Vector3 normal = triangle.Normal;
-            if (!limb.Filter.Accepts(normal))
-            {
-                continue;
-            }
-
-            (float area, Vector3 centroid) = BoxClipper.ClipArea(workspace, triangle);
-            if (area <= 0f || !FacesTrunk(normal, centroid, trunk))
-            {
-                continue;
-            }
-
+            Triangle triangle = _level.Triangles[piece.Triangle];
             Vector3 closest = triangle.ClosestPoint(centre);
             float distance = Vector3.DistanceSquared(closest, centre);
             if (distance < nearest)
             {
                 nearest = distance;
-                best = (workspace.Contains(closest) ? closest : centroid, normal);
+                best = (workspace.Contains(closest) ? closest : piece.Centroid, triangle.Normal);
             }
         }
 
@@ -232,6 +224,9 @@ public sealed class ContactEstimator
     /// trunk centre <paramref name="trunk"/>: a limb can only press on the side of a surface it stands on.
     /// </summary>
     public static bool FacesTrunk(Vector3 normal, Vector3 point, Vector3 trunk) => Vector3.Dot(normal, trunk - point) > 0f;
+
+    /// <summary>An acceptable triangle's piece inside a workspace: the triangle, its surface and the piece's centre.</summary>
+    private readonly record struct Piece(int Triangle, int Surface, Vector3 Centroid);
 
     private struct SurfacePart
     {
