@@ -101,6 +101,22 @@ public sealed class BodyCollision
         ArgumentNullException.ThrowIfNull(limb);
         int l = IndexOf(limb);
         Rig rig = _model.Rig;
+        Vector3 tip = limb.EffectorPosition(positions, rotations);
+
+        // One box around the whole limb first: in flight it is usually clear of the level, and one query says so.
+        Vector3 min = Vector3.Min(tip, positions[limb.EffectorJoint]);
+        Vector3 max = Vector3.Max(tip, positions[limb.EffectorJoint]);
+        foreach (int j in _limbBones[l])
+        {
+            min = Vector3.Min(min, Vector3.Min(positions[j], positions[rig.Joints[j].Parent]));
+            max = Vector3.Max(max, Vector3.Max(positions[j], positions[rig.Joints[j].Parent]));
+        }
+
+        if (!_bvh.Overlaps(new OrientedBox((min + max) * 0.5f, ((max - min) * 0.5f) + new Vector3(Thickness), Quaternion.Identity)))
+        {
+            return false;
+        }
+
         foreach (int j in _limbBones[l])
         {
             if (SegmentCollides(positions[rig.Joints[j].Parent], positions[j], contact, Thickness))
@@ -109,7 +125,7 @@ public sealed class BodyCollision
             }
         }
 
-        return SegmentCollides(positions[limb.EffectorJoint], limb.EffectorPosition(positions, rotations), contact, Thickness);
+        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness);
     }
 
     /// <summary>

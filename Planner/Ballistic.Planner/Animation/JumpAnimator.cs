@@ -308,85 +308,122 @@ public sealed class JumpAnimator : IJumpAnimator
             }
         }
 
-        // Each limb: held angles in its contact phases; in flight, break → apex → make, re-sampling the apex pose
-        // while a frame would put a bone through the level.
+        // Each limb: held angles in its contact phases; in flight, break → apex → make, re-sampling the apex pose of
+        // every limb that would put a bone through the level. Every fine step is checked (angles between frames are
+        // interpolated the same way), with one forward kinematics per step for all the limbs being checked.
         int colliding = 0;
         var random = new Random(17);
+        var limbApex = new float[limbs][];
+        var firstHit = new float[limbs];
+        var pending = new List<int>();
         for (int l = 0; l < limbs; l++)
         {
+            limbApex[l] = (float[])apexAngles.Clone();
+            pending.Add(l);
+        }
+
+        bool Airborne(int l, int i) => !(held[l].ContainsKey(i) && (i <= breaks[l] || i >= makes[l]));
+        void LimbAt(int l, int i, float[] target)
+        {
             RigLimb limb = Model.Limbs[l];
+            if (!Airborne(l, i))
+            {
+                float[] holding = held[l][i];
+                foreach (int d in limb.ChainDofs)
+                {
+                    target[d] = holding[d];
+                }
+
+                return;
+            }
+
             float[] from = held[l][breaks[l]];
             float[] to = held[l][makes[l]];
-            float[] limbApex = (float[])apexAngles.Clone();
-            bool clear = false;
-            float firstHit = -1f;
-            for (int attempt = 0; attempt <= MaxResamples && !clear; attempt++)
+            float[] top = limbApex[l];
+            foreach (int d in limb.ChainDofs)
             {
-                // Re-sampling: the tucked and contact poses first, then random samples of the limb's database.
+                target[d] = apex > breaks[l] && apex < makes[l]
+                    ? (i <= apex ? float.Lerp(from[d], top[d], (i - breaks[l]) / (float)(apex - breaks[l])) : float.Lerp(top[d], to[d], (i - apex) / (float)(makes[l] - apex)))
+                    : float.Lerp(from[d], to[d], (i - breaks[l]) / (float)(makes[l] - breaks[l]));
+            }
+        }
+
+        float[] probe = new float[rig.DofCount];
+        var hit = new bool[limbs];
+        for (int attempt = 0; attempt <= MaxResamples && pending.Count > 0; attempt++)
+        {
+            // Re-sampling: the tucked and contact poses first, then random samples of the limb's database.
+            foreach (int l in pending)
+            {
+                hit[l] = false;
+                RigLimb limb = Model.Limbs[l];
                 if (attempt is 1 or 2)
                 {
                     float[] pose = attempt == 1 ? Model.FlexionPose : Model.ContactPose;
                     foreach (int d in limb.ChainDofs)
                     {
-                        limbApex[d] = pose[d];
+                        limbApex[l][d] = pose[d];
                     }
                 }
                 else if (attempt > 2)
                 {
-                    _contacts.Database(l).Apply(random.Next(_contacts.Database(l).Count), limbApex);
-                }
-
-                // Every fine step is checked (angles between frames are interpolated the same way), the frames stored.
-                clear = true;
-                int k = 0;
-                float[] probe = new float[rig.DofCount];
-                for (int i = 0; i <= steps; i++)
-                {
-                    bool isFrame = k < times.Length && times[k] == i;
-                    float[] target = isFrame ? angles[k] : probe;
-                    if (isFrame)
-                    {
-                        k++;
-                    }
-                    else
-                    {
-                        Array.Copy(angles[Math.Max(0, k - 1)], probe, probe.Length);
-                    }
-
-                    if (held[l].TryGetValue(i, out float[]? holding) && (i <= breaks[l] || i >= makes[l]))
-                    {
-                        foreach (int d in limb.ChainDofs)
-                        {
-                            target[d] = holding[d];
-                        }
-
-                        continue;
-                    }
-
-                    foreach (int d in limb.ChainDofs)
-                    {
-                        target[d] = apex > breaks[l] && apex < makes[l]
-                            ? (i <= apex ? float.Lerp(from[d], limbApex[d], (i - breaks[l]) / (float)(apex - breaks[l])) : float.Lerp(limbApex[d], to[d], (i - apex) / (float)(makes[l] - apex)))
-                            : float.Lerp(from[d], to[d], (i - breaks[l]) / (float)(makes[l] - breaks[l]));
-                    }
-
-                    if (clear)
-                    {
-                        rig.Solve(arc.PoseAt(Time(i)), target, positions, rotations);
-                        if (_collision.LimbCollides(limb, positions, rotations, null))
-                        {
-                            clear = false;
-                            firstHit = Time(i);
-                        }
-                    }
+                    _contacts.Database(l).Apply(random.Next(_contacts.Database(l).Count), limbApex[l]);
                 }
             }
 
-            if (!clear)
+            int k = 0;
+            for (int i = 0; i <= steps; i++)
             {
-                colliding++;
-                problems.Add(new JumpProblem(index, $"{limb.Name} passes through the level in flight ({firstHit:0.000} s after takeoff) whatever pose it takes"));
+                while (k + 1 < times.Length && times[k + 1] <= i)
+                {
+                    k++;
+                }
+
+                bool any = false;
+                foreach (int l in pending)
+                {
+                    any |= !hit[l] && Airborne(l, i);
+                }
+
+                if (!any)
+                {
+                    continue;
+                }
+
+                // The trunk's angles of the frame at or before this step; the pending limbs' own at this step.
+                Array.Copy(angles[k], probe, probe.Length);
+                foreach (int l in pending)
+                {
+                    LimbAt(l, i, probe);
+                }
+
+                rig.Solve(arc.PoseAt(Time(i)), probe, positions, rotations);
+                foreach (int l in pending)
+                {
+                    if (!hit[l] && Airborne(l, i) && _collision.LimbCollides(Model.Limbs[l], positions, rotations, null))
+                    {
+                        hit[l] = true;
+                        firstHit[l] = Time(i);
+                    }
+                }
             }
+
+            pending.RemoveAll(l => !hit[l]);
+        }
+
+        // The frames: every limb at its chosen poses.
+        for (int k = 0; k < times.Length; k++)
+        {
+            for (int l = 0; l < limbs; l++)
+            {
+                LimbAt(l, times[k], angles[k]);
+            }
+        }
+
+        foreach (int l in pending)
+        {
+            colliding++;
+            problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} passes through the level in flight ({firstHit[l]:0.000} s after takeoff) whatever pose it takes"));
         }
 
         // Bones of no limb (spine, head, tail…) follow the trunk: nothing to re-sample, so a hit is a problem.

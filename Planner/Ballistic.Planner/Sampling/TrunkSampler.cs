@@ -118,7 +118,7 @@ public sealed class TrunkSampler
     /// <paramref name="point"/> (rings 10 cm apart, each surface point met by a vertical segment reaching
     /// <see cref="EndpointTolerance.UpDown"/> + 0.3 m above and below the point, eight yaws, five lifts in the stance
     /// range) and keeps, on the first ring that has any, the pose whose contacts' centre is nearest the point within
-    /// the tolerance. Never a pose on another floor or step: the contact centre must lie within the tolerance.
+    /// the tolerance (the first one within a third of it is taken at once). Never a pose on another floor or step: the contact centre must lie within the tolerance.
     /// Deterministic: the same point, tolerance and check give the same pose. When none is found, the search goes on
     /// beyond the tolerance only to report how far the nearest valid pose stands.
     /// </summary>
@@ -180,6 +180,10 @@ public sealed class TrunkSampler
                                 if (score < bestScore && canStand?.Invoke(pose) != false)
                                 {
                                     (best, bestCentre, bestScore) = (pose, centre, score);
+                                    if (score <= GoodEnough)
+                                    {
+                                        return Placed();
+                                    }
                                 }
                             }
                             else
@@ -193,14 +197,20 @@ public sealed class TrunkSampler
 
             if (best is not null)
             {
-                return new EndpointPlacement(point, best, bestCentre, new Vector2(bestCentre.X - point.X, bestCentre.Z - point.Z).Length(), MathF.Abs(bestCentre.Y - point.Y), null);
+                return Placed();
             }
 
             radius += beyond ? 2.5f * PlacementStep : PlacementStep;
         }
 
         return new EndpointPlacement(point, null, point, float.PositiveInfinity, float.PositiveInfinity, float.IsFinite(nearest) ? nearest : null);
+
+        EndpointPlacement Placed() =>
+            new(point, best, bestCentre, new Vector2(bestCentre.X - point.X, bestCentre.Z - point.Z).Length(), MathF.Abs(bestCentre.Y - point.Y), null);
     }
+
+    /// <summary>A placement whose contact centre is within this share of the tolerance (in the scaled norm) is taken at once.</summary>
+    private const float GoodEnough = 0.35f;
 
     /// <summary>The centre of a pose's contacts, world metres.</summary>
     public static Vector3 ContactCentre(PoseEvaluation pose)
