@@ -140,6 +140,14 @@ public sealed class ForeignRigTests
 
         var animation = new JumpAnimation(model, Array.Empty<BallisticArc>(), [], frames, [], [], 0, 0);
         byte[] glb = AnimatedGlbWriter.ToBytes(animation, "jumps");
+
+        // CI runs the Khronos validator on these too (it sets BALLISTIC_GLTF_OUT).
+        if (Environment.GetEnvironmentVariable("BALLISTIC_GLTF_OUT") is { Length: > 0 } validate)
+        {
+            Directory.CreateDirectory(validate);
+            File.WriteAllBytes(Path.Combine(validate, name + "-animated.glb"), glb);
+        }
+
         GltfDocument original = GltfDocument.Load(gltf);
         GltfDocument written = GltfDocument.Parse(glb, name + ".glb", null);
 
