@@ -76,8 +76,8 @@ public sealed class PathQuery
         var extra = new List<(int From, int To, BallisticArc Arc)>();
         bool startIsNew = start.Id >= n;
         bool goalIsNew = goal.Id >= n;
-        SteeringResult direct = _scene.Steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone);
-        if (direct.Succeeded && (startIsNew || goalIsNew))
+        if ((startIsNew || goalIsNew) && rejected?.Contains((start.Id, goal.Id)) != true &&
+            _scene.Steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
         {
             extra.Add((start.Id, goal.Id, direct.Arc));
         }
@@ -289,6 +289,4 @@ public sealed class PathQuery
 
     private static PlanResult Fail(PlannerStatus status, string reason, RoadmapNode? start, RoadmapNode? goal, Stopwatch clock) =>
         new(status, reason, start, goal, [], clock.Elapsed);
-
-    private static string Format(Vector3 p) => $"({p.X:0.###}, {p.Y:0.###}, {p.Z:0.###})";
 }
