@@ -1,7 +1,9 @@
+using Ballistic.Planner.IO;
+
 namespace Ballistic.Planner.Characters;
 
 /// <summary>A character description cannot be used; the message names the character, limb or value at fault.</summary>
-public sealed class CharacterException : Exception
+public sealed class CharacterException : BallisticInputException
 {
     /// <summary>Creates the exception with a message naming the problem.</summary>
     public CharacterException(string message)

@@ -1,7 +1,9 @@
+using Ballistic.Planner.IO;
+
 namespace Ballistic.Planner.Levels;
 
 /// <summary>The level given to the planner cannot be used; the message names the mesh, file or value at fault.</summary>
-public sealed class LevelException : Exception
+public sealed class LevelException : BallisticInputException
 {
     /// <summary>Creates the exception with a message naming the problem.</summary>
     public LevelException(string message)

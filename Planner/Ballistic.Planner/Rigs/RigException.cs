@@ -1,7 +1,9 @@
+using Ballistic.Planner.IO;
+
 namespace Ballistic.Planner.Rigs;
 
 /// <summary>A rig or limb description cannot be used; the message names the joint, bone or limb at fault.</summary>
-public sealed class RigException : Exception
+public sealed class RigException : BallisticInputException
 {
     /// <summary>Creates the exception with a message naming the problem.</summary>
     public RigException(string message)
