@@ -20,14 +20,14 @@ public static class BallisticCli
         ?? typeof(BallisticCli).Assembly.GetName().Version?.ToString()
         ?? "unknown";
 
-    /// <summary>Builds the root command with every subcommand.</summary>
-    public static RootCommand BuildRootCommand()
+    /// <summary>Builds the root command with every subcommand; <paramref name="cancellation"/> cancels their jobs.</summary>
+    public static RootCommand BuildRootCommand(CancellationToken cancellation = default)
     {
         RootCommand root = new(Description)
         {
-            CliCommands.Bake(),
-            CliCommands.Plan(),
-            CliCommands.Demo(),
+            CliCommands.Bake(cancellation),
+            CliCommands.Plan(cancellation),
+            CliCommands.Demo(cancellation),
             CliCommands.Levels(),
             CliCommands.Characters(),
             BenchCommand.Create(),
@@ -50,15 +50,34 @@ public static class BallisticCli
     /// Parses <paramref name="args"/> and runs the chosen command, writing normal output to <paramref name="output"/>
     /// and errors to <paramref name="error"/>.
     /// </summary>
-    /// <returns>The process exit code: 0 on success, non-zero on any error.</returns>
-    public static int Run(string[] args, TextWriter output, TextWriter error)
+    /// <param name="args">The command line.</param>
+    /// <param name="output">Where normal output goes.</param>
+    /// <param name="error">Where errors go: one line each (<c>--verbose</c> adds the stack trace).</param>
+    /// <param name="cancellation">Cancels the running job (Ctrl-C, SIGTERM): exit code <see cref="ExitCode.Cancelled"/>.</param>
+    /// <returns>The process exit code (<see cref="ExitCode"/>): 0 on success, non-zero on any error.</returns>
+    public static int Run(string[] args, TextWriter output, TextWriter error, CancellationToken cancellation = default)
     {
         ArgumentNullException.ThrowIfNull(args);
         ArgumentNullException.ThrowIfNull(output);
         ArgumentNullException.ThrowIfNull(error);
 
-        RootCommand root = BuildRootCommand();
-        ParseResult parsed = root.Parse(args);
-        return parsed.Invoke(new InvocationConfiguration { Output = output, Error = error });
+        try
+        {
+            RootCommand root = BuildRootCommand(cancellation);
+            ParseResult parsed = root.Parse(args);
+            int code = parsed.Invoke(new InvocationConfiguration { Output = output, Error = error, EnableDefaultExceptionHandler = false, ProcessTerminationTimeout = null });
+            return parsed.Errors.Count > 0 ? ExitCode.Usage : code;
+        }
+        catch (Exception e)
+        {
+            // Commands guard their own work; this is the last boundary (parsing, help), never a stack trace by default.
+            error.WriteLine($"error: internal error ({e.GetType().Name}: {e.Message}); please report it (--verbose shows the details)");
+            if (args.Contains("--verbose"))
+            {
+                error.WriteLine(e);
+            }
+
+            return ExitCode.Internal;
+        }
     }
 }

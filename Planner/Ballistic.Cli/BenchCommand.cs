@@ -37,9 +37,14 @@ internal static class BenchCommand
         {
             int n = parse.GetValue(runs);
             int t = parse.GetValue(threads);
-            if (n < 1 || t < 1)
+            if (n is < 1 or > 1000)
             {
-                throw new CliException("--runs and --threads must be at least 1.");
+                throw new CliException($"--runs takes 1 to 1000 runs, not {n}.");
+            }
+
+            if (t is < 1 or > 1024)
+            {
+                throw new CliException($"--threads takes 1 to 1024 threads, not {t}.");
             }
 
             Run(parse.InvocationConfiguration.Output, n, t, parse.GetValue(only));

@@ -3,7 +3,6 @@ using System.Diagnostics;
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Levels.Generation;
@@ -29,7 +28,7 @@ internal static class CliCommands
 
     private static Option<double?> TimeLimitOption() => new("--time-limit") { Description = "Bake time budget in seconds." };
 
-    public static Command Bake()
+    public static Command Bake(CancellationToken cancellation = default)
     {
         Option<string> level = LevelOption();
         Option<string> character = CharacterOption();
@@ -46,12 +45,11 @@ internal static class CliCommands
             Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!);
             ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!).Reduced;
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
-            int? nodes = parse.GetValue(maxNodes) ?? (limit is null ? 200 : null);
+            int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
+            var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit };
             var scene = PlanningScene.Create(lvl, chr);
-            var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = parse.GetValue(threads), MaxNodes = nodes, TimeLimit = limit };
-            Validate(settings);
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
-            BakeResult result = new RoadmapBaker(scene).Bake(settings, progress: progress);
+            BakeResult result = new RoadmapBaker(scene).Bake(settings, progress: progress, cancellationToken: cancellation);
             progress?.Finish();
             stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
             stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
@@ -59,12 +57,19 @@ internal static class CliCommands
             {
                 stdout.WriteLine("rejected jumps: " + string.Join(", ", result.SteeringRejections.OrderByDescending(r => r.Value).Select(r => $"{r.Key} {r.Value}")));
             }
-            if (result.Roadmap.Nodes.Count == 0 || result.Status is PlannerStatus.Cancelled)
+            string path = parse.GetValue(output)!;
+            if (result.Status is PlannerStatus.Cancelled)
             {
-                throw new CliException($"Nothing written: {result.Reason}.");
+                stderr.WriteLine($"cancelled: nothing written{(File.Exists(path) ? $"; {path} is unchanged" : "")}.");
+                return ExitCode.Cancelled;
             }
 
-            string path = parse.GetValue(output)!;
+            if (result.Roadmap.Nodes.Count == 0)
+            {
+                stderr.WriteLine($"error: nothing written: {result.Reason}.");
+                return ExitCode.NotFound;
+            }
+
             RoadmapFile.Save(result.Roadmap, path);
             stdout.WriteLine($"written: {path}");
             return 0;
@@ -72,7 +77,7 @@ internal static class CliCommands
         return command;
     }
 
-    public static Command Plan()
+    public static Command Plan(CancellationToken cancellation = default)
     {
         Option<string> level = LevelOption();
         Option<string> character = CharacterOption();
@@ -103,9 +108,10 @@ internal static class CliCommands
                 To = CliInputs.ParsePoint(parse.GetValue(to)!, "--to"),
                 RoadmapPath = parse.GetValue(roadmap),
                 Seed = parse.GetValue(seed),
-                Threads = Positive(parse.GetValue(threads), "--threads"),
-                MaxNodes = Positive(parse.GetValue(maxNodes), "--max-nodes"),
+                Threads = Threads(parse.GetValue(threads)),
+                MaxNodes = Nodes(parse.GetValue(maxNodes), "--max-nodes"),
                 TimeLimit = Seconds(parse.GetValue(timeLimit), "--time-limit"),
+                Cancellation = cancellation,
                 Tolerance = CliInputs.ParseTolerance(parse.GetValue(tolerance)!, "--goal-tolerance"),
             };
             string reportPath = parse.GetValue(report)!;
@@ -121,13 +127,19 @@ internal static class CliCommands
             }
 
             (PlanReport result, Roadmap used) = pipeline.Run(parse.InvocationConfiguration.Error);
+            if (result.Result.Status == PlannerStatus.Cancelled)
+            {
+                parse.InvocationConfiguration.Error.WriteLine("cancelled: nothing written.");
+                return ExitCode.Cancelled;
+            }
+
             pipeline.Write(result, used, reportPath, parse.GetValue(svg), parse.InvocationConfiguration.Output, glbPath);
-            return result.Result.Status == PlannerStatus.Exact ? 0 : 1;
+            return result.Result.Status == PlannerStatus.Exact ? ExitCode.Success : ExitCode.NotFound;
         }));
         return command;
     }
 
-    public static Command Demo()
+    public static Command Demo(CancellationToken cancellation = default)
     {
         Option<string> output = new("--out") { Description = "Folder for the report, picture and roadmap.", DefaultValueFactory = _ => "out" };
         Option<int> threads = ThreadsOption();
@@ -155,15 +167,22 @@ internal static class CliCommands
                 Scene = scene,
                 From = from,
                 To = to,
-                Threads = Positive(parse.GetValue(threads), "--threads"),
+                Threads = Threads(parse.GetValue(threads)),
                 MaxNodes = 600,
+                Cancellation = cancellation,
             };
             pipeline.Timings["loadLevel"] = loadSeconds;
             (PlanReport report, Roadmap roadmap) = pipeline.Run(parse.InvocationConfiguration.Error);
+            if (report.Result.Status == PlannerStatus.Cancelled)
+            {
+                parse.InvocationConfiguration.Error.WriteLine("cancelled: nothing written.");
+                return ExitCode.Cancelled;
+            }
+
             string folder = parse.GetValue(output)!;
             RoadmapFile.Save(roadmap, Path.Combine(folder, "desert-skeleton.roadmap"));
             pipeline.Write(report, roadmap, Path.Combine(folder, "desert-skeleton.json"), Path.Combine(folder, "desert-skeleton.svg"), stdout, Path.Combine(folder, "desert-skeleton.glb"));
-            return report.Result.Status == PlannerStatus.Exact ? 0 : 1;
+            return report.Result.Status == PlannerStatus.Exact ? ExitCode.Success : ExitCode.NotFound;
         }));
         return command;
     }
@@ -210,7 +229,10 @@ internal static class CliCommands
         return new Command("characters", "The characters' rigs.") { generate };
     }
 
-    /// <summary>Runs a command body, turning expected failures into one line on standard error and exit code 1.</summary>
+    /// <summary>
+    /// Runs a command body: the one error boundary of the tool. Every failure becomes one line on standard error
+    /// (<c>--verbose</c> adds the stack trace) and an exit code by its class (<see cref="ExitCode"/>).
+    /// </summary>
     internal static int Guard(ParseResult parse, Func<int> body)
     {
         TextWriter stderr = parse.InvocationConfiguration.Error;
@@ -218,37 +240,43 @@ internal static class CliCommands
         {
             return body();
         }
-        catch (Exception e) when (e is CliException or LevelException or CharacterException or RigException or RoadmapFileException or GltfException or ArgumentException or IOException or UnauthorizedAccessException)
+        catch (Exception e)
         {
-            stderr.WriteLine($"error: {e.Message}");
+            (int code, string line) = e switch
+            {
+                CliException or ArgumentException => (ExitCode.Usage, e.Message),
+                BallisticInputException => (ExitCode.Input, e.Message),
+                OutputFileException => (ExitCode.Output, e.Message),
+                OperationCanceledException => (ExitCode.Cancelled, "cancelled: nothing written."),
+                IOException or UnauthorizedAccessException => (ExitCode.Input, e.Message),
+                _ => (ExitCode.Internal, $"internal error ({e.GetType().Name}: {e.Message}); please report it (--verbose shows the details)"),
+            };
+            stderr.WriteLine(code == ExitCode.Cancelled ? line : $"error: {line}");
             if (parse.GetValue(Verbose))
             {
                 stderr.WriteLine(e);
             }
 
-            return 1;
+            return code;
         }
     }
+
+    /// <summary>The largest time budget an option takes, seconds (a week).</summary>
+    private const double MaxSeconds = 7 * 24 * 3600;
+
+    /// <summary>The largest node budget an option takes.</summary>
+    private const int MaxNodeBudget = 10_000_000;
 
     private static TimeSpan? Seconds(double? value, string option) => value switch
     {
         null => null,
-        > 0 when double.IsFinite(value.Value) => TimeSpan.FromSeconds(value.Value),
-        _ => throw new CliException($"{option} takes a positive number of seconds, not {value}."),
+        > 0 and <= MaxSeconds => TimeSpan.FromSeconds(value.Value),
+        _ => throw new CliException($"{option} takes a number of seconds above 0 and at most {MaxSeconds:0} (a week), not {value}."),
     };
 
-    private static int Positive(int value, string option) =>
-        value > 0 ? value : throw new CliException($"{option} must be at least 1, not {value}.");
+    private static int Threads(int value) =>
+        value is >= 1 and <= 1024 ? value : throw new CliException($"--threads takes 1 to 1024 threads, not {value}.");
 
-    private static void Validate(BakeSettings settings)
-    {
-        try
-        {
-            settings.Validate();
-        }
-        catch (ArgumentException e)
-        {
-            throw new CliException(e.Message, e);
-        }
-    }
+    private static int Nodes(int value, string option) =>
+        value is >= 1 and <= MaxNodeBudget ? value : throw new CliException($"{option} takes 1 to {MaxNodeBudget:N0} nodes, not {value}.");
 }

@@ -9,7 +9,7 @@ using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Cli;
 
-/// <summary>Parsing and loading of the tool's inputs, each failure a <see cref="CliException"/> naming the input.</summary>
+/// <summary>Parsing and loading of the tool's inputs: a bad value is a <see cref="CliException"/>, a missing or unusable file an <see cref="InputFileException"/>, each naming the input.</summary>
 internal static class CliInputs
 {
     /// <summary>Parses "x,y,z" (metres, invariant culture).</summary>
@@ -51,13 +51,13 @@ internal static class CliInputs
     {
         if (!File.Exists(path))
         {
-            throw new CliException($"Level file '{path}' does not exist.");
+            throw new InputFileException($"Level file '{path}' does not exist.");
         }
 
         string extension = Path.GetExtension(path).ToLowerInvariant();
         if (extension is not (".glb" or ".gltf"))
         {
-            throw new CliException($"Level file '{path}' is not glTF: give a .glb or .gltf file.");
+            throw new InputFileException($"Level file '{path}' is not glTF: give a .glb or .gltf file.");
         }
 
         return GltfLevelLoader.Load(path);
@@ -97,12 +97,12 @@ internal static class CliInputs
 
         if (!File.Exists(value))
         {
-            throw new CliException($"Limb spec '{value}' does not exist.");
+            throw new InputFileException($"Limb spec '{value}' does not exist.");
         }
 
         string stem = value.EndsWith(".limbs.json", StringComparison.OrdinalIgnoreCase) ? value[..^".limbs.json".Length] : value[..^".json".Length];
         string? gltf = new[] { stem + ".glb", stem + ".gltf" }.FirstOrDefault(File.Exists)
-            ?? throw new CliException($"Limb spec '{value}' needs its rigged character beside it as {Path.GetFileName(stem)}.glb or .gltf.");
+            ?? throw new InputFileException($"Limb spec '{value}' needs its rigged character beside it as {Path.GetFileName(stem)}.glb or .gltf.");
         (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, value);
         return (reduced, model);
     }

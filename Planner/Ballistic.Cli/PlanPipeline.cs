@@ -42,6 +42,9 @@ internal sealed class PlanPipeline
 
     public EndpointTolerance Tolerance { get; init; } = new();
 
+    /// <summary>Cancels the bake (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
+    public CancellationToken Cancellation { get; init; }
+
     public PlanningScene? Scene { get; init; }
 
     public IDictionary<string, double> Timings { get; } = new Dictionary<string, double>();
@@ -62,7 +65,7 @@ internal sealed class PlanPipeline
         AnimatedPlan plan;
         if (RoadmapPath is not null)
         {
-            roadmap = RoadmapFile.Load(RoadmapPath, Level.Fingerprint, Character);
+            roadmap = RoadmapFile.Load(RoadmapPath, Level, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
             clock.Restart();
             plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance });
@@ -72,7 +75,7 @@ internal sealed class PlanPipeline
         {
             var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance };
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(error) ? new ConsoleProgress(error, MaxNodes) : null;
-            (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, progress: progress);
+            (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress);
             progress?.Finish();
             roadmap = bake.Roadmap;
             bakeSeconds = bake.Elapsed.TotalSeconds;

@@ -13,6 +13,9 @@ namespace Ballistic.Planner.Roadmaps;
 /// The binary roadmap format: magic <c>BLSTRMAP</c>, a version, the level and character fingerprints, the seed,
 /// the nodes and edges (little-endian IEEE floats), and a SHA-256 of everything before it. Writing the same roadmap
 /// always gives the same bytes. Saving goes through a temporary file, so a failed save leaves the old file intact.
+/// Reading trusts nothing the checksum cannot vouch for: every value is checked (finite, in range, unit where it
+/// should be) and, for the character and level it is loaded for, every jump is re-checked against its ends, the
+/// speed limits and gravity.
 /// </summary>
 public static class RoadmapFile
 {
@@ -76,21 +79,64 @@ public static class RoadmapFile
         OutputFile.Write(path, ToBytes(roadmap));
     }
 
-    /// <summary>Reads a roadmap file and checks that it was baked for this level and character.</summary>
+    /// <summary>The largest roadmap file read, bytes (2 GiB).</summary>
+    public const long MaxFileBytes = int.MaxValue;
+
+    /// <summary>
+    /// Reads a roadmap file and checks that it was baked for this level and character and that its content is
+    /// sound: every value finite, rotations and normals unit, node and limb indices in range, gravity the
+    /// character's, every jump under the character's speed limits and landing where its parabola ends, and every
+    /// node within reach of the level's bounds.
+    /// </summary>
+    /// <param name="path">The file.</param>
+    /// <param name="level">The level it will be used on.</param>
+    /// <param name="character">The character it will be used for.</param>
+    /// <exception cref="RoadmapFileException">Missing, not a regular file, truncated, corrupt, unsound, unknown version, or baked for something else.</exception>
+    public static Roadmap Load(string path, Levels.Level level, ReducedCharacter character)
+    {
+        ArgumentNullException.ThrowIfNull(level);
+        ArgumentNullException.ThrowIfNull(character);
+        return Read(path, level.Fingerprint, character, level.Bounds.Inflate(character.Reach + 1f));
+    }
+
+    /// <summary>
+    /// Reads a roadmap file and checks that it was baked for the level of this fingerprint and for this character,
+    /// and that its content is sound (see <see cref="Load(string, Levels.Level, ReducedCharacter)"/>, which also checks
+    /// the nodes against the level's bounds).
+    /// </summary>
     /// <param name="path">The file.</param>
     /// <param name="levelFingerprint">Fingerprint of the level it will be used on.</param>
     /// <param name="character">The character it will be used for.</param>
-    /// <exception cref="RoadmapFileException">Missing, truncated, corrupt, unknown version, or baked for something else.</exception>
-    public static Roadmap Load(string path, string levelFingerprint, ReducedCharacter character)
+    /// <exception cref="RoadmapFileException">Missing, not a regular file, truncated, corrupt, unsound, unknown version, or baked for something else.</exception>
+    public static Roadmap Load(string path, string levelFingerprint, ReducedCharacter character) => Read(path, levelFingerprint, character, null);
+
+    private static Roadmap Read(string path, string levelFingerprint, ReducedCharacter character, Geometry.Aabb? bounds)
     {
         ArgumentNullException.ThrowIfNull(path);
+        ArgumentNullException.ThrowIfNull(levelFingerprint);
         ArgumentNullException.ThrowIfNull(character);
         byte[] bytes;
         try
         {
+            switch (FileKind.Of(path))
+            {
+                case FileKindValue.Missing:
+                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it does not exist.");
+                case FileKindValue.Directory:
+                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it is a folder.");
+                case FileKindValue.Special:
+                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it is not a regular file (a device, pipe or socket).");
+            }
+
+            long length = new FileInfo(path).Length;
+            if (length > MaxFileBytes)
+            {
+                throw new RoadmapFileException($"Roadmap file {path} is {length:N0} bytes, more than the {MaxFileBytes:N0} a roadmap may have.");
+            }
+
             bytes = File.ReadAllBytes(path);
         }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
             throw new RoadmapFileException($"Roadmap file {path} cannot be read: {e.Message}", e);
         }
@@ -108,8 +154,57 @@ public static class RoadmapFile
                 : $"Roadmap file {path} was baked for the character '{roadmap.CharacterName}', not '{character.Name}'.");
         }
 
+        if (bounds is Geometry.Aabb box)
+        {
+            foreach (RoadmapNode node in roadmap.Nodes)
+            {
+                if (!box.Contains(node.Pose.Position))
+                {
+                    throw Invalid(path, $"node {node.Id} stands at ({node.Pose.Position.X:G4}, {node.Pose.Position.Y:G4}, {node.Pose.Position.Z:G4}), outside the level's bounds");
+                }
+            }
+        }
+
+        CheckForCharacter(roadmap, character, path);
         return roadmap;
     }
+
+    /// <summary>The checks a roadmap must pass for its character (the checksum only says the bytes are as written).</summary>
+    private static void CheckForCharacter(Roadmap roadmap, ReducedCharacter character, string name)
+    {
+        foreach (RoadmapNode node in roadmap.Nodes)
+        {
+            foreach (Contact c in node.Contacts)
+            {
+                if (c.Limb >= character.Limbs.Count)
+                {
+                    throw Invalid(name, $"node {node.Id} has a contact of limb {c.Limb}, but {character.Name} has {character.Limbs.Count} limbs");
+                }
+            }
+        }
+
+        for (int e = 0; e < roadmap.Edges.Count; e++)
+        {
+            BallisticArc arc = roadmap.Edges[e].Arc;
+            if (MathF.Abs(arc.Gravity - character.Limits.Gravity) > 1e-3f)
+            {
+                throw Invalid(name, $"jump {e} falls under a gravity of {arc.Gravity:G4} m/s², not {character.Limits.Gravity} m/s²");
+            }
+
+            if (arc.TakeoffVelocity.Length() > character.TakeoffSpeedMax * 1.001f || arc.LandingVelocity.Length() > character.LandingSpeedMax * 1.001f)
+            {
+                throw Invalid(name, $"jump {e} is faster than {character.Name}'s speed limits ({arc.TakeoffVelocity.Length():G4} m/s at takeoff, {arc.LandingVelocity.Length():G4} m/s at landing)");
+            }
+
+            float miss = Vector3.Distance(arc.PositionAt(arc.FlightTime), arc.End);
+            if (!(miss <= 0.01f))
+            {
+                throw Invalid(name, $"jump {e} (nodes {roadmap.Edges[e].From} → {roadmap.Edges[e].To}) lands {miss:G4} m from its landing node: its velocity and flight time do not fit its ends");
+            }
+        }
+    }
+
+    private static RoadmapFileException Invalid(string name, string what) => new($"Roadmap file {name} is invalid: {what}.");
 
     /// <summary>Parses roadmap bytes.</summary>
     /// <param name="bytes">The file's content.</param>
@@ -138,9 +233,9 @@ public static class RoadmapFile
         {
             return Parse(payload.ToArray(), name);
         }
-        catch (Exception e) when (e is EndOfStreamException or ArgumentException or IOException)
+        catch (Exception e) when (e is EndOfStreamException or ArgumentException or IOException or FormatException or OverflowException)
         {
-            throw new RoadmapFileException($"Roadmap file {name} is corrupt ({e.Message}).", e);
+            throw new RoadmapFileException($"Roadmap file {name} is corrupt: it ends early or holds a malformed value.", e);
         }
     }
 
@@ -161,11 +256,32 @@ public static class RoadmapFile
             Quaternion rotation = ReadQuaternion(r);
             Vector3 axis = ReadVector3(r);
             float mu = r.ReadSingle();
+            if (!Finite(position) || MathF.Abs(position.Length()) > MaxCoordinate)
+            {
+                throw Invalid(name, $"node {i} has a position that is not finite or lies beyond ±{MaxCoordinate:G3} m");
+            }
+
+            if (!Unit(new Vector4(rotation.X, rotation.Y, rotation.Z, rotation.W)))
+            {
+                throw Invalid(name, $"node {i} has a rotation that is not a unit quaternion");
+            }
+
+            if (!Finite(axis) || !(axis.Length() > 1e-6f) || !(mu >= 0f && mu <= MaxFriction))
+            {
+                throw Invalid(name, $"node {i} has a friction cone without a finite axis or with μ {mu:G4} outside 0 to {MaxFriction}");
+            }
+
             int contactCount = Count(r, payload.Length, name, "contacts");
             var contacts = new Contact[contactCount];
             for (int k = 0; k < contactCount; k++)
             {
-                contacts[k] = new Contact(r.ReadInt32(), ReadVector3(r), ReadVector3(r), r.ReadSingle(), r.ReadInt32());
+                var contact = new Contact(r.ReadInt32(), ReadVector3(r), ReadVector3(r), r.ReadSingle(), r.ReadInt32());
+                if (contact.Limb < 0 || !Finite(contact.Position) || contact.Position.Length() > MaxCoordinate || !Unit(new Vector4(contact.Normal, 0f)) || !(contact.Mu >= 0f && contact.Mu <= MaxFriction) || contact.Surface < -1)
+                {
+                    throw Invalid(name, $"node {i}, contact {k} has a negative limb, a position or normal that is not finite (or a normal not of unit length), or μ outside 0 to {MaxFriction}");
+                }
+
+                contacts[k] = contact;
             }
 
             roadmap.AddNode(new RoadmapNode(i, new RootPose(position, rotation), new FrictionCone(axis, mu), contacts));
@@ -184,6 +300,11 @@ public static class RoadmapFile
                 throw new RoadmapFileException($"Roadmap file {name} is corrupt (edge {i} joins nodes {from} and {to}, but there are {nodeCount}).");
             }
 
+            if (!Finite(velocity) || !(flightTime > 0f && flightTime <= MaxFlightTime) || !(gravity > 0f && gravity <= 1e3f))
+            {
+                throw Invalid(name, $"jump {i} has a velocity that is not finite, a flight time of {flightTime:G4} s (not above 0 and at most {MaxFlightTime} s) or a gravity of {gravity:G4} m/s²");
+            }
+
             RoadmapNode a = roadmap.Nodes[from];
             RoadmapNode b = roadmap.Nodes[to];
             roadmap.AddEdge(new RoadmapEdge(from, to, new BallisticArc(a.Pose, b.Pose, velocity, flightTime, gravity)));
@@ -196,6 +317,19 @@ public static class RoadmapFile
 
         return roadmap;
     }
+
+    /// <summary>The farthest a node or contact may lie from the origin, metres.</summary>
+    private const float MaxCoordinate = 1e6f;
+
+    /// <summary>The largest friction coefficient read.</summary>
+    private const float MaxFriction = 1e3f;
+
+    /// <summary>The longest flight read, seconds.</summary>
+    private const float MaxFlightTime = 1e3f;
+
+    private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+
+    private static bool Unit(Vector4 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z) && float.IsFinite(v.W) && MathF.Abs(v.Length() - 1f) <= 1e-3f;
 
     private static int Count(BinaryReader r, int limit, string name, string what)
     {

@@ -153,7 +153,7 @@ public sealed class CliJobTests
         File.Copy(spec, lonely);
         (int missing, _, string missingError) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", lonely,
             "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
-        Assert.That(missing, Is.EqualTo(1));
+        Assert.That(missing, Is.EqualTo(ExitCode.Input));
         Assert.That(missingError, Does.Contain("lonely.glb"));
     }
 
@@ -175,7 +175,7 @@ public sealed class CliJobTests
         (int wrong, _, string wrongError) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "frog", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
         Assert.Multiple(() =>
         {
-            Assert.That(wrong, Is.EqualTo(1));
+            Assert.That(wrong, Is.EqualTo(ExitCode.Input));
             Assert.That(wrongError.Trim(), Does.StartWith("error: ").And.Contain("'skeleton', not 'frog'"));
             Assert.That(wrongError.Trim().Split('\n'), Has.Length.EqualTo(1), "one line, no stack trace");
         });
@@ -194,7 +194,7 @@ public sealed class CliJobTests
             (["plan", "--level", notGltf, "--character", "skeleton", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "not glTF"),
             (["plan", "--level", level, "--character", "dragon", "--from", "0,0,0", "--to", "1,0,0", "--report", report], "Unknown character 'dragon'"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "0;0", "--to", "1,0,0", "--report", report], "--from takes a point"),
-            (["bake", "--level", level, "--character", "skeleton", "--threads", "0", "--out", Path.Combine(_folder, "x")], "Threads must be at least 1"),
+            (["bake", "--level", level, "--character", "skeleton", "--threads", "0", "--out", Path.Combine(_folder, "x")], "--threads takes 1 to 1024 threads, not 0"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid pose stands within 0.5 m across and 0.25 m up/down of the start"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "0,1"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "wide"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
