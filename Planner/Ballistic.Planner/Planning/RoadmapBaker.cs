@@ -70,10 +70,14 @@ public sealed class RoadmapBaker
                 { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
 
-            goalNode = Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
+            // The same stance as the start (start equal to goal) is the start node itself: a plan of no jumps.
+            goalNode = startPlacement?.Pose is { } startPose && startPose.Pose == pose.Pose && startNode is int same
+                ? same
+                : Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
         }
 
-        DateTime? deadline = settings.TimeLimit is TimeSpan limit ? DateTime.UtcNow + limit : null;
+        DateTime now = DateTime.UtcNow;
+        DateTime? deadline = settings.TimeLimit is TimeSpan limit && limit < DateTime.MaxValue - now ? now + limit : null;
         long nextSample = 0;
         int rounds = 0;
         int emptyRounds = 0;
