@@ -28,6 +28,15 @@ internal static class CliInputs
         throw new CliException($"{option} takes a point as x,y,z in metres (for example 1.5,0,-2), not '{text}'.");
     }
 
+    /// <summary>Refuses a path no file can have (empty, or with a NUL character), naming what it was for.</summary>
+    public static void CheckPath(string path, string what)
+    {
+        if (path.Length == 0 || path.Contains('\0', StringComparison.Ordinal))
+        {
+            throw new InputFileException($"{what} '{path.Replace('\0', '?')}' is not a valid file path (empty, or with a NUL character).");
+        }
+    }
+
     /// <summary>Parses "ACROSS[,UPDOWN]" (metres, invariant culture) as an endpoint tolerance; UPDOWN defaults to 0.25 m.</summary>
     public static EndpointTolerance ParseTolerance(string text, string option)
     {
@@ -49,6 +58,7 @@ internal static class CliInputs
     /// <summary>Loads a level file (.glb or .gltf).</summary>
     public static Level LoadLevel(string path)
     {
+        CheckPath(path, "Level file");
         if (!File.Exists(path))
         {
             throw new InputFileException($"Level file '{path}' does not exist.");
@@ -95,6 +105,7 @@ internal static class CliInputs
             return (CharacterPresets.Get(value), CharacterPresets.Model(value));
         }
 
+        CheckPath(value, "Limb spec");
         if (!File.Exists(value))
         {
             throw new InputFileException($"Limb spec '{value}' does not exist.");

@@ -65,6 +65,7 @@ internal sealed class PlanPipeline
         AnimatedPlan plan;
         if (RoadmapPath is not null)
         {
+            CliInputs.CheckPath(RoadmapPath, "Roadmap file");
             roadmap = RoadmapFile.Load(RoadmapPath, Level, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
             clock.Restart();

@@ -53,6 +53,11 @@ public static class OutputFile
     /// <summary>The regular file to replace: <paramref name="path"/>, or the file a symbolic link at it points to.</summary>
     private static string Target(string path)
     {
+        if (path.Contains('\0', StringComparison.Ordinal) || path.Length == 0)
+        {
+            throw new OutputFileException($"Cannot write '{Printable(path)}': it is not a valid file path (empty, or with a NUL character).");
+        }
+
         string full;
         try
         {

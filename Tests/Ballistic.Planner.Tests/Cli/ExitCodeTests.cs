@@ -50,6 +50,8 @@ public sealed class ExitCodeTests
             (["bake", "--level", bad, "--character", "skeleton", "--out", Path.Combine(_folder, "x")], ExitCode.Input, "bad.glb"),
             (["plan", "--level", level, "--character", "skeleton", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", Path.Combine(_folder, "r.json")], ExitCode.Input, "not a Ballistic roadmap"),
             (["bake", "--level", level, "--character", "skeleton", "--max-nodes", "5", "--out", _folder], ExitCode.Output, "it is a folder"),
+            (["bake", "--level", level, "--character", "skeleton", "--max-nodes", "5", "--out", "a\0b.roadmap"], ExitCode.Output, "'a?b.roadmap': it is not a valid file path"),
+            (["bake", "--level", "le\0vel.glb", "--character", "skeleton", "--out", Path.Combine(_folder, "x")], ExitCode.Input, "'le?vel.glb' is not a valid file path"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", Path.Combine(_folder, "r.json")], ExitCode.NotFound, "no valid pose"),
         };
         foreach ((string[] args, int code, string expected) in cases)
