@@ -72,7 +72,7 @@ public sealed class GltfDocument
         }
         catch (Exception e) when (e is ArgumentException or IOException or NotSupportedException)
         {
-            throw new GltfException($"{Printable(path)} cannot be read: {e.Message.TrimEnd('.')}.", e);
+            throw new GltfException($"{Printable(path)} cannot be read: {Printable(e.Message.TrimEnd('.'))}.", e);
         }
 
         return Parse(bytes, path, directory, options);
@@ -495,6 +495,11 @@ public sealed class GltfDocument
             json = json[3..]; // a byte order mark, which glTF forbids but some tools write
         }
 
+        if (!System.Text.Unicode.Utf8.IsValid(json.Span))
+        {
+            throw new GltfException($"{name} is not a glTF file: its JSON is not valid UTF-8 text.");
+        }
+
         try
         {
             using (JsonDocument document = JsonDocument.Parse(json))
@@ -518,34 +523,43 @@ public sealed class GltfDocument
         }
         catch (JsonException e)
         {
-            throw new GltfException($"{name} is not a glTF file: {e.Message.TrimEnd('.')}.", e);
-        }
-        catch (ArgumentException e) when (e is not ArgumentNullException)
-        {
-            throw new GltfException($"{name} is not a glTF file: its JSON is not valid UTF-8 text.", e);
+            throw new GltfException($"{name} is not a glTF file: {Printable(e.Message.TrimEnd('.'))}.", e);
         }
     }
 
-    /// <summary>A repeated key is an error naming the key and where it repeats.</summary>
+    /// <summary>
+    /// A repeated key is an error naming the key and where it repeats; so is a string or key that is not valid text
+    /// (an escaped lone surrogate such as <c>\uD800</c>, which the JSON reader accepts but cannot turn into a string).
+    /// </summary>
     private static void CheckUniqueKeys(JsonElement element, string name, List<string> path)
     {
+        string Where() => path.Count == 0 ? "the top-level object" : $"the object at {string.Concat(path)}";
+        string Valid(Func<string?> read)
+        {
+            try
+            {
+                return read() ?? "";
+            }
+            catch (InvalidOperationException e)
+            {
+                throw new GltfException($"{name}: {(path.Count == 0 ? "the top-level JSON" : $"the JSON at {string.Concat(path)}")} holds text that is not valid Unicode (an escaped lone surrogate).", e);
+            }
+        }
+
         if (element.ValueKind == JsonValueKind.Object)
         {
             var seen = new HashSet<string>(StringComparer.Ordinal);
             foreach (JsonProperty property in element.EnumerateObject())
             {
-                if (!seen.Add(property.Name))
+                string key = Valid(() => property.Name);
+                if (!seen.Add(key))
                 {
-                    string where = path.Count == 0 ? "the top-level object" : $"the object at {string.Concat(path)}";
-                    throw new GltfException($"{name}: the key '{Printable(property.Name)}' appears twice in {where}.");
+                    throw new GltfException($"{name}: the key '{Printable(key)}' appears twice in {Where()}.");
                 }
 
-                if (property.Value.ValueKind is JsonValueKind.Object or JsonValueKind.Array)
-                {
-                    path.Add(path.Count == 0 ? property.Name : "." + property.Name);
-                    CheckUniqueKeys(property.Value, name, path);
-                    path.RemoveAt(path.Count - 1);
-                }
+                path.Add(path.Count == 0 ? key : "." + key);
+                CheckUniqueKeys(property.Value, name, path);
+                path.RemoveAt(path.Count - 1);
             }
         }
         else if (element.ValueKind == JsonValueKind.Array)
@@ -553,7 +567,7 @@ public sealed class GltfDocument
             int i = 0;
             foreach (JsonElement item in element.EnumerateArray())
             {
-                if (item.ValueKind is JsonValueKind.Object or JsonValueKind.Array)
+                if (item.ValueKind is JsonValueKind.Object or JsonValueKind.Array or JsonValueKind.String)
                 {
                     path.Add($"[{i}]");
                     CheckUniqueKeys(item, name, path);
@@ -562,6 +576,10 @@ public sealed class GltfDocument
 
                 i++;
             }
+        }
+        else if (element.ValueKind == JsonValueKind.String)
+        {
+            Valid(element.GetString);
         }
     }
 

@@ -76,7 +76,7 @@ internal static class InputFile
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw fail($"cannot be read: {e.Message.TrimEnd('.')}", e);
+            throw fail($"cannot be read: {GltfDocument.Printable(e.Message.TrimEnd('.'))}", e);
         }
     }
 

@@ -30,7 +30,12 @@ public static partial class GltfLevelLoader
         }
         catch (GltfException e)
         {
-            throw new LevelException(e.Message, e);
+            throw new LevelException(GltfDocument.Printable(e.Message), e);
+        }
+        catch (LevelException e) when (e.Message.Any(char.IsControl))
+        {
+            // A mesh or material name from the file may hold a line break: the message stays one line.
+            throw new LevelException(GltfDocument.Printable(e.Message), e);
         }
     }
 

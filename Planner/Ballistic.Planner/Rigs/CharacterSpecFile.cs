@@ -40,7 +40,19 @@ public static class CharacterSpecFile
     {
         ArgumentNullException.ThrowIfNull(gltfPath);
         ArgumentNullException.ThrowIfNull(specPath);
-        options ??= GltfLoadOptions.Default;
+        try
+        {
+            return LoadFiles(gltfPath, specPath, options ?? GltfLoadOptions.Default);
+        }
+        catch (RigException e) when (e.Message.Any(char.IsControl))
+        {
+            // A limb, bone or node name from the files may hold a line break: the message stays one line.
+            throw new RigException(GltfDocument.Printable(e.Message), e);
+        }
+    }
+
+    private static (CharacterModel Model, ReducedCharacter Reduced) LoadFiles(string gltfPath, string specPath, GltfLoadOptions options)
+    {
         byte[] bytes = InputFile.Read(specPath, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new RigException($"Limb spec {specPath} {problem}.", e!));
         CharacterSpec spec = CharacterSpecReader.Read(bytes, specPath);
         GltfDocument document;

@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Gltf;
 
 namespace Ballistic.Planner.Rigs;
 
@@ -63,6 +64,11 @@ internal sealed class CharacterSpecReader
     public static CharacterSpec Read(byte[] bytes, string file)
     {
         var reader = new CharacterSpecReader(file);
+        if (!System.Text.Unicode.Utf8.IsValid(bytes))
+        {
+            throw new RigException($"{file} is not valid JSON: it is not UTF-8 text.");
+        }
+
         JsonNode? root;
         try
         {
@@ -75,7 +81,7 @@ internal sealed class CharacterSpecReader
         }
         catch (JsonException e)
         {
-            throw new RigException($"{file} is not valid JSON: {e.Message}", e);
+            throw new RigException($"{file} is not valid JSON: {GltfDocument.Printable(e.Message)}", e);
         }
 
         return reader.Read(root);
@@ -351,17 +357,30 @@ internal sealed class CharacterSpecReader
 
     private void CheckUniqueKeys(JsonElement element, string path)
     {
+        string Valid(Func<string?> read)
+        {
+            try
+            {
+                return read() ?? "";
+            }
+            catch (InvalidOperationException e)
+            {
+                throw new RigException($"{_file}: {(path.Length == 0 ? "the spec" : $"object '{path}'")}: holds text that is not valid Unicode (an escaped lone surrogate).", e);
+            }
+        }
+
         if (element.ValueKind == JsonValueKind.Object)
         {
             var seen = new HashSet<string>(StringComparer.Ordinal);
             foreach (JsonProperty property in element.EnumerateObject())
             {
-                if (!seen.Add(property.Name))
+                string key = Valid(() => property.Name);
+                if (!seen.Add(key))
                 {
-                    throw Error(path.Length == 0 ? "the spec" : $"object '{path}'", $"the key '{property.Name}' appears twice.");
+                    throw Error(path.Length == 0 ? "the spec" : $"object '{path}'", $"the key '{key}' appears twice.");
                 }
 
-                CheckUniqueKeys(property.Value, path.Length == 0 ? property.Name : $"{path}.{property.Name}");
+                CheckUniqueKeys(property.Value, path.Length == 0 ? key : $"{path}.{key}");
             }
         }
         else if (element.ValueKind == JsonValueKind.Array)
@@ -371,6 +390,10 @@ internal sealed class CharacterSpecReader
             {
                 CheckUniqueKeys(item, $"{path}[{i++}]");
             }
+        }
+        else if (element.ValueKind == JsonValueKind.String)
+        {
+            Valid(element.GetString);
         }
     }
 

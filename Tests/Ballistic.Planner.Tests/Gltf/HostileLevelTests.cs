@@ -174,6 +174,23 @@ public sealed class HostileLevelTests
     }
 
     [Test]
+    public void TextThatIsNotUnicodeAndNamesWithLineBreaksGiveOneLine()
+    {
+        string bytes = Path.Combine(_folder, "latin1.gltf");
+        File.WriteAllBytes(bytes, [.. Encoding.UTF8.GetBytes("""{"asset":{"version":"2.0","generator":"caf"""), 0xE9, .. Encoding.UTF8.GetBytes("\"}}")]);
+        string surrogate = Path.Combine(_folder, "surrogate.gltf");
+        File.WriteAllText(surrogate, """{"asset":{"version":"2.0"},"nodes":[{"name":"\uD800"}]}""");
+        JsonObject broken = Triangle(Floats(0, 0, 0, 1e30f, 0, 0, 0, 0, 1));
+        broken["meshes"]![0]!["name"] = "Floor\nsecond line";
+        Assert.Multiple(() =>
+        {
+            Assert.That(Refused(bytes), Does.Contain("latin1.gltf is not a glTF file: its JSON is not valid UTF-8 text"));
+            Assert.That(Refused(surrogate), Does.Contain("surrogate.gltf: the JSON at nodes[0].name holds text that is not valid Unicode"));
+            Assert.That(Refused(Write("named.gltf", broken)), Does.Contain("Mesh 'Floor\\u000asecond line[0]'"));
+        });
+    }
+
+    [Test]
     public void CoordinatesBeyondAMillionMetresNameTheVertex()
     {
         byte[] bin = Floats(0, 0, 0, 1e30f, 0, 0, 0, 0, 1);

@@ -66,6 +66,8 @@ public sealed class SpecErrorTests
         yield return Case("repeated limb", "{\"schema\":\"ballistic.character/1\",\"limbs\":{" + Foot + "}," + Foot + "}}}", "object 'limbs'", "'left_foot' appears twice");
         yield return Case("unknown joint key", Spec(Foot + "}", "\"joints\":{\"left_knee\":{\"axes\":[],\"limits\":1}},"), "joints, bone 'left_knee'", "unknown key 'limits'");
         yield return Case("deeply nested", Spec(Foot + "}", "\"name\":" + new string('[', 100) + new string(']', 100) + ","), "is not valid JSON");
+        yield return Case("lone surrogate", Spec(Foot + "}", "\"name\":\"\\uD800\","), "object 'name'", "not valid Unicode");
+        yield return Case("line break in a limb name", "{\"schema\":\"ballistic.character/1\",\"limbs\":{\"left\\nfoot\":{\"rootBone\":\"left_hip\",\"effectorBone\":\"ankle\"}}}", "limb 'left\\u000afoot'", "'ankle'");
         yield return Case("not JSON", "{\"schema\": ", "is not valid JSON");
         yield return Case("JSON but not an object", "[1, 2]", "is not a Ballistic limb spec");
         yield return Case("unknown effector", Spec("\"tail\":{\"rootBone\":\"pelvis\",\"effectorBone\":\"tail_tip\"}"), "limb 'tail'", "'tail_tip'", "skeleton.glb");
