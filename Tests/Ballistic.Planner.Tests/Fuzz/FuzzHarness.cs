@@ -107,7 +107,7 @@ internal static class FuzzHarness
     {
         if (e is not BallisticInputException)
         {
-            return $"{e.GetType().Name}: {e.Message} at {FirstFrame(e)}";
+            return $"{e.GetType().Name}: {e.Message} {FirstFrame(e)}";
         }
 
         if (string.IsNullOrWhiteSpace(e.Message) || e.Message.Contains('\n', StringComparison.Ordinal) || e.Message.Contains('\r', StringComparison.Ordinal))
@@ -125,7 +125,7 @@ internal static class FuzzHarness
             if (inner is NullReferenceException or IndexOutOfRangeException or ArgumentException or InvalidOperationException or InvalidCastException
                 or ArithmeticException or KeyNotFoundException or NotSupportedException or NotImplementedException)
             {
-                return $"{e.GetType().Name} \"{e.Message}\" wraps a programming error, {inner.GetType().Name}: {inner.Message} at {FirstFrame(inner)}";
+                return $"{e.GetType().Name} \"{e.Message}\" wraps a programming error, {inner.GetType().Name}: {inner.Message} {FirstFrame(inner)}";
             }
         }
 

@@ -22,6 +22,9 @@ public sealed class InputFuzzTests
     /// <summary>Master seeds: case <c>i</c> of master seed <c>s</c> has the seed <c>s × 10,000 + i</c>.</summary>
     private static readonly int[] MasterSeeds = [11, 23, 37, 41, 59];
 
+    /// <summary>Roadmap cases found by longer runs whose name length prefix throws a FormatException out of RoadmapFile.Load.</summary>
+    private static readonly int[] FormatExceptionSeeds = [1030494, 1090361];
+
     private static readonly Lazy<JsonObject> LevelJson = new(() => FuzzInputs.SplitGlb(FuzzInputs.LevelGlb).Json);
     private static readonly Lazy<byte[]> LevelBin = new(() => FuzzInputs.SplitGlb(FuzzInputs.LevelGlb).Bin);
     private static readonly Lazy<JsonObject> FrogJson = new(() => FuzzInputs.SplitGlb(FuzzInputs.FrogGlb).Json);
@@ -64,7 +67,7 @@ public sealed class InputFuzzTests
     /// </summary>
     [Test]
     [Explicit("Fails until RoadmapFile validates what it reads after the checksum (another branch): see the failing seeds it prints.")]
-    public void RoadmapMutationsWithRecomputedChecksums() => Fuzz("roadmap-rehashed", 200);
+    public void RoadmapMutationsWithRecomputedChecksums() => Fuzz("roadmap-rehashed", 200, FormatExceptionSeeds);
 
     /// <summary>Runs the one case named by <c>BALLISTIC_FUZZ_REPLAY=format:seed</c>, printing its mutations.</summary>
     [Test]
@@ -84,14 +87,14 @@ public sealed class InputFuzzTests
     /// Runs <paramref name="casesPerSeed"/> cases for each master seed. For a longer search outside CI,
     /// <c>BALLISTIC_FUZZ_SEEDS=1,2,3</c> replaces the master seeds and <c>BALLISTIC_FUZZ_SCALE=10</c> multiplies the cases.
     /// </summary>
-    private void Fuzz(string format, int casesPerSeed)
+    private void Fuzz(string format, int casesPerSeed, int[]? extraSeeds = null)
     {
         int[] masters = Environment.GetEnvironmentVariable("BALLISTIC_FUZZ_SEEDS") is string list
             ? [.. list.Split(',').Select(t => int.Parse(t, System.Globalization.CultureInfo.InvariantCulture))]
             : MasterSeeds;
         int scale = Environment.GetEnvironmentVariable("BALLISTIC_FUZZ_SCALE") is string text ? int.Parse(text, System.Globalization.CultureInfo.InvariantCulture) : 1;
         casesPerSeed = Math.Min(casesPerSeed * scale, 9_999);
-        int[] seeds = [.. masters.SelectMany(s => Enumerable.Range(0, casesPerSeed).Select(i => (s * 10_000) + i))];
+        int[] seeds = [.. masters.SelectMany(s => Enumerable.Range(0, casesPerSeed).Select(i => (s * 10_000) + i)), .. extraSeeds ?? []];
         var clock = System.Diagnostics.Stopwatch.StartNew();
         (List<string> failures, int loaded) = FuzzHarness.Run(format, seeds, _folder, Maker(format));
         TestContext.Out.WriteLine($"{format}: {seeds.Length} cases in {clock.Elapsed.TotalSeconds:0.0} s: {loaded} still loaded, {seeds.Length - loaded - failures.Count} refused with an input error, {failures.Count} failed");
