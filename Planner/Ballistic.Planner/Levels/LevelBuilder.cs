@@ -1,14 +1,19 @@
+using System.Globalization;
 using System.Numerics;
 using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Levels;
 
 /// <summary>
-/// Assembles a <see cref="Level"/> from meshes given as raw arrays, checking them: a NaN or infinite vertex is an
-/// error naming its mesh; zero-area triangles are dropped and counted; a level without triangles is an error.
+/// Assembles a <see cref="Level"/> from meshes given as raw arrays, checking them: a NaN or infinite vertex, or one
+/// placed beyond ±<see cref="MaxCoordinate"/> metres, is an error naming its mesh and vertex; zero-area triangles are
+/// dropped and counted; a level without triangles is an error.
 /// </summary>
 public sealed class LevelBuilder
 {
+    /// <summary>How far from the origin, in metres along each axis, a level may reach: 1,000 km.</summary>
+    public const float MaxCoordinate = 1e6f;
+
     private readonly List<Triangle> _triangles = [];
     private readonly List<int> _materialIndices = [];
     private readonly List<LevelMaterial> _materials = [];
@@ -36,7 +41,7 @@ public sealed class LevelBuilder
     /// <param name="indices">Three vertex indices per triangle, counter-clockwise seen from the front.</param>
     /// <param name="toWorld">Local-to-world transform (System.Numerics row-vector convention).</param>
     /// <param name="material">Material of every triangle of the mesh.</param>
-    /// <exception cref="LevelException">A vertex is NaN or infinite, an index is out of range, or the index count is not a multiple of three.</exception>
+    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>, an index is out of range, or the index count is not a multiple of three.</exception>
     public LevelBuilder AddMesh(string meshName, ReadOnlySpan<Vector3> positions, ReadOnlySpan<int> indices, Matrix4x4 toWorld, LevelMaterial material)
     {
         ArgumentNullException.ThrowIfNull(material);
@@ -56,10 +61,11 @@ public sealed class LevelBuilder
             Vector3 p = positions[i];
             if (!float.IsFinite(p.X) || !float.IsFinite(p.Y) || !float.IsFinite(p.Z))
             {
-                throw new LevelException($"Mesh '{meshName}' in {Source}: vertex {i} is not finite ({p.X}, {p.Y}, {p.Z}).");
+                throw new LevelException($"Mesh '{meshName}' in {Source}: vertex {i} is not finite ({Format(p)}).");
             }
 
             world[i] = Vector3.Transform(p, toWorld);
+            CheckReach(world[i], $"Mesh '{meshName}' in {Source}: vertex {i}");
         }
 
         int materialIndex = MaterialIndex(material);
@@ -80,7 +86,7 @@ public sealed class LevelBuilder
     }
 
     /// <summary>Adds one world-space triangle.</summary>
-    /// <exception cref="LevelException">A vertex is NaN or infinite.</exception>
+    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>.</exception>
     public LevelBuilder AddTriangle(Triangle triangle, LevelMaterial material)
     {
         ArgumentNullException.ThrowIfNull(material);
@@ -88,6 +94,10 @@ public sealed class LevelBuilder
         {
             throw new LevelException($"Triangle {TriangleCount + _dropped} in {Source} is not finite.");
         }
+
+        CheckReach(triangle.A, $"Triangle {TriangleCount + _dropped} in {Source}: its first corner");
+        CheckReach(triangle.B, $"Triangle {TriangleCount + _dropped} in {Source}: its second corner");
+        CheckReach(triangle.C, $"Triangle {TriangleCount + _dropped} in {Source}: its third corner");
 
         AddChecked(triangle, MaterialIndex(material));
         return this;
@@ -133,6 +143,21 @@ public sealed class LevelBuilder
 
         return index;
     }
+
+    /// <summary>An error unless every coordinate of <paramref name="p"/> lies within ±<see cref="MaxCoordinate"/>.</summary>
+    private static void CheckReach(Vector3 p, string what)
+    {
+        float worst = MathF.Max(MathF.Abs(p.X), MathF.Max(MathF.Abs(p.Y), MathF.Abs(p.Z)));
+        if (!(worst <= MaxCoordinate))
+        {
+            float coordinate = MathF.Abs(p.X) == worst ? p.X : MathF.Abs(p.Y) == worst ? p.Y : p.Z;
+            throw new LevelException(float.IsFinite(worst)
+                ? $"{what} has a coordinate of {coordinate.ToString("G4", CultureInfo.InvariantCulture)} m, beyond the ±1e6 m a level may span."
+                : $"{what} is taken by its node transforms to ({Format(p)}), beyond the ±1e6 m a level may span.");
+        }
+    }
+
+    private static string Format(Vector3 p) => string.Create(CultureInfo.InvariantCulture, $"{p.X:G4}, {p.Y:G4}, {p.Z:G4}");
 
     private static bool IsFinite(Matrix4x4 m) =>
         float.IsFinite(m.M11) && float.IsFinite(m.M12) && float.IsFinite(m.M13) && float.IsFinite(m.M14) &&

@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Gltf;
 
 namespace Ballistic.Planner.Rigs;
 
@@ -41,6 +42,12 @@ internal sealed class CharacterSpecReader
         ["-Z"] = -Vector3.UnitZ,
     };
 
+    /// <summary>The largest magnitude of a length (metres), speed (m/s), friction or vector component a spec may give.</summary>
+    internal const float MaxMagnitude = 1e3f;
+
+    /// <summary>The widest joint limit a spec may give, degrees either way.</summary>
+    internal const float MaxDegrees = 360f;
+
     private static readonly string[] TopKeys = ["schema", "name", "upAxis", "forwardAxis", "requiredContacts", "takeoffSpeedMax", "landingSpeedMax", "friction", "trunkBones", "limbs", "joints", "boneRadius", "boneRadii", "poses"];
     private static readonly string[] LimbKeys = ["rootBone", "effectorBone", "effectorOffset", "contactNormal", "contact", "normalFilter"];
     private static readonly string[] FilterKeys = ["direction", "minCosine"];
@@ -57,6 +64,11 @@ internal sealed class CharacterSpecReader
     public static CharacterSpec Read(byte[] bytes, string file)
     {
         var reader = new CharacterSpecReader(file);
+        if (!System.Text.Unicode.Utf8.IsValid(bytes))
+        {
+            throw new RigException($"{file} is not valid JSON: it is not UTF-8 text.");
+        }
+
         JsonNode? root;
         try
         {
@@ -69,7 +81,7 @@ internal sealed class CharacterSpecReader
         }
         catch (JsonException e)
         {
-            throw new RigException($"{file} is not valid JSON: {e.Message}", e);
+            throw new RigException($"{file} is not valid JSON: {GltfDocument.Printable(e.Message)}", e);
         }
 
         return reader.Read(root);
@@ -130,7 +142,7 @@ internal sealed class CharacterSpecReader
             required,
             Positive(root, "takeoffSpeedMax", "key 'takeoffSpeedMax'", "m/s"),
             Positive(root, "landingSpeedMax", "key 'landingSpeedMax'", "m/s"),
-            root["friction"] is JsonNode f ? AtLeast(Number(f, "key 'friction'"), 0f, "key 'friction'") : null,
+            root["friction"] is JsonNode f ? Between(Number(f, "key 'friction'"), 0f, MaxMagnitude, "key 'friction'") : null,
             root["trunkBones"] is JsonNode tb ? [.. Array(tb, "key 'trunkBones'").Select((b, i) => Text(b, $"key 'trunkBones', item {i}"))] : null,
             limbs,
             Joints(root["joints"]),
@@ -204,8 +216,8 @@ internal sealed class CharacterSpecReader
                 JsonObject axis = Object(axes[i], aw);
                 Keys(axis, aw, AxisKeys);
                 Vector3 direction = axis["axis"] is JsonNode d ? Vector(d, $"{aw}, key 'axis'", nonZero: true) : throw Error(aw, "has no axis (a vector in the bone's frame).");
-                float min = axis["min"] is JsonNode mn ? Number(mn, $"{aw}, key 'min'") : throw Error(aw, "has no min (degrees).");
-                float max = axis["max"] is JsonNode mx ? Number(mx, $"{aw}, key 'max'") : throw Error(aw, "has no max (degrees).");
+                float min = axis["min"] is JsonNode mn ? Between(Number(mn, $"{aw}, key 'min'"), -MaxDegrees, MaxDegrees, $"{aw}, key 'min'") : throw Error(aw, "has no min (degrees).");
+                float max = axis["max"] is JsonNode mx ? Between(Number(mx, $"{aw}, key 'max'"), -MaxDegrees, MaxDegrees, $"{aw}, key 'max'") : throw Error(aw, "has no max (degrees).");
                 if (min > max)
                 {
                     throw Error(aw, $"min {min}° is above max {max}°.");
@@ -229,7 +241,7 @@ internal sealed class CharacterSpecReader
             {
                 string where = $"boneRadii, bone '{bone}'";
                 float radius = Number(value, where);
-                radii[bone] = radius > 0f ? radius : throw Error(where, $"must be a positive radius in metres, not {radius}.");
+                radii[bone] = radius is > 0f and <= MaxMagnitude ? radius : throw Error(where, $"must be a positive radius in metres of at most {MaxMagnitude:0}, not {radius}.");
             }
         }
 
@@ -285,10 +297,10 @@ internal sealed class CharacterSpecReader
         }
 
         float value = Number(node, where);
-        return value > 0f ? value : throw Error(where, $"must be positive ({unit}), not {value}.");
+        return value is > 0f and <= MaxMagnitude ? value : throw Error(where, $"must be positive and at most {MaxMagnitude:0} ({unit}), not {value}.");
     }
 
-    private float AtLeast(float value, float min, string where) => value >= min ? value : throw Error(where, $"must be at least {min}, not {value}.");
+    private float Between(float value, float min, float max, string where) => value >= min && value <= max ? value : throw Error(where, $"must lie between {min} and {max}, not {value}.");
 
     private void Keys(JsonObject json, string where, string[] known)
     {
@@ -335,22 +347,40 @@ internal sealed class CharacterSpecReader
         }
 
         var v = new Vector3(Number(a[0], where), Number(a[1], where), Number(a[2], where));
+        if (MathF.Max(MathF.Abs(v.X), MathF.Max(MathF.Abs(v.Y), MathF.Abs(v.Z))) > MaxMagnitude)
+        {
+            throw Error(where, $"must have components within ±{MaxMagnitude:0}, not [{v.X}, {v.Y}, {v.Z}].");
+        }
+
         return !nonZero || v.LengthSquared() > 1e-12f ? v : throw Error(where, "must not be the zero vector.");
     }
 
     private void CheckUniqueKeys(JsonElement element, string path)
     {
+        string Valid(Func<string?> read)
+        {
+            try
+            {
+                return read() ?? "";
+            }
+            catch (InvalidOperationException e)
+            {
+                throw new RigException($"{_file}: {(path.Length == 0 ? "the spec" : $"object '{path}'")}: holds text that is not valid Unicode (an escaped lone surrogate).", e);
+            }
+        }
+
         if (element.ValueKind == JsonValueKind.Object)
         {
             var seen = new HashSet<string>(StringComparer.Ordinal);
             foreach (JsonProperty property in element.EnumerateObject())
             {
-                if (!seen.Add(property.Name))
+                string key = Valid(() => property.Name);
+                if (!seen.Add(key))
                 {
-                    throw Error(path.Length == 0 ? "the spec" : $"object '{path}'", $"the key '{property.Name}' appears twice.");
+                    throw Error(path.Length == 0 ? "the spec" : $"object '{path}'", $"the key '{key}' appears twice.");
                 }
 
-                CheckUniqueKeys(property.Value, path.Length == 0 ? property.Name : $"{path}.{property.Name}");
+                CheckUniqueKeys(property.Value, path.Length == 0 ? key : $"{path}.{key}");
             }
         }
         else if (element.ValueKind == JsonValueKind.Array)
@@ -360,6 +390,10 @@ internal sealed class CharacterSpecReader
             {
                 CheckUniqueKeys(item, $"{path}[{i++}]");
             }
+        }
+        else if (element.ValueKind == JsonValueKind.String)
+        {
+            Valid(element.GetString);
         }
     }
 

@@ -13,6 +13,9 @@ namespace Ballistic.Planner.Rigs;
 /// </summary>
 internal sealed class GltfSkeleton
 {
+    /// <summary>How far from the origin, in metres along each axis, a bone or skinned vertex may lie.</summary>
+    public const float MaxCoordinate = 1e6f;
+
     private GltfSkeleton(int[] nodes, string[] names, int[] parents, Vector3[] offsets, Quaternion[] restRotations, Vector3[] restPositions, Quaternion[] restWorldRotations, List<Vector3>[] points)
     {
         Nodes = nodes;
@@ -75,18 +78,6 @@ internal sealed class GltfSkeleton
         Matrix4x4[] world = document.WorldTransforms();
         var isJoint = new HashSet<int>(skinJoints);
         string NodeName(int node) => nodes[node]?["name"] is JsonValue v && v.TryGetValue(out string? s) && s.Length > 0 ? s : $"node {node}";
-        int BoneAncestor(int node)
-        {
-            for (int p = parentNode[node]; p >= 0; p = parentNode[p])
-            {
-                if (isJoint.Contains(p))
-                {
-                    return p;
-                }
-            }
-
-            return -1;
-        }
 
         var byName = new Dictionary<string, int>(StringComparer.Ordinal);
         foreach (int j in skinJoints)
@@ -97,23 +88,39 @@ internal sealed class GltfSkeleton
             }
         }
 
-        // The root: among the skin's root bones, the one with the most limb bones below it, then the most bones.
-        int[] roots = [.. skinJoints.Where(j => BoneAncestor(j) < 0)];
-        int TopOf(int node)
+        // Each node's nearest ancestor that is a bone, and each bone's topmost bone ancestor: parents first, once each.
+        int[] topological = ParentsFirst(parentNode);
+        int[] boneAncestor = new int[parentNode.Length];
+        int[] top = new int[parentNode.Length];
+        foreach (int n in topological)
         {
-            while (BoneAncestor(node) >= 0)
-            {
-                node = BoneAncestor(node);
-            }
+            int p = parentNode[n];
+            boneAncestor[n] = p < 0 ? -1 : isJoint.Contains(p) ? p : boneAncestor[p];
+            top[n] = boneAncestor[n] < 0 ? n : top[boneAncestor[n]];
+        }
 
-            return node;
+        // The root: among the skin's root bones, the one with the most limb bones below it, then the most bones.
+        int[] roots = [.. skinJoints.Where(j => boneAncestor[j] < 0)];
+        var limbBonesBelow = new Dictionary<int, int>();
+        foreach (string bone in limbBones)
+        {
+            if (byName.TryGetValue(bone, out int n))
+            {
+                limbBonesBelow[top[n]] = limbBonesBelow.GetValueOrDefault(top[n]) + 1;
+            }
+        }
+
+        var bonesBelow = new Dictionary<int, int>();
+        foreach (int j in skinJoints)
+        {
+            bonesBelow[top[j]] = bonesBelow.GetValueOrDefault(top[j]) + 1;
         }
 
         int main = roots
-            .OrderByDescending(r => limbBones.Count(b => byName.TryGetValue(b, out int n) && TopOf(n) == r))
-            .ThenByDescending(r => skinJoints.Count(j => TopOf(j) == r))
+            .OrderByDescending(r => limbBonesBelow.GetValueOrDefault(r))
+            .ThenByDescending(r => bonesBelow.GetValueOrDefault(r))
             .First();
-        int RigParent(int node) => node == main ? -1 : BoneAncestor(node) is int a && a >= 0 ? a : main;
+        int RigParent(int node) => node == main ? -1 : boneAncestor[node] is int a && a >= 0 ? a : main;
 
         // Parents before children: the skin's own order when it already is, else breadth-first from the root.
         var order = new List<int>();
@@ -131,12 +138,13 @@ internal sealed class GltfSkeleton
         }
         else
         {
+            var children = skinJoints.Where(c => c != main).ToLookup(RigParent);
             var queue = new Queue<int>([main]);
             while (queue.Count > 0)
             {
                 int node = queue.Dequeue();
                 order.Add(node);
-                foreach (int child in skinJoints.Where(c => c != main && RigParent(c) == node))
+                foreach (int child in children[node])
                 {
                     queue.Enqueue(child);
                 }
@@ -147,10 +155,16 @@ internal sealed class GltfSkeleton
         int count = order.Count;
         var positions = new Vector3[count];
         var rotations = new Quaternion[count];
+        var rigid = new HashSet<int>();
         for (int i = 0; i < count; i++)
         {
             int node = order[i];
-            CheckBoneScale(document, nodes, parentNode, isJoint, node, NodeName);
+            CheckBoneScale(document, nodes, parentNode, isJoint, node, NodeName, rigid);
+            if (!IsFinite(world[node]))
+            {
+                throw new RigException($"{file}: bone '{NodeName(node)}' with its parents' transforms is not finite (a translation or scale too large); apply the transforms before exporting.");
+            }
+
             if (!TryRigid(world[node], out _, out Quaternion rotation))
             {
                 throw new RigException($"{file}: bone '{NodeName(node)}' with its parents is not a rotation with a uniform scale (sheared); apply the transforms before exporting.");
@@ -158,6 +172,10 @@ internal sealed class GltfSkeleton
 
             positions[i] = Vector3.Transform(world[node].Translation, axes);
             rotations[i] = Quaternion.Normalize(axes * rotation);
+            if (!Within(positions[i]))
+            {
+                throw new RigException($"{file}: bone '{NodeName(node)}' lies at ({positions[i].X:G4}, {positions[i].Y:G4}, {positions[i].Z:G4}), beyond the ±1e6 m a character may span.");
+            }
         }
 
         var index = new Dictionary<int, int>();
@@ -227,35 +245,101 @@ internal sealed class GltfSkeleton
             throw new GltfException($"{document.Name}: skin {skin} has no list of joints.");
         }
 
-        return
-        [
-            .. joints.Select(j => j is JsonValue v && v.TryGetValue(out int n) && n >= 0 && n < nodeCount
+        int[] result = new int[joints.Count];
+        var seen = new HashSet<int>();
+        for (int i = 0; i < joints.Count; i++)
+        {
+            JsonNode? j = joints[i];
+            result[i] = j is JsonValue v && v.GetValueKind() == System.Text.Json.JsonValueKind.Number && v.TryGetValue(out int n) && n >= 0 && n < nodeCount
                 ? n
-                : throw new GltfException($"{document.Name}: skin {skin} lists joint {j?.ToJsonString() ?? "null"}, which is not a node.")),
-        ];
+                : throw new GltfException($"{document.Name}: skin {skin} lists joint {GltfDocument.Describe(j)}, which is not a node (there are {nodeCount}).");
+            if (!seen.Add(result[i]))
+            {
+                throw new GltfException($"{document.Name}: skin {skin} lists node {result[i]} as a joint twice.");
+            }
+        }
+
+        return result;
     }
 
-    private static void CheckBoneScale(GltfDocument document, JsonArray nodes, int[] parentNode, HashSet<int> isJoint, int bone, Func<int, string> name)
+    /// <summary>Every node once, each after its parent (parents from <see cref="GltfDocument.NodeParents"/>, which has no cycle).</summary>
+    private static int[] ParentsFirst(int[] parents)
     {
-        // The bone itself, then its ancestors up to the scene root: each must be a rotation with a uniform scale.
-        for (int node = bone; node >= 0; node = parentNode[node])
+        var children = new List<int>?[parents.Length];
+        var order = new List<int>(parents.Length);
+        for (int n = 0; n < parents.Length; n++)
         {
-            Matrix4x4 local = document.LocalTransform((JsonObject)nodes[node]!);
+            if (parents[n] < 0)
+            {
+                order.Add(n);
+            }
+            else
+            {
+                (children[parents[n]] ??= []).Add(n);
+            }
+        }
+
+        for (int i = 0; i < order.Count; i++)
+        {
+            if (children[order[i]] is List<int> list)
+            {
+                order.AddRange(list);
+            }
+        }
+
+        return [.. order];
+    }
+
+    private static bool Within(Vector3 p) => MathF.Abs(p.X) <= MaxCoordinate && MathF.Abs(p.Y) <= MaxCoordinate && MathF.Abs(p.Z) <= MaxCoordinate;
+
+    private static bool IsFinite(Matrix4x4 m) =>
+        float.IsFinite(m.M11) && float.IsFinite(m.M12) && float.IsFinite(m.M13) && float.IsFinite(m.M14) &&
+        float.IsFinite(m.M21) && float.IsFinite(m.M22) && float.IsFinite(m.M23) && float.IsFinite(m.M24) &&
+        float.IsFinite(m.M31) && float.IsFinite(m.M32) && float.IsFinite(m.M33) && float.IsFinite(m.M34) &&
+        float.IsFinite(m.M41) && float.IsFinite(m.M42) && float.IsFinite(m.M43) && float.IsFinite(m.M44);
+
+    private static void CheckBoneScale(GltfDocument document, JsonArray nodes, int[] parentNode, HashSet<int> isJoint, int bone, Func<int, string> name, HashSet<int> rigid)
+    {
+        // The bone itself, then its ancestors up to the scene root: each must be a rotation with a uniform scale
+        // (a node found rigid before, for another bone, has had its ancestors checked too).
+        for (int node = bone; node >= 0 && !rigid.Contains(node); node = parentNode[node])
+        {
+            Matrix4x4 local = document.LocalTransform(document.Node(node));
+            string Which() => node == bone ? $"bone '{name(node)}'" : $"{(isJoint.Contains(node) ? "bone" : "node")} '{name(node)}' (above bone '{name(bone)}')";
+            float largest = 0f;
+            for (int k = 0; k < 16; k++)
+            {
+                largest = MathF.Max(largest, MathF.Abs(local[k / 4, k % 4]));
+            }
+
+            if (!(largest <= MaxCoordinate))
+            {
+                throw new RigException($"{document.Name}: {Which()} has a scale or translation beyond ±1e6; apply the transforms before exporting.");
+            }
+
             if (TryRigid(local, out _, out _))
             {
                 continue;
             }
 
             var scale = new Vector3(new Vector3(local.M11, local.M12, local.M13).Length(), new Vector3(local.M21, local.M22, local.M23).Length(), new Vector3(local.M31, local.M32, local.M33).Length());
-            string what = node == bone ? $"bone '{name(node)}'" : $"{(isJoint.Contains(node) ? "bone" : "node")} '{name(node)}' (above bone '{name(bone)}')";
+            string what = Which();
             string problem = Vector3.Dot(Vector3.Cross(new Vector3(local.M11, local.M12, local.M13), new Vector3(local.M21, local.M22, local.M23)), new Vector3(local.M31, local.M32, local.M33)) <= 0f
                 ? "is mirrored or collapsed (a negative or zero scale)"
                 : $"is scaled non-uniformly ({scale.X:0.###}, {scale.Y:0.###}, {scale.Z:0.###})";
             throw new RigException($"{document.Name}: {what} {problem}; apply the scale before exporting.");
         }
+
+        int checkedNode = bone;
+        while (checkedNode >= 0 && rigid.Add(checkedNode))
+        {
+            checkedNode = parentNode[checkedNode];
+        }
     }
 
     /// <summary>Every skinned vertex in the rest pose, assigned to its dominant bone and expressed in that bone's rest frame.</summary>
+    /// <exception cref="GltfException">A skinned mesh, its skin or its accessors are malformed, or the vertices read exceed <see cref="GltfLoadOptions.MaxVertices"/>.</exception>
+    /// <exception cref="RigException">A skinned vertex is not finite or lies beyond <see cref="MaxCoordinate"/>.</exception>
     private static List<Vector3>[] SkinnedPoints(GltfDocument document, Matrix4x4[] world, Dictionary<int, int> jointIndex, Quaternion axes, Vector3[] positions, Quaternion[] rotations)
     {
         var points = new List<Vector3>[positions.Length];
@@ -264,27 +348,38 @@ internal sealed class GltfSkeleton
             points[j] = [];
         }
 
+        string file = document.Name;
         JsonArray nodes = document.Array("nodes");
         JsonArray meshes = document.Array("meshes");
+        JsonArray skins = document.Array("skins");
+        long verticesRead = 0;
+        var weightOfJoint = new Dictionary<int, float>();
         for (int n = 0; n < nodes.Count; n++)
         {
-            if (nodes[n] is not JsonObject node || node["mesh"] is not JsonValue meshValue || node["skin"] is not JsonValue skinValue)
+            JsonObject node = document.Node(n);
+            if (node["mesh"] is null || node["skin"] is null)
             {
                 continue;
             }
 
-            if (!meshValue.TryGetValue(out int meshIndex) || meshIndex < 0 || meshIndex >= meshes.Count || meshes[meshIndex] is not JsonObject mesh
-                || !skinValue.TryGetValue(out int skin) || skin < 0 || skin >= document.Array("skins").Count)
+            int meshIndex = document.RequiredIndex(node, "mesh", $"node {n}");
+            int skin = document.RequiredIndex(node, "skin", $"node {n}");
+            if (meshIndex >= meshes.Count || meshes[meshIndex] is not JsonObject mesh)
             {
-                throw new GltfException($"{document.Name}: node {n} names a mesh or skin that does not exist.");
+                throw new GltfException($"{file}: node {n} names mesh {meshIndex}, which does not exist (there are {meshes.Count}).");
+            }
+
+            if (skin >= skins.Count || skins[skin] is not JsonObject skinJson)
+            {
+                throw new GltfException($"{file}: node {n} names skin {skin}, which does not exist (there are {skins.Count}).");
             }
 
             int[] joints = SkinJoints(document, skin);
             var skinMatrices = new Matrix4x4[joints.Length];
-            float[]? inverseBind = document.Array("skins")[skin]!["inverseBindMatrices"] is JsonValue ib && ib.TryGetValue(out int ibAccessor) ? document.ReadFloats(ibAccessor, 16) : null;
+            float[]? inverseBind = document.OptionalIndex(skinJson, "inverseBindMatrices", $"skin {skin}") is int ibAccessor ? document.ReadFloats(ibAccessor, 16) : null;
             if (inverseBind is not null && inverseBind.Length < 16 * joints.Length)
             {
-                throw new GltfException($"{document.Name}: skin {skin} has fewer inverse bind matrices than joints.");
+                throw new GltfException($"{file}: skin {skin} has fewer inverse bind matrices than joints.");
             }
 
             for (int i = 0; i < joints.Length; i++)
@@ -299,25 +394,41 @@ internal sealed class GltfSkeleton
                 skinMatrices[i] = ibm * world[joints[i]];
             }
 
-            foreach (JsonNode? primitiveNode in mesh["primitives"] as JsonArray ?? [])
+            JsonArray primitives = mesh["primitives"] as JsonArray ?? [];
+            for (int pi = 0; pi < primitives.Count; pi++)
             {
-                if (primitiveNode?["attributes"] is not JsonObject attributes || attributes["POSITION"] is not JsonValue pv || !pv.TryGetValue(out int positionAccessor))
+                if (primitives[pi] is not JsonObject primitive || primitive["attributes"] is not JsonObject attributes || attributes["POSITION"] is null)
                 {
                     continue;
                 }
 
-                float[] vertices = document.ReadFloats(positionAccessor, 3);
-                var sets = new List<(int[] Joints, float[] Weights)>();
-                for (int set = 0; attributes[$"JOINTS_{set}"] is JsonValue jv && attributes[$"WEIGHTS_{set}"] is JsonValue wv; set++)
+                string what = $"primitive {pi} of mesh {meshIndex}";
+                int positionAccessor = document.RequiredIndex(attributes, "POSITION", what + "'s attributes");
+                int sets = 0;
+                while (attributes[$"JOINTS_{sets}"] is not null && attributes[$"WEIGHTS_{sets}"] is not null)
                 {
-                    int[] js = jv.TryGetValue(out int ja) ? document.ReadIntegers(ja) : throw new GltfException($"{document.Name}: mesh {meshIndex} has a malformed JOINTS_{set}.");
-                    float[] ws = wv.TryGetValue(out int wa) ? document.ReadFloats(wa, 4) : throw new GltfException($"{document.Name}: mesh {meshIndex} has a malformed WEIGHTS_{set}.");
+                    sets++;
+                }
+
+                long vertexCount = document.ElementCount(positionAccessor);
+                verticesRead += vertexCount * (1 + sets);
+                if (verticesRead > document.Options.MaxVertices)
+                {
+                    throw new GltfException($"{file}: with {what}, the character's skinned meshes read more than {document.Options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
+                }
+
+                float[] vertices = document.ReadFloats(positionAccessor, 3);
+                var influences = new List<(int[] Joints, float[] Weights)>();
+                for (int set = 0; set < sets; set++)
+                {
+                    int[] js = document.ReadIntegers(document.RequiredIndex(attributes, $"JOINTS_{set}", what + "'s attributes"));
+                    float[] ws = document.ReadFloats(document.RequiredIndex(attributes, $"WEIGHTS_{set}", what + "'s attributes"), 4);
                     if (js.Length < vertices.Length / 3 * 4 || ws.Length < vertices.Length / 3 * 4)
                     {
-                        throw new GltfException($"{document.Name}: mesh {meshIndex}'s JOINTS_{set} or WEIGHTS_{set} has fewer elements than POSITION.");
+                        throw new GltfException($"{file}: {what}'s JOINTS_{set} or WEIGHTS_{set} has fewer elements than POSITION.");
                     }
 
-                    sets.Add((js, ws));
+                    influences.Add((js, ws));
                 }
 
                 for (int v = 0; v < vertices.Length / 3; v++)
@@ -325,9 +436,8 @@ internal sealed class GltfSkeleton
                     var p = new Vector3(vertices[3 * v], vertices[(3 * v) + 1], vertices[(3 * v) + 2]);
                     Vector3 skinned = Vector3.Zero;
                     float total = 0f;
-                    int dominant = -1;
-                    float best = 0f;
-                    foreach ((int[] js, float[] ws) in sets)
+                    weightOfJoint.Clear();
+                    foreach ((int[] js, float[] ws) in influences)
                     {
                         for (int k = 0; k < 4; k++)
                         {
@@ -340,38 +450,45 @@ internal sealed class GltfSkeleton
 
                             if (joint >= joints.Length)
                             {
-                                throw new GltfException($"{document.Name}: mesh {meshIndex}, vertex {v} is weighted to joint {joint}, but skin {skin} has {joints.Length} joints.");
+                                throw new GltfException($"{file}: {what}, vertex {v} is weighted to joint {joint}, but skin {skin} has {joints.Length} joints.");
                             }
 
                             skinned += Vector3.Transform(p, skinMatrices[joint]) * w;
                             total += w;
-                            float onBone = w;
-                            foreach ((int[] js2, float[] ws2) in sets)
-                            {
-                                for (int k2 = 0; k2 < 4; k2++)
-                                {
-                                    if (!ReferenceEquals(js2, js) || k2 != k)
-                                    {
-                                        onBone += js2[(4 * v) + k2] == joint && ws2[(4 * v) + k2] > 0f ? ws2[(4 * v) + k2] : 0f;
-                                    }
-                                }
-                            }
-
-                            if (onBone > best)
-                            {
-                                best = onBone;
-                                dominant = joints[joint];
-                            }
+                            weightOfJoint[joint] = weightOfJoint.GetValueOrDefault(joint) + w;
                         }
                     }
 
-                    if (total <= 0f || !jointIndex.TryGetValue(dominant, out int bone))
+                    if (!(total > 0f))
                     {
                         continue;
                     }
 
+                    // The dominant bone: the most weight summed over the sets, the first listed on a tie.
+                    int dominant = -1;
+                    float best = 0f;
+                    foreach ((int[] js, float[] ws) in influences)
+                    {
+                        for (int k = 0; k < 4; k++)
+                        {
+                            if (ws[(4 * v) + k] > 0f && weightOfJoint[js[(4 * v) + k]] > best)
+                            {
+                                best = weightOfJoint[js[(4 * v) + k]];
+                                dominant = joints[js[(4 * v) + k]];
+                            }
+                        }
+                    }
+
                     Vector3 inFrame = Vector3.Transform(skinned / total, axes);
-                    points[bone].Add(Vector3.Transform(inFrame - positions[bone], Quaternion.Conjugate(rotations[bone])));
+                    if (!Within(inFrame))
+                    {
+                        throw new RigException($"{file}: vertex {v} of {what} lies at ({inFrame.X:G4}, {inFrame.Y:G4}, {inFrame.Z:G4}) in the rest pose, {(float.IsFinite(inFrame.X + inFrame.Y + inFrame.Z) ? "beyond the ±1e6 m a character may span" : "which is not finite")}.");
+                    }
+
+                    if (jointIndex.TryGetValue(dominant, out int bone))
+                    {
+                        points[bone].Add(Vector3.Transform(inFrame - positions[bone], Quaternion.Conjugate(rotations[bone])));
+                    }
                 }
             }
         }

@@ -1,0 +1,120 @@
+using System.Diagnostics;
+using System.Text.Json.Nodes;
+using Ballistic.Planner.Gltf;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Rigs;
+
+/// <summary>
+/// Characters crafted to read other files, wait forever or exhaust memory (tracker issue 8): the glTF's buffers and
+/// images stay in its folder, the spec and glTF must be regular files within the byte limit, skins and bones are
+/// checked, and every problem is one <see cref="RigException"/> sentence.
+/// </summary>
+public sealed class HostileCharacterTests
+{
+    private string _folder = "";
+
+    [SetUp]
+    public void MakeFolder()
+    {
+        _folder = Path.Combine(Path.GetTempPath(), $"ballistic-hostile-rig-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(_folder);
+    }
+
+    [TearDown]
+    public void RemoveFolder() => Directory.Delete(_folder, recursive: true);
+
+    [Test]
+    public void BuffersAndImagesOfACharacterStayInItsFolder()
+    {
+        ForeignCharacter dog = ForeignCharacters.Dog();
+        string inner = Path.Combine(_folder, "dog");
+        Directory.CreateDirectory(inner);
+        string gltf = dog.Rig.WriteGltf(inner, "dog");
+        string spec = Path.Combine(inner, "dog.limbs.json");
+        File.WriteAllText(spec, dog.Spec);
+        Assert.That(CharacterSpecFile.Load(gltf, spec).Model.Source, Is.Not.Null, "the character as written loads");
+
+        // The same buffer and image, moved one folder up: following "../" would read them.
+        File.Move(Path.Combine(inner, "dog.bin"), Path.Combine(_folder, "dog.bin"));
+        File.Move(Path.Combine(inner, "dog.png"), Path.Combine(_folder, "dog.png"));
+        JsonObject json = JsonNode.Parse(File.ReadAllText(gltf))!.AsObject();
+        json["buffers"]![0]!["uri"] = "../dog.bin";
+        File.WriteAllText(gltf, json.ToJsonString());
+        string message = Assert.Throws<RigException>(() => CharacterSpecFile.Load(gltf, spec))!.Message;
+        Assert.That(message, Does.Contain("dog.gltf: buffer 0's URI '../dog.bin' leads out of the glTF's folder"));
+
+        File.Move(Path.Combine(_folder, "dog.bin"), Path.Combine(inner, "dog.bin"));
+        json["buffers"]![0]!["uri"] = "dog.bin";
+        json["images"]![0]!["uri"] = "../dog.png";
+        File.WriteAllText(gltf, json.ToJsonString());
+        GltfDocument document = GltfDocument.Load(gltf);
+        Assert.Multiple(() =>
+        {
+            Assert.That(() => document.ReadImage(0), Throws.TypeOf<GltfException>().With.Message.Contains("image 0's URI '../dog.png' leads out of the glTF's folder"));
+            Assert.That(() => GlbWriter.From(document), Throws.TypeOf<GltfException>().With.Message.Contains("'../dog.png'"), "the animated GLB does not embed it either");
+        });
+    }
+
+    [Test]
+    public void SpecFilesMustBeRegularAndWithinTheByteLimit()
+    {
+        string glb = Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "frog.glb");
+        string spec = Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "frog.limbs.json");
+        long size = new FileInfo(spec).Length;
+        Assert.Multiple(() =>
+        {
+            Assert.That(() => CharacterSpecFile.Load(glb, spec, new GltfLoadOptions { MaxBytes = 100 }),
+                Throws.TypeOf<RigException>().With.Message.Contains($"Limb spec {spec} is {size} bytes, more than the 100 bytes allowed (GltfLoadOptions.MaxBytes)"));
+            Assert.That(() => CharacterSpecFile.Load(glb, _folder), Throws.TypeOf<RigException>().With.Message.Contains("is a folder, not a file"));
+            Assert.That(() => CharacterSpecFile.Load(glb, spec, new GltfLoadOptions { MaxVertices = 100 }),
+                Throws.TypeOf<RigException>().With.Message.Contains("the character's skinned meshes read more than 100 vertices (GltfLoadOptions.MaxVertices)"));
+        });
+
+        if (OperatingSystem.IsLinux())
+        {
+            string pipe = Path.Combine(_folder, "frog.limbs.json");
+            using (var mkfifo = Process.Start(new ProcessStartInfo("mkfifo", [pipe]) { UseShellExecute = false })!)
+            {
+                mkfifo.WaitForExit();
+            }
+
+            string zero = Path.Combine(_folder, "frog.glb");
+            File.CreateSymbolicLink(zero, "/dev/zero");
+            var load = Task.Run(() => Assert.Throws<RigException>(() => CharacterSpecFile.Load(glb, pipe))!.Message);
+            Assert.That(load.Wait(TimeSpan.FromSeconds(10)), Is.True, "reading a named pipe waits for a writer");
+            Assert.That(load.Result, Does.Contain("frog.limbs.json is a named pipe, not a regular file"));
+            Assert.That(() => CharacterSpecFile.Load(zero, spec), Throws.TypeOf<RigException>().With.Message.Contains("frog.glb is a character device, not a regular file"));
+        }
+    }
+
+    [Test]
+    public void SkinsListingABoneTwiceAndBonesFarAwayAreNamed()
+    {
+        ForeignCharacter dog = ForeignCharacters.Dog();
+        string gltf = dog.Rig.WriteGltf(_folder, "dog");
+        string spec = Path.Combine(_folder, "dog.limbs.json");
+        File.WriteAllText(spec, dog.Spec);
+        JsonObject pristine = JsonNode.Parse(File.ReadAllText(gltf))!.AsObject();
+        string Broken(Action<JsonObject> change)
+        {
+            var json = (JsonObject)pristine.DeepClone();
+            change(json);
+            File.WriteAllText(gltf, json.ToJsonString());
+            string message = Assert.Throws<RigException>(() => CharacterSpecFile.Load(gltf, spec))!.Message;
+            TestContext.Out.WriteLine(message);
+            return message;
+        }
+
+        Assert.Multiple(() =>
+        {
+            int first = pristine["skins"]![0]!["joints"]![0]!.GetValue<int>();
+            Assert.That(Broken(j => j["skins"]![0]!["joints"]!.AsArray().Add(first)), Does.Contain($"skin 0 lists node {first} as a joint twice"));
+            Assert.That(Broken(j => j["nodes"]![first]!["translation"] = new JsonArray(1e30f, 0, 0)), Does.Contain("bone 'pelvis' has a scale or translation beyond ±1e6"));
+            Assert.That(Broken(j => j["nodes"]![first]!["scale"] = new JsonArray(1e30f, 1e30f, 1e30f)), Does.Contain("bone 'pelvis' has a scale or translation beyond ±1e6"));
+            Assert.That(Broken(j => j["accessors"]![0]!["count"] = 150_000_000), Does.Contain("dog.gltf: accessor 0 reads past the end of buffer view"));
+            Assert.That(Broken(j => j["nodes"]![first]!["children"]!.AsArray().Add(first)), Does.Contain("lists itself as a child"));
+        });
+    }
+}
