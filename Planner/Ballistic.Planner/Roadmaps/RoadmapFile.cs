@@ -115,32 +115,7 @@ public static class RoadmapFile
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(levelFingerprint);
         ArgumentNullException.ThrowIfNull(character);
-        byte[] bytes;
-        try
-        {
-            switch (FileKind.Of(path))
-            {
-                case FileKindValue.Missing:
-                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it does not exist.");
-                case FileKindValue.Directory:
-                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it is a folder.");
-                case FileKindValue.Special:
-                    throw new RoadmapFileException($"Roadmap file {path} cannot be read: it is not a regular file (a device, pipe or socket).");
-            }
-
-            long length = new FileInfo(path).Length;
-            if (length > MaxFileBytes)
-            {
-                throw new RoadmapFileException($"Roadmap file {path} is {length:N0} bytes, more than the {MaxFileBytes:N0} a roadmap may have.");
-            }
-
-            bytes = File.ReadAllBytes(path);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
-        {
-            throw new RoadmapFileException($"Roadmap file {path} cannot be read: {e.Message}", e);
-        }
-
+        byte[] bytes = InputFile.Read(path, MaxFileBytes, "RoadmapFile.MaxFileBytes", (phrase, e) => new RoadmapFileException($"Roadmap file {path} {phrase}.", e!));
         Roadmap roadmap = FromBytes(bytes, path);
         if (!string.Equals(roadmap.LevelFingerprint, levelFingerprint, StringComparison.Ordinal))
         {
@@ -266,9 +241,9 @@ public static class RoadmapFile
                 throw Invalid(name, $"node {i} has a rotation that is not a unit quaternion");
             }
 
-            if (!Finite(axis) || !(axis.Length() > 1e-6f) || !(mu >= 0f && mu <= MaxFriction))
+            if (!Unit(new Vector4(axis, 0f)) || !(mu >= 0f && mu <= MaxFriction))
             {
-                throw Invalid(name, $"node {i} has a friction cone without a finite axis or with μ {mu:G4} outside 0 to {MaxFriction}");
+                throw Invalid(name, $"node {i} has a friction cone whose axis is not a unit vector or whose μ {mu:G4} is outside 0 to {MaxFriction}");
             }
 
             int contactCount = Count(r, payload.Length, name, "contacts");

@@ -11,7 +11,7 @@ namespace Ballistic.Planner.Tests.Fuzz;
 
 /// <summary>
 /// Seeded mutations of valid level, character, limb spec and roadmap files (tracker issue 8): whatever the bytes,
-/// <see cref="GltfLevelLoader.Load"/>, <see cref="CharacterSpecFile.Load"/> and <see cref="RoadmapFile.Load"/> either
+/// <see cref="GltfLevelLoader.Load"/>, <see cref="CharacterSpecFile.Load"/> and <see cref="RoadmapFile.Load(string, string, Ballistic.Planner.Characters.ReducedCharacter)"/> either
 /// succeed or throw an input error with one plain sentence, within 2 s and 512 MiB a case (see
 /// <see cref="FuzzHarness"/>). The seeds are fixed, so every run tries the same cases; a failure prints its seed and
 /// mutations, and <c>BALLISTIC_FUZZ_REPLAY=format:seed</c> with <see cref="Replay"/> runs it alone.
@@ -66,7 +66,6 @@ public sealed class InputFuzzTests
     /// loads must hold finite poses and contacts, limbs of the character and positive flight times.
     /// </summary>
     [Test]
-    [Explicit("Fails until RoadmapFile validates what it reads after the checksum (another branch): see the failing seeds it prints.")]
     public void RoadmapMutationsWithRecomputedChecksums() => Fuzz("roadmap-rehashed", 200, FormatExceptionSeeds);
 
     /// <summary>Runs the one case named by <c>BALLISTIC_FUZZ_REPLAY=format:seed</c>, printing its mutations.</summary>

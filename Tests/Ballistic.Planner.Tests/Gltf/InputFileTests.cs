@@ -1,5 +1,5 @@
 using System.Diagnostics;
-using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Tests.Gltf;
 

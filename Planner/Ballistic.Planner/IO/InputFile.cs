@@ -1,8 +1,9 @@
 using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text;
+using Ballistic.Planner.Gltf;
 
-namespace Ballistic.Planner.Gltf;
+namespace Ballistic.Planner.IO;
 
 /// <summary>
 /// Reads input files (glTF, GLB, their buffers and images, limb specs) safely: only regular files, following
