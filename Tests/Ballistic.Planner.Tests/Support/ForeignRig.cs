@@ -109,21 +109,7 @@ internal sealed class ForeignRig
     {
         (JsonObject json, byte[] bin) = Build(byteWeights, externalImage: null);
         json["buffers"] = new JsonArray(new JsonObject { ["byteLength"] = bin.Length });
-        byte[] text = Encoding.UTF8.GetBytes(json.ToJsonString());
-        int jsonLength = (text.Length + 3) & ~3;
-        int binLength = (bin.Length + 3) & ~3;
-        byte[] file = new byte[12 + 8 + jsonLength + 8 + binLength];
-        BinaryPrimitives.WriteUInt32LittleEndian(file, 0x46546C67);
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(4), 2);
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(8), (uint)file.Length);
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(12), (uint)jsonLength);
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(16), 0x4E4F534A);
-        text.CopyTo(file, 20);
-        file.AsSpan(20 + text.Length, jsonLength - text.Length).Fill((byte)' ');
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(20 + jsonLength), (uint)binLength);
-        BinaryPrimitives.WriteUInt32LittleEndian(file.AsSpan(24 + jsonLength), 0x004E4942);
-        bin.CopyTo(file, 28 + jsonLength);
-        return file;
+        return Fuzz.FuzzInputs.JoinGlb(Encoding.UTF8.GetBytes(json.ToJsonString()), bin);
     }
 
     /// <summary>Writes the rig as <c>NAME.gltf</c> with its buffer and texture as separate files beside it; returns the glTF's path.</summary>
