@@ -1,0 +1,35 @@
+using System.Text.Json.Nodes;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Tests.Support;
+
+/// <summary>The foreign dog written as a .gltf with its spec, and edits of its glTF JSON that must fail to load.</summary>
+internal sealed class BrokenDog
+{
+    private readonly string _gltf;
+    private readonly string _spec;
+    private readonly JsonObject _pristine;
+
+    public BrokenDog(string folder)
+    {
+        ForeignCharacter dog = ForeignCharacters.Dog();
+        _gltf = dog.Rig.WriteGltf(folder, "dog");
+        _spec = Path.Combine(folder, "dog.limbs.json");
+        File.WriteAllText(_spec, dog.Spec);
+        _pristine = JsonNode.Parse(File.ReadAllText(_gltf))!.AsObject();
+    }
+
+    /// <summary>The glTF JSON as written, for reading node indices.</summary>
+    public JsonObject Pristine => _pristine;
+
+    /// <summary>Applies <paramref name="change"/> to a copy of the glTF, loads it and returns the RigException's message.</summary>
+    public string Load(Action<JsonObject> change)
+    {
+        var json = (JsonObject)_pristine.DeepClone();
+        change(json);
+        File.WriteAllText(_gltf, json.ToJsonString());
+        string message = Assert.Throws<RigException>(() => CharacterSpecFile.Load(_gltf, _spec))!.Message;
+        TestContext.Out.WriteLine(message);
+        return message;
+    }
+}
