@@ -98,6 +98,23 @@ public sealed class JumpAnimation
     /// <summary>The full pose at clip time <paramref name="time"/>: the root on the parabola, the angles interpolated between frames.</summary>
     public (RootPose Root, float[] Angles) Sample(float time)
     {
+        float[] angles = new float[Model.Rig.DofCount];
+        return (Sample(time, angles), angles);
+    }
+
+    /// <summary>
+    /// The full pose at clip time <paramref name="time"/> (seconds) without allocating: the angles (radians, one per
+    /// degree of freedom) interpolated between frames are written into <paramref name="angles"/>; returns the root
+    /// pose, exactly on the current jump's parabola in flight.
+    /// </summary>
+    /// <exception cref="ArgumentException"><paramref name="angles"/> is shorter than the rig's degree-of-freedom count, or the clip has no frames.</exception>
+    public RootPose Sample(float time, Span<float> angles)
+    {
+        if (Frames.Count == 0 || angles.Length < Model.Rig.DofCount)
+        {
+            throw new ArgumentException($"Sampling needs a clip with frames and room for {Model.Rig.DofCount} angles.", nameof(angles));
+        }
+
         int hi = 0;
         int lo = Frames.Count - 1;
         while (hi < lo)
@@ -113,17 +130,16 @@ public sealed class JumpAnimation
             }
         }
 
-        AnimationFrame after = Frames[hi];
-        AnimationFrame before = Frames[Math.Max(0, hi - 1)];
-        float span = after.Time - before.Time;
-        float w = span > 0f ? Math.Clamp((time - before.Time) / span, 0f, 1f) : 1f;
-        float[] angles = new float[after.Angles.Length];
-        for (int i = 0; i < angles.Length; i++)
+        float[] after = Frames[hi].Angles;
+        float[] before = Frames[Math.Max(0, hi - 1)].Angles;
+        float span = Frames[hi].Time - Frames[Math.Max(0, hi - 1)].Time;
+        float w = span > 0f ? Math.Clamp((time - Frames[Math.Max(0, hi - 1)].Time) / span, 0f, 1f) : 1f;
+        for (int i = 0; i < after.Length; i++)
         {
-            angles[i] = float.Lerp(before.Angles[i], after.Angles[i], w);
+            angles[i] = float.Lerp(before[i], after[i], w);
         }
 
-        return (RootAt(time), angles);
+        return RootAt(time);
     }
 
     /// <summary>World positions and rotations of every joint at <paramref name="time"/>.</summary>

@@ -1,0 +1,126 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Paths;
+using Ballistic.Runtime.Systems;
+
+namespace Ballistic.Runtime.Agents;
+
+/// <summary>
+/// The agents' components, one array per component indexed by slot (struct of arrays). Slots of removed agents go
+/// on a free list and are reused last-freed first, with a new generation, so handles of removed agents stay invalid.
+/// Systems iterate slots 0..<see cref="HighWater"/> in order, which makes iteration order deterministic.
+/// </summary>
+internal sealed class AgentStore
+{
+    private readonly Stack<int> _free = new();
+
+    public int[] Generation = [];
+    public bool[] Alive = [];
+    public int[] Kind = [];
+    public RootPose[] Root = [];
+    public AgentState[] State = [];
+
+    /// <summary>The stance the agent stands on (null while it follows a path).</summary>
+    public RoadmapNode?[] Stance = [];
+
+    public Vector3[] Target = [];
+    public bool[] HasTarget = [];
+
+    /// <summary>The path followed, its start on the world clock, the event cursor (2i: takeoff of jump i, 2i+1: its landing).</summary>
+    public AgentPath?[] Path = [];
+    public double[] PathStart = [];
+    public int[] Cursor = [];
+
+    /// <summary>Stop at the next stance of the path (a new target or a cleared one).</summary>
+    public bool[] StopAtStance = [];
+
+    /// <summary>The pending path request, when one is queued or being animated.</summary>
+    public PathRequest?[] Request = [];
+
+    public bool[] PoseEnabled = [];
+    public bool[] PoseDirty = [];
+    public float[][] Angles = [];
+    public Quaternion[][] Rotations = [];
+
+    /// <summary>One past the highest slot ever used.</summary>
+    public int HighWater { get; private set; }
+
+    /// <summary>Live agents.</summary>
+    public int Count { get; private set; }
+
+    public bool IsValid(AgentHandle handle) =>
+        handle.Generation > 0 && (uint)handle.Index < (uint)HighWater && Alive[handle.Index] && Generation[handle.Index] == handle.Generation;
+
+    public AgentHandle HandleOf(int slot) => new(slot, Generation[slot]);
+
+    public int Add(int kind, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
+    {
+        int slot;
+        if (_free.Count > 0)
+        {
+            slot = _free.Pop();
+        }
+        else
+        {
+            slot = HighWater++;
+            if (slot == Alive.Length)
+            {
+                Grow(Math.Max(16, Alive.Length * 2));
+            }
+        }
+
+        Generation[slot]++;
+        Alive[slot] = true;
+        Kind[slot] = kind;
+        Root[slot] = root;
+        State[slot] = AgentState.Idle;
+        Stance[slot] = stance;
+        Target[slot] = default;
+        HasTarget[slot] = false;
+        Path[slot] = null;
+        PathStart[slot] = 0;
+        Cursor[slot] = 0;
+        StopAtStance[slot] = false;
+        Request[slot] = null;
+        PoseEnabled[slot] = true;
+        PoseDirty[slot] = true;
+        Angles[slot] = angles;
+        Rotations[slot] = rotations;
+        Count++;
+        return slot;
+    }
+
+    public void Remove(int slot)
+    {
+        Alive[slot] = false;
+        Path[slot] = null;
+        Stance[slot] = null;
+        Request[slot] = null;
+        Angles[slot] = [];
+        Rotations[slot] = [];
+        _free.Push(slot);
+        Count--;
+    }
+
+    private void Grow(int capacity)
+    {
+        Array.Resize(ref Generation, capacity);
+        Array.Resize(ref Alive, capacity);
+        Array.Resize(ref Kind, capacity);
+        Array.Resize(ref Root, capacity);
+        Array.Resize(ref State, capacity);
+        Array.Resize(ref Stance, capacity);
+        Array.Resize(ref Target, capacity);
+        Array.Resize(ref HasTarget, capacity);
+        Array.Resize(ref Path, capacity);
+        Array.Resize(ref PathStart, capacity);
+        Array.Resize(ref Cursor, capacity);
+        Array.Resize(ref StopAtStance, capacity);
+        Array.Resize(ref Request, capacity);
+        Array.Resize(ref PoseEnabled, capacity);
+        Array.Resize(ref PoseDirty, capacity);
+        Array.Resize(ref Angles, capacity);
+        Array.Resize(ref Rotations, capacity);
+    }
+}

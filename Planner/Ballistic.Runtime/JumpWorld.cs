@@ -1,0 +1,457 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Paths;
+using Ballistic.Runtime.Systems;
+
+namespace Ballistic.Runtime;
+
+/// <summary>
+/// Many agents navigating one level by jumps, stepped per tick: the ECS core under the Godot nodes. The world holds
+/// one frozen roadmap per character kind (like a navigation map with one region per agent size), agents as
+/// components in arrays (<see cref="AgentHandle"/>s name them), and three systems run by <see cref="Step"/> in a
+/// fixed order: path requests (a budgeted queue), locomotion (exactly on the arcs), pose (joint buffers from the
+/// whole-body animation). What happened comes out as <see cref="Events"/>.
+/// </summary>
+/// <remarks>
+/// Deterministic: the same kinds, settings and calls between the same ticks give the same trajectories and events,
+/// whatever <see cref="WorldSettings.AnimationThreads"/> (with <see cref="WorldSettings.WaitForAnimation"/>, the
+/// default). Calls and <see cref="Step"/> belong on one thread (the game loop); animations are solved on others.
+/// No call throws for a bad handle or bad input: each returns a <see cref="RuntimeResult"/> with the reason, and
+/// no exception escapes a tick. Positions are the trunk centre in world metres, Y up; times are seconds.
+/// </remarks>
+public sealed class JumpWorld : IDisposable
+{
+    private readonly List<CharacterKind> _kinds = [];
+    private readonly List<RoadmapSearch> _searches = [];
+    private readonly AgentStore _agents = new();
+    private readonly EventBuffer _events = new();
+    private readonly EventBuffer _pending = new();
+    private readonly PathRequestSystem _requests;
+    private readonly LocomotionSystem _locomotion;
+    private readonly PoseSystem _pose;
+    private bool _disposed;
+
+    /// <summary>Creates an empty world on a level.</summary>
+    /// <param name="level">The level every kind's scene must be built on.</param>
+    /// <param name="settings">Tick rate, budgets and threads; defaults when <c>null</c>.</param>
+    /// <exception cref="ArgumentException">A setting is out of range.</exception>
+    public JumpWorld(Level level, WorldSettings? settings = null)
+    {
+        ArgumentNullException.ThrowIfNull(level);
+        Settings = settings ?? new WorldSettings();
+        if (Settings.Problem() is { } problem)
+        {
+            throw new ArgumentException($"World settings: {problem}.", nameof(settings));
+        }
+
+        Settings.Tolerance.Validate();
+        Level = level;
+        _requests = new PathRequestSystem(Settings, _agents, _events, _kinds, _searches);
+        _locomotion = new LocomotionSystem(_agents, _events, _requests);
+        _pose = new PoseSystem(_agents, _kinds);
+    }
+
+    /// <summary>The level.</summary>
+    public Level Level { get; }
+
+    /// <summary>The settings.</summary>
+    public WorldSettings Settings { get; }
+
+    /// <summary>Ticks stepped so far.</summary>
+    public long Tick { get; private set; }
+
+    /// <summary>World time, seconds: <see cref="Tick"/> × <see cref="WorldSettings.TickSeconds"/>.</summary>
+    public double Time => Tick * Settings.TickSeconds;
+
+    /// <summary>Live agents.</summary>
+    public int AgentCount => _agents.Count;
+
+    /// <summary>The character kinds, by <see cref="KindHandle.Index"/>.</summary>
+    public IReadOnlyList<CharacterKind> Kinds => _kinds;
+
+    /// <summary>The events of the last <see cref="Step"/>, in order: path found or failed, then takeoffs, landings and arrivals.</summary>
+    public ReadOnlySpan<JumpEvent> Events => _events.Events;
+
+    /// <summary>Path requests waiting for a search.</summary>
+    public int QueuedRequests => _requests.Queued;
+
+    /// <summary>Paths searched and being animated.</summary>
+    public int AnimatingRequests => _requests.Animating;
+
+    /// <summary>Searches made during the last tick.</summary>
+    public int LastTickSearches => _requests.LastTickSearches;
+
+    /// <summary>Search work (A* expansions plus placement costs) spent during the last tick.</summary>
+    public int LastTickSearchWork => _requests.LastTickWork;
+
+    /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
+    public AddKindResult AddKind(CharacterKind kind)
+    {
+        if (kind is null)
+        {
+            return new AddKindResult(new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null"), default);
+        }
+
+        if (kind.Scene.Level.Fingerprint != Level.Fingerprint)
+        {
+            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its scene is of another level than this world's ({Level.Source})"), default);
+        }
+
+        if (kind.Roadmap.LevelFingerprint != Level.Fingerprint)
+        {
+            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level"), default);
+        }
+
+        if (kind.Roadmap.CharacterFingerprint != kind.Scene.Character.Fingerprint)
+        {
+            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked for another character ({kind.Roadmap.CharacterName})"), default);
+        }
+
+        _kinds.Add(kind);
+        _searches.Add(new RoadmapSearch(kind, Settings));
+        return new AddKindResult(RuntimeResult.Success, new KindHandle(_kinds.Count - 1, true));
+    }
+
+    /// <summary>
+    /// Adds an agent standing at <paramref name="position"/> (a point on or near a surface, world metres): on the
+    /// roadmap node whose contacts stand within <see cref="WorldSettings.Tolerance"/> of it, otherwise on a stance
+    /// placed there. Fails with <see cref="RuntimeStatus.InvalidPosition"/> when the character can stand nowhere near.
+    /// </summary>
+    /// <param name="kind">The agent's character kind.</param>
+    /// <param name="position">Where it stands, world metres.</param>
+    public AddAgentResult AddAgent(KindHandle kind, Vector3 position)
+    {
+        if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
+        {
+            return new AddAgentResult(new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)"), default);
+        }
+
+        if (!Finite(position))
+        {
+            return new AddAgentResult(new RuntimeResult(RuntimeStatus.InvalidArgument, $"the position {position} is not finite"), default);
+        }
+
+        CharacterKind k = _kinds[kind.Index];
+        if (Stand(k, position, out RuntimeResult failure) is not { } stance)
+        {
+            return new AddAgentResult(failure, default);
+        }
+
+        int slot = _agents.Add(kind.Index, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[k.JointCount]);
+        return new AddAgentResult(RuntimeResult.Success, _agents.HandleOf(slot));
+    }
+
+    /// <summary>
+    /// Removes an agent at once, in whatever state (its pending request is dropped). The result's reason, and a
+    /// <see cref="JumpEventKind.Removed"/> event at the start of the next tick, say in which state it was removed.
+    /// </summary>
+    public RuntimeResult RemoveAgent(AgentHandle agent)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        int slot = agent.Index;
+        AgentState state = _agents.State[slot];
+        string reason = _agents.Path[slot] is { } path && state is AgentState.Takeoff or AgentState.Flight or AgentState.Landing
+            ? $"removed in mid-{(state == AgentState.Flight ? "flight" : state.ToString().ToLowerInvariant())} of jump {(_agents.Cursor[slot] >> 1) + 1} of {path.Count}"
+            : $"removed while {state.ToString().ToLowerInvariant()}";
+        _pending.Add(new JumpEvent(JumpEventKind.Removed, agent, Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        _agents.Remove(slot);
+        return new RuntimeResult(RuntimeStatus.Ok, reason);
+    }
+
+    /// <summary>True while <paramref name="agent"/> names a live agent of this world.</summary>
+    public bool IsValid(AgentHandle agent) => _agents.IsValid(agent);
+
+    /// <summary>
+    /// Sends the agent toward <paramref name="target"/> (a point on or near a surface, world metres). A target within
+    /// <see cref="WorldSettings.ReplanDistance"/> of the current path's keeps the path; otherwise the agent finishes
+    /// the jump it is in (or the stance it stands in) and plans anew from there. The outcome comes as a
+    /// <see cref="JumpEventKind.PathFound"/> or <see cref="JumpEventKind.PathFailed"/> event (a target off the level fails there, with the reason).
+    /// </summary>
+    public RuntimeResult SetTarget(AgentHandle agent, Vector3 target)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        if (!Finite(target))
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"the target {target} is not finite");
+        }
+
+        int slot = agent.Index;
+        bool had = _agents.HasTarget[slot];
+        Vector3 previous = _agents.Target[slot];
+        _agents.Target[slot] = target;
+        _agents.HasTarget[slot] = true;
+        if (_agents.Path[slot] is { } path)
+        {
+            bool near = Vector3.Distance(path.Target, target) <= Settings.ReplanDistance;
+            _agents.StopAtStance[slot] = !near;
+            if (near)
+            {
+                _agents.Target[slot] = path.Target;
+            }
+
+            return RuntimeResult.Success;
+        }
+
+        if (had && _agents.Request[slot] is not null && Vector3.Distance(previous, target) <= Settings.ReplanDistance)
+        {
+            _agents.Target[slot] = previous;
+            return RuntimeResult.Success; // the pending request already heads there
+        }
+
+        _agents.State[slot] = AgentState.Stance;
+        _requests.Request(slot);
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>Forgets the agent's target: it stops on the next stance of its path (or at once when standing).</summary>
+    public RuntimeResult ClearTarget(AgentHandle agent)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        int slot = agent.Index;
+        _agents.HasTarget[slot] = false;
+        _requests.Cancel(slot);
+        if (_agents.Path[slot] is not null)
+        {
+            _agents.StopAtStance[slot] = true;
+        }
+        else
+        {
+            _agents.State[slot] = AgentState.Idle;
+        }
+
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>
+    /// Moves the agent at once to stand at <paramref name="position"/> (pushed, teleported), dropping its path; with a
+    /// target it plans anew from there. Fails with <see cref="RuntimeStatus.InvalidPosition"/>, leaving the agent as it was, when it cannot stand there.
+    /// </summary>
+    public RuntimeResult Warp(AgentHandle agent, Vector3 position)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        if (!Finite(position))
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"the position {position} is not finite");
+        }
+
+        int slot = agent.Index;
+        if (Stand(_kinds[_agents.Kind[slot]], position, out RuntimeResult failure) is not { } stance)
+        {
+            return failure;
+        }
+
+        _requests.Cancel(slot);
+        _agents.Path[slot] = null;
+        _agents.StopAtStance[slot] = false;
+        _agents.Stance[slot] = stance.Node;
+        _agents.Root[slot] = stance.Node.Pose;
+        stance.Angles.CopyTo(_agents.Angles[slot], 0);
+        _agents.PoseDirty[slot] = true;
+        _agents.State[slot] = AgentState.Idle;
+        if (_agents.HasTarget[slot])
+        {
+            _agents.State[slot] = AgentState.Stance;
+            _requests.Request(slot);
+        }
+
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
+    public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        _agents.PoseEnabled[agent.Index] = enabled;
+        _agents.PoseDirty[agent.Index] = true;
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>
+    /// One tick: the events of the tick before are cleared; path requests are searched within the budget and paths
+    /// due are delivered; agents move along their paths; poses are filled. Never throws.
+    /// </summary>
+    /// <exception cref="ObjectDisposedException">The world was disposed.</exception>
+    public void Step()
+    {
+        ObjectDisposedException.ThrowIf(_disposed, this);
+        Tick++;
+        double time = Time;
+        _events.Clear();
+        foreach (ref readonly JumpEvent e in _pending.Events)
+        {
+            _events.Add(e);
+        }
+
+        _pending.Clear();
+        _requests.Update(Tick, time);
+        _locomotion.Update(Tick, time);
+        _pose.Update(time);
+    }
+
+    /// <summary>The agent's kind, or the default handle for an unknown agent.</summary>
+    public KindHandle GetKind(AgentHandle agent) => _agents.IsValid(agent) ? new KindHandle(_agents.Kind[agent.Index], true) : default;
+
+    /// <summary>What the agent does this tick (<see cref="AgentState.Idle"/> for an unknown agent).</summary>
+    public AgentState GetState(AgentHandle agent) => _agents.IsValid(agent) ? _agents.State[agent.Index] : AgentState.Idle;
+
+    /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight.</summary>
+    public RootPose GetRootPose(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Root[agent.Index] : default;
+
+    /// <summary>The stance the agent stands on, or <c>null</c> while it follows a path (or for an unknown agent).</summary>
+    public RoadmapNode? GetStance(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Stance[agent.Index] : null;
+
+    /// <summary>The agent's target, when it has one.</summary>
+    public Vector3? GetTarget(AgentHandle agent) => _agents.IsValid(agent) && _agents.HasTarget[agent.Index] ? _agents.Target[agent.Index] : null;
+
+    /// <summary>The path the agent follows, or <c>null</c>.</summary>
+    public AgentPath? GetPath(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Path[agent.Index] : null;
+
+    /// <summary>Seconds since the agent started following its path (its animation's clip time); zero without a path.</summary>
+    public float GetPathTime(AgentHandle agent) =>
+        _agents.IsValid(agent) && _agents.Path[agent.Index] is not null ? (float)(Time - _agents.PathStart[agent.Index]) : 0f;
+
+    /// <summary>True while the agent's request waits for a search or its path for its animation.</summary>
+    public bool IsPathPending(AgentHandle agent) => _agents.IsValid(agent) && _agents.Request[agent.Index] is not null;
+
+    /// <summary>
+    /// The jump the agent is in the air for now (takeoff, flight or landing), with its exact arc and world times of
+    /// takeoff and landing: the agent's root is <c>Arc.PositionAt((float)(Time − TakeoffTime))</c>. False when the
+    /// agent stands (or is unknown).
+    /// </summary>
+    public bool TryGetCurrentJump(AgentHandle agent, out JumpInfo jump)
+    {
+        jump = default;
+        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } path || (_agents.Cursor[agent.Index] & 1) == 0)
+        {
+            return false;
+        }
+
+        jump = Describe(agent.Index, path, _agents.Cursor[agent.Index] >> 1, inProgress: true);
+        return true;
+    }
+
+    /// <summary>
+    /// The next jump the agent will take off for (after the one it is in, if any), with its exact arc and the world
+    /// times of its takeoff and landing, known before it happens. False when no takeoff remains on the agent's path
+    /// (or it has none, or is unknown), or when the agent will stop before it (a new target, a cleared one).
+    /// </summary>
+    public bool TryGetNextJump(AgentHandle agent, out JumpInfo jump)
+    {
+        jump = default;
+        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } path || _agents.StopAtStance[agent.Index])
+        {
+            return false;
+        }
+
+        int next = (_agents.Cursor[agent.Index] + 1) >> 1;
+        if (next >= path.Count)
+        {
+            return false;
+        }
+
+        jump = Describe(agent.Index, path, next, inProgress: false);
+        return true;
+    }
+
+    private JumpInfo Describe(int slot, AgentPath path, int index, bool inProgress)
+    {
+        PathMove move = path.Moves[index];
+        double start = _agents.PathStart[slot];
+        return new JumpInfo(index, move.Arc, start + move.Start, start + move.End, inProgress);
+    }
+
+    /// <summary>
+    /// The agent's joint angles this tick, one per degree of freedom of its rig (radians, <see cref="Planner.Rigs.Rig.Dofs"/>
+    /// order); empty for an unknown agent. Filled by the pose system; read-only view, valid until the next tick.
+    /// </summary>
+    public ReadOnlySpan<float> GetJointAngles(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Angles[agent.Index] : [];
+
+    /// <summary>
+    /// The agent's joint rotations this tick, one per joint of its rig (<see cref="Planner.Rigs.Rig.Joints"/> order),
+    /// each local to its parent joint (the root joint's local to the root pose, <see cref="GetRootPose"/>); empty
+    /// for an unknown agent. Filled by the pose system; read-only view, valid until the next tick.
+    /// </summary>
+    public ReadOnlySpan<Quaternion> GetJointRotations(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Rotations[agent.Index] : [];
+
+    /// <summary>Copies the handles of the live agents, in slot order, into <paramref name="destination"/>; returns how many were written.</summary>
+    public int CopyAgents(Span<AgentHandle> destination)
+    {
+        int n = 0;
+        for (int slot = 0; slot < _agents.HighWater && n < destination.Length; slot++)
+        {
+            if (_agents.Alive[slot])
+            {
+                destination[n++] = _agents.HandleOf(slot);
+            }
+        }
+
+        return n;
+    }
+
+    /// <summary>Waits for background animations to end and stops the world.</summary>
+    public void Dispose()
+    {
+        if (!_disposed)
+        {
+            _disposed = true;
+            _requests.Dispose();
+        }
+    }
+
+    /// <summary>The stance an agent of <paramref name="kind"/> takes at <paramref name="point"/>, with its pose's joint angles.</summary>
+    private (RoadmapNode Node, float[] Angles)? Stand(CharacterKind kind, Vector3 point, out RuntimeResult failure)
+    {
+        failure = RuntimeResult.Success;
+        RoadmapNode node;
+        if (kind.Roadmap.FindNode(point, Settings.Tolerance) is int id &&
+            kind.Animator.CanStand(new PoseEvaluation(kind.Roadmap.Nodes[id].Pose, PoseValidity.Valid, kind.Roadmap.Nodes[id].Contacts, kind.Roadmap.Nodes[id].Cone)))
+        {
+            node = kind.Roadmap.Nodes[id];
+        }
+        else
+        {
+            EndpointPlacement placement = kind.Scene.Sampler.Place(point, Settings.Tolerance, kind.Animator.CanStand);
+            if (placement.Pose is not { } pose)
+            {
+                failure = new RuntimeResult(RuntimeStatus.InvalidPosition, placement.Failure("position", Settings.Tolerance));
+                return null;
+            }
+
+            node = new RoadmapNode(-1, pose.Pose, pose.Cone, pose.Contacts);
+        }
+
+        float[] angles = kind.Animator.Contacts.Generate(node.Pose, node.Contacts, node.Cone.Axis).Angles;
+        return (node, (float[])angles.Clone());
+    }
+
+    private static RuntimeResult Unknown(AgentHandle agent) => new(RuntimeStatus.UnknownAgent, $"{agent} is not an agent of this world (never added, or removed)");
+
+    private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+}

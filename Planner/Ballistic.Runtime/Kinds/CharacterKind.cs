@@ -1,0 +1,49 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Runtime.Kinds;
+
+/// <summary>
+/// One kind of character in a <see cref="JumpWorld"/>, like one agent size of a navigation map: the planning scene
+/// of its reduced model on the world's level, the frozen roadmap baked for it, and the whole-body animator of its
+/// rig. Agents of a kind share all three; each is thread-safe to read.
+/// </summary>
+public sealed class CharacterKind
+{
+    /// <summary>Creates a kind.</summary>
+    /// <param name="scene">The planning scene of the kind's reduced character on the world's level.</param>
+    /// <param name="roadmap">A roadmap baked for that scene (same level and character fingerprints; checked by <see cref="JumpWorld.AddKind"/>).</param>
+    /// <param name="animator">The whole-body animator of the character's rig on that scene.</param>
+    public CharacterKind(PlanningScene scene, Roadmap roadmap, JumpAnimator animator)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(roadmap);
+        ArgumentNullException.ThrowIfNull(animator);
+        Scene = scene;
+        Roadmap = roadmap;
+        Animator = animator;
+    }
+
+    /// <summary>The character's name.</summary>
+    public string Name => Scene.Character.Name;
+
+    /// <summary>The planning scene: level, reduced character, sampler and steering.</summary>
+    public PlanningScene Scene { get; }
+
+    /// <summary>The roadmap agents of this kind plan on.</summary>
+    public Roadmap Roadmap { get; }
+
+    /// <summary>The whole-body animator.</summary>
+    public JumpAnimator Animator { get; }
+
+    /// <summary>The rigged character.</summary>
+    public CharacterModel Model => Animator.Model;
+
+    /// <summary>Joints of the rig, one pose rotation each (<see cref="JumpWorld.GetJointRotations"/>).</summary>
+    public int JointCount => Model.Rig.Joints.Count;
+
+    /// <summary>Degrees of freedom of the rig, one angle each (<see cref="JumpWorld.GetJointAngles"/>).</summary>
+    public int DofCount => Model.Rig.DofCount;
+}

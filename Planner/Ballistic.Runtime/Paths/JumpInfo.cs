@@ -1,0 +1,29 @@
+using System.Numerics;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Runtime.Paths;
+
+/// <summary>
+/// A jump of an agent's path: the one it is in (<see cref="JumpWorld.TryGetCurrentJump"/>) or the next one, known
+/// before it happens (<see cref="JumpWorld.TryGetNextJump"/>): where it takes off and lands, how fast and when. Positions are the trunk centre in world metres; times are world
+/// seconds (<see cref="JumpWorld.Time"/>).
+/// </summary>
+/// <param name="Index">Index of the jump on the agent's path.</param>
+/// <param name="Arc">The arc the trunk centre will fly on (exactly).</param>
+/// <param name="TakeoffTime">World time of takeoff, seconds (in the past when the agent is already in the air).</param>
+/// <param name="LandingTime">World time of landing, seconds.</param>
+/// <param name="InProgress">True when the agent is already in this jump.</param>
+public readonly record struct JumpInfo(int Index, BallisticArc Arc, double TakeoffTime, double LandingTime, bool InProgress)
+{
+    /// <summary>Takeoff trunk centre, world metres.</summary>
+    public Vector3 From => Arc.Start;
+
+    /// <summary>Landing trunk centre, world metres.</summary>
+    public Vector3 To => Arc.End;
+
+    /// <summary>Takeoff velocity of the trunk centre, m/s.</summary>
+    public Vector3 Velocity => Arc.TakeoffVelocity;
+
+    /// <summary>Flight time, seconds.</summary>
+    public float FlightTime => Arc.FlightTime;
+}

@@ -1,0 +1,23 @@
+namespace Ballistic.Runtime;
+
+/// <summary>The outcome of a call on a <see cref="JumpWorld"/>: calls never throw for bad handles or bad input.</summary>
+public enum RuntimeStatus
+{
+    /// <summary>Done.</summary>
+    Ok,
+
+    /// <summary>The agent handle names no agent of this world (never assigned, or removed).</summary>
+    UnknownAgent,
+
+    /// <summary>The kind handle names no character kind of this world.</summary>
+    UnknownKind,
+
+    /// <summary>An argument is not usable (a non-finite coordinate, a null).</summary>
+    InvalidArgument,
+
+    /// <summary>No stance for the agent's character within tolerance of the point asked for.</summary>
+    InvalidPosition,
+
+    /// <summary>The roadmap was baked for another character, or the scene is of another level than the world's.</summary>
+    Mismatch,
+}

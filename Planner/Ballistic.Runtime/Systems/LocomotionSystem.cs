@@ -1,0 +1,130 @@
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Paths;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>
+/// Advances every agent along its path on the path's clock: takeoff, flight exactly on the jump's parabola,
+/// landing, the stance in which limbs re-step, and so on to the last landing. Emits each takeoff and landing as it
+/// is crossed (at its exact time, which may fall between ticks), then the arrival. An agent asked to stop (a new
+/// target, a cleared one) stops on the next stance of its path: the landing of the jump it is in, or, when standing
+/// between two jumps, before the next takeoff. Allocates nothing.
+/// </summary>
+internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, PathRequestSystem requests)
+{
+    public void Update(long tick, double time)
+    {
+        for (int slot = 0; slot < agents.HighWater; slot++)
+        {
+            if (!agents.Alive[slot] || agents.Path[slot] is not { } path)
+            {
+                continue;
+            }
+
+            try
+            {
+                Advance(slot, path, tick, time);
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // Never expected; the agent stops where its path began rather than letting the tick fail.
+                Stop(slot, path.Start, path.Start.Pose, 0f, path);
+                events.Add(new JumpEvent(JumpEventKind.PathFailed, agents.HandleOf(slot), tick, time, -1, agents.Root[slot].Position, path.Target, default, 0f, PlannerStatus.NoPath, $"internal error while moving: {e.Message}"));
+            }
+        }
+    }
+
+    private void Advance(int slot, AgentPath path, long tick, double time)
+    {
+        double start = agents.PathStart[slot];
+        float t = (float)(time - start);
+        AgentHandle handle = agents.HandleOf(slot);
+        int cursor = agents.Cursor[slot];
+        int boundaries = 2 * path.Count;
+        while (cursor < boundaries)
+        {
+            ref readonly PathMove move = ref path.Move(cursor >> 1);
+            bool landing = (cursor & 1) == 1;
+            float when = landing ? move.End : move.Start;
+            if (when > t)
+            {
+                break;
+            }
+
+            if (!landing && move.Index > 0 && agents.StopAtStance[slot])
+            {
+                // Standing between two jumps: stop before this takeoff.
+                agents.Cursor[slot] = cursor;
+                Stop(slot, move.From, move.Arc.Takeoff, move.Start, path);
+                return;
+            }
+
+            events.Add(new JumpEvent(landing ? JumpEventKind.Landed : JumpEventKind.JumpStarted, handle, tick, start + when, move.Index,
+                move.Arc.Start, move.Arc.End, move.Arc.TakeoffVelocity, move.Arc.FlightTime, PlannerStatus.Exact, null));
+            cursor++;
+            if (landing && agents.StopAtStance[slot] && cursor < boundaries)
+            {
+                agents.Cursor[slot] = cursor;
+                Stop(slot, move.To, move.Arc.Landing, move.End, path);
+                return;
+            }
+        }
+
+        agents.Cursor[slot] = cursor;
+        if (cursor == boundaries)
+        {
+            // Arrived; unless another target came during the last jump, which is then planned from here.
+            ref readonly PathMove last = ref path.Move(path.Count - 1);
+            if (!agents.StopAtStance[slot])
+            {
+                agents.HasTarget[slot] = false;
+                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + last.End, last.Index, last.Arc.End, path.Target, default, 0f, PlannerStatus.Exact, null));
+            }
+
+            Stop(slot, last.To, last.Arc.Landing, last.End, path);
+            return;
+        }
+
+        ref readonly PathMove current = ref path.Move(cursor >> 1);
+        if ((cursor & 1) == 1)
+        {
+            // In the air: exactly on the parabola.
+            agents.Root[slot] = current.Arc.PoseAt(FlightTime(time, start, current));
+            agents.State[slot] = t < current.TakeoffEnd ? AgentState.Takeoff : t >= current.LandingStart ? AgentState.Landing : AgentState.Flight;
+        }
+        else
+        {
+            // Between the landing of the previous jump and this takeoff (cursor > 0 here): the root holds still.
+            agents.Root[slot] = path.Move((cursor >> 1) - 1).Arc.Landing;
+            agents.State[slot] = AgentState.Stance;
+        }
+    }
+
+    /// <summary>
+    /// Seconds since the takeoff of <paramref name="move"/>, from world time: the one formula every reader of the
+    /// runtime's arcs uses (<see cref="Paths.JumpInfo.TakeoffTime"/> is <c>pathStart + move.Start</c>), so that an
+    /// agent's root equals <c>arc.PositionAt((float)(time − takeoffTime))</c> bit for bit.
+    /// </summary>
+    public static float FlightTime(double time, double pathStart, in PathMove move) => (float)(time - (pathStart + move.Start));
+
+    /// <summary>Ends the path on <paramref name="stance"/>, holding the animation's pose at path time <paramref name="at"/>; queues the next request if a target waits.</summary>
+    private void Stop(int slot, RoadmapNode stance, RootPose root, float at, AgentPath path)
+    {
+        agents.Path[slot] = null;
+        agents.Stance[slot] = stance;
+        agents.Root[slot] = root;
+        agents.StopAtStance[slot] = false;
+        path.Animation.Sample(at, agents.Angles[slot]);
+        agents.PoseDirty[slot] = true;
+        agents.State[slot] = AgentState.Idle;
+        if (agents.HasTarget[slot] && agents.Request[slot] is null)
+        {
+            agents.State[slot] = AgentState.Stance;
+            requests.Request(slot);
+        }
+    }
+}

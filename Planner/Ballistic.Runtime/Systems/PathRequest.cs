@@ -1,0 +1,41 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Agents;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>One agent's request for a path: searched on a tick within the budget, animated in the background, delivered on a fixed later tick.</summary>
+internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequence)
+{
+    public AgentHandle Agent { get; } = agent;
+
+    public Vector3 Target { get; } = target;
+
+    /// <summary>Order of the request: in-flight requests are delivered in this order.</summary>
+    public long Sequence { get; } = sequence;
+
+    /// <summary>Jumps (takeoff id, landing id) set aside because the body could not perform them, with why.</summary>
+    public HashSet<(int From, int To)> Rejected { get; } = [];
+
+    public List<RejectedJump> RejectedJumps { get; } = [];
+
+    /// <summary>Searches made so far.</summary>
+    public int Rounds { get; set; }
+
+    /// <summary>The stance searched from.</summary>
+    public RoadmapNode? Start { get; set; }
+
+    /// <summary>The path found by the last search.</summary>
+    public IReadOnlyList<Jump> Jumps { get; set; } = [];
+
+    /// <summary>The tick on which the path is delivered to its agent.</summary>
+    public long DueTick { get; set; }
+
+    /// <summary>The animation being solved in the background (null when solved on the tick).</summary>
+    public Task<JumpAnimation>? Job { get; set; }
+
+    /// <summary>The animation solved on the tick.</summary>
+    public JumpAnimation? Solved { get; set; }
+}

@@ -1,0 +1,251 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Paths;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>
+/// Serves path requests after Detour's path queue: a request waits in a first-come queue; each tick searches as many
+/// as the budget allows (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>);
+/// a found path is animated in the background and delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
+/// later. A path whose animation shows a jump the body cannot perform is searched again without that jump
+/// (lazy repair, up to <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed.
+/// </summary>
+internal sealed class PathRequestSystem : IDisposable
+{
+    private readonly WorldSettings _settings;
+    private readonly AgentStore _agents;
+    private readonly EventBuffer _events;
+    private readonly List<CharacterKind> _kinds;
+    private readonly List<RoadmapSearch> _searches;
+    private readonly LinkedList<PathRequest> _queue = new();
+    private readonly List<PathRequest> _inFlight = [];
+    private readonly TaskScheduler? _scheduler;
+    private readonly CancellationTokenSource _shutdown = new();
+    private long _sequence;
+
+    public PathRequestSystem(WorldSettings settings, AgentStore agents, EventBuffer events, List<CharacterKind> kinds, List<RoadmapSearch> searches)
+    {
+        _settings = settings;
+        _agents = agents;
+        _events = events;
+        _kinds = kinds;
+        _searches = searches;
+        if (settings.AnimationThreads > 0)
+        {
+            _scheduler = new ConcurrentExclusiveSchedulerPair(TaskScheduler.Default, settings.AnimationThreads).ConcurrentScheduler;
+        }
+    }
+
+    /// <summary>Requests waiting for a search.</summary>
+    public int Queued => _queue.Count;
+
+    /// <summary>Requests searched and being animated.</summary>
+    public int Animating => _inFlight.Count;
+
+    /// <summary>Searches made during the last tick.</summary>
+    public int LastTickSearches { get; private set; }
+
+    /// <summary>Work (expansions and placement costs) spent during the last tick.</summary>
+    public int LastTickWork { get; private set; }
+
+    /// <summary>Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one.</summary>
+    public void Request(int slot)
+    {
+        var request = new PathRequest(_agents.HandleOf(slot), _agents.Target[slot], _sequence++);
+        _agents.Request[slot] = request;
+        _queue.AddLast(request);
+    }
+
+    /// <summary>Forgets the pending request of the agent in <paramref name="slot"/> (its result, if any, is dropped on delivery).</summary>
+    public void Cancel(int slot) => _agents.Request[slot] = null;
+
+    public void Update(long tick, double time)
+    {
+        Search(tick, time);
+        Deliver(tick, time);
+    }
+
+    private void Search(long tick, double time)
+    {
+        int searches = 0;
+        int work = 0;
+        while (_queue.First is { } first && searches < _settings.MaxSearchesPerTick && work < _settings.MaxExpansionsPerTick)
+        {
+            PathRequest request = first.Value;
+            _queue.RemoveFirst();
+            int slot = request.Agent.Index;
+            if (!Current(request))
+            {
+                continue;
+            }
+
+            searches++;
+            try
+            {
+                work += SearchOne(slot, request, tick, time);
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                Fail(slot, request, PlannerStatus.NoPath, $"internal error while searching: {e.Message}", tick, time);
+            }
+        }
+
+        LastTickSearches = searches;
+        LastTickWork = work;
+    }
+
+    private int SearchOne(int slot, PathRequest request, long tick, double time)
+    {
+        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        request.Start = _agents.Stance[slot]!;
+        request.Rounds++;
+        PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Rejected, _settings.PlacementCost, out int work);
+        if (result.Status != PlannerStatus.Exact)
+        {
+            bool repaired = request.RejectedJumps.Count > 0;
+            Fail(slot, request, repaired ? PlannerStatus.AnimationFailed : result.Status,
+                repaired ? $"no path animates cleanly: {Jumps(request.RejectedJumps.Count)} set aside ({request.RejectedJumps[0].Reason}) and then {result.Reason}" : result.Reason,
+                tick, time);
+            return work;
+        }
+
+        if (result.Jumps.Count == 0)
+        {
+            _agents.Request[slot] = null;
+            _agents.State[slot] = AgentState.Idle;
+            _agents.HasTarget[slot] = false;
+            _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
+            return work;
+        }
+
+        request.Jumps = result.Jumps;
+        request.DueTick = tick + _settings.PathLatencyTicks;
+        IReadOnlyList<Jump> jumps = result.Jumps;
+        JumpAnimator animator = kind.Animator;
+        float frameRate = _settings.AnimationFrameRate;
+        if (_scheduler is null)
+        {
+            request.Solved = animator.Animate(jumps, frameRate);
+            request.Job = null;
+        }
+        else
+        {
+            request.Solved = null;
+            request.Job = Task.Factory.StartNew(() => animator.Animate(jumps, frameRate), _shutdown.Token, TaskCreationOptions.None, _scheduler);
+        }
+
+        _inFlight.Add(request);
+        _agents.State[slot] = AgentState.Stance;
+        return work;
+    }
+
+    private void Deliver(long tick, double time)
+    {
+        // In request order; a request re-queued for repair leaves the list, so walk it with an index.
+        int kept = 0;
+        for (int i = 0; i < _inFlight.Count; i++)
+        {
+            PathRequest request = _inFlight[i];
+            bool due = request.DueTick <= tick;
+            bool ready = request.Job is null || request.Job.IsCompleted;
+            if (!Current(request))
+            {
+                if (!ready)
+                {
+                    _inFlight[kept++] = request; // let the job finish before dropping it
+                }
+
+                continue;
+            }
+
+            if (!due || (!ready && !_settings.WaitForAnimation))
+            {
+                _inFlight[kept++] = request;
+                continue;
+            }
+
+            int slot = request.Agent.Index;
+            try
+            {
+                JumpAnimation animation = request.Solved ?? request.Job!.GetAwaiter().GetResult();
+                Complete(slot, request, animation, tick, time);
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                Fail(slot, request, PlannerStatus.AnimationFailed, $"internal error while animating: {e.Message}", tick, time);
+            }
+        }
+
+        _inFlight.RemoveRange(kept, _inFlight.Count - kept);
+    }
+
+    private void Complete(int slot, PathRequest request, JumpAnimation animation, long tick, double time)
+    {
+        if (animation.IsClean)
+        {
+            var path = new AgentPath(request.Target, request.Jumps, animation);
+            _agents.Request[slot] = null;
+            _agents.Stance[slot] = null;
+            _agents.Path[slot] = path;
+            _agents.PathStart[slot] = time;
+            _agents.Cursor[slot] = 0;
+            _agents.StopAtStance[slot] = false;
+            _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null));
+            return;
+        }
+
+        foreach (JumpProblem problem in animation.Problems)
+        {
+            Jump jump = request.Jumps[problem.Jump];
+            if (request.Rejected.Add((jump.Takeoff.Id, jump.Landing.Id)))
+            {
+                request.RejectedJumps.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
+            }
+        }
+
+        if (request.Rounds >= _settings.RepairRounds)
+        {
+            Fail(slot, request, PlannerStatus.AnimationFailed,
+                $"no path animated cleanly in {request.Rounds} searches: {Jumps(request.RejectedJumps.Count)} set aside ({request.RejectedJumps[0].Reason})", tick, time);
+            return;
+        }
+
+        _queue.AddFirst(request); // searched again first, on the next tick
+    }
+
+    private void Fail(int slot, PathRequest request, PlannerStatus status, string reason, long tick, double time)
+    {
+        _agents.Request[slot] = null;
+        _agents.State[slot] = AgentState.Idle;
+        _events.Add(new JumpEvent(JumpEventKind.PathFailed, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, status, reason));
+    }
+
+    private static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
+
+    /// <summary>True while the request is its agent's pending one (the agent was neither removed nor given another request).</summary>
+    private bool Current(PathRequest request) =>
+        _agents.IsValid(request.Agent) && ReferenceEquals(_agents.Request[request.Agent.Index], request);
+
+    public void Dispose()
+    {
+        _shutdown.Cancel();
+        foreach (PathRequest request in _inFlight)
+        {
+            try
+            {
+                request.Job?.Wait();
+            }
+            catch (AggregateException)
+            {
+                // cancelled or failed: nobody waits for it any more
+            }
+        }
+
+        _shutdown.Dispose();
+    }
+}

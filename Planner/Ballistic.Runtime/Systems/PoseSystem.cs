@@ -1,0 +1,45 @@
+using Ballistic.Planner.Rigs;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>
+/// Fills each agent's pose buffers from its whole-body animation at its path time: one angle per degree of freedom
+/// and one local rotation per joint (relative to the parent joint; the root joint's relative to the root pose). A
+/// standing agent keeps the pose it stopped in and costs nothing. Allocates nothing: the animation was solved when
+/// the path was found.
+/// </summary>
+internal sealed class PoseSystem(AgentStore agents, List<CharacterKind> kinds)
+{
+    public void Update(double time)
+    {
+        for (int slot = 0; slot < agents.HighWater; slot++)
+        {
+            if (!agents.Alive[slot] || !agents.PoseEnabled[slot])
+            {
+                continue;
+            }
+
+            float[] angles = agents.Angles[slot];
+            if (agents.Path[slot] is { } path)
+            {
+                float t = Math.Clamp((float)(time - agents.PathStart[slot]), 0f, path.Duration);
+                path.Animation.Sample(t, angles);
+            }
+            else if (!agents.PoseDirty[slot])
+            {
+                continue;
+            }
+
+            Rig rig = kinds[agents.Kind[slot]].Model.Rig;
+            Span<System.Numerics.Quaternion> rotations = agents.Rotations[slot];
+            for (int j = 0; j < rotations.Length; j++)
+            {
+                rotations[j] = rig.LocalRotation(j, angles);
+            }
+
+            agents.PoseDirty[slot] = false;
+        }
+    }
+}

@@ -1,0 +1,42 @@
+using System.Numerics;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>The searches of one character kind, on the tick thread: a path query over the kind's roadmap with reusable scratch.</summary>
+internal sealed class RoadmapSearch
+{
+    private readonly CharacterKind _kind;
+    private readonly PathQuery _query;
+    private readonly QuerySettings _settings;
+
+    public RoadmapSearch(CharacterKind kind, WorldSettings world)
+    {
+        _kind = kind;
+        _query = new PathQuery(kind.Scene, kind.Roadmap);
+        _settings = new QuerySettings { Tolerance = world.Tolerance, CanStand = kind.Animator.CanStand };
+    }
+
+    /// <summary>
+    /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/>; <paramref name="work"/> is the search's
+    /// cost in expansions (plus the placement cost when the target is not a roadmap node).
+    /// </summary>
+    public PlanResult Search(RoadmapNode start, Vector3 target, IReadOnlySet<(int From, int To)> rejected, int placementCost, out int work)
+    {
+        PlanResult result;
+        if (_kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal)
+        {
+            result = _query.Plan(start, _kind.Roadmap.Nodes[goal], _settings, rejected);
+            work = result.Expansions;
+        }
+        else
+        {
+            result = _query.Plan(start, target, _settings, rejected);
+            work = result.Expansions + placementCost;
+        }
+
+        return result;
+    }
+}

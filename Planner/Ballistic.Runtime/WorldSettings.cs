@@ -1,0 +1,81 @@
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Sampling;
+
+namespace Ballistic.Runtime;
+
+/// <summary>How a <see cref="JumpWorld"/> steps: tick rate, path-request budgets, background animation and replanning.</summary>
+public sealed record WorldSettings
+{
+    /// <summary>Ticks per second (Godot's physics rate is 60 by default).</summary>
+    public int TickRate { get; init; } = 60;
+
+    /// <summary>Path searches started at most per tick; requests beyond wait in the queue, first come first served.</summary>
+    public int MaxSearchesPerTick { get; init; } = 16;
+
+    /// <summary>
+    /// Search work allowed per tick, in A* node expansions (plus <see cref="PlacementCost"/> for each target that is
+    /// not a roadmap node). A search that starts always finishes; none starts once the tick's work reaches this.
+    /// </summary>
+    public int MaxExpansionsPerTick { get; init; } = 20_000;
+
+    /// <summary>Work charged to the tick's budget for placing a target that no roadmap node stands near (a few hundred pose evaluations), in expansions.</summary>
+    public int PlacementCost { get; init; } = 2_000;
+
+    /// <summary>
+    /// Ticks from a path's search to the tick its agent starts following it. Meanwhile the whole-body animation is
+    /// solved in the background; with <see cref="WaitForAnimation"/> the tick at the end waits for it if need be, so
+    /// that trajectories and events do not depend on thread count or machine speed.
+    /// </summary>
+    public int PathLatencyTicks { get; init; } = 6;
+
+    /// <summary>
+    /// True (deterministic, the default): a path starts exactly <see cref="PathLatencyTicks"/> after its search,
+    /// waiting for its animation if it is late. False: it starts at the first tick after that when its animation is
+    /// ready, never waiting (smoother on slow machines, not reproducible).
+    /// </summary>
+    public bool WaitForAnimation { get; init; } = true;
+
+    /// <summary>Threads solving animations in the background; 0 solves them on the tick (tests, single-threaded hosts).</summary>
+    public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
+
+    /// <summary>Searches per request at most: a jump the body cannot perform is set aside and the search runs again (<see cref="AnimatedPlanner"/>).</summary>
+    public int RepairRounds { get; init; } = AnimatedPlanner.DefaultRounds;
+
+    /// <summary>A new target farther than this (metres) from the current path's target makes the agent replan; nearer ones keep the path.</summary>
+    public float ReplanDistance { get; init; } = 0.5f;
+
+    /// <summary>Frames per second of the solved animations (the pose is interpolated between them).</summary>
+    public float AnimationFrameRate { get; init; } = 60f;
+
+    /// <summary>How close a stance's contacts must come to a target or spawn point.</summary>
+    public EndpointTolerance Tolerance { get; init; } = new();
+
+    /// <summary>Seconds per tick.</summary>
+    public double TickSeconds => 1.0 / TickRate;
+
+    /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>
+    public string? Problem()
+    {
+        if (TickRate is < 1 or > 10_000)
+        {
+            return $"TickRate must be 1–10000 ticks per second, not {TickRate}";
+        }
+
+        if (MaxSearchesPerTick < 1 || MaxExpansionsPerTick < 1 || PlacementCost < 0)
+        {
+            return "MaxSearchesPerTick and MaxExpansionsPerTick must be positive and PlacementCost not negative";
+        }
+
+        if (PathLatencyTicks < 0 || AnimationThreads < 0 || RepairRounds < 1)
+        {
+            return "PathLatencyTicks and AnimationThreads must not be negative and RepairRounds must be positive";
+        }
+
+        if (!(ReplanDistance >= 0f) || !float.IsFinite(ReplanDistance) || !(AnimationFrameRate > 0f) || !float.IsFinite(AnimationFrameRate))
+        {
+            return "ReplanDistance must be finite and not negative, and AnimationFrameRate finite and positive";
+        }
+
+        return null;
+    }
+}

@@ -1,0 +1,84 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Planner.Tests.Runtime;
+
+/// <summary>The bundled desert with a baked skeleton roadmap, shared by the runtime tests, and helpers to drive worlds.</summary>
+internal static class RuntimeWorlds
+{
+    private static readonly Lazy<CharacterKind> DesertSkeletonKind = new(() =>
+    {
+        Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 300, Threads = 2 }).Roadmap;
+        return new CharacterKind(scene, roadmap, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
+    });
+
+    /// <summary>The skeleton on the desert: scene, 300-node roadmap (seed 3) and animator.</summary>
+    public static CharacterKind DesertSkeleton => DesertSkeletonKind.Value;
+
+    /// <summary>A world on the desert with the skeleton kind added.</summary>
+    public static (JumpWorld World, KindHandle Kind) Desert(WorldSettings? settings = null)
+    {
+        var world = new JumpWorld(DesertSkeleton.Scene.Level, settings ?? new WorldSettings { AnimationThreads = 0 });
+        AddKindResult added = world.AddKind(DesertSkeleton);
+        Assert.That(added.Ok, Is.True, added.Result.ToString());
+        return (world, added.Kind);
+    }
+
+    /// <summary>The contact centre of a roadmap node: where a user would click to stand there.</summary>
+    public static Vector3 Point(RoadmapNode node)
+    {
+        Vector3 sum = Vector3.Zero;
+        foreach (Ballistic.Planner.Contacts.Contact c in node.Contacts)
+        {
+            sum += c.Position;
+        }
+
+        return sum / node.Contacts.Count;
+    }
+
+    /// <summary>Seeded pairs of roadmap nodes (start, goal) where the start reaches the goal, at least <paramref name="minDistance"/> apart.</summary>
+    public static List<(RoadmapNode From, RoadmapNode To)> ConnectedPairs(Roadmap roadmap, int count, int seed, float minDistance = 4f)
+    {
+        var random = new Random(seed);
+        var pairs = new List<(RoadmapNode, RoadmapNode)>();
+        for (int attempt = 0; attempt < 10_000 && pairs.Count < count; attempt++)
+        {
+            RoadmapNode a = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            RoadmapNode b = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            if (Vector3.Distance(a.Pose.Position, b.Pose.Position) >= minDistance && roadmap.Reaches(a.Id, b.Id))
+            {
+                pairs.Add((a, b));
+            }
+        }
+
+        return pairs;
+    }
+
+    /// <summary>Steps until <paramref name="done"/> holds after a tick or <paramref name="maxTicks"/> pass; returns every event seen.</summary>
+    public static List<JumpEvent> Run(JumpWorld world, int maxTicks, Func<JumpWorld, IReadOnlyList<JumpEvent>, bool>? done = null, Action<JumpWorld>? afterTick = null)
+    {
+        var seen = new List<JumpEvent>();
+        for (int i = 0; i < maxTicks; i++)
+        {
+            world.Step();
+            seen.AddRange(world.Events.ToArray());
+            afterTick?.Invoke(world);
+            if (done?.Invoke(world, seen) == true)
+            {
+                break;
+            }
+        }
+
+        return seen;
+    }
+}
