@@ -315,6 +315,9 @@ public sealed class JumpWorld : IDisposable
         _pose.Update(time);
     }
 
+    /// <summary>Runs the pose system alone at the current time (benchmarks).</summary>
+    internal void FillPoses() => _pose.Update(Time);
+
     /// <summary>The agent's kind, or the default handle for an unknown agent.</summary>
     public KindHandle GetKind(AgentHandle agent) => _agents.IsValid(agent) ? new KindHandle(_agents.Kind[agent.Index], true) : default;
 
