@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Characters;

@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Rigs.Procedural;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Security.Cryptography;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;

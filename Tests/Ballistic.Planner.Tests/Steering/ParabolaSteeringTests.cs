@@ -1,5 +1,4 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Steering;
