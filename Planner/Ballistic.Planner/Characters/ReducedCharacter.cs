@@ -3,7 +3,6 @@ using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
 using Ballistic.Planner.Geometry;
-using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Characters;
 

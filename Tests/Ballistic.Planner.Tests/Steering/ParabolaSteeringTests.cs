@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Steering;
