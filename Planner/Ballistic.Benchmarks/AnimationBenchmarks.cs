@@ -4,6 +4,7 @@ using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using BenchmarkDotNet.Attributes;
 
 namespace Ballistic.Benchmarks;

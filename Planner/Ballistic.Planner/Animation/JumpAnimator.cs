@@ -2,8 +2,8 @@ using System.Numerics;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Animation;
