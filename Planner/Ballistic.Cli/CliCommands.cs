@@ -1,7 +1,8 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Numerics;
-using Ballistic.Planner.Animation;
+using Ballistic.Authoring.Animation;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;

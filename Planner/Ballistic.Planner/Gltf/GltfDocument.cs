@@ -1,7 +1,6 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Numerics;
-using System.Text;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.IO;
@@ -925,9 +924,6 @@ public sealed class GltfDocument
     };
 
     private static string? Text(JsonNode? node) => node is JsonValue value && value.GetValueKind() == JsonValueKind.String ? value.GetValue<string>() : null;
-
-    /// <summary>Encodes <paramref name="text"/> as UTF-8 without a byte order mark (for GLB JSON chunks).</summary>
-    internal static byte[] Utf8(string text) => new UTF8Encoding(false).GetBytes(text);
 
     private sealed record SparseLayout(int Count, int IndexType, ReadOnlyMemory<byte> Indices, long IndexStart, ReadOnlyMemory<byte> Values, long ValueStart);
 

@@ -1,4 +1,4 @@
-using Ballistic.Planner.Levels;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
