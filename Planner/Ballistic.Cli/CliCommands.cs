@@ -6,7 +6,6 @@ using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Reports;
 using Ballistic.Planner.Rigs;

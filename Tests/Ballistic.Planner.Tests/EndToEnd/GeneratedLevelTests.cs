@@ -1,5 +1,4 @@
 using Ballistic.Authoring.Levels;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
