@@ -1,6 +1,6 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;

@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Security.Cryptography;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
