@@ -4,11 +4,11 @@ using System.Numerics;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
+using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Reports;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
