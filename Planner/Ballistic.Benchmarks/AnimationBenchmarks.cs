@@ -1,9 +1,10 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using BenchmarkDotNet.Attributes;
 
 namespace Ballistic.Benchmarks;

@@ -1,7 +1,7 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Authoring.Rigs;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Rigs.Procedural;
 using BenchmarkDotNet.Attributes;
 
 namespace Ballistic.Benchmarks;

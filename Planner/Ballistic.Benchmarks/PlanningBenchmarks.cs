@@ -1,7 +1,7 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Geometry;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;

@@ -1,8 +1,8 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;

@@ -1,13 +1,14 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Numerics;
-using Ballistic.Planner.Animation;
+using Ballistic.Authoring.Animation;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
+using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Reports;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 

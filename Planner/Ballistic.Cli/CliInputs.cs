@@ -1,9 +1,10 @@
 using System.Globalization;
 using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Levels;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Sampling;
 

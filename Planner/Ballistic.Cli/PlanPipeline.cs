@@ -1,11 +1,12 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Authoring.Animation;
+using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
-using Ballistic.Planner.Reports;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;

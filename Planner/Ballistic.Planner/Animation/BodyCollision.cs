@@ -2,7 +2,6 @@ using System.Numerics;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Animation;
 
@@ -184,7 +183,7 @@ public sealed class BodyCollision
             return false;
         }
 
-        Quaternion rotation = TrunkSampler.AlignUp(segment / (2f * half));
+        Quaternion rotation = Rotations.AlignUp(segment / (2f * half));
         return _bvh.Overlaps(new OrientedBox((a + b) * 0.5f, new Vector3(thickness, half, thickness), rotation));
     }
 

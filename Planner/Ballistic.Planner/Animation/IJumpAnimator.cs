@@ -1,5 +1,5 @@
 using Ballistic.Planner.Contacts;
-using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Animation;
 

@@ -1,9 +1,9 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Animation;

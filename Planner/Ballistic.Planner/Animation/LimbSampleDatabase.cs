@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 
 namespace Ballistic.Planner.Animation;

@@ -2,7 +2,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
-using Ballistic.Planner.Steering;
+using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Characters;
 

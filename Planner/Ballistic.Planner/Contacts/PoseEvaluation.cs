@@ -1,4 +1,4 @@
-using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Contacts;
 

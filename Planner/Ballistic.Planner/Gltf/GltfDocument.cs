@@ -1,7 +1,6 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Numerics;
-using System.Text;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.IO;
@@ -65,7 +64,7 @@ public sealed class GltfDocument
     {
         ArgumentNullException.ThrowIfNull(path);
         options ??= GltfLoadOptions.Default;
-        byte[] bytes = InputFile.Read(path, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{Printable(path)} {problem}.", e!));
+        byte[] bytes = InputFile.Read(path, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{MessageText.Printable(path)} {problem}.", e!));
         string? directory;
         try
         {
@@ -73,7 +72,7 @@ public sealed class GltfDocument
         }
         catch (Exception e) when (e is ArgumentException or IOException or NotSupportedException)
         {
-            throw new GltfException($"{Printable(path)} cannot be read: {Printable(e.Message.TrimEnd('.'))}.", e);
+            throw new GltfException($"{MessageText.Printable(path)} cannot be read: {MessageText.Printable(e.Message.TrimEnd('.'))}.", e);
         }
 
         return Parse(bytes, path, directory, options);
@@ -306,16 +305,16 @@ public sealed class GltfDocument
             throw new GltfException($"{Name}: image {index} refers to the external file '{uri}', which cannot be resolved here.");
         }
 
-        string path = ReferencedFile.Resolve(Directory, uri, problem => new GltfException($"{Name}: image {index}'s URI '{Printable(uri)}' {problem}."));
+        string path = ReferencedFile.Resolve(Directory, uri, problem => new GltfException($"{Name}: image {index}'s URI '{MessageText.Printable(uri)}' {problem}."));
         mime ??= Path.GetExtension(path).ToLowerInvariant() switch
         {
             ".png" => "image/png",
             ".jpg" or ".jpeg" => "image/jpeg",
             ".webp" => "image/webp",
             ".ktx2" => "image/ktx2",
-            _ => throw new GltfException($"{Name}: image {index} ('{Printable(uri)}') has no mimeType and an unknown file extension."),
+            _ => throw new GltfException($"{Name}: image {index} ('{MessageText.Printable(uri)}') has no mimeType and an unknown file extension."),
         };
-        byte[] bytes = InputFile.Read(path, Options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{Name}: image {index}'s file '{Printable(uri)}' {problem}.", e!));
+        byte[] bytes = InputFile.Read(path, Options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{Name}: image {index}'s file '{MessageText.Printable(uri)}' {problem}.", e!));
         return (bytes, mime);
 
         static string MimeOf(string uri)
@@ -409,29 +408,12 @@ public sealed class GltfDocument
             JsonArray a => a.Count == 0 ? "an empty list" : $"a list of {a.Count}",
             JsonValue v => v.GetValueKind() switch
             {
-                JsonValueKind.String => $"the string {Clip(Printable(v.ToJsonString()))}",
+                JsonValueKind.String => $"the string {Clip(MessageText.Printable(v.ToJsonString()))}",
                 JsonValueKind.Number => $"the number {Clip(v.ToJsonString())}",
                 _ => v.ToJsonString(),
             },
             _ => "an unknown value",
         };
-    }
-
-    /// <summary>The text with control characters escaped, for messages.</summary>
-    internal static string Printable(string text)
-    {
-        if (!text.Any(char.IsControl))
-        {
-            return text;
-        }
-
-        var builder = new StringBuilder(text.Length + 8);
-        foreach (char c in text)
-        {
-            builder.Append(char.IsControl(c) ? $"\\u{(int)c:x4}" : c);
-        }
-
-        return builder.ToString();
     }
 
     private static (ReadOnlyMemory<byte> Json, ReadOnlyMemory<byte>? Bin) Chunks(byte[] bytes, string name)
@@ -524,7 +506,7 @@ public sealed class GltfDocument
         }
         catch (JsonException e)
         {
-            throw new GltfException($"{name} is not a glTF file: {Printable(e.Message.TrimEnd('.'))}.", e);
+            throw new GltfException($"{name} is not a glTF file: {MessageText.Printable(e.Message.TrimEnd('.'))}.", e);
         }
     }
 
@@ -555,7 +537,7 @@ public sealed class GltfDocument
                 string key = Valid(() => property.Name);
                 if (!seen.Add(key))
                 {
-                    throw new GltfException($"{name}: the key '{Printable(key)}' appears twice in {Where()}.");
+                    throw new GltfException($"{name}: the key '{MessageText.Printable(key)}' appears twice in {Where()}.");
                 }
 
                 path.Add(path.Count == 0 ? key : "." + key);
@@ -600,7 +582,7 @@ public sealed class GltfDocument
 
         if (!version.StartsWith("2.", StringComparison.Ordinal))
         {
-            throw new GltfException($"{name} is not a glTF 2.0 asset (asset.version is '{Printable(version)}').");
+            throw new GltfException($"{name} is not a glTF 2.0 asset (asset.version is '{MessageText.Printable(version)}').");
         }
 
         if (root["extensionsRequired"] is JsonNode requiredNode)
@@ -615,7 +597,7 @@ public sealed class GltfDocument
                 string id = Text(required[i]) ?? throw new GltfException($"{name}: extensionsRequired item {i} is {Describe(required[i])}, not an extension name.");
                 if (!SupportedRequiredExtensions.Contains(id))
                 {
-                    throw new GltfException($"{name} requires the glTF extension {Printable(id)}, which Ballistic cannot read; export it without compression.");
+                    throw new GltfException($"{name} requires the glTF extension {MessageText.Printable(id)}, which Ballistic cannot read; export it without compression.");
                 }
             }
         }
@@ -659,11 +641,11 @@ public sealed class GltfDocument
             {
                 if (directory is null)
                 {
-                    throw new GltfException($"{name}: buffer {index} refers to the external file '{Printable(uri)}', which cannot be resolved here.");
+                    throw new GltfException($"{name}: buffer {index} refers to the external file '{MessageText.Printable(uri)}', which cannot be resolved here.");
                 }
 
-                string path = ReferencedFile.Resolve(directory, uri, problem => new GltfException($"{name}: buffer {index}'s URI '{Printable(uri)}' {problem}."));
-                data = InputFile.Read(path, Math.Max(budget, 0), $"what is left of the limit of {maxBytes} with the glTF and its other buffers, GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{name}: buffer {index}'s file '{Printable(uri)}' {problem}.", e!));
+                string path = ReferencedFile.Resolve(directory, uri, problem => new GltfException($"{name}: buffer {index}'s URI '{MessageText.Printable(uri)}' {problem}."));
+                data = InputFile.Read(path, Math.Max(budget, 0), $"what is left of the limit of {maxBytes} with the glTF and its other buffers, GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{name}: buffer {index}'s file '{MessageText.Printable(uri)}' {problem}.", e!));
             }
         }
 
@@ -708,7 +690,7 @@ public sealed class GltfDocument
         int componentType = RequiredIndex(accessor, "componentType", what);
         int size = ComponentSize(componentType) ?? throw new GltfException($"{Name}: {what} has the unknown componentType {componentType}.");
         string? type = OptionalText(accessor, "type", what);
-        int components = ComponentsOf(type) ?? throw new GltfException($"{Name}: {what} has {(type is null ? "no type" : $"the unknown type '{Printable(type)}'")}; expected SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4.");
+        int components = ComponentsOf(type) ?? throw new GltfException($"{Name}: {what} has {(type is null ? "no type" : $"the unknown type '{MessageText.Printable(type)}'")}; expected SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4.");
         bool normalized = accessor["normalized"] switch
         {
             null => false,
@@ -887,7 +869,7 @@ public sealed class GltfDocument
     {
         if (Text(node["name"]) is string name)
         {
-            return $"node '{Printable(name)}'";
+            return $"node '{MessageText.Printable(name)}'";
         }
 
         JsonArray nodes = Array("nodes");
@@ -942,9 +924,6 @@ public sealed class GltfDocument
     };
 
     private static string? Text(JsonNode? node) => node is JsonValue value && value.GetValueKind() == JsonValueKind.String ? value.GetValue<string>() : null;
-
-    /// <summary>Encodes <paramref name="text"/> as UTF-8 without a byte order mark (for GLB JSON chunks).</summary>
-    internal static byte[] Utf8(string text) => new UTF8Encoding(false).GetBytes(text);
 
     private sealed record SparseLayout(int Count, int IndexType, ReadOnlyMemory<byte> Indices, long IndexStart, ReadOnlyMemory<byte> Values, long ValueStart);
 

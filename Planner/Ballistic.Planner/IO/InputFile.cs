@@ -1,7 +1,6 @@
 using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text;
-using Ballistic.Planner.Gltf;
 
 namespace Ballistic.Planner.IO;
 
@@ -77,7 +76,7 @@ internal static class InputFile
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw fail($"cannot be read: {GltfDocument.Printable(e.Message.TrimEnd('.'))}", e);
+            throw fail($"cannot be read: {MessageText.Printable(e.Message.TrimEnd('.'))}", e);
         }
     }
 

@@ -5,6 +5,7 @@ using System.Text.Json;
 using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
 using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Levels;
 
@@ -30,12 +31,12 @@ public static partial class GltfLevelLoader
         }
         catch (GltfException e)
         {
-            throw new LevelException(GltfDocument.Printable(e.Message), e);
+            throw new LevelException(MessageText.Printable(e.Message), e);
         }
         catch (LevelException e) when (e.Message.Any(char.IsControl))
         {
             // A mesh or material name from the file may hold a line break: the message stays one line.
-            throw new LevelException(GltfDocument.Printable(e.Message), e);
+            throw new LevelException(MessageText.Printable(e.Message), e);
         }
     }
 
@@ -91,12 +92,12 @@ public static partial class GltfLevelLoader
                 JsonArray primitives = mesh["primitives"] switch
                 {
                     JsonArray list => list,
-                    null => throw new GltfException($"{document.Name}: mesh {m} ('{GltfDocument.Printable(meshName)}') has no primitives."),
-                    JsonNode other => throw new GltfException($"{document.Name}: mesh {m} ('{GltfDocument.Printable(meshName)}') has primitives {GltfDocument.Describe(other)}, not a list."),
+                    null => throw new GltfException($"{document.Name}: mesh {m} ('{MessageText.Printable(meshName)}') has no primitives."),
+                    JsonNode other => throw new GltfException($"{document.Name}: mesh {m} ('{MessageText.Printable(meshName)}') has primitives {GltfDocument.Describe(other)}, not a list."),
                 };
                 for (int p = 0; p < primitives.Count; p++)
                 {
-                    string what = $"primitive {p} of mesh {m} ('{GltfDocument.Printable(meshName)}')";
+                    string what = $"primitive {p} of mesh {m} ('{MessageText.Printable(meshName)}')";
                     JsonObject primitive = primitives[p] as JsonObject ?? throw new GltfException($"{document.Name}: {what} is {GltfDocument.Describe(primitives[p])}, not an object.");
                     AddPrimitive(builder, document, primitive, what, $"{meshName}[{p}]", world, materials, defaultMaterial, counts);
                 }
@@ -204,7 +205,7 @@ public static partial class GltfLevelLoader
         {
             friction = extra is JsonValue v && v.GetValueKind() == JsonValueKind.Number
                 ? (float)v.GetValue<double>()
-                : throw new GltfException($"{document.Name}: material '{GltfDocument.Printable(name)}' sets extras.friction to {GltfDocument.Describe(extra)}, not a number.");
+                : throw new GltfException($"{document.Name}: material '{MessageText.Printable(name)}' sets extras.friction to {GltfDocument.Describe(extra)}, not a number.");
         }
         else if (FrictionInName().Match(name) is { Success: true } match)
         {
@@ -213,7 +214,7 @@ public static partial class GltfLevelLoader
 
         if (friction is float f && (!(f >= 0f) || !float.IsFinite(f)))
         {
-            throw new GltfException($"{document.Name}: material '{GltfDocument.Printable(name)}' sets friction {f.ToString(CultureInfo.InvariantCulture)}; friction must be a finite number ≥ 0.");
+            throw new GltfException($"{document.Name}: material '{MessageText.Printable(name)}' sets friction {f.ToString(CultureInfo.InvariantCulture)}; friction must be a finite number ≥ 0.");
         }
 
         return new LevelMaterial(name, friction);

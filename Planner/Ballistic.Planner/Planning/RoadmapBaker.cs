@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;

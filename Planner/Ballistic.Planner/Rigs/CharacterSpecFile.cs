@@ -4,6 +4,7 @@ using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 
@@ -47,7 +48,7 @@ public static class CharacterSpecFile
         catch (RigException e) when (e.Message.Any(char.IsControl))
         {
             // A limb, bone or node name from the files may hold a line break: the message stays one line.
-            throw new RigException(GltfDocument.Printable(e.Message), e);
+            throw new RigException(MessageText.Printable(e.Message), e);
         }
     }
 

@@ -2,7 +2,7 @@ using System.Numerics;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Rigs;
 
@@ -81,7 +81,7 @@ internal sealed class CharacterSpecReader
         }
         catch (JsonException e)
         {
-            throw new RigException($"{file} is not valid JSON: {GltfDocument.Printable(e.Message)}", e);
+            throw new RigException($"{file} is not valid JSON: {MessageText.Printable(e.Message)}", e);
         }
 
         return reader.Read(root);

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 
 namespace Ballistic.Planner.Rigs;
@@ -165,7 +166,7 @@ internal sealed class GltfSkeleton
                 throw new RigException($"{file}: bone '{NodeName(node)}' with its parents' transforms is not finite (a translation or scale too large); apply the transforms before exporting.");
             }
 
-            if (!TryRigid(world[node], out _, out Quaternion rotation))
+            if (!Rotations.TryRigid(world[node], out _, out Quaternion rotation))
             {
                 throw new RigException($"{file}: bone '{NodeName(node)}' with its parents is not a rotation with a uniform scale (sheared); apply the transforms before exporting.");
             }
@@ -202,38 +203,6 @@ internal sealed class GltfSkeleton
 
         List<Vector3>[] points = SkinnedPoints(document, world, index, axes, positions, rotations);
         return new GltfSkeleton([.. order], [.. order.Select(NodeName)], parents, offsets, rests, positions, rotations, points);
-    }
-
-    /// <summary>
-    /// Splits a transform into a uniform scale and a rotation (row-vector matrix); false when it is sheared,
-    /// scaled non-uniformly, mirrored or degenerate.
-    /// </summary>
-    internal static bool TryRigid(Matrix4x4 m, out float scale, out Quaternion rotation)
-    {
-        var x = new Vector3(m.M11, m.M12, m.M13);
-        var y = new Vector3(m.M21, m.M22, m.M23);
-        var z = new Vector3(m.M31, m.M32, m.M33);
-        scale = (x.Length() + y.Length() + z.Length()) / 3f;
-        rotation = Quaternion.Identity;
-        if (!(scale > 1e-8f) || !float.IsFinite(scale))
-        {
-            return false;
-        }
-
-        float tolerance = 1e-3f;
-        if (MathF.Abs(x.Length() - scale) > tolerance * scale || MathF.Abs(y.Length() - scale) > tolerance * scale || MathF.Abs(z.Length() - scale) > tolerance * scale
-            || MathF.Abs(Vector3.Dot(x, y)) > tolerance * scale * scale || MathF.Abs(Vector3.Dot(y, z)) > tolerance * scale * scale || MathF.Abs(Vector3.Dot(x, z)) > tolerance * scale * scale
-            || Vector3.Dot(Vector3.Cross(x, y), z) <= 0f)
-        {
-            return false;
-        }
-
-        x /= scale;
-        y /= scale;
-        z /= scale;
-        var pure = new Matrix4x4(x.X, x.Y, x.Z, 0f, y.X, y.Y, y.Z, 0f, z.X, z.Y, z.Z, 0f, 0f, 0f, 0f, 1f);
-        rotation = Quaternion.Normalize(Quaternion.CreateFromRotationMatrix(pure));
-        return true;
     }
 
     /// <summary>The skin's joint nodes.</summary>
@@ -317,7 +286,7 @@ internal sealed class GltfSkeleton
                 throw new RigException($"{document.Name}: {Which()} has a scale or translation beyond ±1e6; apply the transforms before exporting.");
             }
 
-            if (TryRigid(local, out _, out _))
+            if (Rotations.TryRigid(local, out _, out _))
             {
                 continue;
             }

@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using MathNet.Numerics.LinearAlgebra;
 using DenseVector = MathNet.Numerics.LinearAlgebra.Vector<double>;
 

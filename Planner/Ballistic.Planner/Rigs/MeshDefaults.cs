@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Rigs;
 

@@ -4,6 +4,7 @@ using System.Security.Cryptography;
 using System.Text;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Steering;
 

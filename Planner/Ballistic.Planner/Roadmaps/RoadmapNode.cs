@@ -1,5 +1,5 @@
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Roadmaps;
 

@@ -261,7 +261,7 @@ public sealed class TrunkSampler
     private PoseEvaluation? TryPose(int triangle, Vector3 surfacePoint, float yaw, float lift)
     {
         Vector3 normal = _level.Triangles[triangle].Normal;
-        Quaternion rotation = AlignUp(normal) * Quaternion.CreateFromAxisAngle(Vector3.UnitY, yaw);
+        Quaternion rotation = Rotations.AlignUp(normal) * Quaternion.CreateFromAxisAngle(Vector3.UnitY, yaw);
         Vector3 position = surfacePoint + (normal * lift);
 
         var hits = new List<int>();
@@ -311,24 +311,6 @@ public sealed class TrunkSampler
         }
 
         return false;
-    }
-
-    /// <summary>The shortest rotation taking +Y to <paramref name="up"/>.</summary>
-    internal static Quaternion AlignUp(Vector3 up)
-    {
-        float dot = Math.Clamp(up.Y, -1f, 1f);
-        if (dot > 0.999999f)
-        {
-            return Quaternion.Identity;
-        }
-
-        if (dot < -0.999999f)
-        {
-            return Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI);
-        }
-
-        Vector3 axis = Vector3.Normalize(Vector3.Cross(Vector3.UnitY, up));
-        return Quaternion.CreateFromAxisAngle(axis, MathF.Acos(dot));
     }
 
     private static int PickByArea(Random random, int[] candidates, double[] cumulative)

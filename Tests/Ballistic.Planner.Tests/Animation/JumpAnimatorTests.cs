@@ -1,7 +1,8 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Animation;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;

@@ -1,7 +1,9 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;

@@ -1,3 +1,4 @@
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
 
 namespace Ballistic.Planner.Tests.Characters;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;

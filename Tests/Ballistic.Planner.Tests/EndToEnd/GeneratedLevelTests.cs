@@ -1,7 +1,7 @@
-using Ballistic.Planner.Levels;
-using Ballistic.Planner.Levels.Generation;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;

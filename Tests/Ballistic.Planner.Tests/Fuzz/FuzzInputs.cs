@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;

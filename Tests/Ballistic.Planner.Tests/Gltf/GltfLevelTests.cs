@@ -1,6 +1,8 @@
 using System.Numerics;
 using System.Text;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Gltf;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
 

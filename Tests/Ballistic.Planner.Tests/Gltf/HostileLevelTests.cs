@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using System.Diagnostics;
 using System.Text;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Tests.Support;

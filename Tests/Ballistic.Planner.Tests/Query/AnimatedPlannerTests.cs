@@ -1,11 +1,12 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
-using Ballistic.Planner.Reports;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Query;

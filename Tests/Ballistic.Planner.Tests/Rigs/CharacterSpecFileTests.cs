@@ -1,7 +1,10 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Animation;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;

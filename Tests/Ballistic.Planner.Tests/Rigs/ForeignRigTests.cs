@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
+using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;

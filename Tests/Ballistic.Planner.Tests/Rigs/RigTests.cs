@@ -1,7 +1,8 @@
 using System.Numerics;
+using Ballistic.Authoring.Rigs;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Rigs.Procedural;
 
 namespace Ballistic.Planner.Tests.Rigs;
 

@@ -1,4 +1,4 @@
-using Ballistic.Planner.Characters;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Planning;

@@ -1,6 +1,8 @@
 using System.Numerics;
 using System.Security.Cryptography;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;

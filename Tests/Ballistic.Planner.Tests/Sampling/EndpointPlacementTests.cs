@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;

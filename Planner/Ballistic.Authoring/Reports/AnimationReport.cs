@@ -1,6 +1,6 @@
 using Ballistic.Planner.Animation;
 
-namespace Ballistic.Planner.Reports;
+namespace Ballistic.Authoring.Reports;
 
 /// <summary>The animation part of a plan report.</summary>
 /// <param name="GlbPath">The animated GLB, relative to the report's folder.</param>

@@ -1,4 +1,4 @@
-namespace Ballistic.Planner.Levels.Generation;
+namespace Ballistic.Authoring.Levels;
 
 /// <summary>Deterministic smooth value noise for the level generators (no dependence on the runtime's Random).</summary>
 internal static class Noise

@@ -3,7 +3,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Sampling;
 
-namespace Ballistic.Planner.Reports;
+namespace Ballistic.Authoring.Reports;
 
 /// <summary>Everything a plan report holds: the request, the roadmap it used and the result.</summary>
 /// <param name="LevelPath">The level file, as given.</param>

@@ -9,7 +9,7 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 
-namespace Ballistic.Planner.Reports;
+namespace Ballistic.Authoring.Reports;
 
 /// <summary>
 /// Draws a plan as an SVG page: a top view (the level as a shaded height map seen from +Y, the roadmap's nodes and

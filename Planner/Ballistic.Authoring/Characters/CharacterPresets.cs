@@ -1,7 +1,8 @@
+using Ballistic.Authoring.Rigs;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Rigs.Procedural;
 
-namespace Ballistic.Planner.Characters;
+namespace Ballistic.Authoring.Characters;
 
 /// <summary>
 /// The reduced characters of the original scenarios (planning notes §7): friction, speed limits, limbs and how

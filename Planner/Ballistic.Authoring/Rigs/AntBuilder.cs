@@ -1,7 +1,8 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
 
-namespace Ballistic.Planner.Rigs.Procedural;
+namespace Ballistic.Authoring.Rigs;
 
 /// <summary>
 /// A 60 cm ant: thorax, head and abdomen, six legs of coxa (yaw and lift), femur-tibia knee and tarsus: 4 degrees of

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace Ballistic.Planner.Characters;
+namespace Ballistic.Planner.Geometry;
 
 /// <summary>
 /// A configuration of the character's root, q⁰ in the paper: the trunk box centre in world space (metres, Y up)

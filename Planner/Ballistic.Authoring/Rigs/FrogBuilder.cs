@@ -1,7 +1,8 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
 
-namespace Ballistic.Planner.Rigs.Procedural;
+namespace Ballistic.Authoring.Rigs;
 
 /// <summary>
 /// A 35 cm frog: body and head, long folded hind legs (hip 3, knee 1, ankle 1, toes 1) and short fore legs

@@ -1,6 +1,7 @@
 using System.Numerics;
+using Ballistic.Planner.Levels;
 
-namespace Ballistic.Planner.Levels.Generation;
+namespace Ballistic.Authoring.Levels;
 
 /// <summary>
 /// Deterministic procedural levels after the paper's scenarios: a dune desert (near the paper's 47,733 triangles),

@@ -1,11 +1,13 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
-using Ballistic.Planner.Characters;
+using Ballistic.Authoring.Gltf;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Rigs;
 
-namespace Ballistic.Planner.Animation;
+namespace Ballistic.Authoring.Animation;
 
 /// <summary>
 /// Writes a character and its jump animation as one animated, skinned glTF binary (Godot and Blender import it).
@@ -346,7 +348,7 @@ public static class AnimatedGlbWriter
     }
 
     /// <summary>Splits a row-vector transform into a uniform scale and a rotation; false when it is neither.</summary>
-    private static bool Rigid(Matrix4x4 m, out float scale, out Quaternion rotation) => GltfSkeleton.TryRigid(m, out scale, out rotation);
+    private static bool Rigid(Matrix4x4 m, out float scale, out Quaternion rotation) => Rotations.TryRigid(m, out scale, out rotation);
 
     /// <summary>Writes the animation to <paramref name="path"/>.</summary>
     /// <exception cref="GltfException">The character's source glTF cannot be copied (an image or buffer is unreadable).</exception>

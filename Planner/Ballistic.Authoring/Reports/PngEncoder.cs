@@ -1,7 +1,7 @@
 using System.Buffers.Binary;
 using System.IO.Compression;
 
-namespace Ballistic.Planner.Reports;
+namespace Ballistic.Authoring.Reports;
 
 /// <summary>Encodes 8-bit RGB images as PNG (zlib from the base library, CRC-32 here).</summary>
 internal static class PngEncoder

@@ -1,6 +1,7 @@
 using System.Numerics;
+using Ballistic.Planner.Levels;
 
-namespace Ballistic.Planner.Levels.Generation;
+namespace Ballistic.Authoring.Levels;
 
 /// <summary>Accumulates positions and triangles for one generated mesh.</summary>
 internal sealed class MeshBuilder

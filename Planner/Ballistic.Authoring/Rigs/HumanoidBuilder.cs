@@ -1,7 +1,8 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
 
-namespace Ballistic.Planner.Rigs.Procedural;
+namespace Ballistic.Authoring.Rigs;
 
 /// <summary>
 /// A 1.8 m humanoid: pelvis, spine, chest, neck, head; legs (hip 3, knee 1, ankle 2, toe 1) and arms (shoulder 3,

@@ -11,7 +11,7 @@ using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 
-namespace Ballistic.Planner.Reports;
+namespace Ballistic.Authoring.Reports;
 
 /// <summary>
 /// Writes a plan as the <c>ballistic.plan/1</c> JSON report other tools read. Positions are trunk centres in world

@@ -1,6 +1,7 @@
 using System.Numerics;
+using Ballistic.Planner.Rigs;
 
-namespace Ballistic.Planner.Rigs.Procedural;
+namespace Ballistic.Authoring.Rigs;
 
 /// <summary>A joint list under construction, with named joints, bone radii and named pose angles.</summary>
 internal sealed class RigSketch

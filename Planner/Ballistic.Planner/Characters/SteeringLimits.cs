@@ -1,4 +1,4 @@
-namespace Ballistic.Planner.Steering;
+namespace Ballistic.Planner.Characters;
 
 /// <summary>
 /// The character's jump abilities and the steering method's tolerances. Speeds in metres per second, angles in
@@ -33,7 +33,7 @@ public sealed record SteeringLimits
     /// <summary>Highest world Y the trunk centre may reach at the apex; +∞ for no bound.</summary>
     public float MaxApexHeight { get; init; } = float.PositiveInfinity;
 
-    /// <summary>Horizontal distances below this (metres) are rejected as <see cref="SteeringFailure.TooClose"/>.</summary>
+    /// <summary>Horizontal distances below this (metres) are rejected as <see cref="Steering.SteeringFailure.TooClose"/>.</summary>
     public float MinHorizontalDistance { get; init; } = 1e-3f;
 
     /// <summary>

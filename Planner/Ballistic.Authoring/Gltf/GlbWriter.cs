@@ -1,10 +1,12 @@
 using System.Buffers.Binary;
 using System.Numerics;
+using System.Text;
 using System.Text.Json;
 using System.Text.Json.Nodes;
+using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 
-namespace Ballistic.Planner.Gltf;
+namespace Ballistic.Authoring.Gltf;
 
 /// <summary>
 /// Builds a binary glTF 2.0 (<c>.glb</c>) file: one binary buffer, accessors appended to it, and the JSON objects
@@ -213,7 +215,7 @@ public sealed class GlbWriter
         Root["buffers"] = new JsonArray(new JsonObject { ["byteLength"] = bin.Length });
         Root["bufferViews"] = _bufferViews.DeepClone();
         Root["accessors"] = _accessors.DeepClone();
-        byte[] json = GltfDocument.Utf8(Root.ToJsonString(new JsonSerializerOptions { WriteIndented = false }));
+        byte[] json = Utf8(Root.ToJsonString(new JsonSerializerOptions { WriteIndented = false }));
         int jsonPadded = Pad4(json.Length);
         int binPadded = Pad4(bin.Length);
         int total = 12 + 8 + jsonPadded + (bin.Length > 0 ? 8 + binPadded : 0);
@@ -288,6 +290,9 @@ public sealed class GlbWriter
 
         return bytes;
     }
+
+    /// <summary>Encodes <paramref name="text"/> as UTF-8 without a byte order mark (for GLB JSON chunks).</summary>
+    private static byte[] Utf8(string text) => new UTF8Encoding(false).GetBytes(text);
 
     private static int Pad4(int n) => (n + 3) & ~3;
 }

@@ -1,7 +1,6 @@
-using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 
-namespace Ballistic.Planner.Query;
+namespace Ballistic.Planner.Roadmaps;
 
 /// <summary>One jump of a planned path: the takeoff and landing nodes and the arc between them.</summary>
 /// <param name="Takeoff">The node jumped from (start, roadmap node or goal).</param>

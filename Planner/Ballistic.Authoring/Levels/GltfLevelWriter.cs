@@ -1,9 +1,10 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
-using Ballistic.Planner.Gltf;
+using Ballistic.Authoring.Gltf;
 using Ballistic.Planner.IO;
+using Ballistic.Planner.Levels;
 
-namespace Ballistic.Planner.Levels;
+namespace Ballistic.Authoring.Levels;
 
 /// <summary>Writes level meshes as a binary glTF file that Godot, Blender and <see cref="GltfLevelLoader"/> read.</summary>
 public static class GltfLevelWriter
