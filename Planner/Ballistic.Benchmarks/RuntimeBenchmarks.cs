@@ -1,7 +1,7 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
-using Ballistic.Planner.Levels.Generation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;

@@ -1,6 +1,6 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;

@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Paths;
 using Ballistic.Runtime.Systems;

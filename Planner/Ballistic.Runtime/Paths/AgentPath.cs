@@ -1,6 +1,5 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Runtime.Paths;

@@ -1,6 +1,7 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;

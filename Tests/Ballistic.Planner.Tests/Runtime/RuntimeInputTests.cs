@@ -1,6 +1,6 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;

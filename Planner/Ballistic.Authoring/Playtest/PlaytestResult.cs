@@ -1,0 +1,30 @@
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Authoring.Playtest;
+
+/// <summary>The outcome of a playtest: every agent's targets and jumps, and the roadmap's connectivity.</summary>
+/// <param name="Settings">The settings run.</param>
+/// <param name="Kind">The character kind (its scene, roadmap and animator).</param>
+/// <param name="Agents">Every agent, in spawn order.</param>
+/// <param name="Ticks">Ticks stepped.</param>
+/// <param name="WallSeconds">Wall-clock seconds the run took.</param>
+/// <param name="PairsSampled">Random roadmap node pairs sampled.</param>
+/// <param name="PairsConnected">How many of them are connected by a sequence of jumps.</param>
+/// <param name="Cancelled">True when the run was stopped before its end.</param>
+public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kind, IReadOnlyList<PlaytestAgent> Agents, long Ticks, double WallSeconds, int PairsSampled, int PairsConnected, bool Cancelled)
+{
+    /// <summary>Targets that ended (reached or failed).</summary>
+    public int TargetsConcluded => Agents.Sum(a => a.Targets.Count(t => t.Reached || t.Failed));
+
+    /// <summary>Targets reached.</summary>
+    public int TargetsReached => Agents.Sum(a => a.Targets.Count(t => t.Reached));
+
+    /// <summary>Targets whose path failed.</summary>
+    public int TargetsFailed => Agents.Sum(a => a.Targets.Count(t => t.Failed));
+
+    /// <summary>Jumps taken by all agents.</summary>
+    public int JumpsTaken => Agents.Sum(a => a.Jumps.Count);
+
+    /// <summary>Seconds from setting each reached target to arriving, in increasing order.</summary>
+    public IReadOnlyList<double> TimesToReach => [.. Agents.SelectMany(a => a.Targets).Where(t => t.Reached).Select(t => t.ReachedAt!.Value - t.SetAt).Order()];
+}

@@ -1,0 +1,32 @@
+namespace Ballistic.Authoring.Playtest;
+
+/// <summary>A headless playtest: how many agents, for how long, from which seed.</summary>
+public sealed record PlaytestSettings
+{
+    /// <summary>Agents spawned, each on a random stance of the roadmap.</summary>
+    public int Agents { get; init; } = 8;
+
+    /// <summary>Simulated time, seconds.</summary>
+    public double Seconds { get; init; } = 60;
+
+    /// <summary>Seed of the spawn stances and targets (the run is deterministic for a seed).</summary>
+    public int Seed { get; init; } = 1;
+
+    /// <summary>Ticks per second.</summary>
+    public int TickRate { get; init; } = 60;
+
+    /// <summary>Random start/goal node pairs sampled for the roadmap's connectivity share.</summary>
+    public int ReachabilityPairs { get; init; } = 500;
+
+    /// <summary>Threads solving animations in the background (the results do not depend on it).</summary>
+    public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
+
+    /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>
+    public string? Problem() =>
+        Agents is < 1 or > 100_000 ? $"--agents must be 1–100000, not {Agents}"
+        : !(Seconds > 0) || Seconds > 86_400 ? $"--seconds must be positive and at most a day, not {Seconds}"
+        : TickRate is < 1 or > 1_000 ? $"the tick rate must be 1–1000, not {TickRate}"
+        : ReachabilityPairs < 0 ? "the reachability pair count must not be negative"
+        : AnimationThreads < 0 ? "the animation thread count must not be negative"
+        : null;
+}
