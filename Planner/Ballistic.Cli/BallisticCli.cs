@@ -30,6 +30,7 @@ public static class BallisticCli
             CliCommands.Demo(cancellation),
             CliCommands.Levels(),
             CliCommands.Characters(),
+            PlaytestCommand.Create(cancellation),
             BenchCommand.Create(),
         };
         root.Options.Add(CliCommands.Verbose);

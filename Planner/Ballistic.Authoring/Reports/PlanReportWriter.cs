@@ -38,6 +38,82 @@ public static class PlanReportWriter
         _ => throw new ArgumentOutOfRangeException(nameof(status), status, "Unknown status."),
     };
 
+    /// <summary>Writes the <c>character</c> block of a report: name, trunk, speed limits, gravity, friction, limbs.</summary>
+    internal static void WriteCharacter(Utf8JsonWriter w, ReducedCharacter character)
+    {
+        w.WriteStartObject("character");
+        w.WriteString("name", character.Name);
+        WriteVector(w, "trunkHalfExtents", character.TrunkHalfExtents);
+        w.WriteNumber("takeoffSpeedMax", character.TakeoffSpeedMax);
+        w.WriteNumber("landingSpeedMax", character.LandingSpeedMax);
+        WriteVector(w, "gravity", new Vector3(0f, -character.Limits.Gravity, 0f));
+        w.WriteNumber("friction", character.Friction);
+        w.WriteNumber("requiredContacts", character.RequiredContacts);
+        w.WriteStartArray("limbs");
+        foreach (Limb limb in character.Limbs)
+        {
+            w.WriteStringValue(limb.Name);
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    /// <summary>Writes one jump as an object of the report's <c>jumps</c> array: takeoff and landing stances, velocities, flight time, arc length, apex.</summary>
+    internal static void WriteJump(Utf8JsonWriter w, Jump jump, ReducedCharacter character)
+    {
+        w.WriteStartObject();
+        w.WritePropertyName("takeoff");
+        WritePose(w, jump.Takeoff, character);
+        w.WritePropertyName("landing");
+        WritePose(w, jump.Landing, character);
+        WriteVector(w, "takeoffVelocity", jump.Arc.TakeoffVelocity);
+        WriteVector(w, "landingVelocity", jump.Arc.LandingVelocity);
+        w.WriteNumber("flightTime", jump.Arc.FlightTime);
+        w.WriteNumber("arcLength", jump.Arc.ArcLength);
+        WriteVector(w, "apex", jump.Arc.Apex);
+        w.WriteEndObject();
+    }
+
+    /// <summary>Writes a named [x, y, z] array.</summary>
+    internal static void WriteVector(Utf8JsonWriter w, string name, Vector3 v)
+    {
+        w.WriteStartArray(name);
+        w.WriteNumberValue(v.X);
+        w.WriteNumberValue(v.Y);
+        w.WriteNumberValue(v.Z);
+        w.WriteEndArray();
+    }
+
+    private static void WritePose(Utf8JsonWriter w, RoadmapNode node, ReducedCharacter character)
+    {
+        w.WriteStartObject();
+        WriteVector(w, "position", node.Pose.Position);
+        w.WriteStartArray("rotation");
+        w.WriteNumberValue(node.Pose.Rotation.X);
+        w.WriteNumberValue(node.Pose.Rotation.Y);
+        w.WriteNumberValue(node.Pose.Rotation.Z);
+        w.WriteNumberValue(node.Pose.Rotation.W);
+        w.WriteEndArray();
+        w.WriteStartObject("cone");
+        WriteVector(w, "axis", node.Cone.Axis);
+        w.WriteNumber("mu", node.Cone.Mu);
+        w.WriteEndObject();
+        w.WriteStartArray("contacts");
+        foreach (Contact c in node.Contacts)
+        {
+            w.WriteStartObject();
+            w.WriteString("limb", character.Limbs[c.Limb].Name);
+            WriteVector(w, "position", c.Position);
+            WriteVector(w, "normal", c.Normal);
+            w.WriteNumber("mu", c.Mu);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
     /// <summary>The report as indented UTF-8 JSON.</summary>
     public static byte[] ToJson(PlanReport report)
     {
@@ -49,22 +125,7 @@ public static class PlanReportWriter
             w.WriteStartObject();
             w.WriteString("schema", Schema);
             w.WriteString("level", report.LevelPath);
-            w.WriteStartObject("character");
-            w.WriteString("name", character.Name);
-            Vector("trunkHalfExtents", character.TrunkHalfExtents);
-            w.WriteNumber("takeoffSpeedMax", character.TakeoffSpeedMax);
-            w.WriteNumber("landingSpeedMax", character.LandingSpeedMax);
-            Vector("gravity", new Vector3(0f, -character.Limits.Gravity, 0f));
-            w.WriteNumber("friction", character.Friction);
-            w.WriteNumber("requiredContacts", character.RequiredContacts);
-            w.WriteStartArray("limbs");
-            foreach (Limb limb in character.Limbs)
-            {
-                w.WriteStringValue(limb.Name);
-            }
-
-            w.WriteEndArray();
-            w.WriteEndObject();
+            WriteCharacter(w, character);
 
             w.WriteStartObject("request");
             Vector("from", report.From);
@@ -93,17 +154,7 @@ public static class PlanReportWriter
             w.WriteStartArray("jumps");
             foreach (Jump jump in report.Result.Jumps)
             {
-                w.WriteStartObject();
-                w.WritePropertyName("takeoff");
-                Pose(jump.Takeoff);
-                w.WritePropertyName("landing");
-                Pose(jump.Landing);
-                Vector("takeoffVelocity", jump.Arc.TakeoffVelocity);
-                Vector("landingVelocity", jump.Arc.LandingVelocity);
-                w.WriteNumber("flightTime", jump.Arc.FlightTime);
-                w.WriteNumber("arcLength", jump.Arc.ArcLength);
-                Vector("apex", jump.Arc.Apex);
-                w.WriteEndObject();
+                WriteJump(w, jump, character);
             }
 
             w.WriteEndArray();
@@ -164,35 +215,6 @@ public static class PlanReportWriter
                     w.WriteNumber("nearestValidPose", nearest);
                 }
 
-                w.WriteEndObject();
-            }
-
-            void Pose(RoadmapNode node)
-            {
-                w.WriteStartObject();
-                Vector("position", node.Pose.Position);
-                w.WriteStartArray("rotation");
-                w.WriteNumberValue(node.Pose.Rotation.X);
-                w.WriteNumberValue(node.Pose.Rotation.Y);
-                w.WriteNumberValue(node.Pose.Rotation.Z);
-                w.WriteNumberValue(node.Pose.Rotation.W);
-                w.WriteEndArray();
-                w.WriteStartObject("cone");
-                Vector("axis", node.Cone.Axis);
-                w.WriteNumber("mu", node.Cone.Mu);
-                w.WriteEndObject();
-                w.WriteStartArray("contacts");
-                foreach (Contact c in node.Contacts)
-                {
-                    w.WriteStartObject();
-                    w.WriteString("limb", character.Limbs[c.Limb].Name);
-                    Vector("position", c.Position);
-                    Vector("normal", c.Normal);
-                    w.WriteNumber("mu", c.Mu);
-                    w.WriteEndObject();
-                }
-
-                w.WriteEndArray();
                 w.WriteEndObject();
             }
         }

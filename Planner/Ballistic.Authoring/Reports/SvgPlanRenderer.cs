@@ -293,7 +293,11 @@ public static class SvgPlanRenderer
         return bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
     }
 
-    private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height)
+    private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height) =>
+        Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, HeightMapRgb(bvh, bounds, width, height)));
+
+    /// <summary>The level seen from above, shaded by height and slope: RGB bytes, row by row, world X → right, world Z → down.</summary>
+    internal static byte[] HeightMapRgb(TriangleBvh bvh, Aabb bounds, int width, int height)
     {
         var heights = new float[width * height];
         var normals = new Vector3[width * height];
@@ -335,7 +339,7 @@ public static class SvgPlanRenderer
             rgb[(3 * p) + 2] = (byte)Math.Clamp(color.Z * 255f, 0f, 255f);
         }
 
-        return Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, rgb));
+        return rgb;
     }
 
     private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);

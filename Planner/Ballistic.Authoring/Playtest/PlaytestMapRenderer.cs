@@ -1,0 +1,154 @@
+using System.Globalization;
+using System.Numerics;
+using System.Text;
+using Ballistic.Authoring.Reports;
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Authoring.Playtest;
+
+/// <summary>
+/// The playtest seen from above: the level shaded by height, every executed jump as a line from takeoff to landing
+/// (blue), the spawn points (white), reached targets (green) and failed ones (red crosses, with a thin red line from
+/// where the agent stood). As an SVG (vector marks over the shaded level) and as a PNG (the same, rasterised).
+/// World X → right, world Z → down.
+/// </summary>
+public static class PlaytestMapRenderer
+{
+    private const int Width = 900;
+
+    /// <summary>The map as an SVG document.</summary>
+    public static string Svg(PlaytestResult result)
+    {
+        ArgumentNullException.ThrowIfNull(result);
+        (int width, int height, Func<Vector3, Vector2> map) = Frame(result);
+        byte[] rgb = SvgPlanRenderer.HeightMapRgb(result.Kind.Scene.Bvh, result.Kind.Scene.Level.Bounds, width, height);
+        string png = Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, rgb));
+        var svg = new StringBuilder();
+        svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height + 40}\" viewBox=\"0 0 {width} {height + 40}\" font-family=\"sans-serif\" font-size=\"13\">\n"));
+        svg.Append(Invariant($"<rect width=\"{width}\" height=\"{height + 40}\" fill=\"#ffffff\"/>\n"));
+        svg.Append(Invariant($"<text x=\"8\" y=\"18\">{Escape(Title(result))}</text>\n"));
+        svg.Append(Invariant($"<text x=\"8\" y=\"34\" fill=\"#555\">blue: jumps taken · white: spawns · green: targets reached · red ×: targets failed (line from where the agent stood)</text>\n"));
+        svg.Append(Invariant($"<image x=\"0\" y=\"40\" width=\"{width}\" height=\"{height}\" href=\"data:image/png;base64,{png}\"/>\n"));
+        svg.Append("<g transform=\"translate(0,40)\">\n");
+        foreach (PlaytestAgent agent in result.Agents)
+        {
+            foreach (ExecutedJump jump in agent.Jumps)
+            {
+                Vector2 a = map(jump.Jump.Arc.Start);
+                Vector2 b = map(jump.Jump.Arc.End);
+                svg.Append(Invariant($"<line x1=\"{a.X:0.#}\" y1=\"{a.Y:0.#}\" x2=\"{b.X:0.#}\" y2=\"{b.Y:0.#}\" stroke=\"#1f5fbf\" stroke-opacity=\"0.55\" stroke-width=\"1.2\"/>\n"));
+            }
+        }
+
+        foreach (PlaytestAgent agent in result.Agents)
+        {
+            Vector2 s = map(agent.Spawn);
+            svg.Append(Invariant($"<circle cx=\"{s.X:0.#}\" cy=\"{s.Y:0.#}\" r=\"3.5\" fill=\"#ffffff\" stroke=\"#000\" stroke-width=\"0.8\"/>\n"));
+            foreach (PlaytestTarget target in agent.Targets.Where(t => t.Reached))
+            {
+                Vector2 p = map(target.Target);
+                svg.Append(Invariant($"<circle cx=\"{p.X:0.#}\" cy=\"{p.Y:0.#}\" r=\"2.5\" fill=\"#2e9d3a\"/>\n"));
+            }
+        }
+
+        foreach ((Vector3 target, Vector3 from) in PlaytestReportWriter.Failures(result))
+        {
+            Vector2 p = map(target);
+            Vector2 f = map(from);
+            svg.Append(Invariant($"<line x1=\"{f.X:0.#}\" y1=\"{f.Y:0.#}\" x2=\"{p.X:0.#}\" y2=\"{p.Y:0.#}\" stroke=\"#d62728\" stroke-opacity=\"0.5\" stroke-width=\"0.8\" stroke-dasharray=\"3 2\"/>\n"));
+            svg.Append(Invariant($"<path d=\"M{p.X - 5:0.#},{p.Y - 5:0.#} L{p.X + 5:0.#},{p.Y + 5:0.#} M{p.X - 5:0.#},{p.Y + 5:0.#} L{p.X + 5:0.#},{p.Y - 5:0.#}\" stroke=\"#d62728\" stroke-width=\"2.2\"/>\n"));
+        }
+
+        svg.Append("</g>\n</svg>\n");
+        return svg.ToString();
+    }
+
+    /// <summary>The map as a PNG image.</summary>
+    public static byte[] Png(PlaytestResult result)
+    {
+        ArgumentNullException.ThrowIfNull(result);
+        (int width, int height, Func<Vector3, Vector2> map) = Frame(result);
+        byte[] rgb = SvgPlanRenderer.HeightMapRgb(result.Kind.Scene.Bvh, result.Kind.Scene.Level.Bounds, width, height);
+        foreach (PlaytestAgent agent in result.Agents)
+        {
+            foreach (ExecutedJump jump in agent.Jumps)
+            {
+                Line(rgb, width, height, map(jump.Jump.Arc.Start), map(jump.Jump.Arc.End), (31, 95, 191));
+            }
+        }
+
+        foreach (PlaytestAgent agent in result.Agents)
+        {
+            Dot(rgb, width, height, map(agent.Spawn), 3, (255, 255, 255));
+            foreach (PlaytestTarget target in agent.Targets.Where(t => t.Reached))
+            {
+                Dot(rgb, width, height, map(target.Target), 2, (46, 157, 58));
+            }
+        }
+
+        foreach ((Vector3 target, _) in PlaytestReportWriter.Failures(result))
+        {
+            Vector2 p = map(target);
+            for (int k = -1; k <= 1; k++)
+            {
+                Line(rgb, width, height, p + new Vector2(-5f, -5f + k), p + new Vector2(5f, 5f + k), (214, 39, 40));
+                Line(rgb, width, height, p + new Vector2(-5f, 5f + k), p + new Vector2(5f, -5f + k), (214, 39, 40));
+            }
+        }
+
+        return PngEncoder.EncodeRgb(width, height, rgb);
+    }
+
+    private static (int Width, int Height, Func<Vector3, Vector2> Map) Frame(PlaytestResult result)
+    {
+        Aabb bounds = result.Kind.Scene.Level.Bounds;
+        float worldW = MathF.Max(bounds.Max.X - bounds.Min.X, 1e-3f);
+        float worldD = MathF.Max(bounds.Max.Z - bounds.Min.Z, 1e-3f);
+        float scale = Width / worldW;
+        int height = Math.Clamp((int)MathF.Round(worldD * scale), 2, 4 * Width);
+        return (Width, height, p => new Vector2((p.X - bounds.Min.X) * scale, (p.Z - bounds.Min.Z) * scale));
+    }
+
+    private static void Line(byte[] rgb, int width, int height, Vector2 a, Vector2 b, (byte R, byte G, byte B) color)
+    {
+        int steps = Math.Max(1, (int)MathF.Ceiling(Vector2.Distance(a, b)));
+        for (int i = 0; i <= steps; i++)
+        {
+            Set(rgb, width, height, Vector2.Lerp(a, b, (float)i / steps), color);
+        }
+    }
+
+    private static void Dot(byte[] rgb, int width, int height, Vector2 p, int radius, (byte R, byte G, byte B) color)
+    {
+        for (int dy = -radius; dy <= radius; dy++)
+        {
+            for (int dx = -radius; dx <= radius; dx++)
+            {
+                if ((dx * dx) + (dy * dy) <= radius * radius)
+                {
+                    Set(rgb, width, height, p + new Vector2(dx, dy), color);
+                }
+            }
+        }
+    }
+
+    private static void Set(byte[] rgb, int width, int height, Vector2 p, (byte R, byte G, byte B) color)
+    {
+        int x = (int)MathF.Floor(p.X);
+        int y = (int)MathF.Floor(p.Y);
+        if ((uint)x < (uint)width && (uint)y < (uint)height)
+        {
+            int i = 3 * ((y * width) + x);
+            rgb[i] = color.R;
+            rgb[i + 1] = color.G;
+            rgb[i + 2] = color.B;
+        }
+    }
+
+    private static string Title(PlaytestResult result) =>
+        Invariant($"{result.Kind.Name}: {result.Agents.Count} agents, {result.Settings.Seconds:0.#} s — {result.TargetsReached} targets reached, {result.TargetsFailed} failed, {result.JumpsTaken} jumps");
+
+    private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
+
+    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}

@@ -1,0 +1,140 @@
+using System.CommandLine;
+using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Playtest;
+using Ballistic.Authoring.Reports;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.IO;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Cli;
+
+/// <summary>
+/// <c>ballistic playtest</c>: many agents navigate a level headless with the runtime's systems; writes a JSON report
+/// (<c>ballistic.playtest/1</c>) and a map of where agents went and failed (SVG and PNG).
+/// </summary>
+internal static class PlaytestCommand
+{
+    public static Command Create(CancellationToken cancellation = default)
+    {
+        Option<string> level = new("--level") { Description = "Level file (.glb or .gltf), Y up, metres.", Required = true };
+        Option<string> character = new("--character") { Description = $"Character preset ({string.Join(", ", CharacterPresets.Names)}), or a limb spec NAME.limbs.json with its rigged NAME.glb beside it.", Required = true };
+        Option<int> agents = new("--agents") { Description = "Agents spawned on random stances.", DefaultValueFactory = _ => 8 };
+        Option<double> seconds = new("--seconds") { Description = "Simulated seconds.", DefaultValueFactory = _ => 60 };
+        Option<int> seed = new("--seed") { Description = "Seed of the spawns, the targets and (without --roadmap) the bake.", DefaultValueFactory = _ => 1 };
+        Option<string?> roadmap = new("--roadmap") { Description = "Roadmap file from 'bake'; without it the tool bakes one first." };
+        Option<int> maxNodes = new("--max-nodes") { Description = "Nodes of the roadmap baked without --roadmap.", DefaultValueFactory = _ => 600 };
+        Option<int> threads = new("--threads") { Description = "Worker threads (the results do not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
+        Option<string> output = new("--out") { Description = "Folder for LEVEL-CHARACTER-playtest.json, .svg and .png.", DefaultValueFactory = _ => "out" };
+        var command = new Command("playtest", "Many agents navigate the level by jumps, headless, toward random targets; writes a report and a map of where they failed.")
+        {
+            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output,
+        };
+        command.SetAction(parse => CliCommands.Guard(parse, () =>
+        {
+            TextWriter stdout = parse.InvocationConfiguration.Output;
+            TextWriter stderr = parse.InvocationConfiguration.Error;
+            string levelPath = parse.GetValue(level)!;
+            int threadCount = parse.GetValue(threads) is int t and >= 1 and <= 1024 ? t : throw new CliException($"--threads takes 1 to 1024 threads, not {parse.GetValue(threads)}.");
+            var settings = new PlaytestSettings
+            {
+                Agents = parse.GetValue(agents),
+                Seconds = parse.GetValue(seconds),
+                Seed = parse.GetValue(seed),
+                AnimationThreads = Math.Max(1, threadCount - 1),
+            };
+            if (settings.Problem() is { } problem)
+            {
+                throw new CliException(problem + ".");
+            }
+
+            int nodes = parse.GetValue(maxNodes) is int n and >= 1 and <= 1_000_000 ? n : throw new CliException($"--max-nodes takes 1 to 1,000,000 nodes, not {parse.GetValue(maxNodes)}.");
+            Level lvl = CliInputs.LoadLevel(levelPath);
+            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!);
+            var scene = PlanningScene.Create(lvl, reduced);
+            Roadmap map;
+            if (parse.GetValue(roadmap) is { } roadmapPath)
+            {
+                map = RoadmapFile.Load(roadmapPath, lvl, reduced);
+                stdout.WriteLine($"roadmap: {roadmapPath}: {map.Nodes.Count} nodes, {map.Edges.Count} jumps");
+            }
+            else
+            {
+                ConsoleProgress? bakeProgress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
+                BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount }, progress: bakeProgress, cancellationToken: cancellation);
+                bakeProgress?.Finish();
+                if (bake.Status == PlannerStatus.Cancelled)
+                {
+                    stderr.WriteLine("cancelled: nothing written.");
+                    return ExitCode.Cancelled;
+                }
+
+                map = bake.Roadmap;
+                stdout.WriteLine($"roadmap: baked {map.Nodes.Count} nodes, {map.Edges.Count} jumps in {bake.Elapsed.TotalSeconds:0.##} s (seed {settings.Seed})");
+                if (map.Nodes.Count == 0)
+                {
+                    stderr.WriteLine($"error: no roadmap to playtest on: {bake.Reason}.");
+                    return ExitCode.NotFound;
+                }
+            }
+
+            var kind = new CharacterKind(scene, map, new JumpAnimator(scene, model));
+            TickProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new TickProgress(stderr, settings.Seconds) : null;
+            PlaytestResult result = PlaytestRunner.Run(kind, settings, progress, cancellation);
+            progress?.Finish();
+
+            // Written even when cancelled: what was simulated is kept (the report says it was cut short).
+            string folder = parse.GetValue(output)!;
+            string stem = Path.Combine(folder, $"{Path.GetFileNameWithoutExtension(levelPath)}-{reduced.Name}-playtest");
+            OutputFile.Write(stem + ".json", PlaytestReportWriter.ToJson(result, levelPath.Replace('\\', '/')));
+            OutputFile.Write(stem + ".svg", System.Text.Encoding.UTF8.GetBytes(PlaytestMapRenderer.Svg(result)));
+            OutputFile.Write(stem + ".png", PlaytestMapRenderer.Png(result));
+            IReadOnlyList<double> times = result.TimesToReach;
+            stdout.WriteLine($"agents: {result.Agents.Count} for {result.Ticks / (double)settings.TickRate:0.#} s ({result.Ticks} ticks) in {result.WallSeconds:0.##} s wall time{(result.Cancelled ? ", cancelled" : "")}");
+            stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps taken");
+            if (times.Count > 0)
+            {
+                stdout.WriteLine($"time to reach: median {times[times.Count / 2]:0.##} s, max {times[^1]:0.##} s");
+            }
+
+            stdout.WriteLine($"roadmap connectivity: {result.PairsConnected} of {result.PairsSampled} random node pairs connected");
+            foreach (IGrouping<string, PlaytestTarget> failure in result.Agents.SelectMany(a => a.Targets).Where(x => x.Failed).GroupBy(x => PlanReportWriter.StatusName(x.FailureStatus!.Value)))
+            {
+                stdout.WriteLine($"failed ({failure.Key}): {failure.Count()}, e.g. {failure.First().FailureReason}");
+            }
+
+            stdout.WriteLine($"written: {stem}.json, {stem}.svg, {stem}.png");
+            return result.Cancelled ? ExitCode.Cancelled : ExitCode.Success;
+        }));
+        return command;
+    }
+
+    /// <summary>A one-line progress bar of simulated time, on an interactive terminal.</summary>
+    private sealed class TickProgress(TextWriter writer, double seconds) : IProgress<double>
+    {
+        private DateTime _last = DateTime.MinValue;
+
+        public void Report(double value)
+        {
+            if (DateTime.UtcNow - _last < TimeSpan.FromMilliseconds(100))
+            {
+                return;
+            }
+
+            _last = DateTime.UtcNow;
+            const int width = 30;
+            writer.Write($"\r[{new string('#', (int)(width * Math.Clamp(value, 0, 1))).PadRight(width, '.')}] {value * seconds:0.0} of {seconds:0.#} s simulated ");
+            writer.Flush();
+        }
+
+        public void Finish()
+        {
+            writer.Write("\r" + new string(' ', 78) + "\r");
+            writer.Flush();
+        }
+    }
+}
