@@ -50,7 +50,7 @@ internal static class CliCommands
             var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit };
             var scene = PlanningScene.Create(lvl, chr);
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
-            BakeResult result = new RoadmapBaker(scene).Bake(settings, progress: progress, cancellationToken: cancellation);
+            BakeResult result = new RoadmapBaker(scene).Bake(settings, TerminationCondition.Cancellation(cancellation), progress);
             progress?.Finish();
             stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
             stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");

@@ -43,7 +43,7 @@ internal sealed class PlanPipeline
 
     public EndpointTolerance Tolerance { get; init; } = new();
 
-    /// <summary>Cancels the bake (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
+    /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }
 
     public PlanningScene? Scene { get; init; }
@@ -70,7 +70,7 @@ internal sealed class PlanPipeline
             roadmap = RoadmapFile.Load(RoadmapPath, Level, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
             clock.Restart();
-            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance });
+            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance }, termination: TerminationCondition.Cancellation(Cancellation));
             Timings["planAndAnimate"] = clock.Elapsed.TotalSeconds;
         }
         else

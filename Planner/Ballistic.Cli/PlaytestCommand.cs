@@ -65,7 +65,7 @@ internal static class PlaytestCommand
             else
             {
                 ConsoleProgress? bakeProgress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
-                BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount }, progress: bakeProgress, cancellationToken: cancellation);
+                BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount }, TerminationCondition.Cancellation(cancellation), bakeProgress);
                 bakeProgress?.Finish();
                 if (bake.Status == PlannerStatus.Cancelled)
                 {

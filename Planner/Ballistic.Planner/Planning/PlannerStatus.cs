@@ -15,7 +15,7 @@ public enum PlannerStatus
     /// <summary>No valid root pose could be placed at the goal.</summary>
     InvalidGoal,
 
-    /// <summary>Cancelled through its <see cref="CancellationToken"/>.</summary>
+    /// <summary>Cancelled: a <see cref="TerminationCondition.Cancellation"/> condition saw its token cancelled.</summary>
     Cancelled,
 
     /// <summary>The roadmap holds no sequence of jumps from start to goal.</summary>

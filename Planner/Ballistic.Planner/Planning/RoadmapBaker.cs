@@ -15,7 +15,9 @@ namespace Ballistic.Planner.Planning;
 /// <remarks>
 /// Deterministic whatever the thread count: sample k draws from its own random stream (seed, k); nodes enter the
 /// roadmap in sample order; every pair's jumps are computed in parallel but inserted in pair order. A round cut
-/// short by the time budget or cancellation is discarded whole, so the roadmap is always a prefix of rounds.
+/// short by the time budget or cancellation is discarded whole, so the roadmap is always a prefix of rounds. Each
+/// new node's neighbour candidates come from a spatial index of the nodes (<see cref="NodeIndex"/>): the same set,
+/// in the same (distance, id) order, as a scan over every node would give.
 /// </remarks>
 public sealed class RoadmapBaker
 {
@@ -33,18 +35,42 @@ public sealed class RoadmapBaker
 
     /// <summary>Bakes a roadmap.</summary>
     /// <param name="settings">Seed, limits and optional start and goal.</param>
-    /// <param name="termination">An extra termination condition, combined with those of <paramref name="settings"/>.</param>
+    /// <param name="termination">
+    /// An extra termination condition (cancellation: <see cref="TerminationCondition.Cancellation"/>; a time budget;
+    /// any predicate), combined with those of <paramref name="settings"/> and checking first. Its time and
+    /// cancellation parts are also polled between work items, so that a round is cut short as soon as they hold.
+    /// </param>
     /// <param name="progress">Receives the state after every round.</param>
-    /// <param name="cancellationToken">Cancels the bake; the result then has status <see cref="PlannerStatus.Cancelled"/>.</param>
     /// <exception cref="ArgumentException">The settings are invalid or nothing would ever stop the bake.</exception>
-    public BakeResult Bake(BakeSettings settings, TerminationCondition? termination = null, IProgress<BakeState>? progress = null, CancellationToken cancellationToken = default)
+    public BakeResult Bake(BakeSettings settings, TerminationCondition? termination = null, IProgress<BakeState>? progress = null)
     {
         ArgumentNullException.ThrowIfNull(settings);
         settings.Validate();
-        TerminationCondition stop = BuildTermination(settings, termination, cancellationToken);
+        TerminationCondition stop = BuildTermination(settings, termination);
         var clock = Stopwatch.StartNew();
-        var roadmap = new Roadmap(_scene.Level.Fingerprint, _scene.Character.Fingerprint, _scene.Character.Name, settings.Seed);
+        var roadmap = new RoadmapBuilder(_scene.Level.Fingerprint, _scene.Character.Fingerprint, _scene.Character.Name, settings.Seed);
+        var index = new NodeIndex(NodeIndex.CellSizeFor(_scene.Steering.Limits));
         var counters = new Counters();
+
+        // Work is cut short between items when the clock or cancellation says so; the start and goal only by cancellation.
+        (PlannerStatus Status, string Reason)? cut = null;
+        var gate = new object();
+        bool StopNow()
+        {
+            if (stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
+            {
+                lock (gate)
+                {
+                    cut ??= (status, reason);
+                }
+
+                return true;
+            }
+
+            return false;
+        }
+
+        bool CancelledNow() => stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out _) && status == PlannerStatus.Cancelled;
 
         int? startNode = null;
         int? goalNode = null;
@@ -55,10 +81,10 @@ public sealed class RoadmapBaker
             startPlacement = _scene.Sampler.Place(start, settings.Tolerance, settings.CanStand);
             if (startPlacement.Pose is not { } pose)
             {
-                return new BakeResult(roadmap, PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, clock.Elapsed, null, null, 0, 0) { StartPlacement = startPlacement };
+                return new BakeResult(roadmap.Freeze(), PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, clock.Elapsed, null, null, 0, 0) { StartPlacement = startPlacement };
             }
 
-            startNode = Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
+            startNode = Insert(roadmap, index, [pose], settings, counters, CancelledNow)?[0];
         }
 
         if (settings.Goal is Vector3 goal)
@@ -66,7 +92,7 @@ public sealed class RoadmapBaker
             goalPlacement = _scene.Sampler.Place(goal, settings.Tolerance, settings.CanStand);
             if (goalPlacement.Pose is not { } pose)
             {
-                return new BakeResult(new Roadmap(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, settings.Seed),
+                return new BakeResult(new RoadmapBuilder(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, settings.Seed).Freeze(),
                     PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, clock.Elapsed, null, null, counters.Steering, 0)
                 { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
@@ -74,11 +100,9 @@ public sealed class RoadmapBaker
             // The same stance as the start (start equal to goal) is the start node itself: a plan of no jumps.
             goalNode = startPlacement?.Pose is { } startPose && startPose.Pose == pose.Pose && startNode is int same
                 ? same
-                : Insert(roadmap, [pose], settings, counters, deadline: null, cancellationToken)?[0];
+                : Insert(roadmap, index, [pose], settings, counters, CancelledNow)?[0];
         }
 
-        DateTime now = DateTime.UtcNow;
-        DateTime? deadline = settings.TimeLimit is TimeSpan limit && limit < DateTime.MaxValue - now ? now + limit : null;
         long nextSample = 0;
         int rounds = 0;
         int emptyRounds = 0;
@@ -86,7 +110,14 @@ public sealed class RoadmapBaker
         {
             var state = new BakeState(roadmap.Nodes.Count, roadmap.Edges.Count, clock.Elapsed, Connected(roadmap, startNode, goalNode), rounds);
             progress?.Report(state);
-            if (stop.ShouldStop(state, out PlannerStatus status, out string reason))
+            bool stopping = stop.ShouldStop(state, out PlannerStatus status, out string reason);
+            if (!stopping && cut is { } verdict)
+            {
+                // Cut short by a condition that answers only between work items: end with its verdict.
+                (stopping, status, reason) = (true, verdict.Status, verdict.Reason);
+            }
+
+            if (stopping)
             {
                 if (status == PlannerStatus.Exact && settings.StopWhenConnected && !state.StartReachesGoal)
                 {
@@ -94,14 +125,14 @@ public sealed class RoadmapBaker
                     reason += "; the start does not reach the goal yet";
                 }
 
-                return new BakeResult(roadmap, status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
+                return new BakeResult(roadmap.Freeze(), status, reason, clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
                 { SteeringRejections = counters.Rejections, StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
 
             if (emptyRounds >= MaxEmptyRounds)
             {
                 long attempts = (long)MaxEmptyRounds * settings.BatchSize * _scene.Sampler.Settings.MaxAttempts;
-                return new BakeResult(roadmap, PlannerStatus.NoPath,
+                return new BakeResult(roadmap.Freeze(), PlannerStatus.NoPath,
                     $"no valid root pose found in the last {attempts} attempts: {_scene.Character.Name} can stand nowhere else on this level",
                     clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
                 { SteeringRejections = counters.Rejections, StartPlacement = startPlacement, GoalPlacement = goalPlacement };
@@ -116,9 +147,8 @@ public sealed class RoadmapBaker
             // Sample a round in parallel; keep the valid ones in sample order.
             var samples = new PoseEvaluation?[batch];
             long first = nextSample;
-            bool cut = RunParallel(batch, settings.Threads, deadline, cancellationToken,
-                i => samples[i] = _scene.Sampler.Sample(SeedMixer.Create(settings.Seed, first + i)));
-            if (cut)
+            if (RunParallel(batch, settings.Threads, StopNow,
+                i => samples[i] = _scene.Sampler.Sample(SeedMixer.Create(settings.Seed, first + i))))
             {
                 continue; // the termination check at the top of the loop ends the bake
             }
@@ -126,7 +156,7 @@ public sealed class RoadmapBaker
             nextSample += batch;
             PoseEvaluation[] valid = [.. samples.Where(s => s is not null).Select(s => s!)];
             emptyRounds = valid.Length == 0 ? emptyRounds + 1 : 0;
-            if (valid.Length > 0 && Insert(roadmap, valid, settings, counters, deadline, cancellationToken) is null)
+            if (valid.Length > 0 && Insert(roadmap, index, valid, settings, counters, StopNow) is null)
             {
                 continue; // cut short while steering: the roadmap is unchanged and the check above ends the bake
             }
@@ -136,39 +166,32 @@ public sealed class RoadmapBaker
     }
 
     /// <summary>
-    /// Adds the poses as nodes and steers every new node to and from its nearest reachable neighbours. Returns the
-    /// new node ids, or <c>null</c> (roadmap unchanged) when cut short by the deadline or cancellation.
+    /// Adds the poses as nodes and steers every new node to and from its nearest reachable neighbours (earlier
+    /// nodes, found through <paramref name="index"/>, and the new nodes before it). Returns the new node ids, or
+    /// <c>null</c> (roadmap and index unchanged) when <paramref name="stopNow"/> cut it short.
     /// </summary>
-    private int[]? Insert(Roadmap roadmap, PoseEvaluation[] poses, BakeSettings settings, Counters counters, DateTime? deadline, CancellationToken token)
+    private int[]? Insert(RoadmapBuilder roadmap, NodeIndex index, PoseEvaluation[] poses, BakeSettings settings, Counters counters, Func<bool> stopNow)
     {
         int firstId = roadmap.Nodes.Count;
-        var all = new List<(Vector3 Position, int Id)>(firstId + poses.Length);
-        foreach (RoadmapNode node in roadmap.Nodes)
-        {
-            all.Add((node.Pose.Position, node.Id));
-        }
+        SteeringLimits limits = _scene.Steering.Limits;
+        float bound = NodeIndex.ReachBound(limits);
 
-        for (int k = 0; k < poses.Length; k++)
-        {
-            all.Add((poses[k].Pose.Position, firstId + k));
-        }
-
-        // Pairs (new node i, earlier node j), j among the nearest within reach, in a fixed order.
+        // Pairs (new node i, earlier node j), j among the nearest within reach, in a fixed order: by (distance, id),
+        // exactly as a scan over every earlier node would rank them.
         var pairs = new List<(int I, int J)>();
         var candidates = new List<(float Distance, int Id)>();
         for (int k = 0; k < poses.Length; k++)
         {
             int i = firstId + k;
-            Vector3 p = all[i].Position;
+            Vector3 p = poses[k].Pose.Position;
             candidates.Clear();
-            for (int j = 0; j < i; j++)
+            index.AppendWithinReach(p, limits, candidates);
+            for (int m = 0; m < k; m++)
             {
-                Vector3 q = all[j].Position;
-                float x = new Vector2(q.X - p.X, q.Z - p.Z).Length();
-                SteeringLimits limits = _scene.Steering.Limits;
-                if (x <= limits.MaxReach(p.Y - q.Y) || x <= limits.MaxReach(q.Y - p.Y))
+                Vector3 q = poses[m].Pose.Position;
+                if (NodeIndex.InReach(limits, bound, p, q))
                 {
-                    candidates.Add((Vector3.Distance(p, q), j));
+                    candidates.Add((Vector3.Distance(p, q), firstId + m));
                 }
             }
 
@@ -182,7 +205,7 @@ public sealed class RoadmapBaker
         RoadmapNode NodeOf(int id) => id < firstId ? roadmap.Nodes[id] : ToNode(poses[id - firstId], id);
         var forward = new SteeringResult[pairs.Count];
         var backward = new SteeringResult[pairs.Count];
-        bool cut = RunParallel(pairs.Count, settings.Threads, deadline, token, n =>
+        bool cut = RunParallel(pairs.Count, settings.Threads, stopNow, n =>
         {
             RoadmapNode a = NodeOf(pairs[n].I);
             RoadmapNode b = NodeOf(pairs[n].J);
@@ -200,6 +223,7 @@ public sealed class RoadmapBaker
         {
             ids[k] = firstId + k;
             roadmap.AddNode(ToNode(poses[k], firstId + k));
+            index.Add(poses[k].Pose.Position);
         }
 
         for (int n = 0; n < pairs.Count; n++)
@@ -223,16 +247,15 @@ public sealed class RoadmapBaker
 
     private static RoadmapNode ToNode(PoseEvaluation pose, int id) => new(id, pose.Pose, pose.Cone, pose.Contacts);
 
-    /// <summary>Runs <paramref name="body"/> for 0..count−1; true when stopped early by the deadline or the token.</summary>
-    private static bool RunParallel(int count, int threads, DateTime? deadline, CancellationToken token, Action<int> body)
+    /// <summary>Runs <paramref name="body"/> for 0..count−1, polling <paramref name="stopNow"/> before each item; true when it stopped the run early.</summary>
+    private static bool RunParallel(int count, int threads, Func<bool> stopNow, Action<int> body)
     {
         bool stopped = false;
-        bool Expired() => token.IsCancellationRequested || (deadline is DateTime d && DateTime.UtcNow >= d);
         if (threads <= 1 || count <= 1)
         {
             for (int i = 0; i < count; i++)
             {
-                if (Expired())
+                if (stopNow())
                 {
                     return true;
                 }
@@ -245,7 +268,7 @@ public sealed class RoadmapBaker
 
         Parallel.For(0, count, new ParallelOptions { MaxDegreeOfParallelism = threads }, (i, loop) =>
         {
-            if (Volatile.Read(ref stopped) || Expired())
+            if (Volatile.Read(ref stopped) || stopNow())
             {
                 Volatile.Write(ref stopped, true);
                 loop.Stop();
@@ -257,39 +280,31 @@ public sealed class RoadmapBaker
         return stopped;
     }
 
-    private static TerminationCondition BuildTermination(BakeSettings settings, TerminationCondition? extra, CancellationToken token)
+    /// <summary>The caller's condition first, then those of the settings: one condition carried down to every loop.</summary>
+    private static TerminationCondition BuildTermination(BakeSettings settings, TerminationCondition? extra)
     {
-        TerminationCondition stop = TerminationCondition.Cancellation(token);
-        bool bounded = extra is not null;
+        TerminationCondition? stop = extra;
         if (settings.StopWhenConnected)
         {
-            stop |= TerminationCondition.StartGoalConnected();
-            bounded = true;
+            stop = Or(stop, TerminationCondition.StartGoalConnected());
         }
 
         if (settings.TimeLimit is TimeSpan limit)
         {
-            stop |= TerminationCondition.Timeout(limit);
-            bounded = true;
+            stop = Or(stop, TerminationCondition.Timeout(limit));
         }
 
         if (settings.MaxNodes is int max)
         {
-            stop |= TerminationCondition.NodeCount(max);
-            bounded = true;
+            stop = Or(stop, TerminationCondition.NodeCount(max));
         }
 
-        if (extra is not null)
-        {
-            stop |= extra;
-        }
+        return stop ?? throw new ArgumentException("Nothing would stop this bake: set MaxNodes, TimeLimit, StopWhenConnected or a termination condition.");
 
-        return bounded
-            ? stop
-            : throw new ArgumentException("Nothing would stop this bake: set MaxNodes, TimeLimit, StopWhenConnected or a termination condition.");
+        static TerminationCondition Or(TerminationCondition? left, TerminationCondition right) => left is null ? right : left | right;
     }
 
-    private static bool Connected(Roadmap roadmap, int? start, int? goal) =>
+    private static bool Connected(RoadmapBuilder roadmap, int? start, int? goal) =>
         start is int s && goal is int g && roadmap.Reaches(s, g);
 
     private sealed class Counters

@@ -1,8 +1,11 @@
 namespace Ballistic.Planner.Planning;
 
 /// <summary>
-/// When a bake stops, after OMPL's planner termination conditions: checked between sampling rounds, combined with
-/// <c>|</c> (stop when any holds). Each condition says which status the bake ends with and why.
+/// When a bake or a query stops, after OMPL's planner termination conditions, combined with <c>|</c> (stop when
+/// any holds). Each condition says which status the work ends with and why. The one object carried from the
+/// caller down to the parallel loops: a bake checks <see cref="ShouldStop"/> between sampling rounds and polls
+/// <see cref="ShouldStopNow"/> between work items (samples, steering calls); a query polls
+/// <see cref="ShouldStopNow"/> before its expensive steps. Conditions are immutable and thread-safe.
 /// </summary>
 public abstract class TerminationCondition
 {
@@ -12,21 +15,23 @@ public abstract class TerminationCondition
             ? new Predicate(s => s.Nodes >= count, PlannerStatus.Exact, $"reached {count} nodes")
             : throw new ArgumentOutOfRangeException(nameof(count), count, "The node count must be positive.");
 
-    /// <summary>Stop once <paramref name="budget"/> has elapsed (status <see cref="PlannerStatus.Timeout"/>).</summary>
+    /// <summary>
+    /// Stop once <paramref name="budget"/> has elapsed since the work began (status <see cref="PlannerStatus.Timeout"/>):
+    /// each bake and each query measures from its own start. Also answers <see cref="ShouldStopNow"/>.
+    /// </summary>
     public static TerminationCondition Timeout(TimeSpan budget) =>
         budget > TimeSpan.Zero
-            ? new Predicate(s => s.Elapsed >= budget, PlannerStatus.Timeout, $"time budget of {budget.TotalSeconds:0.###} s spent")
+            ? new Deadline(budget)
             : throw new ArgumentOutOfRangeException(nameof(budget), budget, "The time budget must be positive.");
 
-    /// <summary>Stop when the token is cancelled (status <see cref="PlannerStatus.Cancelled"/>).</summary>
-    public static TerminationCondition Cancellation(CancellationToken token) =>
-        new Predicate(_ => token.IsCancellationRequested, PlannerStatus.Cancelled, "cancelled");
+    /// <summary>Stop when the token is cancelled (status <see cref="PlannerStatus.Cancelled"/>). Also answers <see cref="ShouldStopNow"/>.</summary>
+    public static TerminationCondition Cancellation(CancellationToken token) => new Cancelled(token);
 
     /// <summary>Stop once the start node reaches the goal node (status <see cref="PlannerStatus.Exact"/>).</summary>
     public static TerminationCondition StartGoalConnected() =>
         new Predicate(s => s.StartReachesGoal, PlannerStatus.Exact, "start and goal connected");
 
-    /// <summary>Stop when <paramref name="stop"/> holds.</summary>
+    /// <summary>Stop when <paramref name="stop"/> holds (checked between rounds only, never by <see cref="ShouldStopNow"/>).</summary>
     public static TerminationCondition When(Func<BakeState, bool> stop, PlannerStatus status, string reason)
     {
         ArgumentNullException.ThrowIfNull(stop);
@@ -45,8 +50,23 @@ public abstract class TerminationCondition
     /// <summary>Stops when either condition holds (same as <c>|</c>).</summary>
     public static TerminationCondition BitwiseOr(TerminationCondition left, TerminationCondition right) => left | right;
 
-    /// <summary>Whether to stop in <paramref name="state"/>, and if so with which status and reason.</summary>
+    /// <summary>Whether to stop a bake in <paramref name="state"/>, and if so with which status and reason.</summary>
     public abstract bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason);
+
+    /// <summary>
+    /// The cheap check polled between work items and by queries, which have no <see cref="BakeState"/>: whether to
+    /// stop now, <paramref name="elapsed"/> after the work began. Only the parts that need nothing but the clock
+    /// answer (<see cref="Timeout"/>, <see cref="Cancellation"/>); by default a condition never stops here.
+    /// </summary>
+    /// <param name="elapsed">Time since the bake or query began.</param>
+    /// <param name="status">The status to end with, when stopping.</param>
+    /// <param name="reason">Why, when stopping.</param>
+    public virtual bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason)
+    {
+        status = PlannerStatus.Exact;
+        reason = "";
+        return false;
+    }
 
     private sealed class Predicate(Func<BakeState, bool> stop, PlannerStatus status, string reason) : TerminationCondition
     {
@@ -58,9 +78,40 @@ public abstract class TerminationCondition
         }
     }
 
+    private sealed class Deadline(TimeSpan budget) : TerminationCondition
+    {
+        private readonly string _reason = $"time budget of {budget.TotalSeconds:0.###} s spent";
+
+        public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
+            ShouldStopNow(state.Elapsed, out status, out reason);
+
+        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason)
+        {
+            status = PlannerStatus.Timeout;
+            reason = _reason;
+            return elapsed >= budget;
+        }
+    }
+
+    private sealed class Cancelled(CancellationToken token) : TerminationCondition
+    {
+        public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
+            ShouldStopNow(state.Elapsed, out status, out reason);
+
+        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason)
+        {
+            status = PlannerStatus.Cancelled;
+            reason = "cancelled";
+            return token.IsCancellationRequested;
+        }
+    }
+
     private sealed class Any(TerminationCondition left, TerminationCondition right) : TerminationCondition
     {
         public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
             left.ShouldStop(state, out status, out reason) || right.ShouldStop(state, out status, out reason);
+
+        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason) =>
+            left.ShouldStopNow(elapsed, out status, out reason) || right.ShouldStopNow(elapsed, out status, out reason);
     }
 }

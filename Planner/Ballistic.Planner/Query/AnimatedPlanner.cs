@@ -40,7 +40,10 @@ public sealed class AnimatedPlanner
     /// <param name="from">Requested start point, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
     /// <param name="bake">Seed, threads, node budget (<see cref="BakeSettings.MaxNodes"/>, required) and endpoint tolerance; its start, goal and stop-when-connected are set here.</param>
-    /// <param name="termination">An extra condition stopping every bake (cancellation, time budget).</param>
+    /// <param name="termination">
+    /// An extra condition stopping every bake and every plan (cancellation, a time budget, measured from the start
+    /// of each bake and each plan); a plan it stops has its status and reason.
+    /// </param>
     /// <param name="progress">Receives the bakes' progress.</param>
     /// <exception cref="ArgumentException">The settings are invalid or have no node budget.</exception>
     public (AnimatedPlan Plan, BakeResult Bake) BakeAndPlan(Vector3 from, Vector3 to, BakeSettings bake, TerminationCondition? termination = null, IProgress<BakeState>? progress = null)
@@ -63,9 +66,9 @@ public sealed class AnimatedPlanner
                 return (new AnimatedPlan(failed, null, [], 0), result);
             }
 
-            AnimatedPlan plan = Plan(result.Roadmap, from, to, query);
+            AnimatedPlan plan = Plan(result.Roadmap, from, to, query, termination: termination);
             int nodes = result.Roadmap.Nodes.Count;
-            if (plan.Result.Status == PlannerStatus.Exact || nodes >= budget || result.Status != PlannerStatus.Exact)
+            if (plan.Result.Status is PlannerStatus.Exact or PlannerStatus.Cancelled or PlannerStatus.Timeout || nodes >= budget || result.Status != PlannerStatus.Exact)
             {
                 return (plan, result);
             }
@@ -82,8 +85,13 @@ public sealed class AnimatedPlanner
     /// <param name="settings">Query settings (endpoint tolerance, connections).</param>
     /// <param name="rounds">Searches made at most.</param>
     /// <param name="frameRate">Animation frames per second.</param>
+    /// <param name="termination">
+    /// Stops the request early (its time and cancellation parts, measured from the request's start), checked before
+    /// every search, inside it, and before every animation: the result then has that condition's status
+    /// (<see cref="PlannerStatus.Cancelled"/>, <see cref="PlannerStatus.Timeout"/>) and reason. <c>null</c> for none.
+    /// </param>
     /// <exception cref="ArgumentException">The roadmap was baked for another level or character, or a count is not positive.</exception>
-    public AnimatedPlan Plan(Roadmap roadmap, Vector3 from, Vector3 to, QuerySettings? settings = null, int rounds = DefaultRounds, float frameRate = 60f)
+    public AnimatedPlan Plan(Roadmap roadmap, Vector3 from, Vector3 to, QuerySettings? settings = null, int rounds = DefaultRounds, float frameRate = 60f, TerminationCondition? termination = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
         var clock = Stopwatch.StartNew();
@@ -91,9 +99,17 @@ public sealed class AnimatedPlanner
         settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand };
         var rejectedPairs = new HashSet<(int From, int To)>();
         var rejected = new List<RejectedJump>();
-        PlanResult result = query.Plan(from, to, settings, rejectedPairs);
+
+        // The condition sees the time since this request began, not since each search began.
+        TerminationCondition? stop = termination is null ? null : new Elapsed(termination, clock);
+        PlanResult result = query.Plan(from, to, settings, rejectedPairs, stop);
         for (int round = 1; ; round++)
         {
+            if (result.Status is PlannerStatus.Cancelled or PlannerStatus.Timeout)
+            {
+                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, rejected, round);
+            }
+
             if (result.Status != PlannerStatus.Exact)
             {
                 PlanResult failed = rejected.Count == 0
@@ -109,6 +125,11 @@ public sealed class AnimatedPlanner
             if (result.Jumps.Count == 0)
             {
                 return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, rejected, round);
+            }
+
+            if (stop is not null && stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
+            {
+                return new AnimatedPlan(result with { Status = status, Reason = reason, Jumps = [], Elapsed = clock.Elapsed }, null, rejected, round);
             }
 
             JumpAnimation animation = Animator.Animate(result.Jumps, frameRate);
@@ -139,8 +160,18 @@ public sealed class AnimatedPlanner
                 return new AnimatedPlan(failed, null, rejected, round);
             }
 
-            result = query.Plan(from, to, settings, rejectedPairs);
+            result = query.Plan(from, to, settings, rejectedPairs, stop);
         }
+    }
+
+    /// <summary>A condition polled with the time since a whole request began, whatever the time its caller passes.</summary>
+    private sealed class Elapsed(TerminationCondition inner, Stopwatch clock) : TerminationCondition
+    {
+        public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
+            inner.ShouldStop(state with { Elapsed = clock.Elapsed }, out status, out reason);
+
+        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason) =>
+            inner.ShouldStopNow(clock.Elapsed, out status, out reason);
     }
 
     /// <summary>"1 jump", "3 jumps".</summary>

@@ -1,7 +1,5 @@
 using System.Diagnostics;
 using System.Numerics;
-using Ballistic.Planner.Characters;
-using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
@@ -10,15 +8,37 @@ using Ballistic.Planner.Steering;
 namespace Ballistic.Planner.Query;
 
 /// <summary>
-/// Online path request (paper §5): the start and goal points are turned into valid root poses nearby, linked to
-/// the roadmap by the steering method, and A* finds the sequence of jumps of least total flight time. The baked
-/// roadmap is not modified. Work is bounded by the roadmap's size.
+/// Online path request (paper §5): the start and goal are turned into valid root poses nearby (or given as
+/// stances already evaluated), linked to the roadmap by the steering method, and A* finds the sequence of jumps of
+/// least total flight time. The baked roadmap is not modified. Work is bounded by the roadmap's size.
 /// </summary>
+/// <remarks>
+/// A query owns scratch memory reused from one request to the next (search costs, back-pointers, the open list),
+/// so that a request between two roadmap nodes allocates little more than its result. It is therefore not
+/// thread-safe: use one <see cref="PathQuery"/> per thread. The <see cref="Roadmap"/> and the
+/// <see cref="PlanningScene"/> are thread-safe and may be shared by any number of queries on any threads.
+/// </remarks>
 public sealed class PathQuery
 {
+    /// <summary>A* polls the termination condition every this many expansions.</summary>
+    private const int PollEvery = 1024;
+
     private readonly PlanningScene _scene;
     private readonly Roadmap _roadmap;
-    private SearchGraph? _graph;
+
+    // Scratch of the search, valid for the current generation only (so nothing is cleared between requests).
+    private readonly float[] _cost;
+    private readonly (int Node, int Edge)[] _cameFrom; // edge ≥ 0: roadmap edge; < 0: extra edge ~index
+    private readonly int[] _reached;
+    private readonly int[] _closed;
+    private readonly int[] _extraFirst;
+    private readonly int[] _extraLast;
+    private readonly int[] _extraStamp;
+    private readonly List<int> _extraNext = [];
+    private readonly List<(int From, int To, BallisticArc Arc)> _extra = [];
+    private readonly PriorityQueue<int, float> _open = new();
+    private readonly List<(float Distance, int Id)> _nearest = [];
+    private int _generation;
 
     /// <summary>Creates a query over a roadmap baked for the scene's level and character.</summary>
     /// <exception cref="ArgumentException">The roadmap was baked for another level or character.</exception>
@@ -38,7 +58,18 @@ public sealed class PathQuery
 
         _scene = scene;
         _roadmap = roadmap;
+        int count = roadmap.Nodes.Count + 2;
+        _cost = new float[count];
+        _cameFrom = new (int, int)[count];
+        _reached = new int[count];
+        _closed = new int[count];
+        _extraFirst = new int[count];
+        _extraLast = new int[count];
+        _extraStamp = new int[count];
     }
+
+    /// <summary>The roadmap searched.</summary>
+    public Roadmap Roadmap => _roadmap;
 
     /// <summary>Plans from the point <paramref name="from"/> to the point <paramref name="to"/> (world metres).</summary>
     public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings = null) => Plan(from, to, settings, rejected: null);
@@ -47,52 +78,170 @@ public sealed class PathQuery
     /// Plans from the point <paramref name="from"/> to the point <paramref name="to"/> (world metres), never using a
     /// jump between the node pairs in <paramref name="rejected"/> (node ids as in <see cref="Jump"/>: roadmap ids, or
     /// the start's and goal's ids). Start and goal are placed by <see cref="TrunkSampler.Place"/>, deterministically:
-    /// when the roadmap already holds that very pose (a bake given the same points), that node is used as is.
+    /// when the roadmap already holds that very pose (a bake given the same points), that node is used as is;
+    /// otherwise the start gets id n and the goal id n + 1 (n the roadmap's node count).
     /// </summary>
-    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected)
+    /// <param name="from">Requested start point, world metres.</param>
+    /// <param name="to">Requested goal point, world metres.</param>
+    /// <param name="settings">Endpoint tolerance, stance check and connections; defaults when <c>null</c>.</param>
+    /// <param name="rejected">Jumps (takeoff id, landing id) not to use, or <c>null</c>.</param>
+    /// <param name="termination">
+    /// Stops the request early (its time and cancellation parts, <see cref="TerminationCondition.ShouldStopNow"/>,
+    /// polled before each placement, between steering calls and during the search, the time measured from the
+    /// request's start): the result then has that condition's status (<see cref="PlannerStatus.Timeout"/>,
+    /// <see cref="PlannerStatus.Cancelled"/>) and reason. <c>null</c> for none.
+    /// </param>
+    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination = null)
     {
         settings ??= new QuerySettings();
         var clock = Stopwatch.StartNew();
+        if (Stopped(termination, clock, null, null) is { } early)
+        {
+            return early;
+        }
+
         EndpointPlacement startPlacement = _scene.Sampler.Place(from, settings.Tolerance, settings.CanStand);
         if (startPlacement.Pose is not { } startPose)
         {
             return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
         }
 
-        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
         int n = _roadmap.Nodes.Count;
-        RoadmapNode start = Existing(startPose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
+        RoadmapNode start = Existing(startPose.Pose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
+        if (Stopped(termination, clock, start, null) is { } stopped)
+        {
+            return stopped with { StartPlacement = startPlacement };
+        }
+
+        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
         if (goalPlacement.Pose is not { } goalPose)
         {
             return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, start, null, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
         }
 
-        RoadmapNode goal = Existing(goalPose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
-        if (goal.Id == start.Id)
+        RoadmapNode goal = Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
+        return Connect(start, goal, settings, rejected, termination, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+    }
+
+    /// <summary>
+    /// Plans from an already evaluated stance <paramref name="start"/> (an agent standing on the roadmap, or where
+    /// a previous plan left it) to the point <paramref name="to"/> (world metres). A roadmap node (same
+    /// <see cref="RoadmapNode.Id"/> and equal pose as the roadmap's node of that id) is used directly: no sampling,
+    /// no steering. Any other stance, such as the goal node of a previous query, is steered into the roadmap like a
+    /// placed start, as id n (n the roadmap's node count; the roadmap's own node when it holds that very pose). The
+    /// goal is placed as by <see cref="Plan(Vector3, Vector3, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>.
+    /// </summary>
+    /// <param name="start">The stance the path starts from: root pose, friction cone and contacts, world frame.</param>
+    /// <param name="to">Requested goal point, world metres.</param>
+    /// <param name="settings">Endpoint tolerance, stance check and connections; defaults when <c>null</c>.</param>
+    /// <param name="rejected">Jumps (takeoff id, landing id, as in the result) not to use, or <c>null</c>.</param>
+    /// <param name="termination">Stops the request early (see the point-to-point overload); <c>null</c> for none.</param>
+    public PlanResult Plan(RoadmapNode start, Vector3 to, QuerySettings? settings = null, IReadOnlySet<(int From, int To)>? rejected = null, TerminationCondition? termination = null)
+    {
+        ArgumentNullException.ThrowIfNull(start);
+        settings ??= new QuerySettings();
+        var clock = Stopwatch.StartNew();
+        int n = _roadmap.Nodes.Count;
+        RoadmapNode from = Resolve(start, n);
+        if (Stopped(termination, clock, from, null) is { } early)
         {
-            return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+            return early;
         }
 
-        // Extra edges of the query: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
-        var extra = new List<(int From, int To, BallisticArc Arc)>();
+        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
+        if (goalPlacement.Pose is not { } goalPose)
+        {
+            return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, from, null, clock) with { GoalPlacement = goalPlacement };
+        }
+
+        RoadmapNode goal = Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
+        return Connect(from, goal, settings, rejected, termination, clock) with { GoalPlacement = goalPlacement };
+    }
+
+    /// <summary>
+    /// Plans between two already evaluated stances. Roadmap nodes (same id and equal pose as the roadmap's) are used
+    /// directly, with no sampling or steering: between two of them the request is an A* search over the roadmap
+    /// alone. Other stances are steered into the roadmap, the start as id n and the goal as id n + 1 (n the
+    /// roadmap's node count), unless the roadmap holds that very pose.
+    /// </summary>
+    /// <param name="start">The stance the path starts from, world frame.</param>
+    /// <param name="goal">The stance the path ends on, world frame.</param>
+    /// <param name="settings">Connections for stances off the roadmap; defaults when <c>null</c> (the tolerance and stance check are not used).</param>
+    /// <param name="rejected">Jumps (takeoff id, landing id, as in the result) not to use, or <c>null</c>.</param>
+    /// <param name="termination">Stops the request early (see the point-to-point overload); <c>null</c> for none.</param>
+    public PlanResult Plan(RoadmapNode start, RoadmapNode goal, QuerySettings? settings = null, IReadOnlySet<(int From, int To)>? rejected = null, TerminationCondition? termination = null)
+    {
+        ArgumentNullException.ThrowIfNull(start);
+        ArgumentNullException.ThrowIfNull(goal);
+        settings ??= new QuerySettings();
+        var clock = Stopwatch.StartNew();
+        int n = _roadmap.Nodes.Count;
+        RoadmapNode from = Resolve(start, n);
+        RoadmapNode to = _roadmap.Holds(goal) ? goal
+            : _roadmap.FindPose(goal.Pose) is int id ? _roadmap.Node(id)
+            : from.Pose == goal.Pose ? from
+            : goal.Id == n + 1 ? goal : goal with { Id = n + 1 };
+        return Connect(from, to, settings, rejected, termination, clock);
+    }
+
+    /// <summary>A stance as the search sees it: the roadmap's node when it is one (or holds its pose), otherwise the stance as id <paramref name="outsideId"/>.</summary>
+    private RoadmapNode Resolve(RoadmapNode node, int outsideId) =>
+        _roadmap.Holds(node) ? node
+        : _roadmap.FindPose(node.Pose) is int id ? _roadmap.Node(id)
+        : node.Id == outsideId ? node : node with { Id = outsideId };
+
+    /// <summary>The roadmap node with exactly this pose (the bake placed the same point), or <c>null</c>.</summary>
+    private RoadmapNode? Existing(in Geometry.RootPose pose) => _roadmap.FindPose(pose) is int id ? _roadmap.Node(id) : null;
+
+    /// <summary>Links the start and goal to the roadmap (those not in it) and searches.</summary>
+    private PlanResult Connect(RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
+    {
+        if (goal.Id == start.Id)
+        {
+            return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed);
+        }
+
+        // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
+        int n = _roadmap.Nodes.Count;
+        _extra.Clear();
         bool startIsNew = start.Id >= n;
         bool goalIsNew = goal.Id >= n;
-        if ((startIsNew || goalIsNew) && rejected?.Contains((start.Id, goal.Id)) != true &&
-            _scene.Steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
+        ParabolaSteering steering = _scene.Steering;
+        if (startIsNew || goalIsNew)
         {
-            extra.Add((start.Id, goal.Id, direct.Arc));
+            if (Stopped(termination, clock, start, goal) is { } stopped)
+            {
+                return stopped;
+            }
+
+            if (rejected?.Contains((start.Id, goal.Id)) != true &&
+                steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
+            {
+                _extra.Add((start.Id, goal.Id, direct.Arc));
+            }
         }
 
         if (startIsNew)
         {
             int connected = 0;
-            foreach (int j in Nearest(start.Pose.Position, settings.MaxNeighbours))
+            _roadmap.Nearest(start.Pose.Position, steering.Limits, settings.MaxNeighbours, _nearest);
+            foreach ((_, int j) in _nearest)
             {
-                RoadmapNode node = _roadmap.Nodes[j];
-                SteeringResult r = _scene.Steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
-                if (r.Succeeded && rejected?.Contains((start.Id, j)) != true)
+                if (rejected?.Contains((start.Id, j)) == true)
                 {
-                    extra.Add((start.Id, j, r.Arc));
+                    continue;
+                }
+
+                if (Stopped(termination, clock, start, goal) is { } stopped)
+                {
+                    return stopped;
+                }
+
+                RoadmapNode node = _roadmap.Node(j);
+                SteeringResult r = steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
+                if (r.Succeeded)
+                {
+                    _extra.Add((start.Id, j, r.Arc));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -104,13 +253,24 @@ public sealed class PathQuery
         if (goalIsNew)
         {
             int connected = 0;
-            foreach (int j in Nearest(goal.Pose.Position, settings.MaxNeighbours))
+            _roadmap.Nearest(goal.Pose.Position, steering.Limits, settings.MaxNeighbours, _nearest);
+            foreach ((_, int j) in _nearest)
             {
-                RoadmapNode node = _roadmap.Nodes[j];
-                SteeringResult r = _scene.Steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
-                if (r.Succeeded && rejected?.Contains((j, goal.Id)) != true)
+                if (rejected?.Contains((j, goal.Id)) == true)
                 {
-                    extra.Add((j, goal.Id, r.Arc));
+                    continue;
+                }
+
+                if (Stopped(termination, clock, start, goal) is { } stopped)
+                {
+                    return stopped;
+                }
+
+                RoadmapNode node = _roadmap.Node(j);
+                SteeringResult r = steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
+                if (r.Succeeded)
+                {
+                    _extra.Add((j, goal.Id, r.Arc));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -119,94 +279,113 @@ public sealed class PathQuery
             }
         }
 
-        List<Jump>? path = AStar(start, goal, extra, rejected);
+        List<Jump>? path = AStar(start, goal, rejected, termination, clock, out int expansions, out PlanResult? cut);
+        if (cut is not null)
+        {
+            return cut with { Expansions = expansions };
+        }
+
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {AnimatedPlanner.Jumps(rejected.Count)} set aside" : ""), start, goal, clock)
             : new PlanResult(PlannerStatus.Exact, $"{AnimatedPlanner.Jumps(path.Count)} found", start, goal, path, clock.Elapsed);
-        return result with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
-    }
-
-    /// <summary>The roadmap node with exactly this pose (the bake placed the same point), or <c>null</c>.</summary>
-    private RoadmapNode? Existing(PoseEvaluation pose)
-    {
-        foreach (RoadmapNode node in _roadmap.Nodes)
-        {
-            if (node.Pose == pose.Pose)
-            {
-                return node;
-            }
-        }
-
-        return null;
+        return result with { Expansions = expansions };
     }
 
     /// <summary>
-    /// A* over the roadmap plus the query's extra edges. Cost: flight time. Heuristic: horizontal distance to the
+    /// A* over the roadmap plus the request's extra edges. Cost: flight time. Heuristic: horizontal distance to the
     /// goal divided by the fastest horizontal speed of any edge, a lower bound on the remaining flight time (every
     /// jump covers its horizontal distance at most that fast), so the path found is of least total flight time.
     /// </summary>
-    private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, List<(int From, int To, BallisticArc Arc)> extra, IReadOnlySet<(int From, int To)>? rejected)
+    private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out int expansions, out PlanResult? cut)
     {
-        SearchGraph graph = Graph();
-        int roadmapCount = graph.Positions.Length;
-        int count = roadmapCount + 2;
-        var extraOut = new List<int>?[count];
+        int generation = NextGeneration();
+        expansions = 0;
+        cut = null;
         float fastest = _roadmap.MaxHorizontalSpeed;
-        for (int e = 0; e < extra.Count; e++)
+        _extraNext.Clear();
+        for (int e = 0; e < _extra.Count; e++)
         {
-            (extraOut[extra[e].From] ??= []).Add(e);
-            fastest = MathF.Max(fastest, extra[e].Arc.HorizontalSpeed);
+            int from = _extra[e].From;
+            _extraNext.Add(-1);
+            if (_extraStamp[from] != generation)
+            {
+                _extraStamp[from] = generation;
+                _extraFirst[from] = e;
+            }
+            else
+            {
+                _extraNext[_extraLast[from]] = e;
+            }
+
+            _extraLast[from] = e;
+            fastest = MathF.Max(fastest, _extra[e].Arc.HorizontalSpeed);
         }
 
         float inverseSpeed = fastest > 0f ? 1f / fastest : 0f;
         Vector2 target = new(goal.Pose.Position.X, goal.Pose.Position.Z);
-        var cost = new float[count];
-        Array.Fill(cost, float.PositiveInfinity);
-        var cameFrom = new (int Node, int Edge)[count]; // edge ≥ 0: roadmap edge; < 0: extra edge ~index
-        var closed = new bool[count];
-        var open = new PriorityQueue<int, float>();
+        int roadmapCount = _roadmap.Nodes.Count;
+        ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
+        ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
+        ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
+        ReadOnlySpan<int> edges = _roadmap.OutgoingEdges;
+        Vector2[] positions = _roadmap.Horizontal;
+        float[] cost = _cost;
+        int[] reached = _reached;
+        int[] closed = _closed;
+        PriorityQueue<int, float> open = _open;
+        open.Clear();
         cost[start.Id] = 0f;
+        reached[start.Id] = generation;
         open.Enqueue(start.Id, 0f);
         while (open.TryDequeue(out int node, out _))
         {
-            if (closed[node])
+            if (closed[node] == generation)
             {
                 continue;
             }
 
-            closed[node] = true;
+            closed[node] = generation;
             if (node == goal.Id)
             {
-                return Reconstruct(start, goal, cameFrom, extra);
+                expansions++;
+                return Reconstruct(start, goal);
+            }
+
+            if (++expansions % PollEvery == 0 && Stopped(termination, clock, start, goal) is { } stopped)
+            {
+                cut = stopped;
+                return null;
             }
 
             float here = cost[node];
             if (node < roadmapCount)
             {
-                for (int i = graph.Offsets[node]; i < graph.Offsets[node + 1]; i++)
+                for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    int next = graph.Targets[i];
-                    float candidate = here + graph.Times[i];
-                    if (!closed[next] && candidate < cost[next] && rejected?.Contains((node, next)) != true)
+                    int next = targets[i];
+                    float candidate = here + times[i];
+                    if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
                     {
                         cost[next] = candidate;
-                        cameFrom[next] = (node, graph.EdgeIndex[i]);
-                        open.Enqueue(next, candidate + (Vector2.Distance(target, graph.Positions[next]) * inverseSpeed));
+                        reached[next] = generation;
+                        _cameFrom[next] = (node, edges[i]);
+                        open.Enqueue(next, candidate + (Vector2.Distance(target, positions[next]) * inverseSpeed));
                     }
                 }
             }
 
-            if (extraOut[node] is { } list)
+            if (_extraStamp[node] == generation)
             {
-                foreach (int e in list)
+                for (int e = _extraFirst[node]; e >= 0; e = _extraNext[e])
                 {
-                    int next = extra[e].To;
-                    float candidate = here + extra[e].Arc.FlightTime;
-                    if (!closed[next] && candidate < cost[next] && rejected?.Contains((node, next)) != true)
+                    int next = _extra[e].To;
+                    float candidate = here + _extra[e].Arc.FlightTime;
+                    if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
                     {
                         cost[next] = candidate;
-                        cameFrom[next] = (node, ~e);
-                        Vector2 p = next == goal.Id ? target : graph.Positions[next];
+                        reached[next] = generation;
+                        _cameFrom[next] = (node, ~e);
+                        Vector2 p = next == goal.Id ? target : positions[next];
                         open.Enqueue(next, candidate + (Vector2.Distance(target, p) * inverseSpeed));
                     }
                 }
@@ -216,77 +395,40 @@ public sealed class PathQuery
         return null;
     }
 
-    /// <summary>The roadmap in compressed rows for the search, rebuilt when the roadmap has grown.</summary>
-    private SearchGraph Graph()
+    /// <summary>A fresh generation of the scratch arrays (cleared only when the counter wraps).</summary>
+    private int NextGeneration()
     {
-        if (_graph is { } g && g.EdgeCount == _roadmap.Edges.Count && g.Positions.Length == _roadmap.Nodes.Count)
+        if (_generation == int.MaxValue)
         {
-            return g;
+            Array.Clear(_reached);
+            Array.Clear(_closed);
+            Array.Clear(_extraStamp);
+            _generation = 0;
         }
 
-        int n = _roadmap.Nodes.Count;
-        var offsets = new int[n + 1];
-        var positions = new Vector2[n];
-        for (int i = 0; i < n; i++)
-        {
-            offsets[i + 1] = offsets[i] + _roadmap.Outgoing(i).Count;
-            Vector3 p = _roadmap.Nodes[i].Pose.Position;
-            positions[i] = new Vector2(p.X, p.Z);
-        }
-
-        var targets = new int[offsets[n]];
-        var times = new float[offsets[n]];
-        var edges = new int[offsets[n]];
-        for (int i = 0; i < n; i++)
-        {
-            int k = offsets[i];
-            foreach (int e in _roadmap.Outgoing(i))
-            {
-                targets[k] = _roadmap.EdgeTargets[e];
-                times[k] = _roadmap.EdgeFlightTimes[e];
-                edges[k++] = e;
-            }
-        }
-
-        _graph = new SearchGraph(offsets, targets, times, edges, positions, _roadmap.Edges.Count);
-        return _graph;
+        return ++_generation;
     }
 
-    private sealed record SearchGraph(int[] Offsets, int[] Targets, float[] Times, int[] EdgeIndex, Vector2[] Positions, int EdgeCount);
-
-    private List<Jump> Reconstruct(RoadmapNode start, RoadmapNode goal, (int Node, int Edge)[] cameFrom, List<(int From, int To, BallisticArc Arc)> extra)
+    private List<Jump> Reconstruct(RoadmapNode start, RoadmapNode goal)
     {
-        RoadmapNode NodeAt(int id) => id == start.Id ? start : id == goal.Id ? goal : _roadmap.Nodes[id];
+        RoadmapNode NodeAt(int id) => id == start.Id ? start : id == goal.Id ? goal : _roadmap.Node(id);
         var jumps = new List<Jump>();
-        for (int node = goal.Id; node != start.Id; node = cameFrom[node].Node)
+        for (int node = goal.Id; node != start.Id; node = _cameFrom[node].Node)
         {
-            int edge = cameFrom[node].Edge;
-            BallisticArc arc = edge >= 0 ? _roadmap.Edges[edge].Arc : extra[~edge].Arc;
-            jumps.Add(new Jump(NodeAt(cameFrom[node].Node), NodeAt(node), arc));
+            int edge = _cameFrom[node].Edge;
+            BallisticArc arc = edge >= 0 ? _roadmap.Edge(edge).Arc : _extra[~edge].Arc;
+            jumps.Add(new Jump(NodeAt(_cameFrom[node].Node), NodeAt(node), arc));
         }
 
         jumps.Reverse();
         return jumps;
     }
 
-    /// <summary>Up to <paramref name="count"/> roadmap nodes nearest to <paramref name="point"/> within jump reach of it.</summary>
-    private List<int> Nearest(Vector3 point, int count)
-    {
-        SteeringLimits limits = _scene.Steering.Limits;
-        var candidates = new List<(float Distance, int Id)>();
-        foreach (RoadmapNode node in _roadmap.Nodes)
-        {
-            Vector3 q = node.Pose.Position;
-            float x = new Vector2(q.X - point.X, q.Z - point.Z).Length();
-            if (x <= limits.MaxReach(point.Y - q.Y) || x <= limits.MaxReach(q.Y - point.Y))
-            {
-                candidates.Add((Vector3.Distance(point, q), node.Id));
-            }
-        }
-
-        candidates.Sort();
-        return [.. candidates.Take(count).Select(c => c.Id)];
-    }
+    /// <summary>The failure to return when <paramref name="termination"/> says to stop now, otherwise <c>null</c>.</summary>
+    private static PlanResult? Stopped(TerminationCondition? termination, Stopwatch clock, RoadmapNode? start, RoadmapNode? goal) =>
+        termination is not null && termination.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason)
+            ? Fail(status, reason, start, goal, clock)
+            : null;
 
     private static PlanResult Fail(PlannerStatus status, string reason, RoadmapNode? start, RoadmapNode? goal, Stopwatch clock) =>
         new(status, reason, start, goal, [], clock.Elapsed);

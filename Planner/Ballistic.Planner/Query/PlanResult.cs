@@ -19,6 +19,12 @@ public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode
     /// <summary>Where the requested goal put the goal stance (distances included), when the query got that far.</summary>
     public EndpointPlacement? GoalPlacement { get; init; }
 
+    /// <summary>
+    /// How many nodes the A* search expanded (0 when the request ended before searching): a measure of the search's
+    /// work, for callers that budget many requests.
+    /// </summary>
+    public int Expansions { get; init; }
+
     /// <summary>Total flight time of the path, seconds.</summary>
     public float TotalFlightTime => Jumps.Sum(j => j.Arc.FlightTime);
 }

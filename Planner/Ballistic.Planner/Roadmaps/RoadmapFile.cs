@@ -224,7 +224,7 @@ public static class RoadmapFile
         string character = Convert.ToHexStringLower(r.ReadBytes(32));
         string characterName = r.ReadString();
         int seed = r.ReadInt32();
-        var roadmap = new Roadmap(level, character, characterName, seed);
+        var roadmap = new RoadmapBuilder(level, character, characterName, seed);
         int nodeCount = Count(r, payload.Length, name, "nodes");
         for (int i = 0; i < nodeCount; i++)
         {
@@ -291,7 +291,7 @@ public static class RoadmapFile
             throw new RoadmapFileException($"Roadmap file {name} is corrupt ({payload.Length - r.BaseStream.Position} unexpected bytes after the edges).");
         }
 
-        return roadmap;
+        return roadmap.Freeze();
     }
 
     /// <summary>The farthest a node or contact may lie from the origin, metres.</summary>

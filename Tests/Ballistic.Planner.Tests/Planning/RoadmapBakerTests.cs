@@ -124,7 +124,7 @@ public sealed class RoadmapBakerTests
         var baker = new RoadmapBaker(Scene.Value);
         using var cancelled = new CancellationTokenSource();
         cancelled.Cancel();
-        BakeResult cancelledBake = baker.Bake(new BakeSettings { MaxNodes = 1_000 }, cancellationToken: cancelled.Token);
+        BakeResult cancelledBake = baker.Bake(new BakeSettings { MaxNodes = 1_000 }, TerminationCondition.Cancellation(cancelled.Token));
         BakeResult timed = baker.Bake(new BakeSettings { MaxNodes = null, TimeLimit = TimeSpan.FromMilliseconds(200) });
         BakeResult custom = baker.Bake(new BakeSettings { MaxNodes = 1_000 }, TerminationCondition.When(s => s.Edges >= 30, PlannerStatus.Exact, "enough jumps"));
         BakeResult connected = baker.Bake(new BakeSettings { MaxNodes = 500, Start = GapCourse.From, Goal = GapCourse.To, StopWhenConnected = true });

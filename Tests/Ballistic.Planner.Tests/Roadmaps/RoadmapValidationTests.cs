@@ -33,7 +33,7 @@ public sealed class RoadmapValidationTests
     private string Tampered(Func<RoadmapNode, RoadmapNode>? node = null, Func<RoadmapEdge, RoadmapEdge>? edge = null)
     {
         Roadmap good = Baked.Value;
-        var copy = new Roadmap(good.LevelFingerprint, good.CharacterFingerprint, good.CharacterName, good.Seed);
+        var copy = new RoadmapBuilder(good.LevelFingerprint, good.CharacterFingerprint, good.CharacterName, good.Seed);
         foreach (RoadmapNode n in good.Nodes)
         {
             copy.AddNode(n.Id == 3 && node is not null ? node(n) : n);
@@ -45,7 +45,7 @@ public sealed class RoadmapValidationTests
         }
 
         string path = Path.Combine(_folder, $"{Guid.NewGuid():N}.roadmap");
-        File.WriteAllBytes(path, RoadmapFile.ToBytes(copy));
+        File.WriteAllBytes(path, RoadmapFile.ToBytes(copy.Freeze()));
         return path;
     }
 

@@ -1,0 +1,112 @@
+namespace Ballistic.Planner.Roadmaps;
+
+/// <summary>
+/// A roadmap under construction: nodes and edges are added in order (the bake, a file being read), then
+/// <see cref="Freeze"/> makes the immutable <see cref="Roadmap"/> that queries use. Not thread-safe.
+/// </summary>
+public sealed class RoadmapBuilder
+{
+    private readonly List<RoadmapNode> _nodes = [];
+    private readonly List<RoadmapEdge> _edges = [];
+    private readonly List<List<int>> _outgoing = [];
+
+    /// <summary>Creates an empty roadmap for a level and character.</summary>
+    /// <param name="levelFingerprint">The level's <see cref="Levels.Level.Fingerprint"/>.</param>
+    /// <param name="characterFingerprint">The character's <see cref="Characters.ReducedCharacter.Fingerprint"/>.</param>
+    /// <param name="characterName">The character's name, for messages.</param>
+    /// <param name="seed">The seed the roadmap was baked with.</param>
+    public RoadmapBuilder(string levelFingerprint, string characterFingerprint, string characterName, int seed)
+    {
+        ArgumentNullException.ThrowIfNull(levelFingerprint);
+        ArgumentNullException.ThrowIfNull(characterFingerprint);
+        ArgumentNullException.ThrowIfNull(characterName);
+        LevelFingerprint = levelFingerprint;
+        CharacterFingerprint = characterFingerprint;
+        CharacterName = characterName;
+        Seed = seed;
+    }
+
+    /// <summary>Fingerprint of the level the roadmap is baked on.</summary>
+    public string LevelFingerprint { get; }
+
+    /// <summary>Fingerprint of the character the roadmap is baked for.</summary>
+    public string CharacterFingerprint { get; }
+
+    /// <summary>Name of the character the roadmap is baked for.</summary>
+    public string CharacterName { get; }
+
+    /// <summary>Seed of the bake.</summary>
+    public int Seed { get; }
+
+    /// <summary>The nodes so far, indexed by id.</summary>
+    public IReadOnlyList<RoadmapNode> Nodes => _nodes;
+
+    /// <summary>The edges so far, in insertion order.</summary>
+    public IReadOnlyList<RoadmapEdge> Edges => _edges;
+
+    /// <summary>Adds a node; its id must be the current node count.</summary>
+    /// <exception cref="ArgumentException">The node's id is not the next id.</exception>
+    public void AddNode(RoadmapNode node)
+    {
+        ArgumentNullException.ThrowIfNull(node);
+        if (node.Id != _nodes.Count)
+        {
+            throw new ArgumentException($"Node id {node.Id} is not the next id {_nodes.Count}.", nameof(node));
+        }
+
+        _nodes.Add(node);
+        _outgoing.Add([]);
+    }
+
+    /// <summary>Adds a directed edge between existing nodes.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">An endpoint is not a node of this roadmap.</exception>
+    public void AddEdge(RoadmapEdge edge)
+    {
+        if ((uint)edge.From >= (uint)_nodes.Count || (uint)edge.To >= (uint)_nodes.Count)
+        {
+            throw new ArgumentOutOfRangeException(nameof(edge), $"Edge {edge.From} → {edge.To} names a node outside 0..{_nodes.Count - 1}.");
+        }
+
+        _outgoing[edge.From].Add(_edges.Count);
+        _edges.Add(edge);
+    }
+
+    /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/> in the roadmap so far.</summary>
+    public bool Reaches(int from, int to)
+    {
+        if (from == to)
+        {
+            return true;
+        }
+
+        var seen = new bool[_nodes.Count];
+        var stack = new Stack<int>();
+        stack.Push(from);
+        seen[from] = true;
+        while (stack.Count > 0)
+        {
+            foreach (int e in _outgoing[stack.Pop()])
+            {
+                int next = _edges[e].To;
+                if (next == to)
+                {
+                    return true;
+                }
+
+                if (!seen[next])
+                {
+                    seen[next] = true;
+                    stack.Push(next);
+                }
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>
+    /// The roadmap so far as an immutable <see cref="Roadmap"/>, with its search arrays and spatial index built
+    /// now. The builder stays usable: later additions do not change the roadmaps already frozen.
+    /// </summary>
+    public Roadmap Freeze() => new(LevelFingerprint, CharacterFingerprint, CharacterName, Seed, [.. _nodes], [.. _edges]);
+}
