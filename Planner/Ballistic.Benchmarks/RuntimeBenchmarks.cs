@@ -17,6 +17,7 @@ namespace Ballistic.Benchmarks;
 /// budget of 25 searches per tick.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class RuntimeBenchmarks
 {
     private CharacterKind _kind = null!;
