@@ -194,16 +194,14 @@ public sealed class PathQuery
 
     /// <summary>
     /// Where a requested point puts a stance: a roadmap node when <see cref="QuerySettings.PreferRoadmapNodes"/> finds
-    /// one close enough that can stand there (<paramref name="node"/>), otherwise <see cref="TrunkSampler.Place"/>.
+    /// one within the tolerance that can stand there (<paramref name="node"/>), otherwise <see cref="TrunkSampler.Place"/>.
     /// </summary>
     private EndpointPlacement Locate(Vector3 point, QuerySettings settings, out RoadmapNode? node)
     {
         node = null;
         if (settings.PreferRoadmapNodes)
         {
-            EndpointTolerance tolerance = settings.Tolerance;
-            tolerance.Validate();
-            if (_roadmap.FindNode(point, new EndpointTolerance(QuerySettings.ReuseShare * tolerance.Across, QuerySettings.ReuseShare * tolerance.UpDown)) is int id)
+            if (_roadmap.FindNode(point, settings.Tolerance) is int id)
             {
                 RoadmapNode found = _roadmap.Node(id);
                 var stance = new PoseEvaluation(found.Pose, PoseValidity.Valid, found.Contacts, found.Cone);

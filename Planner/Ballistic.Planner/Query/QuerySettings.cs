@@ -22,15 +22,12 @@ public sealed record QuerySettings
     public int Connections { get; init; } = 4;
 
     /// <summary>
-    /// When true, a requested point with a roadmap node standing within <see cref="ReuseShare"/> of the tolerance
-    /// (its contact centre within that share of <see cref="EndpointTolerance.Across"/> horizontally and of
-    /// <see cref="EndpointTolerance.UpDown"/> vertically, the nearest such, <see cref="Roadmaps.Roadmap.FindNode"/>)
-    /// that passes <see cref="CanStand"/> is served by that node: no placement, no steering, a tenth of the work.
-    /// Off by default, because the stance then depends on the roadmap: a query given the points a bake was given
-    /// may then start or end on another node than the bake placed there.
+    /// When true, a requested point with a roadmap node standing within <see cref="Tolerance"/> of it (the one
+    /// <see cref="Roadmaps.Roadmap.FindNode"/> finds: contact centre nearest the point) that passes
+    /// <see cref="CanStand"/> is served by that node, with no placement and no steering: the request then costs about
+    /// what a request between roadmap nodes costs. Off by default, because the stance then depends on the roadmap
+    /// rather than on the point alone (<see cref="TrunkSampler.Place"/>): a query given the points a bake was given
+    /// may start or end on another node than the one the bake placed there.
     /// </summary>
     public bool PreferRoadmapNodes { get; init; }
-
-    /// <summary>Share of the tolerance within which <see cref="PreferRoadmapNodes"/> takes a roadmap node (0.35, as close as <see cref="TrunkSampler.Place"/> takes a stance at once).</summary>
-    public const float ReuseShare = 0.35f;
 }

@@ -266,7 +266,7 @@ public sealed class PathQueryTests
     }
 
     [Test]
-    public void PreferringRoadmapNodesSkipsPlacementWhenOneStandsCloseEnough()
+    public void PreferringRoadmapNodesSkipsPlacementWhenOneStandsWithinTheTolerance()
     {
         Roadmap roadmap = Plain.Value;
         var query = new PathQuery(Scene.Value, roadmap);
@@ -286,7 +286,7 @@ public sealed class PathQueryTests
 
                 Assert.That(result.StartPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
                 Assert.That(result.StartPlacement.UpDown, Is.LessThanOrEqualTo(0.25f));
-                var close = new EndpointTolerance(0.5f * QuerySettings.ReuseShare, 0.25f * QuerySettings.ReuseShare);
+                var close = new EndpointTolerance();
                 int? nearTo = roadmap.FindNode(to, close);
                 if (roadmap.FindNode(from, close) is int near)
                 {
