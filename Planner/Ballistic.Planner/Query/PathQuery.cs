@@ -87,7 +87,9 @@ public sealed class PathQuery
     /// jump between the node pairs in <paramref name="rejected"/> (node ids as in <see cref="Jump"/>: roadmap ids, or
     /// the start's and goal's ids). Start and goal are placed by <see cref="TrunkSampler.Place"/>, deterministically:
     /// when the roadmap already holds that very pose (a bake given the same points), that node is used as is;
-    /// otherwise the start gets id n and the goal id n + 1 (n the roadmap's node count).
+    /// otherwise the start gets id n and the goal id n + 1 (n the roadmap's node count). With
+    /// <see cref="QuerySettings.PreferRoadmapNodes"/>, a roadmap node standing within the tolerance of a point
+    /// (<see cref="Roadmap.FindNode"/>) is taken instead of placing a stance there.
     /// </summary>
     /// <param name="from">Requested start point, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
