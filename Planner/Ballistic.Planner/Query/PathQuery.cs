@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
@@ -226,7 +227,7 @@ public sealed class PathQuery
         : node.Id == outsideId ? node : node with { Id = outsideId };
 
     /// <summary>The roadmap node with exactly this pose (the bake placed the same point), or <c>null</c>.</summary>
-    private RoadmapNode? Existing(in Characters.RootPose pose) => _roadmap.FindPose(pose) is int id ? _roadmap.Node(id) : null;
+    private RoadmapNode? Existing(in RootPose pose) => _roadmap.FindPose(pose) is int id ? _roadmap.Node(id) : null;
 
     /// <summary>Links the start and goal to the roadmap (those not in it) and searches.</summary>
     private PlanResult Connect(RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)

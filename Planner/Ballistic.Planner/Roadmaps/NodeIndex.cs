@@ -22,9 +22,11 @@ namespace Ballistic.Planner.Roadmaps;
 /// reach and tolerances are decided by the exact tests after the grid has narrowed the candidates.
 /// </para>
 /// <para>
-/// The grid only narrows: every query applies exactly the test the linear scans applied before (same expressions,
-/// same float arithmetic), so its answers are the same sets as a scan over every point. Reading is thread-safe
-/// once no more points are added.
+/// The grid only narrows: every query then applies the test the linear scans applied before (the same expressions
+/// and float arithmetic; for jump reach, <see cref="ReachTest"/>, whose table gives exactly the same answers) and
+/// keeps the nearest by (distance, id) in a bounded heap, so its answers are the sets, in the order, a scan over
+/// every point gives. The bake's cells are half its reach bound, a frozen roadmap's half its longest jump. Reading
+/// is thread-safe once no more points are added.
 /// </para>
 /// </remarks>
 internal sealed class NodeIndex
@@ -110,8 +112,8 @@ internal sealed class NodeIndex
 
     /// <summary>
     /// The <paramref name="count"/> points nearest <paramref name="point"/> (3D distance, then id) among those within
-    /// jump reach of it (<see cref="ReachTest"/>, the same answers as <see cref="InReach"/>), added to <paramref name="nearest"/> by <see cref="Offer"/>: call
-    /// <see cref="Finish"/> once every candidate is offered.
+    /// jump reach of it (<see cref="ReachTest"/>, the same answers as <see cref="InReach"/>), added to
+    /// <paramref name="nearest"/> by <see cref="Offer"/>: call <see cref="Finish"/> once every candidate is offered.
     /// </summary>
     public void OfferWithinReach(Vector3 point, ReachTest reach, int count, List<(float Distance, int Id)> nearest)
     {
