@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
@@ -50,6 +49,7 @@ public sealed class RoadmapBaker
         var clock = Stopwatch.StartNew();
         var roadmap = new RoadmapBuilder(_scene.Level.Fingerprint, _scene.Character.Fingerprint, _scene.Character.Name, settings.Seed);
         var index = new NodeIndex(NodeIndex.CellSizeFor(_scene.Steering.Limits));
+        var reach = new ReachTest(_scene.Steering.Limits);
         var counters = new Counters();
 
         // Work is cut short between items when the clock or cancellation says so; the start and goal only by cancellation.
@@ -84,7 +84,7 @@ public sealed class RoadmapBaker
                 return new BakeResult(roadmap.Freeze(), PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, clock.Elapsed, null, null, 0, 0) { StartPlacement = startPlacement };
             }
 
-            startNode = Insert(roadmap, index, [pose], settings, counters, CancelledNow)?[0];
+            startNode = Insert(roadmap, index, reach, [pose], settings, counters, CancelledNow)?[0];
         }
 
         if (settings.Goal is Vector3 goal)
@@ -100,7 +100,7 @@ public sealed class RoadmapBaker
             // The same stance as the start (start equal to goal) is the start node itself: a plan of no jumps.
             goalNode = startPlacement?.Pose is { } startPose && startPose.Pose == pose.Pose && startNode is int same
                 ? same
-                : Insert(roadmap, index, [pose], settings, counters, CancelledNow)?[0];
+                : Insert(roadmap, index, reach, [pose], settings, counters, CancelledNow)?[0];
         }
 
         long nextSample = 0;
@@ -156,7 +156,7 @@ public sealed class RoadmapBaker
             nextSample += batch;
             PoseEvaluation[] valid = [.. samples.Where(s => s is not null).Select(s => s!)];
             emptyRounds = valid.Length == 0 ? emptyRounds + 1 : 0;
-            if (valid.Length > 0 && Insert(roadmap, index, valid, settings, counters, StopNow) is null)
+            if (valid.Length > 0 && Insert(roadmap, index, reach, valid, settings, counters, StopNow) is null)
             {
                 continue; // cut short while steering: the roadmap is unchanged and the check above ends the bake
             }
@@ -170,11 +170,9 @@ public sealed class RoadmapBaker
     /// nodes, found through <paramref name="index"/>, and the new nodes before it). Returns the new node ids, or
     /// <c>null</c> (roadmap and index unchanged) when <paramref name="stopNow"/> cut it short.
     /// </summary>
-    private int[]? Insert(RoadmapBuilder roadmap, NodeIndex index, PoseEvaluation[] poses, BakeSettings settings, Counters counters, Func<bool> stopNow)
+    private int[]? Insert(RoadmapBuilder roadmap, NodeIndex index, ReachTest reach, PoseEvaluation[] poses, BakeSettings settings, Counters counters, Func<bool> stopNow)
     {
         int firstId = roadmap.Nodes.Count;
-        SteeringLimits limits = _scene.Steering.Limits;
-        float bound = NodeIndex.ReachBound(limits);
 
         // Pairs (new node i, earlier node j), j among the nearest within reach, in a fixed order: by (distance, id),
         // exactly as a scan over every earlier node would rank them.
@@ -185,20 +183,20 @@ public sealed class RoadmapBaker
             int i = firstId + k;
             Vector3 p = poses[k].Pose.Position;
             candidates.Clear();
-            index.AppendWithinReach(p, limits, candidates);
+            index.OfferWithinReach(p, reach, settings.MaxNeighbours, candidates);
             for (int m = 0; m < k; m++)
             {
                 Vector3 q = poses[m].Pose.Position;
-                if (NodeIndex.InReach(limits, bound, p, q))
+                if (reach.InReach(p, q))
                 {
-                    candidates.Add((Vector3.Distance(p, q), firstId + m));
+                    NodeIndex.Offer(candidates, settings.MaxNeighbours, (Vector3.Distance(p, q), firstId + m));
                 }
             }
 
-            candidates.Sort();
-            for (int c = 0; c < Math.Min(settings.MaxNeighbours, candidates.Count); c++)
+            NodeIndex.Finish(candidates);
+            foreach ((_, int j) in candidates)
             {
-                pairs.Add((i, candidates[c].Id));
+                pairs.Add((i, j));
             }
         }
 

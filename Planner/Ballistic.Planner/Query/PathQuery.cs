@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
@@ -25,6 +26,7 @@ public sealed class PathQuery
 
     private readonly PlanningScene _scene;
     private readonly Roadmap _roadmap;
+    private readonly ReachTest _reach;
 
     // Scratch of the search, valid for the current generation only (so nothing is cleared between requests).
     private readonly float[] _cost;
@@ -38,6 +40,9 @@ public sealed class PathQuery
     private readonly List<(int From, int To, BallisticArc Arc)> _extra = [];
     private readonly PriorityQueue<int, float> _open = new();
     private readonly List<(float Distance, int Id)> _nearest = [];
+    private readonly List<(int Node, float FlightTime)> _goalEntries = [];
+    private readonly float[] _heuristic;
+    private readonly int[] _heuristicStamp;
     private int _generation;
 
     /// <summary>Creates a query over a roadmap baked for the scene's level and character.</summary>
@@ -58,6 +63,7 @@ public sealed class PathQuery
 
         _scene = scene;
         _roadmap = roadmap;
+        _reach = new ReachTest(scene.Steering.Limits);
         int count = roadmap.Nodes.Count + 2;
         _cost = new float[count];
         _cameFrom = new (int, int)[count];
@@ -66,6 +72,8 @@ public sealed class PathQuery
         _extraFirst = new int[count];
         _extraLast = new int[count];
         _extraStamp = new int[count];
+        _heuristic = new float[count];
+        _heuristicStamp = new int[count];
     }
 
     /// <summary>The roadmap searched.</summary>
@@ -79,7 +87,9 @@ public sealed class PathQuery
     /// jump between the node pairs in <paramref name="rejected"/> (node ids as in <see cref="Jump"/>: roadmap ids, or
     /// the start's and goal's ids). Start and goal are placed by <see cref="TrunkSampler.Place"/>, deterministically:
     /// when the roadmap already holds that very pose (a bake given the same points), that node is used as is;
-    /// otherwise the start gets id n and the goal id n + 1 (n the roadmap's node count).
+    /// otherwise the start gets id n and the goal id n + 1 (n the roadmap's node count). With
+    /// <see cref="QuerySettings.PreferRoadmapNodes"/>, a roadmap node standing within the tolerance of a point
+    /// (<see cref="Roadmap.FindNode"/>) is taken instead of placing a stance there.
     /// </summary>
     /// <param name="from">Requested start point, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
@@ -100,26 +110,26 @@ public sealed class PathQuery
             return early;
         }
 
-        EndpointPlacement startPlacement = _scene.Sampler.Place(from, settings.Tolerance, settings.CanStand);
+        EndpointPlacement startPlacement = Locate(from, settings, out RoadmapNode? reused);
         if (startPlacement.Pose is not { } startPose)
         {
             return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
         }
 
         int n = _roadmap.Nodes.Count;
-        RoadmapNode start = Existing(startPose.Pose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
+        RoadmapNode start = reused ?? Existing(startPose.Pose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
         if (Stopped(termination, clock, start, null) is { } stopped)
         {
             return stopped with { StartPlacement = startPlacement };
         }
 
-        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
+        EndpointPlacement goalPlacement = Locate(to, settings, out reused);
         if (goalPlacement.Pose is not { } goalPose)
         {
             return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, start, null, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
         }
 
-        RoadmapNode goal = Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
+        RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         return Connect(start, goal, settings, rejected, termination, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
     }
 
@@ -148,13 +158,13 @@ public sealed class PathQuery
             return early;
         }
 
-        EndpointPlacement goalPlacement = _scene.Sampler.Place(to, settings.Tolerance, settings.CanStand);
+        EndpointPlacement goalPlacement = Locate(to, settings, out RoadmapNode? reused);
         if (goalPlacement.Pose is not { } goalPose)
         {
             return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, from, null, clock) with { GoalPlacement = goalPlacement };
         }
 
-        RoadmapNode goal = Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
+        RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         return Connect(from, goal, settings, rejected, termination, clock) with { GoalPlacement = goalPlacement };
     }
 
@@ -184,6 +194,31 @@ public sealed class PathQuery
         return Connect(from, to, settings, rejected, termination, clock);
     }
 
+    /// <summary>
+    /// Where a requested point puts a stance: a roadmap node when <see cref="QuerySettings.PreferRoadmapNodes"/> finds
+    /// one within the tolerance that can stand there (<paramref name="node"/>), otherwise <see cref="TrunkSampler.Place"/>.
+    /// </summary>
+    private EndpointPlacement Locate(Vector3 point, QuerySettings settings, out RoadmapNode? node)
+    {
+        node = null;
+        if (settings.PreferRoadmapNodes)
+        {
+            if (_roadmap.FindNode(point, settings.Tolerance) is int id)
+            {
+                RoadmapNode found = _roadmap.Node(id);
+                var stance = new PoseEvaluation(found.Pose, PoseValidity.Valid, found.Contacts, found.Cone);
+                if (settings.CanStand?.Invoke(stance) != false)
+                {
+                    node = found;
+                    Vector3 centre = _roadmap.ContactCentres[id];
+                    return new EndpointPlacement(point, stance, centre, new Vector2(centre.X - point.X, centre.Z - point.Z).Length(), MathF.Abs(centre.Y - point.Y), null);
+                }
+            }
+        }
+
+        return _scene.Sampler.Place(point, settings.Tolerance, settings.CanStand);
+    }
+
     /// <summary>A stance as the search sees it: the roadmap's node when it is one (or holds its pose), otherwise the stance as id <paramref name="outsideId"/>.</summary>
     private RoadmapNode Resolve(RoadmapNode node, int outsideId) =>
         _roadmap.Holds(node) ? node
@@ -196,6 +231,11 @@ public sealed class PathQuery
     /// <summary>Links the start and goal to the roadmap (those not in it) and searches.</summary>
     private PlanResult Connect(RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
     {
+        if (Stopped(termination, clock, start, goal) is { } early)
+        {
+            return early;
+        }
+
         if (goal.Id == start.Id)
         {
             return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed);
@@ -209,11 +249,6 @@ public sealed class PathQuery
         ParabolaSteering steering = _scene.Steering;
         if (startIsNew || goalIsNew)
         {
-            if (Stopped(termination, clock, start, goal) is { } stopped)
-            {
-                return stopped;
-            }
-
             if (rejected?.Contains((start.Id, goal.Id)) != true &&
                 steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
             {
@@ -224,7 +259,7 @@ public sealed class PathQuery
         if (startIsNew)
         {
             int connected = 0;
-            _roadmap.Nearest(start.Pose.Position, steering.Limits, settings.MaxNeighbours, _nearest);
+            _roadmap.Nearest(start.Pose.Position, _reach, settings.MaxNeighbours, _nearest);
             foreach ((_, int j) in _nearest)
             {
                 if (rejected?.Contains((start.Id, j)) == true)
@@ -253,7 +288,7 @@ public sealed class PathQuery
         if (goalIsNew)
         {
             int connected = 0;
-            _roadmap.Nearest(goal.Pose.Position, steering.Limits, settings.MaxNeighbours, _nearest);
+            _roadmap.Nearest(goal.Pose.Position, _reach, settings.MaxNeighbours, _nearest);
             foreach ((_, int j) in _nearest)
             {
                 if (rejected?.Contains((j, goal.Id)) == true)
@@ -292,9 +327,11 @@ public sealed class PathQuery
     }
 
     /// <summary>
-    /// A* over the roadmap plus the request's extra edges. Cost: flight time. Heuristic: horizontal distance to the
-    /// goal divided by the fastest horizontal speed of any edge, a lower bound on the remaining flight time (every
-    /// jump covers its horizontal distance at most that fast), so the path found is of least total flight time.
+    /// A* over the roadmap plus the request's extra edges. Cost: flight time. Heuristic: the larger of two lower
+    /// bounds on the remaining flight time, so the path found is of least total flight time: the horizontal distance
+    /// to the goal divided by the fastest horizontal speed of any jump (every jump covers its horizontal distance at
+    /// most that fast), and the roadmap's landmark bounds (<see cref="Landmarks"/>; for a goal off the roadmap, through
+    /// the nodes jumping to it), which also prune nodes that cannot reach the goal.
     /// </summary>
     private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out int expansions, out PlanResult? cut)
     {
@@ -302,10 +339,12 @@ public sealed class PathQuery
         expansions = 0;
         cut = null;
         float fastest = _roadmap.MaxHorizontalSpeed;
+        int roadmapCount = _roadmap.Nodes.Count;
         _extraNext.Clear();
+        _goalEntries.Clear();
         for (int e = 0; e < _extra.Count; e++)
         {
-            int from = _extra[e].From;
+            (int from, int to, BallisticArc arc) = _extra[e];
             _extraNext.Add(-1);
             if (_extraStamp[from] != generation)
             {
@@ -318,17 +357,18 @@ public sealed class PathQuery
             }
 
             _extraLast[from] = e;
-            fastest = MathF.Max(fastest, _extra[e].Arc.HorizontalSpeed);
+            fastest = MathF.Max(fastest, arc.HorizontalSpeed);
+            if (to == goal.Id && from < roadmapCount)
+            {
+                _goalEntries.Add((from, arc.FlightTime));
+            }
         }
 
-        float inverseSpeed = fastest > 0f ? 1f / fastest : 0f;
-        Vector2 target = new(goal.Pose.Position.X, goal.Pose.Position.Z);
-        int roadmapCount = _roadmap.Nodes.Count;
+        var heuristic = new Heuristic(this, goal, fastest > 0f ? 1f / fastest : 0f, generation);
         ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
         ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
         ReadOnlySpan<int> edges = _roadmap.OutgoingEdges;
-        Vector2[] positions = _roadmap.Horizontal;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -366,10 +406,14 @@ public sealed class PathQuery
                     float candidate = here + times[i];
                     if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
                     {
-                        cost[next] = candidate;
-                        reached[next] = generation;
-                        _cameFrom[next] = (node, edges[i]);
-                        open.Enqueue(next, candidate + (Vector2.Distance(target, positions[next]) * inverseSpeed));
+                        float h = heuristic.At(next);
+                        if (h < float.PositiveInfinity)
+                        {
+                            cost[next] = candidate;
+                            reached[next] = generation;
+                            _cameFrom[next] = (node, edges[i]);
+                            open.Enqueue(next, candidate + h);
+                        }
                     }
                 }
             }
@@ -382,17 +426,87 @@ public sealed class PathQuery
                     float candidate = here + _extra[e].Arc.FlightTime;
                     if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
                     {
-                        cost[next] = candidate;
-                        reached[next] = generation;
-                        _cameFrom[next] = (node, ~e);
-                        Vector2 p = next == goal.Id ? target : positions[next];
-                        open.Enqueue(next, candidate + (Vector2.Distance(target, p) * inverseSpeed));
+                        float h = heuristic.At(next);
+                        if (h < float.PositiveInfinity)
+                        {
+                            cost[next] = candidate;
+                            reached[next] = generation;
+                            _cameFrom[next] = (node, ~e);
+                            open.Enqueue(next, candidate + h);
+                        }
                     }
                 }
             }
         }
 
         return null;
+    }
+
+    /// <summary>The A* heuristic of one search, each node's value computed once (seconds; +∞: cannot reach the goal).</summary>
+    private readonly ref struct Heuristic
+    {
+        private readonly PathQuery _query;
+        private readonly int _goal;
+        private readonly bool _goalOnRoadmap;
+        private readonly Vector2 _target;
+        private readonly float _inverseSpeed;
+        private readonly int _generation;
+        private readonly Landmarks _landmarks;
+        private readonly ReadOnlySpan<float> _goalFrom;
+        private readonly ReadOnlySpan<float> _goalTo;
+
+        public Heuristic(PathQuery query, RoadmapNode goal, float inverseSpeed, int generation)
+        {
+            _query = query;
+            _goal = goal.Id;
+            _target = new Vector2(goal.Pose.Position.X, goal.Pose.Position.Z);
+            _inverseSpeed = inverseSpeed;
+            _generation = generation;
+            _landmarks = query._roadmap.Landmarks;
+            _goalOnRoadmap = goal.Id < query._roadmap.Nodes.Count;
+            _goalFrom = _goalOnRoadmap ? _landmarks.From(goal.Id) : [];
+            _goalTo = _goalOnRoadmap ? _landmarks.To(goal.Id) : [];
+        }
+
+        public float At(int node)
+        {
+            if (node == _goal)
+            {
+                return 0f;
+            }
+
+            if (_query._heuristicStamp[node] == _generation)
+            {
+                return _query._heuristic[node];
+            }
+
+            float h = Vector2.Distance(_target, _query._roadmap.Horizontal[node]) * _inverseSpeed;
+            if (_landmarks.Count > 0)
+            {
+                ReadOnlySpan<float> from = _landmarks.From(node);
+                ReadOnlySpan<float> to = _landmarks.To(node);
+                float bound;
+                if (_goalOnRoadmap)
+                {
+                    bound = Landmarks.LowerBound(from, to, _goalFrom, _goalTo);
+                }
+                else
+                {
+                    // Off the roadmap, the goal is entered only by the request's jumps to it.
+                    bound = float.PositiveInfinity;
+                    foreach ((int entry, float time) in _query._goalEntries)
+                    {
+                        bound = MathF.Min(bound, Landmarks.LowerBound(from, to, _landmarks.From(entry), _landmarks.To(entry)) + time);
+                    }
+                }
+
+                h = MathF.Max(h, bound);
+            }
+
+            _query._heuristic[node] = h;
+            _query._heuristicStamp[node] = _generation;
+            return h;
+        }
     }
 
     /// <summary>A fresh generation of the scratch arrays (cleared only when the counter wraps).</summary>
@@ -403,6 +517,7 @@ public sealed class PathQuery
             Array.Clear(_reached);
             Array.Clear(_closed);
             Array.Clear(_extraStamp);
+            Array.Clear(_heuristicStamp);
             _generation = 0;
         }
 

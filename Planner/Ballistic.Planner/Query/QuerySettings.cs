@@ -21,4 +21,13 @@ public sealed record QuerySettings
     /// <summary>Steering to (from) nearer nodes stops once the start (goal) has this many jumps into the roadmap.</summary>
     public int Connections { get; init; } = 4;
 
+    /// <summary>
+    /// When true, a requested point with a roadmap node standing within <see cref="Tolerance"/> of it (the one
+    /// <see cref="Roadmaps.Roadmap.FindNode"/> finds: contact centre nearest the point) that passes
+    /// <see cref="CanStand"/> is served by that node, with no placement and no steering: the request then costs about
+    /// what a request between roadmap nodes costs. Off by default, because the stance then depends on the roadmap
+    /// rather than on the point alone (<see cref="TrunkSampler.Place"/>): a query given the points a bake was given
+    /// may start or end on another node than the one the bake placed there.
+    /// </summary>
+    public bool PreferRoadmapNodes { get; init; }
 }

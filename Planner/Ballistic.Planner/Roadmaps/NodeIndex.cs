@@ -22,9 +22,11 @@ namespace Ballistic.Planner.Roadmaps;
 /// reach and tolerances are decided by the exact tests after the grid has narrowed the candidates.
 /// </para>
 /// <para>
-/// The grid only narrows: every query applies exactly the test the linear scans applied before (same expressions,
-/// same float arithmetic), so its answers are the same sets as a scan over every point. Reading is thread-safe
-/// once no more points are added.
+/// The grid only narrows: every query then applies the test the linear scans applied before (the same expressions
+/// and float arithmetic; for jump reach, <see cref="ReachTest"/>, whose table gives exactly the same answers) and
+/// keeps the nearest by (distance, id) in a bounded heap, so its answers are the sets, in the order, a scan over
+/// every point gives. The bake's cells are half its reach bound, a frozen roadmap's half its longest jump. Reading
+/// is thread-safe once no more points are added.
 /// </para>
 /// </remarks>
 internal sealed class NodeIndex
@@ -109,25 +111,85 @@ internal sealed class NodeIndex
     }
 
     /// <summary>
-    /// Appends (3D distance, id) of every point within jump reach of <paramref name="point"/> (<see cref="InReach"/>),
-    /// in no particular order.
+    /// The <paramref name="count"/> points nearest <paramref name="point"/> (3D distance, then id) among those within
+    /// jump reach of it (<see cref="ReachTest"/>, the same answers as <see cref="InReach"/>), added to
+    /// <paramref name="nearest"/> by <see cref="Offer"/>: call <see cref="Finish"/> once every candidate is offered.
     /// </summary>
-    public void AppendWithinReach(Vector3 point, SteeringLimits limits, List<(float Distance, int Id)> into)
+    public void OfferWithinReach(Vector3 point, ReachTest reach, int count, List<(float Distance, int Id)> nearest)
     {
-        float bound = ReachBound(limits);
-        var cells = new CellEnumerator(this, point, bound);
+        var cells = new CellEnumerator(this, point, reach.Bound);
         while (cells.MoveNext())
         {
             foreach (int id in cells.Current)
             {
                 Vector3 q = _points[id];
-                if (InReach(limits, bound, point, q))
+                if (reach.InReach(point, q))
                 {
-                    into.Add((Vector3.Distance(point, q), id));
+                    Offer(nearest, count, (Vector3.Distance(point, q), id));
                 }
             }
         }
     }
+
+    /// <summary>
+    /// Keeps <paramref name="candidate"/> among the <paramref name="count"/> smallest (distance, id) pairs offered
+    /// so far: <paramref name="kept"/> is a max-heap of them, in no useful order until <see cref="Finish"/>.
+    /// </summary>
+    public static void Offer(List<(float Distance, int Id)> kept, int count, (float Distance, int Id) candidate)
+    {
+        if (kept.Count < count)
+        {
+            // Sift up.
+            kept.Add(candidate);
+            int i = kept.Count - 1;
+            while (i > 0)
+            {
+                int parent = (i - 1) / 2;
+                if (kept[parent].CompareTo(kept[i]) >= 0)
+                {
+                    break;
+                }
+
+                (kept[parent], kept[i]) = (kept[i], kept[parent]);
+                i = parent;
+            }
+        }
+        else if (count > 0 && candidate.CompareTo(kept[0]) < 0)
+        {
+            // Replace the largest and sift down.
+            kept[0] = candidate;
+            int i = 0;
+            while (true)
+            {
+                int largest = i;
+                int left = (2 * i) + 1;
+                int right = left + 1;
+                if (left < kept.Count && kept[left].CompareTo(kept[largest]) > 0)
+                {
+                    largest = left;
+                }
+
+                if (right < kept.Count && kept[right].CompareTo(kept[largest]) > 0)
+                {
+                    largest = right;
+                }
+
+                if (largest == i)
+                {
+                    break;
+                }
+
+                (kept[largest], kept[i]) = (kept[i], kept[largest]);
+                i = largest;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Sorts the pairs kept by <see cref="Offer"/> by (distance, id): exactly the first ones of all the candidates
+    /// offered, sorted the same way.
+    /// </summary>
+    public static void Finish(List<(float Distance, int Id)> kept) => kept.Sort();
 
     /// <summary>
     /// The id of the point nearest <paramref name="point"/> (3D distance, then the lowest id) among those within

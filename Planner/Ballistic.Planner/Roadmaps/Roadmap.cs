@@ -11,8 +11,9 @@ namespace Ballistic.Planner.Roadmaps;
 /// A directed graph of root poses linked by valid jumps, baked for one character on one level: immutable, made by
 /// <see cref="RoadmapBuilder.Freeze"/>. Nodes and edges are kept in insertion order, so that a given seed gives the
 /// same roadmap byte for byte. Besides the nodes and edges it holds, built once when frozen, the compact arrays
-/// searches read (outgoing edges in compressed rows, node positions, contact centres) and a spatial index of the
-/// nodes. Thread-safe: any number of threads may read and query one roadmap at once.
+/// searches read (outgoing edges in compressed rows, node positions, contact centres), a spatial index of the
+/// nodes and landmark flight times bounding A* searches. Thread-safe: any number of threads may read and query
+/// one roadmap at once.
 /// </summary>
 public sealed class Roadmap
 {
@@ -29,6 +30,7 @@ public sealed class Roadmap
     private readonly Vector3[] _centres;
     private readonly NodeIndex _positionIndex;
     private readonly NodeIndex _centreIndex;
+    private readonly Landmarks _landmarks;
 
     internal Roadmap(string levelFingerprint, string characterFingerprint, string characterName, int seed, RoadmapNode[] nodes, RoadmapEdge[] edges)
     {
@@ -94,6 +96,7 @@ public sealed class Roadmap
         float cell = longest > 0f ? Math.Clamp(0.5f * longest, 0.05f, 1e4f) : 1f;
         _positionIndex = new NodeIndex(cell, _positions);
         _centreIndex = new NodeIndex(cell, _centres);
+        _landmarks = Landmarks.Build(_horizontal, _offsets, _rowTargets, _rowFlightTimes);
     }
 
     /// <summary>Fingerprint of the level the roadmap was baked on.</summary>
@@ -153,6 +156,9 @@ public sealed class Roadmap
 
     /// <summary>Horizontal (X, Z) trunk centre of each node, for the A* heuristic.</summary>
     internal Vector2[] Horizontal => _horizontal;
+
+    /// <summary>Landmark flight times, for the A* heuristic.</summary>
+    internal Landmarks Landmarks => _landmarks;
 
     /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/>.</summary>
     public bool Reaches(int from, int to)
@@ -222,15 +228,17 @@ public sealed class Roadmap
     public void Nearest(Vector3 point, SteeringLimits limits, int count, List<(float Distance, int Id)> nearest)
     {
         ArgumentNullException.ThrowIfNull(limits);
+        Nearest(point, new ReachTest(limits), count, nearest);
+    }
+
+    /// <summary><see cref="Nearest(Vector3, SteeringLimits, int, List{ValueTuple{float, int}})"/> with a reach test built once by the caller.</summary>
+    internal void Nearest(Vector3 point, ReachTest reach, int count, List<(float Distance, int Id)> nearest)
+    {
         ArgumentNullException.ThrowIfNull(nearest);
         ArgumentOutOfRangeException.ThrowIfNegative(count);
         nearest.Clear();
-        _positionIndex.AppendWithinReach(point, limits, nearest);
-        nearest.Sort();
-        if (nearest.Count > count)
-        {
-            nearest.RemoveRange(count, nearest.Count - count);
-        }
+        _positionIndex.OfferWithinReach(point, reach, count, nearest);
+        NodeIndex.Finish(nearest);
     }
 
     /// <summary>The lowest id of a node with exactly this pose, or <c>null</c>.</summary>

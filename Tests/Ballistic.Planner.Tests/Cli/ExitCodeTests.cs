@@ -101,6 +101,24 @@ public sealed class ExitCodeTests
     }
 
     [Test]
+    public void ACancelledPlanOnASavedRoadmapWritesNothing()
+    {
+        string path = Path.Combine(_folder, "course.roadmap");
+        (int bakeCode, _, string bakeError) = Run("bake", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--max-nodes", "60", "--out", path);
+        Assert.That(bakeCode, Is.Zero, bakeError);
+        using var cancelled = new CancellationTokenSource();
+        cancelled.Cancel();
+        string report = Path.Combine(_folder, "plan.json");
+        (int code, _, string error) = Run(cancelled.Token, "plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--roadmap", path, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
+        Assert.Multiple(() =>
+        {
+            Assert.That(code, Is.EqualTo(ExitCode.Cancelled), error);
+            Assert.That(error, Does.Contain("cancelled"));
+            Assert.That(File.Exists(report), Is.False);
+        });
+    }
+
+    [Test]
     public void SigtermCancelsARealBakeCleanly()
     {
         if (!OperatingSystem.IsLinux())
