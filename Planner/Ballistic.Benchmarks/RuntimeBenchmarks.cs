@@ -57,9 +57,9 @@ public class RuntimeBenchmarks
         for (int i = 0; i < count; i++)
         {
             (RoadmapNode from, RoadmapNode to) = _pairs[i % _pairs.Count];
-            AgentHandle agent = world.AddAgent(kind, ContactCentre(from)).Agent;
+            AgentHandle agent = world.AddAgent(kind, _kind.Roadmap.ContactCentres[from.Id]).Agent;
             world.SetPoseEnabled(agent, poses);
-            world.SetTarget(agent, ContactCentre(to));
+            world.SetTarget(agent, _kind.Roadmap.ContactCentres[to.Id]);
         }
 
         while (world.QueuedRequests > 0 || world.AnimatingRequests > 0)
@@ -89,8 +89,8 @@ public class RuntimeBenchmarks
         {
             (RoadmapNode from, _) = _pairs[(i + shift) % _pairs.Count];
             (_, RoadmapNode to) = _pairs[(i + shift + 1) % _pairs.Count];
-            AgentHandle agent = _requests.AddAgent(kind, ContactCentre(from)).Agent;
-            _requests.SetTarget(agent, ContactCentre(to));
+            AgentHandle agent = _requests.AddAgent(kind, _kind.Roadmap.ContactCentres[from.Id]).Agent;
+            _requests.SetTarget(agent, _kind.Roadmap.ContactCentres[to.Id]);
         }
     }
 
@@ -118,16 +118,5 @@ public class RuntimeBenchmarks
     {
         _crowd.Dispose();
         _posed.Dispose();
-    }
-
-    private static Vector3 ContactCentre(RoadmapNode node)
-    {
-        Vector3 sum = Vector3.Zero;
-        foreach (Planner.Contacts.Contact c in node.Contacts)
-        {
-            sum += c.Position;
-        }
-
-        return sum / node.Contacts.Count;
     }
 }

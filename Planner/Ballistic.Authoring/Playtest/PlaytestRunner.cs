@@ -49,7 +49,7 @@ public static class PlaytestRunner
         for (int attempt = 0; agents.Count < settings.Agents && attempt < settings.Agents * 20; attempt++)
         {
             RoadmapNode node = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
-            AddAgentResult added = world.AddAgent(handle, ContactCentre(node));
+            AddAgentResult added = world.AddAgent(handle, roadmap.ContactCentres[node.Id]);
             if (added.Ok)
             {
                 indexOf[added.Agent] = agents.Count;
@@ -143,26 +143,8 @@ public static class PlaytestRunner
             node = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
         }
 
-        Vector3 target = ContactCentre(node);
+        Vector3 target = roadmap.ContactCentres[node.Id];
         agent.Targets.Add(new PlaytestTarget(target, here, world.Time));
         world.SetTarget(handle, target);
-    }
-
-    /// <summary>The centre of a stance's contacts: the point a player would click to stand there.</summary>
-    public static Vector3 ContactCentre(RoadmapNode node)
-    {
-        ArgumentNullException.ThrowIfNull(node);
-        if (node.Contacts.Count == 0)
-        {
-            return node.Pose.Position;
-        }
-
-        Vector3 sum = Vector3.Zero;
-        foreach (Planner.Contacts.Contact c in node.Contacts)
-        {
-            sum += c.Position;
-        }
-
-        return sum / node.Contacts.Count;
     }
 }

@@ -161,38 +161,8 @@ public sealed class Roadmap
     internal Landmarks Landmarks => _landmarks;
 
     /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/>.</summary>
-    public bool Reaches(int from, int to)
-    {
-        if (from == to)
-        {
-            return true;
-        }
-
-        var seen = new bool[_nodes.Length];
-        var stack = new Stack<int>();
-        stack.Push(from);
-        seen[from] = true;
-        while (stack.Count > 0)
-        {
-            int node = stack.Pop();
-            for (int k = _offsets[node]; k < _offsets[node + 1]; k++)
-            {
-                int next = _rowTargets[k];
-                if (next == to)
-                {
-                    return true;
-                }
-
-                if (!seen[next])
-                {
-                    seen[next] = true;
-                    stack.Push(next);
-                }
-            }
-        }
-
-        return false;
-    }
+    public bool Reaches(int from, int to) =>
+        Reachability.Reaches(_nodes.Length, from, to, node => _rowTargets.AsSpan(_offsets[node], _offsets[node + 1] - _offsets[node]));
 
     /// <summary>
     /// The node whose contact centre (<see cref="ContactCentres"/>) is nearest <paramref name="point"/> (3D distance;

@@ -1,3 +1,5 @@
+using System.Runtime.InteropServices;
+
 namespace Ballistic.Planner.Roadmaps;
 
 /// <summary>
@@ -8,7 +10,7 @@ public sealed class RoadmapBuilder
 {
     private readonly List<RoadmapNode> _nodes = [];
     private readonly List<RoadmapEdge> _edges = [];
-    private readonly List<List<int>> _outgoing = [];
+    private readonly List<List<int>> _targets = [];
 
     /// <summary>Creates an empty roadmap for a level and character.</summary>
     /// <param name="levelFingerprint">The level's <see cref="Levels.Level.Fingerprint"/>.</param>
@@ -55,7 +57,7 @@ public sealed class RoadmapBuilder
         }
 
         _nodes.Add(node);
-        _outgoing.Add([]);
+        _targets.Add([]);
     }
 
     /// <summary>Adds a directed edge between existing nodes.</summary>
@@ -67,42 +69,13 @@ public sealed class RoadmapBuilder
             throw new ArgumentOutOfRangeException(nameof(edge), $"Edge {edge.From} → {edge.To} names a node outside 0..{_nodes.Count - 1}.");
         }
 
-        _outgoing[edge.From].Add(_edges.Count);
+        _targets[edge.From].Add(edge.To);
         _edges.Add(edge);
     }
 
     /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/> in the roadmap so far.</summary>
-    public bool Reaches(int from, int to)
-    {
-        if (from == to)
-        {
-            return true;
-        }
-
-        var seen = new bool[_nodes.Count];
-        var stack = new Stack<int>();
-        stack.Push(from);
-        seen[from] = true;
-        while (stack.Count > 0)
-        {
-            foreach (int e in _outgoing[stack.Pop()])
-            {
-                int next = _edges[e].To;
-                if (next == to)
-                {
-                    return true;
-                }
-
-                if (!seen[next])
-                {
-                    seen[next] = true;
-                    stack.Push(next);
-                }
-            }
-        }
-
-        return false;
-    }
+    public bool Reaches(int from, int to) =>
+        Reachability.Reaches(_nodes.Count, from, to, node => CollectionsMarshal.AsSpan(_targets[node]));
 
     /// <summary>
     /// The roadmap so far as an immutable <see cref="Roadmap"/>, with its search arrays and spatial index built

@@ -25,7 +25,7 @@ public sealed class JumpWorldTests
             Assert.That(added.Ok, Is.True, added.Result.ToString());
             Assert.That(world.SetTarget(added.Agent, RuntimeWorlds.Point(to)).Ok, Is.True);
 
-            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, (_, seen) => seen.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed));
+            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded);
             Assert.That(events.Select(e => e.Kind), Does.Not.Contain(JumpEventKind.PathFailed), string.Join("; ", events.Select(e => e.Reason)));
             Assert.That(events[0].Kind, Is.EqualTo(JumpEventKind.PathFound));
             Assert.That(events[^1].Kind, Is.EqualTo(JumpEventKind.TargetReached));
@@ -51,12 +51,10 @@ public sealed class JumpWorldTests
         (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();
         using (world)
         {
-            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(RuntimeWorlds.DesertSkeleton.Roadmap, 1, seed: 2)[0];
-            AgentHandle agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
-            world.SetTarget(agent, RuntimeWorlds.Point(to));
+            AgentHandle agent = RuntimeWorlds.SendAcross(world, kind, seed: 2).Agent;
             int airborne = 0;
             Vector3 g = new(0f, -9.81f, 0f);
-            RuntimeWorlds.Run(world, MaxTicks, (w, seen) => seen.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed), w =>
+            RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
             {
                 AgentState state = w.GetState(agent);
                 if (state is not (AgentState.Takeoff or AgentState.Flight or AgentState.Landing))
@@ -85,11 +83,9 @@ public sealed class JumpWorldTests
         (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();
         using (world)
         {
-            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(RuntimeWorlds.DesertSkeleton.Roadmap, 1, seed: 3)[0];
-            AgentHandle agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
-            world.SetTarget(agent, RuntimeWorlds.Point(to));
+            AgentHandle agent = RuntimeWorlds.SendAcross(world, kind, seed: 3).Agent;
             var announced = new Dictionary<int, JumpInfo>();
-            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, (w, seen) => seen.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed), w =>
+            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
             {
                 if (w.TryGetNextJump(agent, out JumpInfo next))
                 {

@@ -96,9 +96,7 @@ public sealed class RuntimeInputTests
         (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();
         using (world)
         {
-            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(RuntimeWorlds.DesertSkeleton.Roadmap, 1, seed: 21)[0];
-            AgentHandle agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
-            world.SetTarget(agent, RuntimeWorlds.Point(to));
+            AgentHandle agent = RuntimeWorlds.SendAcross(world, kind, seed: 21).Agent;
             RuntimeWorlds.Run(world, 600, (w, _) => w.GetState(agent) == AgentState.Flight);
             Assume.That(world.GetState(agent), Is.EqualTo(AgentState.Flight));
 
@@ -129,7 +127,7 @@ public sealed class RuntimeInputTests
             Vector3 second = RuntimeWorlds.Point(pairs[1].To);
             Assert.That(world.SetTarget(agent, second).Ok, Is.True);
             Assert.That(world.TryGetNextJump(agent, out _), Is.False, "no further takeoff on the old path");
-            List<JumpEvent> events = RuntimeWorlds.Run(world, 3600, (_, seen) => seen.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed));
+            List<JumpEvent> events = RuntimeWorlds.Run(world, 3600, RuntimeWorlds.Concluded);
 
             // The jump in progress lands; the agent stops there; the new path starts from that landing.
             Assert.That(events[0].Kind, Is.EqualTo(JumpEventKind.Landed));

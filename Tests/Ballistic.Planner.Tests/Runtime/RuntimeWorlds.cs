@@ -6,6 +6,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 
@@ -34,17 +35,22 @@ internal static class RuntimeWorlds
         return (world, added.Kind);
     }
 
-    /// <summary>The contact centre of a roadmap node: where a user would click to stand there.</summary>
-    public static Vector3 Point(RoadmapNode node)
-    {
-        Vector3 sum = Vector3.Zero;
-        foreach (Ballistic.Planner.Contacts.Contact c in node.Contacts)
-        {
-            sum += c.Position;
-        }
+    /// <summary>The contact centre of a node of the desert roadmap: where a user would click to stand there.</summary>
+    public static Vector3 Point(RoadmapNode node) => DesertSkeleton.Roadmap.ContactCentres[node.Id];
 
-        return sum / node.Contacts.Count;
+    /// <summary>Adds an agent on the start of the seeded connected pair and sends it to the pair's goal.</summary>
+    public static (AgentHandle Agent, RoadmapNode From, RoadmapNode To) SendAcross(JumpWorld world, KindHandle kind, int seed)
+    {
+        (RoadmapNode from, RoadmapNode to) = ConnectedPairs(DesertSkeleton.Roadmap, 1, seed)[0];
+        AddAgentResult added = world.AddAgent(kind, Point(from));
+        Assert.That(added.Ok, Is.True, added.Result.ToString());
+        Assert.That(world.SetTarget(added.Agent, Point(to)).Ok, Is.True);
+        return (added.Agent, from, to);
     }
+
+    /// <summary>True once the events seen hold an arrival or a failure.</summary>
+    public static bool Concluded(JumpWorld world, IReadOnlyList<JumpEvent> seen) =>
+        seen.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed);
 
     /// <summary>Seeded pairs of roadmap nodes (start, goal) where the start reaches the goal, at least <paramref name="minDistance"/> apart.</summary>
     public static List<(RoadmapNode From, RoadmapNode To)> ConnectedPairs(Roadmap roadmap, int count, int seed, float minDistance = 4f)
