@@ -13,7 +13,8 @@ namespace Ballistic.Planner.Contacts;
 /// intersection with it, with the normal of the triangle that point lies on. A surface is acceptable when the limb's
 /// filter accepts it, its face is turned toward the trunk (the underside of a slab the workspace pierces is not) and
 /// the contact point can be seen from the trunk centre (not the floor under a crate the workspace reaches into).
-/// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. Thread-safe.
+/// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. A pose that
+/// passes all of that must then pass the optional <see cref="IPoseValidator"/>. Thread-safe.
 /// </summary>
 public sealed class ContactEstimator
 {
@@ -29,7 +30,12 @@ public sealed class ContactEstimator
     private readonly ReducedCharacter _character;
 
     /// <summary>Creates an estimator for one character on one level.</summary>
-    public ContactEstimator(Level level, TriangleBvh bvh, SurfaceSet surfaces, ReducedCharacter character)
+    /// <param name="level">The level.</param>
+    /// <param name="bvh">Collision hierarchy over the level's triangles.</param>
+    /// <param name="surfaces">The level's contact surfaces.</param>
+    /// <param name="character">The reduced character.</param>
+    /// <param name="poseValidator">An extra test valid poses must pass; <c>null</c> for none.</param>
+    public ContactEstimator(Level level, TriangleBvh bvh, SurfaceSet surfaces, ReducedCharacter character, IPoseValidator? poseValidator = null)
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(bvh);
@@ -39,7 +45,11 @@ public sealed class ContactEstimator
         _bvh = bvh;
         _surfaces = surfaces;
         _character = character;
+        PoseValidator = poseValidator;
     }
+
+    /// <summary>The extra test valid poses must pass; <c>null</c> when there is none.</summary>
+    public IPoseValidator? PoseValidator { get; }
 
     [ThreadStatic]
     private static List<int>? s_scratch;
@@ -79,9 +89,15 @@ public sealed class ContactEstimator
             mu = MathF.Min(mu, c.Mu);
         }
 
-        return sum.Length() < ForceClosureThreshold
-            ? new PoseEvaluation(pose, PoseValidity.ForceClosure, contacts, default)
-            : new PoseEvaluation(pose, PoseValidity.Valid, contacts, new FrictionCone(sum, mu));
+        if (sum.Length() < ForceClosureThreshold)
+        {
+            return new PoseEvaluation(pose, PoseValidity.ForceClosure, contacts, default);
+        }
+
+        var valid = new PoseEvaluation(pose, PoseValidity.Valid, contacts, new FrictionCone(sum, mu));
+        return PoseValidator is null || PoseValidator.IsValid(valid)
+            ? valid
+            : valid with { Validity = PoseValidity.Rejected };
     }
 
     /// <summary>The estimated contact of one limb, when its workspace touches an acceptable surface.</summary>

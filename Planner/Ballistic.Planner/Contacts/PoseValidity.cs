@@ -14,4 +14,7 @@ public enum PoseValidity
 
     /// <summary>The contact normals cancel out (force closure): the centroidal cone has no axis.</summary>
     ForceClosure,
+
+    /// <summary>The built-in checks pass but the scene's extra <see cref="IPoseValidator"/> refuses the pose.</summary>
+    Rejected,
 }

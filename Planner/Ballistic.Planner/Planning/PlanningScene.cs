@@ -10,7 +10,9 @@ namespace Ballistic.Planner.Planning;
 
 /// <summary>
 /// Everything the planner derives from one level and one character, built once and shared by bakes and queries:
-/// the collision hierarchy, contact surfaces, contact estimator, sampler and steering method. Thread-safe.
+/// the collision hierarchy, contact surfaces, contact estimator, sampler and steering method. Validity is decided by
+/// the estimator's built-in pose checks and optional <see cref="IPoseValidator"/>, and by the steering method's
+/// <see cref="IArcValidator"/> (the trunk sweep, then an optional extra one). Thread-safe.
 /// </summary>
 public sealed class PlanningScene
 {
@@ -54,18 +56,34 @@ public sealed class PlanningScene
     /// </param>
     /// <param name="sampler">Sampler settings; defaults when <c>null</c>.</param>
     /// <param name="surfaces">Surface grouping settings; defaults when <c>null</c>.</param>
-    public static PlanningScene Create(Level level, ReducedCharacter character, float? maxApexAboveLevel = 4f, SamplerSettings? sampler = null, SurfaceSettings? surfaces = null)
+    /// <param name="poseValidator">
+    /// An extra test every node, start and goal pose must pass after the built-in ones; <c>null</c> for none. A roadmap
+    /// baked with one is only valid with the same test: its file does not record it.
+    /// </param>
+    /// <param name="arcValidator">
+    /// An extra test every jump arc must pass after the trunk sweep; <c>null</c> for none. Recorded no more than
+    /// <paramref name="poseValidator"/>.
+    /// </param>
+    public static PlanningScene Create(
+        Level level,
+        ReducedCharacter character,
+        float? maxApexAboveLevel = 4f,
+        SamplerSettings? sampler = null,
+        SurfaceSettings? surfaces = null,
+        IPoseValidator? poseValidator = null,
+        IArcValidator? arcValidator = null)
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
         var bvh = new TriangleBvh(level.Triangles);
         SurfaceSet surfaceSet = SurfaceSet.Build(level, surfaces);
-        var estimator = new ContactEstimator(level, bvh, surfaceSet, character);
+        var estimator = new ContactEstimator(level, bvh, surfaceSet, character, poseValidator);
         var trunkSampler = new TrunkSampler(level, bvh, surfaceSet, character, estimator, sampler);
         SteeringLimits limits = maxApexAboveLevel is float margin
             ? character.Limits with { MaxApexHeight = level.Bounds.Max.Y + margin }
             : character.Limits;
-        var steering = new ParabolaSteering(limits, character.TrunkHalfExtents, bvh);
+        var sweep = new TrunkSweepValidator(bvh, character.TrunkHalfExtents, limits.CollisionTolerance);
+        var steering = new ParabolaSteering(limits, character.TrunkHalfExtents, arcValidator is null ? sweep : new BothArcValidators(sweep, arcValidator));
         return new PlanningScene(level, character, bvh, surfaceSet, estimator, trunkSampler, steering);
     }
 }

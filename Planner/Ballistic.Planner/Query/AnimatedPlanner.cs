@@ -97,70 +97,57 @@ public sealed class AnimatedPlanner
         var clock = Stopwatch.StartNew();
         var query = new PathQuery(_scene, roadmap);
         settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand };
-        var rejectedPairs = new HashSet<(int From, int To)>();
-        var rejected = new List<RejectedJump>();
+        var repair = new JumpRepair();
 
         // The condition sees the time since this request began, not since each search began.
         TerminationCondition? stop = termination is null ? null : new Elapsed(termination, clock);
-        PlanResult result = query.Plan(from, to, settings, rejectedPairs, stop);
+        PlanResult result = query.Plan(from, to, settings, repair.Excluded, stop);
         for (int round = 1; ; round++)
         {
             if (result.Status is PlannerStatus.Cancelled or PlannerStatus.Timeout)
             {
-                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, rejected, round);
+                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
             if (result.Status != PlannerStatus.Exact)
             {
-                PlanResult failed = rejected.Count == 0
-                    ? result
-                    : result with
-                    {
-                        Status = PlannerStatus.AnimationFailed,
-                        Reason = $"no path animates cleanly: {Jumps(rejected.Count)} set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")}) and then {result.Reason}",
-                    };
-                return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, rejected, round);
+                PlanResult failed = repair.SearchFailed(result.Reason) is string repaired
+                    ? result with { Status = PlannerStatus.AnimationFailed, Reason = repaired }
+                    : result;
+                return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
             if (result.Jumps.Count == 0)
             {
-                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, rejected, round);
+                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
             if (stop is not null && stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
             {
-                return new AnimatedPlan(result with { Status = status, Reason = reason, Jumps = [], Elapsed = clock.Elapsed }, null, rejected, round);
+                return new AnimatedPlan(result with { Status = status, Reason = reason, Jumps = [], Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
             JumpAnimation animation = Animator.Animate(result.Jumps, frameRate);
             if (animation.IsClean)
             {
-                string note = rejected.Count == 0 ? "" : $" after setting aside {Jumps(rejected.Count)} the body could not perform";
-                return new AnimatedPlan(result with { Reason = result.Reason + note, Elapsed = clock.Elapsed }, animation, rejected, round);
+                return new AnimatedPlan(result with { Reason = result.Reason + repair.SuccessNote(), Elapsed = clock.Elapsed }, animation, repair.SetAside, round);
             }
 
-            foreach (JumpProblem problem in animation.Problems)
-            {
-                Jump jump = result.Jumps[problem.Jump];
-                if (rejectedPairs.Add((jump.Takeoff.Id, jump.Landing.Id)))
-                {
-                    rejected.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
-                }
-            }
+            repair.Reject(result.Jumps, animation);
 
             if (round >= rounds)
             {
                 PlanResult failed = result with
                 {
                     Status = PlannerStatus.AnimationFailed,
-                    Reason = $"no path animated cleanly in {rounds} searches: {Jumps(rejected.Count)} set aside ({rejected[0].Reason}{(rejected.Count > 1 ? "; …" : "")})",
+                    Reason = repair.RoundsExhausted(rounds),
                     Jumps = [],
                     Elapsed = clock.Elapsed,
                 };
-                return new AnimatedPlan(failed, null, rejected, round);
+                return new AnimatedPlan(failed, null, repair.SetAside, round);
             }
 
-            result = query.Plan(from, to, settings, rejectedPairs, stop);
+            result = query.Plan(from, to, settings, repair.Excluded, stop);
         }
     }
 
@@ -173,7 +160,4 @@ public sealed class AnimatedPlanner
         public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason) =>
             inner.ShouldStopNow(clock.Elapsed, out status, out reason);
     }
-
-    /// <summary>"1 jump", "3 jumps".</summary>
-    internal static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
 }

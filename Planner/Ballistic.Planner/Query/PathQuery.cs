@@ -321,8 +321,8 @@ public sealed class PathQuery
         }
 
         PlanResult result = path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {AnimatedPlanner.Jumps(rejected.Count)} set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{AnimatedPlanner.Jumps(path.Count)} found", start, goal, path, clock.Elapsed);
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {JumpRepair.Jumps(rejected.Count)} set aside" : ""), start, goal, clock)
+            : new PlanResult(PlannerStatus.Exact, $"{JumpRepair.Jumps(path.Count)} found", start, goal, path, clock.Elapsed);
         return result with { Expansions = expansions };
     }
 

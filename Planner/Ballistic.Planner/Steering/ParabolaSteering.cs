@@ -9,7 +9,8 @@ namespace Ballistic.Planner.Steering;
 /// <summary>
 /// The closed-form parabola steering method (VALIDSTEER): links two root poses by a ballistic arc whose takeoff
 /// velocity lies in the takeoff friction cone, whose reversed landing velocity lies in the landing cone, whose
-/// speeds respect the character's limits, and along which the trunk box never touches the level.
+/// speeds respect the character's limits, and which passes the arc validator (by default: the trunk box never touches
+/// the level, <see cref="TrunkSweepValidator"/>).
 /// </summary>
 /// <remarks>
 /// In the vertical plane through both poses, with horizontal distance X and rise Z, a takeoff angle α above the
@@ -22,13 +23,20 @@ public sealed class ParabolaSteering
     /// <summary>Fractions of the admissible angle interval tried in order.</summary>
     private static readonly double[] Fractions = [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875];
 
-    private readonly ICollisionWorld? _world;
-
-    /// <summary>Creates a steering method.</summary>
+    /// <summary>Creates a steering method whose arcs must keep the trunk clear of <paramref name="world"/>.</summary>
     /// <param name="limits">Speed limits, gravity and tolerances.</param>
     /// <param name="trunkHalfExtents">Half extents (metres) of the trunk box W0, in the trunk frame.</param>
     /// <param name="world">The level; <c>null</c> for an empty world (no collision checks).</param>
     public ParabolaSteering(SteeringLimits limits, Vector3 trunkHalfExtents, ICollisionWorld? world)
+        : this(limits, trunkHalfExtents, arcValidator: world is null ? null : new TrunkSweepValidator(world, trunkHalfExtents, limits?.CollisionTolerance ?? 0f))
+    {
+    }
+
+    /// <summary>Creates a steering method whose arcs must pass <paramref name="arcValidator"/>.</summary>
+    /// <param name="limits">Speed limits, gravity and tolerances.</param>
+    /// <param name="trunkHalfExtents">Half extents (metres) of the trunk box W0, in the trunk frame.</param>
+    /// <param name="arcValidator">The check every candidate arc must pass (usually a <see cref="TrunkSweepValidator"/>); <c>null</c> for none.</param>
+    public ParabolaSteering(SteeringLimits limits, Vector3 trunkHalfExtents, IArcValidator? arcValidator)
     {
         ArgumentNullException.ThrowIfNull(limits);
         if (!(MathF.Min(trunkHalfExtents.X, MathF.Min(trunkHalfExtents.Y, trunkHalfExtents.Z)) > 0f))
@@ -38,7 +46,7 @@ public sealed class ParabolaSteering
 
         Limits = limits;
         TrunkHalfExtents = trunkHalfExtents;
-        _world = world;
+        ArcValidator = arcValidator;
     }
 
     /// <summary>Speed limits, gravity and tolerances in force.</summary>
@@ -46,6 +54,9 @@ public sealed class ParabolaSteering
 
     /// <summary>Half extents of the trunk box W0, metres.</summary>
     public Vector3 TrunkHalfExtents { get; }
+
+    /// <summary>The check every candidate arc must pass; <c>null</c> when arcs are not checked against anything.</summary>
+    public IArcValidator? ArcValidator { get; }
 
     /// <summary>Finds a jump from <paramref name="from"/> to <paramref name="to"/>, or the reason there is none.</summary>
     /// <param name="from">Takeoff root pose.</param>
@@ -77,7 +88,7 @@ public sealed class ParabolaSteering
 
             anyLowEnough = true;
             BallisticArc arc = MakeArc(from, to, interval, alpha);
-            if (_world is null || IsCollisionFree(arc))
+            if (ArcValidator is null || ArcValidator.IsValid(arc))
             {
                 return new SteeringResult(SteeringFailure.None, arc);
             }
@@ -170,58 +181,6 @@ public sealed class ParabolaSteering
 
         interval = new AngleInterval(lo, hi, x, z, heading);
         return SteeringFailure.None;
-    }
-
-    /// <summary>True when the trunk box never touches the level during the flight.</summary>
-    /// <remarks>
-    /// Conservative and continuous: the flight is cut into intervals over which no point of the trunk moves more
-    /// than its smallest half extent (translation at the arc's top speed plus rotation of its farthest corner). Over
-    /// an interval every trunk position lies inside the mid-interval trunk grown by the largest distance a point can
-    /// travel in half the interval, so that grown box being free proves the whole interval free. Where it is not,
-    /// the interval is halved, down to a growth of <see cref="SteeringLimits.CollisionTolerance"/>. A thin obstacle
-    /// can therefore never be stepped over, and the trunk's corners cannot clip one between samples.
-    /// </remarks>
-    public bool IsCollisionFree(in BallisticArc arc)
-    {
-        if (_world is null)
-        {
-            return true;
-        }
-
-        float spacing = MathF.Min(TrunkHalfExtents.X, MathF.Min(TrunkHalfExtents.Y, TrunkHalfExtents.Z));
-        float speed = MathF.Max(arc.TakeoffVelocity.Length(), arc.LandingVelocity.Length());
-        float dot = MathF.Min(1f, MathF.Abs(Quaternion.Dot(arc.StartRotation, arc.EndRotation)));
-        float turn = 2f * MathF.Acos(dot);
-        float cornerSpeed = arc.FlightTime > 0f ? turn / arc.FlightTime * TrunkHalfExtents.Length() : 0f;
-        float pointSpeed = speed + cornerSpeed;
-        int steps = Math.Max(1, (int)MathF.Ceiling(arc.FlightTime * pointSpeed / spacing));
-        for (int i = 0; i < steps; i++)
-        {
-            if (!IntervalIsFree(arc, arc.FlightTime * i / steps, arc.FlightTime * (i + 1) / steps, pointSpeed, depth: 0))
-            {
-                return false;
-            }
-        }
-
-        return true;
-    }
-
-    private bool IntervalIsFree(in BallisticArc arc, float t0, float t1, float pointSpeed, int depth)
-    {
-        float mid = 0.5f * (t0 + t1);
-        float growth = pointSpeed * 0.5f * (t1 - t0);
-        RootPose pose = arc.PoseAt(mid);
-        if (!_world!.Overlaps(new OrientedBox(pose.Position, TrunkHalfExtents + new Vector3(growth), pose.Rotation)))
-        {
-            return true;
-        }
-
-        if (growth <= Limits.CollisionTolerance || depth >= 24)
-        {
-            return false;
-        }
-
-        return IntervalIsFree(arc, t0, mid, pointSpeed, depth + 1) && IntervalIsFree(arc, mid, t1, pointSpeed, depth + 1);
     }
 
     private BallisticArc MakeArc(in RootPose from, in RootPose to, in AngleInterval interval, double alpha)

@@ -30,6 +30,9 @@ public enum SteeringFailure
     /// <summary>Every admissible parabola rises above the height bound.</summary>
     ApexTooHigh,
 
-    /// <summary>Every tried parabola makes the trunk collide with the level.</summary>
+    /// <summary>
+    /// Every tried parabola is refused by the arc validator: the trunk collides with the level, or an extra
+    /// <see cref="IArcValidator"/> given to the planning scene refuses it.
+    /// </summary>
     Collision,
 }

@@ -16,10 +16,8 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequen
     /// <summary>Order of the request: in-flight requests are delivered in this order.</summary>
     public long Sequence { get; } = sequence;
 
-    /// <summary>Jumps (takeoff id, landing id) set aside because the body could not perform them, with why.</summary>
-    public HashSet<(int From, int To)> Rejected { get; } = [];
-
-    public List<RejectedJump> RejectedJumps { get; } = [];
+    /// <summary>Jumps set aside because the body could not perform them, with why.</summary>
+    public JumpRepair Repair { get; } = new();
 
     /// <summary>Searches made so far.</summary>
     public int Rounds { get; set; }

@@ -105,13 +105,11 @@ internal sealed class PathRequestSystem : IDisposable
         CharacterKind kind = _kinds[_agents.Kind[slot]];
         request.Start = _agents.Stance[slot]!;
         request.Rounds++;
-        PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Rejected, _settings.PlacementCost, out int work);
+        PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair.Excluded, _settings.PlacementCost, out int work);
         if (result.Status != PlannerStatus.Exact)
         {
-            bool repaired = request.RejectedJumps.Count > 0;
-            Fail(slot, request, repaired ? PlannerStatus.AnimationFailed : result.Status,
-                repaired ? $"no path animates cleanly: {Jumps(request.RejectedJumps.Count)} set aside ({request.RejectedJumps[0].Reason}) and then {result.Reason}" : result.Reason,
-                tick, time);
+            string? repaired = request.Repair.SearchFailed(result.Reason);
+            Fail(slot, request, repaired is null ? result.Status : PlannerStatus.AnimationFailed, repaired ?? result.Reason, tick, time);
             return work;
         }
 
@@ -200,19 +198,10 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
-        foreach (JumpProblem problem in animation.Problems)
-        {
-            Jump jump = request.Jumps[problem.Jump];
-            if (request.Rejected.Add((jump.Takeoff.Id, jump.Landing.Id)))
-            {
-                request.RejectedJumps.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
-            }
-        }
-
+        request.Repair.Reject(request.Jumps, animation);
         if (request.Rounds >= _settings.RepairRounds)
         {
-            Fail(slot, request, PlannerStatus.AnimationFailed,
-                $"no path animated cleanly in {request.Rounds} searches: {Jumps(request.RejectedJumps.Count)} set aside ({request.RejectedJumps[0].Reason})", tick, time);
+            Fail(slot, request, PlannerStatus.AnimationFailed, request.Repair.RoundsExhausted(request.Rounds), tick, time);
             return;
         }
 
@@ -225,8 +214,6 @@ internal sealed class PathRequestSystem : IDisposable
         _agents.State[slot] = AgentState.Idle;
         _events.Add(new JumpEvent(JumpEventKind.PathFailed, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, status, reason));
     }
-
-    private static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
 
     /// <summary>True while the request is its agent's pending one (the agent was neither removed nor given another request).</summary>
     private bool Current(PathRequest request) =>

@@ -1,0 +1,61 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Query;
+
+/// <summary>
+/// The lazy-repair record of one path request: the jumps set aside because the whole body could not perform them,
+/// the set a search must avoid, and the reasons a request that never animates cleanly reports. Shared by
+/// <see cref="AnimatedPlanner"/> and the runtime's path requests so both repair and explain alike. Not thread-safe.
+/// </summary>
+public sealed class JumpRepair
+{
+    private readonly HashSet<(int From, int To)> _excluded = [];
+    private readonly List<RejectedJump> _setAside = [];
+
+    /// <summary>Jumps (takeoff node id, landing node id) the next search must not use.</summary>
+    public IReadOnlySet<(int From, int To)> Excluded => _excluded;
+
+    /// <summary>The jumps set aside so far, in order, each with the animator's reason.</summary>
+    public IReadOnlyList<RejectedJump> SetAside => _setAside;
+
+    /// <summary>Sets aside every jump of <paramref name="path"/> that <paramref name="animation"/> reports a problem with.</summary>
+    /// <param name="path">The path that was animated.</param>
+    /// <param name="animation">Its animation; problems index jumps of <paramref name="path"/>.</param>
+    /// <returns>How many jumps were newly set aside.</returns>
+    public int Reject(IReadOnlyList<Jump> path, JumpAnimation animation)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        ArgumentNullException.ThrowIfNull(animation);
+        int added = 0;
+        foreach (JumpProblem problem in animation.Problems)
+        {
+            Jump jump = path[problem.Jump];
+            if (_excluded.Add((jump.Takeoff.Id, jump.Landing.Id)))
+            {
+                _setAside.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
+                added++;
+            }
+        }
+
+        return added;
+    }
+
+    /// <summary>
+    /// The reason of a request whose search failed with <paramref name="searchReason"/> after jumps were set aside;
+    /// <c>null</c> when none were (the search's own status and reason then stand).
+    /// </summary>
+    public string? SearchFailed(string searchReason) =>
+        _setAside.Count == 0 ? null : $"no path animates cleanly: {Jumps(_setAside.Count)} set aside ({First()}) and then {searchReason}";
+
+    /// <summary>The reason of a request whose every search, <paramref name="rounds"/> of them, gave a path that did not animate cleanly.</summary>
+    public string RoundsExhausted(int rounds) => $"no path animated cleanly in {rounds} searches: {Jumps(_setAside.Count)} set aside ({First()})";
+
+    /// <summary>What to add to a success's reason: empty, or that some jumps were set aside first.</summary>
+    public string SuccessNote() => _setAside.Count == 0 ? "" : $" after setting aside {Jumps(_setAside.Count)} the body could not perform";
+
+    /// <summary>"1 jump", "3 jumps".</summary>
+    internal static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
+
+    private string First() => _setAside.Count == 0 ? "none" : _setAside[0].Reason + (_setAside.Count > 1 ? "; …" : "");
+}
