@@ -1,56 +1,533 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Baking;
+using Ballistic.Runtime.Hosting;
+using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Links;
 using Godot;
-using PlannerAabb = Ballistic.Planner.Geometry.Aabb;
-using SystemVector3 = System.Numerics.Vector3;
 
 namespace Ballistic.Addon;
 
 /// <summary>
-/// The level region a jump roadmap covers, in the manner of <c>NavigationRegion3D</c>: the visual meshes below
-/// this node's parent are the level the roadmap is baked on. Later versions bake and hold the roadmap itself;
-/// this one gathers the level's world bounds when it enters the tree.
+/// A jump roadmap over level geometry, in the manner of <c>NavigationRegion3D</c>: its <see cref="Character"/> can
+/// jump between the stances of its baked <see cref="Roadmap"/>. The source geometry is parsed like a
+/// <c>NavigationMesh</c>'s (mesh instances, static colliders or both; this node's children or a group); the bake runs on
+/// a thread (<see cref="BakeRoadmap"/>, <see cref="BakeFinished"/>); a failed or cancelled bake keeps the previous
+/// data. At runtime the node registers its region with the <see cref="JumpNavigationServer"/>, and optionally
+/// publishes its jumps as one-way links on the world's navigation map. The node only gathers Godot data and
+/// forwards it: <see cref="SourceGeometry"/>, <see cref="BakeJob"/>, <see cref="RoadmapData"/>,
+/// <see cref="JumpNavigationHost"/> and <see cref="JumpLinkSet"/> decide.
 /// </summary>
+[Tool]
 [GlobalClass]
 [Icon("res://addons/ballistic/icons/JumpRoadmap3D.svg")]
 public partial class JumpRoadmap3D : Node3D
 {
-    /// <summary>World-space bounds (metres, Y up) of every <see cref="MeshInstance3D"/> in the level, found in <see cref="_Ready"/>.</summary>
-    public PlannerAabb LevelBounds { get; private set; } = PlannerAabb.Empty;
+    /// <summary>Which scene nodes give source geometry (the names of <c>NavigationMesh.ParsedGeometryType</c>).</summary>
+    public enum ParsedGeometry
+    {
+        /// <summary>Visual meshes (<see cref="MeshInstance3D"/>).</summary>
+        MeshInstances = 0,
 
-    /// <summary>How many mesh instances <see cref="_Ready"/> found in the level.</summary>
-    public int LevelMeshCount { get; private set; }
+        /// <summary>Collision shapes of <see cref="StaticBody3D"/> nodes on <see cref="CollisionMask"/> layers.</summary>
+        StaticColliders = 1,
 
-    /// <summary>True once <see cref="_Ready"/> has run.</summary>
-    public bool IsLevelScanned { get; private set; }
+        /// <summary>Both.</summary>
+        Both = 2,
+    }
 
-    /// <summary>Collects the level's mesh instances and their world bounds.</summary>
+    /// <summary>Where source geometry is looked for (the names of <c>NavigationMesh.SourceGeometryMode</c>).</summary>
+    public enum SourceGeometry3D
+    {
+        /// <summary>This node's children, recursively.</summary>
+        RootNodeChildren = 0,
+
+        /// <summary>The nodes of <see cref="SourceGroupName"/> and their children.</summary>
+        GroupsWithChildren = 1,
+
+        /// <summary>Only the nodes of <see cref="SourceGroupName"/>.</summary>
+        GroupsExplicit = 2,
+    }
+
+    /// <summary>Node metadata giving a source's Coulomb friction μ (a float); the character's default otherwise.</summary>
+    public const string FrictionMeta = "jump_friction";
+
+    private BakeJob? _job;
+    private string _lastBakeError = "";
+    private string? _staleness;
+    private RegionHandle _region;
+    private Task<CharacterKind>? _kindTask;
+    private CharacterKind? _kind;
+    private readonly List<Rid> _links = [];
+    private JumpLinkSet? _linkSet;
+
+    /// <summary>Emitted when a bake ends: succeeded (new data in <see cref="Roadmap"/>), failed or cancelled (<see cref="GetLastBakeError"/>).</summary>
+    [Signal]
+    public delegate void BakeFinishedEventHandler();
+
+    /// <summary>The character kind the roadmap is for.</summary>
+    [Export]
+    public JumpCharacter? Character { get; set; }
+
+    /// <summary>The baked roadmap; <c>null</c> before the first bake.</summary>
+    [Export]
+    public JumpRoadmapData? Roadmap { get; set; }
+
+    /// <summary>Which nodes give source geometry.</summary>
+    [ExportGroup("Geometry")]
+    [Export]
+    public ParsedGeometry ParsedGeometryType { get; set; } = ParsedGeometry.MeshInstances;
+
+    /// <summary>Physics layers whose static colliders are parsed (with <see cref="ParsedGeometry.StaticColliders"/> or <see cref="ParsedGeometry.Both"/>).</summary>
+    [Export(PropertyHint.Layers3DPhysics)]
+    public uint CollisionMask { get; set; } = uint.MaxValue;
+
+    /// <summary>Where source geometry is looked for.</summary>
+    [Export]
+    public SourceGeometry3D SourceGeometryMode { get; set; } = SourceGeometry3D.RootNodeChildren;
+
+    /// <summary>The group of source nodes for the group modes.</summary>
+    [Export]
+    public StringName SourceGroupName { get; set; } = "jump_source_geometry";
+
+    /// <summary>The bake's seed: the same seed and geometry give the same roadmap.</summary>
+    [ExportGroup("Bake")]
+    [Export]
+    public int Seed { get; set; } = 1;
+
+    /// <summary>The bake's node budget (stances).</summary>
+    [Export(PropertyHint.Range, "8,100000,1,or_greater")]
+    public int MaxNodes { get; set; } = 400;
+
+    /// <summary>The bake's time limit, seconds; 0 for none.</summary>
+    [Export(PropertyHint.Range, "0,3600,0.1,or_greater,suffix:s")]
+    public double TimeLimitSeconds { get; set; }
+
+    /// <summary>At runtime, bake on a thread when no roadmap was baked in the editor (handy for prototypes).</summary>
+    [Export]
+    public bool BakeOnReadyIfMissing { get; set; } = true;
+
+    /// <summary>Publish the roadmap's jumps as one-way links on the world's navigation map at runtime.</summary>
+    [ExportGroup("Navigation Links")]
+    [Export]
+    public bool PublishNavigationLinks { get; set; }
+
+    /// <summary>The navigation layers of the published links.</summary>
+    [Export(PropertyHint.Layers3DNavigation)]
+    public uint NavigationLayers { get; set; } = 1;
+
+    /// <summary>The walking speed (m/s) the links' travel cost is measured against: a jump costs its flight time at this speed.</summary>
+    [Export(PropertyHint.Range, "0.1,20,0.1,or_greater,suffix:m/s")]
+    public float LinkReferenceSpeed { get; set; } = 3f;
+
+    /// <summary>Jumps shorter than this (horizontal metres between takeoff and landing) are left to the navmesh.</summary>
+    [Export(PropertyHint.Range, "0,10,0.05,or_greater,suffix:m")]
+    public float LinkMinDistance { get; set; } = 1f;
+
+    /// <summary>At most this many links are published.</summary>
+    [Export(PropertyHint.Range, "1,100000,1,or_greater")]
+    public int MaxLinks { get; set; } = 2000;
+
+    /// <summary>The roadmap loaded for this level and character at runtime (or after a bake); <c>null</c> before.</summary>
+    public Roadmap? LoadedRoadmap { get; private set; }
+
+    /// <summary>The published links, by index (the node's agents look up the link they reached).</summary>
+    public JumpLinkSet? NavigationLinks => _linkSet;
+
+    /// <summary>Parses the level in the editor (to warn about a stale roadmap) or registers the region at runtime.</summary>
     public override void _Ready()
     {
-        Node level = GetParent() ?? this;
-        PlannerAabb bounds = PlannerAabb.Empty;
-        int count = 0;
-        foreach (Node node in level.FindChildren("*", nameof(MeshInstance3D), recursive: true, owned: false))
+        AddToGroup(GroupName);
+        if (Engine.IsEditorHint())
         {
-            if (node is not MeshInstance3D mesh || mesh.Mesh is null)
-            {
-                continue;
-            }
-
-            Aabb world = mesh.GlobalTransform * mesh.GetAabb();
-            bounds = PlannerAabb.Union(bounds, new PlannerAabb(ToPlanner(world.Position), ToPlanner(world.End)));
-            count++;
+            RefreshStaleness();
+            return;
         }
 
-        LevelBounds = bounds;
-        LevelMeshCount = count;
-        IsLevelScanned = true;
+        JumpNavigationServer.Get(this).Track(this);
+        if (Roadmap is { RoadmapBytes.Length: > 0 })
+        {
+            StartLoadingRuntimeKind();
+        }
+        else if (BakeOnReadyIfMissing)
+        {
+            BakeRoadmap(onThread: true);
+        }
+        else
+        {
+            GD.PushWarning($"{GetPath()}: no roadmap is baked; select the node and press Bake Jump Roadmap.");
+        }
+    }
+
+    /// <summary>The group every roadmap node joins, so that agents can find one.</summary>
+    public const string GroupName = "jump_roadmaps";
+
+    /// <summary>Frees the region, the links and any bake.</summary>
+    public override void _ExitTree()
+    {
+        _job?.Dispose();
+        _job = null;
+        UnpublishLinks();
+        if (JumpNavigationServer.Singleton is { } server)
+        {
+            server.Untrack(this);
+            if (_region.IsAssigned)
+            {
+                server.Host.FreeRegion(_region);
+            }
+        }
+
+        _region = default;
+    }
+
+    /// <summary>Finishes a threaded bake or a runtime load when it is done.</summary>
+    public override void _Process(double delta)
+    {
+        if (_job is { IsBaking: false, Outcome: { } outcome })
+        {
+            _job.Dispose();
+            _job = null;
+            FinishBake(outcome);
+        }
+
+        if (_kindTask is { IsCompleted: true } task)
+        {
+            _kindTask = null;
+            if (task.IsCompletedSuccessfully)
+            {
+                AttachKind(task.Result);
+            }
+            else
+            {
+                GD.PushError($"{GetPath()}: the roadmap cannot be used: {task.Exception?.GetBaseException().Message}");
+            }
+        }
+    }
+
+    /// <summary>
+    /// Bakes the roadmap from the current source geometry and character. With <paramref name="onThread"/> the bake runs
+    /// on a background thread (poll <see cref="IsBaking"/>, wait for <see cref="BakeFinished"/>); otherwise it blocks.
+    /// A bake that cannot start (no character, no geometry, a bad rig) ends at once with the reason in
+    /// <see cref="GetLastBakeError"/> and <see cref="BakeFinished"/>; the previous data is kept whenever a bake fails.
+    /// </summary>
+    public void BakeRoadmap(bool onThread = true)
+    {
+        if (_job is not null)
+        {
+            GD.PushWarning($"{Name}: a bake is already running.");
+            return;
+        }
+
+        Level level;
+        ReducedCharacter reduced;
+        try
+        {
+            (_, reduced) = LoadCharacter();
+            level = ParseSourceGeometry().Build();
+        }
+        catch (Exception e) when (e is Planner.IO.BallisticInputException or ArgumentException or InvalidOperationException)
+        {
+            FailBake(e.Message);
+            return;
+        }
+
+        _lastBakeError = "";
+        var settings = BakeJob.Settings(Seed, MaxNodes, TimeLimitSeconds);
+        if (onThread)
+        {
+            _job = BakeJob.Start(level, reduced, settings);
+        }
+        else
+        {
+            FinishBake(BakeJob.Run(level, reduced, settings));
+        }
+    }
+
+    /// <summary>True while a threaded bake runs.</summary>
+    public bool IsBaking() => _job is { IsBaking: true };
+
+    /// <summary>Cancels a running bake; it ends cancelled and the previous data stays.</summary>
+    public void CancelBake() => _job?.Cancel();
+
+    /// <summary>The running bake's progress, 0 to 1.</summary>
+    public double GetBakeProgress() => _job?.Progress.Fraction ?? 0.0;
+
+    /// <summary>The running bake's progress in words ("214 / 400 stances, 1,930 jumps, 3.1 s").</summary>
+    public string GetBakeStatusText() => _job?.Progress.Text ?? "";
+
+    /// <summary>Why the last bake failed or was cancelled; empty after a success.</summary>
+    public string GetLastBakeError() => _lastBakeError;
+
+    /// <summary>The region handle of this roadmap in the server (created on first use, so agents readied first can name it).</summary>
+    public RegionHandle GetRegion()
+    {
+        if (!_region.IsAssigned && !Engine.IsEditorHint())
+        {
+            _region = JumpNavigationServer.Get(this).Host.CreateRegion(IsInsideTree() ? GetPath().ToString() : Name.ToString());
+        }
+
+        return _region;
+    }
+
+    /// <summary>Warns when there is no character, nothing is baked, or the level or character changed since the bake.</summary>
+    public override string[] _GetConfigurationWarnings()
+    {
+        var warnings = new List<string>();
+        if (Character is null)
+        {
+            warnings.Add("No Character: assign a JumpCharacter (e.g. res://Scenes/characters/skeleton.tres).");
+        }
+
+        if (Roadmap is null || Roadmap.RoadmapBytes.Length == 0)
+        {
+            warnings.Add("No roadmap is baked: select this node and press Bake Jump Roadmap in the 3D toolbar.");
+        }
+        else if (_staleness is not null)
+        {
+            warnings.Add($"The baked roadmap is out of date: {_staleness}. Bake it again.");
+        }
+
+        if (_lastBakeError.Length > 0)
+        {
+            warnings.Add($"The last bake failed: {_lastBakeError}");
+        }
+
+        return [.. warnings];
+    }
+
+    /// <summary>The level as the planner sees it: every source node's triangles in world space.</summary>
+    /// <exception cref="Planner.Levels.LevelException">A source is malformed, or there is no triangle at all (the message names the node).</exception>
+    public SourceGeometry ParseSourceGeometry()
+    {
+        var geometry = new SourceGeometry(IsInsideTree() ? GetPath().ToString() : Name.ToString());
+        var seen = new HashSet<ulong>();
+        foreach (Node root in SourceRoots())
+        {
+            bool children = SourceGeometryMode != SourceGeometry3D.GroupsExplicit;
+            AddSource(geometry, root, seen);
+            if (children)
+            {
+                foreach (Node node in root.FindChildren("*", "", recursive: true, owned: false))
+                {
+                    AddSource(geometry, node, seen);
+                }
+            }
+        }
+
+        return geometry;
+    }
+
+    /// <summary>Draws the roadmap in the editor (called by the gizmo plugin).</summary>
+    internal (Runtime.DebugDraw.DebugLineRange Nodes, Runtime.DebugDraw.DebugLineRange Jumps) AddGizmoLines(Runtime.DebugDraw.DebugLines lines, Runtime.DebugDraw.DebugDrawSettings settings)
+    {
+        Roadmap? roadmap = LoadedRoadmap;
+        if (roadmap is null && Roadmap is { RoadmapBytes.Length: > 0 } data && Character is not null)
+        {
+            try
+            {
+                roadmap = RoadmapFile.FromBytes(data.RoadmapBytes, data.ResourcePath);
+                LoadedRoadmap = roadmap;
+            }
+            catch (Planner.IO.BallisticInputException e)
+            {
+                GD.PushWarning($"{Name}: the baked roadmap cannot be read: {e.Message}");
+                return default;
+            }
+        }
+
+        return roadmap is null ? default : (lines.AddRoadmapNodes(roadmap, settings), lines.AddRoadmapJumps(roadmap, settings));
+    }
+
+    private IEnumerable<Node> SourceRoots() => SourceGeometryMode == SourceGeometry3D.RootNodeChildren
+        ? [this]
+        : GetTree().GetNodesInGroup(SourceGroupName);
+
+    private void AddSource(SourceGeometry geometry, Node node, HashSet<ulong> seen)
+    {
+        if (!seen.Add(node.GetInstanceId()))
+        {
+            return;
+        }
+
+        float? friction = node.HasMeta(FrictionMeta) ? node.GetMeta(FrictionMeta).AsSingle() : null;
+        if (ParsedGeometryType != ParsedGeometry.StaticColliders && node is MeshInstance3D { Mesh: { } mesh } instance)
+        {
+            geometry.AddFaces(instance.GetPath().ToString(), mesh.GetFaces(), instance.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, friction);
+        }
+
+        if (ParsedGeometryType != ParsedGeometry.MeshInstances && node is CollisionShape3D { Disabled: false, Shape: { } shape } collision
+            && collision.GetParent() is StaticBody3D body && (body.CollisionLayer & CollisionMask) != 0)
+        {
+            string name = collision.GetPath().ToString();
+            float? bodyFriction = friction ?? (body.HasMeta(FrictionMeta) ? body.GetMeta(FrictionMeta).AsSingle() : null);
+            switch (shape)
+            {
+                case BoxShape3D box:
+                    geometry.AddBox(name, box.Size.ToNumerics(), collision.GlobalTransform.ToNumerics(), bodyFriction);
+                    break;
+                case ConcavePolygonShape3D concave:
+                    geometry.AddFaces(name, concave.GetFaces().Select(GodotMath.ToNumerics).ToArray(), collision.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, bodyFriction);
+                    break;
+                default:
+                    GD.PushWarning($"{name}: {shape.GetClass()} is not parsed as jump source geometry (boxes and concave polygons are); give the level a mesh or one of those.");
+                    break;
+            }
+        }
+    }
+
+    private (CharacterModel Model, ReducedCharacter Reduced) LoadCharacter() =>
+        Character is null
+            ? throw new InvalidOperationException($"{Name}: no Character is assigned; set a JumpCharacter (e.g. res://Scenes/characters/skeleton.tres).")
+            : Character.Load();
+
+    private void FinishBake(BakeOutcome outcome)
+    {
+        if (outcome.Succeeded && outcome.Data is { } data)
+        {
+            Roadmap = JumpRoadmapData.FromData(data);
+            LoadedRoadmap = outcome.Roadmap;
+            _lastBakeError = "";
+            _staleness = null;
+            if (!Engine.IsEditorHint())
+            {
+                StartLoadingRuntimeKind();
+            }
+        }
+        else
+        {
+            _lastBakeError = outcome.ToString();
+            GD.PushWarning($"{Name}: {_lastBakeError}");
+        }
+
+        UpdateGizmos();
+        UpdateConfigurationWarnings();
+        EmitSignal(SignalName.BakeFinished);
+    }
+
+    /// <summary>A bake that could not start: the previous data stays.</summary>
+    private void FailBake(string reason)
+    {
+        _lastBakeError = $"bake failed: {reason}";
+        GD.PushWarning($"{Name}: {_lastBakeError}");
+        UpdateConfigurationWarnings();
+        EmitSignal(SignalName.BakeFinished);
+    }
+
+    private void RefreshStaleness()
+    {
+        _staleness = null;
+        if (Roadmap is not { RoadmapBytes.Length: > 0 } data || Character is null)
+        {
+            return;
+        }
+
+        try
+        {
+            (_, ReducedCharacter reduced) = LoadCharacter();
+            _staleness = data.ToData().Staleness(ParseSourceGeometry().Fingerprint, reduced);
+        }
+        catch (Exception e) when (e is Planner.IO.BallisticInputException or ArgumentException or InvalidOperationException)
+        {
+            _staleness = e.Message;
+        }
+
         UpdateConfigurationWarnings();
     }
 
-    /// <summary>Warns in the scene tree when there is no level geometry to bake on.</summary>
-    public override string[] _GetConfigurationWarnings() =>
-        IsLevelScanned && LevelMeshCount == 0
-            ? ["No MeshInstance3D below this node's parent: there is no level to plan jumps on."]
-            : [];
+    /// <summary>Parses the level on the main thread, then builds the planning scene, roadmap and animator on a worker thread.</summary>
+    private void StartLoadingRuntimeKind()
+    {
+        Level level;
+        CharacterModel model;
+        ReducedCharacter reduced;
+        try
+        {
+            (model, reduced) = LoadCharacter();
+            level = ParseSourceGeometry().Build();
+        }
+        catch (Exception e) when (e is Planner.IO.BallisticInputException or ArgumentException or InvalidOperationException)
+        {
+            GD.PushError($"{GetPath()}: {e.Message}");
+            return;
+        }
 
-    private static SystemVector3 ToPlanner(Vector3 v) => new((float)v.X, (float)v.Y, (float)v.Z);
+        RoadmapData data = Roadmap!.ToData();
+        string name = string.IsNullOrEmpty(Roadmap.ResourcePath) ? GetPath().ToString() : Roadmap.ResourcePath;
+        _kindTask = Task.Run(() =>
+        {
+            var scene = PlanningScene.Create(level, reduced);
+            Roadmap roadmap = data.Load(level, reduced, name);
+            return new CharacterKind(scene, roadmap, new JumpAnimator(scene, model));
+        });
+    }
+
+    private void AttachKind(CharacterKind kind)
+    {
+        _kind = kind;
+        LoadedRoadmap = kind.Roadmap;
+        var result = JumpNavigationServer.Get(this).Host.SetRegionKind(GetRegion(), kind);
+        if (!result.Ok)
+        {
+            GD.PushError($"{GetPath()}: {result.Reason}");
+            return;
+        }
+
+        if (PublishNavigationLinks)
+        {
+            PublishLinks(kind.Roadmap);
+        }
+    }
+
+    private void PublishLinks(Roadmap roadmap)
+    {
+        UnpublishLinks();
+        _linkSet = JumpLinkSet.Build(roadmap, new JumpLinkSettings
+        {
+            ReferenceSpeed = LinkReferenceSpeed,
+            MinHorizontalDistance = LinkMinDistance,
+            MaxLinks = MaxLinks,
+        });
+        Rid map = GetWorld3D().NavigationMap;
+        foreach (JumpLink link in _linkSet.Links)
+        {
+            Rid rid = NavigationServer3D.LinkCreate();
+            NavigationServer3D.LinkSetMap(rid, map);
+            NavigationServer3D.LinkSetBidirectional(rid, false);
+            NavigationServer3D.LinkSetStartPosition(rid, link.Start.ToGodot());
+            NavigationServer3D.LinkSetEndPosition(rid, link.End.ToGodot());
+            NavigationServer3D.LinkSetTravelCost(rid, link.TravelCost);
+            NavigationServer3D.LinkSetEnterCost(rid, link.EnterCost);
+            NavigationServer3D.LinkSetNavigationLayers(rid, NavigationLayers);
+            NavigationServer3D.LinkSetOwnerId(rid, GetInstanceId());
+            NavigationServer3D.LinkSetEnabled(rid, true);
+            _links.Add(rid);
+        }
+    }
+
+    private void UnpublishLinks()
+    {
+        foreach (Rid rid in _links)
+        {
+            NavigationServer3D.FreeRid(rid);
+        }
+
+        _links.Clear();
+        _linkSet = null;
+    }
+
+    /// <summary>
+    /// Where the segment from <paramref name="from"/> to <paramref name="to"/> (world metres) first meets the level as
+    /// the planner sees it (no physics bodies needed); <c>null</c> when it misses or the roadmap is not loaded yet.
+    /// </summary>
+    public Vector3? IntersectLevel(Vector3 from, Vector3 to) =>
+        _kind is not null && _kind.Scene.Bvh.Raycast(from.ToNumerics(), (to - from).ToNumerics(), 1f, out Planner.Collision.RayHit hit)
+            ? hit.Point.ToGodot()
+            : null;
+
+    /// <summary>The index of a published link (<see cref="JumpLinkSet.Links"/>) from its navigation server id; -1 when it is not ours.</summary>
+    public int FindLink(Rid link) => _links.IndexOf(link);
 }
