@@ -35,7 +35,7 @@ public partial class RoadmapBakeToolbar : HBoxContainer
         box.AddChild(_progressBar);
         _progressDialog.AddChild(box);
         _progressDialog.GetOkButton().Visible = false;
-        _progressDialog.CancelButtonText = "Cancel";
+        _progressDialog.GetCancelButton().Text = "Cancel";
         _progressDialog.Canceled += OnCancel;
         AddChild(_progressDialog);
         AddChild(_errorDialog);
