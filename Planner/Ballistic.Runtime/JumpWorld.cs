@@ -94,29 +94,78 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)
     {
-        if (kind is null)
+        if (Check(kind) is { } refused)
         {
-            return new AddKindResult(new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null"), default);
-        }
-
-        if (kind.Scene.Level.Fingerprint != Level.Fingerprint)
-        {
-            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its scene is of another level than this world's ({Level.Source})"), default);
-        }
-
-        if (kind.Roadmap.LevelFingerprint != Level.Fingerprint)
-        {
-            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level"), default);
-        }
-
-        if (kind.Roadmap.CharacterFingerprint != kind.Scene.Character.Fingerprint)
-        {
-            return new AddKindResult(new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked for another character ({kind.Roadmap.CharacterName})"), default);
+            return new AddKindResult(refused, default);
         }
 
         _kinds.Add(kind);
         _searches.Add(new RoadmapSearch(kind, Settings));
         return new AddKindResult(RuntimeResult.Success, new KindHandle(_kinds.Count - 1, true));
+    }
+
+    /// <summary>
+    /// Replaces a kind's scene, roadmap and animator in place (a rebake), keeping its handle. The replacement must
+    /// pass the checks of <see cref="AddKind"/>, and the kind must have no live agent: remove them first and add them
+    /// again on the new roadmap (where they stood). A refused replacement leaves the kind as it was.
+    /// </summary>
+    /// <param name="kind">The kind to replace.</param>
+    /// <param name="replacement">The new scene, roadmap and animator.</param>
+    public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind replacement)
+    {
+        if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
+        {
+            return new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)");
+        }
+
+        if (Check(replacement) is { } refused)
+        {
+            return refused;
+        }
+
+        int agents = 0;
+        for (int slot = 0; slot < _agents.HighWater; slot++)
+        {
+            if (_agents.Alive[slot] && _agents.Kind[slot] == kind.Index)
+            {
+                agents++;
+            }
+        }
+
+        if (agents > 0)
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"{kind} ('{_kinds[kind.Index].Name}') still has {agents} live agent{(agents == 1 ? "" : "s")}: remove them before replacing it");
+        }
+
+        _kinds[kind.Index] = replacement;
+        _searches[kind.Index] = new RoadmapSearch(replacement, Settings);
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>Why <paramref name="kind"/> cannot join this world, or <c>null</c> when it can.</summary>
+    private RuntimeResult? Check(CharacterKind? kind)
+    {
+        if (kind is null)
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null");
+        }
+
+        if (kind.Scene.Level.Fingerprint != Level.Fingerprint)
+        {
+            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its scene is of another level than this world's ({Level.Source})");
+        }
+
+        if (kind.Roadmap.LevelFingerprint != Level.Fingerprint)
+        {
+            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level");
+        }
+
+        if (kind.Roadmap.CharacterFingerprint != kind.Scene.Character.Fingerprint)
+        {
+            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked for another character ({kind.Roadmap.CharacterName})");
+        }
+
+        return null;
     }
 
     /// <summary>
@@ -277,6 +326,58 @@ public sealed class JumpWorld : IDisposable
             _requests.Request(slot);
         }
 
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>
+    /// Performs exactly one jump of the agent's roadmap, the edge <paramref name="edge"/> (an index into its kind's
+    /// <see cref="Roadmap.Edges"/>): the agent is moved at once onto the edge's takeoff node (pushed, as by
+    /// <see cref="Warp"/>, dropping its path and any pending request), and its target becomes the landing node's
+    /// contact centre. No search is made: the one-jump path is the roadmap's own arc, animated like any path and
+    /// delivered <see cref="WorldSettings.PathLatencyTicks"/> later as a <see cref="JumpEventKind.PathFound"/> event,
+    /// followed by <see cref="JumpEventKind.JumpStarted"/>, <see cref="JumpEventKind.Landed"/> and
+    /// <see cref="JumpEventKind.TargetReached"/>. When the whole body cannot perform that jump, it is set aside as a
+    /// path search sets aside such jumps, and the request becomes a search from the takeoff node to the same landing
+    /// (so the agent still gets there, by other jumps, or a <see cref="JumpEventKind.PathFailed"/> event says why).
+    /// Fails at once, leaving the agent as it was, for an edge that is not the roadmap's or a takeoff node the body
+    /// cannot stand on.
+    /// </summary>
+    /// <param name="agent">The agent.</param>
+    /// <param name="edge">Index of the jump in the agent's kind's roadmap edges.</param>
+    public RuntimeResult PerformJump(AgentHandle agent, int edge)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        int slot = agent.Index;
+        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        Roadmap roadmap = kind.Roadmap;
+        if ((uint)edge >= (uint)roadmap.Edges.Count)
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"jump edge {edge} is not an edge of kind '{kind.Name}''s roadmap ({roadmap.Edges.Count} edges)");
+        }
+
+        RoadmapEdge jump = roadmap.Edges[edge];
+        RoadmapNode from = roadmap.Nodes[jump.From];
+        if (!kind.Animator.CanStand(new PoseEvaluation(from.Pose, PoseValidity.Valid, from.Contacts, from.Cone)))
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidPosition, $"the body of kind '{kind.Name}' cannot stand on node {jump.From}, the takeoff of jump edge {edge}");
+        }
+
+        float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
+        _requests.Cancel(slot);
+        _agents.Path[slot] = null;
+        _agents.StopAtStance[slot] = false;
+        _agents.Stance[slot] = from;
+        _agents.Root[slot] = from.Pose;
+        angles.CopyTo(_agents.Angles[slot], 0);
+        _agents.PoseDirty[slot] = true;
+        _agents.Target[slot] = roadmap.ContactCentres[jump.To];
+        _agents.HasTarget[slot] = true;
+        _agents.State[slot] = AgentState.Stance;
+        _requests.Request(slot, edge);
         return RuntimeResult.Success;
     }
 

@@ -13,6 +13,9 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequen
 
     public Vector3 Target { get; } = target;
 
+    /// <summary>The roadmap edge to perform as the whole path, with no search (<see cref="JumpWorld.PerformJump"/>); −1 to search (also once that edge was set aside).</summary>
+    public int ForcedEdge { get; set; } = -1;
+
     /// <summary>Order of the request: in-flight requests are delivered in this order.</summary>
     public long Sequence { get; } = sequence;
 

@@ -55,9 +55,15 @@ internal sealed class PathRequestSystem : IDisposable
     public int LastTickWork { get; private set; }
 
     /// <summary>Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one.</summary>
-    public void Request(int slot)
+    public void Request(int slot) => Request(slot, -1);
+
+    /// <summary>
+    /// Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one: with
+    /// <paramref name="forcedEdge"/> ≥ 0, that roadmap edge is the whole path (the agent stands on its takeoff node).
+    /// </summary>
+    public void Request(int slot, int forcedEdge)
     {
-        var request = new PathRequest(_agents.HandleOf(slot), _agents.Target[slot], _sequence++);
+        var request = new PathRequest(_agents.HandleOf(slot), _agents.Target[slot], _sequence++) { ForcedEdge = forcedEdge };
         _agents.Request[slot] = request;
         _queue.AddLast(request);
     }
@@ -105,26 +111,38 @@ internal sealed class PathRequestSystem : IDisposable
         CharacterKind kind = _kinds[_agents.Kind[slot]];
         request.Start = _agents.Stance[slot]!;
         request.Rounds++;
-        PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair.Excluded, _settings.PlacementCost, out int work);
-        if (result.Status != PlannerStatus.Exact)
+        int work = 0;
+        if (request.ForcedEdge >= 0)
         {
-            string? repaired = request.Repair.SearchFailed(result.Reason);
-            Fail(slot, request, repaired is null ? result.Status : PlannerStatus.AnimationFailed, repaired ?? result.Reason, tick, time);
-            return work;
+            // One given jump of the roadmap: no search.
+            Roadmap roadmap = kind.Roadmap;
+            RoadmapEdge edge = roadmap.Edges[request.ForcedEdge];
+            request.Jumps = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
+        }
+        else
+        {
+            PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair.Excluded, _settings.PlacementCost, out work);
+            if (result.Status != PlannerStatus.Exact)
+            {
+                string? repaired = request.Repair.SearchFailed(result.Reason);
+                Fail(slot, request, repaired is null ? result.Status : PlannerStatus.AnimationFailed, repaired ?? result.Reason, tick, time);
+                return work;
+            }
+
+            if (result.Jumps.Count == 0)
+            {
+                _agents.Request[slot] = null;
+                _agents.State[slot] = AgentState.Idle;
+                _agents.HasTarget[slot] = false;
+                _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
+                return work;
+            }
+
+            request.Jumps = result.Jumps;
         }
 
-        if (result.Jumps.Count == 0)
-        {
-            _agents.Request[slot] = null;
-            _agents.State[slot] = AgentState.Idle;
-            _agents.HasTarget[slot] = false;
-            _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
-            return work;
-        }
-
-        request.Jumps = result.Jumps;
         request.DueTick = tick + _settings.PathLatencyTicks;
-        IReadOnlyList<Jump> jumps = result.Jumps;
+        IReadOnlyList<Jump> jumps = request.Jumps;
         JumpAnimator animator = kind.Animator;
         float frameRate = _settings.AnimationFrameRate;
         if (_scheduler is null)
@@ -198,6 +216,8 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
+        // A given jump the body cannot perform is set aside like any other: the request becomes a search to the same landing.
+        request.ForcedEdge = -1;
         request.Repair.Reject(request.Jumps, animation);
         if (request.Rounds >= _settings.RepairRounds)
         {

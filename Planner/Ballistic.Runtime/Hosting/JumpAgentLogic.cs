@@ -1,0 +1,545 @@
+using System.Numerics;
+using Ballistic.Planner.Geometry;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Paths;
+
+namespace Ballistic.Runtime.Hosting;
+
+/// <summary>
+/// The logic of a <c>JumpAgent3D</c> node, after Godot's <c>NavigationAgent3D</c>, testable without a scene: the node
+/// registers it on its region, forwards <see cref="TargetPosition"/> and the other members, calls <see cref="Update"/>
+/// every physics tick after the server stepped, re-emits the signals it returns and, in
+/// <see cref="AgentMotionMode.MoveParent"/> mode, moves its parent to <see cref="BodyPosition"/> and
+/// <see cref="BodyRotation"/>.
+/// </summary>
+/// <remarks>
+/// Positions are body points in world metres, Y up: the ground reference of the character (the origin of its Godot
+/// body), which is the centre of the contacts of the stance it stands on and, in a jump, flies a parabola from the
+/// takeoff stance's contact centre to the landing one's (see <see cref="BodyPosition"/>). The trunk's own pose is
+/// <see cref="RootPose"/>. Times are world seconds. Not thread-safe: the game loop's thread only.
+/// </remarks>
+public sealed class JumpAgentLogic
+{
+    private readonly JumpNavigationHost _host;
+    private readonly List<AgentSignal> _signals = [];
+    private readonly List<AgentSignal> _pending = [];
+    private readonly List<Vector3> _points = [];
+    private AgentPath? _path;
+    private AgentPath? _sampled;
+    private float _sampledStep;
+    private Vector3 _target;
+    private bool _hasTarget;
+    private bool _navigating;
+    private bool _reached;
+    private bool _failed;
+    private float _threshold = 0.1f;
+    private float _desiredDistance = 0.5f;
+    private float _step = 0.25f;
+    private Vector3? _refusedSync;
+    private AgentHandle _worldAgent;
+
+    /// <summary>Creates the logic of one agent node; <see cref="Register"/> puts it on a region.</summary>
+    /// <param name="host">The server's host.</param>
+    /// <param name="mode">Who moves the character.</param>
+    public JumpAgentLogic(JumpNavigationHost host, AgentMotionMode mode = AgentMotionMode.MoveParent)
+    {
+        ArgumentNullException.ThrowIfNull(host);
+        _host = host;
+        Mode = mode;
+    }
+
+    /// <summary>The host the agent is registered with.</summary>
+    public JumpNavigationHost Host => _host;
+
+    /// <summary>Who moves the character: the node (its parent follows <see cref="BodyPosition"/>) or the user (reporting only).</summary>
+    public AgentMotionMode Mode { get; set; }
+
+    /// <summary>The agent's handle in the host; the default handle before <see cref="Register"/>.</summary>
+    public HostAgentHandle Agent { get; private set; }
+
+    /// <summary>True between <see cref="Register"/> and <see cref="Unregister"/>.</summary>
+    public bool IsRegistered => _host.IsValid(Agent);
+
+    /// <summary>Where the agent is for the host: waiting for its region's roadmap, on it, unplaced or detached.</summary>
+    public HostAgentState State => _host.GetAgentState(Agent);
+
+    /// <summary>Why the agent waits, could not be placed or was detached (for the node's configuration warning); <c>null</c> on the roadmap.</summary>
+    public string? StateReason => _host.GetAgentReason(Agent);
+
+    /// <summary>
+    /// Where the agent is asked to go, world metres (a point on or near a surface). Setting it asks the host for a
+    /// path; setting it again within <see cref="TargetPositionThreshold"/> of the current target does nothing (the
+    /// node may set it every frame to a moving point); further away, the agent replans from its next stance (the
+    /// runtime keeps the path when the new target is within <see cref="WorldSettings.ReplanDistance"/> of the
+    /// path's). A target within <see cref="TargetDesiredDistance"/> of where the agent stands is reached at once.
+    /// A target that is not finite is refused with a <see cref="PathFailedSignal"/>. Zero until set.
+    /// </summary>
+    public Vector3 TargetPosition
+    {
+        get => _target;
+        set => SetTarget(value);
+    }
+
+    /// <summary>True once a target was set (and until <see cref="ClearTarget"/>).</summary>
+    public bool HasTarget => _hasTarget;
+
+    /// <summary>A new <see cref="TargetPosition"/> this close to the current one (metres) is ignored. Default 0.1 m.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">Not finite, or negative.</exception>
+    public float TargetPositionThreshold
+    {
+        get => _threshold;
+        set => _threshold = NotNegative(value, nameof(TargetPositionThreshold));
+    }
+
+    /// <summary>
+    /// A target this close (metres) to the point the agent stands on counts as reached without jumping, like
+    /// <c>NavigationAgent3D.target_desired_distance</c>. Default 0.5 m (the runtime's tolerance across).
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">Not finite, or negative.</exception>
+    public float TargetDesiredDistance
+    {
+        get => _desiredDistance;
+        set => _desiredDistance = NotNegative(value, nameof(TargetDesiredDistance));
+    }
+
+    /// <summary>Greatest distance between two consecutive points of <see cref="GetCurrentPath"/>, metres. Default 0.25 m.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">Not finite, or under 0.01 m.</exception>
+    public float PathSampleStep
+    {
+        get => _step;
+        set => _step = float.IsFinite(value) && value >= 0.01f ? value : throw new ArgumentOutOfRangeException(nameof(PathSampleStep), value, $"PathSampleStep must be finite and at least 0.01 m, not {value} m.");
+    }
+
+    /// <summary>Why the last path toward the current target failed; <c>null</c> when it did not.</summary>
+    public string? LastFailure { get; private set; }
+
+    /// <summary>The trunk's pose this tick (centre and orientation, world frame): exactly on the arc in flight. Default until the agent is on a roadmap.</summary>
+    public RootPose RootPose { get; private set; }
+
+    /// <summary>
+    /// The body point this tick, world metres: where the node puts its parent (<see cref="AgentMotionMode.MoveParent"/>)
+    /// or where the user's body should be (<see cref="AgentMotionMode.ReportOnly"/>). On a stance, the centre of its
+    /// contacts; in a jump, the trunk centre minus an offset going linearly in time from (trunk − contact centre) at
+    /// the takeoff stance to that at the landing stance. Off the roadmap, the position registered or warped at.
+    /// </summary>
+    public Vector3 BodyPosition { get; private set; }
+
+    /// <summary>The body point's velocity this tick, m/s: zero on a stance; in a jump, a parabola's under the world's gravity.</summary>
+    public Vector3 BodyVelocity { get; private set; }
+
+    /// <summary>The body's heading this tick: a rotation about +Y turning +Z (the model's front) toward the trunk's forward axis projected on the ground.</summary>
+    public Quaternion BodyRotation { get; private set; } = Quaternion.Identity;
+
+    /// <summary>
+    /// Registers the agent on <paramref name="region"/> standing at <paramref name="position"/> (the parent's global
+    /// position, world metres), as <see cref="JumpNavigationHost.RegisterAgent"/>; a target set before is sent. An
+    /// agent already registered is unregistered first.
+    /// </summary>
+    public RuntimeResult Register(RegionHandle region, Vector3 position)
+    {
+        if (IsRegistered)
+        {
+            Unregister();
+        }
+
+        HostAgentResult registered = _host.RegisterAgent(region, position);
+        Agent = registered.Agent;
+        if (!registered.Agent.IsAssigned)
+        {
+            return registered.Result;
+        }
+
+        BodyPosition = position;
+        BodyVelocity = Vector3.Zero;
+        if (_hasTarget && _navigating)
+        {
+            _host.SetTarget(Agent, _target);
+        }
+
+        Refresh();
+        return registered.Result;
+    }
+
+    /// <summary>Unregisters the agent (the node leaves the tree); its target is kept for a later <see cref="Register"/>.</summary>
+    public RuntimeResult Unregister()
+    {
+        RuntimeResult result = _host.UnregisterAgent(Agent);
+        Agent = default;
+        _path = null;
+        return result;
+    }
+
+    /// <summary>
+    /// Sets <see cref="TargetPosition"/> and says what came of it: <see cref="RuntimeStatus.Ok"/> with a note when the
+    /// target was kept (within the threshold), reached at once or stored until the agent is on a roadmap; otherwise
+    /// the host's refusal (also raised as a <see cref="PathFailedSignal"/> on the next <see cref="Update"/>).
+    /// </summary>
+    public RuntimeResult SetTarget(Vector3 target)
+    {
+        if (!float.IsFinite(target.X) || !float.IsFinite(target.Y) || !float.IsFinite(target.Z))
+        {
+            string reason = $"the target position {target} is not finite";
+            _pending.Add(new PathFailedSignal(Now, reason));
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, reason);
+        }
+
+        if (_hasTarget && Vector3.Distance(target, _target) <= _threshold)
+        {
+            return new RuntimeResult(RuntimeStatus.Ok, $"within {_threshold} m of the current target: kept");
+        }
+
+        _target = target;
+        _hasTarget = true;
+        _reached = false;
+        _failed = false;
+        LastFailure = null;
+        _navigating = true;
+        if (!IsRegistered)
+        {
+            return new RuntimeResult(RuntimeStatus.Ok, "target kept until the agent is registered");
+        }
+
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        if (world is not null && world.IsValid(agent) && world.GetPath(agent) is null && !world.IsPathPending(agent) &&
+            _host.GetStandingPoint(Agent) is { } here && Vector3.Distance(here, target) <= _desiredDistance)
+        {
+            _host.ClearTarget(Agent);
+            _navigating = false;
+            _reached = true;
+            _pending.Add(new TargetReachedSignal(Now));
+            _pending.Add(new NavigationFinishedSignal(Now));
+            return new RuntimeResult(RuntimeStatus.Ok, $"already within {_desiredDistance} m of the target");
+        }
+
+        RuntimeResult result = _host.SetTarget(Agent, target);
+        if (!result.Ok)
+        {
+            Fail(_pending, Now, result.Reason ?? result.Status.ToString());
+        }
+
+        return result;
+    }
+
+    /// <summary>Forgets the target: the agent stops on the next stance of its path (or stays). Navigation is finished; no signal.</summary>
+    public RuntimeResult ClearTarget()
+    {
+        _hasTarget = false;
+        _navigating = false;
+        _reached = false;
+        _failed = false;
+        LastFailure = null;
+        return IsRegistered ? _host.ClearTarget(Agent) : RuntimeResult.Success;
+    }
+
+    /// <summary>True when the agent is not heading anywhere: no target, target reached, path failed or target cleared (like <c>NavigationAgent3D.is_navigation_finished</c>).</summary>
+    public bool IsNavigationFinished() => !_navigating;
+
+    /// <summary>True once the agent reached its current target (a <see cref="TargetReachedSignal"/> was raised for it).</summary>
+    public bool IsTargetReached() => _hasTarget && _reached;
+
+    /// <summary>
+    /// False without a target and after a <see cref="PathFailedSignal"/> for the current target; true once reached;
+    /// otherwise whether the roadmap connects the agent's stance to a node near the target
+    /// (<see cref="JumpNavigationHost.IsTargetReachable"/>; false while the agent is off its roadmap).
+    /// </summary>
+    public bool IsTargetReachable()
+    {
+        if (!_hasTarget || _failed)
+        {
+            return false;
+        }
+
+        return _reached || _host.IsTargetReachable(Agent, _target);
+    }
+
+    /// <summary>
+    /// The path being followed (or the last one followed to the current target), as world points of the body: from
+    /// the contact centre the agent stood on when it started, each jump's parabola sampled at most
+    /// <see cref="PathSampleStep"/> apart, its takeoff and landing points included, to the contact centre of the
+    /// last stance (within the runtime's tolerance of the target). Empty before the first path, after a failure, a
+    /// warp or a new region roadmap. The list is reused: copy it to keep it.
+    /// </summary>
+    public IReadOnlyList<Vector3> GetCurrentPath()
+    {
+        if (_path is null)
+        {
+            _points.Clear();
+            _sampled = null;
+        }
+        else if (!ReferenceEquals(_path, _sampled) || _sampledStep != _step)
+        {
+            Sample(_path);
+            _sampled = _path;
+            _sampledStep = _step;
+        }
+
+        return _points;
+    }
+
+    /// <summary>The jump the agent will take off for next (after the one it is in, if any), known before it happens; false when none remains on its path.</summary>
+    public bool TryGetNextJump(out JumpPreview jump)
+    {
+        jump = default;
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        if (world is null || !world.TryGetNextJump(agent, out JumpInfo info) || world.GetPath(agent) is not { } path)
+        {
+            return false;
+        }
+
+        jump = Preview(path.Moves[info.Index], info);
+        return true;
+    }
+
+    /// <summary>The jump the agent is in now; false when it stands.</summary>
+    public bool TryGetCurrentJump(out JumpPreview jump)
+    {
+        jump = default;
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        if (world is null || !world.TryGetCurrentJump(agent, out JumpInfo info) || world.GetPath(agent) is not { } path)
+        {
+            return false;
+        }
+
+        jump = Preview(path.Moves[info.Index], info);
+        return true;
+    }
+
+    /// <summary>
+    /// Performs exactly one jump of the region's roadmap (edge index), as <see cref="JumpNavigationHost.PerformJump"/>:
+    /// the agent stands on its takeoff at once; the landing's contact centre becomes the target, so the usual signals
+    /// follow (<see cref="PathChangedSignal"/>, <see cref="JumpStartedSignal"/>, <see cref="LandedSignal"/>,
+    /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>).
+    /// </summary>
+    public RuntimeResult PerformJump(int edge)
+    {
+        RuntimeResult result = _host.PerformJump(Agent, edge);
+        if (result.Ok)
+        {
+            _target = _host.GetTarget(Agent) ?? _target;
+            _hasTarget = true;
+            _navigating = true;
+            _reached = false;
+            _failed = false;
+            LastFailure = null;
+            _path = null;
+            Refresh();
+        }
+
+        return result;
+    }
+
+    /// <summary>Moves the agent at once to stand at <paramref name="position"/> (world metres), as <see cref="JumpNavigationHost.Warp"/>; with a target it replans from there.</summary>
+    public RuntimeResult Warp(Vector3 position)
+    {
+        RuntimeResult result = _host.Warp(Agent, position);
+        if (result.Ok)
+        {
+            _path = null;
+            _refusedSync = null;
+            Refresh();
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// For <see cref="AgentMotionMode.ReportOnly"/>: tells where the user's body stands (world metres), every tick
+    /// before <see cref="Update"/>. While the agent stands with no path under way and the body is farther than the
+    /// runtime's tolerance across from its stance (the user walked it), the agent is warped there; a place where the
+    /// character cannot stand is not tried again until the body moves that far from it. Does nothing during a path.
+    /// </summary>
+    public RuntimeResult SyncBodyPosition(Vector3 position)
+    {
+        if (!IsRegistered)
+        {
+            return new RuntimeResult(RuntimeStatus.UnknownAgent, "the agent is not registered");
+        }
+
+        float across = _host.Settings.Tolerance.Across;
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        bool standing = world is not null && world.IsValid(agent) && world.GetPath(agent) is null && !world.IsPathPending(agent);
+        bool waiting = State is HostAgentState.Waiting or HostAgentState.Unplaced;
+        if (!(standing || waiting) || _host.GetStandingPoint(Agent) is not { } here || Vector3.Distance(here, position) <= across ||
+            (_refusedSync is { } refused && Vector3.Distance(refused, position) <= across))
+        {
+            return RuntimeResult.Success;
+        }
+
+        RuntimeResult result = Warp(position);
+        if (!result.Ok)
+        {
+            _refusedSync = position;
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// Call once per physics tick after the server stepped: drains the agent's events into signals, in order
+    /// (<see cref="PathChangedSignal"/>, <see cref="JumpStartedSignal"/>, <see cref="LandedSignal"/>, …,
+    /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>; <see cref="PathFailedSignal"/> then
+    /// <see cref="NavigationFinishedSignal"/> on failure) and updates <see cref="RootPose"/>, <see cref="BodyPosition"/>,
+    /// <see cref="BodyVelocity"/> and <see cref="BodyRotation"/>. The list is reused: valid until the next call.
+    /// </summary>
+    public IReadOnlyList<AgentSignal> Update()
+    {
+        _signals.Clear();
+        _signals.AddRange(_pending);
+        _pending.Clear();
+        AgentHandle worldAgent = _host.GetWorldAgent(Agent);
+        if (worldAgent != _worldAgent)
+        {
+            // Added to the world again (a new roadmap for the region): the old path is gone.
+            _worldAgent = worldAgent;
+            _path = null;
+        }
+
+        while (_host.TryDequeueEvent(Agent, out AgentEvent e))
+        {
+            Handle(e);
+        }
+
+        Refresh();
+        return _signals;
+    }
+
+    private double Now => _host.World?.Time ?? 0.0;
+
+    private void Handle(in AgentEvent e)
+    {
+        JumpEvent j = e.Event;
+        switch (j.Kind)
+        {
+            case JumpEventKind.PathFound:
+                _path = e.Path;
+                _navigating = true;
+                _failed = false;
+                LastFailure = null;
+                _signals.Add(new PathChangedSignal(j.Time));
+                break;
+            case JumpEventKind.PathFailed:
+                Fail(_signals, j.Time, j.Reason ?? j.Status.ToString());
+                break;
+            case JumpEventKind.JumpStarted when e.Path is { } path:
+                PathMove move = path.Moves[j.Jump];
+                _signals.Add(new JumpStartedSignal(j.Time, Stances.ContactCentre(move.From), Stances.ContactCentre(move.To), Stances.BodyVelocity(move), move.Arc.FlightTime));
+                break;
+            case JumpEventKind.Landed when e.Path is { } path:
+                _signals.Add(new LandedSignal(j.Time, Stances.ContactCentre(path.Moves[j.Jump].To)));
+                break;
+            case JumpEventKind.TargetReached:
+                if (_navigating)
+                {
+                    _navigating = false;
+                    _reached = true;
+                    _signals.Add(new TargetReachedSignal(j.Time));
+                    _signals.Add(new NavigationFinishedSignal(j.Time));
+                }
+
+                break;
+            case JumpEventKind.Removed:
+                _path = null;
+                if (_navigating)
+                {
+                    Fail(_signals, j.Time, j.Reason ?? "the agent left its roadmap");
+                }
+
+                break;
+            default:
+                break;
+        }
+    }
+
+    private void Fail(List<AgentSignal> signals, double time, string reason)
+    {
+        _path = null;
+        _failed = true;
+        LastFailure = reason;
+        if (_navigating)
+        {
+            _navigating = false;
+            signals.Add(new PathFailedSignal(time, reason));
+            signals.Add(new NavigationFinishedSignal(time));
+        }
+        else
+        {
+            signals.Add(new PathFailedSignal(time, reason));
+        }
+    }
+
+    /// <summary>Reads this tick's root pose and body point from the world.</summary>
+    private void Refresh()
+    {
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        if (world is null || !world.IsValid(agent))
+        {
+            BodyPosition = _host.GetStandingPoint(Agent) ?? BodyPosition;
+            BodyVelocity = Vector3.Zero;
+            return;
+        }
+
+        RootPose = world.GetRootPose(agent);
+        if (world.TryGetCurrentJump(agent, out JumpInfo jump) && world.GetPath(agent) is { } path)
+        {
+            (Vector3 position, Vector3 velocity) = Stances.InJump(path.Moves[jump.Index], (float)(world.Time - jump.TakeoffTime));
+            BodyPosition = position;
+            BodyVelocity = velocity;
+        }
+        else if (Stances.Standing(world, agent) is { } stance)
+        {
+            BodyPosition = Stances.ContactCentre(stance);
+            BodyVelocity = Vector3.Zero;
+        }
+
+        Vector3 forward = RootPose.Forward;
+        if ((forward.X * forward.X) + (forward.Z * forward.Z) > 1e-8f)
+        {
+            BodyRotation = Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(forward.X, forward.Z));
+        }
+    }
+
+    private static JumpPreview Preview(in PathMove move, in JumpInfo info) =>
+        new(info.Index, Stances.ContactCentre(move.From), Stances.ContactCentre(move.To), Stances.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
+
+    /// <summary>Samples the body point along the path, at most <see cref="PathSampleStep"/> apart.</summary>
+    private void Sample(AgentPath path)
+    {
+        _points.Clear();
+        _points.Add(Stances.ContactCentre(path.Moves[0].From));
+        foreach (PathMove move in path.Moves)
+        {
+            float flight = move.Arc.FlightTime;
+            Vector3 v0 = Stances.BodyVelocity(move);
+            Vector3 v1 = v0 - new Vector3(0f, move.Arc.Gravity * flight, 0f);
+
+            // The body point's speed is greatest at an end of the flight (|v0 − g·t| is convex in t): n samples
+            // uniform in time are then at most step apart.
+            float travel = MathF.Max(v0.Length(), v1.Length()) * flight;
+            int n = Math.Max(1, (int)MathF.Ceiling(travel / _step));
+            for (int k = 1; k < n; k++)
+            {
+                _points.Add(Stances.InJump(move, flight * k / n).Position);
+            }
+
+            // The landing point itself (the arc meets it within millimetres): bridged if ever farther than a step.
+            Vector3 landing = Stances.ContactCentre(move.To);
+            Vector3 last = _points[^1];
+            int bridge = (int)MathF.Ceiling(Vector3.Distance(last, landing) / _step);
+            for (int k = 1; k < bridge; k++)
+            {
+                _points.Add(Vector3.Lerp(last, landing, (float)k / bridge));
+            }
+
+            _points.Add(landing);
+        }
+    }
+
+    private static float NotNegative(float value, string name) =>
+        float.IsFinite(value) && value >= 0f ? value : throw new ArgumentOutOfRangeException(name, value, $"{name} must be finite and not negative, not {value} m.");
+}

@@ -1,0 +1,90 @@
+using System.Numerics;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Paths;
+
+namespace Ballistic.Runtime.Hosting;
+
+/// <summary>
+/// Where an agent stands and where its body point is. The body point is the ground reference of a character (the
+/// origin of its Godot body): on a stance, the centre of its contacts; in a jump, the trunk's arc shifted by an
+/// offset that goes linearly in time from the takeoff stance's (trunk − contact centre) to the landing stance's, so
+/// that it leaves the takeoff contact centre, lands on the landing one and flies a parabola under the same gravity.
+/// </summary>
+internal static class Stances
+{
+    /// <summary>The mean of a stance's contact positions (the trunk centre without contacts), world metres: <see cref="Roadmap.ContactCentres"/> for roadmap nodes.</summary>
+    public static Vector3 ContactCentre(RoadmapNode node)
+    {
+        IReadOnlyList<Contact> contacts = node.Contacts;
+        Vector3 sum = Vector3.Zero;
+        for (int i = 0; i < contacts.Count; i++)
+        {
+            sum += contacts[i].Position;
+        }
+
+        return contacts.Count > 0 ? sum / contacts.Count : node.Pose.Position;
+    }
+
+    /// <summary>
+    /// The stance the agent stands on, or, following a path, the one it stands on next: the landing of the jump it is
+    /// in, or the takeoff stance between two jumps. <c>null</c> for an unknown agent.
+    /// </summary>
+    public static RoadmapNode? Standing(JumpWorld world, AgentHandle agent)
+    {
+        if (world.GetStance(agent) is { } stance)
+        {
+            return stance;
+        }
+
+        if (world.GetPath(agent) is not { } path)
+        {
+            return null;
+        }
+
+        float t = world.GetPathTime(agent);
+        for (int i = 0; i < path.Count; i++)
+        {
+            PathMove move = path.Moves[i];
+            if (t < move.Start)
+            {
+                return move.From;
+            }
+
+            if (t < move.End)
+            {
+                return move.To;
+            }
+        }
+
+        return path.Goal;
+    }
+
+    /// <summary>True when <paramref name="node"/> is <paramref name="roadmap"/>'s node of its id.</summary>
+    public static bool IsNodeOf(Roadmap roadmap, RoadmapNode node) =>
+        (uint)node.Id < (uint)roadmap.Nodes.Count && roadmap.Nodes[node.Id].Pose == node.Pose;
+
+    /// <summary>The body point's takeoff velocity for the jump of <paramref name="move"/>, m/s: the trunk's minus the offset's rate of change.</summary>
+    public static Vector3 BodyVelocity(in PathMove move) => BodyVelocity(move.From, move.To, move.Arc);
+
+    /// <summary>The body point's takeoff velocity for a jump from <paramref name="from"/> to <paramref name="to"/> on <paramref name="arc"/>, m/s.</summary>
+    public static Vector3 BodyVelocity(RoadmapNode from, RoadmapNode to, in BallisticArc arc)
+    {
+        Vector3 drift = (arc.End - ContactCentre(to)) - (arc.Start - ContactCentre(from));
+        return arc.TakeoffVelocity - (drift / arc.FlightTime);
+    }
+
+    /// <summary>
+    /// The body point and its velocity <paramref name="t"/> seconds after the takeoff of <paramref name="move"/>: the
+    /// parabola from the takeoff stance's contact centre at <see cref="BodyVelocity(in PathMove)"/> under the arc's
+    /// gravity (the trunk's arc minus the offset interpolated linearly in time, written so as to be exact at takeoff).
+    /// </summary>
+    public static (Vector3 Position, Vector3 Velocity) InJump(in PathMove move, float t)
+    {
+        Vector3 v = BodyVelocity(move);
+        var g = new Vector3(0f, -move.Arc.Gravity, 0f);
+        return (ContactCentre(move.From) + (v * t) + (0.5f * t * t * g), v + (g * t));
+    }
+}

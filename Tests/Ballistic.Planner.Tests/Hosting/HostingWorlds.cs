@@ -1,0 +1,130 @@
+using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Tests.Runtime;
+using Ballistic.Planner.Tests.Support;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Hosting;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Planner.Tests.Hosting;
+
+/// <summary>Kinds, hosts and drivers for the hosting tests: the runtime's desert skeleton, a rebake of it, and a kind on another level.</summary>
+internal static class HostingWorlds
+{
+    private static readonly Lazy<CharacterKind> DesertRebakeKind = new(() =>
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        Roadmap roadmap = new RoadmapBaker(desert.Scene).Bake(new BakeSettings { Seed = 8, MaxNodes = 250, Threads = 2 }).Roadmap;
+        return new CharacterKind(desert.Scene, roadmap, desert.Animator);
+    });
+
+    private static readonly Lazy<CharacterKind> GapKind = new(() =>
+    {
+        var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton());
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, MaxNodes = 30, Threads = 2 }).Roadmap;
+        return new CharacterKind(scene, roadmap, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
+    });
+
+    /// <summary>The desert skeleton of the runtime tests (300 nodes, seed 3).</summary>
+    public static CharacterKind Desert => RuntimeWorlds.DesertSkeleton;
+
+    /// <summary>The same scene and animator with another roadmap (seed 8, 250 nodes): a rebake.</summary>
+    public static CharacterKind DesertRebaked => DesertRebakeKind.Value;
+
+    /// <summary>The skeleton on the gap course: another level.</summary>
+    public static CharacterKind Gap => GapKind.Value;
+
+    /// <summary>The runtime's tolerance: how close a stance's contact centre comes to a point asked for.</summary>
+    public static EndpointTolerance Tolerance => new WorldSettings().Tolerance;
+
+    /// <summary>A host ticking on one thread (deterministic, no background animation).</summary>
+    public static JumpNavigationHost Host() => new(new WorldSettings { AnimationThreads = 0 });
+
+    /// <summary>A host with one desert region registered.</summary>
+    public static (JumpNavigationHost Host, RegionHandle Region) DesertHost()
+    {
+        JumpNavigationHost host = Host();
+        RegionHandle region = host.CreateRegion("desert");
+        RuntimeResult set = host.SetRegionKind(region, Desert);
+        Assert.That(set.Ok, Is.True, set.ToString());
+        return (host, region);
+    }
+
+    /// <summary>True when <paramref name="point"/> lies within the runtime's tolerance of <paramref name="target"/> (across and up/down).</summary>
+    public static bool WithinTolerance(Vector3 point, Vector3 target)
+    {
+        EndpointTolerance t = Tolerance;
+        return new Vector2(point.X - target.X, point.Z - target.Z).Length() <= t.Across + 1e-4f && MathF.Abs(point.Y - target.Y) <= t.UpDown + 1e-4f;
+    }
+
+    /// <summary>Steps the host and drains the agents' queues each tick until <paramref name="done"/> or <paramref name="maxTicks"/>; returns each agent's events.</summary>
+    public static Dictionary<HostAgentHandle, List<AgentEvent>> Run(JumpNavigationHost host, IReadOnlyList<HostAgentHandle> agents, int maxTicks, Func<Dictionary<HostAgentHandle, List<AgentEvent>>, bool> done)
+    {
+        var seen = agents.ToDictionary(a => a, _ => new List<AgentEvent>());
+        for (int i = 0; i < maxTicks; i++)
+        {
+            host.Step();
+            foreach (HostAgentHandle agent in agents)
+            {
+                while (host.TryDequeueEvent(agent, out AgentEvent e))
+                {
+                    seen[agent].Add(e);
+                }
+            }
+
+            if (done(seen))
+            {
+                break;
+            }
+        }
+
+        return seen;
+    }
+
+    /// <summary>Steps the host and updates the logics each tick until <paramref name="done"/> holds or <paramref name="maxTicks"/> pass; returns every signal of <paramref name="logic"/>.</summary>
+    public static List<AgentSignal> Run(JumpAgentLogic logic, int maxTicks, Func<List<AgentSignal>, bool> done, Action? afterTick = null)
+    {
+        var seen = new List<AgentSignal>();
+        for (int i = 0; i < maxTicks; i++)
+        {
+            logic.Host.Step();
+            seen.AddRange(logic.Update());
+            afterTick?.Invoke();
+            if (done(seen))
+            {
+                break;
+            }
+        }
+
+        return seen;
+    }
+
+    /// <summary>True once the signals hold a navigation finish.</summary>
+    public static bool Finished(List<AgentSignal> seen) => seen.Any(s => s is NavigationFinishedSignal);
+
+    /// <summary>Seeded pairs of desert nodes whose planned path (on the roadmap alone) has exactly <paramref name="jumps"/> jumps.</summary>
+    public static List<(RoadmapNode From, RoadmapNode To)> PairsWithJumps(int jumps, int count, int seed)
+    {
+        Roadmap roadmap = Desert.Roadmap;
+        var query = new Planner.Query.PathQuery(Desert.Scene, roadmap);
+        var pairs = new List<(RoadmapNode, RoadmapNode)>();
+        foreach ((RoadmapNode from, RoadmapNode to) in RuntimeWorlds.ConnectedPairs(roadmap, 400, seed, minDistance: 1f))
+        {
+            if (roadmap.FindNode(RuntimeWorlds.Point(from), Tolerance) == from.Id && roadmap.FindNode(RuntimeWorlds.Point(to), Tolerance) == to.Id &&
+                query.Plan(from, to).Jumps.Count == jumps)
+            {
+                pairs.Add((from, to));
+                if (pairs.Count == count)
+                {
+                    break;
+                }
+            }
+        }
+
+        return pairs;
+    }
+}
