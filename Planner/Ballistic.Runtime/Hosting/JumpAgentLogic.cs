@@ -111,6 +111,51 @@ public sealed class JumpAgentLogic
         set => _step = float.IsFinite(value) && value >= 0.01f ? value : throw new ArgumentOutOfRangeException(nameof(PathSampleStep), value, $"PathSampleStep must be finite and at least 0.01 m, not {value} m.");
     }
 
+    /// <summary>The path the agent follows (its jumps and whole-body animation); <c>null</c> when it has none.</summary>
+    public AgentPath? CurrentPath => _path;
+
+    /// <summary>Index on <see cref="CurrentPath"/> of the jump in progress or the next one; 0 without a path.</summary>
+    public int CurrentMove => TryGetCurrentJump(out JumpPreview current) ? current.Index : TryGetNextJump(out JumpPreview next) ? next.Index : 0;
+
+    /// <summary>
+    /// A short state for a label: "waiting for a roadmap", "idle", "stance", "takeoff", "flight", "landing",
+    /// "planning", "unplaced: …" or "failed: …" (the last failure toward the current target).
+    /// </summary>
+    public string DescribeState()
+    {
+        switch (State)
+        {
+            case HostAgentState.Waiting:
+                return "waiting for a roadmap";
+            case HostAgentState.Unplaced:
+                return $"unplaced: {StateReason}";
+            case HostAgentState.Detached:
+                return $"detached: {StateReason}";
+        }
+
+        if (LastFailure is { } failure && !_navigating)
+        {
+            return $"failed: {failure}";
+        }
+
+        JumpWorld? world = _host.World;
+        AgentHandle agent = _host.GetWorldAgent(Agent);
+        if (world is null)
+        {
+            return "waiting for a roadmap";
+        }
+
+        return world.IsPathPending(agent) ? "planning" : world.GetState(agent) switch
+        {
+            AgentState.Idle => _hasTarget && _reached ? "arrived" : "idle",
+            AgentState.Stance => "stance",
+            AgentState.Takeoff => "takeoff",
+            AgentState.Flight => "flight",
+            AgentState.Landing => "landing",
+            _ => "unknown",
+        };
+    }
+
     /// <summary>Why the last path toward the current target failed; <c>null</c> when it did not.</summary>
     public string? LastFailure { get; private set; }
 

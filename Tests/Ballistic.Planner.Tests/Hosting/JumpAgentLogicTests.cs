@@ -66,6 +66,43 @@ public sealed class JumpAgentLogicTests
     }
 
     [Test]
+    public void TheStateTextFollowsATripFromPlanningThroughFlightToArrival()
+    {
+        (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 41).Single();
+        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        using (host)
+        {
+            var logic = new JumpAgentLogic(host);
+            Assert.That(logic.DescribeState(), Does.StartWith("detached"), "not registered yet");
+            logic.Register(region, RuntimeWorlds.Point(from));
+            Assert.That(logic.DescribeState(), Is.EqualTo("idle"));
+            logic.TargetPosition = RuntimeWorlds.Point(to);
+            var seen = new List<string>();
+            HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished, () =>
+            {
+                string state = logic.DescribeState();
+                if (seen.Count == 0 || seen[^1] != state)
+                {
+                    seen.Add(state);
+                }
+
+                if (logic.CurrentPath is { } path)
+                {
+                    Assert.That(logic.CurrentMove, Is.InRange(0, path.Moves.Count - 1));
+                }
+            });
+
+            Assert.That(seen, Does.Contain("flight"), string.Join(" → ", seen));
+            Assert.That(seen.IndexOf("flight"), Is.GreaterThan(0), "something (planning, stance, takeoff) comes before the flight");
+            Assert.That(logic.DescribeState(), Is.EqualTo("arrived"));
+
+            logic.TargetPosition = new Vector3(500f, 0f, 500f); // off the level
+            HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished, () => { });
+            Assert.That(logic.DescribeState(), Does.StartWith("failed: "), "a failed target says why");
+        }
+    }
+
+    [Test]
     public void TheCurrentPathStartsWhereTheAgentStandsEndsAtTheTargetAndIsSampledFinely()
     {
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 42, minDistance: 6f)[0];

@@ -209,7 +209,7 @@ public partial class JumpAgent3D : Node
     public Vector3 GetBodyVelocity() => _logic?.BodyVelocity.ToGodot() ?? Vector3.Zero;
 
     /// <summary>A short state for labels: "waiting", "stance", "takeoff", "flight", "landing", "failed: …".</summary>
-    public string GetStateText() => _logic is null ? "not registered" : StateTexts.Of(_logic);
+    public string GetStateText() => _logic is null ? "not registered" : _logic.DescribeState();
 
     /// <summary>Moves the agent at once to stand at <paramref name="position"/> (world metres); with a target it replans.</summary>
     public void Warp(Vector3 position)

@@ -60,7 +60,7 @@ public partial class JumpRoadmap3D : Node3D
     private string _lastBakeError = "";
     private string? _staleness;
     private RegionHandle _region;
-    private Task<CharacterKind>? _kindTask;
+    private Task<(CharacterKind Kind, JumpLinkSet? Links)>? _kindTask;
     private CharacterKind? _kind;
     private readonly List<Rid> _links = [];
     private JumpLinkSet? _linkSet;
@@ -199,7 +199,7 @@ public partial class JumpRoadmap3D : Node3D
             _kindTask = null;
             if (task.IsCompletedSuccessfully)
             {
-                AttachKind(task.Result);
+                AttachKind(task.Result.Kind, task.Result.Links);
             }
             else
             {
@@ -457,15 +457,20 @@ public partial class JumpRoadmap3D : Node3D
 
         RoadmapData data = Roadmap!.ToData();
         string name = string.IsNullOrEmpty(Roadmap.ResourcePath) ? GetPath().ToString() : Roadmap.ResourcePath;
+        JumpLinkSettings? links = PublishNavigationLinks
+            ? new JumpLinkSettings { ReferenceSpeed = LinkReferenceSpeed, MinHorizontalDistance = LinkMinDistance, MaxLinks = MaxLinks }
+            : null;
         _kindTask = Task.Run(() =>
         {
             var scene = PlanningScene.Create(level, reduced);
             Roadmap roadmap = data.Load(level, reduced, name);
-            return new CharacterKind(scene, roadmap, new JumpAnimator(scene, model));
+            var animator = new JumpAnimator(scene, model);
+            JumpLinkSet? set = links is null ? null : JumpLinkSet.Build(roadmap, links, animator, System.Environment.ProcessorCount);
+            return (new CharacterKind(scene, roadmap, animator), set);
         });
     }
 
-    private void AttachKind(CharacterKind kind)
+    private void AttachKind(CharacterKind kind, JumpLinkSet? links)
     {
         _kind = kind;
         LoadedRoadmap = kind.Roadmap;
@@ -476,21 +481,17 @@ public partial class JumpRoadmap3D : Node3D
             return;
         }
 
-        if (PublishNavigationLinks)
+        if (links is not null)
         {
-            PublishLinks(kind.Roadmap);
+            PublishLinks(links);
         }
     }
 
-    private void PublishLinks(Roadmap roadmap)
+    /// <summary>Creates one one-way navigation server link per jump of <paramref name="links"/>, in their order.</summary>
+    private void PublishLinks(JumpLinkSet links)
     {
         UnpublishLinks();
-        _linkSet = JumpLinkSet.Build(roadmap, new JumpLinkSettings
-        {
-            ReferenceSpeed = LinkReferenceSpeed,
-            MinHorizontalDistance = LinkMinDistance,
-            MaxLinks = MaxLinks,
-        });
+        _linkSet = links;
         Rid map = GetWorld3D().NavigationMap;
         foreach (JumpLink link in _linkSet.Links)
         {
