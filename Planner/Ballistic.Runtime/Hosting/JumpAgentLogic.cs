@@ -324,27 +324,20 @@ public sealed class JumpAgentLogic
     }
 
     /// <summary>The jump the agent will take off for next (after the one it is in, if any), known before it happens; false when none remains on its path.</summary>
-    public bool TryGetNextJump(out JumpPreview jump)
-    {
-        jump = default;
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is null || !world.TryGetNextJump(agent, out JumpInfo info) || world.GetPath(agent) is not { } path)
-        {
-            return false;
-        }
-
-        jump = Preview(path.Moves[info.Index], info);
-        return true;
-    }
+    public bool TryGetNextJump(out JumpPreview jump) => TryPreview(current: false, out jump);
 
     /// <summary>The jump the agent is in now; false when it stands.</summary>
-    public bool TryGetCurrentJump(out JumpPreview jump)
+    public bool TryGetCurrentJump(out JumpPreview jump) => TryPreview(current: true, out jump);
+
+    /// <summary>The jump in progress (<paramref name="current"/>) or the next one, described for the node.</summary>
+    private bool TryPreview(bool current, out JumpPreview jump)
     {
         jump = default;
         JumpWorld? world = _host.World;
         AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is null || !world.TryGetCurrentJump(agent, out JumpInfo info) || world.GetPath(agent) is not { } path)
+        if (world is null
+            || !(current ? world.TryGetCurrentJump(agent, out JumpInfo info) : world.TryGetNextJump(agent, out info))
+            || world.GetPath(agent) is not { } path)
         {
             return false;
         }
