@@ -52,14 +52,54 @@ public static class CharacterSpecFile
         }
     }
 
+    /// <summary>
+    /// Loads a character from the bytes of a rigged glTF and of its limb spec, read by the caller (e.g. an exported
+    /// game reading its packed files): the same checks and result as <see cref="Load(string, string, GltfLoadOptions?)"/>.
+    /// The glTF must hold its buffers (a <c>.glb</c>, or a <c>.gltf</c> with data URIs): with no folder to resolve
+    /// them against, a reference to an external file is refused.
+    /// </summary>
+    /// <param name="gltfBytes">The rigged <c>.glb</c> (or self-contained <c>.gltf</c>) content.</param>
+    /// <param name="gltfName">Names the glTF in messages (e.g. its <c>res://</c> path).</param>
+    /// <param name="specBytes">The limb spec's content (<c>ballistic.character/1</c> JSON).</param>
+    /// <param name="specName">Names the limb spec in messages (e.g. its <c>res://</c> path).</param>
+    /// <param name="options">Limits on the bytes and vertices read; <c>null</c> for <see cref="GltfLoadOptions.Default"/>.</param>
+    /// <exception cref="RigException">The spec or the glTF rig is unusable; the message names the file, the limb or bone and the key.</exception>
+    public static (CharacterModel Model, ReducedCharacter Reduced) FromBytes(byte[] gltfBytes, string gltfName, byte[] specBytes, string specName, GltfLoadOptions? options = null)
+    {
+        ArgumentNullException.ThrowIfNull(gltfBytes);
+        ArgumentNullException.ThrowIfNull(gltfName);
+        ArgumentNullException.ThrowIfNull(specBytes);
+        ArgumentNullException.ThrowIfNull(specName);
+        GltfLoadOptions limits = options ?? GltfLoadOptions.Default;
+        try
+        {
+            if (specBytes.LongLength > limits.MaxBytes)
+            {
+                throw new RigException($"Limb spec {specName} is {specBytes.LongLength} bytes, more than the {limits.MaxBytes} bytes allowed (GltfLoadOptions.MaxBytes).");
+            }
+
+            return LoadParts(specBytes, specName, () => GltfDocument.Parse(gltfBytes, gltfName, null, limits));
+        }
+        catch (RigException e) when (e.Message.Any(char.IsControl))
+        {
+            throw new RigException(MessageText.Printable(e.Message), e);
+        }
+    }
+
     private static (CharacterModel Model, ReducedCharacter Reduced) LoadFiles(string gltfPath, string specPath, GltfLoadOptions options)
     {
         byte[] bytes = InputFile.Read(specPath, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new RigException($"Limb spec {specPath} {problem}.", e!));
-        CharacterSpec spec = CharacterSpecReader.Read(bytes, specPath);
+        return LoadParts(bytes, specPath, () => GltfDocument.Load(gltfPath, options));
+    }
+
+    /// <summary>Parses the spec, then reads the glTF with <paramref name="readDocument"/> and builds the character.</summary>
+    private static (CharacterModel Model, ReducedCharacter Reduced) LoadParts(byte[] specBytes, string specPath, Func<GltfDocument> readDocument)
+    {
+        CharacterSpec spec = CharacterSpecReader.Read(specBytes, specPath);
         GltfDocument document;
         try
         {
-            document = GltfDocument.Load(gltfPath, options);
+            document = readDocument();
         }
         catch (GltfException e)
         {

@@ -117,7 +117,30 @@ public static class RoadmapFile
         ArgumentNullException.ThrowIfNull(levelFingerprint);
         ArgumentNullException.ThrowIfNull(character);
         byte[] bytes = InputFile.Read(path, MaxFileBytes, "RoadmapFile.MaxFileBytes", (phrase, e) => new RoadmapFileException($"Roadmap file {path} {phrase}.", e!));
-        Roadmap roadmap = FromBytes(bytes, path);
+        return Check(FromBytes(bytes, path), path, levelFingerprint, character, bounds);
+    }
+
+    /// <summary>
+    /// Parses roadmap bytes held in memory (e.g. by an engine resource) and checks them exactly as
+    /// <see cref="Load(string, Levels.Level, ReducedCharacter)"/> checks a file: baked for this level and character,
+    /// every value sound, every node within reach of the level's bounds.
+    /// </summary>
+    /// <param name="bytes">The roadmap's bytes, as <see cref="ToBytes"/> wrote them.</param>
+    /// <param name="name">Names the bytes in messages (e.g. the resource's path).</param>
+    /// <param name="level">The level it will be used on.</param>
+    /// <param name="character">The character it will be used for.</param>
+    /// <exception cref="RoadmapFileException">Truncated, corrupt, unsound, unknown version, or baked for something else.</exception>
+    public static Roadmap FromBytes(ReadOnlySpan<byte> bytes, string name, Levels.Level level, ReducedCharacter character)
+    {
+        ArgumentNullException.ThrowIfNull(name);
+        ArgumentNullException.ThrowIfNull(level);
+        ArgumentNullException.ThrowIfNull(character);
+        return Check(FromBytes(bytes, name), name, level.Fingerprint, character, level.Bounds.Inflate(character.Reach + 1f));
+    }
+
+    /// <summary>The checks of a parsed roadmap against the level and character it is loaded for.</summary>
+    private static Roadmap Check(Roadmap roadmap, string path, string levelFingerprint, ReducedCharacter character, Geometry.Aabb? bounds)
+    {
         if (!string.Equals(roadmap.LevelFingerprint, levelFingerprint, StringComparison.Ordinal))
         {
             throw new RoadmapFileException($"Roadmap file {path} was baked on another level (level fingerprint {roadmap.LevelFingerprint[..12]}…, this level is {levelFingerprint[..Math.Min(12, levelFingerprint.Length)]}…); bake it again.");

@@ -356,7 +356,7 @@ public partial class JumpRoadmap3D : Node3D
         float? friction = node.HasMeta(FrictionMeta) ? node.GetMeta(FrictionMeta).AsSingle() : null;
         if (ParsedGeometryType != ParsedGeometry.StaticColliders && node is MeshInstance3D { Mesh: { } mesh } instance)
         {
-            geometry.AddFaces(instance.GetPath().ToString(), mesh.GetFaces(), instance.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, friction);
+            geometry.AddFaces(instance.GetPath().ToString(), mesh.GetFaces().Select(GodotMath.ToNumerics).ToArray(), instance.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, friction);
         }
 
         if (ParsedGeometryType != ParsedGeometry.MeshInstances && node is CollisionShape3D { Disabled: false, Shape: { } shape } collision
