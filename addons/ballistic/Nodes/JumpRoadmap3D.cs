@@ -224,8 +224,10 @@ public partial class JumpRoadmap3D : Node3D
 
         Level level;
         ReducedCharacter reduced;
+        BakeSettings settings;
         try
         {
+            settings = BakeJob.Settings(Seed, MaxNodes, TimeLimitSeconds);
             (_, reduced) = LoadCharacter();
             level = ParseSourceGeometry().Build();
         }
@@ -236,7 +238,6 @@ public partial class JumpRoadmap3D : Node3D
         }
 
         _lastBakeError = "";
-        var settings = BakeJob.Settings(Seed, MaxNodes, TimeLimitSeconds);
         if (onThread)
         {
             _job = BakeJob.Start(level, reduced, settings);
