@@ -4,13 +4,13 @@ using Ballistic.Planner.Roadmaps;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// Animates a path of jumps with the whole body and says what it could not do cleanly (the motion validator of
+/// Animates a path of moves (jumps and walks) with the whole body and says what it could not do cleanly (the motion validator of
 /// the plan use case, after OMPL's one-method validity interfaces). <see cref="JumpAnimator"/> is the implementation.
 /// </summary>
 public interface IJumpAnimator
 {
-    /// <summary>Animates the jumps at <paramref name="frameRate"/> frames per second; problems go in <see cref="JumpAnimation.Problems"/>, never hidden.</summary>
-    JumpAnimation Animate(IReadOnlyList<Jump> jumps, float frameRate = 60f);
+    /// <summary>Animates the moves at <paramref name="frameRate"/> frames per second; problems go in <see cref="JumpAnimation.Problems"/>, never hidden.</summary>
+    JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f);
 
     /// <summary>True when the whole body can stand at <paramref name="pose"/>: as many limbs as the character needs reach the level by IK with no bone through it.</summary>
     bool CanStand(PoseEvaluation pose);

@@ -1,58 +1,65 @@
 using System.Numerics;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// A whole-body animation of a path of jumps: flights and, between two jumps, a stance in which the root stays put
-/// while limbs whose contacts change step one at a time. Frames at a fixed rate (per jump, the last frame falls
-/// exactly on landing), the contact phases, the arcs (the root is evaluated exactly on them at any time in flight)
-/// and the problems found: an animation with problems must not be reported as a success.
+/// A whole-body animation of a path of moves (jumps and walks): flights, walks with a gait, and between two moves a
+/// stance in which the root stays put while limbs whose contacts change step one at a time. Frames at a fixed rate
+/// (per jump, the last frame falls exactly on landing), the contact phases, the moves (the root is evaluated exactly
+/// on a jump's arc or a walk's path at any time) and the problems found: an animation with problems must not be
+/// reported as a success.
 /// </summary>
 public sealed class JumpAnimation
 {
-    private readonly float[] _jumpStarts;
+    private readonly float[] _moveStarts;
+    private readonly Move[] _moves;
+    private readonly int[] _jumpMoves;
 
     /// <summary>Creates an animation.</summary>
     /// <param name="model">The character.</param>
-    /// <param name="arcs">The jumps' arcs, in order.</param>
-    /// <param name="stances">Duration (seconds) of the stance after each jump but the last (one fewer than the arcs).</param>
+    /// <param name="moves">The moves animated, in order.</param>
+    /// <param name="stances">Duration (seconds) of the stance after each move but the last (one fewer than the moves).</param>
     /// <param name="frames">The frames, in time order.</param>
     /// <param name="contactPhases">When each limb holds which contact point.</param>
-    /// <param name="problems">What could not be animated cleanly, per jump.</param>
+    /// <param name="problems">What could not be animated cleanly, per move.</param>
     /// <param name="failedContactPoses">Contact poses that fail the no-slip test.</param>
     /// <param name="collidingFrames">Frames with a bone through the level.</param>
-    public JumpAnimation(CharacterModel model, IReadOnlyList<BallisticArc> arcs, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames)
+    public JumpAnimation(CharacterModel model, IReadOnlyList<Move> moves, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames)
     {
         ArgumentNullException.ThrowIfNull(model);
-        ArgumentNullException.ThrowIfNull(arcs);
+        ArgumentNullException.ThrowIfNull(moves);
         ArgumentNullException.ThrowIfNull(stances);
         ArgumentNullException.ThrowIfNull(frames);
         ArgumentNullException.ThrowIfNull(contactPhases);
         ArgumentNullException.ThrowIfNull(problems);
-        if (arcs.Count > 0 && stances.Count != arcs.Count - 1)
+        if (moves.Count > 0 && stances.Count != moves.Count - 1)
         {
-            throw new ArgumentException($"{arcs.Count} jumps need {arcs.Count - 1} stances between them, not {stances.Count}.", nameof(stances));
+            throw new ArgumentException($"{moves.Count} moves need {moves.Count - 1} stances between them, not {stances.Count}.", nameof(stances));
         }
 
         Model = model;
-        Arcs = [.. arcs];
+        _moves = [.. moves];
+        Moves = Array.AsReadOnly(_moves);
+        _jumpMoves = [.. Enumerable.Range(0, _moves.Length).Where(i => _moves[i] is Jump)];
+        Arcs = [.. _jumpMoves.Select(i => ((Jump)_moves[i]).Arc)];
         Stances = [.. stances];
         Frames = [.. frames];
         ContactPhases = [.. contactPhases];
         Problems = [.. problems];
         FailedContactPoses = failedContactPoses;
         CollidingFrames = collidingFrames;
-        _jumpStarts = new float[arcs.Count + 1];
-        for (int i = 0; i < arcs.Count; i++)
+        _moveStarts = new float[_moves.Length + 1];
+        for (int i = 0; i < _moves.Length; i++)
         {
-            _jumpStarts[i + 1] = _jumpStarts[i] + arcs[i].FlightTime + (i < stances.Count ? stances[i] : 0f);
+            _moveStarts[i + 1] = _moveStarts[i] + _moves[i].Duration + (i < stances.Count ? stances[i] : 0f);
         }
     }
 
-    /// <summary>Duration (seconds) of the stance after each jump but the last, during which limbs re-step.</summary>
+    /// <summary>Duration (seconds) of the stance after each move but the last, during which limbs re-step.</summary>
     public IReadOnlyList<float> Stances { get; }
 
     /// <summary>What could not be animated cleanly; empty when every jump animates with held contacts and no bone in the level.</summary>
@@ -64,7 +71,10 @@ public sealed class JumpAnimation
     /// <summary>The character.</summary>
     public CharacterModel Model { get; }
 
-    /// <summary>The jumps' arcs, in order.</summary>
+    /// <summary>The moves animated (jumps and walks), in order.</summary>
+    public IReadOnlyList<Move> Moves { get; }
+
+    /// <summary>The arcs of the jump moves, in order (the n-th jump's arc at index n).</summary>
     public IReadOnlyList<BallisticArc> Arcs { get; }
 
     /// <summary>The frames, in time order.</summary>
@@ -73,8 +83,8 @@ public sealed class JumpAnimation
     /// <summary>When each limb holds which contact point.</summary>
     public IReadOnlyList<ContactPhase> ContactPhases { get; }
 
-    /// <summary>Duration of the clip, seconds: the flight times and the stances between them.</summary>
-    public float Duration => _jumpStarts[^1];
+    /// <summary>Duration of the clip, seconds: the moves' durations and the stances between them.</summary>
+    public float Duration => _moveStarts[^1];
 
     /// <summary>How many takeoff or landing contact poses could not be generated to satisfy the no-slip test (the estimated contacts were then kept).</summary>
     public int FailedContactPoses { get; }
@@ -82,17 +92,32 @@ public sealed class JumpAnimation
     /// <summary>How many frames still have a limb passing through the level after re-sampling.</summary>
     public int CollidingFrames { get; }
 
-    /// <summary>Clip time at which jump <paramref name="jump"/> takes off, seconds.</summary>
-    public float JumpStart(int jump) => _jumpStarts[jump];
+    /// <summary>Clip time at which the <paramref name="jump"/>-th jump move (counting jumps only) takes off, seconds.</summary>
+    public float JumpStart(int jump) => _moveStarts[_jumpMoves[jump]];
+
+    /// <summary>Index in <see cref="Moves"/> of the <paramref name="jump"/>-th jump move (counting jumps only).</summary>
+    public int MoveOfJump(int jump) => _jumpMoves[jump];
+
+    /// <summary>Clip time at which move <paramref name="move"/> starts, seconds (the clip's duration for <c>Moves.Count</c>).</summary>
+    public float MoveStart(int move) => _moveStarts[move];
+
+    /// <summary>Clip time at which move <paramref name="move"/> ends (a landing, or the end of a walk), seconds; its stance follows until the next move starts.</summary>
+    public float MoveEnd(int move) => _moveStarts[move] + _moves[move].Duration;
 
     /// <summary>
-    /// The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola in flight, at the
-    /// landing pose during the stance after it.
+    /// The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola in flight, on the
+    /// current walk's path while walking (<see cref="Walk.PoseAt"/>), at the move's end pose during the stance after it.
     /// </summary>
     public RootPose RootAt(float time)
     {
-        int jump = JumpIndex(time);
-        return Arcs[jump].PoseAt(Math.Clamp(time - _jumpStarts[jump], 0f, Arcs[jump].FlightTime));
+        int m = MoveIndex(time);
+        float t = Math.Clamp(time - _moveStarts[m], 0f, _moves[m].Duration);
+        return _moves[m] switch
+        {
+            Jump jump => jump.Arc.PoseAt(t),
+            Walk walk => walk.PoseAt(t),
+            _ => throw new InvalidOperationException("Unknown move kind."),
+        };
     }
 
     /// <summary>The full pose at clip time <paramref name="time"/>: the root on the parabola, the angles interpolated between frames.</summary>
@@ -149,16 +174,11 @@ public sealed class JumpAnimation
         Model.Rig.Solve(root, angles, positions, rotations);
     }
 
-    private int JumpIndex(float time)
+    /// <summary>Index of the move under way (or whose stance it is) at clip time <paramref name="time"/>.</summary>
+    public int MoveIndex(float time)
     {
-        for (int i = 0; i < Arcs.Count; i++)
-        {
-            if (time < _jumpStarts[i + 1])
-            {
-                return i;
-            }
-        }
-
-        return Arcs.Count - 1;
+        int i = Array.BinarySearch(_moveStarts, 0, _moves.Length, time);
+        i = i >= 0 ? i : ~i - 1;
+        return Math.Clamp(i, 0, Math.Max(0, _moves.Length - 1));
     }
 }

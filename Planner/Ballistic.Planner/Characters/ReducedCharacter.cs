@@ -15,6 +15,7 @@ public sealed class ReducedCharacter
 {
     private string? _fingerprint;
     private HeightRange? _stanceLift;
+    private WalkingLimits _walking = WalkingLimits.None;
 
     /// <summary>Creates a character, checking every value.</summary>
     /// <exception cref="CharacterException">A value is out of range, limb names repeat, or more limbs are required than exist.</exception>
@@ -141,6 +142,31 @@ public sealed class ReducedCharacter
         }
     }
 
+    /// <summary>
+    /// How the character walks (speed, steepest slope, highest step); <see cref="WalkingLimits.None"/> (the default):
+    /// it only jumps. Derived from the rig's legs by <see cref="Rigs.ReducedModelBuilder"/>, overridable in the limb spec.
+    /// </summary>
+    /// <exception cref="CharacterException">A value is out of range.</exception>
+    public WalkingLimits Walking
+    {
+        get => _walking;
+        init
+        {
+            ArgumentNullException.ThrowIfNull(value);
+            if (value.Problem() is string problem)
+            {
+                throw new CharacterException($"Character '{Name}': {problem}.");
+            }
+
+            _walking = value;
+        }
+    }
+
+    /// <summary>This character with other walking limits (everything else the same).</summary>
+    /// <exception cref="CharacterException">A value is out of range.</exception>
+    public ReducedCharacter WithWalking(WalkingLimits walking) =>
+        new(Name, TrunkHalfExtents, Limbs, RequiredContacts, TakeoffSpeedMax, LandingSpeedMax, Friction) { _stanceLift = _stanceLift, Walking = walking };
+
     /// <summary>A hex SHA-256 of everything that affects planning; roadmap files record it.</summary>
     public string Fingerprint => _fingerprint ??= ComputeFingerprint();
 
@@ -158,11 +184,18 @@ public sealed class ReducedCharacter
             Append(hash, (int)limb.Kind, c.X, c.Y, c.Z, h.X, h.Y, h.Z, q.X, q.Y, q.Z, q.W, limb.Filter.Direction.X, limb.Filter.Direction.Y, limb.Filter.Direction.Z, limb.Filter.MinCosine);
         }
 
+        // Walking changes the roadmap (its walks); a character that only jumps keeps the fingerprint it always had.
+        if (Walking.CanWalk)
+        {
+            hash.AppendData("walking"u8);
+            Append(hash, Walking.Speed, Walking.MaxSlopeDegrees, Walking.StepHeight);
+        }
+
         return Convert.ToHexStringLower(hash.GetHashAndReset());
     }
 
     /// <inheritdoc />
-    public override string ToString() => $"{Name} ({Limbs.Count} limbs, {RequiredContacts} must touch, μ {Friction}, {TakeoffSpeedMax}/{LandingSpeedMax} m/s)";
+    public override string ToString() => $"{Name} ({Limbs.Count} limbs, {RequiredContacts} must touch, μ {Friction}, {TakeoffSpeedMax}/{LandingSpeedMax} m/s{(Walking.CanWalk ? $", walks at {Walking.Speed:0.##} m/s" : "")})";
 
     private static void Append(IncrementalHash hash, params ReadOnlySpan<float> values)
     {

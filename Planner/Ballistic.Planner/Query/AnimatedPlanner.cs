@@ -117,23 +117,23 @@ public sealed class AnimatedPlanner
                 return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
-            if (result.Jumps.Count == 0)
+            if (result.Moves.Count == 0)
             {
                 return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
             if (stop is not null && stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
             {
-                return new AnimatedPlan(result with { Status = status, Reason = reason, Jumps = [], Elapsed = clock.Elapsed }, null, repair.SetAside, round);
+                return new AnimatedPlan(result with { Status = status, Reason = reason, Moves = [], Elapsed = clock.Elapsed }, null, repair.SetAside, round);
             }
 
-            JumpAnimation animation = Animator.Animate(result.Jumps, frameRate);
+            JumpAnimation animation = Animator.Animate(result.Moves, frameRate);
             if (animation.IsClean)
             {
                 return new AnimatedPlan(result with { Reason = result.Reason + repair.SuccessNote(), Elapsed = clock.Elapsed }, animation, repair.SetAside, round);
             }
 
-            repair.Reject(result.Jumps, animation);
+            repair.Reject(result.Moves, animation);
 
             if (round >= rounds)
             {
@@ -141,7 +141,7 @@ public sealed class AnimatedPlanner
                 {
                     Status = PlannerStatus.AnimationFailed,
                     Reason = repair.RoundsExhausted(rounds),
-                    Jumps = [],
+                    Moves = [],
                     Elapsed = clock.Elapsed,
                 };
                 return new AnimatedPlan(failed, null, repair.SetAside, round);

@@ -13,27 +13,36 @@ public sealed class JumpRepair
     private readonly HashSet<(int From, int To)> _excluded = [];
     private readonly List<RejectedJump> _setAside = [];
 
-    /// <summary>Jumps (takeoff node id, landing node id) the next search must not use.</summary>
+    /// <summary>Moves (jumps or walks: from node id, to node id) the next search must not use.</summary>
     public IReadOnlySet<(int From, int To)> Excluded => _excluded;
 
     /// <summary>The jumps set aside so far, in order, each with the animator's reason.</summary>
     public IReadOnlyList<RejectedJump> SetAside => _setAside;
 
-    /// <summary>Sets aside every jump of <paramref name="path"/> that <paramref name="animation"/> reports a problem with.</summary>
+    /// <summary>Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a problem with.</summary>
     /// <param name="path">The path that was animated.</param>
-    /// <param name="animation">Its animation; problems index jumps of <paramref name="path"/>.</param>
-    /// <returns>How many jumps were newly set aside.</returns>
-    public int Reject(IReadOnlyList<Jump> path, JumpAnimation animation)
+    /// <param name="animation">Its animation; problems index moves of <paramref name="path"/>.</param>
+    /// <returns>How many moves were newly set aside.</returns>
+    public int Reject(IReadOnlyList<Move> path, JumpAnimation animation)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(animation);
         int added = 0;
         foreach (JumpProblem problem in animation.Problems)
         {
-            Jump jump = path[problem.Jump];
-            if (_excluded.Add((jump.Takeoff.Id, jump.Landing.Id)))
+            Move move = path[problem.Jump];
+            bool any = _excluded.Add((move.From.Id, move.To.Id));
+            if (move is Walk walk)
             {
-                _setAside.Add(new RejectedJump(jump.Takeoff, jump.Landing, problem.Reason));
+                foreach ((int from, int to) in walk.Segments)
+                {
+                    any |= _excluded.Add((from, to));
+                }
+            }
+
+            if (any)
+            {
+                _setAside.Add(new RejectedJump(move.From, move.To, problem.Reason));
                 added++;
             }
         }

@@ -9,10 +9,13 @@ namespace Ballistic.Planner.Query;
 /// <param name="Reason">One sentence explaining the status.</param>
 /// <param name="Start">The start node placed at the requested start point (a roadmap node when the roadmap holds that very pose), when one could be placed.</param>
 /// <param name="Goal">The goal node placed at the requested goal point, when one could be placed.</param>
-/// <param name="Jumps">The jumps from start to goal, in order; empty unless the status is exact.</param>
+/// <param name="Moves">The moves (jumps and walks) from start to goal, in order; empty unless the status is exact.</param>
 /// <param name="Elapsed">Wall-clock duration of the query.</param>
-public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode? Start, RoadmapNode? Goal, IReadOnlyList<Jump> Jumps, TimeSpan Elapsed)
+public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode? Start, RoadmapNode? Goal, IReadOnlyList<Move> Moves, TimeSpan Elapsed)
 {
+    // A cache of the jump moves, valid for the moves list it was made from ('with' copies it along).
+    private (IReadOnlyList<Move>? Of, IReadOnlyList<Jump> Jumps) _jumps;
+
     /// <summary>Where the requested start put the start stance (distances included), when the query got that far.</summary>
     public EndpointPlacement? StartPlacement { get; init; }
 
@@ -25,6 +28,26 @@ public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode
     /// </summary>
     public int Expansions { get; init; }
 
-    /// <summary>Total flight time of the path, seconds.</summary>
+    /// <summary>The jump moves of <see cref="Moves"/>, in order.</summary>
+    public IReadOnlyList<Jump> Jumps
+    {
+        get
+        {
+            if (!ReferenceEquals(_jumps.Of, Moves))
+            {
+                _jumps = (Moves, Moves as IReadOnlyList<Jump> ?? [.. Moves.OfType<Jump>()]);
+            }
+
+            return _jumps.Jumps;
+        }
+    }
+
+    /// <summary>The walk moves of <see cref="Moves"/>, in order.</summary>
+    public IEnumerable<Walk> Walks => Moves.OfType<Walk>();
+
+    /// <summary>Total flight time of the path's jumps, seconds.</summary>
     public float TotalFlightTime => Jumps.Sum(j => j.Arc.FlightTime);
+
+    /// <summary>Total time of the path's moves (flights and walks), seconds.</summary>
+    public float TotalDuration => Moves.Sum(m => m.Duration);
 }

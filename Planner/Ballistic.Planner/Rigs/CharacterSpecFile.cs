@@ -188,6 +188,9 @@ public static class CharacterSpecFile
             ["takeoffSpeedMax"] = reduced.TakeoffSpeedMax,
             ["landingSpeedMax"] = reduced.LandingSpeedMax,
             ["friction"] = reduced.Friction,
+            ["walkSpeed"] = reduced.Walking.Speed,
+            ["maxSlope"] = reduced.Walking.MaxSlopeDegrees,
+            ["stepHeight"] = reduced.Walking.StepHeight,
             ["trunkBones"] = new JsonArray([.. model.TrunkJoints.Select(j => (JsonNode)JsonValue.Create(rig.Joints[j].Name))]),
             ["limbs"] = limbs,
             ["joints"] = joints,
@@ -350,7 +353,16 @@ public static class CharacterSpecFile
             reduced = new ReducedCharacter(reduced.Name, half, reduced.Limbs, reduced.RequiredContacts, reduced.TakeoffSpeedMax, reduced.LandingSpeedMax, reduced.Friction)
             {
                 StanceLift = ReducedModelBuilder.StanceLift(model, reduced.RequiredContacts, half),
+                Walking = reduced.Walking,
             };
+        }
+
+        if (spec.WalkSpeed is not null || spec.MaxSlope is not null || spec.StepHeight is not null)
+        {
+            WalkingLimits derived = reduced.Walking;
+            float speed = spec.WalkSpeed ?? derived.Speed;
+            float step = spec.StepHeight ?? (derived.StepHeight > 0f ? derived.StepHeight : WalkingLimits.StepShare * reduced.StanceLift.Max);
+            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, spec.MaxSlope ?? derived.MaxSlopeDegrees, step)));
         }
 
         return (model, reduced);

@@ -130,7 +130,27 @@ public static class ReducedModelBuilder
         return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction)
         {
             StanceLift = StanceLift(model, requiredContacts, trunkHalf),
+            Walking = Walking(model, requiredContacts),
         };
+    }
+
+    /// <summary>
+    /// Walking derived from the rig (<see cref="WalkingLimits.FromLeg"/>): a character with at least two feet that
+    /// stands on its feet alone (no more required contacts than feet) walks, its leg length being the root joint's
+    /// standing height above its contacts (as in <see cref="StanceLift"/>); any other (a frog that needs all four
+    /// limbs down) only jumps.
+    /// </summary>
+    public static WalkingLimits Walking(CharacterModel model, int requiredContacts)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        int feet = model.Limbs.Count(l => l.Kind == LimbKind.Foot);
+        if (feet < 2 || requiredContacts > feet)
+        {
+            return WalkingLimits.None;
+        }
+
+        (float rootHeight, _) = Standing(model, requiredContacts);
+        return WalkingLimits.FromLeg(rootHeight);
     }
 
     /// <summary>Lowest share of the rest-pose root height the root keeps above its contacts in stance.</summary>
@@ -146,6 +166,16 @@ public static class ReducedModelBuilder
     public static HeightRange StanceLift(CharacterModel model, int requiredContacts, Vector3 trunkHalfExtents)
     {
         ArgumentNullException.ThrowIfNull(model);
+        (float rootHeight, float centreAboveRoot) = Standing(model, requiredContacts);
+        float floor = trunkHalfExtents.Y + 0.02f;
+        float max = MathF.Max(floor, rootHeight + centreAboveRoot);
+        float min = Math.Clamp((StanceLowest * rootHeight) + centreAboveRoot, floor, max);
+        return new HeightRange(min, max);
+    }
+
+    /// <summary>The root joint's standing height above its lowest contacts and the trunk centre's height above the root joint, metres.</summary>
+    private static (float RootHeight, float CentreAboveRoot) Standing(CharacterModel model, int requiredContacts)
+    {
         Rig rig = model.Rig;
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
@@ -163,9 +193,6 @@ public static class ReducedModelBuilder
             centreAboveRoot = -positions[0].Y; // the trunk centre is the origin
         }
 
-        float floor = trunkHalfExtents.Y + 0.02f;
-        float max = MathF.Max(floor, rootHeight + centreAboveRoot);
-        float min = Math.Clamp((StanceLowest * rootHeight) + centreAboveRoot, floor, max);
-        return new HeightRange(min, max);
+        return (rootHeight, centreAboveRoot);
     }
 }

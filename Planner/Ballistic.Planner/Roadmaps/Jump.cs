@@ -6,4 +6,14 @@ namespace Ballistic.Planner.Roadmaps;
 /// <param name="Takeoff">The node jumped from (start, roadmap node or goal).</param>
 /// <param name="Landing">The node landed on.</param>
 /// <param name="Arc">The ballistic arc of the trunk centre.</param>
-public sealed record Jump(RoadmapNode Takeoff, RoadmapNode Landing, BallisticArc Arc);
+public sealed record Jump(RoadmapNode Takeoff, RoadmapNode Landing, BallisticArc Arc) : Move
+{
+    /// <summary>The takeoff node.</summary>
+    public override RoadmapNode From => Takeoff;
+
+    /// <summary>The landing node.</summary>
+    public override RoadmapNode To => Landing;
+
+    /// <summary>The flight time, seconds.</summary>
+    public override float Duration => Arc.FlightTime;
+}

@@ -26,11 +26,12 @@ public sealed class AnimatedPlannerTests
     {
         public int Calls { get; private set; }
 
-        public JumpAnimation Animate(IReadOnlyList<Jump> jumps, float frameRate = 60f)
+        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
         {
             Calls++;
+            Jump[] jumps = [.. moves.Cast<Jump>()];
             var problems = new List<JumpProblem>();
-            for (int j = 0; j < jumps.Count; j++)
+            for (int j = 0; j < jumps.Length; j++)
             {
                 float across = new Vector2(jumps[j].Arc.End.X - jumps[j].Arc.Start.X, jumps[j].Arc.End.Z - jumps[j].Arc.Start.Z).Length();
                 if (across > longest)
@@ -39,7 +40,7 @@ public sealed class AnimatedPlannerTests
                 }
             }
 
-            return new JumpAnimation(CharacterPresets.Model("skeleton"), [.. jumps.Select(x => x.Arc)], new float[jumps.Count - 1], [], [], problems, 0, 0);
+            return new JumpAnimation(CharacterPresets.Model("skeleton"), jumps, new float[jumps.Length - 1], [], [], problems, 0, 0);
         }
 
         public bool CanStand(PoseEvaluation pose) => true;

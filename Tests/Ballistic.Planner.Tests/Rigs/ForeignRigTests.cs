@@ -8,7 +8,7 @@ using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Steering;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Rigs;
@@ -140,7 +140,7 @@ public sealed class ForeignRigTests
             frames.Add(new AnimationFrame(f / 30f, root, q));
         }
 
-        var animation = new JumpAnimation(model, Array.Empty<BallisticArc>(), [], frames, [], [], 0, 0);
+        var animation = new JumpAnimation(model, Array.Empty<Move>(), [], frames, [], [], 0, 0);
         byte[] glb = AnimatedGlbWriter.ToBytes(animation, "jumps");
 
         // CI runs the Khronos validator on these too (it sets BALLISTIC_GLTF_OUT).

@@ -1,8 +1,10 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
@@ -170,7 +172,8 @@ public sealed class AnimationClipBakerTests
         SkeletonBinding binding = SkeletonBindingTests.Bind(model, godot.Skeleton);
         var pose = new RootPose(new Vector3(0f, 1f, 0f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.3f));
         var frames = new List<AnimationFrame> { new(0f, pose, model.ContactPose), new(1f, pose, model.ContactPose) };
-        var still = new JumpAnimation(model, [new BallisticArc(pose, pose, Vector3.Zero, 1f, 0f)], [], frames, [], [], 0, 0);
+        var node = new RoadmapNode(0, pose, new FrictionCone(Vector3.UnitY, 1f), []);
+        var still = new JumpAnimation(model, [new Jump(node, node, new BallisticArc(pose, pose, Vector3.Zero, 1f, 0f))], [], frames, [], [], 0, 0);
         BakedClip clip = AnimationClipBaker.Bake(still, binding, BoneTransform.Identity);
         Assert.Multiple(() =>
         {

@@ -1,0 +1,48 @@
+namespace Ballistic.Planner.Characters;
+
+/// <summary>
+/// How a character walks: its walking speed, the steepest ground it walks on and the highest step it takes. A
+/// character with a <see cref="Speed"/> of zero never walks (it only jumps, as in the paper).
+/// </summary>
+/// <param name="Speed">Walking speed of the trunk along the ground, m/s; 0: the character does not walk.</param>
+/// <param name="MaxSlopeDegrees">Steepest ground walked on, degrees from horizontal (0 to 80).</param>
+/// <param name="StepHeight">Highest rise or drop of the ground taken in one step, metres.</param>
+public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float StepHeight)
+{
+    /// <summary>The walking speed as a share of √(g·leg length) squared (a Froude number of 0.25: a relaxed walk).</summary>
+    public const float Froude = 0.25f;
+
+    /// <summary>The step height as a share of the leg length.</summary>
+    public const float StepShare = 0.25f;
+
+    /// <summary>The default steepest slope, degrees.</summary>
+    public const float DefaultMaxSlopeDegrees = 35f;
+
+    /// <summary>A character that never walks.</summary>
+    public static WalkingLimits None { get; } = new(0f, DefaultMaxSlopeDegrees, 0f);
+
+    /// <summary>True when the character walks (<see cref="Speed"/> &gt; 0).</summary>
+    public bool CanWalk => Speed > 0f;
+
+    /// <summary>Cosine of <see cref="MaxSlopeDegrees"/>: the least world-up component of a walkable ground normal.</summary>
+    public float MinGroundCosine => MathF.Cos(MaxSlopeDegrees * MathF.PI / 180f);
+
+    /// <summary>
+    /// Walking derived from a leg: speed √(<see cref="Froude"/>·g·<paramref name="legLength"/>) (about 1.5 m/s for a
+    /// 0.95 m human leg), step height <see cref="StepShare"/> of the leg, slope <see cref="DefaultMaxSlopeDegrees"/>.
+    /// </summary>
+    /// <param name="legLength">Height of the hip above the sole in stance, metres.</param>
+    /// <param name="gravity">Magnitude of gravity, m/s².</param>
+    public static WalkingLimits FromLeg(float legLength, float gravity = 9.81f) =>
+        legLength > 0f && float.IsFinite(legLength)
+            ? new WalkingLimits(MathF.Sqrt(Froude * gravity * legLength), DefaultMaxSlopeDegrees, StepShare * legLength)
+            : None;
+
+    /// <summary>The problem with these values, or <c>null</c> when they are usable.</summary>
+    public string? Problem() =>
+        !(Speed >= 0f) || !float.IsFinite(Speed) || Speed > 100f ? $"the walking speed must lie between 0 and 100 m/s, not {Speed}"
+        : !(MaxSlopeDegrees >= 0f) || MaxSlopeDegrees > 80f ? $"the steepest walkable slope must lie between 0 and 80 degrees, not {MaxSlopeDegrees}"
+        : !(StepHeight >= 0f) || !float.IsFinite(StepHeight) || StepHeight > 100f ? $"the step height must lie between 0 and 100 m, not {StepHeight}"
+        : CanWalk && StepHeight <= 0f ? "a walking character needs a positive step height"
+        : null;
+}

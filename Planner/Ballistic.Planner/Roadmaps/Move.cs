@@ -1,0 +1,22 @@
+namespace Ballistic.Planner.Roadmaps;
+
+/// <summary>
+/// One move of a planned path, from one stance to the next: a <see cref="Jump"/> (a ballistic flight) or a
+/// <see cref="Walk"/> (steps along the ground).
+/// </summary>
+public abstract record Move
+{
+    /// <summary>Prevents other move kinds outside the planner.</summary>
+    private protected Move()
+    {
+    }
+
+    /// <summary>The stance the move leaves (start, roadmap node or goal).</summary>
+    public abstract RoadmapNode From { get; }
+
+    /// <summary>The stance the move reaches.</summary>
+    public abstract RoadmapNode To { get; }
+
+    /// <summary>How long the move takes, seconds: a jump's flight time, a walk's length over the walking speed.</summary>
+    public abstract float Duration { get; }
+}
