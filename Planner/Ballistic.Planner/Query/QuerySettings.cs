@@ -30,4 +30,20 @@ public sealed record QuerySettings
     /// may start or end on another node than the one the bake placed there.
     /// </summary>
     public bool PreferRoadmapNodes { get; init; }
+
+    /// <summary>
+    /// Which moves the path may use: <see cref="Locomotion.WalkAndJump"/> (the default; walks only for a character
+    /// whose <see cref="Characters.ReducedCharacter.Walking"/> says it walks) or <see cref="Locomotion.Jump"/> (the
+    /// paper's jump-only planner).
+    /// </summary>
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
+
+    /// <summary>The default <see cref="JumpEffort"/>, seconds.</summary>
+    public const float DefaultJumpEffort = 2f;
+
+    /// <summary>
+    /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking: a path jumps only
+    /// where that saves more time than this. Not negative. Unused in <see cref="Locomotion.Jump"/> mode.
+    /// </summary>
+    public float JumpEffort { get; init; } = DefaultJumpEffort;
 }
