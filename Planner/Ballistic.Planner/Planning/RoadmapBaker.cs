@@ -4,6 +4,7 @@ using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Planning;
 
@@ -200,15 +201,57 @@ public sealed class RoadmapBaker
             }
         }
 
+        // Walk pairs likewise: the nearest within walking distance, horizontally.
+        var walkPairs = new List<(int I, int J)>();
+        bool walking = settings.Locomotion == Locomotion.WalkAndJump && _scene.Walking.Limits.CanWalk && settings.MaxWalkNeighbours > 0;
+        float walkDistance = settings.MaxWalkDistance ?? BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
+        if (walking)
+        {
+            for (int k = 0; k < poses.Length; k++)
+            {
+                int i = firstId + k;
+                Vector3 p = poses[k].Pose.Position;
+                candidates.Clear();
+                index.OfferWithin(p, walkDistance, settings.MaxWalkNeighbours, candidates);
+                for (int m = 0; m < k; m++)
+                {
+                    Vector3 q = poses[m].Pose.Position;
+                    if (new Vector2(q.X - p.X, q.Z - p.Z).LengthSquared() <= walkDistance * walkDistance)
+                    {
+                        NodeIndex.Offer(candidates, settings.MaxWalkNeighbours, (Vector3.Distance(p, q), firstId + m));
+                    }
+                }
+
+                NodeIndex.Finish(candidates);
+                foreach ((_, int j) in candidates)
+                {
+                    walkPairs.Add((i, j));
+                }
+            }
+        }
+
         RoadmapNode NodeOf(int id) => id < firstId ? roadmap.Nodes[id] : ToNode(poses[id - firstId], id);
         var forward = new SteeringResult[pairs.Count];
         var backward = new SteeringResult[pairs.Count];
-        bool cut = RunParallel(pairs.Count, settings.Threads, stopNow, n =>
+        var walkForward = new WalkResult[walkPairs.Count];
+        var walkBackward = new WalkResult[walkPairs.Count];
+        bool cut = RunParallel(pairs.Count + walkPairs.Count, settings.Threads, stopNow, n =>
         {
-            RoadmapNode a = NodeOf(pairs[n].I);
-            RoadmapNode b = NodeOf(pairs[n].J);
-            forward[n] = _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone);
-            backward[n] = _scene.Steering.Steer(b.Pose, b.Cone, a.Pose, a.Cone);
+            if (n < pairs.Count)
+            {
+                RoadmapNode a = NodeOf(pairs[n].I);
+                RoadmapNode b = NodeOf(pairs[n].J);
+                forward[n] = _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone);
+                backward[n] = _scene.Steering.Steer(b.Pose, b.Cone, a.Pose, a.Cone);
+            }
+            else
+            {
+                int w = n - pairs.Count;
+                RoadmapNode a = NodeOf(walkPairs[w].I);
+                RoadmapNode b = NodeOf(walkPairs[w].J);
+                walkForward[w] = _scene.Walking.Steer(a, b, walkDistance);
+                walkBackward[w] = _scene.Walking.Steer(b, a, walkDistance);
+            }
         });
         if (cut)
         {
@@ -237,6 +280,20 @@ public sealed class RoadmapBaker
             if (backward[n].Succeeded)
             {
                 roadmap.AddEdge(new RoadmapEdge(j, i, backward[n].Arc));
+            }
+        }
+
+        for (int n = 0; n < walkPairs.Count; n++)
+        {
+            (int i, int j) = walkPairs[n];
+            if (walkForward[n].Walk is Walk there)
+            {
+                roadmap.AddWalk(new RoadmapWalk(i, j, there.Length, there.Duration));
+            }
+
+            if (walkBackward[n].Walk is Walk back)
+            {
+                roadmap.AddWalk(new RoadmapWalk(j, i, back.Length, back.Duration));
             }
         }
 
