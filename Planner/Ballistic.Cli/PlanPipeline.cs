@@ -95,7 +95,7 @@ internal sealed class PlanPipeline
     public JumpAnimation? Animation { get; private set; }
 
     private PlanReport Report(PlanningScene scene, Roadmap roadmap, double bakeSeconds, PlanResult result) =>
-        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings)) { Tolerance = Tolerance };
+        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings)) { Tolerance = Tolerance, Locomotion = Locomotion };
 
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
     public void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)

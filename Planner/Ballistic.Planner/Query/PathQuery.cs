@@ -5,6 +5,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Query;
 
@@ -363,7 +364,7 @@ public sealed class PathQuery
                 path = Shortcut(path, settings, rejected);
             }
 
-            path = JoinWalks(path);
+            path = JoinWalks(path, _scene.Walking);
         }
 
         string moves = _walking ? "moves (jumps or walks)" : "jumps";
@@ -727,17 +728,19 @@ public sealed class PathQuery
         return result;
     }
 
-    /// <summary>Joins consecutive walks into one walk through the stances between them (the character does not stop there).</summary>
-    private static List<Move> JoinWalks(List<Move> path)
+    /// <summary>
+    /// Joins consecutive walks into one walk through the stances between them (the character does not stop there)
+    /// when the trunk stays clear along the joined walk (its trunk follows the joined path, not each part's).
+    /// </summary>
+    private static List<Move> JoinWalks(List<Move> path, WalkSteering walking)
     {
         var result = new List<Move>();
         foreach (Move move in path)
         {
-            if (move is Walk next && result.Count > 0 && result[^1] is Walk previous)
+            if (move is Walk next && result.Count > 0 && result[^1] is Walk previous &&
+                Joined(previous, next) is Walk joined && walking.TrunkIsFree(joined))
             {
-                var points = new List<Vector3>(previous.Path);
-                points.AddRange(next.Path.Skip(points[^1] == next.Path[0] ? 1 : 0));
-                result[^1] = new Walk(previous.From, next.To, points, previous.Speed, [.. previous.Via, previous.To, .. next.Via]);
+                result[^1] = joined;
             }
             else
             {
@@ -746,6 +749,13 @@ public sealed class PathQuery
         }
 
         return result;
+    }
+
+    private static Walk Joined(Walk first, Walk second)
+    {
+        var points = new List<Vector3>(first.Path);
+        points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via]);
     }
 
     /// <summary>"3 jumps", "2 walks and 1 jump".</summary>

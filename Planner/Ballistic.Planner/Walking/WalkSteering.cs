@@ -162,8 +162,12 @@ public sealed class WalkSteering
         return WalkFailure.None;
     }
 
-    /// <summary>True when the trunk box carried along the walk never touches the level.</summary>
-    private bool TrunkIsFree(Walk walk)
+    /// <summary>
+    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAtDistance"/>) never
+    /// touches the level: the check <see cref="Steer"/> makes, for walks joined from several (their trunk follows
+    /// the joined path, not each part's).
+    /// </summary>
+    public bool TrunkIsFree(Walk walk)
     {
         float spacing = MathF.Min(_trunkHalfExtents.X, MathF.Min(_trunkHalfExtents.Y, _trunkHalfExtents.Z));
         int steps = Math.Max(1, (int)MathF.Ceiling(walk.Length / spacing));

@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
