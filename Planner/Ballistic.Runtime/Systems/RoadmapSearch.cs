@@ -16,7 +16,13 @@ internal sealed class RoadmapSearch
     {
         _kind = kind;
         _query = new PathQuery(kind.Scene, kind.Roadmap);
-        _settings = new QuerySettings { Tolerance = world.Tolerance, CanStand = kind.Animator.CanStand };
+        _settings = new QuerySettings
+        {
+            Tolerance = world.Tolerance,
+            CanStand = kind.Animator.CanStand,
+            Locomotion = world.Locomotion,
+            JumpEffort = world.JumpEffort,
+        };
     }
 
     /// <summary>

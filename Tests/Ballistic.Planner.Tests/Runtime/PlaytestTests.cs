@@ -50,7 +50,7 @@ public sealed class PlaytestTests
     {
         PlaytestResult result = Run.Value;
         JsonNode report = JsonNode.Parse(PlaytestReportWriter.ToJson(result, "Scenes/levels/desert.glb"))!;
-        Assert.That((string?)report["schema"], Is.EqualTo("ballistic.playtest/1"));
+        Assert.That((string?)report["schema"], Is.EqualTo("ballistic.playtest/2"));
         Assert.That((string?)report["level"], Is.EqualTo("Scenes/levels/desert.glb"));
 
         // The character block is the plan report's, byte for byte.

@@ -157,10 +157,10 @@ public sealed class AnimationClipBakerTests
         var frogAnimation = new JumpAnimation(frog, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), new float[frog.Rig.DofCount])], [], [], 0, 0);
         Assert.That(() => AnimationClipBaker.Bake(frogAnimation, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("'frog'"));
 
-        // An animation without jumps cannot be sampled.
+        // An animation without moves cannot be sampled.
         var model = RuntimeWorlds.DesertSkeleton.Model;
-        var noJumps = new JumpAnimation(model, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose)], [], [], 0, 0);
-        Assert.That(() => AnimationClipBaker.Bake(noJumps, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("0 jumps"));
+        var noMoves = new JumpAnimation(model, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose)], [], [], 0, 0);
+        Assert.That(() => AnimationClipBaker.Bake(noMoves, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("0 moves"));
     }
 
     [Test]
