@@ -25,6 +25,9 @@ internal sealed class RoadmapSearch
         };
     }
 
+    /// <summary>The query settings of every search: the world's tolerance, locomotion and jump effort, the kind's standing check.</summary>
+    public QuerySettings Settings => _settings;
+
     /// <summary>
     /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/>; <paramref name="work"/> is the search's
     /// cost in expansions (plus the placement cost when the target is not a roadmap node).
