@@ -97,7 +97,8 @@ internal static class Stances
     /// <paramref name="move"/> (clamped to the walk): the walk's ground point <see cref="Walk.PointAt"/> at
     /// <see cref="Walk.DistanceAt"/> plus the offset from the path's ends to the stances' contact centres,
     /// interpolated along the path; exactly the first stance's contact centre at 0 and the last one's at the end. The
-    /// velocity is the walking speed along the path's direction there (zero before the start and after the end).
+    /// velocity is the walking speed along the path's direction there, from the start to the end included (zero before
+    /// and after).
     /// </summary>
     /// <exception cref="ArgumentException"><paramref name="move"/> is not a walk.</exception>
     public static (Vector3 Position, Vector3 Velocity) InWalk(in PathMove move, float t)
@@ -108,18 +109,13 @@ internal static class Stances
         Vector3 endShift = ContactCentre(move.To) - path[^1];
         float length = walk.Length;
         float d = walk.DistanceAt(t);
-        if (d <= 0f)
+        Vector3 position = d <= 0f ? ContactCentre(move.From)
+            : d >= length ? ContactCentre(move.To)
+            : walk.PointAt(d) + Vector3.Lerp(startShift, endShift, d / length);
+        if (!(t >= 0f && t <= walk.Duration) || length <= 0f)
         {
-            return (ContactCentre(move.From), Vector3.Zero);
+            return (position, Vector3.Zero);
         }
-
-        if (d >= length)
-        {
-            return (ContactCentre(move.To), Vector3.Zero);
-        }
-
-        float u = d / length;
-        Vector3 position = walk.PointAt(d) + Vector3.Lerp(startShift, endShift, u);
 
         // Direction of the path at d (averaged over a centimetre, which only matters at a corner).
         const float h = 0.005f;
