@@ -13,10 +13,10 @@ using Ballistic.Runtime.Systems;
 namespace Ballistic.Runtime;
 
 /// <summary>
-/// Many agents navigating one level by jumps, stepped per tick: the ECS core under the Godot nodes. The world holds
+/// Many agents navigating one level by jumps and walks, stepped per tick: the ECS core under the Godot nodes. The world holds
 /// one frozen roadmap per character kind (like a navigation map with one region per agent size), agents as
 /// components in arrays (<see cref="AgentHandle"/>s name them), and three systems run by <see cref="Step"/> in a
-/// fixed order: path requests (a budgeted queue), locomotion (exactly on the arcs), pose (joint buffers from the
+/// fixed order: path requests (a budgeted queue), locomotion (exactly on the arcs and along the walks), pose (joint buffers from the
 /// whole-body animation). What happened comes out as <see cref="Events"/>.
 /// </summary>
 /// <remarks>
@@ -76,7 +76,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>The character kinds, by <see cref="KindHandle.Index"/>.</summary>
     public IReadOnlyList<CharacterKind> Kinds => _kinds;
 
-    /// <summary>The events of the last <see cref="Step"/>, in order: path found or failed, then takeoffs, landings and arrivals.</summary>
+    /// <summary>The events of the last <see cref="Step"/>, in order: path found or failed, then takeoffs, landings, walks started and finished, and arrivals.</summary>
     public ReadOnlySpan<JumpEvent> Events => _events.Events;
 
     /// <summary>Path requests waiting for a search.</summary>
@@ -381,6 +381,53 @@ public sealed class JumpWorld : IDisposable
         return RuntimeResult.Success;
     }
 
+    /// <summary>
+    /// Performs exactly <paramref name="moves"/> (jumps and walks, each starting on the stance the one before ends on),
+    /// with no search: the agent is moved at once onto the first move's stance (pushed, as by <see cref="Warp"/>,
+    /// dropping its path and any pending request) and its target becomes the last stance's contact centre. The moves
+    /// are animated like any path and delivered <see cref="WorldSettings.PathLatencyTicks"/> later as a
+    /// <see cref="JumpEventKind.PathFound"/> event; a move the body cannot perform is set aside and the request
+    /// becomes a search to the same stance, as for <see cref="PerformJump"/>. For tests and tools (scripted paths).
+    /// Fails at once, leaving the agent as it was, for no moves or moves that do not chain.
+    /// </summary>
+    internal RuntimeResult PerformMoves(AgentHandle agent, IReadOnlyList<Move> moves)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return Unknown(agent);
+        }
+
+        if (moves is null || moves.Count == 0 || moves.Any(m => m is null))
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, "there are no moves to perform (or one is null)");
+        }
+
+        for (int i = 1; i < moves.Count; i++)
+        {
+            if (!ReferenceEquals(moves[i].From, moves[i - 1].To) && moves[i].From != moves[i - 1].To)
+            {
+                return new RuntimeResult(RuntimeStatus.InvalidArgument, $"move {i} does not start on the stance move {i - 1} ends on");
+            }
+        }
+
+        int slot = agent.Index;
+        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        RoadmapNode from = moves[0].From;
+        float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
+        _requests.Cancel(slot);
+        _agents.Path[slot] = null;
+        _agents.StopAtStance[slot] = false;
+        _agents.Stance[slot] = from;
+        _agents.Root[slot] = from.Pose;
+        angles.CopyTo(_agents.Angles[slot], 0);
+        _agents.PoseDirty[slot] = true;
+        _agents.Target[slot] = Hosting.Stances.ContactCentre(moves[^1].To);
+        _agents.HasTarget[slot] = true;
+        _agents.State[slot] = AgentState.Stance;
+        _requests.Request(slot, [.. moves]);
+        return RuntimeResult.Success;
+    }
+
     /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
     public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
     {
@@ -425,7 +472,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>What the agent does this tick (<see cref="AgentState.Idle"/> for an unknown agent).</summary>
     public AgentState GetState(AgentHandle agent) => _agents.IsValid(agent) ? _agents.State[agent.Index] : AgentState.Idle;
 
-    /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight.</summary>
+    /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight and on the walk's <see cref="Walk.PoseAt"/> while walking.</summary>
     public RootPose GetRootPose(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Root[agent.Index] : default;
 
     /// <summary>The stance the agent stands on, or <c>null</c> while it follows a path (or for an unknown agent).</summary>
@@ -447,48 +494,134 @@ public sealed class JumpWorld : IDisposable
     /// <summary>
     /// The jump the agent is in the air for now (takeoff, flight or landing), with its exact arc and world times of
     /// takeoff and landing: the agent's root is <c>Arc.PositionAt((float)(Time − TakeoffTime))</c>. False when the
-    /// agent stands (or is unknown).
+    /// agent stands or walks (or is unknown).
     /// </summary>
     public bool TryGetCurrentJump(AgentHandle agent, out JumpInfo jump)
     {
         jump = default;
-        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } path || (_agents.Cursor[agent.Index] & 1) == 0)
+        if (!CurrentMove(agent, out AgentPath? path, out int index) || path.Move(index).Kind != MoveKind.Jump)
         {
             return false;
         }
 
-        jump = Describe(agent.Index, path, _agents.Cursor[agent.Index] >> 1, inProgress: true);
+        jump = DescribeJump(agent.Index, path, index, inProgress: true);
         return true;
     }
 
     /// <summary>
-    /// The next jump the agent will take off for (after the one it is in, if any), with its exact arc and the world
-    /// times of its takeoff and landing, known before it happens. False when no takeoff remains on the agent's path
-    /// (or it has none, or is unknown), or when the agent will stop before it (a new target, a cleared one).
+    /// The next jump the agent will take off for (after the move it is in, if any, and any walks before it), with its
+    /// exact arc and the world times of its takeoff and landing, known before it happens. False when no takeoff remains
+    /// on the agent's path (or it has none, or is unknown), or when the agent will stop before it (a new target, a
+    /// cleared one).
     /// </summary>
     public bool TryGetNextJump(AgentHandle agent, out JumpInfo jump)
     {
         jump = default;
-        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } path || _agents.StopAtStance[agent.Index])
+        if (NextMove(agent, MoveKind.Jump, out AgentPath? path) is not int index)
         {
             return false;
         }
 
-        int next = (_agents.Cursor[agent.Index] + 1) >> 1;
-        if (next >= path.Count)
-        {
-            return false;
-        }
-
-        jump = Describe(agent.Index, path, next, inProgress: false);
+        jump = DescribeJump(agent.Index, path!, index, inProgress: false);
         return true;
     }
 
-    private JumpInfo Describe(int slot, AgentPath path, int index, bool inProgress)
+    /// <summary>
+    /// The walk the agent is walking now, with the world times of its start and end: the agent's root is
+    /// <c>Walk.PoseAt((float)(Time − StartTime))</c>. False when the agent stands or jumps (or is unknown).
+    /// </summary>
+    public bool TryGetCurrentWalk(AgentHandle agent, out WalkInfo walk)
     {
-        PathMove move = path.Moves[index];
+        walk = default;
+        if (!CurrentMove(agent, out AgentPath? path, out int index) || path.Move(index).Walk is null)
+        {
+            return false;
+        }
+
+        walk = DescribeWalk(agent.Index, path, index, inProgress: true);
+        return true;
+    }
+
+    /// <summary>
+    /// The next walk the agent will start (after the move it is in, if any, and any jumps before it), with the world
+    /// times of its start and end, known before it happens. False when no walk remains on the agent's path (or it has
+    /// none, or is unknown), or when the agent will stop before it (a new target, a cleared one).
+    /// </summary>
+    public bool TryGetNextWalk(AgentHandle agent, out WalkInfo walk)
+    {
+        walk = default;
+        if (NextMove(agent, MoveKind.Walk, out AgentPath? path) is not int index)
+        {
+            return false;
+        }
+
+        walk = DescribeWalk(agent.Index, path!, index, inProgress: false);
+        return true;
+    }
+
+    /// <summary>
+    /// Index among the moves of the agent's path (<see cref="AgentPath.Moves"/>) of the move it is performing now (a
+    /// jump in the air or a walk), or, standing between two moves, of the next one; −1 without a path (or for an
+    /// unknown agent).
+    /// </summary>
+    public int GetMoveIndex(AgentHandle agent)
+    {
+        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } path)
+        {
+            return -1;
+        }
+
+        return Math.Min(_agents.Cursor[agent.Index] >> 1, path.Count - 1);
+    }
+
+    /// <summary>The path and index of the move the agent is performing now (between its start and its end).</summary>
+    private bool CurrentMove(AgentHandle agent, [System.Diagnostics.CodeAnalysis.NotNullWhen(true)] out AgentPath? path, out int index)
+    {
+        path = null;
+        index = -1;
+        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } p || (_agents.Cursor[agent.Index] & 1) == 0)
+        {
+            return false;
+        }
+
+        path = p;
+        index = _agents.Cursor[agent.Index] >> 1;
+        return true;
+    }
+
+    /// <summary>The index of the first move of <paramref name="kind"/> not started yet, unless the agent stops before it.</summary>
+    private int? NextMove(AgentHandle agent, MoveKind kind, out AgentPath? path)
+    {
+        path = null;
+        if (!_agents.IsValid(agent) || _agents.Path[agent.Index] is not { } p || _agents.StopAtStance[agent.Index])
+        {
+            return null;
+        }
+
+        path = p;
+        for (int i = (_agents.Cursor[agent.Index] + 1) >> 1; i < p.Count; i++)
+        {
+            if (p.Move(i).Kind == kind)
+            {
+                return i;
+            }
+        }
+
+        return null;
+    }
+
+    private JumpInfo DescribeJump(int slot, AgentPath path, int index, bool inProgress)
+    {
+        ref readonly PathMove move = ref path.Move(index);
         double start = _agents.PathStart[slot];
         return new JumpInfo(index, move.Arc, start + move.Start, start + move.End, inProgress);
+    }
+
+    private WalkInfo DescribeWalk(int slot, AgentPath path, int index, bool inProgress)
+    {
+        ref readonly PathMove move = ref path.Move(index);
+        double start = _agents.PathStart[slot];
+        return new WalkInfo(index, move.Walk!, start + move.Start, start + move.End, inProgress);
     }
 
     /// <summary>

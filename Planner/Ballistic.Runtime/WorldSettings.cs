@@ -3,7 +3,7 @@ using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Runtime;
 
-/// <summary>How a <see cref="JumpWorld"/> steps: tick rate, path-request budgets, background animation and replanning.</summary>
+/// <summary>How a <see cref="JumpWorld"/> steps: tick rate, path-request budgets, background animation, replanning and the moves paths may use.</summary>
 public sealed record WorldSettings
 {
     /// <summary>Ticks per second (Godot's physics rate is 60 by default).</summary>
@@ -50,6 +50,19 @@ public sealed record WorldSettings
     /// <summary>How close a stance's contacts must come to a target or spawn point.</summary>
     public EndpointTolerance Tolerance { get; init; } = new();
 
+    /// <summary>
+    /// Which moves paths may use (<see cref="QuerySettings.Locomotion"/>): <see cref="Locomotion.WalkAndJump"/> (the
+    /// default: walks where the ground allows, for characters that walk) or <see cref="Locomotion.Jump"/> (jumps only).
+    /// </summary>
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
+
+    /// <summary>
+    /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking
+    /// (<see cref="QuerySettings.JumpEffort"/>; <see cref="QuerySettings.DefaultJumpEffort"/> by default): a path jumps
+    /// only where that saves more time than this. Finite and not negative.
+    /// </summary>
+    public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
+
     /// <summary>Seconds per tick.</summary>
     public double TickSeconds => 1.0 / TickRate;
 
@@ -74,6 +87,11 @@ public sealed record WorldSettings
         if (!(ReplanDistance >= 0f) || !float.IsFinite(ReplanDistance) || !(AnimationFrameRate > 0f) || !float.IsFinite(AnimationFrameRate))
         {
             return "ReplanDistance must be finite and not negative, and AnimationFrameRate finite and positive";
+        }
+
+        if (!Enum.IsDefined(Locomotion) || !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort))
+        {
+            return $"Locomotion must be WalkAndJump or Jump (not {Locomotion}) and JumpEffort finite and not negative (not {JumpEffort} s)";
         }
 
         return null;

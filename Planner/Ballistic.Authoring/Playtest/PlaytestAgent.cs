@@ -12,4 +12,7 @@ public sealed record PlaytestAgent(int Index, Vector3 Spawn)
 
     /// <summary>The jumps it took off for, in order.</summary>
     public List<ExecutedJump> Jumps { get; } = [];
+
+    /// <summary>The walks it started, in order.</summary>
+    public List<ExecutedWalk> Walks { get; } = [];
 }

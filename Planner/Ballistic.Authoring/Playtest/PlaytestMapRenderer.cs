@@ -8,13 +8,17 @@ namespace Ballistic.Authoring.Playtest;
 
 /// <summary>
 /// The playtest seen from above: the level shaded by height, every executed jump as a line from takeoff to landing
-/// (blue), the spawn points (white), reached targets (green) and failed ones (red crosses, with a thin red line from
+/// (blue), every executed walk as its ground path dashed (green-blue), the spawn points (white), reached targets (green) and failed ones (red crosses, with a thin red line from
 /// where the agent stood). As an SVG (vector marks over the shaded level) and as a PNG (the same, rasterised).
 /// World X → right, world Z → down.
 /// </summary>
 public static class PlaytestMapRenderer
 {
     private const int Width = 900;
+
+    /// <summary>Pixels drawn, then pixels skipped, along a walk's dashed line in the PNG.</summary>
+    private const int DashOn = 5;
+    private const int DashOff = 3;
 
     /// <summary>The map as an SVG document.</summary>
     public static string Svg(PlaytestResult result)
@@ -27,7 +31,7 @@ public static class PlaytestMapRenderer
         svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height + 40}\" viewBox=\"0 0 {width} {height + 40}\" font-family=\"sans-serif\" font-size=\"13\">\n"));
         svg.Append(Invariant($"<rect width=\"{width}\" height=\"{height + 40}\" fill=\"#ffffff\"/>\n"));
         svg.Append(Invariant($"<text x=\"8\" y=\"18\">{Escape(Title(result))}</text>\n"));
-        svg.Append(Invariant($"<text x=\"8\" y=\"34\" fill=\"#555\">blue: jumps taken · white: spawns · green: targets reached · red ×: targets failed (line from where the agent stood)</text>\n"));
+        svg.Append(Invariant($"<text x=\"8\" y=\"34\" fill=\"#555\">blue: jumps taken · dashed teal: walks · white: spawns · green: targets reached · red ×: targets failed (line from where the agent stood)</text>\n"));
         svg.Append(Invariant($"<image x=\"0\" y=\"40\" width=\"{width}\" height=\"{height}\" href=\"data:image/png;base64,{png}\"/>\n"));
         svg.Append("<g transform=\"translate(0,40)\">\n");
         foreach (PlaytestAgent agent in result.Agents)
@@ -37,6 +41,12 @@ public static class PlaytestMapRenderer
                 Vector2 a = map(jump.Jump.Arc.Start);
                 Vector2 b = map(jump.Jump.Arc.End);
                 svg.Append(Invariant($"<line x1=\"{a.X:0.#}\" y1=\"{a.Y:0.#}\" x2=\"{b.X:0.#}\" y2=\"{b.Y:0.#}\" stroke=\"#1f5fbf\" stroke-opacity=\"0.55\" stroke-width=\"1.2\"/>\n"));
+            }
+
+            foreach (ExecutedWalk walk in agent.Walks)
+            {
+                string points = string.Join(" ", walk.Walk.Path.Select(p => map(p)).Select(p => Invariant($"{p.X:0.#},{p.Y:0.#}")));
+                svg.Append(Invariant($"<polyline class=\"walk\" points=\"{points}\" fill=\"none\" stroke=\"#138a72\" stroke-opacity=\"0.75\" stroke-width=\"1.4\" stroke-dasharray=\"{DashOn} {DashOff}\"/>\n"));
             }
         }
 
@@ -74,6 +84,11 @@ public static class PlaytestMapRenderer
             foreach (ExecutedJump jump in agent.Jumps)
             {
                 Line(rgb, width, height, map(jump.Jump.Arc.Start), map(jump.Jump.Arc.End), (31, 95, 191));
+            }
+
+            foreach (ExecutedWalk walk in agent.Walks)
+            {
+                DashedPolyline(rgb, width, height, walk.Walk.Path.Select(p => map(p)).ToList(), (19, 138, 114));
             }
         }
 
@@ -118,6 +133,25 @@ public static class PlaytestMapRenderer
         }
     }
 
+    /// <summary>A polyline drawn <see cref="DashOn"/> pixels on, <see cref="DashOff"/> off, the pattern running on across its corners.</summary>
+    private static void DashedPolyline(byte[] rgb, int width, int height, List<Vector2> points, (byte R, byte G, byte B) color)
+    {
+        int along = 0;
+        for (int s = 1; s < points.Count; s++)
+        {
+            Vector2 a = points[s - 1];
+            Vector2 b = points[s];
+            int steps = Math.Max(1, (int)MathF.Ceiling(Vector2.Distance(a, b)));
+            for (int i = 0; i < steps; i++, along++)
+            {
+                if (along % (DashOn + DashOff) < DashOn)
+                {
+                    Set(rgb, width, height, Vector2.Lerp(a, b, (float)i / steps), color);
+                }
+            }
+        }
+    }
+
     private static void Dot(byte[] rgb, int width, int height, Vector2 p, int radius, (byte R, byte G, byte B) color)
     {
         for (int dy = -radius; dy <= radius; dy++)
@@ -146,7 +180,7 @@ public static class PlaytestMapRenderer
     }
 
     private static string Title(PlaytestResult result) =>
-        Invariant($"{result.Kind.Name}: {result.Agents.Count} agents, {result.Settings.Seconds:0.#} s — {result.TargetsReached} targets reached, {result.TargetsFailed} failed, {result.JumpsTaken} jumps");
+        Invariant($"{result.Kind.Name}: {result.Agents.Count} agents, {result.Settings.Seconds:0.#} s — {result.TargetsReached} targets reached, {result.TargetsFailed} failed, {result.JumpsTaken} jumps, {result.WalksTaken} walks");
 
     private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
 

@@ -2,19 +2,29 @@ using System.Numerics;
 using System.Text.Json;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Authoring.Playtest;
 
 /// <summary>
-/// Writes a playtest as the <c>ballistic.playtest/1</c> JSON report. The <c>level</c> and <c>character</c> blocks
+/// Writes a playtest as the <c>ballistic.playtest/2</c> JSON report. The <c>level</c> and <c>character</c> blocks
 /// and every executed jump (<c>agents[].jumps[]</c>) have exactly the form of a plan report's
 /// (<see cref="PlanReportWriter"/>), so the checkers of plan reports verify them as they are. Positions are world
 /// metres (Y up), velocities m/s, times seconds (world time from the start of the run).
 /// </summary>
+/// <remarks>
+/// Version 2 (walking) adds to version 1: <c>settings.locomotion</c> ("walk_and_jump" or "jump") and
+/// <c>settings.jumpEffort</c> (s); <c>summary.walksTaken</c> and <c>summary.walkedMetres</c>; and per agent a
+/// <c>walks</c> array, each walk an object with <c>startTime</c> (s), <c>from</c> and <c>to</c> (<c>node</c>: the stance's id,
+/// a roadmap node's, or −1 or an id past the roadmap's last for a stance placed off it; <c>position</c>: trunk centre), <c>via</c> (node ids passed through), <c>speed</c>
+/// (m/s), <c>length</c> (m), <c>duration</c> (s) and <c>path</c> (the ground points, [x, y, z] each). Everything of
+/// version 1 is unchanged.
+/// </remarks>
 public static class PlaytestReportWriter
 {
     /// <summary>The schema name written in every report.</summary>
-    public const string Schema = "ballistic.playtest/1";
+    public const string Schema = "ballistic.playtest/2";
 
     /// <summary>The report as indented UTF-8 JSON.</summary>
     /// <param name="result">The playtest.</param>
@@ -37,6 +47,8 @@ public static class PlaytestReportWriter
             w.WriteNumber("seconds", result.Settings.Seconds);
             w.WriteNumber("seed", result.Settings.Seed);
             w.WriteNumber("tickRate", result.Settings.TickRate);
+            w.WriteString("locomotion", result.Settings.Locomotion == Locomotion.Jump ? "jump" : "walk_and_jump");
+            w.WriteNumber("jumpEffort", result.Settings.JumpEffort);
             w.WriteEndObject();
 
             w.WriteStartObject("roadmap");
@@ -55,6 +67,8 @@ public static class PlaytestReportWriter
             w.WriteNumber("targetsReached", result.TargetsReached);
             w.WriteNumber("targetsFailed", result.TargetsFailed);
             w.WriteNumber("jumpsTaken", result.JumpsTaken);
+            w.WriteNumber("walksTaken", result.WalksTaken);
+            w.WriteNumber("walkedMetres", Math.Round(result.WalkedMetres, 3));
             w.WriteStartObject("reachability");
             w.WriteNumber("targetsReachedShare", result.TargetsConcluded == 0 ? 0 : Math.Round((double)result.TargetsReached / result.TargetsConcluded, 4));
             w.WriteNumber("pairsSampled", result.PairsSampled);
@@ -126,6 +140,13 @@ public static class PlaytestReportWriter
                 }
 
                 w.WriteEndArray();
+                w.WriteStartArray("walks");
+                foreach (ExecutedWalk walk in agent.Walks)
+                {
+                    WriteWalk(w, walk);
+                }
+
+                w.WriteEndArray();
                 w.WriteEndObject();
             }
 
@@ -134,6 +155,46 @@ public static class PlaytestReportWriter
         }
 
         return stream.ToArray();
+    }
+
+    /// <summary>Writes one executed walk as an object of an agent's <c>walks</c> array.</summary>
+    private static void WriteWalk(Utf8JsonWriter w, ExecutedWalk executed)
+    {
+        Walk walk = executed.Walk;
+        w.WriteStartObject();
+        w.WriteNumber("startTime", Math.Round(executed.StartTime, 6));
+        WriteStance(w, "from", walk.From);
+        WriteStance(w, "to", walk.To);
+        w.WriteStartArray("via");
+        foreach (RoadmapNode node in walk.Via)
+        {
+            w.WriteNumberValue(node.Id);
+        }
+
+        w.WriteEndArray();
+        w.WriteNumber("speed", walk.Speed);
+        w.WriteNumber("length", walk.Length);
+        w.WriteNumber("duration", walk.Duration);
+        w.WriteStartArray("path");
+        foreach (Vector3 p in walk.Path)
+        {
+            w.WriteStartArray();
+            w.WriteNumberValue(p.X);
+            w.WriteNumberValue(p.Y);
+            w.WriteNumberValue(p.Z);
+            w.WriteEndArray();
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    private static void WriteStance(Utf8JsonWriter w, string name, RoadmapNode node)
+    {
+        w.WriteStartObject(name);
+        w.WriteNumber("node", node.Id);
+        PlanReportWriter.WriteVector(w, "position", node.Pose.Position);
+        w.WriteEndObject();
     }
 
     private static string StatusName(PlaytestTarget target) => target.FailureStatus is { } status ? PlanReportWriter.StatusName(status) : "none";

@@ -2,7 +2,7 @@ using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Authoring.Playtest;
 
-/// <summary>The outcome of a playtest: every agent's targets and jumps, and the roadmap's connectivity.</summary>
+/// <summary>The outcome of a playtest: every agent's targets, jumps and walks, and the roadmap's connectivity.</summary>
 /// <param name="Settings">The settings run.</param>
 /// <param name="Kind">The character kind (its scene, roadmap and animator).</param>
 /// <param name="Agents">Every agent, in spawn order.</param>
@@ -24,6 +24,12 @@ public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kin
 
     /// <summary>Jumps taken by all agents.</summary>
     public int JumpsTaken => Agents.Sum(a => a.Jumps.Count);
+
+    /// <summary>Walks started by all agents.</summary>
+    public int WalksTaken => Agents.Sum(a => a.Walks.Count);
+
+    /// <summary>Length of the ground paths of all walks started, metres.</summary>
+    public double WalkedMetres => Agents.Sum(a => a.Walks.Sum(w => (double)w.Walk.Length));
 
     /// <summary>Seconds from setting each reached target to arriving, in increasing order.</summary>
     public IReadOnlyList<double> TimesToReach => [.. Agents.SelectMany(a => a.Targets).Where(t => t.Reached).Select(t => t.ReachedAt!.Value - t.SetAt).Order()];

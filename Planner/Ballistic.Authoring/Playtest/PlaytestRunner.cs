@@ -11,7 +11,7 @@ namespace Ballistic.Authoring.Playtest;
 
 /// <summary>
 /// A headless playtest over the runtime: agents spawn on random roadmap stances, are sent to random stances, and
-/// navigate with the runtime's systems at a fixed tick rate; each arrival or failure sends the agent to a new target.
+/// navigate (jumping and walking) with the runtime's systems at a fixed tick rate; each arrival or failure sends the agent to a new target.
 /// Deterministic for a seed, whatever the thread count.
 /// </summary>
 public static class PlaytestRunner
@@ -39,7 +39,13 @@ public static class PlaytestRunner
 
         var clock = Stopwatch.StartNew();
         var random = new Random(settings.Seed);
-        using var world = new JumpWorld(kind.Scene.Level, new WorldSettings { TickRate = settings.TickRate, AnimationThreads = settings.AnimationThreads });
+        using var world = new JumpWorld(kind.Scene.Level, new WorldSettings
+        {
+            TickRate = settings.TickRate,
+            AnimationThreads = settings.AnimationThreads,
+            Locomotion = settings.Locomotion,
+            JumpEffort = settings.JumpEffort,
+        });
         KindHandle handle = world.AddKind(kind).Kind;
 
         // Spawn on random stances the whole body can stand on.
@@ -94,6 +100,9 @@ public static class PlaytestRunner
                     case JumpEventKind.JumpStarted:
                         PathMove move = paths[e.Agent].Moves[e.Jump];
                         agent.Jumps.Add(new ExecutedJump(index, e.Time, new Jump(move.From, move.To, move.Arc)));
+                        break;
+                    case JumpEventKind.WalkStarted:
+                        agent.Walks.Add(new ExecutedWalk(index, e.Time, paths[e.Agent].Moves[e.Jump].Walk!));
                         break;
                     case JumpEventKind.TargetReached:
                         target.ReachedAt = e.Time;

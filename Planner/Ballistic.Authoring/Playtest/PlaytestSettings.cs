@@ -1,3 +1,5 @@
+using Ballistic.Planner.Query;
+
 namespace Ballistic.Authoring.Playtest;
 
 /// <summary>A headless playtest: how many agents, for how long, from which seed.</summary>
@@ -21,6 +23,12 @@ public sealed record PlaytestSettings
     /// <summary>Threads solving animations in the background (the results do not depend on it).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
+    /// <summary>Which moves paths may use (<see cref="Runtime.WorldSettings.Locomotion"/>): walks and jumps by default.</summary>
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
+
+    /// <summary>What a jump costs beyond its flight time, in seconds of walking (<see cref="Runtime.WorldSettings.JumpEffort"/>).</summary>
+    public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
+
     /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>
     public string? Problem() =>
         Agents is < 1 or > 100_000 ? $"--agents must be 1–100000, not {Agents}"
@@ -28,5 +36,7 @@ public sealed record PlaytestSettings
         : TickRate is < 1 or > 1_000 ? $"the tick rate must be 1–1000, not {TickRate}"
         : ReachabilityPairs < 0 ? "the reachability pair count must not be negative"
         : AnimationThreads < 0 ? "the animation thread count must not be negative"
+        : !Enum.IsDefined(Locomotion) ? $"the locomotion must be WalkAndJump or Jump, not {Locomotion}"
+        : !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort) ? $"the jump effort must be finite and not negative, not {JumpEffort} s"
         : null;
 }

@@ -27,7 +27,7 @@ internal sealed class AgentStore
     public Vector3[] Target = [];
     public bool[] HasTarget = [];
 
-    /// <summary>The path followed, its start on the world clock, the event cursor (2i: takeoff of jump i, 2i+1: its landing).</summary>
+    /// <summary>The path followed, its start on the world clock, the event cursor (2i: start of move i, its takeoff or first step; 2i+1: its end, a landing or arrival).</summary>
     public AgentPath?[] Path = [];
     public double[] PathStart = [];
     public int[] Cursor = [];

@@ -18,6 +18,15 @@ public sealed record DebugDrawSettings
     /// <summary>The length an arc segment aims at, metres (fewer segments for short arcs, never more than <see cref="MaxSegmentsPerArc"/>); 0.25 m by default.</summary>
     public float SegmentLength { get; init; } = 0.25f;
 
+    /// <summary>
+    /// Length of the dashes a walk is drawn with, metres, with gaps as long between them (a walk reads as dashed
+    /// beside the solid arcs); 0 draws walks as solid polylines of <see cref="SegmentLength"/> segments. 0.15 m by default.
+    /// </summary>
+    public float WalkDashLength { get; init; } = 0.15f;
+
+    /// <summary>The most segments (dashes) a walk is drawn with; a longer walk gets longer dashes. 512 by default.</summary>
+    public int MaxSegmentsPerWalk { get; init; } = 512;
+
     /// <summary>Length of a friction cone's rays, metres; 0.6 m by default.</summary>
     public float ConeLength { get; init; } = 0.6f;
 
@@ -36,6 +45,8 @@ public sealed record DebugDrawSettings
         : !(SegmentLength > 0f && float.IsFinite(SegmentLength)) ? $"the segment length must be positive and finite, not {SegmentLength}"
         : !(ConeLength > 0f && float.IsFinite(ConeLength)) ? $"the cone length must be positive and finite, not {ConeLength}"
         : ConeRays is < 3 or > 256 ? $"the cone rays must lie in [3, 256], not {ConeRays}"
+        : !(WalkDashLength >= 0f && float.IsFinite(WalkDashLength)) ? $"the walk dash length must be finite and not negative, not {WalkDashLength}"
+        : MaxSegmentsPerWalk is < 1 or > 65_536 ? $"the segments per walk must lie in [1, 65536], not {MaxSegmentsPerWalk}"
         : Colors is null ? "the palette is missing"
         : null;
 }

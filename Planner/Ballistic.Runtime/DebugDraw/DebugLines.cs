@@ -94,6 +94,44 @@ public sealed class DebugLines
     }
 
     /// <summary>
+    /// A walk as the path of its trunk centre (<see cref="Walk.PoseAtDistance"/>, from the first stance's trunk centre
+    /// to the last's), dashed: the path cut into an odd number of equal lengths of about
+    /// <see cref="DebugDrawSettings.WalkDashLength"/>, every other one drawn as a straight segment between its ends,
+    /// the first and the last included (at most <see cref="DebugDrawSettings.MaxSegmentsPerWalk"/> dashes). With a
+    /// dash length of 0, a solid polyline of about <see cref="DebugDrawSettings.SegmentLength"/> segments. Every vertex
+    /// lies exactly on the trunk's path.
+    /// </summary>
+    public DebugLineRange AddWalk(Walk walk, DebugColor color, DebugDrawSettings? settings = null)
+    {
+        ArgumentNullException.ThrowIfNull(walk);
+        settings = Checked(settings);
+        int first = _segments;
+        float length = walk.Length;
+        if (settings.WalkDashLength <= 0f)
+        {
+            int n = Pieces(length, settings.SegmentLength, settings.MaxSegmentsPerWalk);
+            Vector3 previous = walk.PoseAtDistance(0f).Position;
+            for (int k = 1; k <= n; k++)
+            {
+                Vector3 next = walk.PoseAtDistance(k == n ? length : length * k / n).Position;
+                AddSegment(previous, next, color);
+                previous = next;
+            }
+        }
+        else
+        {
+            int pieces = Pieces(length, settings.WalkDashLength, (2 * settings.MaxSegmentsPerWalk) - 1);
+            pieces |= 1; // odd (at most the odd cap): dashes at both ends
+            for (int k = 0; k < pieces; k += 2)
+            {
+                AddSegment(walk.PoseAtDistance(length * k / pieces).Position, walk.PoseAtDistance(k + 1 == pieces ? length : length * (k + 1) / pieces).Position, color);
+            }
+        }
+
+        return new DebugLineRange(first, _segments - first);
+    }
+
+    /// <summary>
     /// A friction cone as a fan: its axis, then <see cref="DebugDrawSettings.ConeRays"/> rays from the apex, evenly
     /// spaced around the axis and each at the cone's half-angle atan μ from it, then the ring joining the rays' ends.
     /// Every stroke is <see cref="DebugDrawSettings.ConeLength"/> long from the apex (1 + 2 × rays segments).
@@ -173,7 +211,10 @@ public sealed class DebugLines
         return new DebugLineRange(first, _segments - first);
     }
 
-    /// <summary>The arcs of an agent's path from move <paramref name="firstMove"/> on (the jump it is in, or its next), in the palette's path colour.</summary>
+    /// <summary>
+    /// The moves of an agent's path from move <paramref name="firstMove"/> on (the move it is in, or its next), in the
+    /// palette's path colour: each jump's arc (<see cref="AddArc"/>) and each walk dashed (<see cref="AddWalk"/>).
+    /// </summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="firstMove"/> is negative.</exception>
     public DebugLineRange AddPath(AgentPath path, int firstMove = 0, DebugDrawSettings? settings = null)
     {
@@ -184,7 +225,14 @@ public sealed class DebugLines
         IReadOnlyList<PathMove> moves = path.Moves;
         for (int m = firstMove; m < moves.Count; m++)
         {
-            AddArc(moves[m].Arc, settings.Colors.Path, settings);
+            if (moves[m].Walk is { } walk)
+            {
+                AddWalk(walk, settings.Colors.Path, settings);
+            }
+            else
+            {
+                AddArc(moves[m].Arc, settings.Colors.Path, settings);
+            }
         }
 
         return new DebugLineRange(first, _segments - first);
@@ -192,8 +240,8 @@ public sealed class DebugLines
 
     /// <summary>
     /// The takeoff and landing friction cones of an agent's path from move <paramref name="firstMove"/> on: for each
-    /// move its takeoff stance's cone, then its landing stance's, each at the stance's contact centre
-    /// (<see cref="ContactCentre"/>), in the palette's cone colour.
+    /// jump its takeoff stance's cone, then its landing stance's, each at the stance's contact centre
+    /// (<see cref="ContactCentre"/>), in the palette's cone colour. Walks have none.
     /// </summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="firstMove"/> is negative.</exception>
     public DebugLineRange AddPathCones(AgentPath path, int firstMove = 0, DebugDrawSettings? settings = null)
@@ -206,6 +254,11 @@ public sealed class DebugLines
         for (int m = firstMove; m < moves.Count; m++)
         {
             PathMove move = moves[m];
+            if (move.Kind != MoveKind.Jump)
+            {
+                continue;
+            }
+
             AddFrictionCone(ContactCentre(move.From), move.From.Cone, settings.Colors.Cones, settings);
             AddFrictionCone(ContactCentre(move.To), move.To.Cone, settings.Colors.Cones, settings);
         }
@@ -249,6 +302,13 @@ public sealed class DebugLines
         ArgumentNullException.ThrowIfNull(settings);
         float wanted = arc.ArcLength / settings.SegmentLength;
         return float.IsFinite(wanted) ? Math.Clamp((int)MathF.Ceiling(wanted), 1, settings.MaxSegmentsPerArc) : 1;
+    }
+
+    /// <summary>Pieces of about <paramref name="piece"/> metres in <paramref name="length"/> metres: rounded up, between 1 and <paramref name="max"/>.</summary>
+    private static int Pieces(float length, float piece, int max)
+    {
+        float wanted = length / piece;
+        return float.IsFinite(wanted) ? Math.Clamp((int)MathF.Ceiling(wanted), 1, max) : 1;
     }
 
     /// <summary>

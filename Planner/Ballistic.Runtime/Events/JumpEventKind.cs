@@ -6,7 +6,7 @@ public enum JumpEventKind
     /// <summary>A path to the target was found and animated; the agent starts following it this tick.</summary>
     PathFound,
 
-    /// <summary>No path: <see cref="JumpEvent.Reason"/> says why (target off the level, no sequence of jumps, an animation that could not be performed…).</summary>
+    /// <summary>No path: <see cref="JumpEvent.Reason"/> says why (target off the level, no sequence of moves, an animation that could not be performed…).</summary>
     PathFailed,
 
     /// <summary>A jump took off: takeoff and landing points, takeoff velocity and flight time are in the event.</summary>
@@ -20,4 +20,10 @@ public enum JumpEventKind
 
     /// <summary>The agent was removed; <see cref="JumpEvent.Reason"/> says in which state (e.g. in mid-flight).</summary>
     Removed,
+
+    /// <summary>A walk started: its index on the path, the trunk centres at its start and end and its duration are in the event.</summary>
+    WalkStarted,
+
+    /// <summary>A walk ended on its last stance.</summary>
+    WalkFinished,
 }

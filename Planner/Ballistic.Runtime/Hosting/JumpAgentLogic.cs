@@ -15,8 +15,9 @@ namespace Ballistic.Runtime.Hosting;
 /// </summary>
 /// <remarks>
 /// Positions are body points in world metres, Y up: the ground reference of the character (the origin of its Godot
-/// body), which is the centre of the contacts of the stance it stands on and, in a jump, flies a parabola from the
-/// takeoff stance's contact centre to the landing one's (see <see cref="BodyPosition"/>). The trunk's own pose is
+/// body), which is the centre of the contacts of the stance it stands on; in a jump, it flies a parabola from the
+/// takeoff stance's contact centre to the landing one's, and in a walk it moves along the walk's ground path from the
+/// first stance's contact centre to the last one's (see <see cref="BodyPosition"/>). The trunk's own pose is
 /// <see cref="RootPose"/>. Times are world seconds. Not thread-safe: the game loop's thread only.
 /// </remarks>
 public sealed class JumpAgentLogic
@@ -111,15 +112,20 @@ public sealed class JumpAgentLogic
         set => _step = float.IsFinite(value) && value >= 0.01f ? value : throw new ArgumentOutOfRangeException(nameof(PathSampleStep), value, $"PathSampleStep must be finite and at least 0.01 m, not {value} m.");
     }
 
-    /// <summary>The path the agent follows (its jumps and whole-body animation); <c>null</c> when it has none.</summary>
+    /// <summary>The path the agent follows (its jumps, walks and whole-body animation); <c>null</c> when it has none.</summary>
     public AgentPath? CurrentPath => _path;
 
-    /// <summary>Index on <see cref="CurrentPath"/> of the jump in progress or the next one; 0 without a path.</summary>
-    public int CurrentMove => TryGetCurrentJump(out JumpPreview current) ? current.Index : TryGetNextJump(out JumpPreview next) ? next.Index : 0;
+    /// <summary>
+    /// Index on <see cref="CurrentPath"/> of the move in progress (a jump or a walk) or, standing between two moves, of
+    /// the next one (<see cref="JumpWorld.GetMoveIndex"/>); 0 without a path.
+    /// </summary>
+    public int CurrentMove => _host.World is { } world && _path is not null && ReferenceEquals(world.GetPath(_host.GetWorldAgent(Agent)), _path)
+        ? Math.Max(0, world.GetMoveIndex(_host.GetWorldAgent(Agent)))
+        : 0;
 
     /// <summary>
-    /// A short state for a label: "waiting for a roadmap", "idle", "stance", "takeoff", "flight", "landing",
-    /// "planning", "unplaced: …" or "failed: …" (the last failure toward the current target).
+    /// A short state for a label: "waiting for a roadmap", "idle", "stance", "walking", "takeoff", "flight",
+    /// "landing", "planning", "arrived", "unplaced: …" or "failed: …" (the last failure toward the current target).
     /// </summary>
     public string DescribeState()
     {
@@ -149,6 +155,7 @@ public sealed class JumpAgentLogic
         {
             AgentState.Idle => _hasTarget && _reached ? "arrived" : "idle",
             AgentState.Stance => "stance",
+            AgentState.Walking => "walking",
             AgentState.Takeoff => "takeoff",
             AgentState.Flight => "flight",
             AgentState.Landing => "landing",
@@ -159,18 +166,20 @@ public sealed class JumpAgentLogic
     /// <summary>Why the last path toward the current target failed; <c>null</c> when it did not.</summary>
     public string? LastFailure { get; private set; }
 
-    /// <summary>The trunk's pose this tick (centre and orientation, world frame): exactly on the arc in flight. Default until the agent is on a roadmap.</summary>
+    /// <summary>The trunk's pose this tick (centre and orientation, world frame): exactly on the arc in flight and the walk's pose while walking. Default until the agent is on a roadmap.</summary>
     public RootPose RootPose { get; private set; }
 
     /// <summary>
     /// The body point this tick, world metres: where the node puts its parent (<see cref="AgentMotionMode.MoveParent"/>)
     /// or where the user's body should be (<see cref="AgentMotionMode.ReportOnly"/>). On a stance, the centre of its
     /// contacts; in a jump, the trunk centre minus an offset going linearly in time from (trunk − contact centre) at
-    /// the takeoff stance to that at the landing stance. Off the roadmap, the position registered or warped at.
+    /// the takeoff stance to that at the landing stance; in a walk, the point of the walk's ground path reached at its
+    /// speed (shifted, if the path's ends are not the stances' contact centres, by an offset going linearly along it).
+    /// Off the roadmap, the position registered or warped at.
     /// </summary>
     public Vector3 BodyPosition { get; private set; }
 
-    /// <summary>The body point's velocity this tick, m/s: zero on a stance; in a jump, a parabola's under the world's gravity.</summary>
+    /// <summary>The body point's velocity this tick, m/s: zero on a stance; in a jump, a parabola's under the world's gravity; in a walk, the walking speed along the ground path.</summary>
     public Vector3 BodyVelocity { get; private set; }
 
     /// <summary>The body's heading this tick: a rotation about +Y turning +Z (the model's front) toward the trunk's forward axis projected on the ground.</summary>
@@ -301,9 +310,9 @@ public sealed class JumpAgentLogic
 
     /// <summary>
     /// The path being followed (or the last one followed to the current target), as world points of the body: from
-    /// the contact centre the agent stood on when it started, each jump's parabola sampled at most
-    /// <see cref="PathSampleStep"/> apart, its takeoff and landing points included, to the contact centre of the
-    /// last stance (within the runtime's tolerance of the target). Empty before the first path, after a failure, a
+    /// the contact centre the agent stood on when it started, each jump's parabola and each walk's ground path (the
+    /// body points of <see cref="BodyPosition"/>) sampled at most <see cref="PathSampleStep"/> apart, every stance's
+    /// contact centre included, to the contact centre of the last stance (within the runtime's tolerance of the target). Empty before the first path, after a failure, a
     /// warp or a new region roadmap. The list is reused: copy it to keep it.
     /// </summary>
     public IReadOnlyList<Vector3> GetCurrentPath()
@@ -352,9 +361,18 @@ public sealed class JumpAgentLogic
     /// follow (<see cref="PathChangedSignal"/>, <see cref="JumpStartedSignal"/>, <see cref="LandedSignal"/>,
     /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>).
     /// </summary>
-    public RuntimeResult PerformJump(int edge)
+    public RuntimeResult PerformJump(int edge) => Performed(_host.PerformJump(Agent, edge));
+
+    /// <summary>
+    /// Performs exactly <paramref name="moves"/> (jumps and walks, with no search), as
+    /// <see cref="JumpNavigationHost.PerformMoves"/>: the agent stands on the first move's stance at once; the last
+    /// stance's contact centre becomes the target and the usual signals follow. For tests and tools.
+    /// </summary>
+    internal RuntimeResult PerformMoves(IReadOnlyList<Planner.Roadmaps.Move> moves) => Performed(_host.PerformMoves(Agent, moves));
+
+    /// <summary>After the host performs given moves: the agent navigates toward their end.</summary>
+    private RuntimeResult Performed(RuntimeResult result)
     {
-        RuntimeResult result = _host.PerformJump(Agent, edge);
         if (result.Ok)
         {
             _target = _host.GetTarget(Agent) ?? _target;
@@ -419,7 +437,8 @@ public sealed class JumpAgentLogic
 
     /// <summary>
     /// Call once per physics tick after the server stepped: drains the agent's events into signals, in order
-    /// (<see cref="PathChangedSignal"/>, <see cref="JumpStartedSignal"/>, <see cref="LandedSignal"/>, …,
+    /// (<see cref="PathChangedSignal"/>, then per move <see cref="JumpStartedSignal"/> and <see cref="LandedSignal"/>
+    /// or <see cref="WalkStartedSignal"/> and <see cref="WalkFinishedSignal"/>, …,
     /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>; <see cref="PathFailedSignal"/> then
     /// <see cref="NavigationFinishedSignal"/> on failure) and updates <see cref="RootPose"/>, <see cref="BodyPosition"/>,
     /// <see cref="BodyVelocity"/> and <see cref="BodyRotation"/>. The list is reused: valid until the next call.
@@ -469,6 +488,13 @@ public sealed class JumpAgentLogic
                 break;
             case JumpEventKind.Landed when e.Path is { } path:
                 _signals.Add(new LandedSignal(j.Time, Stances.ContactCentre(path.Moves[j.Jump].To)));
+                break;
+            case JumpEventKind.WalkStarted when e.Path is { } path:
+                PathMove walk = path.Moves[j.Jump];
+                _signals.Add(new WalkStartedSignal(j.Time, Stances.ContactCentre(walk.From), Stances.ContactCentre(walk.To), walk.Walk!.Duration, walk.Walk.Speed, j.Jump));
+                break;
+            case JumpEventKind.WalkFinished when e.Path is { } path:
+                _signals.Add(new WalkFinishedSignal(j.Time, Stances.ContactCentre(path.Moves[j.Jump].To), j.Jump));
                 break;
             case JumpEventKind.TargetReached:
                 if (_navigating)
@@ -529,6 +555,12 @@ public sealed class JumpAgentLogic
             BodyPosition = position;
             BodyVelocity = velocity;
         }
+        else if (world.TryGetCurrentWalk(agent, out WalkInfo walk) && world.GetPath(agent) is { } walking)
+        {
+            (Vector3 position, Vector3 velocity) = Stances.InWalk(walking.Moves[walk.Index], (float)(world.Time - walk.StartTime));
+            BodyPosition = position;
+            BodyVelocity = velocity;
+        }
         else if (Stances.Standing(world, agent) is { } stance)
         {
             BodyPosition = Stances.ContactCentre(stance);
@@ -552,29 +584,42 @@ public sealed class JumpAgentLogic
         _points.Add(Stances.ContactCentre(path.Moves[0].From));
         foreach (PathMove move in path.Moves)
         {
-            float flight = move.Arc.FlightTime;
-            Vector3 v0 = Stances.BodyVelocity(move);
-            Vector3 v1 = v0 - new Vector3(0f, move.Arc.Gravity * flight, 0f);
-
-            // The body point's speed is greatest at an end of the flight (|v0 − g·t| is convex in t): n samples
-            // uniform in time are then at most step apart.
-            float travel = MathF.Max(v0.Length(), v1.Length()) * flight;
-            int n = Math.Max(1, (int)MathF.Ceiling(travel / _step));
-            for (int k = 1; k < n; k++)
+            if (move.Walk is { } walk)
             {
-                _points.Add(Stances.InJump(move, flight * k / n).Position);
+                // Uniform in distance: a step of the ground path plus the offset's share is at most a step apart.
+                Vector3 shift = (Stances.ContactCentre(move.To) - walk.Path[^1]) - (Stances.ContactCentre(move.From) - walk.Path[0]);
+                int n = Math.Max(1, (int)MathF.Ceiling((walk.Length + shift.Length()) / _step));
+                for (int k = 1; k < n; k++)
+                {
+                    _points.Add(Stances.InWalk(move, walk.Duration * k / n).Position);
+                }
+            }
+            else
+            {
+                float flight = move.Arc.FlightTime;
+                Vector3 v0 = Stances.BodyVelocity(move);
+                Vector3 v1 = v0 - new Vector3(0f, move.Arc.Gravity * flight, 0f);
+
+                // The body point's speed is greatest at an end of the flight (|v0 − g·t| is convex in t): n samples
+                // uniform in time are then at most step apart.
+                float travel = MathF.Max(v0.Length(), v1.Length()) * flight;
+                int n = Math.Max(1, (int)MathF.Ceiling(travel / _step));
+                for (int k = 1; k < n; k++)
+                {
+                    _points.Add(Stances.InJump(move, flight * k / n).Position);
+                }
             }
 
-            // The landing point itself (the arc meets it within millimetres): bridged if ever farther than a step.
-            Vector3 landing = Stances.ContactCentre(move.To);
+            // The end point itself (the arc meets it within millimetres): bridged if ever farther than a step.
+            Vector3 end = Stances.ContactCentre(move.To);
             Vector3 last = _points[^1];
-            int bridge = (int)MathF.Ceiling(Vector3.Distance(last, landing) / _step);
+            int bridge = (int)MathF.Ceiling(Vector3.Distance(last, end) / _step);
             for (int k = 1; k < bridge; k++)
             {
-                _points.Add(Vector3.Lerp(last, landing, (float)k / bridge));
+                _points.Add(Vector3.Lerp(last, end, (float)k / bridge));
             }
 
-            _points.Add(landing);
+            _points.Add(end);
         }
     }
 

@@ -488,6 +488,33 @@ public sealed class JumpNavigationHost : IDisposable
         return result;
     }
 
+    /// <summary>
+    /// Performs exactly <paramref name="moves"/> (jumps and walks, with no search), as <see cref="JumpWorld.PerformMoves"/>:
+    /// the agent stands on the first move's stance at once and its target becomes the last stance's contact centre.
+    /// For tests and tools. Fails for an agent that is not in the world.
+    /// </summary>
+    internal RuntimeResult PerformMoves(HostAgentHandle agent, IReadOnlyList<Move> moves)
+    {
+        if (Usable(agent, out AgentRecord? a) is { } refused)
+        {
+            return refused;
+        }
+
+        if (a!.State != HostAgentState.Active)
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidPosition, $"{agent} is not on a roadmap: {a.Reason}");
+        }
+
+        RuntimeResult result = _world!.PerformMoves(a.World, moves);
+        if (result.Ok)
+        {
+            a.Target = _world.GetTarget(a.World) ?? a.Target;
+            a.HasTarget = true;
+        }
+
+        return result;
+    }
+
     /// <summary>Takes the oldest undelivered event of the agent; false when its queue is empty (or the agent unknown). Allocates nothing.</summary>
     public bool TryDequeueEvent(HostAgentHandle agent, out AgentEvent e)
     {
@@ -650,7 +677,8 @@ public sealed class JumpNavigationHost : IDisposable
                 break;
         }
 
-        bool onPath = e.Kind is JumpEventKind.PathFound or JumpEventKind.JumpStarted or JumpEventKind.Landed || (e.Kind == JumpEventKind.TargetReached && e.Jump >= 0);
+        bool onPath = e.Kind is JumpEventKind.PathFound or JumpEventKind.JumpStarted or JumpEventKind.Landed or JumpEventKind.WalkStarted or JumpEventKind.WalkFinished
+            || (e.Kind == JumpEventKind.TargetReached && e.Jump >= 0);
         a.Queue.Enqueue(new AgentEvent(e, onPath ? a.Path : null));
         if (e.Kind == JumpEventKind.TargetReached)
         {

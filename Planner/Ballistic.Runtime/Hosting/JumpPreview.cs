@@ -7,7 +7,7 @@ namespace Ballistic.Runtime.Hosting;
 /// A jump of an agent's path described for its node (<see cref="JumpAgentLogic.TryGetNextJump"/>): body points
 /// (contact centres of the takeoff and landing stances) and the exact trunk arc. World metres, Y up; world seconds.
 /// </summary>
-/// <param name="Index">Index of the jump on the agent's path.</param>
+/// <param name="Index">Index of the jump among the moves of the agent's path (jumps and walks counted together).</param>
 /// <param name="TakeoffPoint">Centre of the takeoff stance's contacts, world metres.</param>
 /// <param name="LandingPoint">Centre of the landing stance's contacts, world metres.</param>
 /// <param name="TakeoffVelocity">Takeoff velocity of the body point, m/s: it flies a parabola under gravity from <paramref name="TakeoffPoint"/> to <paramref name="LandingPoint"/>.</param>

@@ -11,7 +11,10 @@ namespace Ballistic.Runtime.Hosting;
 /// Where an agent stands and where its body point is. The body point is the ground reference of a character (the
 /// origin of its Godot body): on a stance, the centre of its contacts; in a jump, the trunk's arc shifted by an
 /// offset that goes linearly in time from the takeoff stance's (trunk − contact centre) to the landing stance's, so
-/// that it leaves the takeoff contact centre, lands on the landing one and flies a parabola under the same gravity.
+/// that it leaves the takeoff contact centre, lands on the landing one and flies a parabola under the same gravity;
+/// in a walk, the point of the walk's ground path shifted by an offset that goes linearly along it from the first
+/// stance's (contact centre − first path point) to the last's, so that it leaves the first stance's contact centre and
+/// arrives on the last one's (the ground path itself when it runs between the contact centres, as planned walks do).
 /// </summary>
 internal static class Stances
 {
@@ -29,8 +32,9 @@ internal static class Stances
     }
 
     /// <summary>
-    /// The stance the agent stands on, or, following a path, the one it stands on next: the landing of the jump it is
-    /// in, or the takeoff stance between two jumps. <c>null</c> for an unknown agent.
+    /// The stance the agent stands on, or, following a path, the one it stands on next: the end of the move it is in
+    /// (a jump's landing, a walk's last stance), or the first stance of the next move between two moves. <c>null</c>
+    /// for an unknown agent.
     /// </summary>
     public static RoadmapNode? Standing(JumpWorld world, AgentHandle agent)
     {
@@ -86,5 +90,39 @@ internal static class Stances
         Vector3 v = BodyVelocity(move);
         var g = new Vector3(0f, -move.Arc.Gravity, 0f);
         return (ContactCentre(move.From) + (v * t) + (0.5f * t * t * g), v + (g * t));
+    }
+
+    /// <summary>
+    /// The body point and its velocity <paramref name="t"/> seconds after the start of the walk of
+    /// <paramref name="move"/> (clamped to the walk): the walk's ground point <see cref="Walk.PointAt"/> at
+    /// <see cref="Walk.DistanceAt"/> plus the offset from the path's ends to the stances' contact centres,
+    /// interpolated along the path; exactly the first stance's contact centre at 0 and the last one's at the end. The
+    /// velocity is the walking speed along the path's direction there, from the start to the end included (zero before
+    /// and after).
+    /// </summary>
+    /// <exception cref="ArgumentException"><paramref name="move"/> is not a walk.</exception>
+    public static (Vector3 Position, Vector3 Velocity) InWalk(in PathMove move, float t)
+    {
+        Walk walk = move.Walk ?? throw new ArgumentException($"Move {move.Index} is a jump, not a walk.", nameof(move));
+        IReadOnlyList<Vector3> path = walk.Path;
+        Vector3 startShift = ContactCentre(move.From) - path[0];
+        Vector3 endShift = ContactCentre(move.To) - path[^1];
+        float length = walk.Length;
+        float d = walk.DistanceAt(t);
+        Vector3 position = d <= 0f ? ContactCentre(move.From)
+            : d >= length ? ContactCentre(move.To)
+            : walk.PointAt(d) + Vector3.Lerp(startShift, endShift, d / length);
+        if (!(t >= 0f && t <= walk.Duration) || length <= 0f)
+        {
+            return (position, Vector3.Zero);
+        }
+
+        // Direction of the path at d (averaged over a centimetre, which only matters at a corner).
+        const float h = 0.005f;
+        float a = MathF.Max(0f, d - h);
+        float b = MathF.Min(length, d + h);
+        Vector3 along = b > a ? (walk.PointAt(b) - walk.PointAt(a)) / (b - a) : Vector3.Zero;
+        Vector3 velocity = walk.Speed * (along + ((endShift - startShift) / length));
+        return (position, velocity);
     }
 }

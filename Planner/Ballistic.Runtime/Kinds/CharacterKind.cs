@@ -24,6 +24,18 @@ public sealed class CharacterKind
         Scene = scene;
         Roadmap = roadmap;
         Animator = animator;
+        PathAnimator = animator;
+    }
+
+    /// <summary>
+    /// Creates a kind whose paths are animated by <paramref name="pathAnimator"/> instead of <paramref name="animator"/>
+    /// (which still places stances and poses agents standing): for tests and tools that animate moves another way.
+    /// </summary>
+    internal CharacterKind(PlanningScene scene, Roadmap roadmap, JumpAnimator animator, IJumpAnimator pathAnimator)
+        : this(scene, roadmap, animator)
+    {
+        ArgumentNullException.ThrowIfNull(pathAnimator);
+        PathAnimator = pathAnimator;
     }
 
     /// <summary>The character's name.</summary>
@@ -37,6 +49,9 @@ public sealed class CharacterKind
 
     /// <summary>The whole-body animator.</summary>
     public JumpAnimator Animator { get; }
+
+    /// <summary>What animates the paths agents of this kind follow: <see cref="Animator"/>, unless made otherwise.</summary>
+    internal IJumpAnimator PathAnimator { get; }
 
     /// <summary>The rigged character.</summary>
     public CharacterModel Model => Animator.Model;

@@ -1,57 +1,76 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
 
 namespace Ballistic.Runtime.Paths;
 
 /// <summary>
-/// A path an agent follows: its moves on the path's clock and the whole-body animation solved for them. Immutable;
-/// the path's clock starts (at zero) on the tick the agent starts following it.
+/// A path an agent follows: its moves (jumps and walks) on the path's clock and the whole-body animation solved for
+/// them. Immutable; the path's clock starts (at zero) on the tick the agent starts following it.
 /// </summary>
 public sealed class AgentPath
 {
     private readonly PathMove[] _moves;
 
-    /// <summary>Builds the path of <paramref name="jumps"/> animated by <paramref name="animation"/>.</summary>
+    /// <summary>Builds the path of <paramref name="moves"/> (a <see cref="Planner.Query.PlanResult.Moves"/>) animated by <paramref name="animation"/>.</summary>
     /// <param name="target">The point asked for, world metres.</param>
-    /// <param name="jumps">The jumps, in order (at least one).</param>
-    /// <param name="animation">Their whole-body animation (one arc per jump, the same arcs).</param>
-    /// <exception cref="ArgumentException">No jumps, or the animation is not of these jumps.</exception>
-    public AgentPath(Vector3 target, IReadOnlyList<Jump> jumps, JumpAnimation animation)
+    /// <param name="moves">The moves, jumps and walks, in order (at least one).</param>
+    /// <param name="animation">Their whole-body animation: of exactly these moves, in this order, with frames.</param>
+    /// <exception cref="ArgumentException">No moves, an animation without frames, or an animation of other moves.</exception>
+    public AgentPath(Vector3 target, IReadOnlyList<Move> moves, JumpAnimation animation)
     {
-        ArgumentNullException.ThrowIfNull(jumps);
+        ArgumentNullException.ThrowIfNull(moves);
         ArgumentNullException.ThrowIfNull(animation);
-        if (jumps.Count == 0 || animation.Arcs.Count != jumps.Count || animation.Frames.Count == 0)
+        if (moves.Count == 0 || animation.Moves.Count != moves.Count || animation.Frames.Count == 0)
         {
-            throw new ArgumentException($"A path needs at least one jump and an animation of exactly its jumps ({jumps.Count} jumps, {animation.Arcs.Count} animated).", nameof(animation));
+            throw new ArgumentException($"A path needs at least one move and an animation with frames of exactly its moves ({moves.Count} moves, {animation.Moves.Count} animated, {animation.Frames.Count} frames).", nameof(animation));
+        }
+
+        for (int i = 0; i < moves.Count; i++)
+        {
+            if (moves[i] is null || !(ReferenceEquals(moves[i], animation.Moves[i]) || moves[i].Equals(animation.Moves[i])))
+            {
+                throw new ArgumentException($"Move {i} of the path is not move {i} of the animation.", nameof(animation));
+            }
         }
 
         Target = target;
         Animation = animation;
-        Start = jumps[0].Takeoff;
-        Goal = jumps[^1].Landing;
-        _moves = new PathMove[jumps.Count];
-        for (int i = 0; i < jumps.Count; i++)
+        Start = moves[0].From;
+        Goal = moves[^1].To;
+        _moves = new PathMove[moves.Count];
+        for (int i = 0; i < moves.Count; i++)
         {
-            float start = animation.JumpStart(i);
-            float end = start + jumps[i].Arc.FlightTime;
-            float takeoffEnd = start;
-            float landingStart = end;
-            foreach (ContactPhase phase in animation.ContactPhases)
+            float start = animation.MoveStart(i);
+            float end = animation.MoveEnd(i);
+            float stanceEnd = i + 1 < moves.Count ? animation.MoveStart(i + 1) : end;
+            switch (moves[i])
             {
-                if (phase.From <= start && phase.To > start && phase.To <= end)
-                {
-                    takeoffEnd = MathF.Max(takeoffEnd, phase.To);
-                }
+                case Jump jump:
+                    float takeoffEnd = start;
+                    float landingStart = end;
+                    foreach (ContactPhase phase in animation.ContactPhases)
+                    {
+                        if (phase.From <= start && phase.To > start && phase.To <= end)
+                        {
+                            takeoffEnd = MathF.Max(takeoffEnd, phase.To);
+                        }
 
-                if (phase.From > start && phase.From < landingStart)
-                {
-                    landingStart = phase.From;
-                }
+                        if (phase.From > start && phase.From < landingStart)
+                        {
+                            landingStart = phase.From;
+                        }
+                    }
+
+                    _moves[i] = new PathMove(MoveKind.Jump, i, jump.Takeoff, jump.Landing, jump.Arc, start, takeoffEnd, landingStart, end, stanceEnd);
+                    break;
+                case Walk walk:
+                    _moves[i] = new PathMove(MoveKind.Walk, i, walk.From, walk.To, default(BallisticArc), start, start, end, end, stanceEnd) { Walk = walk };
+                    break;
+                default:
+                    throw new ArgumentException($"Move {i} is of an unknown kind ({moves[i].GetType().Name}).", nameof(moves));
             }
-
-            float stanceEnd = i + 1 < jumps.Count ? animation.JumpStart(i + 1) : end;
-            _moves[i] = new PathMove(MoveKind.Jump, i, jumps[i].Takeoff, jumps[i].Landing, jumps[i].Arc, start, takeoffEnd, landingStart, end, stanceEnd);
         }
 
         Duration = _moves[^1].End;
@@ -72,7 +91,7 @@ public sealed class AgentPath
     /// <summary>The whole-body animation; its clip time is the path's clock.</summary>
     public JumpAnimation Animation { get; }
 
-    /// <summary>Length of the path on its clock, seconds: from the first takeoff to the last landing.</summary>
+    /// <summary>Length of the path on its clock, seconds: from the start of the first move to the end of the last (the stances between included).</summary>
     public float Duration { get; }
 
     /// <summary>The move at <paramref name="index"/> without copying the list (for systems).</summary>
@@ -80,4 +99,10 @@ public sealed class AgentPath
 
     /// <summary>Number of moves.</summary>
     public int Count => _moves.Length;
+
+    /// <summary>Number of jump moves.</summary>
+    public int JumpCount => Animation.Arcs.Count;
+
+    /// <summary>Number of walk moves.</summary>
+    public int WalkCount => _moves.Length - Animation.Arcs.Count;
 }

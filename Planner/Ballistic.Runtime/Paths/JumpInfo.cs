@@ -8,7 +8,7 @@ namespace Ballistic.Runtime.Paths;
 /// before it happens (<see cref="JumpWorld.TryGetNextJump"/>): where it takes off and lands, how fast and when. Positions are the trunk centre in world metres; times are world
 /// seconds (<see cref="JumpWorld.Time"/>).
 /// </summary>
-/// <param name="Index">Index of the jump on the agent's path.</param>
+/// <param name="Index">Index of the jump among the moves of the agent's path (jumps and walks counted together).</param>
 /// <param name="Arc">The arc the trunk centre will fly on (exactly).</param>
 /// <param name="TakeoffTime">World time of takeoff, seconds (in the past when the agent is already in the air).</param>
 /// <param name="LandingTime">World time of landing, seconds.</param>

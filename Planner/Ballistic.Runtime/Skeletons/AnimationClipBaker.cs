@@ -6,7 +6,7 @@ using Ballistic.Runtime.Paths;
 namespace Ballistic.Runtime.Skeletons;
 
 /// <summary>
-/// Bakes a planned path's whole-body animation into tracks for one skeleton, so that designers can scrub it in the
+/// Bakes a planned path's whole-body animation (its jumps and walks) into tracks for one skeleton, so that designers can scrub it in the
 /// engine's animation editor: the animation is sampled at a fixed rate, each sample converted by a
 /// <see cref="SkeletonBinding"/> (the same conversion the runtime animator makes every frame), and each track
 /// thinned to the keys its interpolation cannot reproduce within an epsilon. Deterministic.
@@ -25,14 +25,15 @@ public static class AnimationClipBaker
     }
 
     /// <summary>
-    /// Bakes <paramref name="animation"/>: a rotation track per driven bone and a position track per positioned bone
-    /// (<see cref="SkeletonBinding.PositionedBones"/>), keyed from time 0 to the animation's duration.
+    /// Bakes <paramref name="animation"/>, the whole clip over its moves (jumps, walks and the stances between them): a
+    /// rotation track per driven bone and a position track per positioned bone (<see cref="SkeletonBinding.PositionedBones"/>),
+    /// keyed from time 0 to the animation's duration.
     /// </summary>
     /// <param name="animation">The whole-body animation (of the binding's character).</param>
     /// <param name="binding">The binding of the character to the skeleton the clip is for.</param>
     /// <param name="skeletonGlobal">The skeleton node's world transform while the clip plays (the positions are relative to it).</param>
     /// <param name="settings">Rate, epsilons and skeleton path; defaults when <c>null</c>.</param>
-    /// <exception cref="ArgumentException">The animation is of another character or has no frames or no jumps, a setting is out of range, or the clip would exceed <see cref="MaxFrames"/> samples.</exception>
+    /// <exception cref="ArgumentException">The animation is of another character or has no frames or no moves, a setting is out of range, or the clip would exceed <see cref="MaxFrames"/> samples.</exception>
     public static BakedClip Bake(JumpAnimation animation, SkeletonBinding binding, in BoneTransform skeletonGlobal, ClipBakeSettings? settings = null)
     {
         ArgumentNullException.ThrowIfNull(animation);
@@ -48,9 +49,9 @@ public static class AnimationClipBaker
             throw new ArgumentException($"The animation is of '{animation.Model.Name}'; the binding is for '{binding.Model.Name}'.", nameof(animation));
         }
 
-        if (animation.Frames.Count == 0 || animation.Arcs.Count == 0)
+        if (animation.Frames.Count == 0 || animation.Moves.Count == 0)
         {
-            throw new ArgumentException($"The animation has {animation.Frames.Count} frames and {animation.Arcs.Count} jumps; a clip needs at least one of each.", nameof(animation));
+            throw new ArgumentException($"The animation has {animation.Frames.Count} frames and {animation.Moves.Count} moves; a clip needs at least one of each.", nameof(animation));
         }
 
         float duration = animation.Duration;

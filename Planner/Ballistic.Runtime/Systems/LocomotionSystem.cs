@@ -8,11 +8,14 @@ using Ballistic.Runtime.Paths;
 namespace Ballistic.Runtime.Systems;
 
 /// <summary>
-/// Advances every agent along its path on the path's clock: takeoff, flight exactly on the jump's parabola,
-/// landing, the stance in which limbs re-step, and so on to the last landing. Emits each takeoff and landing as it
-/// is crossed (at its exact time, which may fall between ticks), then the arrival. An agent asked to stop (a new
-/// target, a cleared one) stops on the next stance of its path: the landing of the jump it is in, or, when standing
-/// between two jumps, before the next takeoff. Allocates nothing.
+/// Advances every agent along its path on the path's clock: each jump's takeoff, flight exactly on its parabola and
+/// landing; each walk exactly along its ground path at its speed (<see cref="Walk.PoseAt"/>); the stance after each
+/// move in which limbs re-step; and so on to the end of the last move. Emits each move's start and end as it is
+/// crossed (at its exact time, which may fall between ticks: <see cref="JumpEventKind.JumpStarted"/> and
+/// <see cref="JumpEventKind.Landed"/> for a jump, <see cref="JumpEventKind.WalkStarted"/> and
+/// <see cref="JumpEventKind.WalkFinished"/> for a walk), then the arrival. An agent asked to stop (a new target, a
+/// cleared one) stops on the next stance of its path: the end of the move it is in (a landing, or a walk's last
+/// stance), or, when standing between two moves, before the next one starts. Allocates nothing.
 /// </summary>
 internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, PathRequestSystem requests)
 {
@@ -48,28 +51,27 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         while (cursor < boundaries)
         {
             ref readonly PathMove move = ref path.Move(cursor >> 1);
-            bool landing = (cursor & 1) == 1;
-            float when = landing ? move.End : move.Start;
+            bool ending = (cursor & 1) == 1;
+            float when = ending ? move.End : move.Start;
             if (when > t)
             {
                 break;
             }
 
-            if (!landing && move.Index > 0 && agents.StopAtStance[slot])
+            if (!ending && move.Index > 0 && agents.StopAtStance[slot])
             {
-                // Standing between two jumps: stop before this takeoff.
+                // Standing between two moves: stop before this one starts.
                 agents.Cursor[slot] = cursor;
-                Stop(slot, move.From, move.Arc.Takeoff, move.Start, path);
+                Stop(slot, move.From, path.Move(move.Index - 1).EndPose, move.Start, path);
                 return;
             }
 
-            events.Add(new JumpEvent(landing ? JumpEventKind.Landed : JumpEventKind.JumpStarted, handle, tick, start + when, move.Index,
-                move.Arc.Start, move.Arc.End, move.Arc.TakeoffVelocity, move.Arc.FlightTime, PlannerStatus.Exact, null));
+            events.Add(MoveEvent(move, ending, handle, tick, start + when));
             cursor++;
-            if (landing && agents.StopAtStance[slot] && cursor < boundaries)
+            if (ending && agents.StopAtStance[slot] && cursor < boundaries)
             {
                 agents.Cursor[slot] = cursor;
-                Stop(slot, move.To, move.Arc.Landing, move.End, path);
+                Stop(slot, move.To, move.EndPose, move.End, path);
                 return;
             }
         }
@@ -77,32 +79,58 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         agents.Cursor[slot] = cursor;
         if (cursor == boundaries)
         {
-            // Arrived; unless another target came during the last jump, which is then planned from here.
+            // Arrived; unless another target came during the last move, which is then planned from here.
             ref readonly PathMove last = ref path.Move(path.Count - 1);
             if (!agents.StopAtStance[slot])
             {
                 agents.HasTarget[slot] = false;
-                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + last.End, last.Index, last.Arc.End, path.Target, default, 0f, PlannerStatus.Exact, null));
+                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + last.End, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null));
             }
 
-            Stop(slot, last.To, last.Arc.Landing, last.End, path);
+            Stop(slot, last.To, last.EndPose, last.End, path);
             return;
         }
 
         ref readonly PathMove current = ref path.Move(cursor >> 1);
-        if ((cursor & 1) == 1)
+        if ((cursor & 1) == 0)
+        {
+            // Between the end of the previous move and the start of this one (cursor > 0 here): the root holds still.
+            agents.Root[slot] = path.Move((cursor >> 1) - 1).EndPose;
+            agents.State[slot] = AgentState.Stance;
+        }
+        else if (current.Walk is { } walk)
+        {
+            // Walking: exactly along the walk's path at its speed.
+            agents.Root[slot] = walk.PoseAt(MoveTime(time, start, current));
+            agents.State[slot] = AgentState.Walking;
+        }
+        else
         {
             // In the air: exactly on the parabola.
             agents.Root[slot] = current.Arc.PoseAt(FlightTime(time, start, current));
             agents.State[slot] = t < current.TakeoffEnd ? AgentState.Takeoff : t >= current.LandingStart ? AgentState.Landing : AgentState.Flight;
         }
-        else
-        {
-            // Between the landing of the previous jump and this takeoff (cursor > 0 here): the root holds still.
-            agents.Root[slot] = path.Move((cursor >> 1) - 1).Arc.Landing;
-            agents.State[slot] = AgentState.Stance;
-        }
     }
+
+    /// <summary>The event of <paramref name="move"/>'s start or end (<paramref name="ending"/>) at world time <paramref name="when"/>.</summary>
+    private static JumpEvent MoveEvent(in PathMove move, bool ending, AgentHandle handle, long tick, double when)
+    {
+        if (move.Walk is { } walk)
+        {
+            return new JumpEvent(ending ? JumpEventKind.WalkFinished : JumpEventKind.WalkStarted, handle, tick, when, move.Index,
+                move.From.Pose.Position, move.To.Pose.Position, default, walk.Duration, PlannerStatus.Exact, null);
+        }
+
+        return new JumpEvent(ending ? JumpEventKind.Landed : JumpEventKind.JumpStarted, handle, tick, when, move.Index,
+            move.Arc.Start, move.Arc.End, move.Arc.TakeoffVelocity, move.Arc.FlightTime, PlannerStatus.Exact, null);
+    }
+
+    /// <summary>
+    /// Seconds since the start of <paramref name="move"/> (a walk's first step), from world time: the formula every
+    /// reader of the runtime's walks uses (<see cref="Paths.WalkInfo.StartTime"/> is <c>pathStart + move.Start</c>), so
+    /// that an agent's root equals <c>walk.PoseAt((float)(time − startTime))</c> bit for bit.
+    /// </summary>
+    public static float MoveTime(double time, double pathStart, in PathMove move) => (float)(time - (pathStart + move.Start));
 
     /// <summary>
     /// Seconds since the takeoff of <paramref name="move"/>, from world time: the one formula every reader of the

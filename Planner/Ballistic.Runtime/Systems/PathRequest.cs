@@ -16,10 +16,16 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequen
     /// <summary>The roadmap edge to perform as the whole path, with no search (<see cref="JumpWorld.PerformJump"/>); −1 to search (also once that edge was set aside).</summary>
     public int ForcedEdge { get; set; } = -1;
 
+    /// <summary>
+    /// The moves to perform as the whole path, with no search (<see cref="JumpWorld.PerformMoves"/>); <c>null</c> to
+    /// search (also once one of them was set aside).
+    /// </summary>
+    public IReadOnlyList<Move>? ForcedMoves { get; set; }
+
     /// <summary>Order of the request: in-flight requests are delivered in this order.</summary>
     public long Sequence { get; } = sequence;
 
-    /// <summary>Jumps set aside because the body could not perform them, with why.</summary>
+    /// <summary>Moves set aside because the body could not perform them, with why.</summary>
     public JumpRepair Repair { get; } = new();
 
     /// <summary>Searches made so far.</summary>
@@ -28,8 +34,8 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequen
     /// <summary>The stance searched from.</summary>
     public RoadmapNode? Start { get; set; }
 
-    /// <summary>The path found by the last search.</summary>
-    public IReadOnlyList<Jump> Jumps { get; set; } = [];
+    /// <summary>The moves (jumps and walks) found by the last search.</summary>
+    public IReadOnlyList<Move> Moves { get; set; } = [];
 
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }

@@ -13,7 +13,7 @@ namespace Ballistic.Runtime.Systems;
 /// Serves path requests after Detour's path queue: a request waits in a first-come queue; each tick searches as many
 /// as the budget allows (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>);
 /// a found path is animated in the background and delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
-/// later. A path whose animation shows a jump the body cannot perform is searched again without that jump
+/// later. A path whose animation shows a move (jump or walk) the body cannot perform is searched again without it
 /// (lazy repair, up to <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed.
 /// </summary>
 internal sealed class PathRequestSystem : IDisposable
@@ -56,6 +56,16 @@ internal sealed class PathRequestSystem : IDisposable
 
     /// <summary>Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one.</summary>
     public void Request(int slot) => Request(slot, -1);
+
+    /// <summary>
+    /// Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one, whose
+    /// whole path is <paramref name="moves"/> (the agent stands on the first one's stance): no search.
+    /// </summary>
+    public void Request(int slot, IReadOnlyList<Move> moves)
+    {
+        Request(slot, -1);
+        _agents.Request[slot]!.ForcedMoves = moves;
+    }
 
     /// <summary>
     /// Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one: with
@@ -117,7 +127,12 @@ internal sealed class PathRequestSystem : IDisposable
             // One given jump of the roadmap: no search.
             Roadmap roadmap = kind.Roadmap;
             RoadmapEdge edge = roadmap.Edges[request.ForcedEdge];
-            request.Jumps = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
+            request.Moves = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
+        }
+        else if (request.ForcedMoves is { } forced)
+        {
+            // The given moves: no search.
+            request.Moves = forced;
         }
         else
         {
@@ -129,7 +144,7 @@ internal sealed class PathRequestSystem : IDisposable
                 return work;
             }
 
-            if (result.Jumps.Count == 0)
+            if (result.Moves.Count == 0)
             {
                 _agents.Request[slot] = null;
                 _agents.State[slot] = AgentState.Idle;
@@ -138,22 +153,22 @@ internal sealed class PathRequestSystem : IDisposable
                 return work;
             }
 
-            request.Jumps = result.Jumps;
+            request.Moves = result.Moves;
         }
 
         request.DueTick = tick + _settings.PathLatencyTicks;
-        IReadOnlyList<Jump> jumps = request.Jumps;
-        JumpAnimator animator = kind.Animator;
+        IReadOnlyList<Move> moves = request.Moves;
+        IJumpAnimator animator = kind.PathAnimator;
         float frameRate = _settings.AnimationFrameRate;
         if (_scheduler is null)
         {
-            request.Solved = animator.Animate(jumps, frameRate);
+            request.Solved = animator.Animate(moves, frameRate);
             request.Job = null;
         }
         else
         {
             request.Solved = null;
-            request.Job = Task.Factory.StartNew(() => animator.Animate(jumps, frameRate), _shutdown.Token, TaskCreationOptions.None, _scheduler);
+            request.Job = Task.Factory.StartNew(() => animator.Animate(moves, frameRate), _shutdown.Token, TaskCreationOptions.None, _scheduler);
         }
 
         _inFlight.Add(request);
@@ -205,7 +220,7 @@ internal sealed class PathRequestSystem : IDisposable
     {
         if (animation.IsClean)
         {
-            var path = new AgentPath(request.Target, request.Jumps, animation);
+            var path = new AgentPath(request.Target, request.Moves, animation);
             _agents.Request[slot] = null;
             _agents.Stance[slot] = null;
             _agents.Path[slot] = path;
@@ -216,9 +231,11 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
-        // A given jump the body cannot perform is set aside like any other: the request becomes a search to the same landing.
+        // A given jump or given moves the body cannot perform are set aside like any other: the request becomes a
+        // search to the same stance.
         request.ForcedEdge = -1;
-        request.Repair.Reject(request.Jumps, animation);
+        request.ForcedMoves = null;
+        request.Repair.Reject(request.Moves, animation);
         if (request.Rounds >= _settings.RepairRounds)
         {
             Fail(slot, request, PlannerStatus.AnimationFailed, request.Repair.RoundsExhausted(request.Rounds), tick, time);

@@ -16,8 +16,17 @@ internal sealed class RoadmapSearch
     {
         _kind = kind;
         _query = new PathQuery(kind.Scene, kind.Roadmap);
-        _settings = new QuerySettings { Tolerance = world.Tolerance, CanStand = kind.Animator.CanStand };
+        _settings = new QuerySettings
+        {
+            Tolerance = world.Tolerance,
+            CanStand = kind.Animator.CanStand,
+            Locomotion = world.Locomotion,
+            JumpEffort = world.JumpEffort,
+        };
     }
+
+    /// <summary>The query settings of every search: the world's tolerance, locomotion and jump effort, the kind's standing check.</summary>
+    public QuerySettings Settings => _settings;
 
     /// <summary>
     /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/>; <paramref name="work"/> is the search's

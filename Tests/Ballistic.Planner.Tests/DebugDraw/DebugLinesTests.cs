@@ -133,10 +133,12 @@ public sealed class DebugLinesTests
         var settings = new DebugDrawSettings { MaxSegmentsPerArc = 10 };
         DebugLineRange arcs = lines.AddPath(path, firstMove: 0, settings);
         DebugLineRange cones = lines.AddPathCones(path, firstMove: 0, settings);
+        var jumps = path.Moves.Where(m => m.Kind == MoveKind.Jump).ToList();
         Assert.Multiple(() =>
         {
-            Assert.That(arcs.Count, Is.EqualTo(path.Moves.Sum(m => DebugLines.SegmentsFor(m.Arc, settings))));
-            Assert.That(cones, Is.EqualTo(new DebugLineRange(arcs.Count, path.Count * 2 * (1 + (2 * settings.ConeRays)))));
+            Assert.That(jumps, Is.Not.Empty);
+            Assert.That(arcs.Count, Is.EqualTo(path.Moves.Sum(m => Segments(m, settings))));
+            Assert.That(cones, Is.EqualTo(new DebugLineRange(arcs.Count, jumps.Count * 2 * (1 + (2 * settings.ConeRays)))));
             Assert.That(lines.Colors[..(2 * arcs.Count)].ToArray(), Has.All.EqualTo(DebugPalette.GodotDefaults.Path));
             Assert.That(lines.Colors[(2 * arcs.Count)..].ToArray(), Has.All.EqualTo(DebugPalette.GodotDefaults.Cones));
         });
@@ -145,28 +147,109 @@ public sealed class DebugLinesTests
         int segment = 0;
         foreach (PathMove move in path.Moves)
         {
-            for (int s = 0; s < DebugLines.SegmentsFor(move.Arc, settings); s++, segment++)
+            for (int s = 0; s < Segments(move, settings); s++, segment++)
             {
-                Assert.That(DistanceToArc(move.Arc, v[2 * segment]), Is.LessThan(1e-4f));
-                Assert.That(DistanceToArc(move.Arc, v[(2 * segment) + 1]), Is.LessThan(1e-4f));
+                Assert.That(DistanceToMove(move, v[2 * segment]), Is.LessThan(1e-4f));
+                Assert.That(DistanceToMove(move, v[(2 * segment) + 1]), Is.LessThan(1e-4f));
             }
         }
 
-        // Each move's takeoff cone stands at its takeoff stance's contact centre, its landing cone at the landing's.
+        // Each jump's takeoff cone stands at its takeoff stance's contact centre, its landing cone at the landing's.
         ReadOnlySpan<Vector3> c = lines.VerticesOf(cones);
         int verticesPerCone = 2 * (1 + (2 * settings.ConeRays));
-        for (int m = 0; m < path.Count; m++)
+        for (int m = 0; m < jumps.Count; m++)
         {
-            Assert.That(c[2 * m * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(path.Moves[m].From)), $"move {m} takeoff cone");
-            Assert.That(c[((2 * m) + 1) * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(path.Moves[m].To)), $"move {m} landing cone");
+            Assert.That(c[2 * m * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(jumps[m].From)), $"jump {m} takeoff cone");
+            Assert.That(c[((2 * m) + 1) * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(jumps[m].To)), $"jump {m} landing cone");
             Vector3 axis = c[(((2 * m) + 1) * verticesPerCone) + 1] - c[((2 * m) + 1) * verticesPerCone];
-            Assert.That(Vector3.Distance(axis, path.Moves[m].To.Cone.Axis * settings.ConeLength), Is.LessThan(1e-5f), "along the landing stance's cone axis");
+            Assert.That(Vector3.Distance(axis, jumps[m].To.Cone.Axis * settings.ConeLength), Is.LessThan(1e-5f), "along the landing stance's cone axis");
         }
 
-        // From the last move on: only its arc.
+        // From the last move on: only its own lines.
         lines.Clear();
-        Assert.That(lines.AddPath(path, path.Count - 1, settings).Count, Is.EqualTo(DebugLines.SegmentsFor(path.Moves[^1].Arc, settings)));
+        Assert.That(lines.AddPath(path, path.Count - 1, settings).Count, Is.EqualTo(Segments(path.Moves[^1], settings)));
         Assert.That(lines.AddPath(path, path.Count, settings).Count, Is.Zero);
+    }
+
+    [Test]
+    public void AWalkIsDrawnDashedOnItsTrunksPath()
+    {
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        var walk = (Walk)moves[2];
+        var lines = new DebugLines();
+        var settings = new DebugDrawSettings { WalkDashLength = 0.1f };
+        DebugLineRange dashes = lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings);
+        ReadOnlySpan<Vector3> v = lines.VerticesOf(dashes);
+
+        // An odd number of equal pieces of about 0.1 m, every other one drawn, the first and the last included.
+        int pieces = (int)MathF.Ceiling(walk.Length / 0.1f) | 1;
+        Assert.That(dashes.Count, Is.EqualTo((pieces + 1) / 2));
+        Assert.That(v[0], Is.EqualTo(walk.From.Pose.Position), "starts on the first stance's trunk centre");
+        Assert.That(v[^1], Is.EqualTo(walk.To.Pose.Position), "ends on the last stance's trunk centre");
+        float drawn = 0f;
+        for (int i = 0; i < v.Length; i++)
+        {
+            Assert.That(DistanceToWalk(walk, v[i]), Is.LessThan(1e-4f), $"vertex {i} on the trunk's path");
+        }
+
+        for (int k = 0; k < dashes.Count; k++)
+        {
+            float dash = Vector3.Distance(v[2 * k], v[(2 * k) + 1]);
+            Assert.That(dash, Is.LessThanOrEqualTo((walk.Length / pieces) + 1e-4f), $"dash {k}");
+            drawn += dash;
+            if (k > 0)
+            {
+                Assert.That(Vector3.Distance(v[(2 * k) - 1], v[2 * k]), Is.GreaterThan(0.5f * walk.Length / pieces), $"a gap before dash {k}");
+            }
+        }
+
+        Assert.That(drawn, Is.InRange(0.4f * walk.Length, 0.6f * walk.Length + (walk.Length / pieces)), "about half the walk is drawn");
+
+        // Solid: a connected polyline of short segments, every vertex on the path.
+        lines.Clear();
+        DebugLineRange solid = lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings with { WalkDashLength = 0f, SegmentLength = 0.2f });
+        v = lines.VerticesOf(solid);
+        Assert.That(solid.Count, Is.EqualTo((int)MathF.Ceiling(walk.Length / 0.2f)));
+        for (int k = 0; k < solid.Count; k++)
+        {
+            Assert.That(Vector3.Distance(v[2 * k], v[(2 * k) + 1]), Is.LessThanOrEqualTo(0.2f + 1e-4f));
+            Assert.That(DistanceToWalk(walk, v[(2 * k) + 1]), Is.LessThan(1e-4f));
+            if (k > 0)
+            {
+                Assert.That(v[2 * k], Is.EqualTo(v[(2 * k) - 1]), "connected");
+            }
+        }
+
+        // The cap: a long walk keeps at most MaxSegmentsPerWalk dashes.
+        lines.Clear();
+        Assert.That(lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings with { WalkDashLength = 0.001f, MaxSegmentsPerWalk = 7 }).Count, Is.EqualTo(7));
+        Assert.That(new DebugDrawSettings { WalkDashLength = -1f }.Problem(), Does.Contain("dash"));
+        Assert.That(new DebugDrawSettings { MaxSegmentsPerWalk = 0 }.Problem(), Does.Contain("per walk"));
+    }
+
+    [Test]
+    public void APathWithWalksDrawsTheirDashesAndOnlyTheJumpsCones()
+    {
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        var path = new AgentPath(Vector3.Zero, moves, new SimpleMoveAnimator(RuntimeWorlds.DesertSkeleton.Animator).Animate(moves));
+        var lines = new DebugLines();
+        var settings = new DebugDrawSettings();
+        DebugLineRange drawn = lines.AddPath(path, 0, settings);
+        int first = lines.AddWalk((Walk)moves[0], settings.Colors.Path, settings).Count;
+        int arc = lines.AddArc(((Jump)moves[1]).Arc, settings.Colors.Path, settings).Count;
+        int last = lines.AddWalk((Walk)moves[2], settings.Colors.Path, settings).Count;
+        Assert.That(drawn.Count, Is.EqualTo(first + arc + last));
+        Vector3[] byPath = lines.Vertices[..(2 * drawn.Count)].ToArray();
+        Vector3[] oneByOne = lines.Vertices[(2 * drawn.Count)..].ToArray();
+        Assert.That(byPath, Is.EqualTo(oneByOne), "the walk, the arc, the walk");
+        Assert.That(lines.VerticesOf(drawn)[0], Is.EqualTo(moves[0].From.Pose.Position));
+        Assert.That(lines.VerticesOf(drawn)[^1], Is.EqualTo(moves[2].To.Pose.Position));
+
+        lines.Clear();
+        Assert.That(lines.AddPathCones(path, 0, settings).Count, Is.EqualTo(2 * (1 + (2 * settings.ConeRays))), "the jump's two cones only");
+        Assert.That(lines.Vertices[0], Is.EqualTo(DebugLines.ContactCentre(moves[1].From)));
+        lines.Clear();
+        Assert.That(lines.AddPath(path, 1, settings).Count, Is.EqualTo(arc + last), "from the jump on");
     }
 
     [Test]
@@ -228,6 +311,27 @@ public sealed class DebugLinesTests
             Assert.That(() => lines.AddPath(AnimationClipBakerTests.SampledPath, -1), Throws.InstanceOf<ArgumentOutOfRangeException>());
         });
         Assert.That(lines.SegmentCount, Is.Zero, "nothing drawn by a refused call");
+    }
+
+    /// <summary>Segments <see cref="DebugLines.AddPath"/> draws for a move: an arc's polyline, or a walk's dashes (half its odd number of pieces, rounded up).</summary>
+    private static int Segments(in PathMove move, DebugDrawSettings settings) =>
+        move.Walk is { } walk
+            ? (Math.Clamp((int)MathF.Ceiling(walk.Length / settings.WalkDashLength), 1, (2 * settings.MaxSegmentsPerWalk) - 1) | 1) / 2 + 1
+            : DebugLines.SegmentsFor(move.Arc, settings);
+
+    private static float DistanceToMove(in PathMove move, Vector3 p) => move.Walk is { } walk ? DistanceToWalk(walk, p) : DistanceToArc(move.Arc, p);
+
+    /// <summary>Distance to the trunk's path along a walk, sampled every millimetre.</summary>
+    private static float DistanceToWalk(Walk walk, Vector3 p)
+    {
+        int n = Math.Max(1, (int)MathF.Ceiling(walk.Length / 1e-3f));
+        var points = new Vector3[n + 1];
+        for (int k = 0; k <= n; k++)
+        {
+            points[k] = walk.PoseAtDistance(walk.Length * k / n).Position;
+        }
+
+        return WalkingPaths.DistanceToPolyline(p, points);
     }
 
     /// <summary>How far <paramref name="p"/> is from the arc's point at the time its horizontal progress gives.</summary>

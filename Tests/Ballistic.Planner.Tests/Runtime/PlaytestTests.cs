@@ -22,16 +22,20 @@ public sealed class PlaytestTests
         Assert.That(result.JumpsTaken, Is.GreaterThan(20));
         foreach (PlaytestAgent agent in result.Agents)
         {
+            // The agent's moves in the order it made them: each starts where the agent stood (no teleport between
+            // moves, or between paths).
             Vector3 at = agent.Spawn;
-            foreach (ExecutedJump executed in agent.Jumps)
+            var moves = agent.Jumps.Select(j => (Time: j.TakeoffTime, Move: (Move)j.Jump)).Concat(agent.Walks.Select(w => (Time: w.StartTime, Move: (Move)w.Walk))).OrderBy(m => m.Time);
+            foreach ((double time, Move move) in moves)
             {
-                Jump jump = executed.Jump;
-                PhysicsChecks.AssertJump(RuntimeWorlds.DesertSkeleton.Scene, jump.Takeoff, jump.Landing, jump.Arc, $"agent {agent.Index} at {executed.TakeoffTime:0.###} s");
-                PhysicsChecks.AssertNode(RuntimeWorlds.DesertSkeleton.Scene, jump.Landing, $"agent {agent.Index} landing at {executed.TakeoffTime:0.###} s");
-
-                // Each takeoff is where the agent stood: no teleport between jumps, or between paths.
-                Assert.That(Vector3.Distance(jump.Arc.Start, at), Is.LessThan(1e-4f), $"agent {agent.Index} took off {Vector3.Distance(jump.Arc.Start, at):0.###} m from where it stood");
-                at = jump.Arc.End;
+                Assert.That(Vector3.Distance(move.From.Pose.Position, at), Is.LessThan(1e-4f), $"agent {agent.Index} started a move {Vector3.Distance(move.From.Pose.Position, at):0.###} m from where it stood at {time:0.###} s");
+                at = move.To.Pose.Position;
+                if (move is Jump jump)
+                {
+                    PhysicsChecks.AssertJump(RuntimeWorlds.DesertSkeleton.Scene, jump.Takeoff, jump.Landing, jump.Arc, $"agent {agent.Index} at {time:0.###} s");
+                    PhysicsChecks.AssertNode(RuntimeWorlds.DesertSkeleton.Scene, jump.Landing, $"agent {agent.Index} landing at {time:0.###} s");
+                    Assert.That(jump.Arc.Start, Is.EqualTo(jump.Takeoff.Pose.Position).Using<Vector3>((x, y) => Vector3.Distance(x, y) < 1e-4f));
+                }
             }
         }
     }
@@ -41,6 +45,7 @@ public sealed class PlaytestTests
     {
         PlaytestResult again = PlaytestRunner.Run(RuntimeWorlds.DesertSkeleton, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, ReachabilityPairs = 100 });
         string Trace(PlaytestResult r) => string.Join("\n", r.Agents.SelectMany(a => a.Jumps.Select(j => $"{a.Index} {j.TakeoffTime:R} {j.Jump.Arc.Start} {j.Jump.Arc.TakeoffVelocity}"))
+            .Concat(r.Agents.SelectMany(a => a.Walks.Select(w => $"{a.Index} {w.StartTime:R} {w.Walk.From.Pose.Position} {w.Walk.To.Pose.Position} {w.Walk.Speed:R}")))
             .Concat(r.Agents.SelectMany(a => a.Targets.Select(t => $"{a.Index} {t.Target} {t.ReachedAt:R} {t.FailureReason}"))));
         Assert.That(Trace(again), Is.EqualTo(Trace(Run.Value)));
     }
@@ -50,7 +55,7 @@ public sealed class PlaytestTests
     {
         PlaytestResult result = Run.Value;
         JsonNode report = JsonNode.Parse(PlaytestReportWriter.ToJson(result, "Scenes/levels/desert.glb"))!;
-        Assert.That((string?)report["schema"], Is.EqualTo("ballistic.playtest/1"));
+        Assert.That((string?)report["schema"], Is.EqualTo("ballistic.playtest/2"));
         Assert.That((string?)report["level"], Is.EqualTo("Scenes/levels/desert.glb"));
 
         // The character block is the plan report's, byte for byte.
@@ -61,6 +66,7 @@ public sealed class PlaytestTests
 
         JsonArray agents = report["agents"]!.AsArray();
         Assert.That(agents.Sum(a => a!["jumps"]!.AsArray().Count), Is.EqualTo(result.JumpsTaken));
+        Assert.That(agents.Sum(a => a!["walks"]!.AsArray().Count), Is.EqualTo(result.WalksTaken));
         JsonNode first = agents.First(a => a!["jumps"]!.AsArray().Count > 0)!["jumps"]![0]!;
         foreach (string key in new[] { "takeoff", "landing", "takeoffVelocity", "landingVelocity", "flightTime", "arcLength", "apex" })
         {
@@ -74,4 +80,55 @@ public sealed class PlaytestTests
         byte[] png = PlaytestMapRenderer.Png(result);
         Assert.That(png.AsSpan(1, 3).ToArray(), Is.EqualTo("PNG"u8.ToArray()));
     }
+
+    [Test]
+    public void TheReportListsEveryWalkAndTheMapDrawsThemDashed()
+    {
+        // A playtest result with one agent that walked, jumped and walked (until the planner makes walks on the desert).
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        var agent = new PlaytestAgent(0, moves[0].From.Pose.Position);
+        agent.Targets.Add(new PlaytestTarget(WalkingPaths.Centre(moves[2].To), moves[0].From.Pose.Position, 0.0) { ReachedAt = 5.0 });
+        agent.Walks.Add(new ExecutedWalk(0, 0.0, (Walk)moves[0]));
+        agent.Jumps.Add(new ExecutedJump(0, 1.5, (Jump)moves[1]));
+        agent.Walks.Add(new ExecutedWalk(0, 2.6, (Walk)moves[2]));
+        var settings = new PlaytestSettings { Agents = 1, Seconds = 6, AnimationThreads = 0 };
+        var result = new PlaytestResult(settings, RuntimeWorlds.DesertSkeleton, [agent], 360, 0.1, 0, 0, false);
+        Assert.That(result.WalksTaken, Is.EqualTo(2));
+        Assert.That(result.WalkedMetres, Is.EqualTo(((Walk)moves[0]).Length + (double)((Walk)moves[2]).Length).Within(1e-5));
+
+        JsonNode report = JsonNode.Parse(PlaytestReportWriter.ToJson(result, "Scenes/levels/desert.glb"))!;
+        Assert.That((string?)report["schema"], Is.EqualTo("ballistic.playtest/2"));
+        Assert.That((string?)report["settings"]!["locomotion"], Is.EqualTo("walk_and_jump"));
+        Assert.That((double)report["settings"]!["jumpEffort"]!, Is.EqualTo(settings.JumpEffort));
+        Assert.That((int)report["summary"]!["walksTaken"]!, Is.EqualTo(2));
+        Assert.That((int)report["summary"]!["jumpsTaken"]!, Is.EqualTo(1));
+        JsonArray walks = report["agents"]![0]!["walks"]!.AsArray();
+        Assert.That(walks, Has.Count.EqualTo(2));
+        for (int w = 0; w < 2; w++)
+        {
+            var walk = (Walk)moves[2 * w];
+            JsonNode json = walks[w]!;
+            Assert.That((double)json["startTime"]!, Is.EqualTo(agent.Walks[w].StartTime));
+            Assert.That((int)json["from"]!["node"]!, Is.EqualTo(walk.From.Id));
+            Assert.That((int)json["to"]!["node"]!, Is.EqualTo(walk.To.Id));
+            Assert.That(Vector(json["from"]!["position"]!), Is.EqualTo(walk.From.Pose.Position));
+            Assert.That(Vector(json["to"]!["position"]!), Is.EqualTo(walk.To.Pose.Position));
+            Assert.That((float)json["speed"]!, Is.EqualTo(walk.Speed));
+            Assert.That((float)json["length"]!, Is.EqualTo(walk.Length));
+            Assert.That((float)json["duration"]!, Is.EqualTo(walk.Duration));
+            Assert.That(json["via"]!.AsArray(), Is.Empty);
+            Assert.That(json["path"]!.AsArray().Select(p => Vector(p!)), Is.EqualTo(walk.Path));
+        }
+
+        string svg = PlaytestMapRenderer.Svg(result);
+        Assert.That(svg.Split("<polyline class=\"walk\"").Length - 1, Is.EqualTo(2), "one dashed polyline per walk");
+        Assert.That(svg, Does.Contain("stroke-dasharray=\"5 3\"").And.Contain("2 walks"));
+        var jumpOnly = new PlaytestAgent(0, agent.Spawn);
+        jumpOnly.Targets.AddRange(agent.Targets);
+        jumpOnly.Jumps.AddRange(agent.Jumps);
+        byte[] without = PlaytestMapRenderer.Png(result with { Agents = [jumpOnly] });
+        Assert.That(PlaytestMapRenderer.Png(result), Is.Not.EqualTo(without), "the walks are drawn on the PNG");
+    }
+
+    private static Vector3 Vector(JsonNode node) => new((float)node[0]!, (float)node[1]!, (float)node[2]!);
 }

@@ -157,10 +157,53 @@ public sealed class AnimationClipBakerTests
         var frogAnimation = new JumpAnimation(frog, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), new float[frog.Rig.DofCount])], [], [], 0, 0);
         Assert.That(() => AnimationClipBaker.Bake(frogAnimation, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("'frog'"));
 
-        // An animation without jumps cannot be sampled.
+        // An animation without moves cannot be sampled.
         var model = RuntimeWorlds.DesertSkeleton.Model;
-        var noJumps = new JumpAnimation(model, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose)], [], [], 0, 0);
-        Assert.That(() => AnimationClipBaker.Bake(noJumps, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("0 jumps"));
+        var noMoves = new JumpAnimation(model, [], [], [new AnimationFrame(0f, new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose)], [], [], 0, 0);
+        Assert.That(() => AnimationClipBaker.Bake(noMoves, binding, godot.Global), Throws.ArgumentException.With.Message.Contains("0 moves"));
+    }
+
+    [Test]
+    public void AClipOfAPathWithWalksCoversTheWalksToo()
+    {
+        GodotSkeleton godot = SkeletonBindingTests.BundledSkeleton();
+        SkeletonBinding binding = SkeletonBindingTests.Bind(RuntimeWorlds.DesertSkeleton.Model, godot.Skeleton);
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        var animator = new SimpleMoveAnimator(RuntimeWorlds.DesertSkeleton.Animator);
+        var path = new AgentPath(Vector3.Zero, moves, animator.Animate(moves, 30f));
+        var settings = new ClipBakeSettings { FrameRate = 30f, RotationEpsilon = 1e-3f, PositionEpsilon = 1e-3f };
+        BakedClip clip = AnimationClipBaker.Bake(path, binding, godot.Global, settings);
+        Assert.That(clip.Length, Is.EqualTo(path.Animation.Duration), "the whole clip: walks, stances and the jump");
+        Assert.That(clip.Length, Is.EqualTo(moves.Sum(m => m.Duration) + (2 * animator.Stance)).Within(1e-4f));
+
+        // The root bone's track follows the walks: at each bake frame inside a walk it is the binding's conversion of
+        // the animation there, within the epsilon.
+        BonePositionTrack root = clip.PositionTracks.Single();
+        float[] angles = new float[binding.Model.Rig.DofCount];
+        var rotations = new Quaternion[binding.BoneCount];
+        var positions = new Vector3[binding.BoneCount];
+        foreach (int m in new[] { 0, 2 })
+        {
+            float start = path.Animation.MoveStart(m);
+            float end = path.Animation.MoveEnd(m);
+            int frames = 0;
+            for (int k = (int)MathF.Ceiling(start * 30f); k / 30f <= end; k++, frames++)
+            {
+                float t = k / 30f;
+                binding.ConvertAngles(path.Animation.Sample(t, angles), angles, godot.Global, rotations, positions);
+                Assert.That(Vector3.Distance(root.Sample(t), positions[root.Bone]), Is.LessThan(1e-3f + 1e-5f), $"move {m} at frame {k}");
+            }
+
+            Assert.That(frames, Is.GreaterThan(20), $"frames in walk {m}");
+
+            Assert.That(root.Times.Count(t => t > start && t < end), Is.GreaterThan(0), $"keys inside walk {m}");
+            Assert.That(Vector3.Distance(root.Sample(end), root.Sample(start)), Is.GreaterThan(0.01f), $"the root moves through walk {m}");
+        }
+
+        // A path of one walk alone bakes too (a clip needs a move, not a jump).
+        IReadOnlyList<Move> walkOnly = [moves[0]];
+        BakedClip walking = AnimationClipBaker.Bake(animator.Animate(walkOnly), binding, godot.Global);
+        Assert.That(walking.Length, Is.EqualTo(moves[0].Duration));
     }
 
     [Test]

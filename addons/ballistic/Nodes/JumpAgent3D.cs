@@ -8,7 +8,7 @@ namespace Ballistic.Addon;
 
 /// <summary>
 /// The AI jump controller of one NPC, in the manner of <c>NavigationAgent3D</c>: set <see cref="TargetPosition"/> and
-/// the agent plans a sequence of ballistic jumps on its <see cref="JumpRoadmap3D"/> and flies them, moving its parent
+/// the agent plans a sequence of ballistic jumps and walks on its <see cref="JumpRoadmap3D"/> and performs them, moving its parent
 /// <see cref="Node3D"/> (or, with <see cref="MoveParent"/> off, only reporting where the body should be, for users
 /// who move their own <c>CharacterBody3D</c>). Beside a <see cref="NavigationAgent3D"/> that walks a navmesh with the
 /// roadmap's published links, it performs the jump of each link the navigation agent reaches. All decisions are
@@ -36,6 +36,18 @@ public partial class JumpAgent3D : Node
     /// <summary>The agent landed at <paramref name="position"/> (world metres).</summary>
     [Signal]
     public delegate void LandedEventHandler(Vector3 position);
+
+    /// <summary>
+    /// The agent started walking from <paramref name="from"/> to <paramref name="to"/> (body points on the ground, world
+    /// metres) along the ground, arriving after <paramref name="duration"/> seconds (<see cref="GetCurrentPath"/> holds
+    /// the way; <see cref="GetBodyPosition"/> and <see cref="GetBodyVelocity"/> follow it each tick).
+    /// </summary>
+    [Signal]
+    public delegate void WalkStartedEventHandler(Vector3 from, Vector3 to, double duration);
+
+    /// <summary>The agent finished a walk, standing at <paramref name="position"/> (world metres).</summary>
+    [Signal]
+    public delegate void WalkFinishedEventHandler(Vector3 position);
 
     /// <summary>The agent reached its target.</summary>
     [Signal]
@@ -73,7 +85,7 @@ public partial class JumpAgent3D : Node
     [Export(PropertyHint.Range, "0,5,0.01,or_greater,suffix:m")]
     public float TargetDesiredDistance { get; set; } = 0.5f;
 
-    /// <summary>Move the parent <see cref="Node3D"/> along the jumps; off, the node only reports (read <see cref="GetBodyPosition"/> and <see cref="GetBodyVelocity"/>).</summary>
+    /// <summary>Move the parent <see cref="Node3D"/> along the jumps and walks; off, the node only reports (read <see cref="GetBodyPosition"/> and <see cref="GetBodyVelocity"/>).</summary>
     [Export]
     public bool MoveParent { get; set; } = true;
 
@@ -175,7 +187,7 @@ public partial class JumpAgent3D : Node
     /// <summary>True once the target was reached.</summary>
     public bool IsTargetReached() => _logic?.IsTargetReached() ?? false;
 
-    /// <summary>The current path as world points: the jumps' arcs sampled every 0.25 m, from where the agent stands.</summary>
+    /// <summary>The current path as world points: the jumps' arcs and the walks' ground paths sampled at most 0.25 m apart, from where the agent stood when it started.</summary>
     public Vector3[] GetCurrentPath() => _logic is null ? [] : _logic.GetCurrentPath().Select(GodotMath.ToGodot).ToArray();
 
     /// <summary>
@@ -205,10 +217,10 @@ public partial class JumpAgent3D : Node
     /// <summary>Where the body should be this tick (world metres): the parent's position when <see cref="MoveParent"/> is on.</summary>
     public Vector3 GetBodyPosition() => _logic?.BodyPosition.ToGodot() ?? Vector3.Zero;
 
-    /// <summary>The body's velocity this tick, m/s: zero on a stance, a parabola's in flight.</summary>
+    /// <summary>The body's velocity this tick, m/s: zero on a stance, a parabola's in flight, the walking speed along the ground while walking.</summary>
     public Vector3 GetBodyVelocity() => _logic?.BodyVelocity.ToGodot() ?? Vector3.Zero;
 
-    /// <summary>A short state for labels: "waiting", "stance", "takeoff", "flight", "landing", "failed: …".</summary>
+    /// <summary>A short state for labels: "waiting", "stance", "walking", "takeoff", "flight", "landing", "failed: …".</summary>
     public string GetStateText() => _logic is null ? "not registered" : _logic.DescribeState();
 
     /// <summary>Moves the agent at once to stand at <paramref name="position"/> (world metres); with a target it replans.</summary>
@@ -243,6 +255,12 @@ public partial class JumpAgent3D : Node
             case LandedSignal s:
                 _linkJump = false;
                 EmitSignal(SignalName.Landed, s.Position.ToGodot());
+                break;
+            case WalkStartedSignal s:
+                EmitSignal(SignalName.WalkStarted, s.From.ToGodot(), s.To.ToGodot(), (double)s.Duration);
+                break;
+            case WalkFinishedSignal s:
+                EmitSignal(SignalName.WalkFinished, s.Position.ToGodot());
                 break;
             case TargetReachedSignal:
                 EmitSignal(SignalName.TargetReached);

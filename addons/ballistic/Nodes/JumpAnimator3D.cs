@@ -9,7 +9,8 @@ namespace Ballistic.Addon;
 
 /// <summary>
 /// The procedural animation player: every frame it poses a <see cref="Skeleton3D"/> from the runtime's whole-body
-/// animation of a <see cref="JumpAgent3D"/> (contact poses by IK, takeoff and landing phases, flight), matching the
+/// animation of a <see cref="JumpAgent3D"/> at its path time (contact poses by IK, takeoff and landing phases, flight,
+/// the walking gait), matching the
 /// rig's joints to the skeleton's bones by name (<see cref="SkeletonBinding"/>: Godot's name sanitising, optional
 /// renames, different rests, helper nodes between bones). It can also bake the agent's planned path into an
 /// <see cref="Animation"/> in an <see cref="AnimationLibrary"/> so designers can scrub it in the animation editor.

@@ -1,0 +1,313 @@
+using System.Numerics;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Paths;
+using Ballistic.Runtime.Systems;
+
+namespace Ballistic.Planner.Tests.Runtime;
+
+/// <summary>
+/// Agents following paths with walks (hand-made walk → jump → walk, animated by a test double): the root exactly on
+/// each walk at its speed, the walk events in order with their payloads, the walk queries, stopping at a walk's end,
+/// no allocation while walking.
+/// </summary>
+public sealed class WalkingRuntimeTests
+{
+    private const int MaxTicks = 60 * 30;
+
+    /// <summary>An agent performing <see cref="WalkingPaths.WalkJumpWalk"/>, with the moves.</summary>
+    private static (JumpWorld World, AgentHandle Agent, IReadOnlyList<Move> Moves) Performing(int which = 0)
+    {
+        (JumpWorld world, KindHandle kind) = WalkingPaths.World();
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk(which);
+        AddAgentResult added = world.AddAgent(kind, WalkingPaths.Centre(moves[0].To));
+        Assert.That(added.Ok, Is.True, added.Result.ToString());
+        Assert.That(world.PerformMoves(added.Agent, moves).Ok, Is.True);
+        Assert.That(world.GetRootPose(added.Agent), Is.EqualTo(moves[0].From.Pose), "stands on the first stance at once");
+        return (world, added.Agent, moves);
+    }
+
+    [Test]
+    public void AnAgentWalksJumpsAndWalksWithTheEventsInOrder()
+    {
+        (JumpWorld world, AgentHandle agent, IReadOnlyList<Move> moves) = Performing();
+        using (world)
+        {
+            AgentPath? path = null;
+            double pathStart = 0;
+            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
+            {
+                if (path is null && w.GetPath(agent) is { } p)
+                {
+                    path = p;
+                    pathStart = w.Time;
+                }
+            });
+
+            Assert.That(events.Select(e => e.Kind), Is.EqualTo(new[]
+            {
+                JumpEventKind.PathFound, JumpEventKind.WalkStarted, JumpEventKind.WalkFinished, JumpEventKind.JumpStarted,
+                JumpEventKind.Landed, JumpEventKind.WalkStarted, JumpEventKind.WalkFinished, JumpEventKind.TargetReached,
+            }), string.Join("; ", events.Select(e => $"{e.Kind} {e.Reason}")));
+            Assert.That(path, Is.Not.Null);
+            Assert.That(events.Skip(1).Select(e => e.Jump), Is.EqualTo(new[] { 0, 0, 1, 1, 2, 2, 2 }), "move indices");
+            Assert.That(events[1].Time, Is.EqualTo(pathStart).Within(1e-9), "the first walk starts when the path is found");
+
+            var walks = new[] { (Walk)moves[0], (Walk)moves[2] };
+            var jump = (Jump)moves[1];
+            for (int w = 0; w < 2; w++)
+            {
+                JumpEvent started = events[1 + (4 * w)];
+                JumpEvent finished = events[2 + (4 * w)];
+                int index = 2 * w;
+                Assert.That(started.Time, Is.EqualTo(pathStart + path!.Animation.MoveStart(index)).Within(1e-6), $"walk {index} starts on the clock");
+                Assert.That(finished.Time - started.Time, Is.EqualTo(walks[w].Length / walks[w].Speed).Within(1e-4), "a walk lasts its length over its speed");
+                Assert.That(started.Duration, Is.EqualTo(walks[w].Duration));
+                Assert.That(finished.Duration, Is.EqualTo(walks[w].Duration));
+                Assert.That(started.From, Is.EqualTo(walks[w].From.Pose.Position));
+                Assert.That(started.To, Is.EqualTo(walks[w].To.Pose.Position));
+                Assert.That(started.Velocity, Is.EqualTo(Vector3.Zero));
+                Assert.That(started.IsWalk && finished.IsWalk, Is.True);
+            }
+
+            Assert.That(events[3].From, Is.EqualTo(jump.Arc.Start));
+            Assert.That(events[3].Velocity, Is.EqualTo(jump.Arc.TakeoffVelocity));
+            Assert.That(events[4].Time - events[3].Time, Is.EqualTo(jump.Arc.FlightTime).Within(1e-4));
+            Assert.That(events[3].Time - events[2].Time, Is.EqualTo(0.2).Within(1e-4), "the stance between the walk and the jump");
+            Assert.That(events.Zip(events.Skip(1)).All(p => p.First.Time <= p.Second.Time + 1e-9), Is.True, "event times never go back");
+            Assert.That(events[^1].Time, Is.EqualTo(events[^2].Time).Within(1e-9), "arrives as the last walk ends");
+            Assert.That(world.GetRootPose(agent), Is.EqualTo(moves[2].To.Pose), "stands on the last stance");
+            Assert.That(world.GetStance(agent), Is.SameAs(moves[2].To));
+            Assert.That(world.GetState(agent), Is.EqualTo(AgentState.Idle));
+            Assert.That(world.GetTarget(agent), Is.Null);
+        }
+    }
+
+    [Test]
+    public void WalkingTheRootIsExactlyOnTheWalkAtItsSpeed()
+    {
+        (JumpWorld world, AgentHandle agent, IReadOnlyList<Move> moves) = Performing();
+        using (world)
+        {
+            float dt = (float)world.Settings.TickSeconds;
+            var walkingTicks = new int[3];
+            (int Index, Vector3 Position)? previous = null;
+            var states = new List<AgentState>();
+            RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
+            {
+                AgentState state = w.GetState(agent);
+                states.Add(state);
+                if (state != AgentState.Walking)
+                {
+                    Assert.That(w.TryGetCurrentWalk(agent, out _), Is.False, $"no walk in progress when {state}");
+                    previous = null;
+                    return;
+                }
+
+                Assert.That(w.TryGetCurrentWalk(agent, out WalkInfo info) && info.InProgress, Is.True, "a walk in progress is reported");
+                Assert.That(w.TryGetCurrentJump(agent, out _), Is.False, "no jump while walking");
+                Assert.That(info.Walk, Is.SameAs(moves[info.Index]), "the walk of the path");
+                Assert.That(w.GetMoveIndex(agent), Is.EqualTo(info.Index));
+                Vector3 position = w.GetRootPose(agent).Position;
+
+                // Exactly the walk's own evaluation at the time since it started, and (independently) at the path's clock.
+                Assert.That(w.GetRootPose(agent), Is.EqualTo(info.Walk.PoseAt((float)(w.Time - info.StartTime))));
+                AgentPath path = w.GetPath(agent)!;
+                float since = w.GetPathTime(agent) - path.Animation.MoveStart(info.Index);
+                Assert.That(since, Is.InRange(0f, info.Walk.Duration + 1e-4f));
+                Assert.That(Vector3.Distance(position, info.Walk.PoseAt(since).Position), Is.LessThan(1e-4f), $"off the walk at {since:0.###} s");
+
+                // On the ground path (lifted by the stance's trunk offset), never faster than the walking speed.
+                Vector3 lift = info.Walk.From.Pose.Position - info.Walk.Path[0];
+                Assert.That(WalkingPaths.DistanceToPolyline(position - lift, info.Walk.Path), Is.LessThan(1e-4f), "on the ground path");
+                if (previous is { } p && p.Index == info.Index)
+                {
+                    Vector3 step = position - p.Position;
+                    float horizontal = new Vector2(step.X, step.Z).Length() / dt;
+                    Assert.That(horizontal, Is.LessThanOrEqualTo(info.Speed + 1e-3f), "horizontal speed");
+                    Assert.That(step.Length() / dt, Is.GreaterThan(0.5f * info.Speed), "it moves");
+                }
+
+                previous = (info.Index, position);
+                walkingTicks[info.Index]++;
+            });
+
+            float[] expected = [((Walk)moves[0]).Duration, 0f, ((Walk)moves[2]).Duration];
+            for (int i = 0; i < 3; i += 2)
+            {
+                Assert.That(walkingTicks[i], Is.InRange((int)(expected[i] / dt) - 1, (int)(expected[i] / dt) + 1), $"ticks walking walk {i}");
+            }
+
+            Assert.That(states, Does.Contain(AgentState.Flight).And.Contain(AgentState.Stance));
+        }
+    }
+
+    [Test]
+    public void WhatComesNextIsKnownWhileWalking()
+    {
+        (JumpWorld world, AgentHandle agent, IReadOnlyList<Move> moves) = Performing();
+        using (world)
+        {
+            RuntimeWorlds.Run(world, MaxTicks, (w, _) => w.GetState(agent) == AgentState.Walking);
+            Assert.That(world.TryGetCurrentWalk(agent, out WalkInfo current), Is.True);
+            Assert.That(current.Index, Is.Zero);
+            double pathStart = world.Time - world.GetPathTime(agent);
+            AgentPath path = world.GetPath(agent)!;
+
+            Assert.That(world.TryGetNextJump(agent, out JumpInfo jump), Is.True, "the jump after the walk");
+            Assert.That(jump.Index, Is.EqualTo(1));
+            Assert.That(jump.InProgress, Is.False);
+            Assert.That(jump.Arc, Is.EqualTo(((Jump)moves[1]).Arc));
+            Assert.That(jump.TakeoffTime, Is.EqualTo(pathStart + path.Animation.MoveStart(1)).Within(1e-6));
+
+            Assert.That(world.TryGetNextWalk(agent, out WalkInfo next), Is.True, "the walk after the jump");
+            Assert.That(next.Index, Is.EqualTo(2));
+            Assert.That(next.Walk, Is.SameAs(moves[2]));
+            Assert.That(next.StartTime, Is.EqualTo(pathStart + path.Animation.MoveStart(2)).Within(1e-6));
+            Assert.That(next.EndTime - next.StartTime, Is.EqualTo(next.Duration).Within(1e-5));
+
+            // In the last walk nothing is left to come.
+            RuntimeWorlds.Run(world, MaxTicks, (w, _) => w.TryGetCurrentWalk(agent, out WalkInfo last) && last.Index == 2);
+            Assert.That(world.TryGetNextJump(agent, out _), Is.False);
+            Assert.That(world.TryGetNextWalk(agent, out _), Is.False);
+            Assert.That(world.GetMoveIndex(agent), Is.EqualTo(2));
+        }
+    }
+
+    [Test]
+    public void ANewTargetWhileWalkingStopsAtTheWalksEnd()
+    {
+        (JumpWorld world, AgentHandle agent, IReadOnlyList<Move> moves) = Performing();
+        using (world)
+        {
+            RuntimeWorlds.Run(world, MaxTicks, (w, _) => w.GetState(agent) == AgentState.Walking);
+            Vector3 elsewhere = RuntimeWorlds.Point(RuntimeWorlds.DesertSkeleton.Roadmap.Nodes[0]);
+            Assert.That(world.SetTarget(agent, elsewhere).Ok, Is.True);
+            Assert.That(world.TryGetNextJump(agent, out _), Is.False, "it will stop before the jump");
+            Assert.That(world.GetState(agent), Is.EqualTo(AgentState.Walking), "it walks on to the walk's end");
+
+            List<JumpEvent> events = RuntimeWorlds.Run(world, MaxTicks, (w, seen) => seen.Any(e => e.Kind == JumpEventKind.WalkFinished));
+            Assert.That(events.Select(e => e.Kind), Is.EqualTo(new[] { JumpEventKind.WalkFinished }));
+            Assert.That(world.GetPath(agent), Is.Null, "the old path is dropped at the walk's end");
+            Assert.That(world.GetRootPose(agent), Is.EqualTo(moves[0].To.Pose), "stopped on the walk's last stance");
+            Assert.That(world.GetStance(agent), Is.SameAs(moves[0].To));
+            Assert.That(world.IsPathPending(agent), Is.True, "planning toward the new target from there");
+
+            List<JumpEvent> after = RuntimeWorlds.Run(world, 120, (w, seen) => seen.Any(e => e.Kind is JumpEventKind.PathFound or JumpEventKind.PathFailed));
+            Assert.That(after.Select(e => e.Kind), Has.No.Member(JumpEventKind.Landed), "the old jump is not performed");
+        }
+    }
+
+    [Test]
+    public void ATickOfWalkingAgentsAllocatesNothing()
+    {
+        (JumpWorld world, KindHandle kind) = WalkingPaths.World();
+        using (world)
+        {
+            var agents = new List<AgentHandle>();
+            for (int i = 0; i < 3; i++)
+            {
+                IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk(i);
+                AgentHandle agent = world.AddAgent(kind, WalkingPaths.Centre(moves[0].To)).Agent;
+                Assert.That(world.PerformMoves(agent, moves).Ok, Is.True);
+                agents.Add(agent);
+                ((Walk)moves[0]).PoseAt(0.3f); // first use of the walk's code outside the measure
+            }
+
+            // Until every path is delivered (animations and path objects allocate, by design).
+            RuntimeWorlds.Run(world, 60, (w, _) => w.QueuedRequests == 0 && w.AnimatingRequests == 0);
+            Assert.That(agents.All(a => world.GetPath(a) is not null), Is.True);
+
+            int walking = 0;
+            for (int tick = 0; tick < 150; tick++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                world.Step();
+                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                Assert.That(allocated, Is.Zero, $"tick {world.Tick} allocated {allocated} bytes");
+                walking += agents.Count(a => world.GetState(a) == AgentState.Walking);
+            }
+
+            Assert.That(walking, Is.GreaterThan(100), "the ticks measured had agents walking");
+        }
+    }
+
+    [Test]
+    public void APathOfMovesHasItsWalksOnTheAnimationsClock()
+    {
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        var animator = new SimpleMoveAnimator(RuntimeWorlds.DesertSkeleton.Animator, stance: 0.3f);
+        Planner.Animation.JumpAnimation animation = animator.Animate(moves);
+        var path = new AgentPath(Vector3.One, moves, animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(path.Count, Is.EqualTo(3));
+            Assert.That(path.JumpCount, Is.EqualTo(1));
+            Assert.That(path.WalkCount, Is.EqualTo(2));
+            Assert.That(path.Start, Is.SameAs(moves[0].From));
+            Assert.That(path.Goal, Is.SameAs(moves[2].To));
+            Assert.That(path.Duration, Is.EqualTo(animation.Duration));
+            Assert.That(path.Duration, Is.EqualTo(moves.Sum(m => m.Duration) + 0.6f).Within(1e-4f));
+            for (int i = 0; i < 3; i++)
+            {
+                PathMove move = path.Moves[i];
+                Assert.That(move.Index, Is.EqualTo(i));
+                Assert.That(move.Kind, Is.EqualTo(moves[i] is Walk ? MoveKind.Walk : MoveKind.Jump));
+                Assert.That(move.Walk, Is.SameAs(moves[i] as Walk));
+                Assert.That(move.Start, Is.EqualTo(animation.MoveStart(i)));
+                Assert.That(move.End, Is.EqualTo(animation.MoveEnd(i)));
+                Assert.That(move.StanceEnd, Is.EqualTo(i < 2 ? animation.MoveStart(i + 1) : animation.MoveEnd(i)));
+                Assert.That(move.Duration, Is.EqualTo(moves[i].Duration));
+                Assert.That(move.StartPose, Is.EqualTo(moves[i].From.Pose));
+                Assert.That(move.EndPose, Is.EqualTo(moves[i].To.Pose));
+                Assert.That(move.ToMove(), Is.EqualTo(moves[i]));
+            }
+
+            Assert.That(path.Moves[0].TakeoffEnd, Is.EqualTo(path.Moves[0].Start), "a walk has no takeoff");
+            Assert.That(path.Moves[0].LandingStart, Is.EqualTo(path.Moves[0].End), "a walk has no landing");
+            Assert.That(path.Moves[1].Arc, Is.EqualTo(((Jump)moves[1]).Arc));
+        });
+
+        // An animation of other moves is refused.
+        Planner.Animation.JumpAnimation other = animator.Animate([moves[1], moves[2]]);
+        Assert.That(() => new AgentPath(Vector3.One, moves, other), Throws.ArgumentException);
+        Planner.Animation.JumpAnimation swapped = animator.Animate([moves[0], moves[1], WalkingPaths.WalkJumpWalk(1)[2]]);
+        Assert.That(() => new AgentPath(Vector3.One, moves, swapped), Throws.ArgumentException.With.Message.Contains("Move 2"));
+    }
+
+    [Test]
+    public void PerformingMovesThatDoNotChainIsRefused()
+    {
+        (JumpWorld world, AgentHandle agent, IReadOnlyList<Move> moves) = Performing();
+        using (world)
+        {
+            RuntimeResult result = world.PerformMoves(agent, [moves[0], moves[2]]);
+            Assert.That(result.Status, Is.EqualTo(RuntimeStatus.InvalidArgument));
+            Assert.That(result.Reason, Does.Contain("move 1"));
+            Assert.That(world.PerformMoves(agent, []).Status, Is.EqualTo(RuntimeStatus.InvalidArgument));
+        }
+    }
+
+    [Test]
+    public void TheWorldsLocomotionAndJumpEffortReachTheSearch()
+    {
+        var settings = new WorldSettings { Locomotion = Locomotion.Jump, JumpEffort = 3.5f };
+        var search = new RoadmapSearch(RuntimeWorlds.DesertSkeleton, settings);
+        Assert.That(search.Settings.Locomotion, Is.EqualTo(Locomotion.Jump));
+        Assert.That(search.Settings.JumpEffort, Is.EqualTo(3.5f));
+
+        var defaults = new WorldSettings();
+        Assert.That(defaults.Locomotion, Is.EqualTo(new QuerySettings().Locomotion));
+        Assert.That(defaults.JumpEffort, Is.EqualTo(new QuerySettings().JumpEffort));
+        Assert.That(new RoadmapSearch(RuntimeWorlds.DesertSkeleton, defaults).Settings.Locomotion, Is.EqualTo(Locomotion.WalkAndJump));
+
+        Assert.That(new WorldSettings { JumpEffort = -1f }.Problem(), Does.Contain("JumpEffort"));
+        Assert.That(new WorldSettings { JumpEffort = float.NaN }.Problem(), Does.Contain("JumpEffort"));
+        Assert.That(new WorldSettings { Locomotion = (Locomotion)7 }.Problem(), Does.Contain("Locomotion"));
+        Assert.That(() => new JumpWorld(RuntimeWorlds.DesertSkeleton.Scene.Level, new WorldSettings { JumpEffort = -1f }), Throws.ArgumentException.With.Message.Contains("JumpEffort"));
+    }
+}
