@@ -27,9 +27,9 @@ internal static class CliCommands
 
     private static Option<int> ThreadsOption() => new("--threads") { Description = "Worker threads (the roadmap does not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
 
-    private static Option<string> LocomotionOption() => new("--locomotion") { Description = "walk+jump: walk where the ground allows, jump where it must; jump: jumps only (the paper's planner).", DefaultValueFactory = _ => "walk+jump" };
+    internal static Option<string> LocomotionOption() => new("--locomotion") { Description = "walk+jump: walk where the ground allows, jump where it must; jump: jumps only (the paper's planner).", DefaultValueFactory = _ => "walk+jump" };
 
-    private static Locomotion ParseLocomotion(string value) => value switch
+    internal static Locomotion ParseLocomotion(string value) => value switch
     {
         "walk+jump" => Locomotion.WalkAndJump,
         "jump" => Locomotion.Jump,
