@@ -39,6 +39,7 @@ public sealed class JumpAnimator : IJumpAnimator
     private readonly LimbIk _holdIk;
     private readonly BodyCollision _collision;
     private readonly int _requiredContacts;
+    private readonly WalkGait _gait;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -49,6 +50,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _holdIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 12 });
         _collision = _contacts.Collision;
         _requiredContacts = scene.Character.RequiredContacts;
+        _gait = new WalkGait(scene, model, _contacts);
         Model = model;
     }
 
@@ -66,20 +68,27 @@ public sealed class JumpAnimator : IJumpAnimator
         return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count);
     }
 
-    /// <summary>Animates the jumps at <paramref name="frameRate"/> frames per second.</summary>
-    /// <exception cref="ArgumentException">No jumps, or a non-positive frame rate.</exception>
+    /// <summary>
+    /// Animates the moves at <paramref name="frameRate"/> frames per second: jumps as flights between contact poses,
+    /// walks with a gait (<see cref="WalkGait"/>) from where the previous move left the feet to the contact pose the
+    /// next one needs. Frames during a walk come at every fine step (<see cref="ContactSubsteps"/> per frame interval)
+    /// since feet hold contacts throughout; the stance after a walk or before one lasts no time.
+    /// </summary>
+    /// <exception cref="ArgumentException">No moves, a null move, or a non-positive frame rate.</exception>
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
     {
         ArgumentNullException.ThrowIfNull(moves);
-        if (moves.Any(m => m is not Jump))
+        if (moves.Count == 0)
         {
-            throw new NotSupportedException("Walking moves are not animated yet."); // TEMPORARY: the gait lands in this issue
+            throw new ArgumentException("There are no moves to animate.", nameof(moves));
         }
 
-        Jump[] jumps = [.. moves.Cast<Jump>()];
-        if (jumps.Length == 0)
+        for (int m = 0; m < moves.Count; m++)
         {
-            throw new ArgumentException("There are no jumps to animate.", nameof(jumps));
+            if (moves[m] is not (Jump or Walk))
+            {
+                throw new ArgumentException($"Move {m} is {(moves[m] is null ? "null" : "of an unknown kind")}.", nameof(moves));
+            }
         }
 
         if (!(frameRate > 0f) || !float.IsFinite(frameRate))
@@ -87,45 +96,89 @@ public sealed class JumpAnimator : IJumpAnimator
             throw new ArgumentException("The frame rate must be positive.", nameof(frameRate));
         }
 
-        // Each jump: its contact poses and flight. The landing contacts push off again when they can.
-        var clips = new List<Clip>();
+        // Each jump: its contact poses and flight. The landing contacts push off again when they can; a jump after a
+        // walk takes off from the contact pose generated for it, which the walk ends on.
+        var clips = new Clip?[moves.Count];
         var problems = new List<JumpProblem>();
         int failed = 0;
-        for (int j = 0; j < jumps.Length; j++)
+        for (int m = 0; m < moves.Count; m++)
         {
-            BallisticArc arc = jumps[j].Arc;
-            ContactConfiguration? landed = j > 0 ? clips[j - 1].Landing : null;
-            Clip clip;
-            if (landed is { Valid: true } && landed.Cone.Contains(arc.TakeoffVelocity, 1e-3f))
+            if (moves[m] is not Jump jump)
             {
-                clip = AnimateJump(j, jumps[j], landed, frameRate);
+                continue;
+            }
+
+            BallisticArc arc = jump.Arc;
+            ContactConfiguration? landed = m > 0 ? clips[m - 1]?.Landing : null;
+            Clip clip;
+            if (m > 0 && moves[m - 1] is Walk)
+            {
+                clip = AnimateJump(m, jump, _contacts.Generate(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity), frameRate);
+            }
+            else if (landed is { Valid: true } && landed.Cone.Contains(arc.TakeoffVelocity, 1e-3f))
+            {
+                clip = AnimateJump(m, jump, landed, frameRate);
                 if (clip.Problems.Count > 0)
                 {
-                    Clip fresh = AnimateJump(j, jumps[j], null, frameRate);
+                    Clip fresh = AnimateJump(m, jump, null, frameRate);
                     clip = fresh.Problems.Count < clip.Problems.Count ? fresh : clip;
                 }
             }
             else
             {
-                clip = AnimateJump(j, jumps[j], null, frameRate);
+                clip = AnimateJump(m, jump, null, frameRate);
             }
 
             failed += (clip.Takeoff.Valid ? 0 : 1) + (clip.Landing.Valid ? 0 : 1);
             problems.AddRange(clip.Problems);
-            clips.Add(clip);
+            clips[m] = clip;
         }
 
-        // Assemble: flights, and between them the stances with their steps; contact phases along the way.
+        // Each walk: from the previous move's landing (or walk's end) pose, or the first stance's, to the next jump's
+        // takeoff pose, or the last stance's.
+        var walks = new WalkGait.Clip?[moves.Count];
+        ContactConfiguration? left = null;
+        for (int m = 0; m < moves.Count; m++)
+        {
+            if (moves[m] is not Walk walk)
+            {
+                left = clips[m]!.Landing;
+                continue;
+            }
+
+            ContactConfiguration start = left ?? Stand(m, walk.From, "start", problems);
+            ContactConfiguration end = m + 1 < moves.Count && clips[m + 1] is Clip next ? next.Takeoff : Stand(m, walk.To, "end", problems);
+            WalkGait.Clip animated = _gait.Animate(m, walk, start, end, frameRate);
+            problems.AddRange(animated.Problems);
+            walks[m] = animated;
+            left = end;
+        }
+
+        // Assemble: moves, and between two jumps the stances with their steps; contact phases along the way.
         var frames = new List<AnimationFrame>();
         var phases = new List<ContactPhase>();
         var stances = new List<float>();
         var open = new Dictionary<int, (Vector3 Position, float From)>();
         int colliding = 0;
         float clock = 0f;
-        for (int j = 0; j < clips.Count; j++)
+        for (int m = 0; m < moves.Count; m++)
         {
-            Clip clip = clips[j];
-            if (j == 0)
+            if (walks[m] is WalkGait.Clip walked)
+            {
+                AddWalk(walked, clock, m == 0, frames, phases, open);
+                colliding += walked.CollidingFrames;
+                clock += moves[m].Duration;
+                if (m + 1 < moves.Count)
+                {
+                    stances.Add(0f);
+                }
+
+                continue;
+            }
+
+            Jump jump = (Jump)moves[m];
+            Clip clip = clips[m]!;
+            if (m == 0)
             {
                 foreach (LimbContact c in clip.Takeoff.Contacts)
                 {
@@ -153,16 +206,16 @@ public sealed class JumpAnimator : IJumpAnimator
                 open[c.Limb] = (c.Position, clock + clip.Makes[c.Limb]);
             }
 
-            foreach (AnimationFrame f in j == 0 ? clip.Frames : clip.Frames[1..])
+            foreach (AnimationFrame f in m == 0 ? clip.Frames : clip.Frames[1..])
             {
                 frames.Add(f with { Time = clock + f.Time });
             }
 
             colliding += clip.CollidingFrames;
-            clock += jumps[j].Arc.FlightTime;
-            if (j + 1 < clips.Count)
+            clock += jump.Arc.FlightTime;
+            if (m + 1 < moves.Count && clips[m + 1] is Clip following)
             {
-                Stance stance = Restep(j + 1, jumps[j].Arc.Landing, clip.Landing, clips[j + 1].Takeoff, frameRate);
+                Stance stance = Restep(m + 1, jump.Arc.Landing, clip.Landing, following.Takeoff, frameRate);
                 problems.AddRange(stance.Problems);
                 foreach ((int limb, float start, LimbContact? next) in stance.Steps)
                 {
@@ -185,6 +238,10 @@ public sealed class JumpAnimator : IJumpAnimator
                 stances.Add(stance.Duration);
                 clock += stance.Duration;
             }
+            else if (m + 1 < moves.Count)
+            {
+                stances.Add(0f);
+            }
         }
 
         foreach ((int limb, (Vector3 position, float from)) in open)
@@ -194,7 +251,59 @@ public sealed class JumpAnimator : IJumpAnimator
 
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-        return new JumpAnimation(Model, jumps, stances, frames, phases, problems, failed, colliding);
+        return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+    }
+
+    /// <summary>
+    /// Appends a walk's frames (but its first, the previous move's last, unless it comes first) and contact phases at
+    /// <paramref name="clock"/>: a foot still on the contact the previous move left it on continues that phase; the
+    /// phases that last to the walk's end stay open for the next move.
+    /// </summary>
+    private static void AddWalk(WalkGait.Clip walk, float clock, bool first, List<AnimationFrame> frames, List<ContactPhase> phases, Dictionary<int, (Vector3 Position, float From)> open)
+    {
+        float end = walk.Frames[^1].Time;
+        var left = new Dictionary<int, (Vector3 Position, float From)>(open);
+        open.Clear();
+        foreach (ContactPhase phase in walk.Phases.OrderBy(p => p.From))
+        {
+            float from = clock + phase.From;
+            if (phase.From <= 1e-6f && left.TryGetValue(phase.Limb, out (Vector3 Position, float From) o) && Vector3.Distance(o.Position, phase.Position) <= 1e-3f)
+            {
+                from = o.From;
+                left.Remove(phase.Limb);
+            }
+
+            if (phase.To >= end - 1e-6f)
+            {
+                open[phase.Limb] = (phase.Position, from);
+            }
+            else
+            {
+                phases.Add(phase with { From = from, To = clock + phase.To });
+            }
+        }
+
+        foreach ((int limb, (Vector3 position, float from)) in left)
+        {
+            phases.Add(new ContactPhase(limb, position, from, clock));
+        }
+
+        foreach (AnimationFrame f in first ? walk.Frames : walk.Frames[1..])
+        {
+            frames.Add(f with { Time = clock + f.Time });
+        }
+    }
+
+    /// <summary>The contact pose at stance <paramref name="node"/> a walk starts or ends on; a pose that is not valid is a problem of walk <paramref name="move"/>.</summary>
+    private ContactConfiguration Stand(int move, RoadmapNode node, string which, List<JumpProblem> problems)
+    {
+        ContactConfiguration stance = _contacts.Generate(node.Pose, node.Contacts, node.Cone.Axis);
+        if (!stance.Valid)
+        {
+            problems.Add(new JumpProblem(move, $"the walk's {which} stance: {stance.Reason}"));
+        }
+
+        return stance;
     }
 
     /// <summary>One jump animated on its own: frames from takeoff (t = 0) to landing, the contact poses, when each limb's contact breaks and is made.</summary>

@@ -1,0 +1,1031 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> exactly; the feet
+/// (<see cref="LimbKind.Foot"/> limbs) form two groups that alternate, split by side and rank front to back (a
+/// biped's left and right, a quadruped's diagonal pairs: a trot, a hexapod's tripods). The walk is cut into
+/// half-cycles; in each one group swings while the other holds, both holding for <see cref="Overlap"/> of the
+/// half-cycle at each of its ends. A full half-cycle covers one step (<see cref="StepShare"/> of the leg, shortened
+/// to what the legs reach by IK with the sole flat) and turns the trunk by at most <see cref="MaxTurn"/>; the first
+/// and last are shorter, as far as the feet still on the start contacts can stay and as far ahead as the feet already
+/// on the end contacts can land. A foothold is the foot's stance offset (from the start and end contact poses,
+/// centred in the range its leg reaches, blended) at the trunk pose in the middle of the half-cycle it is held in,
+/// dropped onto the ground by a ray, and moved toward the walk's centre line when the ground there is missing, off the
+/// path's height by more than a step, or the leg cannot hold it. The feet start on the contacts the walk starts from
+/// and the last two half-cycles plant them on the contacts it ends on. Held feet are kept on their footholds by IK at
+/// every fine step with the sole flat on the ground; a swinging foot follows a lifted curve (a cubic Bézier leaving
+/// one foothold and reaching the next along the ground's normal), raised when a bone would touch the level. Other
+/// limbs (hands) let go during the first half-cycle, hang, and take the end's contacts during the last. Whatever
+/// cannot be done (no foothold, a foot that cannot hold or follow its swing, a bone in the level) is reported.
+/// </summary>
+internal sealed class WalkGait
+{
+    /// <summary>Share of each half-cycle at each of its ends during which both groups of feet hold.</summary>
+    public const float Overlap = 0.1f;
+
+    /// <summary>The distance the trunk walks in one full half-cycle (a step), as a share of the leg length, at most.</summary>
+    public const float StepShare = 0.7f;
+
+    /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
+    public const float MaxTurn = MathF.PI / 9f;
+
+    /// <summary>Least duration of a half-cycle, seconds: its swing lasts at least <see cref="JumpAnimator.MinAirTime"/>.</summary>
+    public const float MinHalfCycle = JumpAnimator.MinAirTime / (1f - (2f * Overlap));
+
+    /// <summary>Fine steps per frame interval on which the feet are solved; each becomes a frame.</summary>
+    public const int Substeps = 4;
+
+    /// <summary>Distance (metres) within which an effector still or already touches its contact point: a swing's first and last moments count in the contact phases around it.</summary>
+    public const float Touch = 0.8f * BodyCollision.ContactClearance;
+
+    /// <summary>Most a swinging effector moves in the fine step after lifting off or before touching down, metres.</summary>
+    private const float FirstMove = 0.005f;
+
+    /// <summary>How closely a swinging effector follows its curve between its first and last fine steps, metres.</summary>
+    public const float SwingTolerance = 0.005f;
+
+    /// <summary>How far a held sole may tilt from the ground, radians (5°).</summary>
+    public const float SoleTolerance = 5f * MathF.PI / 180f;
+
+    /// <summary>Lifts of a swinging foot above the higher of its two footholds, as shares of the step height, tried in order.</summary>
+    private static readonly float[] Lifts = [0.35f, 0.6f, 1f, 1.5f, 2.2f];
+
+    /// <summary>Shares of a foothold's sideways offset from the walk's path tried, nominal first.</summary>
+    private static readonly float[] Inward = [1f, 0.75f, 0.5f, 0.25f, 0f];
+
+    /// <summary>Shifts of a foothold along the walk tried at each sideways share, as shares of the step.</summary>
+    private static readonly float[] Along = [0f, -0.25f, 0.25f, -0.5f];
+
+    /// <summary>Probes of how far a held foot reaches: this many increments up to the leg length.</summary>
+    private const int ProbeSteps = 40;
+
+    private readonly PlanningScene _scene;
+    private readonly CharacterModel _model;
+    private readonly ContactGenerator _contacts;
+    private readonly LimbIk _ik;
+    private readonly LimbIk _freeIk;
+    private readonly LimbIk _swingIk;
+    private readonly BodyCollision _collision;
+
+    /// <summary>Creates the gait of <paramref name="model"/> on <paramref name="scene"/>, using the animator's contact generator.</summary>
+    public WalkGait(PlanningScene scene, CharacterModel model, ContactGenerator contacts)
+    {
+        _scene = scene;
+        _model = model;
+        _contacts = contacts;
+        _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, NormalTolerance = SoleTolerance });
+        _freeIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 });
+        _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
+        _collision = contacts.Collision;
+    }
+
+    /// <summary>A walk animated on its own: frames and contact phases on the walk's clock (0 to its duration), problems, frames with a bone in the level, the step length (metres) and half-cycle count chosen.</summary>
+    public sealed record Clip(AnimationFrame[] Frames, List<ContactPhase> Phases, int CollidingFrames, List<JumpProblem> Problems, float Step, int HalfCycles);
+
+    /// <summary>How a limb is moved over a span of fine steps (both ends included).</summary>
+    private abstract record Segment(int From, int To);
+
+    /// <summary>
+    /// The limb holds a point by IK; <see cref="Settle"/>: its angles end on the walk's end pose; <see cref="Seed"/>:
+    /// angles known to hold it at <see cref="Segment.From"/>, or <c>null</c>.
+    /// </summary>
+    private sealed record Holding(int From, int To, Vector3 Point, Vector3 Normal, bool Settle, float[]? Seed = null) : Segment(From, To);
+
+    /// <summary>The limb is free, its angles going from <see cref="Start"/> to <see cref="End"/> (smoothly).</summary>
+    private sealed record Free(int From, int To, float[] Start, float[] End) : Segment(From, To);
+
+    /// <summary>The limb swings from the state before it to the state after it.</summary>
+    private sealed record Swinging(int From, int To) : Segment(From, To);
+
+    /// <summary>Animates <paramref name="walk"/> from the contact pose <paramref name="start"/> to <paramref name="end"/>.</summary>
+    /// <param name="move">Index of the walk in the path, for problems.</param>
+    /// <param name="walk">The walk.</param>
+    /// <param name="start">Where the previous move left the body (a landing contact pose, or the first stance's).</param>
+    /// <param name="end">The pose the next move needs (a takeoff contact pose, or the last stance's).</param>
+    /// <param name="frameRate">Frames per second.</param>
+    public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate) =>
+        new Run(this, move, walk, start, end, frameRate).Animate();
+
+    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>: as flat as <see cref="SoleTolerance"/> when it can, else within the contact generator's 15°.</summary>
+    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) =>
+        _ik.Solve(root, q, limb, point, -normal).Success || _freeIk.Solve(root, q, limb, point, -normal).Success;
+
+    private static float Smooth(float x)
+    {
+        x = Math.Clamp(x, 0f, 1f);
+        return x * x * (3f - (2f * x));
+    }
+
+    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
+    {
+        foreach (LimbContact c in config.Contacts)
+        {
+            if (c.Limb == limb)
+            {
+                return c;
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>What a contact pose lets one foot do: where it stands in the trunk's frame, how far the trunk may move either way along a direction with the foot held.</summary>
+    private readonly record struct Footing(Vector3 Local, float Ahead, float Behind);
+
+    /// <summary>One walk being animated: its fine grid, the angles at each fine step, and what went wrong.</summary>
+    private sealed class Run
+    {
+        private readonly WalkGait _gait;
+        private readonly CharacterModel _model;
+        private readonly Rig _rig;
+        private readonly int _move;
+        private readonly Walk _walk;
+        private readonly ContactConfiguration _start;
+        private readonly ContactConfiguration _end;
+        private readonly int _steps;
+        private readonly float _h;
+        private readonly RootPose[] _roots;
+        private readonly float[][] _angles;
+        private readonly bool[] _colliding;
+        private readonly Vector3[] _positions;
+        private readonly Quaternion[] _rotations;
+        private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
+        private readonly List<JumpProblem> _problems = [];
+        private readonly List<ContactPhase> _phases = [];
+        private readonly int _limbs;
+        private float _leg;
+        private float _stepHeight;
+        private float _step;
+        private float[] _boundaries = [];
+        private int[] _swingStart = [];
+        private int[] _swingEnd = [];
+        private Vector3[] _startLocal = [];
+        private Vector3[] _endLocal = [];
+
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
+        {
+            _gait = gait;
+            _model = gait._model;
+            _rig = _model.Rig;
+            _limbs = _model.Limbs.Count;
+            _move = move;
+            _walk = walk;
+            _start = start;
+            _end = end;
+            int frames = Math.Max(2, (int)MathF.Ceiling(walk.Duration * frameRate));
+            _steps = frames * Substeps;
+            _h = walk.Duration / _steps;
+            _roots = new RootPose[_steps + 1];
+            _angles = new float[_steps + 1][];
+            _colliding = new bool[_steps + 1];
+            _positions = new Vector3[_rig.Joints.Count];
+            _rotations = new Quaternion[_rig.Joints.Count];
+        }
+
+        private float Time(int i) => i >= _steps ? _walk.Duration : i * _h;
+
+        private int Step(float time) => Math.Clamp((int)MathF.Round(time / _h), 0, _steps);
+
+        private bool IsFoot(int l) => _model.Limbs[l].Kind == LimbKind.Foot;
+
+        public Clip Animate()
+        {
+            if (!(_walk.Duration > 1e-6f))
+            {
+                _problems.Add(new JumpProblem(_move, "the walk has no length: its stances cannot be walked between"));
+                RootPose root = _walk.PoseAt(0f);
+                return new Clip([new AnimationFrame(0f, root, (float[])_start.Angles.Clone()), new AnimationFrame(0f, root, (float[])_end.Angles.Clone())], [], 0, _problems, 0f, 0);
+            }
+
+            TrunkAndRoots();
+            WalkingLimits walking = _gait._scene.Character.Walking;
+            _leg = MathF.Max(LegLength(_start), LegLength(_end));
+            _stepHeight = walking.StepHeight > 0f ? walking.StepHeight : 0.25f * _leg;
+
+            // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis (to
+            // centre the footholds between) and along the way the walk leaves and arrives (to size the first and last half-cycles).
+            Footing[] startForward = Footings(_start, Forward(_start.Root));
+            Footing[] endForward = Footings(_end, Forward(_end.Root));
+            Footing[] startAlong = Footings(_start, _walk.HeadingAt(0f));
+            Footing[] endAlong = Footings(_end, _walk.HeadingAt(_walk.Length));
+            _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
+            _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
+
+            // The step: StepShare of the leg; long enough that a first or last swing lasts MinAirTime; short enough that a
+            // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays in reach.
+            float reach = float.PositiveInfinity;
+            for (int l = 0; l < _limbs; l++)
+            {
+                reach = MathF.Min(reach, MathF.Min(HalfRange(startForward[l]), HalfRange(endForward[l])));
+            }
+
+            float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
+            _step = MathF.Max(MathF.Min(step, reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+
+            // Feet in two groups; the group whose feet can stay least on the start contacts steps first.
+            int[] group = Groups();
+            int first = FirstGroup(group, startAlong);
+            _boundaries = Boundaries(group, first, startAlong, endAlong);
+            int n = _boundaries.Length - 1;
+            _swingStart = new int[n];
+            _swingEnd = new int[n];
+            for (int k = 0; k < n; k++)
+            {
+                float t0 = _boundaries[k] / _walk.Speed;
+                float t1 = _boundaries[k + 1] / _walk.Speed;
+                float overlap = Overlap * (t1 - t0);
+
+                // Both groups hold before the first boundary and after the last, not across them: the feet on the
+                // start contacts lift right at the first, those on the end contacts land right at the last.
+                _swingStart[k] = Step(k == 1 && n > 2 ? t0 : t0 + overlap);
+                _swingEnd[k] = Math.Max(_swingStart[k] + 1, Step(k == n - 2 && n > 2 ? t1 : t1 - overlap));
+            }
+
+            for (int l = 0; l < _limbs; l++)
+            {
+                Perform(l, IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : HandPlan(l, n));
+            }
+
+            // Frames at every fine step; bones of no limb are checked on each.
+            var frames = new AnimationFrame[_steps + 1];
+            bool trunkReported = false;
+            for (int i = 0; i <= _steps; i++)
+            {
+                frames[i] = new AnimationFrame(Time(i), _roots[i], _angles[i]);
+                _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                int bone = _gait._collision.OtherBoneColliding(_positions);
+                if (bone >= 0)
+                {
+                    _colliding[i] = true;
+                    if (!trunkReported)
+                    {
+                        trunkReported = true;
+                        _problems.Add(new JumpProblem(_move, $"bone '{_rig.Joints[bone].Name}' passes through the level {Time(i):0.000} s into the walk"));
+                    }
+                }
+            }
+
+            foreach (((int limb, string kind), (float distance, int count)) in _failures.OrderBy(f => f.Key.Limb).ThenBy(f => f.Value.Distance))
+            {
+                string where = count > 1 ? $"{count} times, first {distance:0.00} m along the walk" : $"{distance:0.00} m along the walk";
+                _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})"));
+            }
+
+            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n);
+        }
+
+        /// <summary>The roots on the walk at every fine step; the trunk's angles (in no limb) going smoothly from the start pose's to the end pose's; limbs as at the start.</summary>
+        private void TrunkAndRoots()
+        {
+            bool[] limbDof = new bool[_rig.DofCount];
+            foreach (RigLimb limb in _model.Limbs)
+            {
+                foreach (int d in limb.ChainDofs)
+                {
+                    limbDof[d] = true;
+                }
+            }
+
+            for (int i = 0; i <= _steps; i++)
+            {
+                _roots[i] = _walk.PoseAt(Time(i));
+                float w = Smooth(Time(i) / _walk.Duration);
+                float[] q = (float[])_start.Angles.Clone();
+                for (int d = 0; d < q.Length; d++)
+                {
+                    if (!limbDof[d])
+                    {
+                        q[d] = float.Lerp(_start.Angles[d], _end.Angles[d], w);
+                    }
+                }
+
+                _angles[i] = q;
+            }
+        }
+
+        private void Fail(int limb, string kind, int step)
+        {
+            float distance = _walk.DistanceAt(Time(step));
+            _failures[(limb, kind)] = _failures.TryGetValue((limb, kind), out (float Distance, int Count) f) ? (MathF.Min(f.Distance, distance), f.Count + 1) : (distance, 1);
+        }
+
+        private static Vector3 Forward(RootPose root)
+        {
+            Vector3 f = root.Forward;
+            f.Y = 0f;
+            return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.UnitZ;
+        }
+
+        /// <summary>Where limb <paramref name="l"/> stands in <paramref name="config"/>, world: its contact, or where its effector is.</summary>
+        private Vector3 Stand(ContactConfiguration config, int l)
+        {
+            if (ContactOf(config, l) is LimbContact c)
+            {
+                return c.Position;
+            }
+
+            _rig.Solve(config.Root, config.Angles, _positions, _rotations);
+            return _model.Limbs[l].EffectorPosition(_positions, _rotations);
+        }
+
+        private Vector3 ToLocal(RootPose root, Vector3 world) => Vector3.Transform(world - root.Position, Quaternion.Conjugate(root.Rotation));
+
+        /// <summary>The greatest height (metres, along the trunk's up axis) of a foot's root joint above where the foot stands.</summary>
+        private float LegLength(ContactConfiguration config)
+        {
+            float leg = 0f;
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (IsFoot(l))
+                {
+                    Vector3 foot = Stand(config, l);
+                    _rig.Solve(config.Root, config.Angles, _positions, _rotations);
+                    leg = MathF.Max(leg, Vector3.Dot(_positions[_model.Limbs[l].RootJoint] - foot, config.Root.Up));
+                }
+            }
+
+            return leg > 0f ? leg : 0.5f;
+        }
+
+        /// <summary>
+        /// For each foot of <paramref name="config"/>: where it stands in the trunk's frame, and how far (metres) the
+        /// trunk may move along <paramref name="direction"/> (Ahead) and against it (Behind) while the foot holds its
+        /// contact by IK, sole flat, no bone in the level, probed in small increments up to the leg length. Free feet
+        /// and other limbs are not limited.
+        /// </summary>
+        private Footing[] Footings(ContactConfiguration config, Vector3 direction)
+        {
+            var footings = new Footing[_limbs];
+            for (int l = 0; l < _limbs; l++)
+            {
+                Vector3 local = ToLocal(config.Root, Stand(config, l));
+                if (!IsFoot(l) || ContactOf(config, l) is not LimbContact c)
+                {
+                    footings[l] = new Footing(local, float.PositiveInfinity, float.PositiveInfinity);
+                    continue;
+                }
+
+                RigLimb limb = _model.Limbs[l];
+                float[] reached = new float[2];
+                float increment = _leg / ProbeSteps;
+                for (int side = 0; side < 2; side++)
+                {
+                    float[] q = (float[])config.Angles.Clone();
+                    float x = 0f;
+                    for (int k = 1; k <= ProbeSteps; k++)
+                    {
+                        var root = new RootPose(config.Root.Position + (direction * ((side == 0 ? 1f : -1f) * k * increment)), config.Root.Rotation);
+                        float[] trial = (float[])q.Clone();
+                        if (!_gait.Hold(root, trial, limb, c.Position, c.Normal))
+                        {
+                            break;
+                        }
+
+                        _rig.Solve(root, trial, _positions, _rotations);
+                        if (_gait._collision.LimbCollides(limb, _positions, _rotations, c.Position))
+                        {
+                            break;
+                        }
+
+                        q = trial;
+                        x = k * increment;
+                    }
+
+                    reached[side] = x;
+                }
+
+                footings[l] = new Footing(local, reached[0], reached[1]);
+            }
+
+            return footings;
+        }
+
+        /// <summary>The foot's stance position in the trunk's frame moved along the trunk's forward axis to the middle of the range its leg reaches.</summary>
+        private static Vector3 Centred(Footing footing) =>
+            float.IsFinite(footing.Ahead) && float.IsFinite(footing.Behind)
+                ? footing.Local + (Vector3.UnitZ * ((footing.Behind - footing.Ahead) * 0.5f))
+                : footing.Local;
+
+        private static float HalfRange(Footing footing) => (footing.Ahead + footing.Behind) * 0.5f;
+
+        /// <summary>Each foot's group (0 or 1): (side + rank front to back on its side) mod 2; −1 for other limbs.</summary>
+        private int[] Groups()
+        {
+            var local = new Vector3[_limbs];
+            for (int l = 0; l < _limbs; l++)
+            {
+                local[l] = _startLocal[l];
+            }
+
+            int[] group = new int[_limbs];
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (!IsFoot(l))
+                {
+                    group[l] = -1;
+                    continue;
+                }
+
+                int side = local[l].X >= 0f ? 0 : 1;
+                int rank = 0;
+                for (int o = 0; o < _limbs; o++)
+                {
+                    if (o != l && IsFoot(o) && (local[o].X >= 0f ? 0 : 1) == side
+                        && (local[o].Z > local[l].Z || (local[o].Z == local[l].Z && o < l)))
+                    {
+                        rank++;
+                    }
+                }
+
+                group[l] = (side + rank) % 2;
+            }
+
+            return group;
+        }
+
+        /// <summary>The group to swing first: the one with the foot that can stay least on its start contact as the trunk walks off (the other holds meanwhile).</summary>
+        private static int FirstGroup(int[] group, Footing[] along)
+        {
+            float[] least = [float.PositiveInfinity, float.PositiveInfinity];
+            bool[] any = new bool[2];
+            for (int l = 0; l < group.Length; l++)
+            {
+                if (group[l] >= 0)
+                {
+                    any[group[l]] = true;
+                    least[group[l]] = MathF.Min(least[group[l]], along[l].Ahead);
+                }
+            }
+
+            return !any[1] ? 0 : !any[0] ? 1 : least[1] < least[0] ? 1 : 0;
+        }
+
+        /// <summary>
+        /// The half-cycles' boundaries along the path, metres. The first lasts as long as the group holding the start
+        /// contacts can stay on them (half a step at most), the last as long as the group already on the end contacts
+        /// can hold them before the walk ends; each one between covers at most one step and turns the trunk by at most
+        /// <see cref="MaxTurn"/> (their shares summed at most one), all of them alike.
+        /// </summary>
+        private float[] Boundaries(int[] group, int first, Footing[] startAlong, Footing[] endAlong)
+        {
+            float length = _walk.Length;
+
+            // Cost along the path: distance in steps plus turning in MaxTurns, sampled every centimetre or so, but never
+            // more than one per the distance walked in MinHalfCycle: a walk turning faster than that is not followed by
+            // faster steps (its held feet fail and say so).
+            int samples = Math.Clamp((int)MathF.Ceiling(length / 0.01f), 16, 100_000);
+            float[] cost = new float[samples + 1];
+            Quaternion previous = _walk.PoseAtDistance(0f).Rotation;
+            float piece = length / samples;
+            for (int i = 1; i <= samples; i++)
+            {
+                Quaternion rotation = _walk.PoseAtDistance(length * i / samples).Rotation;
+                float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(previous, rotation)), 0f, 1f));
+                cost[i] = cost[i - 1] + MathF.Min((piece / _step) + (turn / MaxTurn), piece / (_walk.Speed * MinHalfCycle));
+                previous = rotation;
+            }
+
+            float DistanceAtCost(float c)
+            {
+                int i = Array.BinarySearch(cost, c);
+                i = i >= 0 ? i : Math.Clamp(~i, 1, samples);
+                float span = cost[i] - cost[i - 1];
+                float f = span > 0f ? Math.Clamp((c - cost[i - 1]) / span, 0f, 1f) : 1f;
+                return length * (i - 1 + f) / samples;
+            }
+
+            float CostAt(float distance)
+            {
+                float x = Math.Clamp(distance / length, 0f, 1f) * samples;
+                int i = Math.Min((int)x, samples - 1);
+                return float.Lerp(cost[i], cost[i + 1], x - i);
+            }
+
+            // How far the trunk may walk while a group stays on the start contacts, or lands early on the end ones.
+            float Stay(int g, Footing[] footings, bool atEnd)
+            {
+                float least = float.PositiveInfinity;
+                for (int l = 0; l < _limbs; l++)
+                {
+                    if (group[l] == g)
+                    {
+                        least = MathF.Min(least, atEnd ? footings[l].Behind : footings[l].Ahead);
+                    }
+                }
+
+                return Math.Clamp(least, MathF.Min(_walk.Speed * MinHalfCycle * 0.5f, 0.5f * _step), 0.5f * _step);
+            }
+
+            float firstLength = MathF.Min(Stay(1 - first, startAlong, atEnd: false), DistanceAtCost(0.5f));
+            float lastLength = 0f;
+            int n = 2;
+            for (int pass = 0; pass < 2; pass++)
+            {
+                // The group on the end contacts during the last half-cycle is the one that swung in the one before it.
+                int holder = pass == 0 ? -1 : ((n - 2) % 2 == 0 ? first : 1 - first);
+                float stay = holder < 0 ? MathF.Min(Stay(0, endAlong, atEnd: true), Stay(1, endAlong, atEnd: true)) : Stay(holder, endAlong, atEnd: true);
+                lastLength = MathF.Min(stay, length - DistanceAtCost(cost[samples] - 0.5f));
+                float middle = CostAt(length - lastLength) - CostAt(firstLength);
+                int count = firstLength + lastLength >= length ? 2 : 2 + Math.Max(1, (int)MathF.Ceiling(middle - 1e-4f));
+                if (pass == 1 && (count - n) % 2 != 0)
+                {
+                    break; // the holder would change again: keep the first pass's, which suits either group
+                }
+
+                n = count;
+            }
+
+            var boundaries = new float[n + 1];
+            boundaries[n] = length;
+            if (n == 2)
+            {
+                boundaries[1] = length * firstLength / (firstLength + lastLength);
+                return boundaries;
+            }
+
+            boundaries[1] = firstLength;
+            boundaries[n - 1] = length - lastLength;
+            float c0 = CostAt(firstLength);
+            float c1 = CostAt(length - lastLength);
+            for (int k = 2; k < n - 1; k++)
+            {
+                boundaries[k] = DistanceAtCost(float.Lerp(c0, c1, (k - 1) / (float)(n - 2)));
+            }
+
+            return boundaries;
+        }
+
+        /// <summary>
+        /// A foot's segments: the start contact (or free) until its first swing; after each swing the foothold of the
+        /// next half-cycle (which its group holds) until its next swing; the end contact (or free) after its last.
+        /// </summary>
+        private List<Segment> FootPlan(int l, int parity, int halfCycles)
+        {
+            var plan = new List<Segment>();
+            Segment Stance(int a, int b, bool atEnd)
+            {
+                ContactConfiguration config = atEnd ? _end : _start;
+                return ContactOf(config, l) is LimbContact c
+                    ? new Holding(a, b, c.Position, c.Normal, atEnd)
+                    : new Free(a, b, config.Angles, config.Angles);
+            }
+
+            int last = (halfCycles - 1) % 2 == parity ? halfCycles - 1 : halfCycles - 2;
+            Segment current = Stance(0, 0, atEnd: false);
+            for (int k = parity; k < halfCycles; k += 2)
+            {
+                plan.Add(current with { To = _swingStart[k] });
+                plan.Add(new Swinging(_swingStart[k], _swingEnd[k]));
+                current = k == last ? Stance(_swingEnd[k], _steps, atEnd: true) : Foothold(l, k + 1, _swingEnd[k], _swingStart[k + 2]);
+            }
+
+            plan.Add(current);
+            return plan;
+        }
+
+        /// <summary>A hand (or any limb that does not walk): lets go during the first half-cycle, hangs, and takes the end's contact during the last.</summary>
+        private List<Segment> HandPlan(int l, int halfCycles)
+        {
+            float[] hang = Hang(l);
+            int a0 = _swingStart[0];
+            int b0 = _swingEnd[0];
+            int a1 = _swingStart[halfCycles - 1];
+            int b1 = _swingEnd[halfCycles - 1];
+            var plan = new List<Segment>();
+            if (ContactOf(_start, l) is LimbContact s)
+            {
+                plan.Add(new Holding(0, a0, s.Position, s.Normal, Settle: false));
+                plan.Add(new Swinging(a0, b0));
+            }
+            else
+            {
+                plan.Add(new Free(0, a0, _start.Angles, _start.Angles));
+                plan.Add(new Free(a0, b0, _start.Angles, hang));
+            }
+
+            plan.Add(new Free(b0, a1, hang, hang));
+            if (ContactOf(_end, l) is LimbContact e)
+            {
+                plan.Add(new Swinging(a1, b1));
+                plan.Add(new Holding(b1, _steps, e.Position, e.Normal, Settle: true));
+            }
+            else
+            {
+                plan.Add(new Free(a1, b1, hang, _end.Angles));
+                plan.Add(new Free(b1, _steps, _end.Angles, _end.Angles));
+            }
+
+            return plan;
+        }
+
+        /// <summary>The angles a hand hangs in while walking: its free pose at the start or end, else one clear of the level mid-walk.</summary>
+        private float[] Hang(int l)
+        {
+            if (ContactOf(_start, l) is null)
+            {
+                return _start.Angles;
+            }
+
+            if (ContactOf(_end, l) is null)
+            {
+                return _end.Angles;
+            }
+
+            float[] q = (float[])_angles[_steps / 2].Clone();
+            _gait._contacts.KeepFree(_roots[_steps / 2], q, l);
+            return q;
+        }
+
+        /// <summary>
+        /// The foothold of foot <paramref name="l"/> in half-cycle <paramref name="k"/>, held from fine step
+        /// <paramref name="from"/> to <paramref name="to"/>: its centred stance offset at the trunk pose mid-half-cycle,
+        /// dropped on the ground, moved toward the path's centre line until the ground is there and the leg holds it.
+        /// </summary>
+        private Holding Foothold(int l, int k, int from, int to)
+        {
+            RigLimb limb = _model.Limbs[l];
+            float distance = (_boundaries[k] + _boundaries[k + 1]) * 0.5f;
+            RootPose pose = _walk.PoseAtDistance(distance);
+            Vector3 nominal = pose.ToWorld(Vector3.Lerp(_startLocal[l], _endLocal[l], Smooth(distance / _walk.Length)));
+            Vector3 ground = _walk.PointAt(distance);
+            Vector3 heading = _walk.HeadingAt(distance);
+            Vector3 across = nominal - ground;
+            across.Y = 0f;
+            Vector3 along = Vector3.Dot(across, heading) * heading;
+            Vector3 lateral = across - along;
+            WalkingLimits walking = _gait._scene.Character.Walking;
+            float slope = MathF.Tan(walking.MaxSlopeDegrees * MathF.PI / 180f);
+            (Vector3 Point, Vector3 Normal)? grounded = null;
+            int mid = Step(distance / _walk.Speed);
+            foreach ((float share, float shift) in Inward.SelectMany(i => Along.Select(a => (i, a))))
+            {
+                Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
+                float reach = _stepHeight + (slope * new Vector2(column.X - ground.X, column.Z - ground.Z).Length());
+                float top = ground.Y + reach + 0.05f;
+                if (!_gait._scene.Bvh.Raycast(new Vector3(column.X, top, column.Z), -Vector3.UnitY, (2f * reach) + 0.1f, out RayHit hit)
+                    || MathF.Abs(hit.Point.Y - ground.Y) > reach
+                    || _gait._scene.Surfaces.SurfaceOf(hit.Triangle) < 0
+                    || !limb.Filter.Accepts(hit.Normal)
+                    || hit.Normal.Y < walking.MinGroundCosine - 1e-3f)
+                {
+                    continue;
+                }
+
+                grounded ??= (hit.Point, hit.Normal);
+                if (CanHold(l, hit.Point, hit.Normal, [mid, from, to]) is float[] seed)
+                {
+                    return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
+                }
+            }
+
+            if (grounded is (Vector3 point, Vector3 normal))
+            {
+                Fail(l, "reaches no foothold it can stand on", mid);
+                return new Holding(from, to, point, normal, Settle: false);
+            }
+
+            Fail(l, "finds no ground to step on", mid);
+            return new Holding(from, to, new Vector3(nominal.X, ground.Y, nominal.Z), Vector3.UnitY, Settle: false);
+        }
+
+        /// <summary>
+        /// The angles with which limb <paramref name="l"/> holds <paramref name="point"/> by IK at the second of the
+        /// fine steps given, when it holds it at each of them (from its stance angles, in order) with no bone in the
+        /// level; <c>null</c> when it cannot.
+        /// </summary>
+        private float[]? CanHold(int l, Vector3 point, Vector3 normal, int[] steps)
+        {
+            RigLimb limb = _model.Limbs[l];
+            float[] q = Stance(_walk.DistanceAt(Time(steps[0])) / _walk.Length);
+            float[]? seed = null;
+            foreach (int i in steps)
+            {
+                float[] trial = (float[])_angles[i].Clone();
+                foreach (int d in limb.ChainDofs)
+                {
+                    trial[d] = q[d];
+                }
+
+                if (!_gait.Hold(_roots[i], trial, limb, point, normal))
+                {
+                    return null;
+                }
+
+                _rig.Solve(_roots[i], trial, _positions, _rotations);
+                if (_gait._collision.LimbCollides(limb, _positions, _rotations, point))
+                {
+                    return null;
+                }
+
+                seed = i == steps[1] ? trial : seed;
+                q = trial;
+            }
+
+            return seed;
+        }
+
+        /// <summary>The angles a foot's chain tends to while walking, <paramref name="u"/> of the way along: the start pose's blended into the end pose's.</summary>
+        private float[] Stance(float u)
+        {
+            float w = Smooth(u);
+            float[] q = new float[_rig.DofCount];
+            for (int d = 0; d < q.Length; d++)
+            {
+                q[d] = float.Lerp(_start.Angles[d], _end.Angles[d], w);
+            }
+
+            return q;
+        }
+
+        /// <summary>Moves limb <paramref name="l"/> through its segments, writing its angles at every fine step.</summary>
+        private void Perform(int l, List<Segment> plan)
+        {
+            RigLimb limb = _model.Limbs[l];
+            var holds = new List<Holding>();
+            for (int s = 0; s < plan.Count; s++)
+            {
+                switch (plan[s])
+                {
+                    case Holding hold:
+                        HoldOn(l, hold);
+                        holds.Add(hold);
+                        break;
+                    case Free free:
+                        for (int i = free.From; i <= free.To; i++)
+                        {
+                            float w = free.To > free.From ? Smooth((i - free.From) / (float)(free.To - free.From)) : 1f;
+                            foreach (int d in limb.ChainDofs)
+                            {
+                                _angles[i][d] = float.Lerp(free.Start[d], free.End[d], w);
+                            }
+
+                            _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                            if (_gait._collision.LimbCollides(limb, _positions, _rotations, null))
+                            {
+                                _colliding[i] = true;
+                                Fail(l, "passes through the level", i);
+                            }
+                        }
+
+                        break;
+                    case Swinging swing:
+                        Swing(l, swing, s > 0 ? plan[s - 1] : null, s + 1 < plan.Count ? plan[s + 1] : null);
+                        break;
+                }
+            }
+
+            // Each hold is a contact phase, from the first fine step to the last when the effector is within Touch of
+            // its point (the swings around it leave and reach it gradually).
+            foreach (Holding hold in holds)
+            {
+                int from = hold.From;
+                int to = hold.To;
+                while (from > 0 && Near(l, from - 1, hold.Point))
+                {
+                    from--;
+                }
+
+                while (to < _steps && Near(l, to + 1, hold.Point))
+                {
+                    to++;
+                }
+
+                _phases.Add(new ContactPhase(l, hold.Point, Time(from), Time(to)));
+            }
+        }
+
+        /// <summary>True when limb <paramref name="l"/>'s effector lies within <see cref="Touch"/> of <paramref name="point"/> at fine step <paramref name="i"/>.</summary>
+        private bool Near(int l, int i, Vector3 point)
+        {
+            _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+            return Vector3.Distance(_model.Limbs[l].EffectorPosition(_positions, _rotations), point) <= Touch;
+        }
+
+        /// <summary>Holds the segment's point by IK at every fine step, sole flat, from the angles the limb has at its first.</summary>
+        private void HoldOn(int l, Holding hold)
+        {
+            RigLimb limb = _model.Limbs[l];
+            float[] q = (float[])_angles[hold.From].Clone();
+            bool slipped = false;
+            for (int i = hold.From; i <= hold.To; i++)
+            {
+                float[] trial = _angles[i];
+                float w = hold.Settle ? Pull(i - hold.From, hold.To - hold.From) : 0f;
+                foreach (int d in limb.ChainDofs)
+                {
+                    trial[d] = float.Lerp(q[d], _end.Angles[d], w);
+                }
+
+                if (!_gait.Hold(_roots[i], trial, limb, hold.Point, hold.Normal) && !Reseeded(i, trial, limb, hold, q))
+                {
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        trial[d] = q[d];
+                    }
+
+                    if (!slipped)
+                    {
+                        slipped = true;
+                        Fail(l, "cannot hold its foothold", i);
+                    }
+                }
+
+                _rig.Solve(_roots[i], trial, _positions, _rotations);
+                if (_gait._collision.LimbCollides(limb, _positions, _rotations, hold.Point))
+                {
+                    _colliding[i] = true;
+                    Fail(l, "passes through the level while holding a foothold", i);
+                }
+
+                Array.Copy(trial, q, q.Length);
+            }
+        }
+
+        /// <summary>Holds at fine step <paramref name="i"/> from the hold's known angles, then from the stance angles, when the limb's own fail.</summary>
+        private bool Reseeded(int i, float[] trial, RigLimb limb, Holding hold, float[] q)
+        {
+            foreach (float[]? seed in new[] { hold.Seed, hold.Settle ? _end.Angles : Stance(_walk.DistanceAt(Time(i)) / _walk.Length) })
+            {
+                if (seed is null)
+                {
+                    continue;
+                }
+
+                float[] attempt = (float[])trial.Clone();
+                foreach (int d in limb.ChainDofs)
+                {
+                    attempt[d] = seed[d];
+                }
+
+                if (_gait.Hold(_roots[i], attempt, limb, hold.Point, hold.Normal))
+                {
+                    Array.Copy(attempt, trial, trial.Length);
+                    return true;
+                }
+            }
+
+            return false;
+        }
+
+        /// <summary>
+        /// The share of what is left of the way to a target pose to move at step <paramref name="k"/> of
+        /// <paramref name="count"/>, so that a pose moved by these shares alone follows a smoothstep from its start to the target.
+        /// </summary>
+        private static float Pull(int k, int count)
+        {
+            if (k <= 0 || count <= 0)
+            {
+                return 0f;
+            }
+
+            float before = Smooth((k - 1) / (float)count);
+            return before >= 1f - 1e-6f ? 1f : Math.Clamp((Smooth(k / (float)count) - before) / (1f - before), 0f, 1f);
+        }
+
+        /// <summary>
+        /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
+        /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
+        /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
+        /// </summary>
+        private void Swing(int l, Swinging swing, Segment? previous, Segment? next)
+        {
+            RigLimb limb = _model.Limbs[l];
+            int a = swing.From;
+            int b = swing.To;
+            float[] startAngles = (float[])_angles[a].Clone();
+            _rig.Solve(_roots[a], startAngles, _positions, _rotations);
+            Vector3 p0 = limb.EffectorPosition(_positions, _rotations);
+            Vector3 n0 = limb.EffectorNormal(_rotations);
+            Vector3? contact0 = null;
+            Vector3 ground0 = Vector3.UnitY;
+            if (previous is Holding held)
+            {
+                (p0, n0, contact0, ground0) = (held.Point, -held.Normal, held.Point, held.Normal);
+            }
+
+            float[] endAngles;
+            Vector3 p1;
+            Vector3 n1;
+            Vector3? contact1 = null;
+            Vector3 ground1 = Vector3.UnitY;
+            if (next is Holding target)
+            {
+                (p1, n1, contact1, ground1) = (target.Point, -target.Normal, target.Point, target.Normal);
+                endAngles = target.Seed ?? (target.Settle ? _end.Angles : Stance(_walk.DistanceAt(Time(b)) / _walk.Length));
+            }
+            else
+            {
+                endAngles = next is Free free ? free.Start : _end.Angles;
+                float[] q = (float[])_angles[b].Clone();
+                foreach (int d in limb.ChainDofs)
+                {
+                    q[d] = endAngles[d];
+                }
+
+                _rig.Solve(_roots[b], q, _positions, _rotations);
+                p1 = limb.EffectorPosition(_positions, _rotations);
+                n1 = limb.EffectorNormal(_rotations);
+            }
+
+            Vector3 up = Vector3.Normalize(ground0 + ground1);
+            float h0 = Vector3.Dot(p0, up);
+            float h1 = Vector3.Dot(p1, up);
+            var keys = new float[b - a + 1][];
+            float[][]? best = null;
+            int bestFailures = int.MaxValue;
+            foreach (float share in Lifts)
+            {
+                float top = MathF.Max(h0, h1) + (share * _stepHeight);
+                float c0 = (top - h0) * 4f / 3f;
+                float c1 = (top - h1) * 4f / 3f;
+
+                // The cubic Bézier through p0, p0 + c0·up, p1 + c1·up, p1: straight up off the ground, straight down
+                // onto it; its time warped (slower at both ends) so that the effector moves at most FirstMove in the
+                // swing's first and last fine steps: still touching then, and already clear of the ground.
+                Vector3 Curve(float s) =>
+                    p0 + ((p1 - p0) * Smooth(s)) + (up * ((c0 * 3f * s * (1f - s) * (1f - s)) + (c1 * 3f * s * s * (1f - s))));
+                float Warp(float tau, float slow) => tau - (slow * MathF.Sin(2f * MathF.PI * tau) / (2f * MathF.PI));
+                float first = 1f / (b - a);
+                float slow = 0f;
+                while (slow < 0.99f && MathF.Max(Vector3.Distance(Curve(Warp(first, slow)), p0), Vector3.Distance(Curve(Warp(1f - first, slow)), p1)) > FirstMove)
+                {
+                    slow += 0.03f;
+                }
+                float[] q = (float[])startAngles.Clone();
+                int failures = 0;
+                for (int i = a; i <= b; i++)
+                {
+                    float s = Warp((i - a) / (float)(b - a), slow);
+                    float[] trial = (float[])_angles[i].Clone();
+                    float w = Pull(i - a, b - a);
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        trial[d] = float.Lerp(q[d], endAngles[d], w);
+                    }
+
+                    if (i > a && !(i == b && contact1 is null))
+                    {
+                        Vector3 p = Curve(s);
+                        Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
+                        bool solved = i == b
+                            ? _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._freeIk.Solve(_roots[i], trial, limb, p, n).Success
+                            : _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
+                                || _gait._swingIk.Solve(_roots[i], trial, limb, p, null).Success;
+                        failures += solved ? 0 : 1;
+                    }
+
+                    _rig.Solve(_roots[i], trial, _positions, _rotations);
+                    Vector3? near = i == a ? contact0 : i == b ? contact1 : null;
+                    if (_gait._collision.LimbCollides(limb, _positions, _rotations, near))
+                    {
+                        failures++;
+                    }
+
+                    keys[i - a] = trial;
+                    q = trial;
+                }
+
+                if (failures < bestFailures)
+                {
+                    bestFailures = failures;
+                    best = [.. keys];
+                }
+
+                if (failures == 0)
+                {
+                    break;
+                }
+            }
+
+            for (int i = a; i <= b; i++)
+            {
+                foreach (int d in limb.ChainDofs)
+                {
+                    _angles[i][d] = best![i - a][d];
+                }
+            }
+
+            if (bestFailures > 0)
+            {
+                for (int i = a; i <= b; i++)
+                {
+                    _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                    if (_gait._collision.LimbCollides(limb, _positions, _rotations, i == a ? contact0 : i == b ? contact1 : null))
+                    {
+                        _colliding[i] = true;
+                    }
+                }
+
+                Fail(l, "cannot swing to its next foothold within reach and clear of the level", a);
+            }
+        }
+    }
+}
