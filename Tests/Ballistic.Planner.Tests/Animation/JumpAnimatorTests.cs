@@ -23,7 +23,7 @@ public sealed class JumpAnimatorTests
         Vector3 from = LevelPoints.Ground(scene.Bvh, -9.5f, -7.5f)!.Value;
         Vector3 to = LevelPoints.Ground(scene.Bvh, 9.5f, 7.5f)!.Value;
         var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
-        (AnimatedPlan plan, _) = planner.BakeAndPlan(from, to, new BakeSettings { MaxNodes = 600, Threads = 2 });
+        (AnimatedPlan plan, _) = planner.BakeAndPlan(from, to, new BakeSettings { MaxNodes = 600, Threads = 2, Locomotion = Locomotion.Jump }); // the jump animation: jumps only
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         return (scene, plan.Result, plan.Animation!);
     });

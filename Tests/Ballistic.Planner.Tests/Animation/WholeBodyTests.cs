@@ -62,7 +62,7 @@ public sealed class WholeBodyTests
         Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
         var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
-        (AnimatedPlan plan, _) = planner.BakeAndPlan(LevelPoints.Ground(scene.Bvh, 7.7f, 5.8f)!.Value, LevelPoints.Ground(scene.Bvh, -7.5f, -8.5f)!.Value, new BakeSettings { MaxNodes = 600, Threads = 2 });
+        (AnimatedPlan plan, _) = planner.BakeAndPlan(LevelPoints.Ground(scene.Bvh, 7.7f, 5.8f)!.Value, LevelPoints.Ground(scene.Bvh, -7.5f, -8.5f)!.Value, new BakeSettings { MaxNodes = 600, Threads = 2, Locomotion = Locomotion.Jump });
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         JumpAnimation animation = plan.Animation!;
         Assert.That(animation.Arcs, Has.Count.GreaterThan(2));
