@@ -30,7 +30,7 @@ public class AnimationBenchmarks
 
         Vector3 from = Ground(-9.5f, -7.5f);
         Vector3 to = Ground(9.5f, 7.5f);
-        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true });
+        BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true });
         _jumps = [.. new PathQuery(scene, bake.Roadmap).Plan(from, to).Jumps];
         _animator = new JumpAnimator(scene, CharacterPresets.Model("skeleton"));
     }

@@ -30,7 +30,7 @@ public class PlanningBenchmarks
     {
         _scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
         _baker = new RoadmapBaker(_scene);
-        Roadmap roadmap = _baker.Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000 }).Roadmap;
+        Roadmap roadmap = _baker.Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000 }).Roadmap;
         _query = new PathQuery(_scene, roadmap);
         var random = new Random(3);
         _pairs = [.. Enumerable.Range(0, 20_000)
@@ -43,7 +43,7 @@ public class PlanningBenchmarks
 
     /// <summary>Bake to the paper's 22 nodes, one thread.</summary>
     [Benchmark]
-    public int BakeDesertTo22Nodes() => _baker.Bake(new BakeSettings { Seed = 1, MaxNodes = 22, Threads = 1 }).Roadmap.Edges.Count;
+    public int BakeDesertTo22Nodes() => _baker.Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 1, MaxNodes = 22, Threads = 1 }).Roadmap.Edges.Count;
 
     /// <summary>A start-to-goal query on the 1,000-node roadmap (projection, connection, A*).</summary>
     [Benchmark]

@@ -23,14 +23,15 @@ public class QueryBenchmarks
     private (RoadmapNode From, RoadmapNode To)[] _nodes = [];
     private int _next;
 
-    private static readonly QuerySettings PreferNodes = new() { PreferRoadmapNodes = true };
+    private static readonly QuerySettings PreferNodes = new() { PreferRoadmapNodes = true, Locomotion = Locomotion.Jump };
+    private static readonly QuerySettings JumpOnly = new() { Locomotion = Locomotion.Jump };
 
     /// <summary>Bakes the roadmap and draws 256 requests between random nodes (and their first contacts).</summary>
     [GlobalSetup]
     public void Setup()
     {
         var scene = PlanningScene.Create(BundledLevels.Load("desert"), CharacterPresets.Skeleton());
-        _roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000 }).Roadmap;
+        _roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000 }).Roadmap;
         _query = new PathQuery(scene, _roadmap);
         var random = new Random(3);
         _points = [.. Enumerable.Range(0, 256).Select(_ => (_roadmap.Nodes[random.Next(_roadmap.Nodes.Count)].Contacts[0].Position, _roadmap.Nodes[random.Next(_roadmap.Nodes.Count)].Contacts[0].Position))];
@@ -42,7 +43,7 @@ public class QueryBenchmarks
     public int PointToPoint()
     {
         (Vector3 from, Vector3 to) = _points[_next++ % _points.Length];
-        return _query.Plan(from, to).Jumps.Count;
+        return _query.Plan(from, to, JumpOnly).Jumps.Count;
     }
 
     /// <summary>From a point to a point, taking a roadmap node standing close enough instead of placing a stance (<see cref="QuerySettings.PreferRoadmapNodes"/>).</summary>
@@ -58,7 +59,7 @@ public class QueryBenchmarks
     public int NodeToNode()
     {
         (RoadmapNode from, RoadmapNode to) = _nodes[_next++ % _nodes.Length];
-        return _query.Plan(from, to).Jumps.Count;
+        return _query.Plan(from, to, JumpOnly).Jumps.Count;
     }
 
     /// <summary>From a roadmap node to a point: the goal placed and steered into the roadmap, then A*.</summary>
@@ -66,7 +67,7 @@ public class QueryBenchmarks
     public int NodeToPoint()
     {
         int k = _next++ % _nodes.Length;
-        return _query.Plan(_nodes[k].From, _points[k].To).Jumps.Count;
+        return _query.Plan(_nodes[k].From, _points[k].To, JumpOnly).Jumps.Count;
     }
 
     /// <summary>The roadmap node standing nearest a point within the default endpoint tolerance.</summary>

@@ -32,7 +32,7 @@ public class RuntimeBenchmarks
     public void Setup()
     {
         var scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
-        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000 }).Roadmap;
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000 }).Roadmap;
         _kind = new CharacterKind(scene, roadmap, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
         var random = new Random(5);
         while (_pairs.Count < 200)

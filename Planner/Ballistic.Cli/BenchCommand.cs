@@ -72,10 +72,10 @@ internal static class BenchCommand
             var baker = new RoadmapBaker(scene);
             var times = new List<double>();
             BakeResult? last = null;
-            baker.Bake(new BakeSettings { Seed = 1_000, MaxNodes = Math.Min(nodes, 50), Threads = threads }); // warm-up, not counted
+            baker.Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 1_000, MaxNodes = Math.Min(nodes, 50), Threads = threads }); // warm-up, not counted
             for (int r = 0; r < runs; r++)
             {
-                last = baker.Bake(new BakeSettings { Seed = r + 1, MaxNodes = nodes, Threads = threads });
+                last = baker.Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = r + 1, MaxNodes = nodes, Threads = threads });
                 times.Add(last.Elapsed.TotalSeconds);
             }
 
@@ -90,7 +90,7 @@ internal static class BenchCommand
         // Query, steering and box queries on the desert with the skeleton.
         Level desert = levels.TryGetValue("desert", out Level? d) ? d : LoadBundled("desert");
         var desertScene = PlanningScene.Create(desert, CharacterPresets.Skeleton());
-        Roadmap roadmap = new RoadmapBaker(desertScene).Bake(new BakeSettings { Seed = 7, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap;
+        Roadmap roadmap = new RoadmapBaker(desertScene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap;
         var query = new PathQuery(desertScene, roadmap);
         var random = new Random(3);
         var queryTimes = new List<double>();
@@ -103,7 +103,7 @@ internal static class BenchCommand
             Vector3 from = a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position;
             Vector3 to = b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position;
             var clock = Stopwatch.StartNew();
-            PlanResult result = query.Plan(from, to);
+            PlanResult result = query.Plan(from, to, new QuerySettings { Locomotion = Locomotion.Jump });
             if (q >= warmUp)
             {
                 queryTimes.Add(clock.Elapsed.TotalMilliseconds);
@@ -188,8 +188,8 @@ internal static class BenchCommand
             var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
             Vector3 start = CliInputs.OnGround(scene.Bvh, from.X, from.Z, from.Y);
             Vector3 goal = CliInputs.OnGround(scene.Bvh, to.X, to.Z, to.Y);
-            BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 600, Start = start, Goal = goal, StopWhenConnected = true });
-            PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(start, goal);
+            BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, MaxNodes = 600, Start = start, Goal = goal, StopWhenConnected = true });
+            PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(start, goal, new QuerySettings { Locomotion = Locomotion.Jump });
             if (plan.Status != PlannerStatus.Exact)
             {
                 output.WriteLine($"| {characterName} on {levelName} | no path: {plan.Reason} | | | |");

@@ -27,6 +27,15 @@ internal static class CliCommands
 
     private static Option<int> ThreadsOption() => new("--threads") { Description = "Worker threads (the roadmap does not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
 
+    internal static Option<string> LocomotionOption() => new("--locomotion") { Description = "walk+jump: walk where the ground allows, jump where it must; jump: jumps only (the paper's planner).", DefaultValueFactory = _ => "walk+jump" };
+
+    internal static Locomotion ParseLocomotion(string value) => value switch
+    {
+        "walk+jump" => Locomotion.WalkAndJump,
+        "jump" => Locomotion.Jump,
+        _ => throw new CliException($"--locomotion must be 'walk+jump' or 'jump', not '{value}'."),
+    };
+
     private static Option<double?> TimeLimitOption() => new("--time-limit") { Description = "Bake time budget in seconds." };
 
     public static Command Bake(CancellationToken cancellation = default)
@@ -38,7 +47,8 @@ internal static class CliCommands
         Option<int?> maxNodes = new("--max-nodes") { Description = "Stop at this many nodes (default 200 unless --time-limit is given)." };
         Option<double?> timeLimit = TimeLimitOption();
         Option<string> output = new("--out") { Description = "Roadmap file to write.", Required = true };
-        var command = new Command("bake", "Bake a jump roadmap for a character on a level and save it.") { level, character, seed, threads, maxNodes, timeLimit, output };
+        Option<string> locomotion = LocomotionOption();
+        var command = new Command("bake", "Bake a roadmap of jumps (and walks) for a character on a level and save it.") { level, character, seed, threads, maxNodes, timeLimit, output, locomotion };
         command.SetAction(parse => Guard(parse, () =>
         {
             TextWriter stdout = parse.InvocationConfiguration.Output;
@@ -47,13 +57,13 @@ internal static class CliCommands
             ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!).Reduced;
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
             int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
-            var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit };
+            var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit, Locomotion = ParseLocomotion(parse.GetValue(locomotion)!) };
             var scene = PlanningScene.Create(lvl, chr);
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
             BakeResult result = new RoadmapBaker(scene).Bake(settings, TerminationCondition.Cancellation(cancellation), progress);
             progress?.Finish();
             stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
-            stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
+            stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps, {result.Roadmap.Walks.Count} walks in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
             if (result.SteeringRejections.Count > 0)
             {
                 stdout.WriteLine("rejected jumps: " + string.Join(", ", result.SteeringRejections.OrderByDescending(r => r.Value).Select(r => $"{r.Key} {r.Value}")));
@@ -89,12 +99,13 @@ internal static class CliCommands
         Option<int> threads = ThreadsOption();
         Option<int> maxNodes = new("--max-nodes") { Description = "When baking: the most nodes before giving up on connecting start and goal.", DefaultValueFactory = _ => 400 };
         Option<double?> timeLimit = TimeLimitOption();
-        Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/1).", Required = true };
+        Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/2).", Required = true };
         Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
         Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path and write an animated GLB." };
         Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
         Option<string> tolerance = new("--goal-tolerance") { Description = "How close (metres) the first and last stances' contacts must come to --from and --to: ACROSS[,UPDOWN], horizontally and vertically.", DefaultValueFactory = _ => "0.5,0.25" };
-        var command = new Command("plan", "Plan a sequence of jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance };
+        Option<string> locomotion = LocomotionOption();
+        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion };
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
@@ -114,6 +125,7 @@ internal static class CliCommands
                 TimeLimit = Seconds(parse.GetValue(timeLimit), "--time-limit"),
                 Cancellation = cancellation,
                 Tolerance = CliInputs.ParseTolerance(parse.GetValue(tolerance)!, "--goal-tolerance"),
+                Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
             };
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);
@@ -144,7 +156,8 @@ internal static class CliCommands
     {
         Option<string> output = new("--out") { Description = "Folder for the report, picture and roadmap.", DefaultValueFactory = _ => "out" };
         Option<int> threads = ThreadsOption();
-        var command = new Command("demo", "The main job: the skeleton crosses the bundled desert; writes a report, an SVG, an animated GLB and the roadmap.") { output, threads };
+        Option<string> locomotion = LocomotionOption();
+        var command = new Command("demo", "The main job: the skeleton crosses the bundled desert; writes a report, an SVG, an animated GLB and the roadmap.") { output, threads, locomotion };
         command.SetAction(parse => Guard(parse, () =>
         {
             TextWriter stdout = parse.InvocationConfiguration.Output;
@@ -171,6 +184,7 @@ internal static class CliCommands
                 Threads = Threads(parse.GetValue(threads)),
                 MaxNodes = 600,
                 Cancellation = cancellation,
+                Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
             };
             pipeline.Timings["loadLevel"] = loadSeconds;
             (PlanReport report, Roadmap roadmap) = pipeline.Run(parse.InvocationConfiguration.Error);

@@ -43,6 +43,9 @@ internal sealed class PlanPipeline
 
     public EndpointTolerance Tolerance { get; init; } = new();
 
+    /// <summary>Walk where the ground allows and jump where it must (the default), or jump only (the paper).</summary>
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
+
     /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }
 
@@ -70,12 +73,12 @@ internal sealed class PlanPipeline
             roadmap = RoadmapFile.Load(RoadmapPath, Level, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
             clock.Restart();
-            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance }, termination: TerminationCondition.Cancellation(Cancellation));
+            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance, Locomotion = Locomotion }, termination: TerminationCondition.Cancellation(Cancellation));
             Timings["planAndAnimate"] = clock.Elapsed.TotalSeconds;
         }
         else
         {
-            var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance };
+            var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance, Locomotion = Locomotion };
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(error) ? new ConsoleProgress(error, MaxNodes) : null;
             (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress);
             progress?.Finish();
@@ -92,7 +95,7 @@ internal sealed class PlanPipeline
     public JumpAnimation? Animation { get; private set; }
 
     private PlanReport Report(PlanningScene scene, Roadmap roadmap, double bakeSeconds, PlanResult result) =>
-        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings)) { Tolerance = Tolerance };
+        new(LevelPath, scene, From, To, roadmap.Nodes.Count, roadmap.Edges.Count, roadmap.Seed, bakeSeconds, result, new Dictionary<string, double>(Timings)) { Tolerance = Tolerance, Locomotion = Locomotion };
 
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
     public void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
@@ -105,7 +108,7 @@ internal sealed class PlanPipeline
             var timings = new Dictionary<string, double>(report.Timings) { ["writeGlb"] = clock.Elapsed.TotalSeconds };
             string relative = Path.GetRelativePath(Path.GetDirectoryName(Path.GetFullPath(reportPath))!, Path.GetFullPath(glbPath));
             report = report with { Timings = timings, Animation = new AnimationReport(relative, "jumps", animation) };
-            animationLine = $"animation: {animation.Duration:0.00} s ({animation.Stances.Sum():0.00} s of stances between jumps), {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases; {glbPath}";
+            animationLine = $"animation: {animation.Duration:0.00} s ({animation.Stances.Sum():0.00} s of stances between moves), {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases; {glbPath}";
         }
 
         PlanReportWriter.Save(report, reportPath);
@@ -116,7 +119,7 @@ internal sealed class PlanPipeline
 
         PlanResult r = report.Result;
         output.WriteLine($"status: {PlanReportWriter.StatusName(r.Status)} ({r.Reason})");
-        output.WriteLine($"roadmap: {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps, seed {report.Seed}");
+        output.WriteLine($"roadmap: {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps, {roadmap.Walks.Count} walks, seed {report.Seed}");
         foreach ((string name, EndpointPlacement? placement) in new[] { ("start", r.StartPlacement), ("goal", r.GoalPlacement) })
         {
             if (placement is { Placed: true })
@@ -127,12 +130,13 @@ internal sealed class PlanPipeline
 
         if (report.Rejected.Count > 0)
         {
-            output.WriteLine($"set aside: {report.Rejected.Count} {(report.Rejected.Count == 1 ? "jump" : "jumps")} the body could not perform (first: {report.Rejected[0].Reason})");
+            output.WriteLine($"set aside: {report.Rejected.Count} {(report.Rejected.Count == 1 ? "move" : "moves")} the body could not perform (first: {report.Rejected[0].Reason})");
         }
 
-        if (r.Jumps.Count > 0)
+        if (r.Moves.Count > 0)
         {
-            output.WriteLine($"path: {r.Jumps.Count} jumps, {r.TotalFlightTime:0.00} s of flight, {r.Jumps.Sum(j => j.Arc.ArcLength):0.0} m of arcs");
+            int walks = r.Walks.Count();
+            output.WriteLine($"path: {r.Jumps.Count} jumps ({r.TotalFlightTime:0.00} s of flight, {r.Jumps.Sum(j => j.Arc.ArcLength):0.0} m of arcs) and {walks} walks ({r.Walks.Sum(w => w.Length):0.0} m, {r.Walks.Sum(w => w.Duration):0.00} s): {r.TotalDuration:0.00} s of moves");
         }
 
         if (animationLine is not null)

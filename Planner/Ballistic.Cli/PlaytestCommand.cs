@@ -30,9 +30,10 @@ internal static class PlaytestCommand
         Option<int> maxNodes = new("--max-nodes") { Description = "Nodes of the roadmap baked without --roadmap.", DefaultValueFactory = _ => 600 };
         Option<int> threads = new("--threads") { Description = "Worker threads (the results do not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
         Option<string> output = new("--out") { Description = "Folder for LEVEL-CHARACTER-playtest.json, .svg and .png.", DefaultValueFactory = _ => "out" };
-        var command = new Command("playtest", "Many agents navigate the level by jumps, headless, toward random targets; writes a report and a map of where they failed.")
+        Option<string> locomotion = CliCommands.LocomotionOption();
+        var command = new Command("playtest", "Many agents navigate the level by walks and jumps, headless, toward random targets; writes a report and a map of where they failed.")
         {
-            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output,
+            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output, locomotion,
         };
         command.SetAction(parse => CliCommands.Guard(parse, () =>
         {
@@ -46,6 +47,7 @@ internal static class PlaytestCommand
                 Seconds = parse.GetValue(seconds),
                 Seed = parse.GetValue(seed),
                 AnimationThreads = Math.Max(1, threadCount - 1),
+                Locomotion = CliCommands.ParseLocomotion(parse.GetValue(locomotion)!),
             };
             if (settings.Problem() is { } problem)
             {
@@ -65,7 +67,7 @@ internal static class PlaytestCommand
             else
             {
                 ConsoleProgress? bakeProgress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
-                BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount }, TerminationCondition.Cancellation(cancellation), bakeProgress);
+                BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount, Locomotion = settings.Locomotion }, TerminationCondition.Cancellation(cancellation), bakeProgress);
                 bakeProgress?.Finish();
                 if (bake.Status == PlannerStatus.Cancelled)
                 {

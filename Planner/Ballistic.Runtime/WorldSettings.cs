@@ -1,3 +1,4 @@
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Sampling;
 

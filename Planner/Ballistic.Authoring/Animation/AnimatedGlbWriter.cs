@@ -10,16 +10,17 @@ using Ballistic.Planner.Rigs;
 namespace Ballistic.Authoring.Animation;
 
 /// <summary>
-/// Writes a character and its jump animation as one animated, skinned glTF binary (Godot and Blender import it).
-/// A character loaded from a user's glTF (<see cref="CharacterModel.Source"/> set) is written as that file: its
-/// scenes, node hierarchy, skinned meshes, materials, textures and images (embedded), skins and clips, with one clip
-/// added whose channels target the original bone nodes: the rotation of every bone that moves, relative to its
-/// glTF parent (so anchor nodes between bones keep their place), and the translation and rotation of every root
-/// bone, relative to its non-bone ancestors' transforms (an <c>Armature</c> rotated or scaled stays as it is). A
-/// character built in code is written as an <c>Armature</c> node holding the joint hierarchy (node names = joint
-/// names), a mesh of one box per bone skinned rigidly to it, and one clip whose channels are the root joint's
-/// translation and rotation (its world placement on the parabola) and every joint's local rotation. Either way the
-/// clip is keyed at the animation's frames with linear interpolation; world frame Y up, metres, seconds.
+/// Writes a character and its animation (a path of moves: jumps and walks) as one animated, skinned glTF binary
+/// (Godot and Blender import it). A character loaded from a user's glTF (<see cref="CharacterModel.Source"/> set) is
+/// written as that file: its scenes, node hierarchy, skinned meshes, materials, textures and images (embedded),
+/// skins and clips, with one clip added whose channels target the original bone nodes: the rotation of every bone
+/// that moves, relative to its glTF parent (so anchor nodes between bones keep their place), and the translation and
+/// rotation of every root bone, relative to its non-bone ancestors' transforms (an <c>Armature</c> rotated or scaled
+/// stays as it is). A character built in code is written as an <c>Armature</c> node holding the joint hierarchy
+/// (node names = joint names), a mesh of one box per bone skinned rigidly to it, and one clip whose channels are the
+/// root joint's translation and rotation (its world placement on the jump arcs and walk paths) and every joint's
+/// local rotation. Either way the clip is keyed at each of the animation's frames (flights, walks and the stances
+/// between them alike) with linear interpolation; world frame Y up, metres, seconds.
 /// </summary>
 public static class AnimatedGlbWriter
 {

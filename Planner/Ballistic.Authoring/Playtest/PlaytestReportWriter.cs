@@ -2,7 +2,7 @@ using System.Numerics;
 using System.Text.Json;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Query;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Authoring.Playtest;

@@ -5,7 +5,7 @@ using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Authoring.Reports;
 
-/// <summary>Everything a plan report holds: the request, the roadmap it used and the result.</summary>
+/// <summary>Everything a plan report holds: the request, the roadmap it used and the result (its moves: jumps and walks).</summary>
 /// <param name="LevelPath">The level file, as given.</param>
 /// <param name="Scene">The planning scene (level and character).</param>
 /// <param name="From">Requested start point, world metres.</param>
@@ -23,6 +23,12 @@ public sealed record PlanReport(string LevelPath, PlanningScene Scene, Vector3 F
 
     /// <summary>The endpoint tolerance of the request.</summary>
     public EndpointTolerance Tolerance { get; init; } = new();
+
+    /// <summary>
+    /// The moves the query allowed (<see cref="QuerySettings.Locomotion"/>), written as the request's
+    /// <c>locomotion</c> (<c>walk+jump</c> or <c>jump</c>); <c>null</c> leaves it out.
+    /// </summary>
+    public Locomotion? Locomotion { get; init; }
 
     /// <summary>Jumps set aside because the whole body could not perform them, with the reasons.</summary>
     public IReadOnlyList<RejectedJump> Rejected { get; init; } = [];

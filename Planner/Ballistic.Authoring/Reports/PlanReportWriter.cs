@@ -14,16 +14,35 @@ using Ballistic.Planner.Sampling;
 namespace Ballistic.Authoring.Reports;
 
 /// <summary>
-/// Writes a plan as the <c>ballistic.plan/1</c> JSON report other tools read. Positions are trunk centres in world
-/// metres (Y up), rotations unit quaternions [x, y, z, w], velocities m/s, times seconds. Besides the jumps it
-/// states where the start and goal stances stand relative to the requested points (<c>start</c>, <c>goal</c>:
-/// contact centre, distances across and up/down) and the jumps set aside because the body could not perform them
-/// (<c>rejectedJumps</c>, with reasons).
+/// Writes a plan as the <c>ballistic.plan/2</c> JSON report other tools read. Positions are trunk centres in world
+/// metres (Y up), rotations unit quaternions [x, y, z, w], velocities m/s, times seconds, lengths metres. It holds
+/// everything <c>ballistic.plan/1</c> held (a <c>/1</c> reader that ignores unknown keys reads it) plus the path's
+/// <c>moves</c> in order: each jump as <c>{"kind": "jump", …}</c> with the fields of a <c>jumps</c> entry (the same
+/// object, byte for byte), each walk as <c>{"kind": "walk", "from", "to", "path", "duration", "length", "speed",
+/// "via"}</c> with its ground path resampled to points at most <see cref="MaxWalkPointSpacing"/> apart; a
+/// <c>summary</c> of the moves; and, with an animation, the clip times of every move. <c>jumps</c> lists the jump
+/// moves only. Besides the moves it states where the start and goal stances stand relative to the requested points
+/// (<c>start</c>, <c>goal</c>: contact centre, distances across and up/down) and the jumps set aside because the body
+/// could not perform them (<c>rejectedJumps</c>, with reasons). <see cref="PlanReportReader"/> reads it back.
 /// </summary>
 public static class PlanReportWriter
 {
     /// <summary>The schema name written in every report.</summary>
-    public const string Schema = "ballistic.plan/1";
+    public const string Schema = "ballistic.plan/2";
+
+    /// <summary>The schema name of the reports written before walking (jumps only), which <see cref="PlanReportReader"/> still reads.</summary>
+    public const string SchemaV1 = "ballistic.plan/1";
+
+    /// <summary>The most distance between two consecutive points of a walk's <c>path</c> in a report, metres (along the straight line between them).</summary>
+    public const float MaxWalkPointSpacing = 0.25f;
+
+    /// <summary>The name of a <see cref="Locomotion"/> in reports and on the command line: <c>walk+jump</c> or <c>jump</c>.</summary>
+    public static string LocomotionName(Locomotion locomotion) => locomotion switch
+    {
+        Locomotion.WalkAndJump => "walk+jump",
+        Locomotion.Jump => "jump",
+        _ => throw new ArgumentOutOfRangeException(nameof(locomotion), locomotion, "Unknown locomotion."),
+    };
 
     /// <summary>The status names used in reports, by <see cref="PlannerStatus"/>.</summary>
     public static string StatusName(PlannerStatus status) => status switch
@@ -59,10 +78,100 @@ public static class PlanReportWriter
         w.WriteEndObject();
     }
 
-    /// <summary>Writes one jump as an object of the report's <c>jumps</c> array: takeoff and landing stances, velocities, flight time, arc length, apex.</summary>
+    /// <summary>Writes one jump as an object of the playtest report's <c>jumps</c> array: takeoff and landing stances, velocities, flight time, arc length, apex.</summary>
     internal static void WriteJump(Utf8JsonWriter w, Jump jump, ReducedCharacter character)
     {
         w.WriteStartObject();
+        WriteJumpFields(w, jump, character);
+        w.WriteEndObject();
+    }
+
+    /// <summary>
+    /// Writes one jump as an object of the plan report's <c>moves</c> and <c>jumps</c> arrays: <c>"kind": "jump"</c>,
+    /// the fields of <see cref="WriteJump"/>, and its <c>duration</c> (the flight time, seconds).
+    /// </summary>
+    internal static void WriteJumpMove(Utf8JsonWriter w, Jump jump, ReducedCharacter character)
+    {
+        w.WriteStartObject();
+        w.WriteString("kind", "jump");
+        WriteJumpFields(w, jump, character);
+        w.WriteNumber("duration", jump.Duration);
+        w.WriteEndObject();
+    }
+
+    /// <summary>
+    /// Writes one walk as an object of the plan report's <c>moves</c> array: <c>"kind": "walk"</c>, the stances it
+    /// goes <c>from</c> and <c>to</c> (as a jump's takeoff and landing), its ground <c>path</c> (world metres, points at
+    /// most <see cref="MaxWalkPointSpacing"/> apart, the walk's own first and last points exactly), <c>duration</c>
+    /// (s), <c>length</c> (m, along the path), <c>speed</c> (m/s) and <c>via</c> (ids of the stances passed through).
+    /// </summary>
+    internal static void WriteWalkMove(Utf8JsonWriter w, Walk walk, ReducedCharacter character)
+    {
+        w.WriteStartObject();
+        w.WriteString("kind", "walk");
+        w.WritePropertyName("from");
+        WritePose(w, walk.From, character);
+        w.WritePropertyName("to");
+        WritePose(w, walk.To, character);
+        w.WriteStartArray("path");
+        foreach (Vector3 p in ReportPath(walk.Path))
+        {
+            w.WriteStartArray();
+            w.WriteNumberValue(p.X);
+            w.WriteNumberValue(p.Y);
+            w.WriteNumberValue(p.Z);
+            w.WriteEndArray();
+        }
+
+        w.WriteEndArray();
+        w.WriteNumber("duration", walk.Duration);
+        w.WriteNumber("length", walk.Length);
+        w.WriteNumber("speed", walk.Speed);
+        w.WriteStartArray("via");
+        foreach (RoadmapNode node in walk.Via)
+        {
+            w.WriteNumberValue(node.Id);
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    /// <summary>
+    /// A walk's ground path as the report writes it: every point of <paramref name="path"/> kept exactly, in order,
+    /// with points added evenly along each straight piece longer than <see cref="MaxWalkPointSpacing"/> so that no
+    /// two consecutive points are farther apart. World metres.
+    /// </summary>
+    public static IReadOnlyList<Vector3> ReportPath(IReadOnlyList<Vector3> path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        var points = new List<Vector3>(path.Count);
+        if (path.Count == 0)
+        {
+            return points;
+        }
+
+        // A little under the limit, so that rounding to float never puts two points farther apart than it.
+        const float step = MaxWalkPointSpacing * 0.999f;
+        points.Add(path[0]);
+        for (int i = 1; i < path.Count; i++)
+        {
+            Vector3 a = path[i - 1];
+            Vector3 b = path[i];
+            int pieces = Math.Max(1, (int)MathF.Ceiling(Vector3.Distance(a, b) / step));
+            for (int k = 1; k < pieces; k++)
+            {
+                points.Add(Vector3.Lerp(a, b, (float)k / pieces));
+            }
+
+            points.Add(b);
+        }
+
+        return points;
+    }
+
+    private static void WriteJumpFields(Utf8JsonWriter w, Jump jump, ReducedCharacter character)
+    {
         w.WritePropertyName("takeoff");
         WritePose(w, jump.Takeoff, character);
         w.WritePropertyName("landing");
@@ -72,7 +181,6 @@ public static class PlanReportWriter
         w.WriteNumber("flightTime", jump.Arc.FlightTime);
         w.WriteNumber("arcLength", jump.Arc.ArcLength);
         WriteVector(w, "apex", jump.Arc.Apex);
-        w.WriteEndObject();
     }
 
     /// <summary>Writes a named [x, y, z] array.</summary>
@@ -134,6 +242,11 @@ public static class PlanReportWriter
             w.WriteNumber("across", report.Tolerance.Across);
             w.WriteNumber("upDown", report.Tolerance.UpDown);
             w.WriteEndObject();
+            if (report.Locomotion is Locomotion locomotion)
+            {
+                w.WriteString("locomotion", LocomotionName(locomotion));
+            }
+
             w.WriteEndObject();
 
             // Where the stances stand: their contacts' centre and its distances from the requested points.
@@ -150,11 +263,40 @@ public static class PlanReportWriter
             w.WriteNumber("bakeSeconds", Math.Round(report.BakeSeconds, 6));
             w.WriteEndObject();
 
-            w.WriteNumber("totalFlightTime", report.Result.TotalFlightTime);
-            w.WriteStartArray("jumps");
-            foreach (Jump jump in report.Result.Jumps)
+            PlanResult result = report.Result;
+            w.WriteNumber("totalFlightTime", result.TotalFlightTime);
+            w.WriteStartObject("summary");
+            w.WriteNumber("moves", result.Moves.Count);
+            w.WriteNumber("jumps", result.Jumps.Count);
+            w.WriteNumber("walks", result.Walks.Count());
+            w.WriteNumber("flightTime", result.TotalFlightTime);
+            w.WriteNumber("walkLength", result.Walks.Sum(walk => walk.Length));
+            w.WriteNumber("walkTime", result.Walks.Sum(walk => walk.Duration));
+            w.WriteNumber("totalDuration", result.TotalDuration);
+            w.WriteEndObject();
+
+            w.WriteStartArray("moves");
+            foreach (Move move in result.Moves)
             {
-                WriteJump(w, jump, character);
+                switch (move)
+                {
+                    case Jump jump:
+                        WriteJumpMove(w, jump, character);
+                        break;
+                    case Walk walk:
+                        WriteWalkMove(w, walk, character);
+                        break;
+                    default:
+                        throw new InvalidOperationException($"A plan report cannot write a move of kind {move.GetType().Name}.");
+                }
+            }
+
+            w.WriteEndArray();
+
+            w.WriteStartArray("jumps");
+            foreach (Jump jump in result.Jumps)
+            {
+                WriteJumpMove(w, jump, character);
             }
 
             w.WriteEndArray();
@@ -231,6 +373,17 @@ public static class PlanReportWriter
         w.WriteNumber("duration", animation.Duration);
         w.WriteNumber("frames", animation.Frames.Count);
         w.WriteNumber("failedContactPoses", animation.FailedContactPoses);
+        w.WriteStartArray("moves");
+        for (int m = 0; m < animation.Moves.Count; m++)
+        {
+            w.WriteStartObject();
+            w.WriteString("kind", animation.Moves[m] is Walk ? "walk" : "jump");
+            w.WriteNumber("start", animation.MoveStart(m));
+            w.WriteNumber("end", animation.MoveEnd(m));
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
         w.WriteStartObject("limbs");
         foreach (RigLimb limb in animation.Model.Limbs)
         {

@@ -13,14 +13,20 @@ namespace Ballistic.Authoring.Reports;
 
 /// <summary>
 /// Draws a plan as an SVG page: a top view (the level as a shaded height map seen from +Y, the roadmap's nodes and
-/// jumps, the path) and a side profile along the line from start to goal (the level's silhouette in a corridor
-/// around that line, the path's parabolas, the takeoff and landing friction cones).
+/// jumps, the path) and a side profile along the path, unrolled (the level's silhouette in a corridor around it, the
+/// jumps' parabolas, the takeoff and landing friction cones). Jumps are solid lines; walks are dashed polylines
+/// (<c>stroke-dasharray</c>) through their ground path's points as the report writes them
+/// (<see cref="PlanReportWriter.ReportPath"/>), in both views. Moves are numbered from 1 in path order, as in the
+/// report's <c>moves</c>.
 /// </summary>
 public static class SvgPlanRenderer
 {
     private const float PageWidth = 1000f;
     private const float Margin = 30f;
     private const float Corridor = 1.5f;
+    private const string JumpColor = "#e8590c";
+    private const string WalkColor = "#0c8599";
+    private const string WalkDash = "7 5";
 
     /// <summary>The SVG text of the report's plan over its roadmap (<paramref name="roadmap"/> may be <c>null</c>).</summary>
     public static string Render(PlanReport report, Roadmap? roadmap)
@@ -43,20 +49,35 @@ public static class SvgPlanRenderer
         float Ty(Vector3 p) => topY + ((p.Z - bounds.Min.Z) * topScale);
 
         // Side profile geometry: the path unrolled. Each jump keeps its own vertical plane (the plane its cones were
-        // cut by); the horizontal axis is the distance travelled along the path, the vertical axis the height.
+        // cut by), each straight piece of a walk its own; the horizontal axis is the distance travelled along the
+        // path, the vertical axis the height.
+        IReadOnlyList<Move> moves = result.Moves;
         var segments = new List<(Vector3 From, Vector3 To, float Offset)>();
+        var moveOffsets = new float[moves.Count];
+        var walkPaths = new IReadOnlyList<Vector3>[moves.Count];
         float travelled = 0f;
-        if (result.Jumps.Count == 0)
+        for (int m = 0; m < moves.Count; m++)
         {
-            segments.Add((report.From, report.To, 0f));
-        }
-        else
-        {
-            foreach (Jump jump in result.Jumps)
+            moveOffsets[m] = travelled;
+            if (moves[m] is Jump jump)
             {
                 segments.Add((jump.Arc.Start, jump.Arc.End, travelled));
                 travelled += Horizontal(jump.Arc.End - jump.Arc.Start).Length();
             }
+            else if (moves[m] is Walk walk)
+            {
+                walkPaths[m] = PlanReportWriter.ReportPath(walk.Path);
+                for (int i = 1; i < walk.Path.Count; i++)
+                {
+                    segments.Add((walk.Path[i - 1], walk.Path[i], travelled));
+                    travelled += Horizontal(walk.Path[i] - walk.Path[i - 1]).Length();
+                }
+            }
+        }
+
+        if (segments.Count == 0)
+        {
+            segments.Add((report.From, report.To, 0f));
         }
 
         const float lead = 1.5f;
@@ -92,6 +113,11 @@ public static class SvgPlanRenderer
             }
         }
 
+        foreach (Walk walk in result.Walks)
+        {
+            pathPoints.AddRange(walk.Path);
+        }
+
         float yLow = MathF.Min(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Min.Y).Min(), pathPoints.Min(p => p.Y)) - 0.5f;
         float yHigh = MathF.Max(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Max.Y).Max(), pathPoints.Max(p => p.Y)) + 0.5f;
         float profileScale = MathF.Min((PageWidth - (2 * Margin)) / (sMax - sMin), 240f / (yHigh - yLow));
@@ -105,8 +131,9 @@ public static class SvgPlanRenderer
         svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{PageWidth}\" height=\"{pageH:0}\" viewBox=\"0 0 {PageWidth} {pageH:0}\" font-family=\"sans-serif\" font-size=\"12\">\n"));
         svg.Append("<rect width=\"100%\" height=\"100%\" fill=\"#fbfaf7\"/>\n");
         string status = PlanReportWriter.StatusName(result.Status);
+        int walkCount = result.Walks.Count();
         svg.Append(Invariant($"<text x=\"{Margin}\" y=\"26\" font-size=\"18\" font-weight=\"bold\">Ballistic plan: {Escape(report.Scene.Character.Name)} on {Escape(Path.GetFileName(report.LevelPath))}</text>\n"));
-        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"46\">{status}: {Escape(result.Reason)}; {result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
+        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"46\">{status}: {Escape(result.Reason)}; {result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; {walkCount} walks, {result.Walks.Sum(w => w.Length):0.0} m; {result.TotalDuration:0.00} s in all; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
 
         // Top view.
         svg.Append(Invariant($"<text x=\"{topX}\" y=\"{topY - 8}\" font-weight=\"bold\">Top view (X right, Z down; shading = height {bounds.Min.Y:0.0}…{bounds.Max.Y:0.0} m)</text>\n"));
@@ -132,12 +159,26 @@ public static class SvgPlanRenderer
             svg.Append("</g>\n");
         }
 
-        for (int k = 0; k < result.Jumps.Count; k++)
+        for (int m = 0; m < moves.Count; m++)
         {
-            Jump jump = result.Jumps[k];
-            svg.Append(Invariant($"<line x1=\"{Tx(jump.Arc.Start):0.#}\" y1=\"{Ty(jump.Arc.Start):0.#}\" x2=\"{Tx(jump.Arc.End):0.#}\" y2=\"{Ty(jump.Arc.End):0.#}\" stroke=\"#e8590c\" stroke-width=\"3\"/>\n"));
-            svg.Append(Invariant($"<circle cx=\"{Tx(jump.Arc.Start):0.#}\" cy=\"{Ty(jump.Arc.Start):0.#}\" r=\"4\" fill=\"#fff\" stroke=\"#e8590c\" stroke-width=\"2\"/>\n"));
-            svg.Append(Invariant($"<text x=\"{Tx(jump.Arc.Start) + 5:0.#}\" y=\"{Ty(jump.Arc.Start) - 5:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{k + 1}</text>\n"));
+            if (moves[m] is Jump jump)
+            {
+                svg.Append(Invariant($"<line x1=\"{Tx(jump.Arc.Start):0.#}\" y1=\"{Ty(jump.Arc.Start):0.#}\" x2=\"{Tx(jump.Arc.End):0.#}\" y2=\"{Ty(jump.Arc.End):0.#}\" stroke=\"{JumpColor}\" stroke-width=\"3\"/>\n"));
+                Label(jump.Arc.Start, m, JumpColor, "#7a2e05");
+            }
+            else if (moves[m] is Walk)
+            {
+                IReadOnlyList<Vector3> path = walkPaths[m];
+                string points = string.Join(" ", path.Select(p => Invariant($"{Tx(p):0.#},{Ty(p):0.#}")));
+                svg.Append(Invariant($"<polyline class=\"walk\" data-view=\"top\" data-move=\"{m}\" points=\"{points}\" fill=\"none\" stroke=\"{WalkColor}\" stroke-width=\"3\" stroke-dasharray=\"{WalkDash}\"/>\n"));
+                Label(path[0], m, WalkColor, "#0b4f5c");
+            }
+        }
+
+        void Label(Vector3 at, int move, string ring, string text)
+        {
+            svg.Append(Invariant($"<circle cx=\"{Tx(at):0.#}\" cy=\"{Ty(at):0.#}\" r=\"4\" fill=\"#fff\" stroke=\"{ring}\" stroke-width=\"2\"/>\n"));
+            svg.Append(Invariant($"<text x=\"{Tx(at) + 5:0.#}\" y=\"{Ty(at) - 5:0.#}\" font-size=\"11\" fill=\"{text}\">{move + 1}</text>\n"));
         }
 
         Marker(svg, Tx(report.From), Ty(report.From), "#2f9e44", "start");
@@ -156,10 +197,31 @@ public static class SvgPlanRenderer
 
         ground.Append(Invariant($"L {Sx(sMax):0.#} {Py(yLow):0.#} Z"));
         svg.Append(Invariant($"<path d=\"{ground}\" fill=\"#d9c9a3\" stroke=\"#8c7851\" stroke-width=\"1\"/>\n"));
-        for (int j = 0; j < result.Jumps.Count; j++)
+        for (int m = 0; m < moves.Count; m++)
         {
-            Jump jump = result.Jumps[j];
-            float offset = segments[j].Offset;
+            if (moves[m] is Walk)
+            {
+                // The ground path, unrolled: each point at the distance walked so far (across), at its height.
+                IReadOnlyList<Vector3> path = walkPaths[m];
+                float s = moveOffsets[m];
+                var line = new StringBuilder();
+                for (int i = 0; i < path.Count; i++)
+                {
+                    s += i == 0 ? 0f : Horizontal(path[i] - path[i - 1]).Length();
+                    line.Append(Invariant($"{(i == 0 ? "" : " ")}{Sx(s):0.#},{Py(path[i].Y):0.#}"));
+                }
+
+                svg.Append(Invariant($"<polyline class=\"walk\" data-view=\"profile\" data-move=\"{m}\" points=\"{line}\" fill=\"none\" stroke=\"{WalkColor}\" stroke-width=\"2.5\" stroke-dasharray=\"{WalkDash}\"/>\n"));
+                svg.Append(Invariant($"<text x=\"{Sx(moveOffsets[m]) + 3:0.#}\" y=\"{Py(path[0].Y) + 16:0.#}\" font-size=\"11\" fill=\"#0b4f5c\">{m + 1}</text>\n"));
+                continue;
+            }
+
+            if (moves[m] is not Jump jump)
+            {
+                continue;
+            }
+
+            float offset = moveOffsets[m];
             Vector3 heading = Horizontal(jump.Arc.End - jump.Arc.Start);
             heading = heading.LengthSquared() > 1e-9f ? Vector3.Normalize(heading) : Vector3.UnitX;
             float X(Vector3 p) => Sx(offset + Vector3.Dot(Horizontal(p - jump.Arc.Start), heading));
@@ -170,25 +232,26 @@ public static class SvgPlanRenderer
                 arc.Append(Invariant($"{(k == 0 ? "M" : "L")} {X(p):0.#} {Py(p.Y):0.#} "));
             }
 
-            svg.Append(Invariant($"<path d=\"{arc}\" fill=\"none\" stroke=\"#e8590c\" stroke-width=\"2.5\"/>\n"));
-            if (report.Animation is { } animated)
+            svg.Append(Invariant($"<path d=\"{arc}\" fill=\"none\" stroke=\"{JumpColor}\" stroke-width=\"2.5\"/>\n"));
+            if (report.Animation is { } animated && animated.Animation.Moves.Count == moves.Count && ReferenceEquals(animated.Animation.Moves[m], jump))
             {
-                Poses(svg, animated.Animation, j, X, Py);
+                Poses(svg, animated.Animation, m, X, Py);
             }
 
             Cone(svg, jump.Takeoff, jump.Arc.Start, heading, X, Py, profileScale, "#1971c2");
             Cone(svg, jump.Landing, jump.Arc.End, heading, X, Py, profileScale, "#9c36b5");
             Vector3 tip = jump.Arc.Start + (jump.Arc.TakeoffVelocity * 0.08f);
             svg.Append(Invariant($"<line x1=\"{X(jump.Arc.Start):0.#}\" y1=\"{Py(jump.Arc.Start.Y):0.#}\" x2=\"{X(tip):0.#}\" y2=\"{Py(tip.Y):0.#}\" stroke=\"#000\" stroke-width=\"1.5\"/>\n"));
-            svg.Append(Invariant($"<text x=\"{X(jump.Arc.Start) + 3:0.#}\" y=\"{Py(jump.Arc.Start.Y) + 16:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{j + 1}</text>\n"));
+            svg.Append(Invariant($"<text x=\"{X(jump.Arc.Start) + 3:0.#}\" y=\"{Py(jump.Arc.Start.Y) + 16:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{m + 1}</text>\n"));
         }
 
         float legendY = pageH - 22f;
-        svg.Append(Invariant($"<g font-size=\"11\"><line x1=\"{Margin}\" y1=\"{legendY}\" x2=\"{Margin + 24}\" y2=\"{legendY}\" stroke=\"#e8590c\" stroke-width=\"3\"/><text x=\"{Margin + 30}\" y=\"{legendY + 4}\">path (trunk centre)</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 150}\" y1=\"{legendY}\" x2=\"{Margin + 174}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 180}\" y=\"{legendY + 4}\">roadmap jumps</text>"));
-        svg.Append(Invariant($"<path d=\"M {Margin + 290} {legendY + 5} L {Margin + 300} {legendY - 6} L {Margin + 310} {legendY + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/><text x=\"{Margin + 316}\" y=\"{legendY + 4}\">takeoff cone</text>"));
-        svg.Append(Invariant($"<path d=\"M {Margin + 400} {legendY + 5} L {Margin + 410} {legendY - 6} L {Margin + 420} {legendY + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/><text x=\"{Margin + 426}\" y=\"{legendY + 4}\">landing cone</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 510}\" y1=\"{legendY}\" x2=\"{Margin + 534}\" y2=\"{legendY}\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"{Margin + 540}\" y=\"{legendY + 4}\">takeoff velocity (×0.08 s)</text></g>\n"));
+        svg.Append(Invariant($"<g font-size=\"11\"><line x1=\"{Margin}\" y1=\"{legendY}\" x2=\"{Margin + 24}\" y2=\"{legendY}\" stroke=\"{JumpColor}\" stroke-width=\"3\"/><text x=\"{Margin + 30}\" y=\"{legendY + 4}\">jump (trunk centre)</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 145}\" y1=\"{legendY}\" x2=\"{Margin + 169}\" y2=\"{legendY}\" stroke=\"{WalkColor}\" stroke-width=\"3\" stroke-dasharray=\"{WalkDash}\"/><text x=\"{Margin + 175}\" y=\"{legendY + 4}\">walk (ground path)</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 290}\" y1=\"{legendY}\" x2=\"{Margin + 314}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 320}\" y=\"{legendY + 4}\">roadmap jumps</text>"));
+        svg.Append(Invariant($"<path d=\"M {Margin + 420} {legendY + 5} L {Margin + 430} {legendY - 6} L {Margin + 440} {legendY + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/><text x=\"{Margin + 446}\" y=\"{legendY + 4}\">takeoff cone</text>"));
+        svg.Append(Invariant($"<path d=\"M {Margin + 530} {legendY + 5} L {Margin + 540} {legendY - 6} L {Margin + 550} {legendY + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/><text x=\"{Margin + 556}\" y=\"{legendY + 4}\">landing cone</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 640}\" y1=\"{legendY}\" x2=\"{Margin + 664}\" y2=\"{legendY}\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"{Margin + 670}\" y=\"{legendY + 4}\">takeoff velocity (×0.08 s)</text></g>\n"));
         svg.Append("</svg>\n");
         return svg.ToString();
     }
@@ -200,14 +263,14 @@ public static class SvgPlanRenderer
         OutputFile.Write(path, new UTF8Encoding(false).GetBytes(Render(report, roadmap)));
     }
 
-    /// <summary>Stick figures of the animated character at five moments of jump <paramref name="jump"/>, in its plane.</summary>
-    private static void Poses(StringBuilder svg, JumpAnimation animation, int jump, Func<Vector3, float> px, Func<float, float> py)
+    /// <summary>Stick figures of the animated character at five moments of jump move <paramref name="move"/> (an index in the moves), in its plane.</summary>
+    private static void Poses(StringBuilder svg, JumpAnimation animation, int move, Func<Vector3, float> px, Func<float, float> py)
     {
         Rig rig = animation.Model.Rig;
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
-        float start = animation.JumpStart(jump);
-        float duration = animation.Arcs[jump].FlightTime;
+        float start = animation.MoveStart(move);
+        float duration = animation.Moves[move].Duration;
         svg.Append("<g stroke=\"#343a40\" stroke-width=\"1.4\" stroke-linecap=\"round\" stroke-opacity=\"0.75\">\n");
         foreach (float f in new[] { 0f, 0.25f, 0.5f, 0.75f, 1f })
         {

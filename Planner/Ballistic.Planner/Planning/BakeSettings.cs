@@ -43,6 +43,29 @@ public sealed record BakeSettings
     /// </summary>
     public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
 
+    /// <summary>
+    /// Which moves the roadmap holds: <see cref="Locomotion.WalkAndJump"/> (the default) adds walks between
+    /// nearby nodes when the character walks; <see cref="Locomotion.Jump"/> bakes jumps only, exactly as the paper.
+    /// </summary>
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
+
+    /// <summary>
+    /// The longest walk edge baked, metres (horizontal distance between the nodes' contact centres); <c>null</c>
+    /// for <see cref="DefaultMaxWalkDistance"/>. Longer walks still appear in paths, joined from several edges or
+    /// by the shortcutting after a search.
+    /// </summary>
+    public float? MaxWalkDistance { get; init; }
+
+    /// <summary>Each new node is linked by walks to and from at most this many nearest nodes within <see cref="MaxWalkDistance"/>.</summary>
+    public int MaxWalkNeighbours { get; init; } = 8;
+
+    /// <summary>The longest walk edge baked by default for a character: twelve step heights, between 0.5 and 4 m.</summary>
+    public static float DefaultMaxWalkDistance(Characters.WalkingLimits walking)
+    {
+        ArgumentNullException.ThrowIfNull(walking);
+        return Math.Clamp(12f * walking.StepHeight, 0.5f, 4f);
+    }
+
     /// <summary>Checks the values.</summary>
     /// <exception cref="ArgumentException">A value is out of range, or no condition would ever stop the bake.</exception>
     public void Validate()
@@ -68,6 +91,16 @@ public sealed record BakeSettings
         }
 
         Tolerance.Validate();
+
+        if (MaxWalkDistance is float walk && !(walk > 0f && float.IsFinite(walk)))
+        {
+            throw new ArgumentException($"MaxWalkDistance must be positive and finite, not {walk}.");
+        }
+
+        if (MaxWalkNeighbours < 0)
+        {
+            throw new ArgumentException($"MaxWalkNeighbours must not be negative, not {MaxWalkNeighbours}.");
+        }
 
         if (StopWhenConnected && (Start is null || Goal is null))
         {

@@ -5,6 +5,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
 using Ballistic.Planner.Surfaces;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Planning;
 
@@ -16,7 +17,7 @@ namespace Ballistic.Planner.Planning;
 /// </summary>
 public sealed class PlanningScene
 {
-    private PlanningScene(Level level, ReducedCharacter character, TriangleBvh bvh, SurfaceSet surfaces, ContactEstimator estimator, TrunkSampler sampler, ParabolaSteering steering)
+    private PlanningScene(Level level, ReducedCharacter character, TriangleBvh bvh, SurfaceSet surfaces, ContactEstimator estimator, TrunkSampler sampler, ParabolaSteering steering, WalkSteering walking)
     {
         Level = level;
         Character = character;
@@ -25,6 +26,7 @@ public sealed class PlanningScene
         Estimator = estimator;
         Sampler = sampler;
         Steering = steering;
+        Walking = walking;
     }
 
     /// <summary>The level.</summary>
@@ -47,6 +49,9 @@ public sealed class PlanningScene
 
     /// <summary>The parabola steering method with the character's limits.</summary>
     public ParabolaSteering Steering { get; }
+
+    /// <summary>The walking steering method with the character's walking limits (it finds no walk for a character that does not walk).</summary>
+    public WalkSteering Walking { get; }
 
     /// <summary>Builds the scene.</summary>
     /// <param name="level">The level.</param>
@@ -84,6 +89,6 @@ public sealed class PlanningScene
             : character.Limits;
         var sweep = new TrunkSweepValidator(bvh, character.TrunkHalfExtents, limits.CollisionTolerance);
         var steering = new ParabolaSteering(limits, character.TrunkHalfExtents, arcValidator is null ? sweep : new BothArcValidators(sweep, arcValidator));
-        return new PlanningScene(level, character, bvh, surfaceSet, estimator, trunkSampler, steering);
+        return new PlanningScene(level, character, bvh, surfaceSet, estimator, trunkSampler, steering, new WalkSteering(bvh, character, limits.CollisionTolerance));
     }
 }

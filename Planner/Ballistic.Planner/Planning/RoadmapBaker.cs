@@ -4,6 +4,7 @@ using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Planning;
 
@@ -176,39 +177,37 @@ public sealed class RoadmapBaker
 
         // Pairs (new node i, earlier node j), j among the nearest within reach, in a fixed order: by (distance, id),
         // exactly as a scan over every earlier node would rank them.
-        var pairs = new List<(int I, int J)>();
-        var candidates = new List<(float Distance, int Id)>();
-        for (int k = 0; k < poses.Length; k++)
-        {
-            int i = firstId + k;
-            Vector3 p = poses[k].Pose.Position;
-            candidates.Clear();
-            index.OfferWithinReach(p, reach, settings.MaxNeighbours, candidates);
-            for (int m = 0; m < k; m++)
-            {
-                Vector3 q = poses[m].Pose.Position;
-                if (reach.InReach(p, q))
-                {
-                    NodeIndex.Offer(candidates, settings.MaxNeighbours, (Vector3.Distance(p, q), firstId + m));
-                }
-            }
+        List<(int I, int J)> pairs = Pairs(poses, firstId, settings.MaxNeighbours, (p, found) => index.OfferWithinReach(p, reach, settings.MaxNeighbours, found), reach.InReach);
 
-            NodeIndex.Finish(candidates);
-            foreach ((_, int j) in candidates)
-            {
-                pairs.Add((i, j));
-            }
-        }
+        // Walk pairs likewise: the nearest within walking distance, horizontally.
+        bool walking = settings.Locomotion == Locomotion.WalkAndJump && _scene.Walking.Limits.CanWalk && settings.MaxWalkNeighbours > 0;
+        float walkDistance = settings.MaxWalkDistance ?? BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
+        List<(int I, int J)> walkPairs = walking
+            ? Pairs(poses, firstId, settings.MaxWalkNeighbours, (p, found) => index.OfferWithin(p, walkDistance, settings.MaxWalkNeighbours, found), (p, q) => new Vector2(q.X - p.X, q.Z - p.Z).LengthSquared() <= walkDistance * walkDistance)
+            : [];
 
         RoadmapNode NodeOf(int id) => id < firstId ? roadmap.Nodes[id] : ToNode(poses[id - firstId], id);
         var forward = new SteeringResult[pairs.Count];
         var backward = new SteeringResult[pairs.Count];
-        bool cut = RunParallel(pairs.Count, settings.Threads, stopNow, n =>
+        var walkForward = new WalkResult[walkPairs.Count];
+        var walkBackward = new WalkResult[walkPairs.Count];
+        bool cut = RunParallel(pairs.Count + walkPairs.Count, settings.Threads, stopNow, n =>
         {
-            RoadmapNode a = NodeOf(pairs[n].I);
-            RoadmapNode b = NodeOf(pairs[n].J);
-            forward[n] = _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone);
-            backward[n] = _scene.Steering.Steer(b.Pose, b.Cone, a.Pose, a.Cone);
+            if (n < pairs.Count)
+            {
+                RoadmapNode a = NodeOf(pairs[n].I);
+                RoadmapNode b = NodeOf(pairs[n].J);
+                forward[n] = _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone);
+                backward[n] = _scene.Steering.Steer(b.Pose, b.Cone, a.Pose, a.Cone);
+            }
+            else
+            {
+                int w = n - pairs.Count;
+                RoadmapNode a = NodeOf(walkPairs[w].I);
+                RoadmapNode b = NodeOf(walkPairs[w].J);
+                walkForward[w] = _scene.Walking.Steer(a, b, walkDistance);
+                walkBackward[w] = _scene.Walking.Steer(b, a, walkDistance);
+            }
         });
         if (cut)
         {
@@ -240,7 +239,54 @@ public sealed class RoadmapBaker
             }
         }
 
+        for (int n = 0; n < walkPairs.Count; n++)
+        {
+            (int i, int j) = walkPairs[n];
+            if (walkForward[n].Walk is Walk there)
+            {
+                roadmap.AddWalk(new RoadmapWalk(i, j, there.Length, there.Duration));
+            }
+
+            if (walkBackward[n].Walk is Walk back)
+            {
+                roadmap.AddWalk(new RoadmapWalk(j, i, back.Length, back.Duration));
+            }
+        }
+
         return ids;
+    }
+
+    /// <summary>
+    /// For each new pose (id <paramref name="firstId"/> + k): the (new id, other id) pairs with the nearest
+    /// <paramref name="count"/> earlier nodes (<paramref name="offerEarlier"/> offers those of the index) and earlier
+    /// new poses passing <paramref name="near"/>, by (distance, id).
+    /// </summary>
+    private static List<(int I, int J)> Pairs(PoseEvaluation[] poses, int firstId, int count, Action<Vector3, List<(float Distance, int Id)>> offerEarlier, Func<Vector3, Vector3, bool> near)
+    {
+        var pairs = new List<(int I, int J)>();
+        var candidates = new List<(float Distance, int Id)>();
+        for (int k = 0; k < poses.Length; k++)
+        {
+            Vector3 p = poses[k].Pose.Position;
+            candidates.Clear();
+            offerEarlier(p, candidates);
+            for (int m = 0; m < k; m++)
+            {
+                Vector3 q = poses[m].Pose.Position;
+                if (near(p, q))
+                {
+                    NodeIndex.Offer(candidates, count, (Vector3.Distance(p, q), firstId + m));
+                }
+            }
+
+            NodeIndex.Finish(candidates);
+            foreach ((_, int j) in candidates)
+            {
+                pairs.Add((firstId + k, j));
+            }
+        }
+
+        return pairs;
     }
 
     private static RoadmapNode ToNode(PoseEvaluation pose, int id) => new(id, pose.Pose, pose.Cone, pose.Contacts);

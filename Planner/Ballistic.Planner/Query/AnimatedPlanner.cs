@@ -56,7 +56,7 @@ public sealed class AnimatedPlanner
 
         var baker = new RoadmapBaker(_scene);
         bake = bake with { CanStand = Animator.CanStand };
-        var query = new QuerySettings { Tolerance = bake.Tolerance };
+        var query = new QuerySettings { Tolerance = bake.Tolerance, Locomotion = bake.Locomotion };
         BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
         while (true)
         {

@@ -5,6 +5,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Query;
 
@@ -30,20 +31,28 @@ public sealed class PathQuery
 
     // Scratch of the search, valid for the current generation only (so nothing is cleared between requests).
     private readonly float[] _cost;
-    private readonly (int Node, int Edge)[] _cameFrom; // edge ≥ 0: roadmap edge; < 0: extra edge ~index
+    private readonly (int Node, int Edge, int Kind)[] _cameFrom; // kind: FromJump (roadmap edge), FromWalk (roadmap walk), FromExtra (the request's)
     private readonly int[] _reached;
     private readonly int[] _closed;
     private readonly int[] _extraFirst;
     private readonly int[] _extraLast;
     private readonly int[] _extraStamp;
     private readonly List<int> _extraNext = [];
-    private readonly List<(int From, int To, BallisticArc Arc)> _extra = [];
+    private readonly List<Extra> _extra = [];
     private readonly PriorityQueue<int, float> _open = new();
     private readonly List<(float Distance, int Id)> _nearest = [];
     private readonly List<(int Node, float FlightTime)> _goalEntries = [];
     private readonly float[] _heuristic;
     private readonly int[] _heuristicStamp;
     private int _generation;
+
+    // The costs of the current request: a jump's flight time plus this effort (0 without walking); walks when allowed.
+    private float _effort;
+    private bool _walking;
+    private (int From, int To)? _lostWalk;
+
+    /// <summary>An edge of one request only (start or goal off the roadmap): a jump's arc or a walk, with its search cost in seconds.</summary>
+    private readonly record struct Extra(int From, int To, float Cost, BallisticArc Arc, Walk? Walk);
 
     /// <summary>Creates a query over a roadmap baked for the scene's level and character.</summary>
     /// <exception cref="ArgumentException">The roadmap was baked for another level or character.</exception>
@@ -66,7 +75,7 @@ public sealed class PathQuery
         _reach = new ReachTest(scene.Steering.Limits);
         int count = roadmap.Nodes.Count + 2;
         _cost = new float[count];
-        _cameFrom = new (int, int)[count];
+        _cameFrom = new (int, int, int)[count];
         _reached = new int[count];
         _closed = new int[count];
         _extraFirst = new int[count];
@@ -241,6 +250,11 @@ public sealed class PathQuery
             return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed);
         }
 
+        // The request's costs: walking allowed when asked and the character walks.
+        _walking = settings.Locomotion == Locomotion.WalkAndJump && _scene.Walking.Limits.CanWalk;
+        _effort = _walking ? settings.JumpEffort : 0f;
+        float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
+
         // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
         int n = _roadmap.Nodes.Count;
         _extra.Clear();
@@ -249,10 +263,17 @@ public sealed class PathQuery
         ParabolaSteering steering = _scene.Steering;
         if (startIsNew || goalIsNew)
         {
-            if (rejected?.Contains((start.Id, goal.Id)) != true &&
-                steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
+            if (rejected?.Contains((start.Id, goal.Id)) != true)
             {
-                _extra.Add((start.Id, goal.Id, direct.Arc));
+                if (steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
+                {
+                    _extra.Add(new Extra(start.Id, goal.Id, direct.Arc.FlightTime + _effort, direct.Arc, null));
+                }
+
+                if (_walking && _scene.Walking.Steer(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
+                {
+                    _extra.Add(new Extra(start.Id, goal.Id, walk.Duration, default, walk));
+                }
             }
         }
 
@@ -276,12 +297,17 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add((start.Id, j, r.Arc));
+                    _extra.Add(new Extra(start.Id, j, r.Arc.FlightTime + _effort, r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
                     }
                 }
+            }
+
+            if (_walking && AddWalks(start, goal, walkDistance, settings, rejected, fromNode: true, termination, clock) is { } stoppedWalking)
+            {
+                return stoppedWalking;
             }
         }
 
@@ -305,70 +331,109 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add((j, goal.Id, r.Arc));
+                    _extra.Add(new Extra(j, goal.Id, r.Arc.FlightTime + _effort, r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
                     }
                 }
             }
+
+            if (_walking && AddWalks(goal, start, walkDistance, settings, rejected, fromNode: false, termination, clock) is { } stoppedWalking)
+            {
+                return stoppedWalking;
+            }
         }
 
-        List<Jump>? path = AStar(start, goal, rejected, termination, clock, out int expansions, out PlanResult? cut);
+        _lostWalk = null;
+        List<Move>? path = AStar(start, goal, rejected, termination, clock, out int expansions, out PlanResult? cut);
         if (cut is not null)
         {
             return cut with { Expansions = expansions };
         }
 
+        if (_lostWalk is (int lostFrom, int lostTo))
+        {
+            return Fail(PlannerStatus.NoPath, $"the roadmap's walk from node {lostFrom} to node {lostTo} no longer finds its ground on this level: bake the roadmap again", start, goal, clock) with { Expansions = expansions };
+        }
+
+        if (path is not null && _walking)
+        {
+            if (settings.Shortcut)
+            {
+                path = Shortcut(path, settings, rejected);
+            }
+
+            path = JoinWalks(path, _scene.Walking);
+        }
+
+        string moves = _walking ? "moves (jumps or walks)" : "jumps";
+        string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
         PlanResult result = path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({n} nodes, {_roadmap.Edges.Count} jumps) holds no sequence of jumps from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {JumpRepair.Jumps(rejected.Count)} set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{JumpRepair.Jumps(path.Count)} found", start, goal, path, clock.Elapsed);
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed);
         return result with { Expansions = expansions };
     }
 
     /// <summary>
-    /// A* over the roadmap plus the request's extra edges. Cost: flight time. Heuristic: the larger of two lower
-    /// bounds on the remaining flight time, so the path found is of least total flight time: the horizontal distance
-    /// to the goal divided by the fastest horizontal speed of any jump (every jump covers its horizontal distance at
-    /// most that fast), and the roadmap's landmark bounds (<see cref="Landmarks"/>; for a goal off the roadmap, through
-    /// the nodes jumping to it), which also prune nodes that cannot reach the goal.
+    /// A* over the roadmap plus the request's extra edges. Cost: time, a jump's flight time plus the request's jump
+    /// effort (none in jump-only mode), a walk's duration. Heuristic: in jump-only mode the larger of two lower bounds
+    /// on the remaining flight time, so the path found is of least total flight time: the horizontal distance to the
+    /// goal divided by the fastest horizontal speed of any jump (every jump covers its horizontal distance at most
+    /// that fast), and the roadmap's landmark bounds (<see cref="Landmarks"/>; for a goal off the roadmap, through the
+    /// nodes jumping to it), which also prune nodes that cannot reach the goal. With walking, the distance bound alone,
+    /// over the faster of the fastest jump and the walking speed (landmarks know jumps only).
     /// </summary>
-    private List<Jump>? AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out int expansions, out PlanResult? cut)
+    private List<Move>? AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out int expansions, out PlanResult? cut)
     {
         int generation = NextGeneration();
         expansions = 0;
         cut = null;
         float fastest = _roadmap.MaxHorizontalSpeed;
+        if (_walking)
+        {
+            fastest = MathF.Max(fastest, _scene.Walking.Limits.Speed);
+        }
+
         int roadmapCount = _roadmap.Nodes.Count;
         _extraNext.Clear();
         _goalEntries.Clear();
         for (int e = 0; e < _extra.Count; e++)
         {
-            (int from, int to, BallisticArc arc) = _extra[e];
+            Extra extra = _extra[e];
             _extraNext.Add(-1);
-            if (_extraStamp[from] != generation)
+            if (_extraStamp[extra.From] != generation)
             {
-                _extraStamp[from] = generation;
-                _extraFirst[from] = e;
+                _extraStamp[extra.From] = generation;
+                _extraFirst[extra.From] = e;
             }
             else
             {
-                _extraNext[_extraLast[from]] = e;
+                _extraNext[_extraLast[extra.From]] = e;
             }
 
-            _extraLast[from] = e;
-            fastest = MathF.Max(fastest, arc.HorizontalSpeed);
-            if (to == goal.Id && from < roadmapCount)
+            _extraLast[extra.From] = e;
+            if (extra.Walk is null)
             {
-                _goalEntries.Add((from, arc.FlightTime));
+                fastest = MathF.Max(fastest, extra.Arc.HorizontalSpeed);
+                if (extra.To == goal.Id && extra.From < roadmapCount)
+                {
+                    _goalEntries.Add((extra.From, extra.Arc.FlightTime));
+                }
             }
         }
 
-        var heuristic = new Heuristic(this, goal, fastest > 0f ? 1f / fastest : 0f, generation);
+        var heuristic = new Heuristic(this, goal, fastest > 0f ? 1f / fastest : 0f, generation, landmarks: !_walking);
         ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
         ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
         ReadOnlySpan<int> edges = _roadmap.OutgoingEdges;
+        ReadOnlySpan<int> walkOffsets = _roadmap.WalkOffsets;
+        ReadOnlySpan<int> walkTargets = _roadmap.WalkTargets;
+        ReadOnlySpan<float> walkTimes = _roadmap.WalkDurations;
+        ReadOnlySpan<int> walkEntries = _roadmap.WalkEntries;
+        bool walks = _walking && _roadmap.Walks.Count > 0;
+        float effort = _effort;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -402,18 +467,14 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    int next = targets[i];
-                    float candidate = here + times[i];
-                    if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
+                    Relax(node, targets[i], here + times[i] + effort, edges[i], FromJump, ref heuristic);
+                }
+
+                if (walks)
+                {
+                    for (int i = walkOffsets[node], end = walkOffsets[node + 1]; i < end; i++)
                     {
-                        float h = heuristic.At(next);
-                        if (h < float.PositiveInfinity)
-                        {
-                            cost[next] = candidate;
-                            reached[next] = generation;
-                            _cameFrom[next] = (node, edges[i]);
-                            open.Enqueue(next, candidate + h);
-                        }
+                        Relax(node, walkTargets[i], here + walkTimes[i], walkEntries[i], FromWalk, ref heuristic);
                     }
                 }
             }
@@ -422,25 +483,33 @@ public sealed class PathQuery
             {
                 for (int e = _extraFirst[node]; e >= 0; e = _extraNext[e])
                 {
-                    int next = _extra[e].To;
-                    float candidate = here + _extra[e].Arc.FlightTime;
-                    if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
-                    {
-                        float h = heuristic.At(next);
-                        if (h < float.PositiveInfinity)
-                        {
-                            cost[next] = candidate;
-                            reached[next] = generation;
-                            _cameFrom[next] = (node, ~e);
-                            open.Enqueue(next, candidate + h);
-                        }
-                    }
+                    Relax(node, _extra[e].To, here + _extra[e].Cost, e, FromExtra, ref heuristic);
                 }
             }
         }
 
         return null;
+
+        void Relax(int node, int next, float candidate, int edge, int kind, ref Heuristic h)
+        {
+            if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
+            {
+                float bound = h.At(next);
+                if (bound < float.PositiveInfinity)
+                {
+                    cost[next] = candidate;
+                    reached[next] = generation;
+                    _cameFrom[next] = (node, edge, kind);
+                    open.Enqueue(next, candidate + bound);
+                }
+            }
+        }
     }
+
+    /// <summary>Kinds of the edge a node was reached by (<see cref="_cameFrom"/>).</summary>
+    private const int FromJump = 0;
+    private const int FromWalk = 1;
+    private const int FromExtra = 2;
 
     /// <summary>The A* heuristic of one search, each node's value computed once (seconds; +∞: cannot reach the goal).</summary>
     private readonly ref struct Heuristic
@@ -455,17 +524,17 @@ public sealed class PathQuery
         private readonly ReadOnlySpan<float> _goalFrom;
         private readonly ReadOnlySpan<float> _goalTo;
 
-        public Heuristic(PathQuery query, RoadmapNode goal, float inverseSpeed, int generation)
+        public Heuristic(PathQuery query, RoadmapNode goal, float inverseSpeed, int generation, bool landmarks)
         {
             _query = query;
             _goal = goal.Id;
             _target = new Vector2(goal.Pose.Position.X, goal.Pose.Position.Z);
             _inverseSpeed = inverseSpeed;
             _generation = generation;
-            _landmarks = query._roadmap.Landmarks;
+            _landmarks = landmarks ? query._roadmap.Landmarks : Landmarks.None;
             _goalOnRoadmap = goal.Id < query._roadmap.Nodes.Count;
-            _goalFrom = _goalOnRoadmap ? _landmarks.From(goal.Id) : [];
-            _goalTo = _goalOnRoadmap ? _landmarks.To(goal.Id) : [];
+            _goalFrom = _goalOnRoadmap && _landmarks.Count > 0 ? _landmarks.From(goal.Id) : [];
+            _goalTo = _goalOnRoadmap && _landmarks.Count > 0 ? _landmarks.To(goal.Id) : [];
         }
 
         public float At(int node)
@@ -524,20 +593,185 @@ public sealed class PathQuery
         return ++_generation;
     }
 
-    private List<Jump> Reconstruct(RoadmapNode start, RoadmapNode goal)
+    /// <summary>The moves from the start to the goal by the search's back-pointers; <c>null</c> (with <see cref="_lostWalk"/> set) when a roadmap walk no longer traces.</summary>
+    private List<Move>? Reconstruct(RoadmapNode start, RoadmapNode goal)
     {
         RoadmapNode NodeAt(int id) => id == start.Id ? start : id == goal.Id ? goal : _roadmap.Node(id);
-        var jumps = new List<Jump>();
+        var moves = new List<Move>();
         for (int node = goal.Id; node != start.Id; node = _cameFrom[node].Node)
         {
-            int edge = _cameFrom[node].Edge;
-            BallisticArc arc = edge >= 0 ? _roadmap.Edge(edge).Arc : _extra[~edge].Arc;
-            jumps.Add(new Jump(NodeAt(_cameFrom[node].Node), NodeAt(node), arc));
+            (int fromId, int edge, int kind) = _cameFrom[node];
+            RoadmapNode from = NodeAt(fromId);
+            RoadmapNode to = NodeAt(node);
+            switch (kind)
+            {
+                case FromJump:
+                    moves.Add(new Jump(from, to, _roadmap.Edge(edge).Arc));
+                    break;
+                case FromWalk:
+                    // The roadmap keeps a walk's length; its ground path is traced again, exactly as the bake did.
+                    if (_scene.Walking.Steer(from, to).Walk is not Walk walk)
+                    {
+                        _lostWalk = (fromId, node);
+                        return null;
+                    }
+
+                    moves.Add(walk);
+                    break;
+                default:
+                    Extra extra = _extra[edge];
+                    moves.Add(extra.Walk is Walk w ? w : new Jump(from, to, extra.Arc));
+                    break;
+            }
         }
 
-        jumps.Reverse();
-        return jumps;
+        moves.Reverse();
+        return moves;
     }
+
+    /// <summary>
+    /// Links <paramref name="stance"/> (the start, <paramref name="fromNode"/> true, or the goal) by walks to (from)
+    /// its nearest roadmap nodes within <paramref name="distance"/> metres, as the bake links nodes.
+    /// </summary>
+    private PlanResult? AddWalks(RoadmapNode stance, RoadmapNode other, float distance, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, bool fromNode, TerminationCondition? termination, Stopwatch clock)
+    {
+        _roadmap.NearestWithin(stance.Pose.Position, distance, settings.MaxNeighbours, _nearest);
+        int connected = 0;
+        foreach ((_, int j) in _nearest)
+        {
+            (int a, int b) = fromNode ? (stance.Id, j) : (j, stance.Id);
+            if (rejected?.Contains((a, b)) == true)
+            {
+                continue;
+            }
+
+            if (Stopped(termination, clock, fromNode ? stance : other, fromNode ? other : stance) is { } stopped)
+            {
+                return stopped;
+            }
+
+            RoadmapNode node = _roadmap.Node(j);
+            if ((fromNode ? _scene.Walking.Steer(stance, node, distance) : _scene.Walking.Steer(node, stance, distance)).Walk is Walk walk)
+            {
+                _extra.Add(new Extra(a, b, walk.Duration, default, walk));
+                if (++connected >= settings.Connections * 2)
+                {
+                    break;
+                }
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>A move's cost in the search, seconds: a walk's duration, a jump's flight time plus the effort.</summary>
+    private float CostOf(Move move) => move is Jump jump ? jump.Arc.FlightTime + _effort : move.Duration;
+
+    /// <summary>
+    /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that
+    /// (two or more moves on) one direct jump, that takes less time than the moves it replaces (jump effort included)
+    /// replaces them; a jump to the next pose may become a walk longer than the roadmap's walk edges. Greedy from the
+    /// start; never uses a move set aside.
+    /// </summary>
+    private List<Move> Shortcut(List<Move> path, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected)
+    {
+        if (path.Count < 2)
+        {
+            return path;
+        }
+
+        var poses = new List<RoadmapNode> { path[0].From };
+        poses.AddRange(path.Select(m => m.To));
+        var costs = new float[path.Count + 1];
+        for (int k = 0; k < path.Count; k++)
+        {
+            costs[k + 1] = costs[k] + CostOf(path[k]);
+        }
+
+        var result = new List<Move>();
+        int i = 0;
+        while (i < path.Count)
+        {
+            Move? best = null;
+            int bestEnd = i + 1;
+            for (int j = path.Count; j >= i + 1 && best is null; j--)
+            {
+                // One move on: only a jump, replaced by a walk between the same stances (longer than a walk edge).
+                RoadmapNode a = poses[i];
+                RoadmapNode b = poses[j];
+                if (a.Id == b.Id || rejected?.Contains((a.Id, b.Id)) == true || (j == i + 1 && path[i] is not Jump))
+                {
+                    continue;
+                }
+
+                float saving = costs[j] - costs[i] - 1e-3f;
+                if (_scene.Walking.Steer(a, b, settings.MaxDirectWalk).Walk is Walk walk && walk.Duration < saving)
+                {
+                    best = walk;
+                }
+                else if (j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
+                    _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && jump.Arc.FlightTime + _effort < saving)
+                {
+                    best = new Jump(a, b, jump.Arc);
+                }
+
+                if (best is not null)
+                {
+                    bestEnd = j;
+                }
+            }
+
+            result.Add(best ?? path[i]);
+            i = bestEnd;
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// Joins consecutive walks into one walk through the stances between them (the character does not stop there)
+    /// when the trunk stays clear along the joined walk (its trunk follows the joined path, not each part's).
+    /// </summary>
+    private static List<Move> JoinWalks(List<Move> path, WalkSteering walking)
+    {
+        var result = new List<Move>();
+        foreach (Move move in path)
+        {
+            if (move is Walk next && result.Count > 0 && result[^1] is Walk previous &&
+                Joined(previous, next) is Walk joined && walking.TrunkIsFree(joined))
+            {
+                result[^1] = joined;
+            }
+            else
+            {
+                result.Add(move);
+            }
+        }
+
+        return result;
+    }
+
+    private static Walk Joined(Walk first, Walk second)
+    {
+        var points = new List<Vector3>(first.Path);
+        points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via]);
+    }
+
+    /// <summary>"3 jumps", "2 walks and 1 jump".</summary>
+    private static string Describe(IReadOnlyList<Move> path)
+    {
+        int walks = path.Count(m => m is Walk);
+        int jumps = path.Count - walks;
+        return walks == 0 ? JumpRepair.Jumps(jumps)
+            : jumps == 0 ? Plural(walks, "walk")
+            : $"{Plural(walks, "walk")} and {JumpRepair.Jumps(jumps)}";
+    }
+
+    /// <summary>"1 move", "3 moves".</summary>
+    private static string Moves(int count) => Plural(count, "move");
+
+    private static string Plural(int count, string noun) => count == 1 ? $"1 {noun}" : $"{count} {noun}s";
 
     /// <summary>The failure to return when <paramref name="termination"/> says to stop now, otherwise <c>null</c>.</summary>
     private static PlanResult? Stopped(TerminationCondition? termination, Stopwatch clock, RoadmapNode? start, RoadmapNode? goal) =>

@@ -1,3 +1,4 @@
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Sampling;
 
 namespace Ballistic.Planner.Query;
@@ -39,11 +40,29 @@ public sealed record QuerySettings
     public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>The default <see cref="JumpEffort"/>, seconds.</summary>
-    public const float DefaultJumpEffort = 2f;
+    public const float DefaultJumpEffort = 4f;
 
     /// <summary>
     /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking: a path jumps only
     /// where that saves more time than this. Not negative. Unused in <see cref="Locomotion.Jump"/> mode.
     /// </summary>
     public float JumpEffort { get; init; } = DefaultJumpEffort;
+
+    /// <summary>
+    /// A start or goal off the roadmap is linked by walks to and from roadmap nodes at most this far (metres,
+    /// horizontally); <c>null</c> for the bake's default (<see cref="Planning.BakeSettings.DefaultMaxWalkDistance"/>).
+    /// </summary>
+    public float? MaxWalkDistance { get; init; }
+
+    /// <summary>
+    /// The longest walk (metres, horizontally) tried straight from the start to the goal and between the poses of a
+    /// path when shortcutting it.
+    /// </summary>
+    public float MaxDirectWalk { get; init; } = 40f;
+
+    /// <summary>
+    /// When walking is allowed: after the search, replace stretches of the path by one direct walk (or jump) between
+    /// non-adjacent poses when that takes less time (jump effort included), then join consecutive walks into one.
+    /// </summary>
+    public bool Shortcut { get; init; } = true;
 }

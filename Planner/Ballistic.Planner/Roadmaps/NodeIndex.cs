@@ -132,6 +132,30 @@ internal sealed class NodeIndex
     }
 
     /// <summary>
+    /// The <paramref name="count"/> points nearest <paramref name="point"/> (3D distance, then id) among those at most
+    /// <paramref name="across"/> metres from it horizontally, added to <paramref name="nearest"/> by
+    /// <see cref="Offer"/>: call <see cref="Finish"/> once every candidate is offered.
+    /// </summary>
+    public void OfferWithin(Vector3 point, float across, int count, List<(float Distance, int Id)> nearest)
+    {
+        var cells = new CellEnumerator(this, point, across);
+        float squared = across * across;
+        while (cells.MoveNext())
+        {
+            foreach (int id in cells.Current)
+            {
+                Vector3 q = _points[id];
+                float dx = q.X - point.X;
+                float dz = q.Z - point.Z;
+                if ((dx * dx) + (dz * dz) <= squared)
+                {
+                    Offer(nearest, count, (Vector3.Distance(point, q), id));
+                }
+            }
+        }
+    }
+
+    /// <summary>
     /// Keeps <paramref name="candidate"/> among the <paramref name="count"/> smallest (distance, id) pairs offered
     /// so far: <paramref name="kept"/> is a max-heap of them, in no useful order until <see cref="Finish"/>.
     /// </summary>

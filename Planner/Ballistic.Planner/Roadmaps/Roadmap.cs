@@ -31,8 +31,13 @@ public sealed class Roadmap
     private readonly NodeIndex _positionIndex;
     private readonly NodeIndex _centreIndex;
     private readonly Landmarks _landmarks;
+    private readonly RoadmapWalk[] _walks;
+    private readonly int[] _walkOffsets;
+    private readonly int[] _walkTargets;
+    private readonly float[] _walkDurations;
+    private readonly int[] _walkRows;
 
-    internal Roadmap(string levelFingerprint, string characterFingerprint, string characterName, int seed, RoadmapNode[] nodes, RoadmapEdge[] edges)
+    internal Roadmap(string levelFingerprint, string characterFingerprint, string characterName, int seed, RoadmapNode[] nodes, RoadmapEdge[] edges, RoadmapWalk[] walks)
     {
         LevelFingerprint = levelFingerprint;
         CharacterFingerprint = characterFingerprint;
@@ -97,7 +102,51 @@ public sealed class Roadmap
         _positionIndex = new NodeIndex(cell, _positions);
         _centreIndex = new NodeIndex(cell, _centres);
         _landmarks = Landmarks.Build(_horizontal, _offsets, _rowTargets, _rowFlightTimes);
+
+        // Walks in compressed rows too.
+        _walks = walks;
+        Walks = Array.AsReadOnly(walks);
+        _walkOffsets = new int[n + 1];
+        foreach (RoadmapWalk walk in walks)
+        {
+            _walkOffsets[walk.From + 1]++;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            _walkOffsets[i + 1] += _walkOffsets[i];
+        }
+
+        _walkTargets = new int[walks.Length];
+        _walkDurations = new float[walks.Length];
+        _walkRows = new int[walks.Length];
+        int[] nextWalk = n > 0 ? _walkOffsets[..n] : [];
+        for (int w = 0; w < walks.Length; w++)
+        {
+            int k = nextWalk[walks[w].From]++;
+            _walkTargets[k] = walks[w].To;
+            _walkDurations[k] = walks[w].Duration;
+            _walkRows[k] = w;
+        }
     }
+
+    /// <summary>The walks (directed), in insertion order; empty for a roadmap baked without walking.</summary>
+    public IReadOnlyList<RoadmapWalk> Walks { get; }
+
+    /// <summary>Compressed rows of the outgoing walks, as <see cref="OutgoingOffsets"/> for jumps: node i's walks are entries <c>WalkOffsets[i]</c> to <c>WalkOffsets[i + 1] − 1</c>.</summary>
+    public ReadOnlySpan<int> WalkOffsets => _walkOffsets;
+
+    /// <summary>Node walked to of each outgoing-walk entry (see <see cref="WalkOffsets"/>).</summary>
+    public ReadOnlySpan<int> WalkTargets => _walkTargets;
+
+    /// <summary>Duration in seconds of each outgoing-walk entry (see <see cref="WalkOffsets"/>).</summary>
+    public ReadOnlySpan<float> WalkDurations => _walkDurations;
+
+    /// <summary>Index into <see cref="Walks"/> of each outgoing-walk entry (see <see cref="WalkOffsets"/>).</summary>
+    public ReadOnlySpan<int> WalkEntries => _walkRows;
+
+    /// <summary>The walk of index <paramref name="walk"/> without the read-only wrapper.</summary>
+    internal ref readonly RoadmapWalk Walk(int walk) => ref _walks[walk];
 
     /// <summary>Fingerprint of the level the roadmap was baked on.</summary>
     public string LevelFingerprint { get; }
@@ -160,9 +209,27 @@ public sealed class Roadmap
     /// <summary>Landmark flight times, for the A* heuristic.</summary>
     internal Landmarks Landmarks => _landmarks;
 
-    /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/>.</summary>
+    /// <summary>True when a path of jumps leads from <paramref name="from"/> to <paramref name="to"/>.</summary>
     public bool Reaches(int from, int to) =>
         Reachability.Reaches(_nodes.Length, from, to, node => _rowTargets.AsSpan(_offsets[node], _offsets[node + 1] - _offsets[node]));
+
+    /// <summary>True when a path of jumps and walks leads from <paramref name="from"/> to <paramref name="to"/>.</summary>
+    public bool ReachesWalking(int from, int to)
+    {
+        if (_walks.Length == 0)
+        {
+            return Reaches(from, to);
+        }
+
+        var targets = new List<int>();
+        return Reachability.Reaches(_nodes.Length, from, to, node =>
+        {
+            targets.Clear();
+            targets.AddRange(_rowTargets.AsSpan(_offsets[node], _offsets[node + 1] - _offsets[node]));
+            targets.AddRange(_walkTargets.AsSpan(_walkOffsets[node], _walkOffsets[node + 1] - _walkOffsets[node]));
+            return System.Runtime.InteropServices.CollectionsMarshal.AsSpan(targets);
+        });
+    }
 
     /// <summary>
     /// The node whose contact centre (<see cref="ContactCentres"/>) is nearest <paramref name="point"/> (3D distance;
@@ -208,6 +275,14 @@ public sealed class Roadmap
         ArgumentOutOfRangeException.ThrowIfNegative(count);
         nearest.Clear();
         _positionIndex.OfferWithinReach(point, reach, count, nearest);
+        NodeIndex.Finish(nearest);
+    }
+
+    /// <summary>The nodes whose trunk centre is at most <paramref name="across"/> metres from <paramref name="point"/> horizontally, nearest first (3D distance, then id), at most <paramref name="count"/>.</summary>
+    internal void NearestWithin(Vector3 point, float across, int count, List<(float Distance, int Id)> nearest)
+    {
+        nearest.Clear();
+        _positionIndex.OfferWithin(point, across, count, nearest);
         NodeIndex.Finish(nearest);
     }
 

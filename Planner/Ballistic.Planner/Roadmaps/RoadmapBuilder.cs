@@ -10,6 +10,7 @@ public sealed class RoadmapBuilder
 {
     private readonly List<RoadmapNode> _nodes = [];
     private readonly List<RoadmapEdge> _edges = [];
+    private readonly List<RoadmapWalk> _walks = [];
     private readonly List<List<int>> _targets = [];
 
     /// <summary>Creates an empty roadmap for a level and character.</summary>
@@ -46,6 +47,9 @@ public sealed class RoadmapBuilder
     /// <summary>The edges so far, in insertion order.</summary>
     public IReadOnlyList<RoadmapEdge> Edges => _edges;
 
+    /// <summary>The walks so far, in insertion order.</summary>
+    public IReadOnlyList<RoadmapWalk> Walks => _walks;
+
     /// <summary>Adds a node; its id must be the current node count.</summary>
     /// <exception cref="ArgumentException">The node's id is not the next id.</exception>
     public void AddNode(RoadmapNode node)
@@ -73,7 +77,20 @@ public sealed class RoadmapBuilder
         _edges.Add(edge);
     }
 
-    /// <summary>True when a path of edges leads from <paramref name="from"/> to <paramref name="to"/> in the roadmap so far.</summary>
+    /// <summary>Adds a directed walk between existing nodes.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">An endpoint is not a node of this roadmap, or the walk joins a node to itself.</exception>
+    public void AddWalk(RoadmapWalk walk)
+    {
+        if ((uint)walk.From >= (uint)_nodes.Count || (uint)walk.To >= (uint)_nodes.Count || walk.From == walk.To)
+        {
+            throw new ArgumentOutOfRangeException(nameof(walk), $"Walk {walk.From} → {walk.To} names a node outside 0..{_nodes.Count - 1} or joins a node to itself.");
+        }
+
+        _targets[walk.From].Add(walk.To);
+        _walks.Add(walk);
+    }
+
+    /// <summary>True when a path of edges (jumps or walks) leads from <paramref name="from"/> to <paramref name="to"/> in the roadmap so far.</summary>
     public bool Reaches(int from, int to) =>
         Reachability.Reaches(_nodes.Count, from, to, node => CollectionsMarshal.AsSpan(_targets[node]));
 
@@ -81,5 +98,5 @@ public sealed class RoadmapBuilder
     /// The roadmap so far as an immutable <see cref="Roadmap"/>, with its search arrays and spatial index built
     /// now. The builder stays usable: later additions do not change the roadmaps already frozen.
     /// </summary>
-    public Roadmap Freeze() => new(LevelFingerprint, CharacterFingerprint, CharacterName, Seed, [.. _nodes], [.. _edges]);
+    public Roadmap Freeze() => new(LevelFingerprint, CharacterFingerprint, CharacterName, Seed, [.. _nodes], [.. _edges], [.. _walks]);
 }

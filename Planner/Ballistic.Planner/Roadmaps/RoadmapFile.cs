@@ -12,7 +12,8 @@ namespace Ballistic.Planner.Roadmaps;
 
 /// <summary>
 /// The binary roadmap format: magic <c>BLSTRMAP</c>, a version, the level and character fingerprints, the seed,
-/// the nodes and edges (little-endian IEEE floats), and a SHA-256 of everything before it. Writing the same roadmap
+/// the nodes, the jump edges and (version 2) the walk edges (little-endian IEEE floats), and a SHA-256 of everything
+/// before it. A roadmap without walks is written as version 1, byte for byte as before walking existed. Writing the same roadmap
 /// always gives the same bytes. Saving goes through a temporary file, so a failed save leaves the old file intact.
 /// Reading trusts nothing the checksum cannot vouch for: every value is checked (finite, in range, unit where it
 /// should be) and, for the character and level it is loaded for, every jump is re-checked against its ends, the
@@ -20,8 +21,8 @@ namespace Ballistic.Planner.Roadmaps;
 /// </summary>
 public static class RoadmapFile
 {
-    /// <summary>The format version this code writes and reads.</summary>
-    public const ushort Version = 1;
+    /// <summary>The newest format version this code writes and reads (version 2 adds walks; version 1 is still read, and written for a roadmap without walks).</summary>
+    public const ushort Version = 2;
 
     private static readonly byte[] Magic = "BLSTRMAP"u8.ToArray();
     private const int HashSize = 32;
@@ -34,7 +35,7 @@ public static class RoadmapFile
         using (var w = new BinaryWriter(stream, Encoding.UTF8, leaveOpen: true))
         {
             w.Write(Magic);
-            w.Write(Version);
+            w.Write(roadmap.Walks.Count > 0 ? Version : (ushort)1);
             w.Write(Convert.FromHexString(roadmap.LevelFingerprint));
             w.Write(Convert.FromHexString(roadmap.CharacterFingerprint));
             w.Write(roadmap.CharacterName);
@@ -65,6 +66,18 @@ public static class RoadmapFile
                 Write(w, edge.Arc.TakeoffVelocity);
                 w.Write(edge.Arc.FlightTime);
                 w.Write(edge.Arc.Gravity);
+            }
+
+            if (roadmap.Walks.Count > 0)
+            {
+                w.Write(roadmap.Walks.Count);
+                foreach (RoadmapWalk walk in roadmap.Walks)
+                {
+                    w.Write(walk.From);
+                    w.Write(walk.To);
+                    w.Write(walk.Length);
+                    w.Write(walk.Duration);
+                }
             }
         }
 
@@ -165,6 +178,7 @@ public static class RoadmapFile
         }
 
         CheckForCharacter(roadmap, character, path);
+        CheckWalks(roadmap, character, path);
         return roadmap;
     }
 
@@ -203,6 +217,33 @@ public static class RoadmapFile
         }
     }
 
+    /// <summary>The walks' checks for the character: it walks, each walk's time is its length at the character's speed, and no walk is shorter than the ground between its nodes' contacts.</summary>
+    private static void CheckWalks(Roadmap roadmap, ReducedCharacter character, string name)
+    {
+        for (int w = 0; w < roadmap.Walks.Count; w++)
+        {
+            RoadmapWalk walk = roadmap.Walks[w];
+            if (!character.Walking.CanWalk)
+            {
+                throw Invalid(name, $"it holds walks, but {character.Name} does not walk");
+            }
+
+            float expected = walk.Length / character.Walking.Speed;
+            if (!(MathF.Abs(walk.Duration - expected) <= 1e-3f * MathF.Max(1f, expected)))
+            {
+                throw Invalid(name, $"walk {w} (nodes {walk.From} → {walk.To}) takes {walk.Duration:G4} s for {walk.Length:G4} m, not {expected:G4} s at {character.Name}'s walking speed of {character.Walking.Speed:G4} m/s");
+            }
+
+            Vector3 a = roadmap.ContactCentres[walk.From];
+            Vector3 b = roadmap.ContactCentres[walk.To];
+            float across = new Vector2(b.X - a.X, b.Z - a.Z).Length();
+            if (walk.Length < across - 0.01f)
+            {
+                throw Invalid(name, $"walk {w} (nodes {walk.From} → {walk.To}) is {walk.Length:G4} m long, shorter than the {across:G4} m between its nodes' contacts");
+            }
+        }
+    }
+
     private static RoadmapFileException Invalid(string name, string what) => new($"Roadmap file {name} is invalid: {what}.");
 
     /// <summary>Parses roadmap bytes.</summary>
@@ -217,9 +258,9 @@ public static class RoadmapFile
         }
 
         ushort version = BinaryPrimitives.ReadUInt16LittleEndian(bytes[Magic.Length..]);
-        if (version != Version)
+        if (version is not (1 or Version))
         {
-            throw new RoadmapFileException($"Roadmap file {name} has format version {version}; this version of Ballistic reads version {Version}.");
+            throw new RoadmapFileException($"Roadmap file {name} has format version {version}; this version of Ballistic reads versions 1 to {Version}.");
         }
 
         ReadOnlySpan<byte> payload = bytes[..^HashSize];
@@ -242,7 +283,7 @@ public static class RoadmapFile
     {
         using var r = new BinaryReader(new MemoryStream(payload), Encoding.UTF8);
         r.ReadBytes(Magic.Length);
-        r.ReadUInt16();
+        ushort version = r.ReadUInt16();
         string level = Convert.ToHexStringLower(r.ReadBytes(32));
         string character = Convert.ToHexStringLower(r.ReadBytes(32));
         string characterName = r.ReadString();
@@ -309,9 +350,32 @@ public static class RoadmapFile
             roadmap.AddEdge(new RoadmapEdge(from, to, new BallisticArc(a.Pose, b.Pose, velocity, flightTime, gravity)));
         }
 
+        if (version >= 2)
+        {
+            int walkCount = Count(r, payload.Length, name, "walks");
+            for (int i = 0; i < walkCount; i++)
+            {
+                int from = r.ReadInt32();
+                int to = r.ReadInt32();
+                float length = r.ReadSingle();
+                float duration = r.ReadSingle();
+                if ((uint)from >= (uint)nodeCount || (uint)to >= (uint)nodeCount || from == to)
+                {
+                    throw new RoadmapFileException($"Roadmap file {name} is corrupt (walk {i} joins nodes {from} and {to}, but there are {nodeCount}).");
+                }
+
+                if (!(length > 0f && length <= MaxCoordinate) || !(duration > 0f && duration <= MaxCoordinate))
+                {
+                    throw Invalid(name, $"walk {i} has a length of {length:G4} m or a duration of {duration:G4} s (each must be above 0 and at most {MaxCoordinate:G3})");
+                }
+
+                roadmap.AddWalk(new RoadmapWalk(from, to, length, duration));
+            }
+        }
+
         if (r.BaseStream.Position != payload.Length)
         {
-            throw new RoadmapFileException($"Roadmap file {name} is corrupt ({payload.Length - r.BaseStream.Position} unexpected bytes after the edges).");
+            throw new RoadmapFileException($"Roadmap file {name} is corrupt ({payload.Length - r.BaseStream.Position} unexpected bytes after the {(version >= 2 ? "walks" : "edges")}).");
         }
 
         return roadmap.Freeze();

@@ -108,6 +108,7 @@ public sealed class CharacterAsset
                 TakeoffSpeedMax ?? reduced.TakeoffSpeedMax, LandingSpeedMax ?? reduced.LandingSpeedMax, Friction ?? reduced.Friction)
             {
                 StanceLift = reduced.StanceLift,
+                Walking = reduced.Walking,
             };
             return (model, overridden);
         }

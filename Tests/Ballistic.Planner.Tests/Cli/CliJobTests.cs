@@ -33,7 +33,7 @@ public sealed class CliJobTests
         JsonElement root = json.RootElement;
         Assert.Multiple(() =>
         {
-            Assert.That(root.GetProperty("schema").GetString(), Is.EqualTo("ballistic.plan/1"));
+            Assert.That(root.GetProperty("schema").GetString(), Is.EqualTo("ballistic.plan/2"));
             Assert.That(root.GetProperty("status").GetString(), Is.EqualTo("exact"));
             Assert.That(root.GetProperty("character").GetProperty("name").GetString(), Is.EqualTo("skeleton"));
             Assert.That(Vec(root.GetProperty("character").GetProperty("gravity")), Is.EqualTo(new Vector3(0f, -9.81f, 0f)));

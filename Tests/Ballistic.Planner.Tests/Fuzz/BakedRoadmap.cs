@@ -8,7 +8,7 @@ internal sealed record BakedRoadmap(byte[] Bytes, string LevelFingerprint, Reduc
 {
     private const int HashSize = 32;
 
-    /// <summary>Where each field of the file lies: counts, floats and node indices (the roadmap format, version 1).</summary>
+    /// <summary>Where each field of the file lies: counts, floats and node indices (the roadmap format, version 1, or 2 with walks).</summary>
     public RoadmapFields Fields()
     {
         var fields = new RoadmapFields();
@@ -65,6 +65,21 @@ internal sealed record BakedRoadmap(byte[] Bytes, string LevelFingerprint, Reduc
             }
 
             at += 28;
+        }
+
+        if (BinaryPrimitives.ReadUInt16LittleEndian(Bytes.AsSpan(8)) >= 2)
+        {
+            fields.Counts.Add(at);
+            int walks = BinaryPrimitives.ReadInt32LittleEndian(Bytes.AsSpan(at));
+            at += 4;
+            for (int w = 0; w < walks; w++)
+            {
+                fields.Indices.Add(at);
+                fields.Indices.Add(at + 4);
+                fields.Floats.Add(at + 8); // length
+                fields.Floats.Add(at + 12); // duration
+                at += 16;
+            }
         }
 
         fields.PayloadLength = at;

@@ -115,7 +115,7 @@ internal static class HostingWorlds
         foreach ((RoadmapNode from, RoadmapNode to) in RuntimeWorlds.ConnectedPairs(roadmap, 400, seed, minDistance: 1f))
         {
             if (roadmap.FindNode(RuntimeWorlds.Point(from), Tolerance) == from.Id && roadmap.FindNode(RuntimeWorlds.Point(to), Tolerance) == to.Id &&
-                query.Plan(from, to, new Planner.Query.QuerySettings { Locomotion = Planner.Query.Locomotion.Jump }).Moves.Count == jumps)
+                query.Plan(from, to, new Planner.Query.QuerySettings { Locomotion = Planner.Planning.Locomotion.Jump }).Moves.Count == jumps)
             {
                 pairs.Add((from, to));
                 if (pairs.Count == count)

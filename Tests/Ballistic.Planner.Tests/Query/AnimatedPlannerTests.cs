@@ -3,6 +3,7 @@ using System.Text.Json.Nodes;
 using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -16,7 +17,7 @@ public sealed class AnimatedPlannerTests
 {
     private static readonly Lazy<(PlanningScene Scene, BakeResult Bake)> GapCourseBake = new(() =>
     {
-        var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton());
+        var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton().WithWalking(WalkingLimits.None)); // jump repair, on a skeleton that only jumps
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 2, MaxNodes = 150, Threads = 2, Start = GapCourse.From, Goal = GapCourse.To });
         return (scene, bake);
     });

@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Text;
 using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
@@ -14,7 +15,7 @@ namespace Ballistic.Planner.Tests.Query;
 /// <summary>Requests from stances already on (or off) the roadmap, rejected jumps, search effort and early stops.</summary>
 public sealed class PathQueryTests
 {
-    private static readonly Lazy<PlanningScene> Scene = new(() => PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton()));
+    private static readonly Lazy<PlanningScene> Scene = new(() => PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton().WithWalking(WalkingLimits.None))); // the paper's jumping skeleton: these test the jump planner
 
     /// <summary>A bake given the course's start and goal: they are roadmap nodes.</summary>
     private static readonly Lazy<BakeResult> WithEndpoints = new(() =>

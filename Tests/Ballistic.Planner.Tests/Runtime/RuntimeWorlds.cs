@@ -3,7 +3,6 @@ using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;

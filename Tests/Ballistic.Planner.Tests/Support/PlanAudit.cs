@@ -32,8 +32,8 @@ internal static class PlanAudit
         }
 
         ReducedCharacter character = scene.Character;
-        RoadmapNode? first = plan.Jumps.Count > 0 ? plan.Jumps[0].Takeoff : plan.Start;
-        RoadmapNode? last = plan.Jumps.Count > 0 ? plan.Jumps[^1].Landing : plan.Goal;
+        RoadmapNode? first = plan.Moves.Count > 0 ? plan.Moves[0].From : plan.Start;
+        RoadmapNode? last = plan.Moves.Count > 0 ? plan.Moves[^1].To : plan.Goal;
         if (first is null || last is null)
         {
             report.Violations.Add("exact plan without start or goal node");
@@ -52,17 +52,26 @@ internal static class PlanAudit
             report.Violations.Add($"ends {report.GoalAcross:0.00} m across and {report.GoalUpDown:0.00} m up/down from the requested goal");
         }
 
-        for (int j = 0; j < plan.Jumps.Count; j++)
+        for (int m = 0; m < plan.Moves.Count; m++)
         {
-            Jump jump = plan.Jumps[j];
-            if (j > 0 && plan.Jumps[j - 1].Landing.Id != jump.Takeoff.Id)
+            Move move = plan.Moves[m];
+            if (m > 0 && (plan.Moves[m - 1].To.Id != move.From.Id || plan.Moves[m - 1].To.Pose != move.From.Pose))
             {
-                report.Violations.Add($"jump {j} does not take off where jump {j - 1} landed");
+                report.Violations.Add($"move {m} does not start where move {m - 1} ended");
             }
 
-            CheckJump(scene, jump, $"jump {j}", report);
-            CheckNode(scene, jump.Takeoff, $"jump {j} takeoff", report);
-            CheckNode(scene, jump.Landing, $"jump {j} landing", report);
+            if (move is Jump jump)
+            {
+                CheckJump(scene, jump, $"move {m} (jump)", report);
+            }
+            else if (move is Walk walk)
+            {
+                report.Walks++;
+                CheckWalk(scene, walk, $"move {m} (walk)", report);
+            }
+
+            CheckNode(scene, move.From, $"move {m} start", report);
+            CheckNode(scene, move.To, $"move {m} end", report);
         }
 
         if (animation is not null)
@@ -128,6 +137,88 @@ internal static class PlanAudit
             if (scene.Bvh.Overlaps(new OrientedBox(pose.Position, c.TrunkHalfExtents, pose.Rotation)))
             {
                 Fail($"trunk in the level at t = {arc.FlightTime * k / steps:0.000} s");
+                break;
+            }
+        }
+    }
+
+    /// <summary>
+    /// A walk as its promises say: ground path points at most 0.25 m apart, each on the ground (within 2 cm, found by
+    /// a ray of our own), from one stance's contacts to the other's; no rise or drop between neighbouring points
+    /// beyond the step height plus the steepest slope over their distance; no ground steeper than the slope at two
+    /// neighbouring points; the trunk box at walking height (<see cref="Walk.PoseAtDistance"/>) clear of the level
+    /// every 2 cm; the trunk exactly on the stances at both ends; the duration its length at the walking speed.
+    /// </summary>
+    private static void CheckWalk(PlanningScene scene, Walk walk, string context, AuditReport report)
+    {
+        ReducedCharacter c = scene.Character;
+        WalkingLimits limits = c.Walking;
+        void Fail(string what) => report.Violations.Add($"{context}: {what}");
+        if (!limits.CanWalk)
+        {
+            Fail($"{c.Name} does not walk");
+            return;
+        }
+
+        if (MathF.Abs(walk.Speed - limits.Speed) > 1e-4f || MathF.Abs(walk.Duration - (walk.Length / limits.Speed)) > 1e-3f)
+        {
+            Fail($"walks at {walk.Speed:0.###} m/s for {walk.Duration:0.###} s, not its length at {limits.Speed:0.###} m/s");
+        }
+
+        if (Vector3.Distance(walk.PoseAt(0f).Position, walk.From.Pose.Position) > 1e-4f || Vector3.Distance(walk.PoseAt(walk.Duration).Position, walk.To.Pose.Position) > 1e-4f)
+        {
+            Fail("the trunk does not start and end on the stances");
+        }
+
+        float tan = MathF.Tan(limits.MaxSlopeDegrees * MathF.PI / 180f);
+        float cos = MathF.Cos(limits.MaxSlopeDegrees * MathF.PI / 180f);
+        bool steepBefore = false;
+        for (int i = 0; i < walk.Path.Count; i++)
+        {
+            Vector3 p = walk.Path[i];
+            if (!scene.Bvh.Raycast(p + new Vector3(0f, 0.05f, 0f), -Vector3.UnitY, 0.1f, out RayHit hit))
+            {
+                Fail($"path point {i} ({p.X:0.00}, {p.Y:0.00}, {p.Z:0.00}) has no ground within 5 cm under it");
+                return;
+            }
+
+            report.MaxWalkGroundError = MathF.Max(report.MaxWalkGroundError, MathF.Abs(hit.Point.Y - p.Y));
+            if (MathF.Abs(hit.Point.Y - p.Y) > 0.02f)
+            {
+                Fail($"path point {i} lies {MathF.Abs(hit.Point.Y - p.Y) * 100f:0.0} cm off the ground");
+            }
+
+            bool steep = MathF.Abs(hit.Normal.Y) < cos - 1e-3f;
+            if (steep && steepBefore)
+            {
+                Fail($"ground steeper than {limits.MaxSlopeDegrees}° at path point {i}");
+            }
+
+            steepBefore = steep;
+            if (i > 0)
+            {
+                Vector3 q = walk.Path[i - 1];
+                float across = new Vector2(p.X - q.X, p.Z - q.Z).Length();
+                if (Vector3.Distance(p, q) > 0.25f + 1e-3f && across > 0.25f + 1e-3f)
+                {
+                    Fail($"path points {i - 1} and {i} are {Vector3.Distance(p, q):0.000} m apart");
+                }
+
+                float rise = MathF.Abs(p.Y - q.Y);
+                report.MaxWalkRise = MathF.Max(report.MaxWalkRise, rise - (across * tan));
+                if (rise > limits.StepHeight + (across * tan) + 1e-3f)
+                {
+                    Fail($"the ground rises or drops {rise:0.000} m between path points {i - 1} and {i}, above the {limits.StepHeight:0.000} m step");
+                }
+            }
+        }
+
+        for (float d = 0f; d <= walk.Length + 1e-4f; d += 0.02f)
+        {
+            RootPose pose = walk.PoseAtDistance(MathF.Min(d, walk.Length));
+            if (scene.Bvh.Overlaps(new OrientedBox(pose.Position, c.TrunkHalfExtents, pose.Rotation)))
+            {
+                Fail($"trunk in the level {d:0.00} m along the walk");
                 break;
             }
         }
@@ -362,6 +453,15 @@ internal sealed class AuditReport(string name, PlannerStatus status, string reas
     public float MaxStanceSlip { get; set; }
 
     public float MaxContactJump { get; set; }
+
+    /// <summary>How many walks the plan holds.</summary>
+    public int Walks { get; set; }
+
+    /// <summary>The largest distance (metres) between a walk's path point and the ground found under it.</summary>
+    public float MaxWalkGroundError { get; set; }
+
+    /// <summary>The largest rise or drop (metres) between neighbouring walk path points beyond what the slope allows over their distance.</summary>
+    public float MaxWalkRise { get; set; }
 
     public bool Animated { get; set; }
 

@@ -1,0 +1,209 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Walking;
+
+/// <summary>
+/// The walking steering method: links two stances by a straight walk (in the horizontal plane) when the ground
+/// allows it. From the first stance's contact centre to the second's, the ground is found every
+/// <see cref="SampleSpacing"/> metres by a ray cast down from the trunk's lowest walking height; the walk is valid
+/// when the ground is there at every sample (no gap), never rises or drops more than the character's step height
+/// from one sample to the next (stairs are fine, a ledge is not), never tilts beyond the steepest slope (over two
+/// samples in a row, so a ray grazing a stair's edge does not count), nothing stands between the ground and the
+/// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAtDistance"/>) never touches the level.
+/// Deterministic and thread-safe.
+/// </summary>
+/// <remarks>
+/// The trunk check is continuous like the jump sweep's: the walk is cut into intervals over which no trunk point
+/// moves more than the trunk's smallest half extent; the mid-interval box grown by the most any point can move in
+/// half the interval being free proves the interval free; otherwise the interval is halved down to the collision
+/// tolerance.
+/// </remarks>
+public sealed class WalkSteering
+{
+    /// <summary>Horizontal spacing of the ground samples, metres.</summary>
+    public const float SampleSpacing = 0.05f;
+
+    /// <summary>Largest spacing of the points of a walk's <see cref="Walk.Path"/>, metres.</summary>
+    public const float PathSpacing = 0.25f;
+
+    private readonly TriangleBvh _world;
+    private readonly Vector3 _trunkHalfExtents;
+    private readonly float _tolerance;
+    private readonly float _legSpace;
+    private readonly float _maxRise;
+    private readonly float _minCosine;
+
+    /// <summary>Creates the walking steering method for a character on a level.</summary>
+    /// <param name="world">The level's collision geometry (rays and box overlaps).</param>
+    /// <param name="character">The character: its walking limits, trunk box and stance heights.</param>
+    /// <param name="collisionTolerance">Growth (metres) below which a touching interval counts as a collision; not negative.</param>
+    public WalkSteering(TriangleBvh world, ReducedCharacter character, float collisionTolerance)
+    {
+        ArgumentNullException.ThrowIfNull(world);
+        ArgumentNullException.ThrowIfNull(character);
+        ArgumentOutOfRangeException.ThrowIfNegative(collisionTolerance);
+        _world = world;
+        _trunkHalfExtents = character.TrunkHalfExtents;
+        _tolerance = collisionTolerance;
+        Limits = character.Walking;
+        _maxRise = Limits.StepHeight;
+        _minCosine = Limits.MinGroundCosine;
+
+        // Between the ground and the trunk's bottom in its lowest stance the legs move: only ground may be there.
+        _legSpace = MathF.Max(character.StanceLift.Min - character.TrunkHalfExtents.Y, _maxRise) + 0.01f;
+    }
+
+    /// <summary>The character's walking limits.</summary>
+    public WalkingLimits Limits { get; }
+
+    /// <summary>
+    /// The walk from <paramref name="from"/> to <paramref name="to"/>, or why there is none. The ground path runs
+    /// straight (seen from above) between the stances' contact centres; its points are at most
+    /// <see cref="PathSpacing"/> apart and lie on the ground found.
+    /// </summary>
+    /// <param name="from">The stance walked from, world frame.</param>
+    /// <param name="to">The stance walked to, world frame.</param>
+    /// <param name="maxDistance">The farthest (metres, horizontally between contact centres) a walk may go; +∞ for no limit.</param>
+    public WalkResult Steer(RoadmapNode from, RoadmapNode to, float maxDistance = float.PositiveInfinity)
+    {
+        ArgumentNullException.ThrowIfNull(from);
+        ArgumentNullException.ThrowIfNull(to);
+        if (!Limits.CanWalk)
+        {
+            return new WalkResult(null, WalkFailure.NotWalking);
+        }
+
+        Vector3 a = Roadmap.CentreOf(from);
+        Vector3 b = Roadmap.CentreOf(to);
+        float across = new Vector2(b.X - a.X, b.Z - a.Z).Length();
+        if (!(across <= maxDistance))
+        {
+            return new WalkResult(null, WalkFailure.TooFar);
+        }
+
+        var path = new List<Vector3>();
+        WalkFailure ground = TraceGround(a, b, path);
+        if (ground != WalkFailure.None)
+        {
+            return new WalkResult(null, ground);
+        }
+
+        var walk = new Walk(from, to, path, Limits.Speed);
+        return TrunkIsFree(walk) ? new WalkResult(walk, WalkFailure.None) : new WalkResult(null, WalkFailure.TrunkCollides);
+    }
+
+    /// <summary>
+    /// Finds the ground under the straight line from <paramref name="a"/> to <paramref name="b"/> (seen from above)
+    /// and checks it; fills <paramref name="path"/> with ground points at most <see cref="PathSpacing"/> apart.
+    /// </summary>
+    private WalkFailure TraceGround(Vector3 a, Vector3 b, List<Vector3> path)
+    {
+        var horizontal = new Vector2(b.X - a.X, b.Z - a.Z);
+        float across = horizontal.Length();
+        int samples = Math.Max(1, (int)MathF.Ceiling(across / SampleSpacing));
+        int keepEvery = Math.Max(1, (int)MathF.Floor(PathSpacing / SampleSpacing));
+        float spacing = across / samples;
+        float slopeRise = spacing * MathF.Sqrt(MathF.Max(0f, 1f - (_minCosine * _minCosine))) / MathF.Max(_minCosine, 1e-3f);
+        float allowed = _maxRise + slopeRise;
+
+        // The first sample's ground must be under the first stance's contacts.
+        float previous = a.Y;
+        bool steepBefore = false;
+        for (int i = 0; i <= samples; i++)
+        {
+            float t = i / (float)samples;
+            var point = new Vector3(float.Lerp(a.X, b.X, t), 0f, float.Lerp(a.Z, b.Z, t));
+            float top = previous + _legSpace;
+            if (!_world.Raycast(new Vector3(point.X, top, point.Z), -Vector3.UnitY, _legSpace + allowed, out RayHit hit))
+            {
+                return WalkFailure.Gap;
+            }
+
+            float y = hit.Point.Y;
+            if (y - previous > allowed)
+            {
+                return WalkFailure.StepTooHigh;
+            }
+
+            if (previous - y > allowed)
+            {
+                return WalkFailure.Gap;
+            }
+
+            bool steep = MathF.Abs(hit.Normal.Y) < _minCosine;
+            if (steep && steepBefore)
+            {
+                return WalkFailure.TooSteep;
+            }
+
+            steepBefore = steep;
+            previous = y;
+            if (i % keepEvery == 0 || i == samples)
+            {
+                path.Add(new Vector3(point.X, y, point.Z));
+            }
+        }
+
+        // The last sample's ground must be under the second stance's contacts.
+        if (MathF.Abs(previous - b.Y) > allowed)
+        {
+            return previous < b.Y ? WalkFailure.StepTooHigh : WalkFailure.Gap;
+        }
+
+        if (path.Count == 1)
+        {
+            path.Add(path[0]);
+        }
+
+        return WalkFailure.None;
+    }
+
+    /// <summary>
+    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAtDistance"/>) never
+    /// touches the level: the check <see cref="Steer"/> makes, for walks joined from several (their trunk follows
+    /// the joined path, not each part's).
+    /// </summary>
+    public bool TrunkIsFree(Walk walk)
+    {
+        float spacing = MathF.Min(_trunkHalfExtents.X, MathF.Min(_trunkHalfExtents.Y, _trunkHalfExtents.Z));
+        int steps = Math.Max(1, (int)MathF.Ceiling(walk.Length / spacing));
+        for (int i = 0; i < steps; i++)
+        {
+            if (!IntervalIsFree(walk, walk.Length * i / steps, walk.Length * (i + 1) / steps, 0))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private bool IntervalIsFree(Walk walk, float d0, float d1, int depth)
+    {
+        float mid = 0.5f * (d0 + d1);
+        RootPose p0 = walk.PoseAtDistance(d0);
+        RootPose pm = walk.PoseAtDistance(mid);
+        RootPose p1 = walk.PoseAtDistance(d1);
+
+        // The most any trunk point moves from the middle pose to either end: the centre's travel plus the corners' turn.
+        float turn0 = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(p0.Rotation, pm.Rotation))));
+        float turn1 = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(pm.Rotation, p1.Rotation))));
+        float corner = _trunkHalfExtents.Length();
+        float growth = MathF.Max(Vector3.Distance(p0.Position, pm.Position) + (turn0 * corner), Vector3.Distance(pm.Position, p1.Position) + (turn1 * corner));
+        if (!_world.Overlaps(new OrientedBox(pm.Position, _trunkHalfExtents + new Vector3(growth), pm.Rotation)))
+        {
+            return true;
+        }
+
+        if (growth <= _tolerance || depth >= 24)
+        {
+            return false;
+        }
+
+        return IntervalIsFree(walk, d0, mid, depth + 1) && IntervalIsFree(walk, mid, d1, depth + 1);
+    }
+}

@@ -1,0 +1,90 @@
+using System.Globalization;
+using System.Numerics;
+using System.Xml.Linq;
+using Ballistic.Authoring.Reports;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Tests.Reports;
+
+/// <summary>The SVG page: well-formed, walks as dashed polylines through their ground points in both views, jumps as before.</summary>
+public sealed class SvgPlanRendererTests
+{
+    private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
+
+    private static Vector2[] Points(XElement polyline) =>
+        [.. polyline.Attribute("points")!.Value.Split(' ', StringSplitOptions.RemoveEmptyEntries).Select(p =>
+        {
+            string[] xy = p.Split(',');
+            return new Vector2(float.Parse(xy[0], CultureInfo.InvariantCulture), float.Parse(xy[1], CultureInfo.InvariantCulture));
+        })];
+
+    [Test]
+    public void WalksAreDashedPolylinesThroughTheirGroundPointsInBothViews()
+    {
+        PlanResult result = WalkPlans.WalkAndJump;
+        string text = SvgPlanRenderer.Render(WalkPlans.Report(result, WalkPlans.Animation), WalkPlans.Roadmap);
+        XDocument svg = XDocument.Parse(text);
+        Assert.That(svg.Root!.Name, Is.EqualTo(Svg + "svg"));
+        XElement[] dashed = [.. svg.Descendants().Where(e => e.Attribute("stroke-dasharray") is not null)];
+        XElement[] walks = [.. dashed.Where(e => e.Name == Svg + "polyline")];
+        Assert.That(walks, Has.Length.EqualTo(2 * result.Walks.Count()), "one per walk in each view");
+
+        for (int m = 0; m < result.Moves.Count; m++)
+        {
+            if (result.Moves[m] is not Walk walk)
+            {
+                continue;
+            }
+
+            IReadOnlyList<Vector3> path = PlanReportWriter.ReportPath(walk.Path);
+            string move = m.ToString(CultureInfo.InvariantCulture);
+            Vector2[] top = Points(walks.Single(e => e.Attribute("data-move")!.Value == move && e.Attribute("data-view")!.Value == "top"));
+            Vector2[] profile = Points(walks.Single(e => e.Attribute("data-move")!.Value == move && e.Attribute("data-view")!.Value == "profile"));
+            Assert.That(top, Has.Length.EqualTo(path.Count));
+            Assert.That(profile, Has.Length.EqualTo(path.Count));
+
+            // Top view: the points are the ground points' (X, Z), scaled and moved alike (X right, Z down).
+            int far = Enumerable.Range(1, path.Count - 1).MaxBy(i => new Vector2(path[i].X - path[0].X, path[i].Z - path[0].Z).Length());
+            float scale = Vector2.Distance(top[far], top[0]) / new Vector2(path[far].X - path[0].X, path[far].Z - path[0].Z).Length();
+            Assert.That(scale, Is.GreaterThan(5f), "pixels per metre");
+            for (int i = 0; i < path.Count; i++)
+            {
+                Vector2 expected = top[0] + (new Vector2(path[i].X - path[0].X, path[i].Z - path[0].Z) * scale);
+                Assert.That(Vector2.Distance(top[i], expected), Is.LessThan(0.3f), $"move {m} point {i} in the top view");
+            }
+
+            // Side profile: across by the horizontal distance walked, at the ground's height (flat platforms here).
+            float walked = 0f;
+            float across = (profile[^1].X - profile[0].X) / walk.Path.Zip(walk.Path.Skip(1), (a, b) => new Vector2(b.X - a.X, b.Z - a.Z).Length()).Sum();
+            for (int i = 0; i < path.Count; i++)
+            {
+                walked += i == 0 ? 0f : new Vector2(path[i].X - path[i - 1].X, path[i].Z - path[i - 1].Z).Length();
+                Assert.That(profile[i].X, Is.EqualTo(profile[0].X + (walked * across)).Within(0.3f), $"move {m} point {i} across the profile");
+                Assert.That(profile[i].Y, Is.EqualTo(profile[0].Y).Within(0.1f), $"move {m} point {i} on the flat ground");
+            }
+        }
+
+        Assert.That(text, Does.Contain("jump (trunk centre)").And.Contain("walk (ground path)"), "the legend names both");
+        Assert.That(text, Does.Contain("2 walks"));
+        Assert.That(svg.Descendants(Svg + "path").Count(e => e.Attribute("stroke")?.Value == "#e8590c"), Is.EqualTo(result.Jumps.Count), "each jump's parabola, solid");
+    }
+
+    [Test]
+    public void AJumpOnlyPlanHasNoDashedPathAndIsWellFormed()
+    {
+        PlanResult result = WalkPlans.JumpOnly;
+        XDocument svg = XDocument.Parse(SvgPlanRenderer.Render(WalkPlans.Report(result, WalkPlans.Animate(result.Moves)), WalkPlans.Roadmap));
+        Assert.That(svg.Descendants().Where(e => e.Attribute("stroke-dasharray") is not null && e.Name != Svg + "line"), Is.Empty, "only the legend's sample is dashed");
+        Assert.That(svg.Descendants(Svg + "path").Count(e => e.Attribute("stroke")?.Value == "#e8590c"), Is.EqualTo(result.Jumps.Count));
+    }
+
+    [Test]
+    public void AFailedPlanWithoutMovesStillDraws()
+    {
+        var failed = new PlanResult(Ballistic.Planner.Planning.PlannerStatus.NoPath, "no way <across> & none", null, null, [], TimeSpan.Zero);
+        XDocument svg = XDocument.Parse(SvgPlanRenderer.Render(WalkPlans.Report(failed), roadmap: null));
+        Assert.That(svg.Descendants(Svg + "polyline"), Is.Empty);
+        Assert.That(svg.Root!.Value, Does.Contain("no way <across> & none"));
+    }
+}

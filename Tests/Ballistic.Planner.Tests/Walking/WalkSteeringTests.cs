@@ -1,0 +1,175 @@
+using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Tests.Support;
+using Ballistic.Planner.Walking;
+
+namespace Ballistic.Planner.Tests.Walking;
+
+/// <summary>The walking steering method on levels shaped as other tools make them: what it accepts, what it refuses and why.</summary>
+public sealed class WalkSteeringTests
+{
+    private static readonly ReducedCharacter Skeleton = CharacterPresets.Skeleton();
+
+    /// <summary>A stance placed at <paramref name="point"/> as a node (id <paramref name="id"/>).</summary>
+    internal static RoadmapNode Stance(PlanningScene scene, Vector3 point, int id)
+    {
+        EndpointPlacement placement = scene.Sampler.Place(point, new EndpointTolerance());
+        Assert.That(placement.Pose, Is.Not.Null, $"no stance at {point}: {placement.Failure("point", new EndpointTolerance())}");
+        return new RoadmapNode(id, placement.Pose!.Pose, placement.Pose.Cone, placement.Pose.Contacts);
+    }
+
+    private static WalkResult Walk(Level level, Vector3 from, Vector3 to, ReducedCharacter? character = null)
+    {
+        var scene = PlanningScene.Create(level, character ?? Skeleton);
+        return scene.Walking.Steer(Stance(scene, from, 0), Stance(scene, to, 1));
+    }
+
+    [Test]
+    public void PresetsWalkAsTheirLegsSayAndTheFrogKeepsHopping()
+    {
+        Assert.Multiple(() =>
+        {
+            // A 0.95 m human leg: about 1.5 m/s and a 24 cm step; the ant is slower with a smaller step.
+            Assert.That(Skeleton.Walking.Speed, Is.InRange(1.3f, 1.7f));
+            Assert.That(Skeleton.Walking.StepHeight, Is.InRange(0.18f, 0.3f));
+            Assert.That(CharacterPresets.Ant().Walking.Speed, Is.GreaterThan(0f).And.LessThan(Skeleton.Walking.Speed));
+            Assert.That(CharacterPresets.Ant().Walking.StepHeight, Is.LessThan(Skeleton.Walking.StepHeight));
+            Assert.That(CharacterPresets.Frog().Walking.CanWalk, Is.False, "the frog needs all four limbs down: it hops");
+            Assert.That(CharacterPresets.Jumperman().Walking.CanWalk, Is.True);
+        });
+    }
+
+    [Test]
+    public void WalkingIsPartOfTheFingerprintOnlyForACharacterThatWalks()
+    {
+        ReducedCharacter frog = CharacterPresets.Frog();
+        Assert.Multiple(() =>
+        {
+            Assert.That(frog.WithWalking(WalkingLimits.None).Fingerprint, Is.EqualTo(frog.Fingerprint));
+            Assert.That(frog.WithWalking(new WalkingLimits(0.5f, 30f, 0.05f)).Fingerprint, Is.Not.EqualTo(frog.Fingerprint));
+            Assert.That(Skeleton.WithWalking(Skeleton.Walking with { Speed = 1f }).Fingerprint, Is.Not.EqualTo(Skeleton.Fingerprint));
+            Assert.That(() => Skeleton.WithWalking(new WalkingLimits(1f, 85f, 0.2f)), Throws.InstanceOf<CharacterException>().With.Message.Contains("80 degrees"));
+            Assert.That(() => Skeleton.WithWalking(new WalkingLimits(1f, 30f, 0f)), Throws.InstanceOf<CharacterException>().With.Message.Contains("step height"));
+        });
+    }
+
+    [Test]
+    public void OnFlatGroundTheWalkFollowsTheGroundAndTheTrunkStartsAndEndsOnTheStances()
+    {
+        var scene = PlanningScene.Create(GapCourse.Build(), Skeleton);
+        RoadmapNode a = Stance(scene, new Vector3(-7f, 0f, -1f), 0);
+        RoadmapNode b = Stance(scene, new Vector3(-3.6f, 0f, 1.2f), 1);
+        WalkResult result = scene.Walking.Steer(a, b);
+        Assert.That(result.Failure, Is.EqualTo(WalkFailure.None));
+        Walk walk = result.Walk!;
+        Assert.Multiple(() =>
+        {
+            Assert.That(walk.Path.Zip(walk.Path.Skip(1)).Select(p => Vector3.Distance(p.First, p.Second)), Has.All.LessThanOrEqualTo(WalkSteering.PathSpacing + 1e-4f));
+            Assert.That(walk.Path.Select(p => p.Y), Has.All.EqualTo(0f).Within(1e-4f), "the platform's top is at y = 0");
+            Assert.That(walk.Duration, Is.EqualTo(walk.Length / Skeleton.Walking.Speed).Within(1e-5f));
+            Assert.That(walk.Length, Is.GreaterThan(3.4f));
+            Assert.That(walk.PoseAt(0f), Is.EqualTo(a.Pose));
+            Assert.That(walk.PoseAt(walk.Duration), Is.EqualTo(b.Pose));
+            Assert.That(walk.PoseAt(-1f), Is.EqualTo(a.Pose), "clamped before the start");
+        });
+
+        // In between: upright-ish, facing the way it walks, at the stances' height, at constant ground speed.
+        Vector3 heading = Vector3.Normalize(new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z));
+        RootPose middle = walk.PoseAt(walk.Duration / 2f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Vector3.Dot(middle.Forward, heading), Is.GreaterThan(0.99f));
+            Assert.That(middle.Up.Y, Is.GreaterThan(0.99f));
+            Assert.That(middle.Position.Y, Is.InRange(MathF.Min(a.Pose.Position.Y, b.Pose.Position.Y) - 1e-3f, MathF.Max(a.Pose.Position.Y, b.Pose.Position.Y) + 1e-3f));
+            Assert.That(walk.DistanceAt(1f), Is.EqualTo(Skeleton.Walking.Speed).Within(1e-5f));
+        });
+    }
+
+    [Test]
+    public void AGapALowWallAndAStepTooHighAreRefusedWithTheirReasons()
+    {
+        Level course = GapCourse.Build();
+        Assert.Multiple(() =>
+        {
+            Assert.That(Walk(course, new Vector3(-4f, 0f, 0f), new Vector3(-1f, 0f, 0f)).Failure, Is.EqualTo(WalkFailure.Gap), "1.5 m gap between the first two platforms");
+            Assert.That(Walk(course, new Vector3(4.5f, 0f, 0f), new Vector3(6.5f, 0f, 0f)).Failure, Is.EqualTo(WalkFailure.StepTooHigh), "a 0.5 m wall across the third platform");
+            Assert.That(Walk(course, new Vector3(7.5f, 0f, 0f), new Vector3(10.2f, 1f, 0f)).Failure, Is.Not.EqualTo(WalkFailure.None), "a 1 m rise and a gap to the last platform");
+        });
+    }
+
+    [Test]
+    public void StairsOfAnotherToolAreWalkedAndAStairTooHighIsNot()
+    {
+        (Level stairs, _) = ForeignLevels.Get("stairs"); // 0.17 m risers, below the skeleton's 0.24 m step
+        WalkResult up = Walk(stairs, new Vector3(0f, 0f, 0f), new Vector3(6.5f, 1.36f, 0f));
+        Assert.That(up.Failure, Is.EqualTo(WalkFailure.None));
+        float[] heights = [.. up.Walk!.Path.Select(p => p.Y)];
+        Assert.That(heights.Zip(heights.Skip(1)).Select(h => MathF.Abs(h.Second - h.First)), Has.All.LessThanOrEqualTo(0.17f + 1e-3f));
+
+        ReducedCharacter shortStep = Skeleton.WithWalking(Skeleton.Walking with { StepHeight = 0.1f });
+        Assert.That(Walk(stairs, new Vector3(0f, 0f, 0f), new Vector3(6.5f, 1.36f, 0f), shortStep).Failure, Is.EqualTo(WalkFailure.StepTooHigh));
+    }
+
+    [Test]
+    public void ASlopeSteeperThanTheLimitIsRefusedAndAGentleOneIsWalked()
+    {
+        static Level Ramp(float degrees)
+        {
+            float rise = 3f * MathF.Tan(degrees * MathF.PI / 180f);
+            var material = new LevelMaterial("ramp", null);
+            return new LevelBuilder($"ramp {degrees}°")
+                .AddBox(new Vector3(-4f, -1f, -2f), new Vector3(0f, 0f, 2f))
+                .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(0f, 0f, 2f), new Vector3(3f, rise, 2f)), material)
+                .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(3f, rise, 2f), new Vector3(3f, rise, -2f)), material)
+                .AddBox(new Vector3(3f, rise - 1f, -2f), new Vector3(7f, rise, 2f))
+                .Build();
+        }
+
+        Level gentle = Ramp(15f);
+        Level steep = Ramp(50f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Walk(gentle, new Vector3(-2f, 0f, 0f), new Vector3(5f, 3f * MathF.Tan(15f * MathF.PI / 180f), 0f)).Failure, Is.EqualTo(WalkFailure.None));
+            Assert.That(Walk(steep, new Vector3(-2f, 0f, 0f), new Vector3(5f, 3f * MathF.Tan(50f * MathF.PI / 180f), 0f)).Failure, Is.EqualTo(WalkFailure.TooSteep));
+        });
+    }
+
+    [Test]
+    public void AnObstacleUnderTheTrunkOrALowCeilingStopsTheWalk()
+    {
+        Level Floor(Func<LevelBuilder, LevelBuilder> add) => add(new LevelBuilder("floor").AddBox(new Vector3(-5f, -1f, -3f), new Vector3(5f, 0f, 3f))).Build();
+
+        // A 40 cm crate: not ground a leg can step on (above the step height), and below the trunk.
+        Level crate = Floor(b => b.AddBox(new Vector3(-0.2f, 0f, -0.5f), new Vector3(0.2f, 0.4f, 0.5f)));
+
+        // A beam at chest height: the ground is fine, the trunk is not.
+        float chest = PlanningScene.Create(Floor(b => b), Skeleton).Character.StanceLift.Min;
+        Level beam = Floor(b => b.AddBox(new Vector3(-0.2f, chest - 0.1f, -3f), new Vector3(0.2f, chest + 0.1f, 3f)));
+        Assert.Multiple(() =>
+        {
+            Assert.That(Walk(crate, new Vector3(-3f, 0f, 0f), new Vector3(3f, 0f, 0f)).Failure, Is.EqualTo(WalkFailure.StepTooHigh));
+            Assert.That(Walk(crate, new Vector3(-3f, 0f, 1.5f), new Vector3(3f, 0f, 1.5f)).Failure, Is.EqualTo(WalkFailure.None), "beside the crate");
+            Assert.That(Walk(beam, new Vector3(-3f, 0f, 0f), new Vector3(3f, 0f, 0f)).Failure, Is.EqualTo(WalkFailure.TrunkCollides));
+        });
+    }
+
+    [Test]
+    public void ACharacterThatDoesNotWalkAndAWalkTooFarAreRefused()
+    {
+        var frogScene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Frog());
+        RoadmapNode a = Stance(frogScene, new Vector3(-7f, 0f, 0f), 0);
+        RoadmapNode b = Stance(frogScene, new Vector3(-4f, 0f, 0f), 1);
+        var scene = PlanningScene.Create(GapCourse.Build(), Skeleton);
+        Assert.Multiple(() =>
+        {
+            Assert.That(frogScene.Walking.Steer(a, b).Failure, Is.EqualTo(WalkFailure.NotWalking));
+            Assert.That(scene.Walking.Steer(Stance(scene, new Vector3(-7f, 0f, 0f), 0), Stance(scene, new Vector3(-4f, 0f, 0f), 1), maxDistance: 2f).Failure, Is.EqualTo(WalkFailure.TooFar));
+        });
+    }
+}
