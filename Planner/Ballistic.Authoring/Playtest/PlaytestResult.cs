@@ -9,7 +9,7 @@ namespace Ballistic.Authoring.Playtest;
 /// <param name="Ticks">Ticks stepped.</param>
 /// <param name="WallSeconds">Wall-clock seconds the run took.</param>
 /// <param name="PairsSampled">Random roadmap node pairs sampled.</param>
-/// <param name="PairsConnected">How many of them are connected by a sequence of jumps.</param>
+/// <param name="PairsConnected">How many of them are connected by a sequence of moves: jumps, and walks unless the settings are jumps only.</param>
 /// <param name="Cancelled">True when the run was stopped before its end.</param>
 public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kind, IReadOnlyList<PlaytestAgent> Agents, long Ticks, double WallSeconds, int PairsSampled, int PairsConnected, bool Cancelled)
 {

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
@@ -131,12 +132,14 @@ public static class PlaytestRunner
             }
         }
 
-        // Connectivity of the roadmap itself: random node pairs joined by a sequence of jumps.
+        // Connectivity of the roadmap itself: random node pairs joined by a sequence of moves (jumps, and walks unless jumps only).
         var pairs = new Random(settings.Seed ^ 0x5eed);
         int connected = 0;
         for (int i = 0; i < settings.ReachabilityPairs; i++)
         {
-            connected += roadmap.Reaches(pairs.Next(roadmap.Nodes.Count), pairs.Next(roadmap.Nodes.Count)) ? 1 : 0;
+            int from = pairs.Next(roadmap.Nodes.Count);
+            int to = pairs.Next(roadmap.Nodes.Count);
+            connected += (settings.Locomotion == Locomotion.Jump ? roadmap.Reaches(from, to) : roadmap.ReachesWalking(from, to)) ? 1 : 0;
         }
 
         return new PlaytestResult(settings, kind, agents, world.Tick, clock.Elapsed.TotalSeconds, settings.ReachabilityPairs, connected, cancelled);

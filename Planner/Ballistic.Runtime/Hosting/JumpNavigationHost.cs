@@ -526,8 +526,8 @@ public sealed class JumpNavigationHost : IDisposable
     public int GetPendingEventCount(HostAgentHandle agent) => IsValid(agent) ? _agents[agent.Index].Queue.Count : 0;
 
     /// <summary>
-    /// Whether the agent's roadmap connects where it stands to <paramref name="target"/>: a path of jumps leads from
-    /// its stance (a roadmap node, or for a stance off the roadmap any of the nearest nodes within jump reach) to the
+    /// Whether the agent's roadmap connects where it stands to <paramref name="target"/>: a path of jumps (and of the
+    /// roadmap's walks, unless the world's <see cref="WorldSettings.Locomotion"/> is jumps only) leads from its stance (a roadmap node, or for a stance off the roadmap any of the nearest nodes within jump reach) to the
     /// node standing at the target (<see cref="Roadmap.FindNode"/>), or, when none stands there, to any of the
     /// nearest nodes within jump reach of the target. An estimate for stances and targets off the roadmap (the
     /// planner must still steer to and from them); false for an agent that is not in the world. Allocates nothing
@@ -595,6 +595,9 @@ public sealed class JumpNavigationHost : IDisposable
 
         ReadOnlySpan<int> offsets = roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = roadmap.OutgoingTargets;
+        bool walking = Settings.Locomotion != Locomotion.Jump && roadmap.Walks.Count > 0;
+        ReadOnlySpan<int> walkOffsets = walking ? roadmap.WalkOffsets : default;
+        ReadOnlySpan<int> walkTargets = walking ? roadmap.WalkTargets : default;
         while (top > 0)
         {
             int node = _stack[--top];
@@ -605,16 +608,29 @@ public sealed class JumpNavigationHost : IDisposable
 
             for (int i = offsets[node]; i < offsets[node + 1]; i++)
             {
-                int next = targets[i];
-                if (_seen[next] != _stamp)
+                Push(targets[i], ref top);
+            }
+
+            if (walking)
+            {
+                for (int i = walkOffsets[node]; i < walkOffsets[node + 1]; i++)
                 {
-                    _seen[next] = _stamp;
-                    _stack[top++] = next;
+                    Push(walkTargets[i], ref top);
                 }
             }
         }
 
         return false;
+    }
+
+    /// <summary>Puts <paramref name="node"/> on the reachability test's stack unless it was seen.</summary>
+    private void Push(int node, ref int top)
+    {
+        if (_seen[node] != _stamp)
+        {
+            _seen[node] = _stamp;
+            _stack[top++] = node;
+        }
     }
 
     /// <summary>

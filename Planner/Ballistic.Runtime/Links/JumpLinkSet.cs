@@ -7,7 +7,9 @@ namespace Ballistic.Runtime.Links;
 /// <summary>
 /// The navigation links made from a frozen roadmap's jumps (<see cref="Build"/>), for the node that publishes them
 /// on Godot's navigation map: one one-way link per kept jump, from the takeoff stance's contact centre to the landing
-/// stance's. Deterministic: the same roadmap and settings give the same links in the same order. Immutable.
+/// stance's. Links are jumps only: they are made from the roadmap's edges, which are jumps, never from walks (a
+/// navmesh agent walks the ground itself; a path's walks are the runtime's own moves). Deterministic: the same roadmap
+/// and settings give the same links in the same order. Immutable.
 /// </summary>
 public sealed class JumpLinkSet
 {

@@ -162,8 +162,18 @@ internal sealed class PathRequestSystem : IDisposable
         float frameRate = _settings.AnimationFrameRate;
         if (_scheduler is null)
         {
-            request.Solved = animator.Animate(moves, frameRate);
-            request.Job = null;
+            // On the tick; an animator that throws fails the request on its due tick, as a background job's would, so
+            // that events do not depend on the thread count.
+            try
+            {
+                request.Solved = animator.Animate(moves, frameRate);
+                request.Job = null;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                request.Solved = null;
+                request.Job = Task.FromException<JumpAnimation>(e);
+            }
         }
         else
         {

@@ -41,8 +41,8 @@ internal static class HostingWorlds
     /// <summary>The runtime's tolerance: how close a stance's contact centre comes to a point asked for.</summary>
     public static EndpointTolerance Tolerance => new WorldSettings().Tolerance;
 
-    /// <summary>A host ticking on one thread (deterministic, no background animation).</summary>
-    public static JumpNavigationHost Host() => new(new WorldSettings { AnimationThreads = 0 });
+    /// <summary>A host ticking on one thread (deterministic, no background animation), its paths jumps only (<see cref="RuntimeWorlds.JumpOnly"/>).</summary>
+    public static JumpNavigationHost Host() => new(RuntimeWorlds.JumpOnly);
 
     /// <summary>A host with one desert region registered.</summary>
     public static (JumpNavigationHost Host, RegionHandle Region) DesertHost()
@@ -115,7 +115,7 @@ internal static class HostingWorlds
         foreach ((RoadmapNode from, RoadmapNode to) in RuntimeWorlds.ConnectedPairs(roadmap, 400, seed, minDistance: 1f))
         {
             if (roadmap.FindNode(RuntimeWorlds.Point(from), Tolerance) == from.Id && roadmap.FindNode(RuntimeWorlds.Point(to), Tolerance) == to.Id &&
-                query.Plan(from, to).Jumps.Count == jumps)
+                query.Plan(from, to, new Planner.Query.QuerySettings { Locomotion = Planner.Planning.Locomotion.Jump }).Moves.Count == jumps)
             {
                 pairs.Add((from, to));
                 if (pairs.Count == count)

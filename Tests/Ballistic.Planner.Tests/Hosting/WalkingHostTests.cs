@@ -162,4 +162,49 @@ public sealed class WalkingHostTests
     }
 
     private static bool Near(Vector3 a, Vector3 b) => Vector3.Distance(a, b) < 1e-5f;
+
+    [Test]
+    public void ATargetOnlyWalksReachCountsAsReachableUnlessTheWorldJumpsOnly()
+    {
+        // The desert roadmap's nodes and walks without its jumps: its nodes are joined by walks alone.
+        Roadmap desert = HostingWorlds.Desert.Roadmap;
+        Assume.That(desert.Walks, Is.Not.Empty, "the desert roadmap is baked with walks");
+        var builder = new RoadmapBuilder(desert.LevelFingerprint, desert.CharacterFingerprint, desert.CharacterName, desert.Seed);
+        foreach (RoadmapNode node in desert.Nodes)
+        {
+            builder.AddNode(node);
+        }
+
+        foreach (RoadmapWalk walk in desert.Walks)
+        {
+            builder.AddWalk(walk);
+        }
+
+        Roadmap walksOnly = builder.Freeze();
+        var kind = new Ballistic.Runtime.Kinds.CharacterKind(HostingWorlds.Desert.Scene, walksOnly, HostingWorlds.Desert.Animator);
+        var random = new Random(61);
+        (RoadmapNode From, RoadmapNode To)? pair = null;
+        for (int attempt = 0; attempt < 2_000 && pair is null; attempt++)
+        {
+            RoadmapNode a = walksOnly.Nodes[random.Next(walksOnly.Nodes.Count)];
+            RoadmapNode b = walksOnly.Nodes[random.Next(walksOnly.Nodes.Count)];
+            if (Vector3.Distance(a.Pose.Position, b.Pose.Position) > 3f && walksOnly.ReachesWalking(a.Id, b.Id) &&
+                walksOnly.FindNode(RuntimeWorlds.Point(a), HostingWorlds.Tolerance) == a.Id && walksOnly.FindNode(RuntimeWorlds.Point(b), HostingWorlds.Tolerance) == b.Id)
+            {
+                pair = (a, b);
+            }
+        }
+
+        Assert.That(pair, Is.Not.Null, "a pair joined by walks");
+        (RoadmapNode from, RoadmapNode to) = pair!.Value;
+        foreach ((WorldSettings settings, bool reachable) in new[] { (new WorldSettings { AnimationThreads = 0 }, true), (RuntimeWorlds.JumpOnly, false) })
+        {
+            using var host = new JumpNavigationHost(settings);
+            RegionHandle region = host.CreateRegion("desert without jumps");
+            Assert.That(host.SetRegionKind(region, kind).Ok, Is.True);
+            HostAgentHandle agent = host.RegisterAgent(region, RuntimeWorlds.Point(from)).Agent;
+            Assume.That(host.World!.GetStance(host.GetWorldAgent(agent)), Is.SameAs(from), "the agent stands on the node");
+            Assert.That(host.IsTargetReachable(agent, RuntimeWorlds.Point(to)), Is.EqualTo(reachable), $"locomotion {settings.Locomotion}");
+        }
+    }
 }

@@ -13,7 +13,7 @@ public sealed class DeterminismTests
     /// <summary>Eight agents sent to seeded targets, retargeted half-way: every tick's root positions and every event, as text.</summary>
     private static List<string> Scenario(int threads)
     {
-        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert(new WorldSettings { AnimationThreads = threads, PathLatencyTicks = 3, MaxSearchesPerTick = 3 });
+        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert(RuntimeWorlds.JumpOnly with { AnimationThreads = threads, PathLatencyTicks = 3, MaxSearchesPerTick = 3 });
         using (world)
         {
             Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;

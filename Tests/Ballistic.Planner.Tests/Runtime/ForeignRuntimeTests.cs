@@ -42,7 +42,7 @@ public sealed class ForeignRuntimeTests
             var scene = PlanningScene.Create(level, reduced);
             Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 2, MaxNodes = 250, Threads = 2 }).Roadmap;
             var kind = new CharacterKind(scene, roadmap, new JumpAnimator(scene, model));
-            using var world = new JumpWorld(level, new WorldSettings { AnimationThreads = 2 });
+            using var world = new JumpWorld(level, RuntimeWorlds.JumpOnly with { AnimationThreads = 2 });
             KindHandle handle = world.AddKind(kind).Kind;
 
             // Three agents sent across seeded pairs of connected stances at least 2 m apart.

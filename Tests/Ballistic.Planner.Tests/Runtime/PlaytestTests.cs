@@ -7,19 +7,26 @@ using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Runtime;
 
-/// <summary>The headless playtest: deterministic, its jumps pass the plan tests' physics checks, its report reads like a plan report.</summary>
+/// <summary>
+/// The headless playtest: deterministic, its jumps pass the plan tests' physics checks and its walks the plan audit,
+/// its report reads like a plan report. Its paths walk and jump (the planner's default) and are animated by
+/// <see cref="SimpleMoveAnimator"/>, which animates walks.
+/// </summary>
 public sealed class PlaytestTests
 {
     private static readonly Lazy<PlaytestResult> Run = new(() =>
-        PlaytestRunner.Run(RuntimeWorlds.DesertSkeleton, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100 }));
+        PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100 }));
 
     [Test]
-    public void EveryExecutedJumpPassesThePhysicsChecks()
+    public void EveryExecutedMovePassesThePhysicsChecks()
     {
         PlaytestResult result = Run.Value;
         Assert.That(result.Agents, Has.Count.EqualTo(5));
         Assert.That(result.TargetsReached, Is.GreaterThanOrEqualTo(5), "agents got somewhere");
-        Assert.That(result.JumpsTaken, Is.GreaterThan(20));
+        Assert.That(result.JumpsTaken + result.WalksTaken, Is.GreaterThan(20));
+        Assert.That(result.JumpsTaken, Is.GreaterThan(0), "agents jumped");
+        Assert.That(result.WalksTaken, Is.GreaterThan(0), "agents walked");
+        Assert.That(result.WalkedMetres, Is.GreaterThan(result.WalksTaken * 0.05));
         foreach (PlaytestAgent agent in result.Agents)
         {
             // The agent's moves in the order it made them: each starts where the agent stood (no teleport between
@@ -36,6 +43,13 @@ public sealed class PlaytestTests
                     PhysicsChecks.AssertNode(RuntimeWorlds.DesertSkeleton.Scene, jump.Landing, $"agent {agent.Index} landing at {time:0.###} s");
                     Assert.That(jump.Arc.Start, Is.EqualTo(jump.Takeoff.Pose.Position).Using<Vector3>((x, y) => Vector3.Distance(x, y) < 1e-4f));
                 }
+                else
+                {
+                    var walk = (Walk)move;
+                    var plan = new Planner.Query.PlanResult(Planner.Planning.PlannerStatus.Exact, "executed", walk.From, walk.To, [walk], TimeSpan.Zero);
+                    AuditReport audit = PlanAudit.Check($"agent {agent.Index} walk at {time:0.###} s", WalkingPaths.Kind.Scene, WalkingPaths.Centre(walk.From), WalkingPaths.Centre(walk.To), plan, null);
+                    Assert.That(audit.Violations, Is.Empty, audit.ToString());
+                }
             }
         }
     }
@@ -43,7 +57,7 @@ public sealed class PlaytestTests
     [Test]
     public void TheSameSeedGivesTheSamePlaytestWhateverTheThreads()
     {
-        PlaytestResult again = PlaytestRunner.Run(RuntimeWorlds.DesertSkeleton, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, ReachabilityPairs = 100 });
+        PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, ReachabilityPairs = 100 });
         string Trace(PlaytestResult r) => string.Join("\n", r.Agents.SelectMany(a => a.Jumps.Select(j => $"{a.Index} {j.TakeoffTime:R} {j.Jump.Arc.Start} {j.Jump.Arc.TakeoffVelocity}"))
             .Concat(r.Agents.SelectMany(a => a.Walks.Select(w => $"{a.Index} {w.StartTime:R} {w.Walk.From.Pose.Position} {w.Walk.To.Pose.Position} {w.Walk.Speed:R}")))
             .Concat(r.Agents.SelectMany(a => a.Targets.Select(t => $"{a.Index} {t.Target} {t.ReachedAt:R} {t.FailureReason}"))));

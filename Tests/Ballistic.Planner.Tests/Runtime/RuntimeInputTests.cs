@@ -144,7 +144,7 @@ public sealed class RuntimeInputTests
     public void SearchesPerTickStayWithinTheBudget()
     {
         Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
-        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert(new WorldSettings { AnimationThreads = 2, MaxSearchesPerTick = 4 });
+        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert(RuntimeWorlds.JumpOnly with { AnimationThreads = 2, MaxSearchesPerTick = 4 });
         using (world)
         {
             var random = new Random(5);

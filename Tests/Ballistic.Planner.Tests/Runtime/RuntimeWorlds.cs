@@ -26,10 +26,16 @@ internal static class RuntimeWorlds
     /// <summary>The skeleton on the desert: scene, 300-node roadmap (seed 3) and animator.</summary>
     public static CharacterKind DesertSkeleton => DesertSkeletonKind.Value;
 
-    /// <summary>A world on the desert with the skeleton kind added.</summary>
+    /// <summary>
+    /// The settings of the jump tests' worlds: one thread, and jumps only, so that their paths are the jump sequences
+    /// they check whatever the planner makes of walking (walks are tested with hand-made paths, <see cref="WalkingPaths"/>).
+    /// </summary>
+    public static WorldSettings JumpOnly { get; } = new() { AnimationThreads = 0, Locomotion = Locomotion.Jump };
+
+    /// <summary>A world on the desert with the skeleton kind added (<see cref="JumpOnly"/> settings unless given).</summary>
     public static (JumpWorld World, KindHandle Kind) Desert(WorldSettings? settings = null)
     {
-        var world = new JumpWorld(DesertSkeleton.Scene.Level, settings ?? new WorldSettings { AnimationThreads = 0 });
+        var world = new JumpWorld(DesertSkeleton.Scene.Level, settings ?? JumpOnly);
         AddKindResult added = world.AddKind(DesertSkeleton);
         Assert.That(added.Ok, Is.True, added.Result.ToString());
         return (world, added.Kind);

@@ -311,4 +311,114 @@ public sealed class WalkingRuntimeTests
         Assert.That(new WorldSettings { Locomotion = (Locomotion)7 }.Problem(), Does.Contain("Locomotion"));
         Assert.That(() => new JumpWorld(RuntimeWorlds.DesertSkeleton.Scene.Level, new WorldSettings { JumpEffort = -1f }), Throws.ArgumentException.With.Message.Contains("JumpEffort"));
     }
+
+    [Test]
+    public void APlannedPathOfWalksAndJumpsIsFollowedExactly()
+    {
+        // The planner's own walks (the default locomotion) on the desert, animated by the double.
+        (JumpWorld world, KindHandle kind) = WalkingPaths.World();
+        using (world)
+        {
+            Assert.That(world.Settings.Locomotion, Is.EqualTo(Locomotion.WalkAndJump));
+            Roadmap roadmap = WalkingPaths.Kind.Roadmap;
+            var random = new Random(71);
+            AgentPath? path = null;
+            AgentHandle agent = default;
+            List<JumpEvent> events = [];
+            for (int attempt = 0; attempt < 20 && path is null; attempt++)
+            {
+                RoadmapNode from = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+                RoadmapNode to = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+                if (Vector3.Distance(from.Pose.Position, to.Pose.Position) < 5f || !roadmap.ReachesWalking(from.Id, to.Id) || (roadmap.Reaches(from.Id, to.Id) && attempt < 10))
+                {
+                    continue;
+                }
+
+                if (agent.IsAssigned)
+                {
+                    world.RemoveAgent(agent);
+                }
+
+                agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
+                world.SetTarget(agent, RuntimeWorlds.Point(to));
+                events = RuntimeWorlds.Run(world, 120, (w, seen) => seen.Any(e => e.Kind is JumpEventKind.PathFound or JumpEventKind.PathFailed));
+                if (world.GetPath(agent) is { WalkCount: > 0 } found)
+                {
+                    path = found;
+                }
+            }
+
+            Assume.That(path, Is.Not.Null, "a planned path with walks");
+            double pathStart = events.Last(e => e.Kind == JumpEventKind.PathFound && e.Agent == agent).Time;
+            int walking = 0;
+            events.AddRange(RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
+            {
+                if (w.GetPath(agent) is null)
+                {
+                    return;
+                }
+
+                int m = w.GetMoveIndex(agent);
+                PathMove move = path!.Moves[m];
+                float since = (float)(w.Time - (pathStart + move.Start));
+                if (w.GetState(agent) == AgentState.Walking)
+                {
+                    Assert.That(move.Kind, Is.EqualTo(MoveKind.Walk));
+                    Assert.That(w.GetRootPose(agent), Is.EqualTo(move.Walk!.PoseAt(since)), $"walk {m} at {since:0.###} s");
+                    walking++;
+                }
+                else if (w.TryGetCurrentJump(agent, out JumpInfo jump))
+                {
+                    Assert.That(jump.Index, Is.EqualTo(m));
+                    Assert.That(w.GetRootPose(agent).Position, Is.EqualTo(move.Arc.PositionAt(since)), $"jump {m} at {since:0.###} s");
+                }
+            }));
+
+            // Each move's start and end, of its kind, in order; then the arrival on the path's goal.
+            List<JumpEvent> moves = [.. events.Where(e => e.Agent == agent).SkipWhile(e => e.Kind != JumpEventKind.PathFound).Skip(1).TakeWhile(e => e.Kind != JumpEventKind.TargetReached)];
+            Assert.That(moves, Has.Count.EqualTo(2 * path!.Count), string.Join("; ", events.Select(e => $"{e.Kind} {e.Reason}")));
+            for (int m = 0; m < path.Count; m++)
+            {
+                bool walk = path.Moves[m].Kind == MoveKind.Walk;
+                Assert.That(moves[2 * m].Kind, Is.EqualTo(walk ? JumpEventKind.WalkStarted : JumpEventKind.JumpStarted), $"move {m} starts");
+                Assert.That(moves[(2 * m) + 1].Kind, Is.EqualTo(walk ? JumpEventKind.WalkFinished : JumpEventKind.Landed), $"move {m} ends");
+                Assert.That(moves[2 * m].Move, Is.EqualTo(m));
+                Assert.That(moves[(2 * m) + 1].Time - moves[2 * m].Time, Is.EqualTo(path.Moves[m].Duration).Within(1e-4));
+            }
+
+            Assert.That(walking, Is.GreaterThan(10), "ticks walking");
+            Assert.That(world.GetRootPose(agent), Is.EqualTo(path.Goal.Pose), "arrived on the goal");
+        }
+    }
+
+    [Test]
+    public void AnAnimatorThatFailsFailsTheRequestOnTheSameTickWhateverTheThreads()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var failing = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, new FailingAnimator());
+        (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, seed: 72)[0];
+        var outcomes = new List<string>();
+        foreach (int threads in new[] { 0, 2 })
+        {
+            using var world = new JumpWorld(desert.Scene.Level, new WorldSettings { AnimationThreads = threads, PathLatencyTicks = 4 });
+            KindHandle kind = world.AddKind(failing).Kind;
+            AgentHandle agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
+            world.SetTarget(agent, RuntimeWorlds.Point(to));
+            List<JumpEvent> events = RuntimeWorlds.Run(world, 60, RuntimeWorlds.Concluded);
+            JumpEvent failed = events.Single(e => e.Kind == JumpEventKind.PathFailed);
+            Assert.That(failed.Reason, Does.Contain("internal error while animating").And.Contain("no animation here"));
+            Assert.That(failed.Tick, Is.EqualTo(1 + 4), "the search's tick plus the latency");
+            outcomes.Add(string.Join("; ", events.Select(e => $"{e.Tick} {e.Kind} {e.Reason}")));
+        }
+
+        Assert.That(outcomes[1], Is.EqualTo(outcomes[0]));
+    }
+
+    /// <summary>An animator that cannot animate anything.</summary>
+    private sealed class FailingAnimator : Planner.Animation.IJumpAnimator
+    {
+        public Planner.Animation.JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f) => throw new InvalidOperationException("no animation here");
+
+        public bool CanStand(Planner.Contacts.PoseEvaluation pose) => RuntimeWorlds.DesertSkeleton.Animator.CanStand(pose);
+    }
 }
