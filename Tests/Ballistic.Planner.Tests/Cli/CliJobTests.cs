@@ -98,9 +98,10 @@ public sealed class CliJobTests
             Assert.That(new Vector2(centre.X - requested.X, centre.Z - requested.Z).Length(), Is.EqualTo(placement.GetProperty("across").GetSingle()).Within(1e-4f));
         }
 
-        // The first and last stances' own contacts, as the report lists them, are where the placement says.
-        JsonElement jumps = root.GetProperty("jumps");
-        JsonElement first = jumps[0].GetProperty("takeoff").GetProperty("contacts");
+        // The first stance's own contacts, as the report lists them, are where the placement says (a walk's "from",
+        // a jump's "takeoff").
+        JsonElement move = root.GetProperty("moves")[0];
+        JsonElement first = move.GetProperty(move.GetProperty("kind").GetString() == "walk" ? "from" : "takeoff").GetProperty("contacts");
         Vector3 sum = Vector3.Zero;
         foreach (JsonElement c in first.EnumerateArray())
         {
@@ -128,7 +129,9 @@ public sealed class CliJobTests
         {
             Assert.That(animation.GetProperty("glb").GetString(), Is.EqualTo("models/skeleton.glb"), "relative to the report");
             Assert.That(animation.GetProperty("clip").GetString(), Is.EqualTo("jumps"));
-            Assert.That(animation.GetProperty("duration").GetSingle(), Is.EqualTo(json.RootElement.GetProperty("totalFlightTime").GetSingle()).Within(1e-3f));
+            // The clip lasts the moves and the stances between them: the last move ends where the clip does.
+            Assert.That(animation.GetProperty("duration").GetSingle(), Is.GreaterThanOrEqualTo(json.RootElement.GetProperty("summary").GetProperty("totalDuration").GetSingle() - 1e-3f));
+            Assert.That(animation.GetProperty("moves")[animation.GetProperty("moves").GetArrayLength() - 1].GetProperty("end").GetSingle(), Is.EqualTo(animation.GetProperty("duration").GetSingle()).Within(1e-3f));
             Assert.That(animation.GetProperty("limbs").GetProperty("left_foot").GetProperty("effectorBone").GetString(), Is.EqualTo("left_ankle"));
             Assert.That(animation.GetProperty("contactPhases").GetArrayLength(), Is.GreaterThan(0));
         });

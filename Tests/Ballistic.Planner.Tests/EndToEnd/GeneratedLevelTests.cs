@@ -19,19 +19,27 @@ public sealed class GeneratedLevelTests
         PlanResult plan = animated.Result;
         Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
         Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
-        Assert.That(plan.Jumps, Is.Not.Empty);
+        Assert.That(plan.Moves, Is.Not.Empty);
         PhysicsChecks.AssertNode(scene, plan.Start!, "start");
         PhysicsChecks.AssertNode(scene, plan.Goal!, "goal");
-        for (int k = 0; k < plan.Jumps.Count; k++)
+        for (int k = 0; k < plan.Moves.Count; k++)
         {
-            Jump jump = plan.Jumps[k];
-            PhysicsChecks.AssertNode(scene, jump.Landing, $"landing {k}");
-            PhysicsChecks.AssertJump(scene, jump.Takeoff, jump.Landing, jump.Arc, $"{levelName} jump {k}");
+            Move move = plan.Moves[k];
+            PhysicsChecks.AssertNode(scene, move.To, $"end of move {k}");
+            if (move is Jump jump)
+            {
+                PhysicsChecks.AssertJump(scene, jump.Takeoff, jump.Landing, jump.Arc, $"{levelName} move {k}");
+            }
+
             if (k > 0)
             {
-                Assert.That(jump.Takeoff, Is.SameAs(plan.Jumps[k - 1].Landing));
+                Assert.That(move.From, Is.SameAs(plan.Moves[k - 1].To));
             }
         }
+
+        // Every move as an independent checker sees it (the animation's own audit is the sweep's).
+        AuditReport audit = PlanAudit.Check($"{levelName} {characterName}", scene, plan.Moves[0].From.Pose.Position, plan.Moves[^1].To.Pose.Position, plan, null);
+        Assert.That(audit.Violations.Where(v => v.StartsWith("move", StringComparison.Ordinal)), Is.Empty);
     }
 
     [TestCase("desert")]

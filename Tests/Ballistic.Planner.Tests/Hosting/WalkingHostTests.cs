@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
@@ -197,7 +198,7 @@ public sealed class WalkingHostTests
 
         Assert.That(pair, Is.Not.Null, "a pair joined by walks");
         (RoadmapNode from, RoadmapNode to) = pair!.Value;
-        foreach ((WorldSettings settings, bool reachable) in new[] { (new WorldSettings { AnimationThreads = 0 }, true), (RuntimeWorlds.JumpOnly, false) })
+        foreach ((WorldSettings settings, bool reachable) in new[] { (new WorldSettings { AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump }, true), (RuntimeWorlds.JumpOnly, false) })
         {
             using var host = new JumpNavigationHost(settings);
             RegionHandle region = host.CreateRegion("desert without jumps");

@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Authoring.Playtest;
 using Ballistic.Authoring.Reports;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
@@ -15,7 +16,7 @@ namespace Ballistic.Planner.Tests.Runtime;
 public sealed class PlaytestTests
 {
     private static readonly Lazy<PlaytestResult> Run = new(() =>
-        PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100 }));
+        PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100, Locomotion = Locomotion.WalkAndJump }));
 
     [Test]
     public void EveryExecutedMovePassesThePhysicsChecks()
@@ -57,7 +58,7 @@ public sealed class PlaytestTests
     [Test]
     public void TheSameSeedGivesTheSamePlaytestWhateverTheThreads()
     {
-        PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, ReachabilityPairs = 100 });
+        PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump, ReachabilityPairs = 100 });
         string Trace(PlaytestResult r) => string.Join("\n", r.Agents.SelectMany(a => a.Jumps.Select(j => $"{a.Index} {j.TakeoffTime:R} {j.Jump.Arc.Start} {j.Jump.Arc.TakeoffVelocity}"))
             .Concat(r.Agents.SelectMany(a => a.Walks.Select(w => $"{a.Index} {w.StartTime:R} {w.Walk.From.Pose.Position} {w.Walk.To.Pose.Position} {w.Walk.Speed:R}")))
             .Concat(r.Agents.SelectMany(a => a.Targets.Select(t => $"{a.Index} {t.Target} {t.ReachedAt:R} {t.FailureReason}"))));
@@ -105,7 +106,7 @@ public sealed class PlaytestTests
         agent.Walks.Add(new ExecutedWalk(0, 0.0, (Walk)moves[0]));
         agent.Jumps.Add(new ExecutedJump(0, 1.5, (Jump)moves[1]));
         agent.Walks.Add(new ExecutedWalk(0, 2.6, (Walk)moves[2]));
-        var settings = new PlaytestSettings { Agents = 1, Seconds = 6, AnimationThreads = 0 };
+        var settings = new PlaytestSettings { Agents = 1, Seconds = 6, AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump };
         var result = new PlaytestResult(settings, RuntimeWorlds.DesertSkeleton, [agent], 360, 0.1, 0, 0, false);
         Assert.That(result.WalksTaken, Is.EqualTo(2));
         Assert.That(result.WalkedMetres, Is.EqualTo(((Walk)moves[0]).Length + (double)((Walk)moves[2]).Length).Within(1e-5));

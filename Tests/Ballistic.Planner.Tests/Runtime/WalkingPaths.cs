@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Kinds;
@@ -31,7 +32,7 @@ internal static class WalkingPaths
     /// <summary>A world on the desert with <see cref="Kind"/> added, ticking on one thread.</summary>
     public static (JumpWorld World, KindHandle Kind) World(WorldSettings? settings = null)
     {
-        var world = new JumpWorld(Kind.Scene.Level, settings ?? new WorldSettings { AnimationThreads = 0 });
+        var world = new JumpWorld(Kind.Scene.Level, settings ?? new WorldSettings { AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump });
         AddKindResult added = world.AddKind(Kind);
         Assert.That(added.Ok, Is.True, added.Result.ToString());
         return (world, added.Kind);

@@ -15,7 +15,7 @@ public sealed class WalkPlanTests
     private static readonly Lazy<(PlanningScene Scene, Roadmap Walking, Roadmap Jumping)> Course = new(() =>
     {
         var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton());
-        var settings = new BakeSettings { Seed = 2, MaxNodes = 150, Threads = 2 };
+        var settings = new BakeSettings { Seed = 2, MaxNodes = 150, Threads = 2, Locomotion = Locomotion.WalkAndJump };
         return (scene, new RoadmapBaker(scene).Bake(settings).Roadmap, new RoadmapBaker(scene).Bake(settings with { Locomotion = Locomotion.Jump }).Roadmap);
     });
 
@@ -24,9 +24,11 @@ public sealed class WalkPlanTests
         var scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
         Vector3 from = Ground(scene, -9.5f, -7.5f);
         Vector3 to = Ground(scene, 9.5f, 7.5f);
-        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, MaxNodes = 300, Threads = 2, Start = from, Goal = to }).Roadmap;
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, MaxNodes = 300, Threads = 2, Start = from, Goal = to, Locomotion = Locomotion.WalkAndJump }).Roadmap;
         return (scene, from, to, roadmap);
     });
+
+    private static readonly QuerySettings Walking = new() { Locomotion = Locomotion.WalkAndJump };
 
     private static Vector3 Ground(PlanningScene scene, float x, float z) =>
         scene.Bvh.Raycast(new Vector3(x, 100f, z), -Vector3.UnitY, 200f, out RayHit hit) ? hit.Point : throw new InvalidOperationException("no ground");
@@ -81,7 +83,7 @@ public sealed class WalkPlanTests
     public void OnTheGapCourseTheSkeletonWalksThePlatformsAndJumpsOnlyTheGaps()
     {
         (PlanningScene scene, Roadmap walking, Roadmap jumping) = Course.Value;
-        PlanResult walked = new PathQuery(scene, walking).Plan(GapCourse.From, GapCourse.To);
+        PlanResult walked = new PathQuery(scene, walking).Plan(GapCourse.From, GapCourse.To, Walking);
         PlanResult jumped = new PathQuery(scene, jumping).Plan(GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.Jump });
         Assert.That(walked.Status, Is.EqualTo(PlannerStatus.Exact), walked.Reason);
         Assert.That(jumped.Status, Is.EqualTo(PlannerStatus.Exact), jumped.Reason);
@@ -107,7 +109,7 @@ public sealed class WalkPlanTests
     public void OnTheDesertTheSkeletonWalksMostOfTheWayWithNoBacktrackingHop()
     {
         (PlanningScene scene, Vector3 from, Vector3 to, Roadmap roadmap) = Desert.Value;
-        PlanResult walked = new PathQuery(scene, roadmap).Plan(from, to);
+        PlanResult walked = new PathQuery(scene, roadmap).Plan(from, to, Walking);
         PlanResult jumped = new PathQuery(scene, roadmap).Plan(from, to, new QuerySettings { Locomotion = Locomotion.Jump });
         Assert.That(walked.Status, Is.EqualTo(PlannerStatus.Exact), walked.Reason);
         Assert.That(jumped.Status, Is.EqualTo(PlannerStatus.Exact), jumped.Reason);
@@ -141,7 +143,7 @@ public sealed class WalkPlanTests
         {
             Vector3 from = Ground(scene, (random.NextSingle() * 20f) - 10f, (random.NextSingle() * 16f) - 8f);
             Vector3 to = Ground(scene, (random.NextSingle() * 20f) - 10f, (random.NextSingle() * 16f) - 8f);
-            PlanResult plan = query.Plan(from, to);
+            PlanResult plan = query.Plan(from, to, Walking);
             if (plan.Status != PlannerStatus.Exact)
             {
                 Assert.That(plan.Moves, Is.Empty);
@@ -164,7 +166,7 @@ public sealed class WalkPlanTests
     {
         (PlanningScene scene, Roadmap walking, _) = Course.Value;
         var query = new PathQuery(scene, walking);
-        PlanResult first = query.Plan(GapCourse.From, GapCourse.To);
+        PlanResult first = query.Plan(GapCourse.From, GapCourse.To, Walking);
         Assume.That(first.Status, Is.EqualTo(PlannerStatus.Exact));
         var rejected = new HashSet<(int, int)>();
         foreach (Walk walk in first.Walks)
@@ -173,7 +175,7 @@ public sealed class WalkPlanTests
             rejected.Add((walk.From.Id, walk.To.Id));
         }
 
-        PlanResult second = query.Plan(GapCourse.From, GapCourse.To, new QuerySettings(), rejected);
+        PlanResult second = query.Plan(GapCourse.From, GapCourse.To, Walking, rejected);
         Assert.That(second.Status, Is.EqualTo(PlannerStatus.Exact).Or.EqualTo(PlannerStatus.NoPath), second.Reason);
         // A jump set aside is never taken; a walk is made of walk edges none of which was set aside (a joined walk
         // may go between the same two stances by another way, through other stances).
@@ -189,10 +191,10 @@ public sealed class WalkPlanTests
     public void ACharacterThatDoesNotWalkPlansAsBeforeInEitherMode()
     {
         var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Frog());
-        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 80, Threads = 2 }).Roadmap;
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 80, Threads = 2, Locomotion = Locomotion.WalkAndJump }).Roadmap;
         Assert.That(roadmap.Walks, Is.Empty);
         var query = new PathQuery(scene, roadmap);
-        PlanResult a = query.Plan(new Vector3(-6f, 0f, 0f), new Vector3(-4f, 0f, 1f));
+        PlanResult a = query.Plan(new Vector3(-6f, 0f, 0f), new Vector3(-4f, 0f, 1f), Walking);
         PlanResult b = query.Plan(new Vector3(-6f, 0f, 0f), new Vector3(-4f, 0f, 1f), new QuerySettings { Locomotion = Locomotion.Jump });
         Assert.That(a.Moves.Select(m => (m.From.Id, m.To.Id)), Is.EqualTo(b.Moves.Select(m => (m.From.Id, m.To.Id))));
         Assert.That(a.Walks, Is.Empty);
