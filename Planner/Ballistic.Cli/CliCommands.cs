@@ -27,7 +27,7 @@ internal static class CliCommands
 
     private static Option<int> ThreadsOption() => new("--threads") { Description = "Worker threads (the roadmap does not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
 
-    internal static Option<string> LocomotionOption() => new("--locomotion") { Description = "jump: jumps only (the paper's planner; the default while the walking gait is made robust on uneven ground); walk+jump: walk where the ground allows, jump where it must.", DefaultValueFactory = _ => "jump" };
+    internal static Option<string> LocomotionOption() => new("--locomotion") { Description = "walk+jump: walk where the ground allows, jump where it must; jump: jumps only (the paper's planner).", DefaultValueFactory = _ => "walk+jump" };
 
     internal static Locomotion ParseLocomotion(string value) => value switch
     {

@@ -44,7 +44,7 @@ internal sealed class PlanPipeline
     public EndpointTolerance Tolerance { get; init; } = new();
 
     /// <summary>Walk where the ground allows and jump where it must (the default), or jump only (the paper).</summary>
-    public Locomotion Locomotion { get; init; } = Locomotion.Jump;
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }

@@ -15,7 +15,7 @@ namespace Ballistic.Cli;
 
 /// <summary>
 /// <c>ballistic playtest</c>: many agents navigate a level headless with the runtime's systems; writes a JSON report
-/// (<c>ballistic.playtest/2</c>) and a map of where agents went and failed (SVG and PNG).
+/// (<c>ballistic.playtest/1</c>) and a map of where agents went and failed (SVG and PNG).
 /// </summary>
 internal static class PlaytestCommand
 {

@@ -55,7 +55,7 @@ public sealed record WorldSettings
     /// Which moves paths may use (<see cref="QuerySettings.Locomotion"/>): <see cref="Locomotion.WalkAndJump"/> (the
     /// default: walks where the ground allows, for characters that walk) or <see cref="Locomotion.Jump"/> (jumps only).
     /// </summary>
-    public Locomotion Locomotion { get; init; } = Locomotion.Jump;
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>
     /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking

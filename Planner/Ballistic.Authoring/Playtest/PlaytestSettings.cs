@@ -25,7 +25,7 @@ public sealed record PlaytestSettings
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
     /// <summary>Which moves paths may use (<see cref="Runtime.WorldSettings.Locomotion"/>): walks and jumps by default.</summary>
-    public Locomotion Locomotion { get; init; } = Locomotion.Jump;
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>What a jump costs beyond its flight time, in seconds of walking (<see cref="Runtime.WorldSettings.JumpEffort"/>).</summary>
     public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;

@@ -9,22 +9,25 @@ using Ballistic.Planner.Roadmaps;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> exactly; the feet
-/// (<see cref="LimbKind.Foot"/> limbs) form two groups that alternate, split by side and rank front to back (a
-/// biped's left and right, a quadruped's diagonal pairs: a trot, a hexapod's tripods). The walk is cut into
-/// half-cycles; in each one group swings while the other holds, both holding for <see cref="Overlap"/> of the
-/// half-cycle at each of its ends. A full half-cycle covers one step (<see cref="StepShare"/> of the leg, shortened
-/// to what the legs reach by IK with the sole flat) and turns the trunk by at most <see cref="MaxTurn"/>; the first
-/// and last are shorter, as far as the feet still on the start contacts can stay and as far ahead as the feet already
-/// on the end contacts can land. A foothold is the foot's stance offset (from the start and end contact poses,
-/// centred in the range its leg reaches, blended) at the trunk pose in the middle of the half-cycle it is held in,
-/// dropped onto the ground by a ray, and moved toward the walk's centre line when the ground there is missing, off the
-/// path's height by more than a step, or the leg cannot hold it. The feet start on the contacts the walk starts from
-/// and the last two half-cycles plant them on the contacts it ends on. Held feet are kept on their footholds by IK at
-/// every fine step with the sole flat on the ground; a swinging foot follows a lifted curve (a cubic Bézier leaving
-/// one foothold and reaching the next along the ground's normal), raised when a bone would touch the level. Other
-/// limbs (hands) let go during the first half-cycle, hang, and take the end's contacts during the last. Whatever
-/// cannot be done (no foothold, a foot that cannot hold or follow its swing, a bone in the level) is reported.
+/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> exactly (turning in place,
+/// speeding up, walking, slowing down, turning in place); the feet (<see cref="LimbKind.Foot"/> limbs) form two
+/// groups that alternate, split by side and rank front to back (a biped's left and right, a quadruped's diagonal
+/// pairs: a trot, a hexapod's tripods). The walk is cut into half-cycles in time; in each one group swings while the
+/// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
+/// costed in steps (<see cref="StepShare"/> of the leg, shortened to <see cref="ReachMargin"/> of what the legs reach
+/// by IK with the sole flat) plus turns of <see cref="MaxTurn"/>; a half-cycle covers at most one and lasts at least
+/// <see cref="MinHalfCycle"/>, so no swing is shorter than <see cref="MinSwing"/>. The first lasts as long as the
+/// feet left on the start contacts can hold them (probed by IK), the last starts once the feet can hold the end
+/// contacts. A foothold is the foot's stance offset (from the start and end contact poses, centred in the range its
+/// leg reaches, blended) at the trunk pose midway (in cost) through the time it is held, dropped onto the ground by
+/// a ray, and moved toward the walk's centre line when the ground there is missing, off the path's height by more
+/// than a step, or the leg cannot hold it. The feet start on the contacts the walk starts from and the last two
+/// half-cycles plant them on the contacts it ends on. Held feet are kept on their footholds by IK at every fine step
+/// with the sole flat on the ground; a swinging foot follows a lifted curve (a cubic Bézier leaving one foothold and
+/// reaching the next along the ground's normal), raised when a bone would touch the level. Other limbs (hands) let
+/// go during the first half-cycle, hang, and take the end's contacts during the last. Whatever cannot be done (no
+/// foothold, a foot that cannot hold or follow its swing, a step faster than <see cref="JumpAnimator.MinAirTime"/>,
+/// a bone in the level) is reported: a walk is never animated with a foot sliding or jumping to its next foothold.
 /// </summary>
 internal sealed class WalkGait
 {
@@ -34,11 +37,20 @@ internal sealed class WalkGait
     /// <summary>The distance the trunk walks in one full half-cycle (a step), as a share of the leg length, at most.</summary>
     public const float StepShare = 0.7f;
 
+    /// <summary>Share of the range a held foot's leg reaches (along the trunk's forward axis) that a step may use.</summary>
+    public const float ReachMargin = 0.7f;
+
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
 
-    /// <summary>Least duration of a half-cycle, seconds: its swing lasts at least <see cref="JumpAnimator.MinAirTime"/>.</summary>
-    public const float MinHalfCycle = JumpAnimator.MinAirTime / (1f - (2f * Overlap));
+    /// <summary>Least duration of a swing, seconds: a foot never steps to a new foothold faster (a contact that moves within a tenth of a second reads as a slide).</summary>
+    public const float MinSwing = 0.16f;
+
+    /// <summary>Least duration of a half-cycle, seconds: its swing lasts at least <see cref="MinSwing"/>.</summary>
+    public const float MinHalfCycle = MinSwing / (1f - (2f * Overlap));
+
+    /// <summary>Interval (seconds) at which how long the feet can stay on the walk's start and end contacts is probed.</summary>
+    private const float HoldProbe = 0.02f;
 
     /// <summary>Fine steps per frame interval on which the feet are solved; each becomes a frame.</summary>
     public const int Substeps = 4;
@@ -164,7 +176,8 @@ internal sealed class WalkGait
         private float _leg;
         private float _stepHeight;
         private float _step;
-        private float[] _boundaries = [];
+        private float[] _times = [];
+        private float[] _cost = [0f, 1f];
         private int[] _swingStart = [];
         private int[] _swingEnd = [];
         private Vector3[] _startLocal = [];
@@ -210,17 +223,16 @@ internal sealed class WalkGait
             _leg = MathF.Max(LegLength(_start), LegLength(_end));
             _stepHeight = walking.StepHeight > 0f ? walking.StepHeight : 0.25f * _leg;
 
-            // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis (to
-            // centre the footholds between) and along the way the walk leaves and arrives (to size the first and last half-cycles).
+            // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis: where
+            // to centre the footholds (the trunk turns in place to face the way it walks, then walks straight ahead).
             Footing[] startForward = Footings(_start, Forward(_start.Root));
             Footing[] endForward = Footings(_end, Forward(_end.Root));
-            Footing[] startAlong = Footings(_start, _walk.HeadingAt(0f));
-            Footing[] endAlong = Footings(_end, _walk.HeadingAt(_walk.Length));
             _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
             _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
 
-            // The step: StepShare of the leg; long enough that a first or last swing lasts MinAirTime; short enough that a
-            // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays in reach.
+            // The step: StepShare of the leg; long enough that a swing at full speed lasts MinSwing; short enough that a
+            // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays within
+            // ReachMargin of what its leg reaches.
             float reach = float.PositiveInfinity;
             for (int l = 0; l < _limbs; l++)
             {
@@ -228,19 +240,19 @@ internal sealed class WalkGait
             }
 
             float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
-            _step = MathF.Max(MathF.Min(step, reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+            _step = MathF.Max(MathF.Min(step, ReachMargin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
 
             // Feet in two groups; the group whose feet can stay least on the start contacts steps first.
             int[] group = Groups();
-            int first = FirstGroup(group, startAlong);
-            _boundaries = Boundaries(group, first, startAlong, endAlong);
-            int n = _boundaries.Length - 1;
+            int first = FirstGroup(group, startForward);
+            _times = Boundaries(group, first);
+            int n = _times.Length - 1;
             _swingStart = new int[n];
             _swingEnd = new int[n];
             for (int k = 0; k < n; k++)
             {
-                float t0 = _boundaries[k] / _walk.Speed;
-                float t1 = _boundaries[k + 1] / _walk.Speed;
+                float t0 = _times[k];
+                float t1 = _times[k + 1];
                 float overlap = Overlap * (t1 - t0);
 
                 // Both groups hold before the first boundary and after the last, not across them: the feet on the
@@ -252,6 +264,20 @@ internal sealed class WalkGait
             for (int l = 0; l < _limbs; l++)
             {
                 Perform(l, IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : HandPlan(l, n));
+            }
+
+            // No foot steps to a new foothold faster than MinAirTime allows (it would read as a slide): a walk too
+            // short or turning too fast for its steps says so.
+            foreach (IGrouping<int, ContactPhase> limbPhases in _phases.GroupBy(p => p.Limb))
+            {
+                ContactPhase[] ordered = [.. limbPhases.OrderBy(p => p.From)];
+                for (int i = 1; i < ordered.Length; i++)
+                {
+                    if (ordered[i].From - ordered[i - 1].To < JumpAnimator.MinAirTime && Vector3.Distance(ordered[i].Position, ordered[i - 1].Position) > 2f * Touch)
+                    {
+                        Fail(ordered[i].Limb, "would have to step faster than it can", Step(ordered[i - 1].To));
+                    }
+                }
             }
 
             // Frames at every fine step; bones of no limb are checked on each.
@@ -469,98 +495,171 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// The half-cycles' boundaries along the path, metres. The first lasts as long as the group holding the start
-        /// contacts can stay on them (half a step at most), the last as long as the group already on the end contacts
-        /// can hold them before the walk ends; each one between covers at most one step and turns the trunk by at most
-        /// <see cref="MaxTurn"/> (their shares summed at most one), all of them alike.
+        /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed as distance in steps plus turning
+        /// in <see cref="MaxTurn"/>s (at most one half-cycle per <see cref="MinHalfCycle"/>); the first half-cycle lasts
+        /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
+        /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
+        /// at most one, none shorter than <see cref="MinHalfCycle"/>.
         /// </summary>
-        private float[] Boundaries(int[] group, int first, Footing[] startAlong, Footing[] endAlong)
+        private float[] Boundaries(int[] group, int first)
         {
-            float length = _walk.Length;
-
-            // Cost along the path: distance in steps plus turning in MaxTurns, sampled every centimetre or so, but never
-            // more than one per the distance walked in MinHalfCycle: a walk turning faster than that is not followed by
-            // faster steps (its held feet fail and say so).
-            int samples = Math.Clamp((int)MathF.Ceiling(length / 0.01f), 16, 100_000);
+            float duration = _walk.Duration;
+            int samples = Math.Clamp((int)MathF.Ceiling(duration / 0.005f), 16, 200_000);
             float[] cost = new float[samples + 1];
-            Quaternion previous = _walk.PoseAtDistance(0f).Rotation;
-            float piece = length / samples;
+            _cost = cost;
+            RootPose previous = _walk.PoseAt(0f);
+            float dt = duration / samples;
             for (int i = 1; i <= samples; i++)
             {
-                Quaternion rotation = _walk.PoseAtDistance(length * i / samples).Rotation;
-                float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(previous, rotation)), 0f, 1f));
-                cost[i] = cost[i - 1] + MathF.Min((piece / _step) + (turn / MaxTurn), piece / (_walk.Speed * MinHalfCycle));
-                previous = rotation;
+                RootPose pose = _walk.PoseAt(duration * i / samples);
+                float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(previous.Rotation, pose.Rotation)), 0f, 1f));
+                float moved = Vector3.Distance(previous.Position, pose.Position);
+                cost[i] = cost[i - 1] + MathF.Min((moved / _step) + (turn / MaxTurn), dt / MinHalfCycle);
+                previous = pose;
             }
 
-            float DistanceAtCost(float c)
+            float total = cost[samples];
+            if (duration < 2f * MinHalfCycle || total <= 1f)
             {
-                int i = Array.BinarySearch(cost, c);
-                i = i >= 0 ? i : Math.Clamp(~i, 1, samples);
-                float span = cost[i] - cost[i - 1];
-                float f = span > 0f ? Math.Clamp((c - cost[i - 1]) / span, 0f, 1f) : 1f;
-                return length * (i - 1 + f) / samples;
+                // One step of each group: the first swings while the other holds the start contacts, then the other.
+                return [0f, 0.5f * duration, duration];
             }
 
-            float CostAt(float distance)
+            float firstEnd = Math.Clamp(MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f))), MinHalfCycle, 0.5f * duration);
+            float lastStart = Math.Clamp(MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f))), 0.5f * duration, duration - MinHalfCycle);
+            float span = lastStart - firstEnd;
+            if (span < MinHalfCycle)
             {
-                float x = Math.Clamp(distance / length, 0f, 1f) * samples;
-                int i = Math.Min((int)x, samples - 1);
-                return float.Lerp(cost[i], cost[i + 1], x - i);
+                return [0f, 0.5f * duration, duration];
             }
 
-            // How far the trunk may walk while a group stays on the start contacts, or lands early on the end ones.
-            float Stay(int g, Footing[] footings, bool atEnd)
+            float c0 = CostAt(firstEnd);
+            float c1 = CostAt(lastStart);
+            int middle = Math.Clamp((int)MathF.Ceiling(c1 - c0 - 1e-4f), 1, Math.Max(1, (int)(span / MinHalfCycle)));
+
+            // Even in cost, drawn toward even in time as far as needed for every half-cycle to last MinHalfCycle.
+            var times = new float[middle + 3];
+            times[0] = 0f;
+            times[1] = firstEnd;
+            times[middle + 1] = lastStart;
+            times[middle + 2] = duration;
+            for (float blend = 0f; ; blend = MathF.Min(1f, blend + 0.1f))
             {
-                float least = float.PositiveInfinity;
-                for (int l = 0; l < _limbs; l++)
+                bool ok = true;
+                for (int k = 1; k < middle; k++)
                 {
-                    if (group[l] == g)
+                    float byCost = TimeAtCost(float.Lerp(c0, c1, k / (float)middle));
+                    times[k + 1] = float.Lerp(byCost, float.Lerp(firstEnd, lastStart, k / (float)middle), blend);
+                }
+
+                for (int k = 1; k <= middle; k++)
+                {
+                    ok &= times[k + 1] - times[k] >= MinHalfCycle - 1e-4f;
+                }
+
+                if (ok || blend >= 1f)
+                {
+                    return times;
+                }
+            }
+        }
+
+        /// <summary>The time (seconds into the walk) at which the trunk's motion has cost <paramref name="c"/> half-cycles (<see cref="Boundaries"/>).</summary>
+        private float TimeAtCost(float c)
+        {
+            int samples = _cost.Length - 1;
+            int i = Array.BinarySearch(_cost, c);
+            i = i >= 0 ? Math.Max(i, 1) : Math.Clamp(~i, 1, samples);
+            float span = _cost[i] - _cost[i - 1];
+            float f = span > 0f ? Math.Clamp((c - _cost[i - 1]) / span, 0f, 1f) : 1f;
+            return _walk.Duration * (i - 1 + f) / samples;
+        }
+
+        /// <summary>The cost in half-cycles of the trunk's motion up to <paramref name="time"/> seconds into the walk.</summary>
+        private float CostAt(float time)
+        {
+            int samples = _cost.Length - 1;
+            float x = Math.Clamp(time / _walk.Duration, 0f, 1f) * samples;
+            int i = Math.Min((int)x, samples - 1);
+            return float.Lerp(_cost[i], _cost[i + 1], x - i);
+        }
+
+        /// <summary>
+        /// How long (seconds into the walk, up to <paramref name="limit"/>) the feet of group <paramref name="g"/> can
+        /// hold their start contacts by IK as the trunk moves off, probed every <see cref="HoldProbe"/>.
+        /// </summary>
+        private float HoldUntil(int[] group, int g, float limit)
+        {
+            float until = limit;
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (group[l] != g || ContactOf(_start, l) is not LimbContact c)
+                {
+                    continue;
+                }
+
+                float[] q = (float[])_start.Angles.Clone();
+                for (float t = HoldProbe; t <= until; t += HoldProbe)
+                {
+                    if (!HoldsAt(l, t, c, q))
                     {
-                        least = MathF.Min(least, atEnd ? footings[l].Behind : footings[l].Ahead);
+                        until = t - HoldProbe;
+                        break;
                     }
                 }
-
-                return Math.Clamp(least, MathF.Min(_walk.Speed * MinHalfCycle * 0.5f, 0.5f * _step), 0.5f * _step);
             }
 
-            float firstLength = MathF.Min(Stay(1 - first, startAlong, atEnd: false), DistanceAtCost(0.5f));
-            float lastLength = 0f;
-            int n = 2;
-            for (int pass = 0; pass < 2; pass++)
+            return until;
+        }
+
+        /// <summary>
+        /// From when (seconds into the walk, from <paramref name="limit"/> on) every foot can hold its end contact by IK
+        /// until the walk ends, probed every <see cref="HoldProbe"/> backward from the end.
+        /// </summary>
+        private float HoldFrom(float limit)
+        {
+            float from = limit;
+            float duration = _walk.Duration;
+            for (int l = 0; l < _limbs; l++)
             {
-                // The group on the end contacts during the last half-cycle is the one that swung in the one before it.
-                int holder = pass == 0 ? -1 : ((n - 2) % 2 == 0 ? first : 1 - first);
-                float stay = holder < 0 ? MathF.Min(Stay(0, endAlong, atEnd: true), Stay(1, endAlong, atEnd: true)) : Stay(holder, endAlong, atEnd: true);
-                lastLength = MathF.Min(stay, length - DistanceAtCost(cost[samples] - 0.5f));
-                float middle = CostAt(length - lastLength) - CostAt(firstLength);
-                int count = firstLength + lastLength >= length ? 2 : 2 + Math.Max(1, (int)MathF.Ceiling(middle - 1e-4f));
-                if (pass == 1 && (count - n) % 2 != 0)
+                if (!IsFoot(l) || ContactOf(_end, l) is not LimbContact c)
                 {
-                    break; // the holder would change again: keep the first pass's, which suits either group
+                    continue;
                 }
 
-                n = count;
+                float[] q = (float[])_end.Angles.Clone();
+                for (float t = duration - HoldProbe; t >= from; t -= HoldProbe)
+                {
+                    if (!HoldsAt(l, t, c, q))
+                    {
+                        from = t + HoldProbe;
+                        break;
+                    }
+                }
             }
 
-            var boundaries = new float[n + 1];
-            boundaries[n] = length;
-            if (n == 2)
+            return from;
+        }
+
+        /// <summary>True when limb <paramref name="l"/> holds <paramref name="contact"/> at time <paramref name="t"/> of the walk by IK from the angles <paramref name="q"/> (updated when it does), no bone of it in the level.</summary>
+        private bool HoldsAt(int l, float t, LimbContact contact, float[] q)
+        {
+            RigLimb limb = _model.Limbs[l];
+            RootPose root = _walk.PoseAt(t);
+            float[] trial = (float[])q.Clone();
+            if (!_gait.Hold(root, trial, limb, contact.Position, contact.Normal))
             {
-                boundaries[1] = length * firstLength / (firstLength + lastLength);
-                return boundaries;
+                return false;
             }
 
-            boundaries[1] = firstLength;
-            boundaries[n - 1] = length - lastLength;
-            float c0 = CostAt(firstLength);
-            float c1 = CostAt(length - lastLength);
-            for (int k = 2; k < n - 1; k++)
+            _rig.Solve(root, trial, _positions, _rotations);
+            if (_gait._collision.LimbCollides(limb, _positions, _rotations, contact.Position))
             {
-                boundaries[k] = DistanceAtCost(float.Lerp(c0, c1, (k - 1) / (float)(n - 2)));
+                return false;
             }
 
-            return boundaries;
+            Array.Copy(trial, q, q.Length);
+            return true;
         }
 
         /// <summary>
@@ -652,11 +751,12 @@ internal sealed class WalkGait
         private Holding Foothold(int l, int k, int from, int to)
         {
             RigLimb limb = _model.Limbs[l];
-            float distance = (_boundaries[k] + _boundaries[k + 1]) * 0.5f;
-            RootPose pose = _walk.PoseAtDistance(distance);
-            Vector3 nominal = pose.ToWorld(Vector3.Lerp(_startLocal[l], _endLocal[l], Smooth(distance / _walk.Length)));
+            float time = TimeAtCost((CostAt(Time(from)) + CostAt(Time(to))) * 0.5f);
+            float distance = _walk.DistanceAt(time);
+            RootPose pose = _walk.PoseAt(time);
+            Vector3 nominal = pose.ToWorld(Vector3.Lerp(_startLocal[l], _endLocal[l], Smooth(time / _walk.Duration)));
             Vector3 ground = _walk.PointAt(distance);
-            Vector3 heading = _walk.HeadingAt(distance);
+            Vector3 heading = Forward(pose);
             Vector3 across = nominal - ground;
             across.Y = 0f;
             Vector3 along = Vector3.Dot(across, heading) * heading;
@@ -664,7 +764,7 @@ internal sealed class WalkGait
             WalkingLimits walking = _gait._scene.Character.Walking;
             float slope = MathF.Tan(walking.MaxSlopeDegrees * MathF.PI / 180f);
             (Vector3 Point, Vector3 Normal)? grounded = null;
-            int mid = Step(distance / _walk.Speed);
+            int mid = Step(time);
             foreach ((float share, float shift) in Inward.SelectMany(i => Along.Select(a => (i, a))))
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
@@ -704,7 +804,7 @@ internal sealed class WalkGait
         private float[]? CanHold(int l, Vector3 point, Vector3 normal, int[] steps)
         {
             RigLimb limb = _model.Limbs[l];
-            float[] q = Stance(_walk.DistanceAt(Time(steps[0])) / _walk.Length);
+            float[] q = Stance(Time(steps[0]) / _walk.Duration);
             float[]? seed = null;
             foreach (int i in steps)
             {
@@ -852,7 +952,7 @@ internal sealed class WalkGait
         /// <summary>Holds at fine step <paramref name="i"/> from the hold's known angles, then from the stance angles, when the limb's own fail.</summary>
         private bool Reseeded(int i, float[] trial, RigLimb limb, Holding hold, float[] q)
         {
-            foreach (float[]? seed in new[] { hold.Seed, hold.Settle ? _end.Angles : Stance(_walk.DistanceAt(Time(i)) / _walk.Length) })
+            foreach (float[]? seed in new[] { hold.Seed, hold.Settle ? _end.Angles : Stance(Time(i) / _walk.Duration) })
             {
                 if (seed is null)
                 {
@@ -919,7 +1019,7 @@ internal sealed class WalkGait
             if (next is Holding target)
             {
                 (p1, n1, contact1, ground1) = (target.Point, -target.Normal, target.Point, target.Normal);
-                endAngles = target.Seed ?? (target.Settle ? _end.Angles : Stance(_walk.DistanceAt(Time(b)) / _walk.Length));
+                endAngles = target.Seed ?? (target.Settle ? _end.Angles : Stance(Time(b) / _walk.Duration));
             }
             else
             {
@@ -961,6 +1061,7 @@ internal sealed class WalkGait
                 }
                 float[] q = (float[])startAngles.Clone();
                 int failures = 0;
+                bool onCurve = true;
                 for (int i = a; i <= b; i++)
                 {
                     float s = Warp((i - a) / (float)(b - a), slow);
@@ -971,15 +1072,21 @@ internal sealed class WalkGait
                         trial[d] = float.Lerp(q[d], endAngles[d], w);
                     }
 
-                    if (i > a && !(i == b && contact1 is null))
+                    if (i == b && contact1 is not null)
                     {
+                        // Touch-down exactly on the foothold.
+                        Vector3 n = Vector3.Normalize(n1);
+                        bool solved = _gait._ik.Solve(_roots[i], trial, limb, p1, n).Success || _gait._freeIk.Solve(_roots[i], trial, limb, p1, n).Success;
+                        failures += solved ? 0 : 1;
+                    }
+                    else if (i > a && i < b && onCurve)
+                    {
+                        // On the lifted curve while the leg reaches it; from the first point it does not (the trunk
+                        // turning or slowing under it), the angles go straight on toward the foothold's.
                         Vector3 p = Curve(s);
                         Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
-                        bool solved = i == b
-                            ? _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._freeIk.Solve(_roots[i], trial, limb, p, n).Success
-                            : _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
-                                || _gait._swingIk.Solve(_roots[i], trial, limb, p, null).Success;
-                        failures += solved ? 0 : 1;
+                        onCurve = _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
+                            || _gait._swingIk.Solve(_roots[i], trial, limb, p, null).Success;
                     }
 
                     _rig.Solve(_roots[i], trial, _positions, _rotations);

@@ -44,10 +44,10 @@ public sealed record BakeSettings
     public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
 
     /// <summary>
-    /// Which moves the roadmap holds: <see cref="Locomotion.WalkAndJump"/> adds walks between nearby nodes when the
-    /// character walks; <see cref="Locomotion.Jump"/> (the default for now) bakes jumps only, exactly as the paper.
+    /// Which moves the roadmap holds: <see cref="Locomotion.WalkAndJump"/> (the default) adds walks between
+    /// nearby nodes when the character walks; <see cref="Locomotion.Jump"/> bakes jumps only, exactly as the paper.
     /// </summary>
-    public Locomotion Locomotion { get; init; } = Locomotion.Jump;
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>
     /// The longest walk edge baked, metres (horizontal distance between the nodes' contact centres); <c>null</c>

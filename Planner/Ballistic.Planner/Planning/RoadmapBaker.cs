@@ -244,12 +244,12 @@ public sealed class RoadmapBaker
             (int i, int j) = walkPairs[n];
             if (walkForward[n].Walk is Walk there)
             {
-                roadmap.AddWalk(new RoadmapWalk(i, j, there.Length, there.Duration));
+                roadmap.AddWalk(new RoadmapWalk(i, j, there.Length, there.Length / there.Speed));
             }
 
             if (walkBackward[n].Walk is Walk back)
             {
-                roadmap.AddWalk(new RoadmapWalk(j, i, back.Length, back.Duration));
+                roadmap.AddWalk(new RoadmapWalk(j, i, back.Length, back.Length / back.Speed));
             }
         }
 

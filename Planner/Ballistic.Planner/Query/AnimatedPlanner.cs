@@ -83,7 +83,7 @@ public sealed class AnimatedPlanner
     /// <param name="from">Requested start point, on or near a surface, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
     /// <param name="settings">Query settings (endpoint tolerance, connections).</param>
-    /// <param name="rounds">Searches made at most.</param>
+    /// <param name="rounds">Searches made at most, besides those (at most <see cref="JumpRepair.WalkRounds"/>) whose walks did not animate cleanly.</param>
     /// <param name="frameRate">Animation frames per second.</param>
     /// <param name="termination">
     /// Stops the request early (its time and cancellation parts, measured from the request's start), checked before
@@ -101,7 +101,7 @@ public sealed class AnimatedPlanner
 
         // The condition sees the time since this request began, not since each search began.
         TerminationCondition? stop = termination is null ? null : new Elapsed(termination, clock);
-        PlanResult result = query.Plan(from, to, settings, repair.Excluded, stop);
+        PlanResult result = query.Plan(from, to, repair.Adjust(settings), repair.Excluded, stop);
         for (int round = 1; ; round++)
         {
             if (result.Status is PlannerStatus.Cancelled or PlannerStatus.Timeout)
@@ -135,7 +135,8 @@ public sealed class AnimatedPlanner
 
             repair.Reject(result.Moves, animation);
 
-            if (round >= rounds)
+            // Rounds whose walks failed (at most JumpRepair.WalkRounds) do not count: the jumps-only fallback has them all.
+            if (round - repair.WalkFailures >= rounds)
             {
                 PlanResult failed = result with
                 {
@@ -147,7 +148,7 @@ public sealed class AnimatedPlanner
                 return new AnimatedPlan(failed, null, repair.SetAside, round);
             }
 
-            result = query.Plan(from, to, settings, repair.Excluded, stop);
+            result = query.Plan(from, to, repair.Adjust(settings), repair.Excluded, stop);
         }
     }
 

@@ -1,4 +1,5 @@
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Query;
@@ -6,10 +7,16 @@ namespace Ballistic.Planner.Query;
 /// <summary>
 /// The lazy-repair record of one path request: the jumps set aside because the whole body could not perform them,
 /// the set a search must avoid, and the reasons a request that never animates cleanly reports. Shared by
-/// <see cref="AnimatedPlanner"/> and the runtime's path requests so both repair and explain alike. Not thread-safe.
+/// <see cref="AnimatedPlanner"/> and the runtime's path requests so both repair and explain alike. A request that
+/// walks and jumps falls back to jumps only once its walks failed to animate in <see cref="WalkRounds"/> rounds: walking
+/// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds.
+/// Not thread-safe.
 /// </summary>
 public sealed class JumpRepair
 {
+    /// <summary>Rounds with a walk that did not animate cleanly after which a request searches jumps only.</summary>
+    public const int WalkRounds = 2;
+
     private readonly HashSet<(int From, int To)> _excluded = [];
     private readonly List<RejectedJump> _setAside = [];
 
@@ -18,6 +25,22 @@ public sealed class JumpRepair
 
     /// <summary>The jumps set aside so far, in order, each with the animator's reason.</summary>
     public IReadOnlyList<RejectedJump> SetAside => _setAside;
+
+    /// <summary>Rounds so far in which a walk of the path did not animate cleanly.</summary>
+    public int WalkFailures { get; private set; }
+
+    /// <summary>False once walks failed to animate in <see cref="WalkRounds"/> rounds: the next searches use jumps only.</summary>
+    public bool WalksAllowed => WalkFailures < WalkRounds;
+
+    /// <summary>
+    /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
+    /// <see cref="WalksAllowed"/> is false.
+    /// </summary>
+    public QuerySettings Adjust(QuerySettings settings)
+    {
+        ArgumentNullException.ThrowIfNull(settings);
+        return WalksAllowed || settings.Locomotion == Locomotion.Jump ? settings : settings with { Locomotion = Locomotion.Jump };
+    }
 
     /// <summary>Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a problem with.</summary>
     /// <param name="path">The path that was animated.</param>
@@ -28,6 +51,11 @@ public sealed class JumpRepair
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(animation);
         int added = 0;
+        if (animation.Problems.Any(p => path[p.Jump] is Walk))
+        {
+            WalkFailures++;
+        }
+
         foreach (JumpProblem problem in animation.Problems)
         {
             Move move = path[problem.Jump];

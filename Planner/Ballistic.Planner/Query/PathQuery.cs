@@ -272,7 +272,7 @@ public sealed class PathQuery
 
                 if (_walking && _scene.Walking.Steer(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
                 {
-                    _extra.Add(new Extra(start.Id, goal.Id, walk.Duration, default, walk));
+                    _extra.Add(new Extra(start.Id, goal.Id, WalkCost(walk), default, walk));
                 }
             }
         }
@@ -653,7 +653,7 @@ public sealed class PathQuery
             RoadmapNode node = _roadmap.Node(j);
             if ((fromNode ? _scene.Walking.Steer(stance, node, distance) : _scene.Walking.Steer(node, stance, distance)).Walk is Walk walk)
             {
-                _extra.Add(new Extra(a, b, walk.Duration, default, walk));
+                _extra.Add(new Extra(a, b, WalkCost(walk), default, walk));
                 if (++connected >= settings.Connections * 2)
                 {
                     break;
@@ -664,8 +664,11 @@ public sealed class PathQuery
         return null;
     }
 
-    /// <summary>A move's cost in the search, seconds: a walk's duration, a jump's flight time plus the effort.</summary>
-    private float CostOf(Move move) => move is Jump jump ? jump.Arc.FlightTime + _effort : move.Duration;
+    /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>
+    private float CostOf(Move move) => move is Jump jump ? jump.Arc.FlightTime + _effort : WalkCost((Walk)move);
+
+    /// <summary>A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds; turning in place and speeding up are not counted.</summary>
+    private static float WalkCost(Walk walk) => walk.Length / walk.Speed;
 
     /// <summary>
     /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that
@@ -705,7 +708,7 @@ public sealed class PathQuery
                 }
 
                 float saving = costs[j] - costs[i] - 1e-3f;
-                if (_scene.Walking.Steer(a, b, settings.MaxDirectWalk).Walk is Walk walk && walk.Duration < saving)
+                if (_scene.Walking.Steer(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving)
                 {
                     best = walk;
                 }
@@ -728,16 +731,23 @@ public sealed class PathQuery
         return result;
     }
 
+    /// <summary>Sharpest corner (degrees) at which two walks are joined into one walked without stopping.</summary>
+    private const float MaxJoinTurnDegrees = 30f;
+
     /// <summary>
     /// Joins consecutive walks into one walk through the stances between them (the character does not stop there)
-    /// when the trunk stays clear along the joined walk (its trunk follows the joined path, not each part's).
+    /// when the trunk stays clear along the joined walk (its trunk follows the joined path, not each part's) and the
+    /// path turns by at most <see cref="MaxJoinTurnDegrees"/> there (a sharper corner is walked as two walks: the
+    /// character stops and turns in place, which the legs can follow).
     /// </summary>
     private static List<Move> JoinWalks(List<Move> path, WalkSteering walking)
     {
+        float cos = MathF.Cos(MaxJoinTurnDegrees * MathF.PI / 180f);
         var result = new List<Move>();
         foreach (Move move in path)
         {
             if (move is Walk next && result.Count > 0 && result[^1] is Walk previous &&
+                Vector3.Dot(previous.HeadingAt(previous.Length), next.HeadingAt(0f)) >= cos &&
                 Joined(previous, next) is Walk joined && walking.TrunkIsFree(joined))
             {
                 result[^1] = joined;

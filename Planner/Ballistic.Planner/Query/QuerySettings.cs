@@ -33,11 +33,11 @@ public sealed record QuerySettings
     public bool PreferRoadmapNodes { get; init; }
 
     /// <summary>
-    /// Which moves the path may use: <see cref="Locomotion.WalkAndJump"/> (walks only for a character whose
-    /// <see cref="Characters.ReducedCharacter.Walking"/> says it walks) or <see cref="Locomotion.Jump"/> (the paper's
-    /// jump-only planner; the default for now).
+    /// Which moves the path may use: <see cref="Locomotion.WalkAndJump"/> (the default; walks only for a character
+    /// whose <see cref="Characters.ReducedCharacter.Walking"/> says it walks) or <see cref="Locomotion.Jump"/> (the
+    /// paper's jump-only planner).
     /// </summary>
-    public Locomotion Locomotion { get; init; } = Locomotion.Jump;
+    public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>The default <see cref="JumpEffort"/>, seconds.</summary>
     public const float DefaultJumpEffort = 4f;

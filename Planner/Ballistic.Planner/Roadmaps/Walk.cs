@@ -4,18 +4,32 @@ using Ballistic.Planner.Geometry;
 namespace Ballistic.Planner.Roadmaps;
 
 /// <summary>
-/// One walk of a planned path: the trunk moves at a constant speed along a path on the ground from one stance to
-/// the next while the legs step. The ground path runs from the first stance's contact centre to the second's; the
-/// trunk keeps its stance offset above the ground (blended from the first stance's to the second's), faces the way it
-/// walks, and turns from the first stance's orientation at the start to the second's at the end. Immutable.
+/// One walk of a planned path: the trunk moves along a path on the ground from one stance to the next while the legs
+/// step. The ground path runs from the first stance's contact centre to the second's; the trunk keeps its stance
+/// offset above the ground (blended from the first stance's to the second's) and faces the way it walks. In time:
+/// the trunk first turns in place from the first stance's orientation to the walking heading (at
+/// <see cref="TurnRate"/> on average, in <see cref="MinTurnTime"/> at least), speeds up from rest to <see cref="Speed"/> over <see cref="RampTime"/>, walks,
+/// slows down to rest over <see cref="RampTime"/> (a shorter walk never reaches full speed), and turns in place to
+/// the second stance's orientation. Immutable.
 /// </summary>
 public sealed record Walk : Move
 {
-    /// <summary>The distance (metres) over which the trunk turns from a stance's orientation to the walking heading, at most.</summary>
-    public const float TurnDistance = 0.5f;
+    /// <summary>Average rate (radians per second) at which the trunk turns in place at either end of a walk (86°/s).</summary>
+    public const float TurnRate = 1.5f;
+
+    /// <summary>Least time (seconds) of a turn in place: even a small turn takes two steps' time, one for each group of feet.</summary>
+    public const float MinTurnTime = 0.4f;
+
+    /// <summary>Time (seconds) the trunk takes to speed up from rest to the walking speed, and to slow down to rest.</summary>
+    public const float RampTime = 0.5f;
 
     private readonly Vector3[] _path;
     private readonly float[] _distances;
+    private readonly Quaternion _startHeading;
+    private readonly Quaternion _endHeading;
+    private readonly float _acceleration;
+    private readonly float _cruise;
+    private readonly float _ramp;
 
     /// <summary>Creates a walk.</summary>
     /// <param name="from">The stance walked from.</param>
@@ -62,7 +76,18 @@ public sealed record Walk : Move
         Length = _distances[^1];
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
+        _startHeading = Upright(HeadingAt(0f));
+        _endHeading = Upright(HeadingAt(Length));
+        StartTurn = TurnTime(Angle(from.Pose.Rotation, _startHeading));
+        EndTurn = TurnTime(Angle(_endHeading, to.Pose.Rotation));
+
+        // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway.
+        _acceleration = speed / RampTime;
+        _cruise = Length >= speed * RampTime ? speed : MathF.Sqrt(_acceleration * Length);
+        _ramp = _cruise / _acceleration;
+        WalkTime = _cruise >= speed ? (Length / speed) + RampTime : 2f * _ramp;
     }
+
 
     /// <inheritdoc />
     public override RoadmapNode From { get; }
@@ -98,8 +123,17 @@ public sealed record Walk : Move
     /// <summary>Length of the ground path, metres (3D, along the polyline).</summary>
     public float Length { get; }
 
-    /// <summary>Length over speed, seconds.</summary>
-    public override float Duration => Length / Speed;
+    /// <summary>Seconds: <see cref="StartTurn"/>, then <see cref="WalkTime"/>, then <see cref="EndTurn"/>.</summary>
+    public override float Duration => StartTurn + WalkTime + EndTurn;
+
+    /// <summary>Seconds the trunk turns in place at the start, from the first stance's orientation to the walking heading.</summary>
+    public float StartTurn { get; }
+
+    /// <summary>Seconds the trunk moves along the path, speeding up and slowing down included (length over speed plus <see cref="RampTime"/> for a walk that reaches full speed).</summary>
+    public float WalkTime { get; }
+
+    /// <summary>Seconds the trunk turns in place at the end, from the walking heading to the second stance's orientation.</summary>
+    public float EndTurn { get; }
 
     /// <summary>The trunk centre's offset from the path's first point at the start (the first stance's), world metres.</summary>
     public Vector3 StartOffset { get; }
@@ -108,7 +142,57 @@ public sealed record Walk : Move
     public Vector3 EndOffset { get; }
 
     /// <summary>Distance walked along the path at <paramref name="time"/> seconds after the walk starts (clamped to the walk), metres.</summary>
-    public float DistanceAt(float time) => Math.Clamp(time * Speed, 0f, Length);
+    public float DistanceAt(float time)
+    {
+        float t = time - StartTurn;
+        if (!(t > 0f))
+        {
+            return 0f;
+        }
+
+        if (t >= WalkTime)
+        {
+            return Length;
+        }
+
+        float left = WalkTime - t;
+        float d = t <= _ramp ? 0.5f * _acceleration * t * t
+            : left <= _ramp ? Length - (0.5f * _acceleration * left * left)
+            : (0.5f * _cruise * _ramp) + (_cruise * (t - _ramp));
+        return Math.Clamp(d, 0f, Length);
+    }
+
+    /// <summary>The time (seconds after the walk starts) at which the trunk has walked <paramref name="distance"/> metres along the path (clamped): the inverse of <see cref="DistanceAt"/>, 0 for no distance.</summary>
+    public float TimeAtDistance(float distance)
+    {
+        if (!(distance > 0f))
+        {
+            return 0f;
+        }
+
+        if (distance >= Length)
+        {
+            return StartTurn + WalkTime;
+        }
+
+        float rampDistance = 0.5f * _acceleration * _ramp * _ramp;
+        float t = distance <= rampDistance ? MathF.Sqrt(2f * distance / _acceleration)
+            : distance >= Length - rampDistance ? WalkTime - MathF.Sqrt(2f * (Length - distance) / _acceleration)
+            : _ramp + ((distance - rampDistance) / _cruise);
+        return StartTurn + Math.Clamp(t, 0f, WalkTime);
+    }
+
+    /// <summary>The trunk's speed along the path at <paramref name="time"/> seconds after the walk starts, m/s: 0 while it turns in place, at most <see cref="Speed"/>.</summary>
+    public float SpeedAt(float time)
+    {
+        float t = time - StartTurn;
+        if (!(t > 0f) || t >= WalkTime)
+        {
+            return 0f;
+        }
+
+        return MathF.Min(_cruise, _acceleration * MathF.Min(t, WalkTime - t));
+    }
 
     /// <summary>The ground point at <paramref name="distance"/> metres along the path (clamped), world metres.</summary>
     public Vector3 PointAt(float distance)
@@ -155,37 +239,62 @@ public sealed record Walk : Move
     }
 
     /// <summary>
-    /// The trunk's pose <paramref name="distance"/> metres along the path: the ground point plus the stance offset
-    /// (blended smoothly from the start's to the end's), facing <see cref="HeadingAt"/> upright, turning from the
-    /// first stance's orientation over the first <see cref="TurnDistance"/> (at most a third of the walk) and to the
-    /// second stance's over the last. Exactly <see cref="From"/>'s pose at 0 and <see cref="To"/>'s at the end.
+    /// The trunk's walking pose <paramref name="distance"/> metres along the path (clamped): the ground point plus the
+    /// stance offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt"/> upright. Its
+    /// position is exactly <see cref="From"/>'s at 0 and <see cref="To"/>'s at the end; the stances' orientations are
+    /// turned to in place (<see cref="PoseAt"/>).
     /// </summary>
     public RootPose PoseAtDistance(float distance)
     {
         distance = Math.Clamp(distance, 0f, Length);
         float u = Length > 0f ? distance / Length : 1f;
-        Vector3 position = PointAt(distance) + Vector3.Lerp(StartOffset, EndOffset, Smooth(u));
-        if (distance <= 0f)
+        Vector3 position = distance <= 0f ? From.Pose.Position
+            : distance >= Length ? To.Pose.Position
+            : PointAt(distance) + Vector3.Lerp(StartOffset, EndOffset, Smooth(u));
+        Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance));
+        return new RootPose(position, rotation);
+    }
+
+    /// <summary>
+    /// The trunk's pose <paramref name="time"/> seconds after the walk starts (clamped to the walk): turning in place
+    /// at <see cref="From"/>'s position during <see cref="StartTurn"/>, then <see cref="PoseAtDistance"/> at
+    /// <see cref="DistanceAt"/>, then turning in place at <see cref="To"/>'s position. Exactly <see cref="From"/>'s
+    /// pose at 0 and <see cref="To"/>'s at <see cref="Duration"/>.
+    /// </summary>
+    public RootPose PoseAt(float time)
+    {
+        if (!(time > 0f))
         {
             return From.Pose;
         }
 
-        if (distance >= Length)
+        if (time >= Duration)
         {
             return To.Pose;
         }
 
-        Vector3 h = HeadingAt(distance);
-        Quaternion heading = Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(h.X, h.Z));
-        float turn = MathF.Min(TurnDistance, Length / 3f);
-        float a = Smooth(distance / turn);
-        float b = Smooth((distance - (Length - turn)) / turn);
-        Quaternion rotation = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Slerp(From.Pose.Rotation, heading, a), To.Pose.Rotation, b));
-        return new RootPose(position, rotation);
+        if (time < StartTurn)
+        {
+            return new RootPose(From.Pose.Position, Quaternion.Normalize(Quaternion.Slerp(From.Pose.Rotation, _startHeading, Smooth(time / StartTurn))));
+        }
+
+        float end = StartTurn + WalkTime;
+        if (time > end && EndTurn > 0f)
+        {
+            return new RootPose(To.Pose.Position, Quaternion.Normalize(Quaternion.Slerp(_endHeading, To.Pose.Rotation, Smooth((time - end) / EndTurn))));
+        }
+
+        return PoseAtDistance(DistanceAt(time));
     }
 
-    /// <summary>The trunk's pose <paramref name="time"/> seconds after the walk starts (clamped to the walk): <see cref="PoseAtDistance"/> at <see cref="DistanceAt"/>.</summary>
-    public RootPose PoseAt(float time) => PoseAtDistance(DistanceAt(time));
+    /// <summary>Upright rotation facing the horizontal direction <paramref name="heading"/>.</summary>
+    private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));
+
+    /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn).</summary>
+    private static float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
+
+    /// <summary>Angle (radians) between two orientations.</summary>
+    private static float Angle(Quaternion a, Quaternion b) => 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a, b)), 0f, 1f));
 
     private static float Smooth(float x)
     {

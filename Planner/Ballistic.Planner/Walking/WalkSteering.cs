@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Walking;
 /// when the ground is there at every sample (no gap), never rises or drops more than the character's step height
 /// from one sample to the next (stairs are fine, a ledge is not), never tilts beyond the steepest slope (over two
 /// samples in a row, so a ray grazing a stair's edge does not count), nothing stands between the ground and the
-/// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAtDistance"/>) never touches the level.
+/// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAt"/>, its turns in place included) never touches the level.
 /// Deterministic and thread-safe.
 /// </summary>
 /// <remarks>
@@ -163,17 +163,18 @@ public sealed class WalkSteering
     }
 
     /// <summary>
-    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAtDistance"/>) never
-    /// touches the level: the check <see cref="Steer"/> makes, for walks joined from several (their trunk follows
-    /// the joined path, not each part's).
+    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAt"/>: turning in place at
+    /// both ends, walking between) never touches the level: the check <see cref="Steer"/> makes, for walks joined
+    /// from several (their trunk follows the joined path, not each part's).
     /// </summary>
     public bool TrunkIsFree(Walk walk)
     {
         float spacing = MathF.Min(_trunkHalfExtents.X, MathF.Min(_trunkHalfExtents.Y, _trunkHalfExtents.Z));
-        int steps = Math.Max(1, (int)MathF.Ceiling(walk.Length / spacing));
+        float travel = walk.Length + ((walk.StartTurn + walk.EndTurn) * Walk.TurnRate * _trunkHalfExtents.Length());
+        int steps = Math.Max(1, (int)MathF.Ceiling(travel / spacing));
         for (int i = 0; i < steps; i++)
         {
-            if (!IntervalIsFree(walk, walk.Length * i / steps, walk.Length * (i + 1) / steps, 0))
+            if (!IntervalIsFree(walk, walk.Duration * i / steps, walk.Duration * (i + 1) / steps, 0))
             {
                 return false;
             }
@@ -182,12 +183,13 @@ public sealed class WalkSteering
         return true;
     }
 
-    private bool IntervalIsFree(Walk walk, float d0, float d1, int depth)
+    /// <summary>True when the trunk is clear from <paramref name="t0"/> to <paramref name="t1"/> seconds into the walk (conservative bounding boxes, bisected).</summary>
+    private bool IntervalIsFree(Walk walk, float t0, float t1, int depth)
     {
-        float mid = 0.5f * (d0 + d1);
-        RootPose p0 = walk.PoseAtDistance(d0);
-        RootPose pm = walk.PoseAtDistance(mid);
-        RootPose p1 = walk.PoseAtDistance(d1);
+        float mid = 0.5f * (t0 + t1);
+        RootPose p0 = walk.PoseAt(t0);
+        RootPose pm = walk.PoseAt(mid);
+        RootPose p1 = walk.PoseAt(t1);
 
         // The most any trunk point moves from the middle pose to either end: the centre's travel plus the corners' turn.
         float turn0 = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(p0.Rotation, pm.Rotation))));
@@ -204,6 +206,6 @@ public sealed class WalkSteering
             return false;
         }
 
-        return IntervalIsFree(walk, d0, mid, depth + 1) && IntervalIsFree(walk, mid, d1, depth + 1);
+        return IntervalIsFree(walk, t0, mid, depth + 1) && IntervalIsFree(walk, mid, t1, depth + 1);
     }
 }

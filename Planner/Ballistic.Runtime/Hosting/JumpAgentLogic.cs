@@ -591,7 +591,7 @@ public sealed class JumpAgentLogic
                 int n = Math.Max(1, (int)MathF.Ceiling((walk.Length + shift.Length()) / _step));
                 for (int k = 1; k < n; k++)
                 {
-                    _points.Add(Stances.InWalk(move, walk.Duration * k / n).Position);
+                    _points.Add(Stances.InWalk(move, walk.TimeAtDistance(walk.Length * k / n)).Position);
                 }
             }
             else

@@ -97,8 +97,8 @@ internal static class Stances
     /// <paramref name="move"/> (clamped to the walk): the walk's ground point <see cref="Walk.PointAt"/> at
     /// <see cref="Walk.DistanceAt"/> plus the offset from the path's ends to the stances' contact centres,
     /// interpolated along the path; exactly the first stance's contact centre at 0 and the last one's at the end. The
-    /// velocity is the walking speed along the path's direction there, from the start to the end included (zero before
-    /// and after).
+    /// velocity is the walk's speed then (<see cref="Walk.SpeedAt"/>: zero while it turns in place, ramping up and
+    /// down) along the path's direction there (zero before and after the walk).
     /// </summary>
     /// <exception cref="ArgumentException"><paramref name="move"/> is not a walk.</exception>
     public static (Vector3 Position, Vector3 Velocity) InWalk(in PathMove move, float t)
@@ -122,7 +122,7 @@ internal static class Stances
         float a = MathF.Max(0f, d - h);
         float b = MathF.Min(length, d + h);
         Vector3 along = b > a ? (walk.PointAt(b) - walk.PointAt(a)) / (b - a) : Vector3.Zero;
-        Vector3 velocity = walk.Speed * (along + ((endShift - startShift) / length));
+        Vector3 velocity = walk.SpeedAt(t) * (along + ((endShift - startShift) / length));
         return (position, velocity);
     }
 }

@@ -136,7 +136,7 @@ internal sealed class PathRequestSystem : IDisposable
         }
         else
         {
-            PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair.Excluded, _settings.PlacementCost, out work);
+            PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair, _settings.PlacementCost, out work);
             if (result.Status != PlannerStatus.Exact)
             {
                 string? repaired = request.Repair.SearchFailed(result.Reason);
@@ -246,7 +246,7 @@ internal sealed class PathRequestSystem : IDisposable
         request.ForcedEdge = -1;
         request.ForcedMoves = null;
         request.Repair.Reject(request.Moves, animation);
-        if (request.Rounds >= _settings.RepairRounds)
+        if (request.Rounds - request.Repair.WalkFailures >= _settings.RepairRounds)
         {
             Fail(slot, request, PlannerStatus.AnimationFailed, request.Repair.RoundsExhausted(request.Rounds), tick, time);
             return;

@@ -32,17 +32,20 @@ internal sealed class RoadmapSearch
     /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/>; <paramref name="work"/> is the search's
     /// cost in expansions (plus the placement cost when the target is not a roadmap node).
     /// </summary>
-    public PlanResult Search(RoadmapNode start, Vector3 target, IReadOnlySet<(int From, int To)> rejected, int placementCost, out int work)
+    /// <remarks>The request's repair record gives the moves to avoid and, once its walks failed, jumps only.</remarks>
+    public PlanResult Search(RoadmapNode start, Vector3 target, JumpRepair repair, int placementCost, out int work)
     {
         PlanResult result;
+        QuerySettings settings = repair.Adjust(_settings);
+        IReadOnlySet<(int From, int To)> rejected = repair.Excluded;
         if (_kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal)
         {
-            result = _query.Plan(start, _kind.Roadmap.Nodes[goal], _settings, rejected);
+            result = _query.Plan(start, _kind.Roadmap.Nodes[goal], settings, rejected);
             work = result.Expansions;
         }
         else
         {
-            result = _query.Plan(start, target, _settings, rejected);
+            result = _query.Plan(start, target, settings, rejected);
             work = result.Expansions + placementCost;
         }
 

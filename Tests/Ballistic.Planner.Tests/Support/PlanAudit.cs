@@ -146,8 +146,10 @@ internal static class PlanAudit
     /// A walk as its promises say: ground path points at most 0.25 m apart, each on the ground (within 2 cm, found by
     /// a ray of our own), from one stance's contacts to the other's; no rise or drop between neighbouring points
     /// beyond the step height plus the steepest slope over their distance; no ground steeper than the slope at two
-    /// neighbouring points; the trunk box at walking height (<see cref="Walk.PoseAtDistance"/>) clear of the level
-    /// every 2 cm; the trunk exactly on the stances at both ends; the duration its length at the walking speed.
+    /// neighbouring points; the trunk box as it moves (<see cref="Walk.PoseAt"/>, turning in place included) clear
+    /// of the level every 2 cm and 2°; the trunk exactly on the stances at both ends; the trunk never faster than
+    /// the walking speed (so the duration at least the length at that speed), never turning faster than twice
+    /// <see cref="Walk.TurnRate"/>.
     /// </summary>
     private static void CheckWalk(PlanningScene scene, Walk walk, string context, AuditReport report)
     {
@@ -160,9 +162,36 @@ internal static class PlanAudit
             return;
         }
 
-        if (MathF.Abs(walk.Speed - limits.Speed) > 1e-4f || MathF.Abs(walk.Duration - (walk.Length / limits.Speed)) > 1e-3f)
+        if (MathF.Abs(walk.Speed - limits.Speed) > 1e-4f || walk.Duration < (walk.Length / limits.Speed) - 1e-3f)
         {
-            Fail($"walks at {walk.Speed:0.###} m/s for {walk.Duration:0.###} s, not its length at {limits.Speed:0.###} m/s");
+            Fail($"walks at {walk.Speed:0.###} m/s for {walk.Duration:0.###} s, less than its length at {limits.Speed:0.###} m/s");
+        }
+
+        // The motion, sampled every 5 ms: the point on the ground path never faster than the speed, the trunk never
+        // turning faster than twice the average turn rate (a smoothstep peaks at 1.5 times it).
+        const float dt = 0.005f;
+        RootPose before = walk.PoseAt(0f);
+        Vector3 groundBefore = walk.PointAt(walk.DistanceAt(0f));
+        for (float t = dt; t <= walk.Duration + dt; t += dt)
+        {
+            RootPose now = walk.PoseAt(MathF.Min(t, walk.Duration));
+            Vector3 ground = walk.PointAt(walk.DistanceAt(MathF.Min(t, walk.Duration)));
+            float step = MathF.Min(t, walk.Duration) - (t - dt);
+            float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(before.Rotation, now.Rotation)), 0f, 1f));
+            if (step > 1e-6f && Vector3.Distance(groundBefore, ground) > (limits.Speed * step) + 1e-4f)
+            {
+                Fail($"the trunk moves faster than {limits.Speed:0.###} m/s at {t:0.000} s into the walk");
+                break;
+            }
+
+            if (step > 1e-6f && turn > (2f * Walk.TurnRate * step) + 1e-3f)
+            {
+                Fail($"the trunk turns at {turn / step:0.0} rad/s at {t:0.000} s into the walk");
+                break;
+            }
+
+            before = now;
+            groundBefore = ground;
         }
 
         if (Vector3.Distance(walk.PoseAt(0f).Position, walk.From.Pose.Position) > 1e-4f || Vector3.Distance(walk.PoseAt(walk.Duration).Position, walk.To.Pose.Position) > 1e-4f)
@@ -219,7 +248,22 @@ internal static class PlanAudit
             if (scene.Bvh.Overlaps(new OrientedBox(pose.Position, c.TrunkHalfExtents, pose.Rotation)))
             {
                 Fail($"trunk in the level {d:0.00} m along the walk");
-                break;
+                return;
+            }
+        }
+
+        // Turning in place at both ends, every 2°.
+        foreach ((float t0, float span) in new[] { (0f, walk.StartTurn), (walk.Duration - walk.EndTurn, walk.EndTurn) })
+        {
+            int n = Math.Max(1, (int)MathF.Ceiling(span * 2f * Walk.TurnRate / (2f * MathF.PI / 180f)));
+            for (int k = 0; k <= n; k++)
+            {
+                RootPose pose = walk.PoseAt(t0 + (span * k / n));
+                if (scene.Bvh.Overlaps(new OrientedBox(pose.Position, c.TrunkHalfExtents, pose.Rotation)))
+                {
+                    Fail($"trunk in the level turning in place {t0 + (span * k / n):0.00} s into the walk");
+                    return;
+                }
             }
         }
     }

@@ -29,12 +29,12 @@ internal static class Sweep
         return new Setup(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
     }
 
-    /// <summary>Plans, animates and audits one request.</summary>
-    public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600)
+    /// <summary>Plans (walking and jumping unless <paramref name="locomotion"/> says otherwise), animates and audits one request.</summary>
+    public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
     {
         string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
         PlanningScene scene = setup.Scene;
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes });
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Locomotion = locomotion });
         return PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
     }
 

@@ -72,7 +72,8 @@ public sealed class WalkSteeringTests
         {
             Assert.That(walk.Path.Zip(walk.Path.Skip(1)).Select(p => Vector3.Distance(p.First, p.Second)), Has.All.LessThanOrEqualTo(WalkSteering.PathSpacing + 1e-4f));
             Assert.That(walk.Path.Select(p => p.Y), Has.All.EqualTo(0f).Within(1e-4f), "the platform's top is at y = 0");
-            Assert.That(walk.Duration, Is.EqualTo(walk.Length / Skeleton.Walking.Speed).Within(1e-5f));
+            Assert.That(walk.WalkTime, Is.EqualTo((walk.Length / Skeleton.Walking.Speed) + global::Ballistic.Planner.Roadmaps.Walk.RampTime).Within(1e-5f), "at full speed but for speeding up and slowing down");
+            Assert.That(walk.Duration, Is.EqualTo(walk.StartTurn + walk.WalkTime + walk.EndTurn).Within(1e-5f));
             Assert.That(walk.Length, Is.GreaterThan(3.4f));
             Assert.That(walk.PoseAt(0f), Is.EqualTo(a.Pose));
             Assert.That(walk.PoseAt(walk.Duration), Is.EqualTo(b.Pose));
@@ -87,8 +88,49 @@ public sealed class WalkSteeringTests
             Assert.That(Vector3.Dot(middle.Forward, heading), Is.GreaterThan(0.99f));
             Assert.That(middle.Up.Y, Is.GreaterThan(0.99f));
             Assert.That(middle.Position.Y, Is.InRange(MathF.Min(a.Pose.Position.Y, b.Pose.Position.Y) - 1e-3f, MathF.Max(a.Pose.Position.Y, b.Pose.Position.Y) + 1e-3f));
-            Assert.That(walk.DistanceAt(1f), Is.EqualTo(Skeleton.Walking.Speed).Within(1e-5f));
+            float cruising = walk.StartTurn + global::Ballistic.Planner.Roadmaps.Walk.RampTime;
+            Assert.That(walk.DistanceAt(cruising + 1f) - walk.DistanceAt(cruising), Is.EqualTo(Skeleton.Walking.Speed).Within(1e-4f), "one second at full speed");
         });
+    }
+
+    [Test]
+    public void TheTrunkTurnsInPlaceThenSpeedsUpFromRestAndSlowsDownToRest()
+    {
+        var scene = PlanningScene.Create(GapCourse.Build(), Skeleton);
+        RoadmapNode a = Stance(scene, new Vector3(-7f, 0f, -1f), 0);
+        RoadmapNode b = Stance(scene, new Vector3(-3.6f, 0f, 1.2f), 1);
+        Walk walk = scene.Walking.Steer(a, b).Walk!;
+        Vector3 h = Vector3.Normalize(new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z));
+        float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a.Pose.Rotation, Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(h.X, h.Z)))), 0f, 1f));
+        float speed = Skeleton.Walking.Speed;
+        Assert.Multiple(() =>
+        {
+            Assert.That(walk.StartTurn, Is.EqualTo(MathF.Max(turn / global::Ballistic.Planner.Roadmaps.Walk.TurnRate, global::Ballistic.Planner.Roadmaps.Walk.MinTurnTime)).Within(0.02f), "the start turn takes its angle at the turn rate");
+            Assert.That(walk.PoseAt(0.5f * walk.StartTurn).Position, Is.EqualTo(a.Pose.Position), "turning in place");
+            Assert.That(Vector3.Dot(walk.PoseAt(walk.StartTurn).Forward, h), Is.GreaterThan(0.99f), "facing the way it walks when it sets off");
+            Assert.That(walk.SpeedAt(0.5f * walk.StartTurn), Is.Zero);
+            Assert.That(walk.SpeedAt(walk.StartTurn + (0.5f * global::Ballistic.Planner.Roadmaps.Walk.RampTime)), Is.EqualTo(0.5f * speed).Within(1e-4f), "half speed halfway up the ramp");
+            Assert.That(walk.SpeedAt(walk.StartTurn + (0.5f * walk.WalkTime)), Is.EqualTo(speed).Within(1e-5f));
+            Assert.That(walk.SpeedAt(walk.StartTurn + walk.WalkTime - (0.25f * global::Ballistic.Planner.Roadmaps.Walk.RampTime)), Is.EqualTo(0.25f * speed).Within(1e-4f), "slowing down");
+            Assert.That(walk.DistanceAt(walk.StartTurn + walk.WalkTime), Is.EqualTo(walk.Length));
+        });
+
+        // The distance is the integral of the speed, which never exceeds the walking speed.
+        float travelled = 0f;
+        const float dt = 1e-3f;
+        for (float t = 0f; t < walk.Duration; t += dt)
+        {
+            Assert.That(walk.SpeedAt(t), Is.LessThanOrEqualTo(speed + 1e-5f));
+            travelled += 0.5f * (walk.SpeedAt(t) + walk.SpeedAt(t + dt)) * dt;
+        }
+
+        Assert.That(travelled, Is.EqualTo(walk.Length).Within(0.01f));
+
+        // A walk shorter than the ramps never reaches full speed, and still ends at rest on the stance.
+        RoadmapNode c = Stance(scene, new Vector3(-6.7f, 0f, -1f), 1);
+        Walk shortWalk = scene.Walking.Steer(a, c).Walk!;
+        Assert.That(Enumerable.Range(0, 101).Select(k => shortWalk.SpeedAt(shortWalk.Duration * k / 100f)), Has.All.LessThan(speed));
+        Assert.That(shortWalk.PoseAt(shortWalk.Duration), Is.EqualTo(c.Pose));
     }
 
     [Test]
