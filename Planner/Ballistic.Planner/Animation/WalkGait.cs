@@ -76,6 +76,9 @@ internal sealed class WalkGait
     /// <summary>Shifts of a foothold along the walk tried at each sideways share, as shares of the step.</summary>
     private static readonly float[] Along = [0f, -0.25f, 0.25f, -0.5f];
 
+    /// <summary>Fine steps between the checks that a candidate foothold can be held, clear of the level, over the time it is held.</summary>
+    private const int HoldCheck = 2 * Substeps;
+
     /// <summary>Probes of how far a held foot reaches: this many increments up to the leg length.</summary>
     private const int ProbeSteps = 40;
 
@@ -765,6 +768,17 @@ internal sealed class WalkGait
             float slope = MathF.Tan(walking.MaxSlopeDegrees * MathF.PI / 180f);
             (Vector3 Point, Vector3 Normal)? grounded = null;
             int mid = Step(time);
+
+            // The foothold is tried where the trunk is midway, then where the foot lands, then every HoldCheck fine
+            // steps until it lifts: the trunk moves and turns over the foot, whose toes must stay out of uneven ground.
+            var checks = new List<int> { mid, from };
+            for (int i = from + HoldCheck; i < to; i += HoldCheck)
+            {
+                checks.Add(i);
+            }
+
+            checks.Add(to);
+            int[] steps = [.. checks];
             foreach ((float share, float shift) in Inward.SelectMany(i => Along.Select(a => (i, a))))
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
@@ -780,7 +794,7 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
-                if (CanHold(l, hit.Point, hit.Normal, [mid, from, to]) is float[] seed)
+                if (CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
                 {
                     return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
                 }
