@@ -28,4 +28,26 @@ public sealed class WalkGaitTests
         Assert.That(least, Is.GreaterThanOrEqualTo(leastHolding));
         Assert.That(phases, Has.All.GreaterThanOrEqualTo(leastPhases));
     }
+
+    [Test]
+    public void AVeryShortWalkStepsWithoutSliding()
+    {
+        // Two stances 6 cm apart: the walk lasts 0.28 s; no foot may move to a new contact more than 2 cm away within a
+        // tenth of a second (the audit's slide), and the gait says so when it would have to.
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        RoadmapNode from = world.Stance(new Vector3(-6f, 0f, 0f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(new Vector3(-5.94f, 0f, 0f), 1, Vector3.UnitX);
+        Walk walk = world.Walk(from, to);
+        JumpAnimation animation = world.Animator.Animate([walk]);
+        bool slide = animation.ContactPhases.GroupBy(p => p.Limb).Any(g =>
+        {
+            ContactPhase[] ordered = [.. g.OrderBy(p => p.From)];
+            return ordered.Zip(ordered.Skip(1)).Any(pair => pair.Second.From - pair.First.To < JumpAnimator.MinAirTime && Vector3.Distance(pair.First.Position, pair.Second.Position) > 0.02f);
+        });
+        TestContext.Out.WriteLine($"{walk.Length:0.000} m in {walk.Duration:0.000} s; {string.Join("; ", animation.Problems.Select(p => p.Reason))}");
+        Assert.That(walk.Duration, Is.LessThan(0.4f));
+        Assert.That(slide, Is.False, "a foot slides to a new contact");
+        Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
+        Assert.That(animation.ContactPhases.Select(p => p.Limb).Distinct().Count(), Is.EqualTo(2), "both feet stand");
+    }
 }
