@@ -18,7 +18,7 @@ namespace Ballistic.Authoring.Playtest;
 /// <c>settings.jumpEffort</c> (s); <c>summary.walksTaken</c> and <c>summary.walkedMetres</c>; and per agent a
 /// <c>walks</c> array, each walk an object with <c>startTime</c> (s), <c>from</c> and <c>to</c> (<c>node</c>: the stance's id,
 /// a roadmap node's, or −1 or an id past the roadmap's last for a stance placed off it; <c>position</c>: trunk centre), <c>via</c> (node ids passed through), <c>speed</c>
-/// (m/s), <c>length</c> (m), <c>duration</c> (s) and <c>path</c> (the ground points, [x, y, z] each). Everything of
+/// (m/s), <c>length</c> (m), <c>duration</c> (s) and <c>path</c> (the walk's ground points, [x, y, z] each). Everything of
 /// version 1 is unchanged.
 /// </remarks>
 public static class PlaytestReportWriter
@@ -165,27 +165,7 @@ public static class PlaytestReportWriter
         w.WriteNumber("startTime", Math.Round(executed.StartTime, 6));
         WriteStance(w, "from", walk.From);
         WriteStance(w, "to", walk.To);
-        w.WriteStartArray("via");
-        foreach (RoadmapNode node in walk.Via)
-        {
-            w.WriteNumberValue(node.Id);
-        }
-
-        w.WriteEndArray();
-        w.WriteNumber("speed", walk.Speed);
-        w.WriteNumber("length", walk.Length);
-        w.WriteNumber("duration", walk.Duration);
-        w.WriteStartArray("path");
-        foreach (Vector3 p in walk.Path)
-        {
-            w.WriteStartArray();
-            w.WriteNumberValue(p.X);
-            w.WriteNumberValue(p.Y);
-            w.WriteNumberValue(p.Z);
-            w.WriteEndArray();
-        }
-
-        w.WriteEndArray();
+        PlanReportWriter.WriteWalkFields(w, walk, walk.Path);
         w.WriteEndObject();
     }
 

@@ -113,8 +113,19 @@ public static class PlanReportWriter
         WritePose(w, walk.From, character);
         w.WritePropertyName("to");
         WritePose(w, walk.To, character);
+        WriteWalkFields(w, walk, ReportPath(walk.Path));
+        w.WriteEndObject();
+    }
+
+    /// <summary>
+    /// Writes the fields every report gives a walk: its ground <c>path</c> (<paramref name="path"/>, world metres: the
+    /// plan report's <see cref="ReportPath"/>, the playtest's the walk's own points), <c>duration</c> (s), <c>length</c>
+    /// (m, along the path), <c>speed</c> (m/s) and <c>via</c> (ids of the stances passed through).
+    /// </summary>
+    internal static void WriteWalkFields(Utf8JsonWriter w, Walk walk, IReadOnlyList<Vector3> path)
+    {
         w.WriteStartArray("path");
-        foreach (Vector3 p in ReportPath(walk.Path))
+        foreach (Vector3 p in path)
         {
             w.WriteStartArray();
             w.WriteNumberValue(p.X);
@@ -134,7 +145,6 @@ public static class PlanReportWriter
         }
 
         w.WriteEndArray();
-        w.WriteEndObject();
     }
 
     /// <summary>

@@ -515,7 +515,7 @@ internal sealed class WalkGait
             for (int i = 1; i <= samples; i++)
             {
                 RootPose pose = _walk.PoseAt(duration * i / samples);
-                float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(previous.Rotation, pose.Rotation)), 0f, 1f));
+                float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
                 cost[i] = cost[i - 1] + MathF.Min((moved / _step) + (turn / MaxTurn), dt / MinHalfCycle);
                 previous = pose;

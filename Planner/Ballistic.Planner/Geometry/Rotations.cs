@@ -23,6 +23,9 @@ public static class Rotations
         return Quaternion.CreateFromAxisAngle(axis, MathF.Acos(dot));
     }
 
+    /// <summary>The angle (radians, 0 to π) of the rotation taking <paramref name="a"/> to <paramref name="b"/> (unit quaternions; q and −q alike).</summary>
+    internal static float AngleBetween(Quaternion a, Quaternion b) => 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a, b)), 0f, 1f));
+
     /// <summary>
     /// Splits a transform into a uniform scale and a rotation (row-vector matrix); false when it is sheared,
     /// scaled non-uniformly, mirrored or degenerate.

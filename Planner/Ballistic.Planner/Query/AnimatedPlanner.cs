@@ -135,8 +135,7 @@ public sealed class AnimatedPlanner
 
             repair.Reject(result.Moves, animation);
 
-            // Rounds whose walks failed (at most JumpRepair.WalkRounds) do not count: the jumps-only fallback has them all.
-            if (round - repair.WalkFailures >= rounds)
+            if (repair.IsExhausted(round, rounds))
             {
                 PlanResult failed = result with
                 {

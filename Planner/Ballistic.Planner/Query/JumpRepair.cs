@@ -33,6 +33,13 @@ public sealed class JumpRepair
     public bool WalksAllowed => WalkFailures < WalkRounds;
 
     /// <summary>
+    /// True when a request that has searched <paramref name="searches"/> times has no search left of
+    /// <paramref name="limit"/>: the rounds whose walks failed (at most <see cref="WalkRounds"/>) do not count, so the
+    /// jumps-only fallback has every round.
+    /// </summary>
+    public bool IsExhausted(int searches, int limit) => searches - WalkFailures >= limit;
+
+    /// <summary>
     /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
     /// <see cref="WalksAllowed"/> is false.
     /// </summary>

@@ -78,8 +78,8 @@ public sealed record Walk : Move
         EndOffset = to.Pose.Position - _path[^1];
         _startHeading = Upright(HeadingAt(0f));
         _endHeading = Upright(HeadingAt(Length));
-        StartTurn = TurnTime(Angle(from.Pose.Rotation, _startHeading));
-        EndTurn = TurnTime(Angle(_endHeading, to.Pose.Rotation));
+        StartTurn = TurnTime(Rotations.AngleBetween(from.Pose.Rotation, _startHeading));
+        EndTurn = TurnTime(Rotations.AngleBetween(_endHeading, to.Pose.Rotation));
 
         // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway.
         _acceleration = speed / RampTime;
@@ -292,9 +292,6 @@ public sealed record Walk : Move
 
     /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn).</summary>
     private static float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
-
-    /// <summary>Angle (radians) between two orientations.</summary>
-    private static float Angle(Quaternion a, Quaternion b) => 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a, b)), 0f, 1f));
 
     private static float Smooth(float x)
     {

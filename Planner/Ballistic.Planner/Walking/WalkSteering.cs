@@ -192,8 +192,8 @@ public sealed class WalkSteering
         RootPose p1 = walk.PoseAt(t1);
 
         // The most any trunk point moves from the middle pose to either end: the centre's travel plus the corners' turn.
-        float turn0 = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(p0.Rotation, pm.Rotation))));
-        float turn1 = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(pm.Rotation, p1.Rotation))));
+        float turn0 = Rotations.AngleBetween(p0.Rotation, pm.Rotation);
+        float turn1 = Rotations.AngleBetween(pm.Rotation, p1.Rotation);
         float corner = _trunkHalfExtents.Length();
         float growth = MathF.Max(Vector3.Distance(p0.Position, pm.Position) + (turn0 * corner), Vector3.Distance(pm.Position, p1.Position) + (turn1 * corner));
         if (!_world.Overlaps(new OrientedBox(pm.Position, _trunkHalfExtents + new Vector3(growth), pm.Rotation)))

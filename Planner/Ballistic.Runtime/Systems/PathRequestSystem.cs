@@ -246,7 +246,7 @@ internal sealed class PathRequestSystem : IDisposable
         request.ForcedEdge = -1;
         request.ForcedMoves = null;
         request.Repair.Reject(request.Moves, animation);
-        if (request.Rounds - request.Repair.WalkFailures >= _settings.RepairRounds)
+        if (request.Repair.IsExhausted(request.Rounds, _settings.RepairRounds))
         {
             Fail(slot, request, PlannerStatus.AnimationFailed, request.Repair.RoundsExhausted(request.Rounds), tick, time);
             return;
