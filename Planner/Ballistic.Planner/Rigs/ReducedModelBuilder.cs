@@ -137,8 +137,8 @@ public static class ReducedModelBuilder
     /// <summary>
     /// Walking derived from the rig (<see cref="WalkingLimits.FromLeg"/>): a character with at least two feet that
     /// stands on its feet alone (no more required contacts than feet) walks, its leg length being the root joint's
-    /// standing height above its contacts (as in <see cref="StanceLift"/>); any other (a frog that needs all four
-    /// limbs down) only jumps.
+    /// standing height above its contacts (as in <see cref="StanceLift"/>), on slopes up to what its feet can stand on
+    /// (<see cref="WalkableSlope"/>); any other (a frog that needs all four limbs down) only jumps.
     /// </summary>
     public static WalkingLimits Walking(CharacterModel model, int requiredContacts)
     {
@@ -150,8 +150,91 @@ public static class ReducedModelBuilder
         }
 
         (float rootHeight, _) = Standing(model, requiredContacts);
-        return WalkingLimits.FromLeg(rootHeight);
+        WalkingLimits walking = WalkingLimits.FromLeg(rootHeight);
+        return walking.CanWalk ? walking with { MaxSlopeDegrees = WalkableSlope(model, rootHeight) } : walking;
     }
+
+    /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>
+    public const float SlopeStep = 2.5f;
+
+    /// <summary>
+    /// The steepest slope (degrees, a multiple of <see cref="SlopeStep"/>, at most
+    /// <see cref="WalkingLimits.DefaultMaxSlopeDegrees"/>) the rig's feet can walk on: on a plane of that slope falling
+    /// forward, backward, left or right, every foot of the rig holds the point under it in the contact pose by IK with
+    /// its sole flat on the plane (within 5°, or 15° as the gait allows), no bone below its effector (toes) under the
+    /// plane, while the trunk, upright, stands over it and moves a tenth of <paramref name="legLength"/> either way
+    /// along the plane. Ankles that cannot tilt the sole as far as the ground does (a rig's joint limits) give a lower
+    /// slope: the gait could not hold the feet there, so the planner does not walk there. 0 when the feet cannot even
+    /// stand level.
+    /// </summary>
+    /// <param name="model">The character.</param>
+    /// <param name="legLength">The root joint's standing height above its contacts, metres.</param>
+    public static float WalkableSlope(CharacterModel model, float legLength)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        Rig rig = model.Rig;
+        var flat = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, NormalTolerance = 5f * MathF.PI / 180f });
+        var loose = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40 });
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        Vector3[] stands = [.. feet.Select(l => l.EffectorPosition(positions, rotations))];
+        int[][] below = [.. feet.Select(l => Enumerable.Range(0, rig.Joints.Count).Where(j => j != l.EffectorJoint && rig.IsAncestor(l.EffectorJoint, j)).ToArray())];
+        float shift = 0.1f * legLength;
+
+        bool Holds(float degrees)
+        {
+            float angle = degrees * MathF.PI / 180f;
+            foreach (Vector3 down in new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX })
+            {
+                // The plane falls toward `down`; the trunk moves along it, forward and back, keeping its height above it.
+                Vector3 normal = (down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle));
+                for (int f = 0; f < feet.Length; f++)
+                {
+                    float[] q = (float[])model.ContactPose.Clone();
+                    foreach (float x in new[] { 0f, shift, -shift, 0f })
+                    {
+                        var root = new RootPose(new Vector3(0f, -x * MathF.Tan(angle) * down.Z, x), Quaternion.Identity);
+                        float[] trial = (float[])q.Clone();
+                        if (!flat.Solve(root, trial, feet[f], stands[f], -normal).Success && !loose.Solve(root, trial, feet[f], stands[f], -normal).Success)
+                        {
+                            return false;
+                        }
+
+                        rig.Solve(root, trial, positions, rotations);
+                        foreach (int j in below[f])
+                        {
+                            if (Vector3.Dot(positions[j] - stands[f], normal) < -BodyClearance)
+                            {
+                                return false;
+                            }
+                        }
+
+                        q = trial;
+                    }
+                }
+            }
+
+            return true;
+        }
+
+        float slope = 0f;
+        for (float degrees = 0f; degrees <= WalkingLimits.DefaultMaxSlopeDegrees + 1e-3f; degrees += SlopeStep)
+        {
+            if (!Holds(degrees))
+            {
+                break;
+            }
+
+            slope = degrees;
+        }
+
+        return slope;
+    }
+
+    /// <summary>How far (metres) a toe may dip under the plane in <see cref="WalkableSlope"/>: the level's own collision tolerance for a held foot.</summary>
+    private const float BodyClearance = 0.005f;
 
     /// <summary>Lowest share of the rest-pose root height the root keeps above its contacts in stance.</summary>
     public const float StanceLowest = 0.7f;

@@ -1,0 +1,113 @@
+using System.Numerics;
+using Ballistic.Authoring.Rigs;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Tests.Rigs;
+
+/// <summary>The steepest ground a rig walks on comes from its feet (<see cref="ReducedModelBuilder.WalkableSlope"/>), not a fixed angle.</summary>
+public sealed class WalkableSlopeTests
+{
+    private static readonly Lazy<CharacterModel> Humanoid = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
+
+    [Test]
+    public void TheHumanoidWalksOnSlopesItsAnklesCanFollow()
+    {
+        // Its ankles roll ±20° and bend −45°…40°: with the trunk upright over a foot, a sole on a side slope of 25°
+        // cannot lie flat, one of 20° can.
+        CharacterModel model = Humanoid.Value;
+        float leg = LegLength(model);
+        float slope = ReducedModelBuilder.WalkableSlope(model, leg);
+        Assert.That(slope, Is.InRange(15f, 25f));
+        Assert.That(slope % ReducedModelBuilder.SlopeStep, Is.EqualTo(0f).Within(1e-4f));
+        Assert.That(ReducedModelBuilder.Walking(model, 2).MaxSlopeDegrees, Is.EqualTo(slope), "the derived walking limits use it");
+    }
+
+    [Test]
+    public void StifferAnklesWalkOnGentlerSlopesAndLooserOnesOnSteeper()
+    {
+        CharacterModel model = Humanoid.Value;
+        float leg = LegLength(model);
+        float normal = ReducedModelBuilder.WalkableSlope(model, leg);
+        float stiff = ReducedModelBuilder.WalkableSlope(WithAnkleRoll(model, 5f), leg);
+        float loose = ReducedModelBuilder.WalkableSlope(WithAnkleRoll(model, 40f), leg);
+        Assert.Multiple(() =>
+        {
+            Assert.That(stiff, Is.LessThan(normal), "ankles that barely roll hold the foot on gentler side slopes only");
+            Assert.That(loose, Is.GreaterThan(normal), "ankles that roll further hold it on steeper ones");
+            Assert.That(loose, Is.LessThanOrEqualTo(WalkingLimits.DefaultMaxSlopeDegrees), "never above the default limit");
+        });
+    }
+
+    [Test]
+    public void OnTheSlopeItGetsEveryFootHoldsFlatWithItsToesAboveTheGround()
+    {
+        // An independent check of the answer: a fresh IK with restarts, the foot on planes of the derived slope falling
+        // each way, the trunk upright above it; and on planes 10° steeper, some foot cannot.
+        CharacterModel model = Humanoid.Value;
+        float slope = ReducedModelBuilder.WalkableSlope(model, LegLength(model));
+        Assert.Multiple(() =>
+        {
+            Assert.That(AllFeetHold(model, slope), Is.True, $"{slope}°");
+            Assert.That(AllFeetHold(model, slope + 10f), Is.False, $"{slope + 10f}°");
+        });
+    }
+
+    private static bool AllFeetHold(CharacterModel model, float degrees)
+    {
+        Rig rig = model.Rig;
+        var ik = new LimbIk(rig, new IkSettings { Restarts = 4, MaxIterations = 80 });
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var root = new RootPose(Vector3.Zero, Quaternion.Identity);
+        rig.Solve(root, model.ContactPose, positions, rotations);
+        float angle = degrees * MathF.PI / 180f;
+        foreach (RigLimb foot in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            Vector3 stand = foot.EffectorPosition(positions, rotations);
+            foreach (Vector3 down in new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX })
+            {
+                Vector3 normal = (down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle));
+                float[] q = (float[])model.ContactPose.Clone();
+                if (!ik.Solve(root, q, foot, stand, -normal).Success)
+                {
+                    return false;
+                }
+
+                var solved = new Vector3[rig.Joints.Count];
+                rig.Solve(root, q, solved, rotations);
+                for (int j = 0; j < rig.Joints.Count; j++)
+                {
+                    if (j != foot.EffectorJoint && rig.IsAncestor(foot.EffectorJoint, j) && Vector3.Dot(solved[j] - stand, normal) < -0.005f)
+                    {
+                        return false;
+                    }
+                }
+            }
+        }
+
+        return true;
+    }
+
+    private static float LegLength(CharacterModel model)
+    {
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
+        return positions[0].Y - model.Limbs.Where(l => l.Kind == LimbKind.Foot).Min(l => l.EffectorPosition(positions, rotations).Y);
+    }
+
+    /// <summary>The model with its ankles' roll (the axis along the foot, ±<paramref name="degrees"/>) changed.</summary>
+    private static CharacterModel WithAnkleRoll(CharacterModel model, float degrees)
+    {
+        Rig rig = model.Rig;
+        float limit = degrees * MathF.PI / 180f;
+        Joint[] joints = [.. rig.Joints.Select(j => j.Name.EndsWith("_ankle", StringComparison.Ordinal)
+            ? j with { Axes = [.. j.Axes.Select(a => MathF.Abs(a.Axis.Z) > 0.9f ? a with { Min = -limit, Max = limit } : a)] }
+            : j)];
+        var changed = new Rig(joints, rig.RootOffset);
+        RigLimb[] limbs = [.. model.Limbs.Select(l => new RigLimb(changed, l.Name, l.Kind, rig.Joints[l.RootJoint].Name, rig.Joints[l.EffectorJoint].Name, l.EffectorOffset, l.ContactNormal, l.Filter))];
+        return new CharacterModel(model.Name, changed, limbs, model.TrunkJoints, model.BoneRadii, model.ContactPose, model.FlexionPose, model.ExtendingPose);
+    }
+}
