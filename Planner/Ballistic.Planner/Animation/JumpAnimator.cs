@@ -40,6 +40,7 @@ public sealed class JumpAnimator : IJumpAnimator
     private readonly BodyCollision _collision;
     private readonly int _requiredContacts;
     private readonly WalkGait _gait;
+    private readonly HoldRefiner _refiner;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -51,6 +52,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _collision = _contacts.Collision;
         _requiredContacts = scene.Character.RequiredContacts;
         _gait = new WalkGait(scene, model, _contacts);
+        _refiner = new HoldRefiner(model, _collision);
         Model = model;
     }
 
@@ -250,8 +252,24 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
+
+        // Held contacts must hold between frames too, as a player interpolates them.
+        var animation = new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+        (List<AnimationFrame> refined, List<(int Limb, float Time)> slips) = _refiner.Refine(animation);
+        if (refined.Count == frames.Count && slips.Count == 0)
+        {
+            problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
+            return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+        }
+
+        foreach ((int limb, float time) in slips.GroupBy(s => s.Limb).Select(g => g.First()))
+        {
+            int move = Enumerable.Range(0, moves.Count).LastOrDefault(m => animation.MoveStart(m) <= time);
+            problems.Add(new JumpProblem(move, $"{Model.Limbs[limb].Name} cannot hold its contact between frames ({time:0.000} s into the clip)"));
+        }
+
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-        return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+        return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count);
     }
 
     /// <summary>

@@ -1,0 +1,152 @@
+using System.Numerics;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// Keeps held contacts held between frames. A clip is played by interpolating its angles between frames while the
+/// root follows its move exactly; where the body moves fast over a held limb (a push-off at several metres per
+/// second) the interpolated leg sags between two frames that each hold the foot, and a toe can dip into the ground.
+/// Between every two frames across which a limb holds a contact, the midpoint is checked as a player would show it
+/// (the held effector no farther from its point than at the two frames plus <see cref="Tolerance"/>, no bone of the
+/// limb in the level unless there is at a frame already); where it is not, a frame is added there with the limb held
+/// by IK, and both halves are checked again, down to <see cref="MaxDepth"/> halvings. What still fails is
+/// reported, never played as clean. Thread-safe.
+/// </summary>
+internal sealed class HoldRefiner
+{
+    /// <summary>Farthest (metres) a held effector may be from its contact point between frames.</summary>
+    public const float Tolerance = 0.002f;
+
+    /// <summary>Most times a frame interval is halved.</summary>
+    public const int MaxDepth = 4;
+
+    private readonly CharacterModel _model;
+    private readonly BodyCollision _collision;
+    private readonly LimbIk _ik;
+
+    /// <summary>Creates a refiner for <paramref name="model"/>'s clips, checking bones with <paramref name="collision"/>.</summary>
+    public HoldRefiner(CharacterModel model, BodyCollision collision)
+    {
+        _model = model;
+        _collision = collision;
+        _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = 0.5f * Tolerance });
+    }
+
+    /// <summary>Joint positions and rotations solved for one clip (each call has its own: the refiner is thread-safe).</summary>
+    private sealed record Pose(Vector3[] Positions, Quaternion[] Rotations);
+
+    /// <summary>
+    /// The frames of <paramref name="clip"/> with frames added where a held contact would not hold between two of
+    /// them, and the limbs (with the clip time, seconds) whose holds still fail between frames at the finest halving.
+    /// </summary>
+    public (List<AnimationFrame> Frames, List<(int Limb, float Time)> Failures) Refine(JumpAnimation clip)
+    {
+        IReadOnlyList<AnimationFrame> frames = clip.Frames;
+        var refined = new List<AnimationFrame>(frames.Count);
+        var failures = new List<(int Limb, float Time)>();
+        if (frames.Count == 0)
+        {
+            return (refined, failures);
+        }
+
+        var pose = new Pose(new Vector3[_model.Rig.Joints.Count], new Quaternion[_model.Rig.Joints.Count]);
+        refined.Add(frames[0]);
+        for (int k = 1; k < frames.Count; k++)
+        {
+            Between(clip, pose, frames[k - 1], frames[k], 0, refined, failures);
+            refined.Add(frames[k]);
+        }
+
+        return (refined, failures);
+    }
+
+    /// <summary>Adds to <paramref name="output"/> the frames needed strictly between <paramref name="a"/> and <paramref name="b"/>.</summary>
+    private void Between(JumpAnimation clip, Pose pose, AnimationFrame a, AnimationFrame b, int depth, List<AnimationFrame> output, List<(int Limb, float Time)> failures)
+    {
+        Vector3[] positions = pose.Positions;
+        Quaternion[] rotations = pose.Rotations;
+        float span = b.Time - a.Time;
+        if (!(span > 1e-5f))
+        {
+            return;
+        }
+
+        float time = a.Time + (0.5f * span);
+        RootPose root = clip.RootAt(time);
+        float[] angles = new float[a.Angles.Length];
+        for (int d = 0; d < angles.Length; d++)
+        {
+            angles[d] = float.Lerp(a.Angles[d], b.Angles[d], 0.5f);
+        }
+
+        bool changed = false;
+        Rig rig = _model.Rig;
+        foreach (ContactPhase phase in clip.ContactPhases)
+        {
+            if (phase.From > a.Time + 1e-5f || phase.To < b.Time - 1e-5f)
+            {
+                continue;
+            }
+
+            // How the limb holds at the two frames: the midpoint must do as well.
+            RigLimb limb = _model.Limbs[phase.Limb];
+            rig.Solve(a.Root, a.Angles, positions, rotations);
+            Vector3 atA = limb.EffectorPosition(positions, rotations);
+            Vector3 normal = limb.EffectorNormal(rotations);
+            bool clear = !_collision.LimbCollides(limb, positions, rotations, phase.Position);
+            rig.Solve(b.Root, b.Angles, positions, rotations);
+            Vector3 atB = limb.EffectorPosition(positions, rotations);
+            clear &= !_collision.LimbCollides(limb, positions, rotations, phase.Position);
+            float allowed = MathF.Max(Vector3.Distance(atA, phase.Position), Vector3.Distance(atB, phase.Position)) + Tolerance;
+            rig.Solve(root, angles, positions, rotations);
+            if (Holds(limb, pose, phase.Position, allowed, clear))
+            {
+                continue;
+            }
+
+            // Hold it there by IK (where the effector is at the two frames, its sole turned as at the first).
+            Vector3 target = Vector3.Lerp(atA, atB, 0.5f);
+            float[] trial = (float[])angles.Clone();
+            bool solved = _ik.Solve(root, trial, limb, target, normal).Success;
+            rig.Solve(root, trial, positions, rotations);
+            if (solved && Holds(limb, pose, phase.Position, allowed, clear))
+            {
+                angles = trial;
+                changed = true;
+            }
+            else if (depth >= MaxDepth)
+            {
+                failures.Add((phase.Limb, time));
+            }
+            else
+            {
+                angles = trial;
+                changed = true;
+            }
+        }
+
+        if (!changed)
+        {
+            return;
+        }
+
+        var middle = new AnimationFrame(time, root, angles);
+        if (depth < MaxDepth)
+        {
+            Between(clip, pose, a, middle, depth + 1, output, failures);
+        }
+
+        output.Add(middle);
+        if (depth < MaxDepth)
+        {
+            Between(clip, pose, middle, b, depth + 1, output, failures);
+        }
+    }
+
+    /// <summary>True when, in the pose last solved, <paramref name="limb"/>'s effector lies within <paramref name="allowed"/> metres of <paramref name="point"/> and, when <paramref name="clear"/>, none of its bones is in the level.</summary>
+    private bool Holds(RigLimb limb, Pose pose, Vector3 point, float allowed, bool clear) =>
+        Vector3.Distance(limb.EffectorPosition(pose.Positions, pose.Rotations), point) <= allowed
+        && (!clear || !_collision.LimbCollides(limb, pose.Positions, pose.Rotations, point));
+}
