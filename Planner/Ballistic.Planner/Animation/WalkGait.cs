@@ -96,8 +96,8 @@ internal sealed class WalkGait
         _scene = scene;
         _model = model;
         _contacts = contacts;
-        _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, NormalTolerance = SoleTolerance });
-        _freeIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 });
+        _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, NormalTolerance = SoleTolerance, ReleaseLimits = true });
+        _freeIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, ReleaseLimits = true });
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
     }

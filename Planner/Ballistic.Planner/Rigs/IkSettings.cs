@@ -24,6 +24,14 @@ public sealed record IkSettings
     /// <summary>Largest change of one angle per iteration, radians.</summary>
     public double MaxStep { get; init; } = 0.3;
 
+    /// <summary>
+    /// Leave a joint held at a limit out of a step that would push it past the limit, so that the other joints make up
+    /// for it: the solver tracks a moving target with a joint at its limit (an ankle bent as far as it goes) instead
+    /// of stalling a millimetre or two short. Off by default, since it changes which of several solutions a solve
+    /// lands on; the walking gait turns it on for the feet it holds.
+    /// </summary>
+    public bool ReleaseLimits { get; init; }
+
     /// <summary>Solve the small damped systems with MathNet.Numerics instead of the built-in Cholesky.</summary>
     public bool UseMathNet { get; init; }
 }

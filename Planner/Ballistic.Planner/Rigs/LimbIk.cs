@@ -8,12 +8,17 @@ namespace Ballistic.Planner.Rigs;
 /// <summary>
 /// Damped-least-squares inverse kinematics for one limb with the root locked: moves only the limb chain's angles,
 /// within their limits, to put the effector's contact point on a target and, optionally, its contact normal along a
-/// target normal. Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e, clamped, repeated; restarts from other configurations when stuck.
+/// target normal. Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e, clamped, repeated; with <see cref="IkSettings.ReleaseLimits"/>, a
+/// joint at a limit the step would push it past is left out of that step (so the others make up for it instead of
+/// the solver stalling against the limit); restarts from other configurations when stuck.
 /// A target it cannot reach is reported as a failure and leaves the configuration untouched.
 /// </summary>
 public sealed class LimbIk
 {
     private const int MaxRows = 5;
+
+    /// <summary>Radians within which an angle counts as at its limit.</summary>
+    private const float LimitSlack = 1e-5f;
 
     /// <summary>Creates a solver for a rig.</summary>
     public LimbIk(Rig rig, IkSettings? settings = null)
@@ -138,13 +143,29 @@ public sealed class LimbIk
                 }
             }
 
-            if (Settings.UseMathNet)
+            Solve(jacobian[..(rows * n)], error[..rows], step[..n], rows, n);
+
+            // A joint held at a limit that the step pushes further cannot help: its column is dropped and the step
+            // solved again, so that the other joints make up for it (else the solver stalls against the limit).
+            bool dropped = false;
+            for (int c = 0; c < n && Settings.ReleaseLimits; c++)
             {
-                SolveMathNet(jacobian[..(rows * n)], error[..rows], step[..n], rows, n, Settings.Damping);
+                int dof = limb.ChainDofs[c];
+                JointAxis range = Rig.Dofs[dof];
+                if ((q[dof] <= range.Min + LimitSlack && step[c] < 0) || (q[dof] >= range.Max - LimitSlack && step[c] > 0))
+                {
+                    for (int r = 0; r < rows; r++)
+                    {
+                        jacobian[(r * n) + c] = 0;
+                    }
+
+                    dropped = true;
+                }
             }
-            else
+
+            if (dropped)
             {
-                SolveSmall(jacobian[..(rows * n)], error[..rows], step[..n], rows, n, Settings.Damping);
+                Solve(jacobian[..(rows * n)], error[..rows], step[..n], rows, n);
             }
 
             double largest = 0;
@@ -166,6 +187,19 @@ public sealed class LimbIk
         normalError = targetNormal is null ? 0f : MathF.Acos(Math.Clamp(Vector3.Dot(limb.EffectorNormal(rotations), goalNormal), -1f, 1f));
         bool success = positionError <= Settings.PositionTolerance && normalError <= Settings.NormalTolerance;
         return new IkResult(success, positionError, normalError, Settings.MaxIterations);
+    }
+
+    /// <summary>One damped least-squares step, with the solver the settings choose.</summary>
+    private void Solve(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n)
+    {
+        if (Settings.UseMathNet)
+        {
+            SolveMathNet(j, e, dq, m, n, Settings.Damping);
+        }
+        else
+        {
+            SolveSmall(j, e, dq, m, n, Settings.Damping);
+        }
     }
 
     /// <summary>Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e with a Cholesky factorisation of the small m × m system.</summary>

@@ -173,8 +173,8 @@ public static class ReducedModelBuilder
     {
         ArgumentNullException.ThrowIfNull(model);
         Rig rig = model.Rig;
-        var flat = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, NormalTolerance = 5f * MathF.PI / 180f });
-        var loose = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40 });
+        var flat = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, NormalTolerance = 5f * MathF.PI / 180f, ReleaseLimits = true });
+        var loose = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, ReleaseLimits = true });
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];

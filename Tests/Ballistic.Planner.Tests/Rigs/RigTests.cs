@@ -105,6 +105,55 @@ public sealed class RigTests
     }
 
     [Test]
+    public void IkReleasingLimitsTracksTargetsWithAJointAtItsLimit([Values] bool useMathNet)
+    {
+        // Holding a foot while the trunk moves: each target is a small step from where the limb is, and is reached by
+        // a pose with one joint at its limit (an ankle that cannot bend further). A solver that keeps pushing that
+        // joint into its limit stalls a millimetre or two short; one that lets the other joints make up for it does
+        // not. Few iterations and no restarts, as when tracking.
+        CharacterModel model = Humanoid.Value;
+        Rig rig = model.Rig;
+        var ik = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 24, NormalTolerance = 5f * MathF.PI / 180f, UseMathNet = useMathNet, ReleaseLimits = true });
+        var random = new Random(8);
+        var root = new RootPose(Vector3.Zero, Quaternion.Identity);
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        int solved = 0;
+        const int cases = 300;
+        for (int i = 0; i < cases; i++)
+        {
+            RigLimb limb = model.Limbs[i % 2];
+            float[] start = RandomPose(rig, limb, random, model.ContactPose);
+            int pinned = limb.ChainDofs[random.Next(limb.ChainDofs.Count)];
+            start[pinned] = random.Next(2) == 0 ? rig.Dofs[pinned].Min : rig.Dofs[pinned].Max;
+            float[] goal = (float[])start.Clone();
+            foreach (int d in limb.ChainDofs)
+            {
+                if (d != pinned)
+                {
+                    goal[d] = rig.Dofs[d].Clamp(goal[d] + (0.1f * ((2f * (float)random.NextDouble()) - 1f)));
+                }
+            }
+
+            // The start leans into the limit: the pinned joint, left free, would go past it to reach the target.
+            rig.Solve(root, goal, positions, rotations);
+            Vector3 target = limb.EffectorPosition(positions, rotations);
+            Vector3 normal = limb.EffectorNormal(rotations);
+            float[] q = (float[])start.Clone();
+            if (ik.Solve(root, q, limb, target, normal).Success)
+            {
+                solved++;
+                rig.Solve(root, q, positions, rotations);
+                Assert.That(Vector3.Distance(limb.EffectorPosition(positions, rotations), target), Is.LessThanOrEqualTo(1e-3f), $"case {i}");
+                Assert.That(rig.WithinLimits(q), Is.True, $"case {i}: joint limits");
+            }
+        }
+
+        TestContext.Out.WriteLine($"{solved} of {cases} tracked");
+        Assert.That(solved, Is.GreaterThanOrEqualTo(cases * 98 / 100), "targets next to the limb, reached with a joint at its limit, are tracked");
+    }
+
+    [Test]
     public void IkReportsUnreachableTargetsAsFailures()
     {
         CharacterModel model = Humanoid.Value;
