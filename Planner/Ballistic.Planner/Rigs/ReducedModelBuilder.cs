@@ -233,7 +233,7 @@ public static class ReducedModelBuilder
         return slope;
     }
 
-    /// <summary>How far (metres) a toe may dip under the plane in <see cref="WalkableSlope"/>: the level's own collision tolerance for a held foot.</summary>
+    /// <summary>How far (metres) a toe may dip under the plane in <see cref="WalkableSlope"/>: 5 mm, within what the level's collision checks let a held foot's bones touch near its contact (1 cm).</summary>
     private const float BodyClearance = 0.005f;
 
     /// <summary>Lowest share of the rest-pose root height the root keeps above its contacts in stance.</summary>
