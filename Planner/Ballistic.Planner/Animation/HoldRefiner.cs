@@ -73,6 +73,14 @@ internal sealed class HoldRefiner
             return;
         }
 
+        // The phases held across the interval, and how each limb holds at its two frames (each frame solved once):
+        // the midpoint must do as well.
+        ContactPhase[] held = [.. clip.ContactPhases.Where(p => p.From <= a.Time + 1e-5f && p.To >= b.Time - 1e-5f)];
+        if (held.Length == 0)
+        {
+            return;
+        }
+
         float time = a.Time + (0.5f * span);
         RootPose root = clip.RootAt(time);
         float[] angles = new float[a.Angles.Length];
@@ -81,50 +89,52 @@ internal sealed class HoldRefiner
             angles[d] = float.Lerp(a.Angles[d], b.Angles[d], 0.5f);
         }
 
-        bool changed = false;
         Rig rig = _model.Rig;
-        foreach (ContactPhase phase in clip.ContactPhases)
+        var atA = new Vector3[held.Length];
+        var atB = new Vector3[held.Length];
+        var normals = new Vector3[held.Length];
+        var clear = new bool[held.Length];
+        rig.Solve(a.Root, a.Angles, positions, rotations);
+        for (int h = 0; h < held.Length; h++)
         {
-            if (phase.From > a.Time + 1e-5f || phase.To < b.Time - 1e-5f)
-            {
-                continue;
-            }
+            RigLimb limb = _model.Limbs[held[h].Limb];
+            atA[h] = limb.EffectorPosition(positions, rotations);
+            normals[h] = limb.EffectorNormal(rotations);
+            clear[h] = !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
+        }
 
-            // How the limb holds at the two frames: the midpoint must do as well.
+        rig.Solve(b.Root, b.Angles, positions, rotations);
+        for (int h = 0; h < held.Length; h++)
+        {
+            RigLimb limb = _model.Limbs[held[h].Limb];
+            atB[h] = limb.EffectorPosition(positions, rotations);
+            clear[h] &= !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
+        }
+
+        bool changed = false;
+        for (int h = 0; h < held.Length; h++)
+        {
+            ContactPhase phase = held[h];
             RigLimb limb = _model.Limbs[phase.Limb];
-            rig.Solve(a.Root, a.Angles, positions, rotations);
-            Vector3 atA = limb.EffectorPosition(positions, rotations);
-            Vector3 normal = limb.EffectorNormal(rotations);
-            bool clear = !_collision.LimbCollides(limb, positions, rotations, phase.Position);
-            rig.Solve(b.Root, b.Angles, positions, rotations);
-            Vector3 atB = limb.EffectorPosition(positions, rotations);
-            clear &= !_collision.LimbCollides(limb, positions, rotations, phase.Position);
-            float allowed = MathF.Max(Vector3.Distance(atA, phase.Position), Vector3.Distance(atB, phase.Position)) + Tolerance;
+            float allowed = MathF.Max(Vector3.Distance(atA[h], phase.Position), Vector3.Distance(atB[h], phase.Position)) + Tolerance;
             rig.Solve(root, angles, positions, rotations);
-            if (Holds(limb, pose, phase.Position, allowed, clear))
+            if (Holds(limb, pose, phase.Position, allowed, clear[h]))
             {
                 continue;
             }
 
             // Hold it there by IK (where the effector is at the two frames, its sole turned as at the first).
-            Vector3 target = Vector3.Lerp(atA, atB, 0.5f);
             float[] trial = (float[])angles.Clone();
-            bool solved = _ik.Solve(root, trial, limb, target, normal).Success;
+            bool solved = _ik.Solve(root, trial, limb, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]).Success;
             rig.Solve(root, trial, positions, rotations);
-            if (solved && Holds(limb, pose, phase.Position, allowed, clear))
-            {
-                angles = trial;
-                changed = true;
-            }
-            else if (depth >= MaxDepth)
+            if (!(solved && Holds(limb, pose, phase.Position, allowed, clear[h])) && depth >= MaxDepth)
             {
                 failures.Add((phase.Limb, time));
+                continue;
             }
-            else
-            {
-                angles = trial;
-                changed = true;
-            }
+
+            angles = trial;
+            changed = true;
         }
 
         if (!changed)

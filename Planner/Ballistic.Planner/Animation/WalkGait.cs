@@ -65,7 +65,7 @@ internal sealed class WalkGait
     public const float SwingTolerance = 0.005f;
 
     /// <summary>How far a held sole may tilt from the ground, radians (5°).</summary>
-    public const float SoleTolerance = 5f * MathF.PI / 180f;
+    public const float SoleTolerance = SoleHold.FlatTolerance;
 
     /// <summary>Lifts of a swinging foot above the higher of its two footholds, as shares of the step height, tried in order.</summary>
     private static readonly float[] Lifts = [0.35f, 0.6f, 1f, 1.5f, 2.2f];
@@ -85,8 +85,7 @@ internal sealed class WalkGait
     private readonly PlanningScene _scene;
     private readonly CharacterModel _model;
     private readonly ContactGenerator _contacts;
-    private readonly LimbIk _ik;
-    private readonly LimbIk _freeIk;
+    private readonly SoleHold _sole;
     private readonly LimbIk _swingIk;
     private readonly BodyCollision _collision;
 
@@ -96,8 +95,7 @@ internal sealed class WalkGait
         _scene = scene;
         _model = model;
         _contacts = contacts;
-        _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, NormalTolerance = SoleTolerance, ReleaseLimits = true });
-        _freeIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, ReleaseLimits = true });
+        _sole = new SoleHold(model.Rig);
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
     }
@@ -129,9 +127,8 @@ internal sealed class WalkGait
     public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate) =>
         new Run(this, move, walk, start, end, frameRate).Animate();
 
-    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>: as flat as <see cref="SoleTolerance"/> when it can, else within the contact generator's 15°.</summary>
-    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) =>
-        _ik.Solve(root, q, limb, point, -normal).Success || _freeIk.Solve(root, q, limb, point, -normal).Success;
+    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/> (<see cref="SoleHold"/>).</summary>
+    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) => _sole.Hold(root, q, limb, point, normal);
 
     private static float Smooth(float x)
     {
@@ -1090,7 +1087,7 @@ internal sealed class WalkGait
                     {
                         // Touch-down exactly on the foothold.
                         Vector3 n = Vector3.Normalize(n1);
-                        bool solved = _gait._ik.Solve(_roots[i], trial, limb, p1, n).Success || _gait._freeIk.Solve(_roots[i], trial, limb, p1, n).Success;
+                        bool solved = _gait.Hold(_roots[i], trial, limb, p1, -n);
                         failures += solved ? 0 : 1;
                     }
                     else if (i > a && i < b && onCurve)
@@ -1099,7 +1096,7 @@ internal sealed class WalkGait
                         // turning or slowing under it), the angles go straight on toward the foothold's.
                         Vector3 p = Curve(s);
                         Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
-                        onCurve = _gait._ik.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
+                        onCurve = _gait._sole.Flat.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
                             || _gait._swingIk.Solve(_roots[i], trial, limb, p, null).Success;
                     }
 

@@ -161,7 +161,7 @@ public static class ReducedModelBuilder
     /// The steepest slope (degrees, a multiple of <see cref="SlopeStep"/>, at most
     /// <see cref="WalkingLimits.DefaultMaxSlopeDegrees"/>) the rig's feet can walk on: on a plane of that slope falling
     /// forward, backward, left or right, every foot of the rig holds the point under it in the contact pose by IK with
-    /// its sole flat on the plane (within 5°, or 15° as the gait allows), no bone below its effector (toes) under the
+    /// its sole on the plane as the gait holds it (<see cref="SoleHold"/>), no bone below its effector (toes) under the
     /// plane, while the trunk, upright, stands over it and moves a tenth of <paramref name="legLength"/> either way
     /// along the plane. Ankles that cannot tilt the sole as far as the ground does (a rig's joint limits) give a lower
     /// slope: the gait could not hold the feet there, so the planner does not walk there. 0 when the feet cannot even
@@ -173,8 +173,7 @@ public static class ReducedModelBuilder
     {
         ArgumentNullException.ThrowIfNull(model);
         Rig rig = model.Rig;
-        var flat = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, NormalTolerance = 5f * MathF.PI / 180f, ReleaseLimits = true });
-        var loose = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = 40, ReleaseLimits = true });
+        var sole = new SoleHold(rig);
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
@@ -197,7 +196,7 @@ public static class ReducedModelBuilder
                     {
                         var root = new RootPose(new Vector3(0f, -x * MathF.Tan(angle) * down.Z, x), Quaternion.Identity);
                         float[] trial = (float[])q.Clone();
-                        if (!flat.Solve(root, trial, feet[f], stands[f], -normal).Success && !loose.Solve(root, trial, feet[f], stands[f], -normal).Success)
+                        if (!sole.Hold(root, trial, feet[f], stands[f], normal))
                         {
                             return false;
                         }

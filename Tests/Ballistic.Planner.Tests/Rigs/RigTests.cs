@@ -8,7 +8,7 @@ namespace Ballistic.Planner.Tests.Rigs;
 
 public sealed class RigTests
 {
-    private static readonly Lazy<CharacterModel> Humanoid = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
+    internal static readonly Lazy<CharacterModel> Humanoid = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
 
     [Test]
     public void HumanoidHasAboutFortyDegreesOfFreedomAndStandsOnItsFeet()

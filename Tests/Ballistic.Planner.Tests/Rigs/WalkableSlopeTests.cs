@@ -1,5 +1,4 @@
 using System.Numerics;
-using Ballistic.Authoring.Rigs;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
@@ -9,14 +8,12 @@ namespace Ballistic.Planner.Tests.Rigs;
 /// <summary>The steepest ground a rig walks on comes from its feet (<see cref="ReducedModelBuilder.WalkableSlope"/>), not a fixed angle.</summary>
 public sealed class WalkableSlopeTests
 {
-    private static readonly Lazy<CharacterModel> Humanoid = new(() => HumanoidBuilder.Build("skeleton", handsOnWalls: false));
-
     [Test]
     public void TheHumanoidWalksOnSlopesItsAnklesCanFollow()
     {
         // Its ankles roll ±20° and bend −45°…40°: with the trunk upright over a foot, a sole on a side slope of 25°
         // cannot lie flat, one of 20° can.
-        CharacterModel model = Humanoid.Value;
+        CharacterModel model = RigTests.Humanoid.Value;
         float leg = LegLength(model);
         float slope = ReducedModelBuilder.WalkableSlope(model, leg);
         Assert.That(slope, Is.InRange(15f, 25f));
@@ -27,7 +24,7 @@ public sealed class WalkableSlopeTests
     [Test]
     public void StifferAnklesWalkOnGentlerSlopesAndLooserOnesOnSteeper()
     {
-        CharacterModel model = Humanoid.Value;
+        CharacterModel model = RigTests.Humanoid.Value;
         float leg = LegLength(model);
         float normal = ReducedModelBuilder.WalkableSlope(model, leg);
         float stiff = ReducedModelBuilder.WalkableSlope(WithAnkleRoll(model, 5f), leg);
@@ -45,7 +42,7 @@ public sealed class WalkableSlopeTests
     {
         // An independent check of the answer: a fresh IK with restarts, the foot on planes of the derived slope falling
         // each way, the trunk upright above it; and on planes 10° steeper, some foot cannot.
-        CharacterModel model = Humanoid.Value;
+        CharacterModel model = RigTests.Humanoid.Value;
         float slope = ReducedModelBuilder.WalkableSlope(model, LegLength(model));
         Assert.Multiple(() =>
         {
