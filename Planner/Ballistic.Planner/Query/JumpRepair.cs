@@ -9,15 +9,20 @@ namespace Ballistic.Planner.Query;
 /// the set a search must avoid, and the reasons a request that never animates cleanly reports. Shared by
 /// <see cref="AnimatedPlanner"/> and the runtime's path requests so both repair and explain alike. A request that
 /// walks and jumps falls back to jumps only once its walks failed to animate in <see cref="WalkRounds"/> rounds: walking
-/// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds.
-/// Not thread-safe.
+/// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds. Likewise
+/// a move cut from a jump (<see cref="Move.CutFrom"/>) that does not animate gives the jump back whole, and after
+/// <see cref="CutRounds"/> such rounds no jump is cut. Not thread-safe.
 /// </summary>
 public sealed class JumpRepair
 {
     /// <summary>Rounds with a walk that did not animate cleanly after which a request searches jumps only.</summary>
     public const int WalkRounds = 2;
 
+    /// <summary>Rounds with a move cut from a jump (<see cref="Move.CutFrom"/>) that did not animate cleanly after which jumps are no longer cut.</summary>
+    public const int CutRounds = 4;
+
     private readonly HashSet<(int From, int To)> _excluded = [];
+    private readonly HashSet<(int From, int To)> _uncut = [];
     private readonly List<RejectedJump> _setAside = [];
 
     /// <summary>Moves (jumps or walks: from node id, to node id) the next search must not use.</summary>
@@ -32,40 +37,85 @@ public sealed class JumpRepair
     /// <summary>False once walks failed to animate in <see cref="WalkRounds"/> rounds: the next searches use jumps only.</summary>
     public bool WalksAllowed => WalkFailures < WalkRounds;
 
+    /// <summary>Jumps (takeoff id, landing id, as searched) whose cut-down moves did not animate: the next searches keep them whole.</summary>
+    public IReadOnlySet<(int From, int To)> Uncut => _uncut;
+
+    /// <summary>Rounds so far in which a move cut from a jump did not animate cleanly.</summary>
+    public int CutFailures { get; private set; }
+
+    /// <summary>False once moves cut from jumps failed to animate in <see cref="CutRounds"/> rounds: the next searches cut no jump.</summary>
+    public bool CuttingAllowed => CutFailures < CutRounds;
+
     /// <summary>
     /// True when a request that has searched <paramref name="searches"/> times has no search left of
     /// <paramref name="limit"/>: the rounds whose walks failed (at most <see cref="WalkRounds"/>) do not count, so the
     /// jumps-only fallback has every round.
     /// </summary>
-    public bool IsExhausted(int searches, int limit) => searches - WalkFailures >= limit;
+    public bool IsExhausted(int searches, int limit) => searches - WalkFailures - CutFailures >= limit;
 
     /// <summary>
     /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
-    /// <see cref="WalksAllowed"/> is false.
+    /// <see cref="WalksAllowed"/> is false, the jumps in <see cref="Uncut"/> kept whole, and no jump cut once
+    /// <see cref="CuttingAllowed"/> is false.
     /// </summary>
     public QuerySettings Adjust(QuerySettings settings)
     {
         ArgumentNullException.ThrowIfNull(settings);
-        return WalksAllowed || settings.Locomotion == Locomotion.Jump ? settings : settings with { Locomotion = Locomotion.Jump };
+        if (!WalksAllowed && settings.Locomotion != Locomotion.Jump)
+        {
+            settings = settings with { Locomotion = Locomotion.Jump };
+        }
+
+        if (!CuttingAllowed && settings.TightenJumps)
+        {
+            settings = settings with { TightenJumps = false };
+        }
+
+        return _uncut.Count == 0 ? settings : settings with { UncutJumps = _uncut };
     }
 
-    /// <summary>Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a problem with.</summary>
+    /// <summary>
+    /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
+    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead.
+    /// </summary>
     /// <param name="path">The path that was animated.</param>
     /// <param name="animation">Its animation; problems index moves of <paramref name="path"/>.</param>
-    /// <returns>How many moves were newly set aside.</returns>
+    /// <returns>How many moves were newly set aside (or kept whole).</returns>
     public int Reject(IReadOnlyList<Move> path, JumpAnimation animation)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(animation);
         int added = 0;
-        if (animation.Problems.Any(p => path[p.Jump] is Walk))
+        if (animation.Problems.Any(p => path[p.Jump] is Walk { CutFrom.Count: 0 }))
         {
             WalkFailures++;
+        }
+
+        if (animation.Problems.Any(p => path[p.Jump].CutFrom.Count > 0))
+        {
+            CutFailures++;
         }
 
         foreach (JumpProblem problem in animation.Problems)
         {
             Move move = path[problem.Jump];
+            if (move.CutFrom.Count > 0)
+            {
+                bool kept = false;
+                foreach ((int, int) jump in move.CutFrom)
+                {
+                    kept |= _uncut.Add(jump);
+                }
+
+                if (kept)
+                {
+                    _setAside.Add(new RejectedJump(move.From, move.To, problem.Reason));
+                    added++;
+                }
+
+                continue;
+            }
+
             bool any = _excluded.Add((move.From.Id, move.To.Id));
             if (move is Walk walk)
             {

@@ -49,6 +49,7 @@ public sealed class PathQuery
     // The costs of the current request: a jump's flight time plus this effort (0 without walking); walks when allowed.
     private float _effort;
     private bool _walking;
+    private JumpTightener? _tightener;
     private (int From, int To)? _lostWalk;
 
     /// <summary>An edge of one request only (start or goal off the roadmap): a jump's arc or a walk, with its search cost in seconds.</summary>
@@ -364,6 +365,13 @@ public sealed class PathQuery
                 path = Shortcut(path, settings, rejected);
             }
 
+            if (settings.TightenJumps)
+            {
+                _tightener ??= new JumpTightener(_scene);
+                path = _tightener.Tighten(path, n + 2, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
+                path = Shortcut(path, settings, rejected, walksOnly: true);
+            }
+
             path = JoinWalks(path, _scene.Walking);
         }
 
@@ -674,9 +682,10 @@ public sealed class PathQuery
     /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that
     /// (two or more moves on) one direct jump, that takes less time than the moves it replaces (jump effort included)
     /// replaces them; a jump to the next pose may become a walk longer than the roadmap's walk edges. Greedy from the
-    /// start; never uses a move set aside.
+    /// start; never uses a move set aside. With <paramref name="walksOnly"/>, only stretches of two or more walks are
+    /// replaced, by one direct walk (after <see cref="JumpTightener"/>, whose walks a direct jump would undo).
     /// </summary>
-    private List<Move> Shortcut(List<Move> path, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected)
+    private List<Move> Shortcut(List<Move> path, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, bool walksOnly = false)
     {
         if (path.Count < 2)
         {
@@ -702,7 +711,8 @@ public sealed class PathQuery
                 // One move on: only a jump, replaced by a walk between the same stances (longer than a walk edge).
                 RoadmapNode a = poses[i];
                 RoadmapNode b = poses[j];
-                if (a.Id == b.Id || rejected?.Contains((a.Id, b.Id)) == true || (j == i + 1 && path[i] is not Jump))
+                if (a.Id == b.Id || rejected?.Contains((a.Id, b.Id)) == true || (j == i + 1 && path[i] is not Jump) ||
+                    (walksOnly && (j == i + 1 || !AllWalks(path, i, j))))
                 {
                     continue;
                 }
@@ -710,9 +720,9 @@ public sealed class PathQuery
                 float saving = costs[j] - costs[i] - 1e-3f;
                 if (_scene.Walking.Steer(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving)
                 {
-                    best = walk;
+                    best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }
-                else if (j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
+                else if (!walksOnly && j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
                     _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && jump.Arc.FlightTime + _effort < saving)
                 {
                     best = new Jump(a, b, jump.Arc);
@@ -729,6 +739,38 @@ public sealed class PathQuery
         }
 
         return result;
+    }
+
+    /// <summary>The jumps the moves from index <paramref name="from"/> up to (not including) <paramref name="to"/> were cut from, each once.</summary>
+    private static IReadOnlyList<(int From, int To)> CutFrom(List<Move> path, int from, int to)
+    {
+        var cut = new List<(int From, int To)>();
+        for (int k = from; k < to; k++)
+        {
+            foreach ((int, int) jump in path[k].CutFrom)
+            {
+                if (!cut.Contains(jump))
+                {
+                    cut.Add(jump);
+                }
+            }
+        }
+
+        return cut.Count == 0 ? [] : cut;
+    }
+
+    /// <summary>True when the moves from index <paramref name="from"/> up to (not including) <paramref name="to"/> are all walks.</summary>
+    private static bool AllWalks(List<Move> path, int from, int to)
+    {
+        for (int k = from; k < to; k++)
+        {
+            if (path[k] is not Walk)
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     /// <summary>Sharpest corner (degrees) at which two walks are joined into one walked without stopping.</summary>
@@ -765,7 +807,7 @@ public sealed class PathQuery
     {
         var points = new List<Vector3>(first.Path);
         points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
-        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via]);
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via]) { CutFrom = CutFrom([first, second], 0, 2) };
     }
 
     /// <summary>"3 jumps", "2 walks and 1 jump".</summary>

@@ -65,4 +65,18 @@ public sealed record QuerySettings
     /// non-adjacent poses when that takes less time (jump effort included), then join consecutive walks into one.
     /// </summary>
     public bool Shortcut { get; init; } = true;
+
+    /// <summary>
+    /// When walking is allowed: after the search (and shortcutting), cut each jump down to what the ground requires:
+    /// its takeoff moves forward and its landing back along the jump's line, over ground the character can walk, and
+    /// the path walks there instead (<see cref="JumpTightener"/>). The path then takes longer than the one searched
+    /// (a metre walked is slower than a metre in the air) but jumps only over what cannot be walked. On by default.
+    /// </summary>
+    public bool TightenJumps { get; init; } = true;
+
+    /// <summary>
+    /// Jumps (takeoff id, landing id, as searched) <see cref="TightenJumps"/> must leave whole: those whose cut-down
+    /// moves did not animate (<see cref="JumpRepair"/> fills it); <c>null</c> for none.
+    /// </summary>
+    public IReadOnlySet<(int From, int To)>? UncutJumps { get; init; }
 }

@@ -19,4 +19,12 @@ public abstract record Move
 
     /// <summary>How long the move takes, seconds: a jump's flight time, a walk's length over the walking speed.</summary>
     public abstract float Duration { get; }
+
+    /// <summary>
+    /// The jumps of the searched path (takeoff id, landing id) this move stands in for part of, when the query cut
+    /// them down to the ground they must cross (<see cref="Query.QuerySettings.TightenJumps"/>); empty for a move as
+    /// searched. A walk joined from several may stand in for two. When such a move does not animate, the repair
+    /// keeps those jumps whole (<see cref="Query.QuerySettings.UncutJumps"/>) instead of setting the move aside.
+    /// </summary>
+    public IReadOnlyList<(int From, int To)> CutFrom { get; init; } = [];
 }

@@ -113,6 +113,9 @@ public sealed class TrunkSampler
 
     private static readonly float[] PlacementLifts = [0.5f, 0.25f, 0.75f, 0f, 1f];
 
+    /// <summary>Lifts of <see cref="PlaceFacing"/>, highest first: a stance on a walker's way stands tall, as walking does.</summary>
+    private static readonly float[] UprightLifts = [0.75f, 1f, 0.5f, 0.25f, 0f];
+
     /// <summary>
     /// Places a start or goal: searches valid poses standing on surfaces by increasing horizontal distance from
     /// <paramref name="point"/> (rings 10 cm apart, each surface point met by a vertical segment reaching
@@ -129,7 +132,32 @@ public sealed class TrunkSampler
     /// <c>null</c> for none.
     /// </param>
     /// <exception cref="ArgumentException">The tolerance is not positive, or the point is not finite.</exception>
-    public EndpointPlacement Place(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand = null)
+    public EndpointPlacement Place(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand = null) =>
+        PlaceNear(point, tolerance, canStand, facing: null, searchBeyond: true);
+
+    /// <summary>
+    /// Places a stance near <paramref name="point"/> as <see cref="Place(Vector3, EndpointTolerance, Func{PoseEvaluation, bool}?)"/>
+    /// does, trying the yaw <paramref name="facing"/> first and then yaws turned from it by eighths of a turn (0, +45°,
+    /// −45°, +90°, …), so that the stance faces that way when it can. Used for the stances a plan adds on its way
+    /// (a jump's takeoff moved forward along walkable ground). Does not search beyond the tolerance:
+    /// <see cref="EndpointPlacement.Pose"/> is <c>null</c> when nothing stands within it.
+    /// </summary>
+    /// <param name="point">The point, world metres, on or near a surface.</param>
+    /// <param name="tolerance">How close the stance's contacts' centre must come to the point.</param>
+    /// <param name="facing">Yaw to try first, radians about +Y (0 faces +Z: <c>atan2(x, z)</c> of a horizontal heading).</param>
+    /// <param name="canStand">An extra check a pose must pass, or <c>null</c>.</param>
+    /// <exception cref="ArgumentException">The tolerance is not positive, or the point or the yaw is not finite.</exception>
+    public EndpointPlacement PlaceFacing(Vector3 point, EndpointTolerance tolerance, float facing, Func<PoseEvaluation, bool>? canStand = null)
+    {
+        if (!float.IsFinite(facing))
+        {
+            throw new ArgumentException($"The yaw {facing} is not finite.", nameof(facing));
+        }
+
+        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false);
+    }
+
+    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond)
     {
         tolerance.Validate();
         if (!float.IsFinite(point.X) || !float.IsFinite(point.Y) || !float.IsFinite(point.Z))
@@ -144,7 +172,8 @@ public sealed class TrunkSampler
         float bestScore = float.PositiveInfinity;
         var hits = new List<RayHit>();
         float radius = 0f;
-        for (int ring = 0; radius <= tolerance.Across + PlacementBeyond; ring++)
+        float reach = tolerance.Across + (searchBeyond ? PlacementBeyond : 0f);
+        for (int ring = 0; radius <= reach; ring++)
         {
             bool beyond = radius > tolerance.Across + PlacementStep;
             float spacing = beyond ? 2.5f * PlacementStep : PlacementStep;
@@ -163,9 +192,12 @@ public sealed class TrunkSampler
 
                     for (int y = 0; y < 8; y++)
                     {
-                        foreach (float lift in beyond ? PlacementLifts.AsSpan(0, 1) : PlacementLifts)
+                        // From the facing yaw: 0, +1, −1, +2, −2, … eighths of a turn.
+                        float yaw = facing is float f ? f + ((y % 2 == 1 ? (y + 1) / 2 : -(y / 2)) * MathF.PI / 4f) : y * MathF.PI / 4f;
+                        float[] lifts = facing is null ? PlacementLifts : UprightLifts;
+                        foreach (float lift in beyond ? lifts.AsSpan(0, 1) : lifts)
                         {
-                            PoseEvaluation? pose = TryPose(hit.Triangle, hit.Point, y * MathF.PI / 4f, _lift.Lerp(lift));
+                            PoseEvaluation? pose = TryPose(hit.Triangle, hit.Point, yaw, _lift.Lerp(lift));
                             if (pose is null)
                             {
                                 continue;

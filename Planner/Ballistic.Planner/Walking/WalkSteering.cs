@@ -86,7 +86,7 @@ public sealed class WalkSteering
         }
 
         var path = new List<Vector3>();
-        WalkFailure ground = TraceGround(a, b, path);
+        WalkFailure ground = TraceGround(a, b, path, out _);
         if (ground != WalkFailure.None)
         {
             return new WalkResult(null, ground);
@@ -97,11 +97,41 @@ public sealed class WalkSteering
     }
 
     /// <summary>
+    /// How far (metres, horizontally) the ground allows a walk from <paramref name="from"/> straight toward
+    /// <paramref name="toward"/> (seen from above): the distance of the last ground sample before the first gap,
+    /// step too high or steep stretch, by the same ground checks as <see cref="Steer"/> makes; the whole distance
+    /// when the ground passes all the way. Only the ground is checked, not the trunk, nor the stance at either end.
+    /// </summary>
+    /// <param name="from">A point on the ground (such as a stance's contact centre), world metres.</param>
+    /// <param name="toward">The point walked toward, world metres; only its horizontal position matters.</param>
+    /// <param name="ground">
+    /// When not <c>null</c>, cleared and filled with the ground points found along the way (world metres, at most
+    /// <see cref="PathSpacing"/> apart, the first under <paramref name="from"/>), up to where the ground failed.
+    /// </param>
+    public float WalkableDistance(Vector3 from, Vector3 toward, List<Vector3>? ground = null)
+    {
+        ground?.Clear();
+        if (!Limits.CanWalk)
+        {
+            return 0f;
+        }
+
+        List<Vector3> path = ground ?? [];
+        Vector3 end = new(toward.X, from.Y, toward.Z);
+        WalkFailure failure = TraceGround(from, end, path, out float passed, checkEnd: false);
+        return failure == WalkFailure.None ? new Vector2(end.X - from.X, end.Z - from.Z).Length() : passed;
+    }
+
+    /// <summary>
     /// Finds the ground under the straight line from <paramref name="a"/> to <paramref name="b"/> (seen from above)
     /// and checks it; fills <paramref name="path"/> with ground points at most <see cref="PathSpacing"/> apart.
+    /// <paramref name="passed"/> is the horizontal distance from <paramref name="a"/> of the last sample before the
+    /// ground failed (of the first of two steep samples). With <paramref name="checkEnd"/>, the last sample's ground
+    /// must be within a step of <paramref name="b"/>'s height.
     /// </summary>
-    private WalkFailure TraceGround(Vector3 a, Vector3 b, List<Vector3> path)
+    private WalkFailure TraceGround(Vector3 a, Vector3 b, List<Vector3> path, out float passed, bool checkEnd = true)
     {
+        passed = 0f;
         var horizontal = new Vector2(b.X - a.X, b.Z - a.Z);
         float across = horizontal.Length();
         int samples = Math.Max(1, (int)MathF.Ceiling(across / SampleSpacing));
@@ -137,10 +167,12 @@ public sealed class WalkSteering
             bool steep = MathF.Abs(hit.Normal.Y) < _minCosine;
             if (steep && steepBefore)
             {
+                passed = MathF.Max(0f, (i - 2) * spacing);
                 return WalkFailure.TooSteep;
             }
 
             steepBefore = steep;
+            passed = i * spacing;
             previous = y;
             if (i % keepEvery == 0 || i == samples)
             {
@@ -149,7 +181,7 @@ public sealed class WalkSteering
         }
 
         // The last sample's ground must be under the second stance's contacts.
-        if (MathF.Abs(previous - b.Y) > allowed)
+        if (checkEnd && MathF.Abs(previous - b.Y) > allowed)
         {
             return previous < b.Y ? WalkFailure.StepTooHigh : WalkFailure.Gap;
         }

@@ -47,7 +47,6 @@ public sealed class CliJobTests
         float landingMax = root.GetProperty("character").GetProperty("landingSpeedMax").GetSingle();
         JsonElement jumps = root.GetProperty("jumps");
         Assert.That(jumps.GetArrayLength(), Is.GreaterThanOrEqualTo(3));
-        Vector3? previousLanding = null;
         foreach (JsonElement jump in jumps.EnumerateArray())
         {
             Vector3 p0 = Vec(jump.GetProperty("takeoff").GetProperty("position"));
@@ -63,12 +62,20 @@ public sealed class CliJobTests
             Assert.That(InCone(jump.GetProperty("takeoff").GetProperty("cone"), v0), Is.True, "takeoff velocity in the takeoff cone");
             Assert.That(InCone(jump.GetProperty("landing").GetProperty("cone"), -v1), Is.True, "reversed landing velocity in the landing cone");
             Assert.That(jump.GetProperty("takeoff").GetProperty("contacts").GetArrayLength(), Is.GreaterThanOrEqualTo(2));
-            if (previousLanding is Vector3 landing)
+        }
+
+        // Each move (jump or walk) starts where the previous one ended.
+        Vector3? previousEnd = null;
+        foreach (JsonElement move in root.GetProperty("moves").EnumerateArray())
+        {
+            bool isJump = move.GetProperty("kind").GetString() == "jump";
+            Vector3 start = Vec(move.GetProperty(isJump ? "takeoff" : "from").GetProperty("position"));
+            if (previousEnd is Vector3 end)
             {
-                Assert.That(p0, Is.EqualTo(landing), "each jump starts where the previous one landed");
+                Assert.That(start, Is.EqualTo(end), "each move starts where the previous one ended");
             }
 
-            previousLanding = p1;
+            previousEnd = Vec(move.GetProperty(isJump ? "landing" : "to").GetProperty("position"));
         }
 
         string picture = File.ReadAllText(svg);

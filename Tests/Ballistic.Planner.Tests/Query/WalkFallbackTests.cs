@@ -1,6 +1,5 @@
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
@@ -24,14 +23,14 @@ public sealed class WalkFallbackTests
     public void AfterTwoRoundsOfFailedWalksTheRequestSearchesJumpsOnlyAndSucceeds()
     {
         (PlanningScene scene, Roadmap roadmap, JumpAnimator real) = Course.Value;
-        var animator = new WalkRefusingAnimator(new SimpleMoveAnimator(real));
-        AnimatedPlan plan = new AnimatedPlanner(scene, animator).Plan(roadmap, GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump });
+        var animator = new RefusingAnimator(new SimpleMoveAnimator(real), m => m is Walk, "cannot walk here");
+        AnimatedPlan plan = new AnimatedPlanner(scene, animator).Plan(roadmap, GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false });
         Assert.Multiple(() =>
         {
             Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
             Assert.That(plan.Result.Walks, Is.Empty, "jumps only in the end");
             Assert.That(plan.Result.Jumps, Is.Not.Empty);
-            Assert.That(animator.PathsWithWalks, Is.EqualTo(JumpRepair.WalkRounds), "two rounds with walks, then none");
+            Assert.That(animator.PathsRefused, Is.EqualTo(JumpRepair.WalkRounds), "two rounds with walks, then none");
             Assert.That(plan.Rounds, Is.EqualTo(JumpRepair.WalkRounds + 1));
             Assert.That(plan.Rejected, Is.Not.Empty);
             Assert.That(plan.Rejected.Select(r => r.Reason), Has.All.Contain("cannot walk here"));
@@ -42,11 +41,11 @@ public sealed class WalkFallbackTests
     public void TheRepairRecordSwitchesToJumpsOnlyAfterTwoRoundsWithAFailedWalk()
     {
         (PlanningScene scene, Roadmap roadmap, JumpAnimator real) = Course.Value;
-        PlanResult path = new PathQuery(scene, roadmap).Plan(GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump });
+        PlanResult path = new PathQuery(scene, roadmap).Plan(GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false });
         Assume.That(path.Walks, Is.Not.Empty);
         var repair = new JumpRepair();
-        var walking = new QuerySettings { Locomotion = Locomotion.WalkAndJump };
-        JumpAnimation refused = new WalkRefusingAnimator(new SimpleMoveAnimator(real)).Animate(path.Moves);
+        var walking = new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false };
+        JumpAnimation refused = new RefusingAnimator(new SimpleMoveAnimator(real), m => m is Walk, "cannot walk here").Animate(path.Moves);
         JumpAnimation clean = new SimpleMoveAnimator(real).Animate(path.Moves);
 
         Assert.That(repair.Adjust(walking).Locomotion, Is.EqualTo(Locomotion.WalkAndJump));
@@ -61,21 +60,5 @@ public sealed class WalkFallbackTests
         Assert.That(repair.Adjust(walking) with { Locomotion = Locomotion.WalkAndJump }, Is.EqualTo(walking), "nothing else changes");
         var jumpsOnly = new QuerySettings { Locomotion = Locomotion.Jump };
         Assert.That(repair.Adjust(jumpsOnly), Is.SameAs(jumpsOnly));
-    }
-
-    /// <summary>Animates like the inner double, with a problem on every walk.</summary>
-    private sealed class WalkRefusingAnimator(SimpleMoveAnimator inner) : IJumpAnimator
-    {
-        public int PathsWithWalks { get; private set; }
-
-        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
-        {
-            JumpAnimation a = inner.Animate(moves, frameRate);
-            List<JumpProblem> problems = [.. Enumerable.Range(0, moves.Count).Where(m => moves[m] is Walk).Select(m => new JumpProblem(m, "cannot walk here"))];
-            PathsWithWalks += problems.Count > 0 ? 1 : 0;
-            return new JumpAnimation(a.Model, moves, [.. Enumerable.Range(0, Math.Max(0, moves.Count - 1)).Select(_ => inner.Stance)], a.Frames, a.ContactPhases, problems, 0, 0);
-        }
-
-        public bool CanStand(PoseEvaluation pose) => inner.CanStand(pose);
     }
 }

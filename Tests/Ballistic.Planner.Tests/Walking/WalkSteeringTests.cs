@@ -183,6 +183,33 @@ public sealed class WalkSteeringTests
     }
 
     [Test]
+    public void TheWalkableDistanceEndsWhereTheGroundFailsAndRunsAllTheWayOnFlatGround()
+    {
+        // A floor up to x = 0, then a 1.5 m gap; another floor up to x = 0, then a 50° ramp.
+        var material = new LevelMaterial("ramp", null);
+        float rise = 2f * MathF.Tan(50f * MathF.PI / 180f);
+        Level gap = new LevelBuilder("gap").AddBox(new Vector3(-5f, -1f, -2f), new Vector3(0f, 0f, 2f)).AddBox(new Vector3(1.5f, -1f, -2f), new Vector3(5f, 0f, 2f)).Build();
+        Level ramp = new LevelBuilder("ramp")
+            .AddBox(new Vector3(-5f, -1f, -2f), new Vector3(0f, 0f, 2f))
+            .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(0f, 0f, 2f), new Vector3(2f, rise, 2f)), material)
+            .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(2f, rise, 2f), new Vector3(2f, rise, -2f)), material)
+            .Build();
+        WalkSteering overGap = PlanningScene.Create(gap, Skeleton).Walking;
+        WalkSteering upRamp = PlanningScene.Create(ramp, Skeleton).Walking;
+        var ground = new List<Vector3>();
+        Assert.Multiple(() =>
+        {
+            Assert.That(overGap.WalkableDistance(new Vector3(-3f, 0f, 0f), new Vector3(3f, 0f, 0f), ground), Is.InRange(3f - (2f * WalkSteering.SampleSpacing), 3f));
+            Assert.That(ground[0].X, Is.EqualTo(-3f).Within(1e-4f));
+            Assert.That(ground.Zip(ground.Skip(1)).Select(p => Vector3.Distance(p.First, p.Second)), Has.All.LessThanOrEqualTo(WalkSteering.PathSpacing + 1e-4f));
+            Assert.That(ground.Select(p => p.X), Has.All.LessThanOrEqualTo(0f), "ground points stop at the edge");
+            Assert.That(upRamp.WalkableDistance(new Vector3(-2f, 0f, 0f), new Vector3(2f, rise, 0f)), Is.InRange(2f - (3f * WalkSteering.SampleSpacing), 2f + WalkSteering.SampleSpacing));
+            Assert.That(overGap.WalkableDistance(new Vector3(-4f, 0f, 1f), new Vector3(-1f, 0f, -1f)), Is.EqualTo(MathF.Sqrt(13f)).Within(1e-4f), "flat all the way");
+            Assert.That(PlanningScene.Create(gap, CharacterPresets.Frog()).Walking.WalkableDistance(new Vector3(-3f, 0f, 0f), new Vector3(-1f, 0f, 0f)), Is.Zero, "the frog does not walk");
+        });
+    }
+
+    [Test]
     public void AnObstacleUnderTheTrunkOrALowCeilingStopsTheWalk()
     {
         Level Floor(Func<LevelBuilder, LevelBuilder> add) => add(new LevelBuilder("floor").AddBox(new Vector3(-5f, -1f, -3f), new Vector3(5f, 0f, 3f))).Build();

@@ -1,0 +1,241 @@
+using System.Numerics;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Planner.Query;
+
+/// <summary>
+/// Walk where you can, jump where you must, after the search: a jump of the path whose ground can be walked part of
+/// the way is cut down to what the ground requires. Its takeoff moves forward along the jump's line (seen from above)
+/// as far as the ground is walkable (<see cref="Walking.WalkSteering.WalkableDistance"/>), its landing back toward
+/// the takeoff likewise, and the path walks to the new takeoff and on from the new landing. The search costs a
+/// metre in the air less than a metre walked (a jump is faster), so it covers walkable ground in the air; a game
+/// character walks there and jumps over what it cannot walk.
+/// </summary>
+/// <remarks>
+/// The new stances are placed like a request's start and goal (<see cref="TrunkSampler.PlaceFacing"/>, facing the
+/// jump, passing the request's <see cref="QuerySettings.CanStand"/>), and every new move is checked by the same
+/// steering methods as the roadmap's: the walks by <see cref="Walking.WalkSteering.Steer"/>, the jump by
+/// <see cref="ParabolaSteering.Steer"/> (friction cones, speed limits, trunk sweep). The first pair of takeoff and
+/// landing that passes, most ground walked first, replaces the jump; a jump with none is kept. Moves set aside by
+/// the caller are never used. New stances get ids from a counter, in the order they are placed: deterministic for
+/// the same path and set-aside moves.
+/// </remarks>
+internal sealed class JumpTightener
+{
+    /// <summary>Jumps shorter than this (metres, horizontally between contact centres) are kept as they are.</summary>
+    public const float MinJumpDistance = 1f;
+
+    /// <summary>A new takeoff or landing stands at least this far (metres) back from where the walkable ground ends.</summary>
+    public const float EdgeMargin = 0.45f;
+
+    /// <summary>Candidate takeoffs (landings) are this far apart along the line, metres.</summary>
+    public const float CandidateSpacing = 0.3f;
+
+    /// <summary>Walks shorter than this (metres) are not added (turning in place at both ends, such a walk would shuffle more than it walks): the stance is not moved.</summary>
+    public const float MinWalk = 1f;
+
+    /// <summary>The new jump covers at least this much (metres, horizontally).</summary>
+    public const float MinFlight = 0.3f;
+
+    /// <summary>Candidate takeoffs (and landings) tried per jump, besides the jump's own.</summary>
+    public const int CandidatesPerSide = 4;
+
+    /// <summary>Pairs of takeoff and landing steered per jump at most.</summary>
+    public const int MaxJumpsTried = 12;
+
+    /// <summary>How close a new stance's contacts' centre comes to its point on the line.</summary>
+    private static readonly EndpointTolerance Placement = new(0.2f, 0.3f);
+
+    private readonly PlanningScene _scene;
+    private readonly ReachTest _reach;
+    private readonly List<Vector3> _ground = [];
+
+    /// <summary>Creates the tightener of a scene's jumps.</summary>
+    public JumpTightener(PlanningScene scene)
+    {
+        _scene = scene;
+        _reach = new ReachTest(scene.Steering.Limits);
+    }
+
+    /// <summary>
+    /// The path with each of its jumps cut down where the ground allows walking (see the class); the path itself when
+    /// nothing changes. New stances get ids from <paramref name="nextId"/> on.
+    /// </summary>
+    /// <param name="path">The path found, its moves in order.</param>
+    /// <param name="nextId">The first id free for new stances (the roadmap's node count + 2).</param>
+    /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
+    /// <param name="uncut">Jumps (takeoff id, landing id) to leave whole, or <c>null</c>.</param>
+    /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
+    /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is kept as it is.</param>
+    public List<Move> Tighten(List<Move> path, int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
+    {
+        var result = new List<Move>(path.Count);
+        foreach (Move move in path)
+        {
+            if (move is Jump jump && uncut?.Contains((jump.From.Id, jump.To.Id)) != true && !stop() && TightenOne(jump, ref nextId, rejected, canStand) is { } moves)
+            {
+                result.AddRange(moves);
+            }
+            else
+            {
+                result.Add(move);
+            }
+        }
+
+        return result;
+    }
+
+    /// <summary>Walk, shorter jump, walk (either walk may be absent) replacing <paramref name="jump"/>, or <c>null</c>.</summary>
+    private List<Move>? TightenOne(Jump jump, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    {
+        Vector3 a = Roadmap.CentreOf(jump.From);
+        Vector3 b = Roadmap.CentreOf(jump.To);
+        var across = new Vector2(b.X - a.X, b.Z - a.Z);
+        float distance = across.Length();
+        if (distance < MinJumpDistance)
+        {
+            return null;
+        }
+
+        float facing = MathF.Atan2(across.X, across.Y);
+        List<Vector3> forward = Candidates(a, b, distance);
+        List<Vector3> backward = Candidates(b, a, distance);
+        if (forward.Count == 0 && backward.Count == 0)
+        {
+            return null;
+        }
+
+        // Index 0 is the jump's own stance (no walk); 1.. the candidates, farthest from it first.
+        var takeoffs = new Candidate?[forward.Count + 1];
+        var landings = new Candidate?[backward.Count + 1];
+        takeoffs[0] = new Candidate(jump.From, null);
+        landings[0] = new Candidate(jump.To, null);
+
+        // Pairs by ground walked, most first (ties: the takeoff's farther).
+        var pairs = new List<(int T, int L, float Walked)>();
+        for (int t = 0; t <= forward.Count; t++)
+        {
+            for (int l = 0; l <= backward.Count; l++)
+            {
+                float walkedA = t == 0 ? 0f : Along(a, forward[t - 1]);
+                float walkedB = l == 0 ? 0f : Along(b, backward[l - 1]);
+                if ((t > 0 || l > 0) && walkedA + walkedB <= distance - MinFlight)
+                {
+                    pairs.Add((t, l, walkedA + walkedB));
+                }
+            }
+        }
+
+        pairs.Sort((x, y) => y.Walked != x.Walked ? y.Walked.CompareTo(x.Walked) : x.T.CompareTo(y.T));
+        int tried = 0;
+        foreach ((int t, int l, _) in pairs)
+        {
+            Candidate takeoff = takeoffs[t] ??= Place(forward[t - 1], facing, jump.From, toStance: true, ref nextId, rejected, canStand);
+            if (takeoff.Node is not RoadmapNode from)
+            {
+                continue;
+            }
+
+            Candidate landing = landings[l] ??= Place(backward[l - 1], facing, jump.To, toStance: false, ref nextId, rejected, canStand);
+            if (landing.Node is not RoadmapNode to)
+            {
+                continue;
+            }
+
+            if (rejected?.Contains((from.Id, to.Id)) == true || !_reach.InReach(from.Pose.Position, to.Pose.Position))
+            {
+                continue;
+            }
+
+            if (++tried > MaxJumpsTried)
+            {
+                break;
+            }
+
+            SteeringResult steered = _scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone);
+            if (!steered.Succeeded)
+            {
+                continue;
+            }
+
+            (int, int)[] cut = [(jump.From.Id, jump.To.Id)];
+            var moves = new List<Move>(3);
+            if (takeoff.Walk is Walk before)
+            {
+                moves.Add(before with { CutFrom = cut });
+            }
+
+            moves.Add(new Jump(from, to, steered.Arc) { CutFrom = cut });
+            if (landing.Walk is Walk after)
+            {
+                moves.Add(after with { CutFrom = cut });
+            }
+
+            return moves;
+        }
+
+        return null;
+    }
+
+    /// <summary>A stance on the line: the node, and the walk linking it to the jump's own stance (<c>null</c> for the jump's own); <see cref="Node"/> null when none could be placed or walked to.</summary>
+    private readonly record struct Candidate(RoadmapNode? Node, Walk? Walk);
+
+    /// <summary>
+    /// Ground points on the line from <paramref name="from"/> toward <paramref name="toward"/> where a moved stance
+    /// may stand: at most <see cref="CandidatesPerSide"/>, farthest first, from <see cref="EdgeMargin"/> short of
+    /// where the walkable ground ends back to <see cref="MinWalk"/>, <see cref="CandidateSpacing"/> apart.
+    /// </summary>
+    private List<Vector3> Candidates(Vector3 from, Vector3 toward, float distance)
+    {
+        var result = new List<Vector3>();
+        float walkable = MathF.Min(_scene.Walking.WalkableDistance(from, toward, _ground), distance - MinFlight);
+        for (float s = walkable - EdgeMargin; s >= MinWalk && result.Count < CandidatesPerSide; s -= CandidateSpacing)
+        {
+            // The ground point at s: the traced points are at most PathSpacing apart along the line.
+            Vector3 best = _ground[0];
+            foreach (Vector3 p in _ground)
+            {
+                if (MathF.Abs(Along(from, p) - s) < MathF.Abs(Along(from, best) - s))
+                {
+                    best = p;
+                }
+            }
+
+            if (result.Count == 0 || result[^1] != best)
+            {
+                result.Add(best);
+            }
+        }
+
+        return result;
+    }
+
+    private static float Along(Vector3 from, Vector3 p) => new Vector2(p.X - from.X, p.Z - from.Z).Length();
+
+    /// <summary>
+    /// A stance placed at <paramref name="point"/> facing <paramref name="facing"/>, with the walk from
+    /// <paramref name="own"/> to it (<paramref name="toStance"/>: a takeoff) or from it to <paramref name="own"/>
+    /// (a landing); a candidate with no node when it cannot be placed or walked, or its walk is set aside.
+    /// </summary>
+    private Candidate Place(Vector3 point, float facing, RoadmapNode own, bool toStance, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    {
+        EndpointPlacement placed = _scene.Sampler.PlaceFacing(point, Placement, facing, canStand);
+        if (placed.Pose is not { } pose)
+        {
+            return new Candidate(null, null);
+        }
+
+        var node = new RoadmapNode(nextId++, pose.Pose, pose.Cone, pose.Contacts);
+        (RoadmapNode first, RoadmapNode second) = toStance ? (own, node) : (node, own);
+        if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.Steer(first, second).Walk is not Walk walk)
+        {
+            return new Candidate(null, null);
+        }
+
+        return new Candidate(node, walk);
+    }
+}
