@@ -1002,6 +1002,24 @@ internal sealed class WalkGait
         }
 
         /// <summary>
+        /// True when limb <paramref name="limb"/>, its angles halfway between <paramref name="before"/> (fine step
+        /// <paramref name="i"/> − 1) and <paramref name="after"/> (step <paramref name="i"/>) with the trunk halfway too,
+        /// as a player shows it between the two, is in the level (away from <paramref name="contact"/>, the point it
+        /// leaves or touches down on at either step, when not <c>null</c>).
+        /// </summary>
+        private bool MidwayCollides(RigLimb limb, int i, float[] before, float[] after, Vector3? contact)
+        {
+            float[] mid = (float[])after.Clone();
+            foreach (int d in limb.ChainDofs)
+            {
+                mid[d] = float.Lerp(before[d], after[d], 0.5f);
+            }
+
+            _rig.Solve(_walk.PoseAt(0.5f * (Time(i - 1) + Time(i))), mid, _positions, _rotations);
+            return _gait._collision.LimbCollides(limb, _positions, _rotations, contact);
+        }
+
+        /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
         /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
         /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
@@ -1085,9 +1103,25 @@ internal sealed class WalkGait
 
                     if (i == b && contact1 is not null)
                     {
-                        // Touch-down exactly on the foothold.
+                        // Touch-down exactly on the foothold: from the angles of the step before when the leg can (no
+                        // jump to another IK solution between the two), else from the foothold's.
                         Vector3 n = Vector3.Normalize(n1);
-                        bool solved = _gait.Hold(_roots[i], trial, limb, p1, -n);
+                        float[] along = (float[])trial.Clone();
+                        foreach (int d in limb.ChainDofs)
+                        {
+                            along[d] = q[d];
+                        }
+
+                        bool solved = _gait.Hold(_roots[i], along, limb, p1, -n);
+                        if (solved)
+                        {
+                            trial = along;
+                        }
+                        else
+                        {
+                            solved = _gait.Hold(_roots[i], trial, limb, p1, -n);
+                        }
+
                         failures += solved ? 0 : 1;
                     }
                     else if (i > a && i < b && onCurve)
@@ -1104,6 +1138,11 @@ internal sealed class WalkGait
                     Vector3? near = i == a ? contact0 : i == b ? contact1 : null;
                     if (_gait._collision.LimbCollides(limb, _positions, _rotations, near))
                     {
+                        failures++;
+                    }
+                    else if (i > a && MidwayCollides(limb, i, q, trial, i - 1 == a ? contact0 : i == b ? contact1 : null))
+                    {
+                        // Played between the two steps (angles interpolated), the limb must be clear too.
                         failures++;
                     }
 

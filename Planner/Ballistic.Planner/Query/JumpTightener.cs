@@ -35,9 +35,6 @@ internal sealed class JumpTightener
     /// <summary>Candidate takeoffs (landings) are this far apart along the line, metres.</summary>
     public const float CandidateSpacing = 0.3f;
 
-    /// <summary>Walks shorter than this (metres) are not added (turning in place at both ends, such a walk would shuffle more than it walks): the stance is not moved.</summary>
-    public const float MinWalk = 1f;
-
     /// <summary>The new jump covers at least this much (metres, horizontally).</summary>
     public const float MinFlight = 0.3f;
 
@@ -68,15 +65,16 @@ internal sealed class JumpTightener
     /// <param name="path">The path found, its moves in order.</param>
     /// <param name="nextId">The first id free for new stances (the roadmap's node count + 2).</param>
     /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
+    /// <param name="minWalk">Shortest walk (metres, horizontally) a cut adds; a stance is not moved less.</param>
     /// <param name="uncut">Jumps (takeoff id, landing id) to leave whole, or <c>null</c>.</param>
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is kept as it is.</param>
-    public List<Move> Tighten(List<Move> path, int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
+    public List<Move> Tighten(List<Move> path, int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
     {
         var result = new List<Move>(path.Count);
         foreach (Move move in path)
         {
-            if (move is Jump jump && uncut?.Contains((jump.From.Id, jump.To.Id)) != true && !stop() && TightenOne(jump, ref nextId, rejected, canStand) is { } moves)
+            if (move is Jump jump && uncut?.Contains((jump.From.Id, jump.To.Id)) != true && !stop() && TightenOne(jump, minWalk, ref nextId, rejected, canStand) is { } moves)
             {
                 result.AddRange(moves);
             }
@@ -90,7 +88,7 @@ internal sealed class JumpTightener
     }
 
     /// <summary>Walk, shorter jump, walk (either walk may be absent) replacing <paramref name="jump"/>, or <c>null</c>.</summary>
-    private List<Move>? TightenOne(Jump jump, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    private List<Move>? TightenOne(Jump jump, float minWalk, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
         Vector3 a = Roadmap.CentreOf(jump.From);
         Vector3 b = Roadmap.CentreOf(jump.To);
@@ -102,8 +100,8 @@ internal sealed class JumpTightener
         }
 
         float facing = MathF.Atan2(across.X, across.Y);
-        List<Vector3> forward = Candidates(a, b, distance);
-        List<Vector3> backward = Candidates(b, a, distance);
+        List<Vector3> forward = Candidates(a, b, distance, minWalk);
+        List<Vector3> backward = Candidates(b, a, distance, minWalk);
         if (forward.Count == 0 && backward.Count == 0)
         {
             return null;
@@ -187,13 +185,13 @@ internal sealed class JumpTightener
     /// <summary>
     /// Ground points on the line from <paramref name="from"/> toward <paramref name="toward"/> where a moved stance
     /// may stand: at most <see cref="CandidatesPerSide"/>, farthest first, from <see cref="EdgeMargin"/> short of
-    /// where the walkable ground ends back to <see cref="MinWalk"/>, <see cref="CandidateSpacing"/> apart.
+    /// where the walkable ground ends back to <paramref name="minWalk"/>, <see cref="CandidateSpacing"/> apart.
     /// </summary>
-    private List<Vector3> Candidates(Vector3 from, Vector3 toward, float distance)
+    private List<Vector3> Candidates(Vector3 from, Vector3 toward, float distance, float minWalk)
     {
         var result = new List<Vector3>();
         float walkable = MathF.Min(_scene.Walking.WalkableDistance(from, toward, _ground), distance - MinFlight);
-        for (float s = walkable - EdgeMargin; s >= MinWalk && result.Count < CandidatesPerSide; s -= CandidateSpacing)
+        for (float s = walkable - EdgeMargin; s >= minWalk && result.Count < CandidatesPerSide; s -= CandidateSpacing)
         {
             // The ground point at s: the traced points are at most PathSpacing apart along the line.
             Vector3 best = _ground[0];

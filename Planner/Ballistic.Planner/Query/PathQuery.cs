@@ -368,7 +368,7 @@ public sealed class PathQuery
             if (settings.TightenJumps)
             {
                 _tightener ??= new JumpTightener(_scene);
-                path = _tightener.Tighten(path, n + 2, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
+                path = _tightener.Tighten(path, n + 2, settings.MinCutWalk, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
                 path = Shortcut(path, settings, rejected, walksOnly: true);
             }
 

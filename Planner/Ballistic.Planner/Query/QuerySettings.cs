@@ -75,6 +75,20 @@ public sealed record QuerySettings
     public bool TightenJumps { get; init; } = true;
 
     /// <summary>
+    /// The shortest walk (metres, horizontally) <see cref="TightenJumps"/> adds before or after a jump: a stance is not
+    /// moved less than this. A walk turns in place at both ends, so a shorter one shuffles more than it walks.
+    /// Positive; 1 m by default.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">Set to a value that is not a finite positive number.</exception>
+    public float MinCutWalk
+    {
+        get => _minCutWalk;
+        init => _minCutWalk = value > 0f && float.IsFinite(value) ? value : throw new ArgumentOutOfRangeException(nameof(MinCutWalk), value, "The shortest walk a cut adds must be a finite positive number of metres.");
+    }
+
+    private readonly float _minCutWalk = 1f;
+
+    /// <summary>
     /// Jumps (takeoff id, landing id, as searched) <see cref="TightenJumps"/> must leave whole: those whose cut-down
     /// moves did not animate (<see cref="JumpRepair"/> fills it); <c>null</c> for none.
     /// </summary>

@@ -1,6 +1,12 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Animation;
 
@@ -49,5 +55,36 @@ public sealed class WalkGaitTests
         Assert.That(slide, Is.False, "a foot slides to a new contact");
         Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
         Assert.That(animation.ContactPhases.Select(p => p.Limb).Distinct().Count(), Is.EqualTo(2), "both feet stand");
+    }
+
+    [Test]
+    public void ALegThatWouldPassThroughTheGroundBetweenTwoStepsIsReportedNeverPlayedAsClean()
+    {
+        // Found by the audit (sampling at 120 Hz, between the gait's fine steps): on another tool's thin slabs, a
+        // Z-up human's short walks after and before a jump; the leg's IK jumped to another solution one fine step before
+        // touch-down, and played between the two steps the toe went 3 to 9 cm into the slab. The gait now checks each
+        // swing between its steps as a player shows it, so such a walk is a problem and the plan does without it.
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-flip-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(folder);
+        try
+        {
+            (string gltf, string spec) = ForeignCharacters.Human(zUpScene: true).Write(folder);
+            (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, spec);
+            (Level level, _) = ForeignLevels.Get("thin-slabs");
+            Sweep.Setup setup = Sweep.Prepare("thin-slabs", level, model, reduced);
+            foreach ((Vector3 from, Vector3 to) in new[] { (new Vector3(-3f, 0.62f, 0f), new Vector3(0.5f, 0.95f, 0f)), (new Vector3(6f, 0f, 4f), new Vector3(4f, 0.5f, 4f)) })
+            {
+                var bake = new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true, CanStand = setup.Planner.Animator.CanStand };
+                Roadmap roadmap = new RoadmapBaker(setup.Scene).Bake(bake).Roadmap;
+                AnimatedPlan plan = setup.Planner.Plan(roadmap, from, to, new QuerySettings { MinCutWalk = 0.4f });
+                AuditReport audit = PlanAudit.Check("thin slabs", setup.Scene, from, to, plan.Result, plan.Animation);
+                Assert.That(audit.WrongAnswer, Is.False, audit.ToString());
+                Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            }
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
     }
 }
