@@ -76,7 +76,7 @@ internal static class PlaytestCommand
                 }
 
                 map = bake.Roadmap;
-                stdout.WriteLine($"roadmap: baked {map.Nodes.Count} nodes, {map.Edges.Count} jumps in {bake.Elapsed.TotalSeconds:0.##} s (seed {settings.Seed})");
+                stdout.WriteLine($"roadmap: baked {map.Nodes.Count} nodes, {map.Edges.Count} jumps, {map.Walks.Count} walks in {bake.Elapsed.TotalSeconds:0.##} s (seed {settings.Seed})");
                 if (map.Nodes.Count == 0)
                 {
                     stderr.WriteLine($"error: no roadmap to playtest on: {bake.Reason}.");
@@ -97,7 +97,7 @@ internal static class PlaytestCommand
             OutputFile.Write(stem + ".png", PlaytestMapRenderer.Png(result));
             IReadOnlyList<double> times = result.TimesToReach;
             stdout.WriteLine($"agents: {result.Agents.Count} for {result.Ticks / (double)settings.TickRate:0.#} s ({result.Ticks} ticks) in {result.WallSeconds:0.##} s wall time{(result.Cancelled ? ", cancelled" : "")}");
-            stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps taken");
+            stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps and {result.WalksTaken} walks ({result.WalkedMetres:0.#} m) taken");
             if (times.Count > 0)
             {
                 stdout.WriteLine($"time to reach: median {times[times.Count / 2]:0.##} s, max {times[^1]:0.##} s");

@@ -59,13 +59,13 @@ internal sealed class JumpTightener
     }
 
     /// <summary>
-    /// The path with each of its jumps cut down where the ground allows walking (see the class); the path itself when
-    /// nothing changes. New stances get ids from <paramref name="nextId"/> on.
+    /// The moves of <paramref name="path"/> in a new list, each jump cut down where the ground allows walking (see the
+    /// class). New stances get ids from <paramref name="nextId"/> on.
     /// </summary>
     /// <param name="path">The path found, its moves in order.</param>
     /// <param name="nextId">The first id free for new stances (the roadmap's node count + 2).</param>
-    /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
     /// <param name="minWalk">Shortest walk (metres, horizontally) a cut adds; a stance is not moved less.</param>
+    /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
     /// <param name="uncut">Jumps (takeoff id, landing id) to leave whole, or <c>null</c>.</param>
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is kept as it is.</param>
@@ -113,7 +113,7 @@ internal sealed class JumpTightener
         takeoffs[0] = new Candidate(jump.From, null);
         landings[0] = new Candidate(jump.To, null);
 
-        // Pairs by ground walked, most first (ties: the takeoff's farther).
+        // Pairs by ground walked, most first (ties: the lower takeoff index first).
         var pairs = new List<(int T, int L, float Walked)>();
         for (int t = 0; t <= forward.Count; t++)
         {
