@@ -138,8 +138,9 @@ public sealed class TrunkSampler
     /// <summary>
     /// Places a stance near <paramref name="point"/> as <see cref="Place(Vector3, EndpointTolerance, Func{PoseEvaluation, bool}?)"/>
     /// does, trying the yaw <paramref name="facing"/> first and then yaws turned from it by eighths of a turn (0, +45°,
-    /// −45°, +90°, …), so that the stance faces that way when it can. Used for the stances a plan adds on its way
-    /// (a jump's takeoff moved forward along walkable ground). Does not search beyond the tolerance:
+    /// −45°, +90°, …), and the stance range's upper lifts first (three quarters up, then the top): the first pose found
+    /// within the tolerance is taken, so the stance faces that way and stands tall, as a walker does, when it can. Used for the stances a plan adds on its
+    /// way (a jump's takeoff moved forward along walkable ground). Does not search beyond the tolerance:
     /// <see cref="EndpointPlacement.Pose"/> is <c>null</c> when nothing stands within it.
     /// </summary>
     /// <param name="point">The point, world metres, on or near a surface.</param>
@@ -212,7 +213,7 @@ public sealed class TrunkSampler
                                 if (score < bestScore && canStand?.Invoke(pose) != false)
                                 {
                                     (best, bestCentre, bestScore) = (pose, centre, score);
-                                    if (score <= GoodEnough)
+                                    if (score <= (facing is null ? GoodEnough : 1f))
                                     {
                                         return Placed();
                                     }

@@ -54,6 +54,32 @@ public sealed class EndpointPlacementTests
         AssertWithin(placed, point, 0.1f, 0.05f);
     }
 
+    /// <summary>Two floors with a 2 m wide hole between them (x from −1 to 1), for the skeleton.</summary>
+    private static PlanningScene BesideAHole() =>
+        PlanningScene.Create(new LevelBuilder("hole").AddFloor(-6f, -6f, -1f, 6f, 0f).AddFloor(1f, -6f, 6f, 6f, 0f).Build(), CharacterPresets.Skeleton());
+
+    [Test]
+    public void APlacementFacingAWayFacesItStandsTallAndDoesNotSearchBeyondTheTolerance()
+    {
+        PlanningScene scene = BesideAHole();
+        var tolerance = new EndpointTolerance(0.3f, 0.25f);
+        foreach (float degrees in new[] { 0f, 60f, -135f })
+        {
+            float yaw = degrees * MathF.PI / 180f;
+            EndpointPlacement placed = scene.Sampler.PlaceFacing(new Vector3(-3f, 0f, 1f), tolerance, yaw);
+            Assert.That(placed.Placed, Is.True, placed.Failure("stance", tolerance));
+            Vector3 forward = placed.Pose!.Pose.Forward;
+            Assert.That(Vector3.Dot(Vector3.Normalize(new Vector3(forward.X, 0f, forward.Z)), new Vector3(MathF.Sin(yaw), 0f, MathF.Cos(yaw))), Is.GreaterThan(0.999f), $"faces {degrees}°");
+            EndpointPlacement start = scene.Sampler.Place(new Vector3(-3f, 0f, 1f), tolerance);
+            Assert.That(placed.Pose.Pose.Position.Y, Is.GreaterThan(start.Pose!.Pose.Position.Y), "taller than a start placed there");
+        }
+
+        EndpointPlacement overHole = scene.Sampler.PlaceFacing(new Vector3(0f, 0f, 0f), tolerance, 0f);
+        Assert.That(overHole.Placed, Is.False);
+        Assert.That(overHole.NearestValid, Is.Null, "no search beyond the tolerance");
+        Assert.That(() => scene.Sampler.PlaceFacing(Vector3.Zero, tolerance, float.NaN), Throws.ArgumentException);
+    }
+
     [Test]
     public void APointWithNoStanceWithinToleranceSaysHowFarTheNearestIs()
     {
@@ -64,11 +90,7 @@ public sealed class EndpointPlacementTests
         Assert.That(placed.NearestValid, Is.Null.Or.GreaterThan(0.25f));
 
         // Beside a 2 m wide hole with 0.3 m tolerance: the nearest stance is found beyond it, and its distance told.
-        Level hole = new LevelBuilder("hole")
-            .AddFloor(-6f, -6f, -1f, 6f, 0f)
-            .AddFloor(1f, -6f, 6f, 6f, 0f)
-            .Build();
-        var scene = PlanningScene.Create(hole, CharacterPresets.Skeleton());
+        PlanningScene scene = BesideAHole();
         var tolerance = new EndpointTolerance(0.3f, 0.25f);
         EndpointPlacement overHole = scene.Sampler.Place(new Vector3(0f, 0f, 0f), tolerance);
         Assert.That(overHole.Placed, Is.False);
