@@ -285,6 +285,23 @@ internal sealed class WalkGait
                 }
             }
 
+            // A walker always has a foot on the ground: a moment with every foot in the air is a problem (the
+            // schedule assumes every foot ends on a contact; a foot the next jump takes off without may swing free
+            // while the others make their last step).
+            int[] feet = [.. Enumerable.Range(0, _limbs).Where(IsFoot)];
+            if (feet.Length >= 2)
+            {
+                for (int i = 0; i <= _steps; i++)
+                {
+                    float t = Time(i);
+                    if (!_phases.Any(p => IsFoot(p.Limb) && t >= p.From - 1e-4f && t <= p.To + 1e-4f))
+                    {
+                        Fail(feet[0], "is in the air with every other foot", i);
+                        break;
+                    }
+                }
+            }
+
             // Frames at every fine step; bones of no limb are checked on each.
             var frames = new AnimationFrame[_steps + 1];
             bool trunkReported = false;

@@ -87,4 +87,29 @@ public sealed class WalkGaitTests
             Directory.Delete(folder, recursive: true);
         }
     }
+
+    [TestCase("left_foot")]
+    [TestCase("right_foot")]
+    public void AWalkEndingWithAFootFreeNeverLeavesEveryFootInTheAirUnreported(string freeFoot)
+    {
+        // The next jump may take off without one foot. Whichever group swings last, every moment has a foot on the
+        // ground or the gait says it has not.
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        RoadmapNode from = world.Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(new Vector3(-4.4f, 0f, -0.2f), 1, Vector3.UnitX);
+        Walk walk = world.Walk(from, to);
+        ContactGenerator contacts = world.Animator.Contacts;
+        ContactConfiguration start = contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis);
+        ContactConfiguration full = contacts.Generate(to.Pose, to.Contacts, to.Cone.Axis);
+        int foot = Enumerable.Range(0, world.Model.Limbs.Count).Single(l => world.Model.Limbs[l].Name == freeFoot);
+        Assume.That(full.Contacts.Any(c => c.Limb == foot), Is.True);
+        ContactConfiguration end = full with { Contacts = [.. full.Contacts.Where(c => c.Limb != foot)] };
+        WalkGait.Clip clip = new WalkGait(world.Scene, world.Model, contacts).Animate(0, walk, start, end, 60f);
+        bool reported = clip.Problems.Any(p => p.Reason.Contains("in the air with every other foot", StringComparison.Ordinal));
+        int[] feet = [.. Enumerable.Range(0, world.Model.Limbs.Count).Where(l => world.Model.Limbs[l].Kind == LimbKind.Foot)];
+        bool everyMomentHeld = clip.Frames.All(f => clip.Phases.Any(p => feet.Contains(p.Limb) && f.Time >= p.From - 1e-4f && f.Time <= p.To + 1e-4f));
+        TestContext.Out.WriteLine($"{freeFoot} free at the end: {(everyMomentHeld ? "a foot down throughout" : "a moment with no foot down")}; problems: {string.Join("; ", clip.Problems.Select(p => p.Reason))}");
+        Assert.That(everyMomentHeld || reported, Is.True, "every foot in the air at some moment, and the gait said nothing");
+        Assert.That(reported, Is.EqualTo(!everyMomentHeld), "reported exactly when it happens");
+    }
 }
