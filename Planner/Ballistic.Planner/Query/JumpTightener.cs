@@ -193,14 +193,18 @@ internal sealed class JumpTightener
         float walkable = MathF.Min(_scene.Walking.WalkableDistance(from, toward, _ground), distance - MinFlight);
         for (float s = walkable - EdgeMargin; s >= minWalk && result.Count < CandidatesPerSide; s -= CandidateSpacing)
         {
-            // The ground point at s: the traced points are at most PathSpacing apart along the line.
+            // The traced ground point nearest s along the line (the points are at most PathSpacing apart, in order).
             Vector3 best = _ground[0];
+            float off = float.PositiveInfinity;
             foreach (Vector3 p in _ground)
             {
-                if (MathF.Abs(Along(from, p) - s) < MathF.Abs(Along(from, best) - s))
+                float d = MathF.Abs(Along(from, p) - s);
+                if (d >= off)
                 {
-                    best = p;
+                    break;
                 }
+
+                (best, off) = (p, d);
             }
 
             if (result.Count == 0 || result[^1] != best)
