@@ -784,7 +784,7 @@ internal sealed class WalkGait
             Vector3 along = Vector3.Dot(across, heading) * heading;
             Vector3 lateral = across - along;
             WalkingLimits walking = _gait._scene.Character.Walking;
-            float slope = MathF.Tan(walking.MaxSlopeDegrees * MathF.PI / 180f);
+            float slope = walking.MaxGrade;
             (Vector3 Point, Vector3 Normal)? grounded = null;
             int mid = Step(time);
 
@@ -807,7 +807,8 @@ internal sealed class WalkGait
                     || MathF.Abs(hit.Point.Y - ground.Y) > reach
                     || _gait._scene.Surfaces.SurfaceOf(hit.Triangle) < 0
                     || !limb.Filter.Accepts(hit.Normal)
-                    || hit.Normal.Y < walking.MinGroundCosine - 1e-3f)
+                    || hit.Normal.Y <= 0f
+                    || !walking.IsWalkable(hit.Normal, heading))
                 {
                     continue;
                 }

@@ -189,6 +189,11 @@ public sealed class ReducedCharacter
         {
             hash.AppendData("walking"u8);
             Append(hash, Walking.Speed, Walking.MaxSlopeDegrees, Walking.StepHeight);
+            if (Walking.MaxSlopeAlongDegrees != Walking.MaxSlopeDegrees)
+            {
+                // Characters whose limit is the same whichever way the ground falls keep the fingerprint they had.
+                Append(hash, Walking.MaxSlopeAlongDegrees);
+            }
         }
 
         return Convert.ToHexStringLower(hash.GetHashAndReset());

@@ -1,14 +1,21 @@
+using System.Numerics;
+
 namespace Ballistic.Planner.Characters;
 
 /// <summary>
 /// How a character walks: its walking speed, the steepest ground it walks on and the highest step it takes. A
-/// character with a <see cref="Speed"/> of zero never walks (it only jumps, as in the paper).
+/// character with a <see cref="Speed"/> of zero never walks (it only jumps, as in the paper). Ground is walked on when
+/// it is no steeper than <see cref="MaxSlopeDegrees"/>, or when it is walked straight up or down: no steeper than
+/// <see cref="MaxSlopeAlongDegrees"/>, falling to the side (across the walk) by at most <see cref="MaxSlopeDegrees"/>
+/// (<see cref="IsWalkable"/>). Feet follow a slope ahead further than one to the side: an ankle bends more than it rolls.
 /// </summary>
 /// <param name="Speed">Walking speed of the trunk along the ground, m/s; 0: the character does not walk.</param>
-/// <param name="MaxSlopeDegrees">Steepest ground walked on, degrees from horizontal (0 to 80).</param>
+/// <param name="MaxSlopeDegrees">Steepest ground walked on in any direction, degrees from horizontal (0 to 80).</param>
 /// <param name="StepHeight">Highest rise or drop of the ground taken in one step, metres.</param>
 public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float StepHeight)
 {
+    private readonly float? _maxSlopeAlong;
+
     /// <summary>The walking speed as a share of √(g·leg length) squared (a Froude number of 0.25: a relaxed walk).</summary>
     public const float Froude = 0.25f;
 
@@ -24,8 +31,45 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// <summary>True when the character walks (<see cref="Speed"/> &gt; 0).</summary>
     public bool CanWalk => Speed > 0f;
 
-    /// <summary>Cosine of <see cref="MaxSlopeDegrees"/>: the least world-up component of a walkable ground normal.</summary>
-    public float MinGroundCosine => MathF.Cos(MaxSlopeDegrees * MathF.PI / 180f);
+    /// <summary>
+    /// Steepest ground walked straight up or down, degrees from horizontal (<see cref="MaxSlopeDegrees"/> to 80): its
+    /// slope across the walk (the part falling to the character's side) stays within <see cref="MaxSlopeDegrees"/>.
+    /// Unless set, <see cref="MaxSlopeDegrees"/>: the same limit whichever way the ground falls.
+    /// </summary>
+    public float MaxSlopeAlongDegrees
+    {
+        get => _maxSlopeAlong ?? MaxSlopeDegrees;
+        init => _maxSlopeAlong = value;
+    }
+
+    /// <summary>
+    /// True when ground of unit normal <paramref name="normal"/> (world, Y up; either side) can be walked on heading
+    /// <paramref name="heading"/> (world; only its horizontal part matters): its slope is within
+    /// <see cref="MaxSlopeAlongDegrees"/> and its slope across the heading within <see cref="MaxSlopeDegrees"/>. With
+    /// no horizontal heading, only <see cref="MaxSlopeDegrees"/> applies.
+    /// </summary>
+    public bool IsWalkable(Vector3 normal, Vector3 heading)
+    {
+        float up = MathF.Abs(normal.Y);
+        if (up >= MathF.Cos(MaxSlopeDegrees * MathF.PI / 180f))
+        {
+            return true;
+        }
+
+        var ahead = new Vector2(heading.X, heading.Z);
+        float length = ahead.Length();
+        if (up < MathF.Cos(MaxSlopeAlongDegrees * MathF.PI / 180f) || !(length > 1e-6f))
+        {
+            return false;
+        }
+
+        // The part of the ground's fall across the heading: the normal's horizontal part along the side axis.
+        float side = MathF.Abs(((normal.X * ahead.Y) - (normal.Z * ahead.X)) / length);
+        return side <= up * MathF.Tan(MaxSlopeDegrees * MathF.PI / 180f);
+    }
+
+    /// <summary>Tangent of <see cref="MaxSlopeAlongDegrees"/>: the most the ground rises or drops per metre walked.</summary>
+    public float MaxGrade => MathF.Tan(MaxSlopeAlongDegrees * MathF.PI / 180f);
 
     /// <summary>
     /// Walking derived from a leg: speed √(<see cref="Froude"/>·g·<paramref name="legLength"/>) (about 1.5 m/s for a
@@ -42,6 +86,7 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     public string? Problem() =>
         !(Speed >= 0f) || !float.IsFinite(Speed) || Speed > 100f ? $"the walking speed must lie between 0 and 100 m/s, not {Speed}"
         : !(MaxSlopeDegrees >= 0f) || MaxSlopeDegrees > 80f ? $"the steepest walkable slope must lie between 0 and 80 degrees, not {MaxSlopeDegrees}"
+        : !(MaxSlopeAlongDegrees >= MaxSlopeDegrees) || MaxSlopeAlongDegrees > 80f ? $"the steepest slope walked up or down must lie between the steepest walkable slope ({MaxSlopeDegrees}) and 80 degrees, not {MaxSlopeAlongDegrees}"
         : !(StepHeight >= 0f) || !float.IsFinite(StepHeight) || StepHeight > 100f ? $"the step height must lie between 0 and 100 m, not {StepHeight}"
         : CanWalk && StepHeight <= 0f ? "a walking character needs a positive step height"
         : null;

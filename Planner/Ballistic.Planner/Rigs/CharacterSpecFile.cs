@@ -190,6 +190,7 @@ public static class CharacterSpecFile
             ["friction"] = reduced.Friction,
             ["walkSpeed"] = reduced.Walking.Speed,
             ["maxSlope"] = reduced.Walking.MaxSlopeDegrees,
+            ["maxSlopeAlong"] = reduced.Walking.MaxSlopeAlongDegrees,
             ["stepHeight"] = reduced.Walking.StepHeight,
             ["trunkBones"] = new JsonArray([.. model.TrunkJoints.Select(j => (JsonNode)JsonValue.Create(rig.Joints[j].Name))]),
             ["limbs"] = limbs,
@@ -357,12 +358,21 @@ public static class CharacterSpecFile
             };
         }
 
-        if (spec.WalkSpeed is not null || spec.MaxSlope is not null || spec.StepHeight is not null)
+        if (spec.WalkSpeed is not null || spec.MaxSlope is not null || spec.MaxSlopeAlong is not null || spec.StepHeight is not null)
         {
             WalkingLimits derived = reduced.Walking;
             float speed = spec.WalkSpeed ?? derived.Speed;
             float step = spec.StepHeight ?? (derived.StepHeight > 0f ? derived.StepHeight : WalkingLimits.StepShare * reduced.StanceLift.Max);
-            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, spec.MaxSlope ?? derived.MaxSlopeDegrees, step)));
+            float slope = spec.MaxSlope ?? derived.MaxSlopeDegrees;
+
+            // A spec that sets maxSlope alone gets one limit whichever way the ground falls.
+            float along = spec.MaxSlopeAlong ?? (spec.MaxSlope is not null ? slope : MathF.Max(slope, derived.MaxSlopeAlongDegrees));
+            if (along < slope)
+            {
+                throw Error("key 'maxSlopeAlong'", $"{along} degrees is below the steepest slope walked any way ({slope} degrees, {(spec.MaxSlope is null ? "derived from the rig" : "key 'maxSlope'")}); give at least that.");
+            }
+
+            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, slope, step) { MaxSlopeAlongDegrees = along }));
         }
 
         return (model, reduced);

@@ -20,6 +20,7 @@ internal sealed record CharacterSpec(
     float? Friction,
     float? WalkSpeed,
     float? MaxSlope,
+    float? MaxSlopeAlong,
     float? StepHeight,
     IReadOnlyList<string>? TrunkBones,
     IReadOnlyList<LimbSpec> Limbs,
@@ -51,7 +52,7 @@ internal sealed class CharacterSpecReader
     /// <summary>The widest joint limit a spec may give, degrees either way.</summary>
     internal const float MaxDegrees = 360f;
 
-    private static readonly string[] TopKeys = ["schema", "name", "upAxis", "forwardAxis", "requiredContacts", "takeoffSpeedMax", "landingSpeedMax", "friction", "walkSpeed", "maxSlope", "stepHeight", "trunkBones", "limbs", "joints", "boneRadius", "boneRadii", "poses"];
+    private static readonly string[] TopKeys = ["schema", "name", "upAxis", "forwardAxis", "requiredContacts", "takeoffSpeedMax", "landingSpeedMax", "friction", "walkSpeed", "maxSlope", "maxSlopeAlong", "stepHeight", "trunkBones", "limbs", "joints", "boneRadius", "boneRadii", "poses"];
     private static readonly string[] LimbKeys = ["rootBone", "effectorBone", "effectorOffset", "contactNormal", "contact", "normalFilter"];
     private static readonly string[] FilterKeys = ["direction", "minCosine"];
     private static readonly string[] JointKeys = ["axes"];
@@ -148,6 +149,7 @@ internal sealed class CharacterSpecReader
             root["friction"] is JsonNode f ? Between(Number(f, "key 'friction'"), 0f, MaxMagnitude, "key 'friction'") : null,
             root["walkSpeed"] is JsonNode ws ? Between(Number(ws, "key 'walkSpeed'"), 0f, 100f, "key 'walkSpeed' (m/s; 0: the character does not walk)") : null,
             root["maxSlope"] is JsonNode ms ? Between(Number(ms, "key 'maxSlope'"), 0f, 80f, "key 'maxSlope' (degrees)") : null,
+            root["maxSlopeAlong"] is JsonNode ma ? Between(Number(ma, "key 'maxSlopeAlong'"), 0f, 80f, "key 'maxSlopeAlong' (degrees)") : null,
             root["stepHeight"] is JsonNode sh ? Between(Number(sh, "key 'stepHeight'"), 0f, 100f, "key 'stepHeight' (metres)") : null,
             root["trunkBones"] is JsonNode tb ? [.. Array(tb, "key 'trunkBones'").Select((b, i) => Text(b, $"key 'trunkBones', item {i}"))] : null,
             limbs,

@@ -138,7 +138,7 @@ public static class ReducedModelBuilder
     /// Walking derived from the rig (<see cref="WalkingLimits.FromLeg"/>): a character with at least two feet that
     /// stands on its feet alone (no more required contacts than feet) walks, its leg length being the root joint's
     /// standing height above its contacts (as in <see cref="StanceLift"/>), on slopes up to what its feet can stand on
-    /// (<see cref="WalkableSlope"/>); any other (a frog that needs all four limbs down) only jumps.
+    /// (<see cref="WalkableSlope"/>, and <see cref="WalkableSlopeAlong"/> straight up or down); any other (a frog that needs all four limbs down) only jumps.
     /// </summary>
     public static WalkingLimits Walking(CharacterModel model, int requiredContacts)
     {
@@ -151,7 +151,13 @@ public static class ReducedModelBuilder
 
         (float rootHeight, _) = Standing(model, requiredContacts);
         WalkingLimits walking = WalkingLimits.FromLeg(rootHeight);
-        return walking.CanWalk ? walking with { MaxSlopeDegrees = WalkableSlope(model, rootHeight) } : walking;
+        if (!walking.CanWalk)
+        {
+            return walking;
+        }
+
+        float slope = WalkableSlope(model, rootHeight);
+        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope) };
     }
 
     /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>
@@ -172,56 +178,59 @@ public static class ReducedModelBuilder
     public static float WalkableSlope(CharacterModel model, float legLength)
     {
         ArgumentNullException.ThrowIfNull(model);
-        Rig rig = model.Rig;
-        var sole = new SoleHold(rig);
-        var positions = new Vector3[rig.Joints.Count];
-        var rotations = new Quaternion[rig.Joints.Count];
-        RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
-        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        Vector3[] stands = [.. feet.Select(l => l.EffectorPosition(positions, rotations))];
-        int[][] below = [.. feet.Select(l => Enumerable.Range(0, rig.Joints.Count).Where(j => j != l.EffectorJoint && rig.IsAncestor(l.EffectorJoint, j)).ToArray())];
-        float shift = 0.1f * legLength;
-
-        bool Holds(float degrees)
+        var feet = new FootPlanes(model, legLength);
+        return Steepest(0f, degrees =>
         {
             float angle = degrees * MathF.PI / 180f;
-            foreach (Vector3 down in new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX })
+            return new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX }.All(down => feet.Hold((down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle))));
+        });
+    }
+
+    /// <summary>
+    /// The steepest slope (degrees, a multiple of <see cref="SlopeStep"/>, from <paramref name="slope"/> to
+    /// <see cref="WalkingLimits.DefaultMaxSlopeDegrees"/>) the rig's feet can walk straight up or down
+    /// (<see cref="WalkingLimits.MaxSlopeAlongDegrees"/>): one <see cref="SlopeStep"/> less than the steepest on whose
+    /// planes the feet hold as in <see cref="WalkableSlope"/>, falling forward or backward, and falling partly to the
+    /// side, by <paramref name="slope"/> across (each way); never less than <paramref name="slope"/>. An ankle usually
+    /// bends further than it rolls, so this is steeper than <paramref name="slope"/>, the slope held whichever way the
+    /// ground falls. The step less is for ground that is not a plane: a walk straight up a slope crosses crests and
+    /// hollows where the stride meets steeper ground than the path (on the bundled desert, 71 % of the walks planned
+    /// animate with 25° and 65 % with the planes' 27.5°, for the skeleton).
+    /// </summary>
+    /// <param name="model">The character.</param>
+    /// <param name="legLength">The root joint's standing height above its contacts, metres.</param>
+    /// <param name="slope">The slope held whichever way the ground falls (<see cref="WalkableSlope"/>), degrees.</param>
+    public static float WalkableSlopeAlong(CharacterModel model, float legLength, float slope)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        var feet = new FootPlanes(model, legLength);
+        float cosAcross = MathF.Cos(slope * MathF.PI / 180f);
+        float planes = Steepest(slope, degrees =>
+        {
+            // Normals (x across, z along) of slope `degrees` whose fall across the walk is `slope`: tan(across) =
+            // |x| / y with y = cos(degrees), so z² = 1 − y² / cos²(slope).
+            float angle = degrees * MathF.PI / 180f;
+            float y = MathF.Cos(angle);
+            float x = y * MathF.Tan(slope * MathF.PI / 180f);
+            float z = MathF.Sqrt(MathF.Max(0f, 1f - (y * y / (cosAcross * cosAcross))));
+            var planes = new List<Vector3> { new(0f, y, MathF.Sin(angle)), new(0f, y, -MathF.Sin(angle)) };
+            if (slope > 0f)
             {
-                // The plane falls toward `down`; the trunk moves along it, forward and back, keeping its height above it.
-                Vector3 normal = (down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle));
-                for (int f = 0; f < feet.Length; f++)
-                {
-                    float[] q = (float[])model.ContactPose.Clone();
-                    foreach (float x in new[] { 0f, shift, -shift, 0f })
-                    {
-                        var root = new RootPose(new Vector3(0f, -x * MathF.Tan(angle) * down.Z, x), Quaternion.Identity);
-                        float[] trial = (float[])q.Clone();
-                        if (!sole.Hold(root, trial, feet[f], stands[f], normal))
-                        {
-                            return false;
-                        }
-
-                        rig.Solve(root, trial, positions, rotations);
-                        foreach (int j in below[f])
-                        {
-                            if (Vector3.Dot(positions[j] - stands[f], normal) < -BodyClearance)
-                            {
-                                return false;
-                            }
-                        }
-
-                        q = trial;
-                    }
-                }
+                planes.AddRange([new(x, y, z), new(-x, y, z), new(x, y, -z), new(-x, y, -z)]);
             }
 
-            return true;
-        }
+            return planes.All(feet.Hold);
+        });
+        return MathF.Max(slope, planes - SlopeStep);
+    }
 
-        float slope = 0f;
-        for (float degrees = 0f; degrees <= WalkingLimits.DefaultMaxSlopeDegrees + 1e-3f; degrees += SlopeStep)
+    /// <summary>The steepest multiple of <see cref="SlopeStep"/> from <paramref name="from"/> up to the default limit for which <paramref name="holds"/> (and every step below it) holds; <paramref name="from"/> when none does.</summary>
+    private static float Steepest(float from, Func<float, bool> holds)
+    {
+        float slope = from;
+        for (float degrees = from; degrees <= WalkingLimits.DefaultMaxSlopeDegrees + 1e-3f; degrees += SlopeStep)
         {
-            if (!Holds(degrees))
+            if (!holds(degrees))
             {
                 break;
             }
@@ -230,6 +239,66 @@ public static class ReducedModelBuilder
         }
 
         return slope;
+    }
+
+    /// <summary>The feet of a rig held on planes through the points under them in its contact pose (<see cref="WalkableSlope"/>).</summary>
+    private sealed class FootPlanes
+    {
+        private readonly CharacterModel _model;
+        private readonly SoleHold _sole;
+        private readonly Vector3[] _positions;
+        private readonly Quaternion[] _rotations;
+        private readonly RigLimb[] _feet;
+        private readonly Vector3[] _stands;
+        private readonly int[][] _below;
+        private readonly float _shift;
+
+        public FootPlanes(CharacterModel model, float legLength)
+        {
+            _model = model;
+            Rig rig = model.Rig;
+            _sole = new SoleHold(rig);
+            _positions = new Vector3[rig.Joints.Count];
+            _rotations = new Quaternion[rig.Joints.Count];
+            _feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
+            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, _positions, _rotations);
+            _stands = [.. _feet.Select(l => l.EffectorPosition(_positions, _rotations))];
+            _below = [.. _feet.Select(l => Enumerable.Range(0, rig.Joints.Count).Where(j => j != l.EffectorJoint && rig.IsAncestor(l.EffectorJoint, j)).ToArray())];
+            _shift = 0.1f * legLength;
+        }
+
+        /// <summary>True when every foot holds the plane of unit normal <paramref name="normal"/> (rig frame: +Z forward, +X to the side) while the upright trunk moves forward and back along it.</summary>
+        public bool Hold(Vector3 normal)
+        {
+            Rig rig = _model.Rig;
+            for (int f = 0; f < _feet.Length; f++)
+            {
+                float[] q = (float[])_model.ContactPose.Clone();
+                foreach (float x in new[] { 0f, _shift, -_shift, 0f })
+                {
+                    // The trunk moves along the plane, keeping its height above it.
+                    var root = new RootPose(new Vector3(0f, -x * normal.Z / normal.Y, x), Quaternion.Identity);
+                    float[] trial = (float[])q.Clone();
+                    if (!_sole.Hold(root, trial, _feet[f], _stands[f], normal))
+                    {
+                        return false;
+                    }
+
+                    rig.Solve(root, trial, _positions, _rotations);
+                    foreach (int j in _below[f])
+                    {
+                        if (Vector3.Dot(_positions[j] - _stands[f], normal) < -BodyClearance)
+                        {
+                            return false;
+                        }
+                    }
+
+                    q = trial;
+                }
+            }
+
+            return true;
+        }
     }
 
     /// <summary>How far (metres) a toe may dip under the plane in <see cref="WalkableSlope"/>: 5 mm, within what the level's collision checks let a held foot's bones touch near its contact (1 cm).</summary>

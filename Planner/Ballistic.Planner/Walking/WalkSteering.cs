@@ -11,8 +11,9 @@ namespace Ballistic.Planner.Walking;
 /// allows it. From the first stance's contact centre to the second's, the ground is found every
 /// <see cref="SampleSpacing"/> metres by a ray cast down from the trunk's lowest walking height; the walk is valid
 /// when the ground is there at every sample (no gap), never rises or drops more than the character's step height
-/// from one sample to the next (stairs are fine, a ledge is not), never tilts beyond the steepest slope (over two
-/// samples in a row, so a ray grazing a stair's edge does not count), nothing stands between the ground and the
+/// from one sample to the next beyond what its slope allows (stairs are fine, a ledge is not), is never steeper than
+/// the character walks on in the walk's direction (<see cref="WalkingLimits.IsWalkable"/>, over two samples in a row,
+/// so a ray grazing a stair's edge does not count), nothing stands between the ground and the
 /// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAt"/>, its turns in place included) never touches the level.
 /// Deterministic and thread-safe.
 /// </summary>
@@ -35,7 +36,6 @@ public sealed class WalkSteering
     private readonly float _tolerance;
     private readonly float _legSpace;
     private readonly float _maxRise;
-    private readonly float _minCosine;
 
     /// <summary>Creates the walking steering method for a character on a level.</summary>
     /// <param name="world">The level's collision geometry (rays and box overlaps).</param>
@@ -51,7 +51,6 @@ public sealed class WalkSteering
         _tolerance = collisionTolerance;
         Limits = character.Walking;
         _maxRise = Limits.StepHeight;
-        _minCosine = Limits.MinGroundCosine;
 
         // Between the ground and the trunk's bottom in its lowest stance the legs move: only ground may be there.
         _legSpace = MathF.Max(character.StanceLift.Min - character.TrunkHalfExtents.Y, _maxRise) + 0.01f;
@@ -137,7 +136,8 @@ public sealed class WalkSteering
         int samples = Math.Max(1, (int)MathF.Ceiling(across / SampleSpacing));
         int keepEvery = Math.Max(1, (int)MathF.Floor(PathSpacing / SampleSpacing));
         float spacing = across / samples;
-        float slopeRise = spacing * MathF.Sqrt(MathF.Max(0f, 1f - (_minCosine * _minCosine))) / MathF.Max(_minCosine, 1e-3f);
+        float slopeRise = spacing * Limits.MaxGrade;
+        var heading = new Vector3(b.X - a.X, 0f, b.Z - a.Z);
         float allowed = _maxRise + slopeRise;
 
         // The first sample's ground must be under the first stance's contacts.
@@ -164,7 +164,7 @@ public sealed class WalkSteering
                 return WalkFailure.Gap;
             }
 
-            bool steep = MathF.Abs(hit.Normal.Y) < _minCosine;
+            bool steep = !Limits.IsWalkable(hit.Normal, heading);
             if (steep && steepBefore)
             {
                 passed = MathF.Max(0f, (i - 2) * spacing);

@@ -76,6 +76,39 @@ public sealed class CharacterSpecFileTests
         });
     }
 
+    [TestCase(null, null, 22.5f, 25f)]
+    [TestCase(20f, null, 20f, 20f)]
+    [TestCase(null, 30f, 22.5f, 30f)]
+    [TestCase(15f, 28f, 15f, 28f)]
+    public void TheWalkableSlopesComeFromTheRigUnlessTheSpecGivesThem(float? maxSlope, float? maxSlopeAlong, float slope, float along)
+    {
+        // The bundled skeleton's spec without its slopes derives them from its ankles (22.5° any way, 25° straight up
+        // or down); maxSlope alone gives one limit whichever way the ground falls; maxSlopeAlong alone keeps the derived
+        // maxSlope.
+        string folder = Path.Combine(RepositoryFiles.Root, "Scenes", "characters");
+        var json = (JsonObject)JsonNode.Parse(File.ReadAllText(Path.Combine(folder, "skeleton.limbs.json")))!;
+        json.Remove("maxSlope");
+        json.Remove("maxSlopeAlong");
+        if (maxSlope is float s)
+        {
+            json["maxSlope"] = s;
+        }
+
+        if (maxSlopeAlong is float a)
+        {
+            json["maxSlopeAlong"] = a;
+        }
+
+        string spec = Path.Combine(_folder, "skeleton.limbs.json");
+        File.WriteAllText(spec, json.ToJsonString());
+        (_, ReducedCharacter reduced) = CharacterSpecFile.Load(Path.Combine(folder, "skeleton.glb"), spec);
+        Assert.Multiple(() =>
+        {
+            Assert.That(reduced.Walking.MaxSlopeDegrees, Is.EqualTo(slope));
+            Assert.That(reduced.Walking.MaxSlopeAlongDegrees, Is.EqualTo(along));
+        });
+    }
+
     [Test]
     public void ARiggedCharacterAnimatesGivenOnlyItsLimbs()
     {

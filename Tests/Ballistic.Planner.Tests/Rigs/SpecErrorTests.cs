@@ -46,6 +46,9 @@ public sealed class SpecErrorTests
         yield return Case("unknown trunk bone", Spec(Foot + "}", "\"trunkBones\":[\"torso\"],"), "'trunkBones'", "'torso'", "not a bone");
         yield return Case("fractional required contacts", Spec(Foot + "}", "\"requiredContacts\":1.5,"), "key 'requiredContacts'", "whole number");
         yield return Case("too many required contacts", Spec(Foot + "}", "\"requiredContacts\":3,"), "key 'requiredContacts'", "3 required contacts");
+        yield return Case("slope ahead below the slope", Spec(Foot + "}", "\"maxSlope\":30,\"maxSlopeAlong\":20,"), "key 'maxSlopeAlong'", "20 degrees", "below", "30 degrees, key 'maxSlope'");
+        yield return Case("slope ahead below the derived slope", Spec(Foot + "}", "\"maxSlopeAlong\":10,"), "key 'maxSlopeAlong'", "10 degrees", "derived from the rig");
+        yield return Case("slope ahead out of range", Spec(Foot + "}", "\"maxSlopeAlong\":95,"), "key 'maxSlopeAlong'", "between 0 and 80");
         yield return Case("zero speed", Spec(Foot + "}", "\"takeoffSpeedMax\":0,"), "key 'takeoffSpeedMax'", "positive");
         yield return Case("null name", Spec(Foot + "}", "\"name\":null,"), "key 'name'", "is null");
         yield return Case("repeated key", Spec(Foot + ",\"contact\":\"foot\",\"contact\":\"hand\"}"), "limbs.left_foot", "'contact' appears twice");

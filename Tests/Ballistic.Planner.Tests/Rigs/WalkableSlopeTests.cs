@@ -51,7 +51,32 @@ public sealed class WalkableSlopeTests
         });
     }
 
-    private static bool AllFeetHold(CharacterModel model, float degrees)
+    [Test]
+    public void StraightUpOrDownTheFeetWalkSteeperThanAcross()
+    {
+        // Its ankles bend further (−45°…40°) than they roll (±20°): on planes falling ahead or behind its feet hold
+        // steeper slopes than on planes falling to the side. The limit stays a step (2.5°) below the steepest plane held.
+        CharacterModel model = RigTests.Humanoid.Value;
+        float leg = LegLength(model);
+        float slope = ReducedModelBuilder.WalkableSlope(model, leg);
+        float along = ReducedModelBuilder.WalkableSlopeAlong(model, leg, slope);
+        Vector3[] ahead = [Vector3.UnitZ, -Vector3.UnitZ];
+        Assert.Multiple(() =>
+        {
+            Assert.That(along, Is.GreaterThan(slope));
+            Assert.That(along % ReducedModelBuilder.SlopeStep, Is.EqualTo(0f).Within(1e-4f));
+            Assert.That(ReducedModelBuilder.Walking(model, 2).MaxSlopeAlongDegrees, Is.EqualTo(along), "the derived walking limits use it");
+            Assert.That(AllFeetHold(model, along + ReducedModelBuilder.SlopeStep, ahead), Is.True, $"{along + ReducedModelBuilder.SlopeStep}° ahead");
+            Assert.That(AllFeetHold(model, along + 10f, ahead), Is.False, $"{along + 10f}° ahead");
+
+            // The independent IK (restarts, the trunk still) holds a little more either way, and still more ahead.
+            Assert.That(AllFeetHold(model, along + 5f, ahead), Is.True, $"{along + 5f}° ahead");
+            Assert.That(AllFeetHold(model, along + 5f, [Vector3.UnitX, -Vector3.UnitX]), Is.False, $"{along + 5f}° to the side");
+            Assert.That(ReducedModelBuilder.WalkableSlopeAlong(WithAnkleRoll(model, 40f), leg, ReducedModelBuilder.WalkableSlope(WithAnkleRoll(model, 40f), leg)), Is.GreaterThanOrEqualTo(along), "looser ankles never walk less steep");
+        });
+    }
+
+    private static bool AllFeetHold(CharacterModel model, float degrees, Vector3[]? downs = null)
     {
         Rig rig = model.Rig;
         var ik = new LimbIk(rig, new IkSettings { Restarts = 4, MaxIterations = 80 });
@@ -63,7 +88,7 @@ public sealed class WalkableSlopeTests
         foreach (RigLimb foot in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
             Vector3 stand = foot.EffectorPosition(positions, rotations);
-            foreach (Vector3 down in new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX })
+            foreach (Vector3 down in downs ?? [Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX])
             {
                 Vector3 normal = (down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle));
                 float[] q = (float[])model.ContactPose.Clone();

@@ -201,6 +201,8 @@ internal static class PlanAudit
 
         float tan = MathF.Tan(limits.MaxSlopeDegrees * MathF.PI / 180f);
         float cos = MathF.Cos(limits.MaxSlopeDegrees * MathF.PI / 180f);
+        float alongCos = MathF.Cos(limits.MaxSlopeAlongDegrees * MathF.PI / 180f);
+        float grade = MathF.Tan(limits.MaxSlopeAlongDegrees * MathF.PI / 180f);
         bool steepBefore = false;
         for (int i = 0; i < walk.Path.Count; i++)
         {
@@ -217,10 +219,15 @@ internal static class PlanAudit
                 Fail($"path point {i} lies {MathF.Abs(hit.Point.Y - p.Y) * 100f:0.0} cm off the ground");
             }
 
-            bool steep = MathF.Abs(hit.Normal.Y) < cos - 1e-3f;
+            // Steeper than the slope walked on any way, and either steeper than the slope walked up or down or
+            // falling to the side more than the first allows (the walk's heading from its first path point to its last).
+            Vector3 n = hit.Normal.Y < 0f ? -hit.Normal : hit.Normal;
+            Vector3 heading = Vector3.Normalize(new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z) + new Vector3(1e-9f, 0f, 0f));
+            float sideways = MathF.Abs(Vector3.Dot(n, Vector3.Cross(Vector3.UnitY, heading)));
+            bool steep = n.Y < cos - 1e-3f && (n.Y < alongCos - 1e-3f || sideways > (n.Y * tan) + 1e-3f);
             if (steep && steepBefore)
             {
-                Fail($"ground steeper than {limits.MaxSlopeDegrees}° at path point {i}");
+                Fail($"ground steeper than {limits.MaxSlopeDegrees}° (or {limits.MaxSlopeAlongDegrees}° straight ahead) at path point {i}");
             }
 
             steepBefore = steep;
@@ -234,8 +241,8 @@ internal static class PlanAudit
                 }
 
                 float rise = MathF.Abs(p.Y - q.Y);
-                report.MaxWalkRise = MathF.Max(report.MaxWalkRise, rise - (across * tan));
-                if (rise > limits.StepHeight + (across * tan) + 1e-3f)
+                report.MaxWalkRise = MathF.Max(report.MaxWalkRise, rise - (across * grade));
+                if (rise > limits.StepHeight + (across * grade) + 1e-3f)
                 {
                     Fail($"the ground rises or drops {rise:0.000} m between path points {i - 1} and {i}, above the {limits.StepHeight:0.000} m step");
                 }

@@ -56,6 +56,9 @@ public sealed class WalkSteeringTests
             Assert.That(Skeleton.WithWalking(Skeleton.Walking with { Speed = 1f }).Fingerprint, Is.Not.EqualTo(Skeleton.Fingerprint));
             Assert.That(() => Skeleton.WithWalking(new WalkingLimits(1f, 85f, 0.2f)), Throws.InstanceOf<CharacterException>().With.Message.Contains("80 degrees"));
             Assert.That(() => Skeleton.WithWalking(new WalkingLimits(1f, 30f, 0f)), Throws.InstanceOf<CharacterException>().With.Message.Contains("step height"));
+            Assert.That(Skeleton.WithWalking(Skeleton.Walking with { MaxSlopeAlongDegrees = 30f }).Fingerprint, Is.Not.EqualTo(Skeleton.Fingerprint));
+            Assert.That(frog.WithWalking(new WalkingLimits(0.5f, 30f, 0.05f) { MaxSlopeAlongDegrees = 30f }).Fingerprint, Is.EqualTo(frog.WithWalking(new WalkingLimits(0.5f, 30f, 0.05f)).Fingerprint), "the same limit every way, set or not");
+            Assert.That(() => Skeleton.WithWalking(new WalkingLimits(1f, 30f, 0.2f) { MaxSlopeAlongDegrees = 20f }), Throws.InstanceOf<CharacterException>().With.Message.Contains("walked up or down"));
         });
     }
 
@@ -158,21 +161,60 @@ public sealed class WalkSteeringTests
         Assert.That(Walk(stairs, new Vector3(0f, 0f, 0f), new Vector3(6.5f, 1.36f, 0f), shortStep).Failure, Is.EqualTo(WalkFailure.StepTooHigh));
     }
 
+    /// <summary>A floor up to x = 0, a 3 m ramp of <paramref name="degrees"/> rising along +X (4 m wide, z from −2 to 2), and a floor on top.</summary>
+    private static Level Ramp(float degrees)
+    {
+        float rise = 3f * MathF.Tan(degrees * MathF.PI / 180f);
+        var material = new LevelMaterial("ramp", null);
+        return new LevelBuilder($"ramp {degrees}°")
+            .AddBox(new Vector3(-4f, -1f, -2f), new Vector3(0f, 0f, 2f))
+            .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(0f, 0f, 2f), new Vector3(3f, rise, 2f)), material)
+            .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(3f, rise, 2f), new Vector3(3f, rise, -2f)), material)
+            .AddBox(new Vector3(3f, rise - 1f, -2f), new Vector3(7f, rise, 2f))
+            .Build();
+    }
+
+    [Test]
+    public void ASlopeIsWalkedStraightUpOrDownSteeperThanAcross()
+    {
+        // The skeleton walks 22.5° whichever way the ground falls and 25° straight up or down: a 24° ramp is walked up
+        // and down its fall line and diagonally (it falls 17.5° across a heading 45° off its fall line), not across it;
+        // a 30° ramp is walked no way.
+        Assert.That(Skeleton.Walking.MaxSlopeDegrees, Is.EqualTo(22.5f));
+        Assert.That(Skeleton.Walking.MaxSlopeAlongDegrees, Is.EqualTo(25f));
+        float rise = 3f * MathF.Tan(24f * MathF.PI / 180f);
+        WalkSteering ramp = PlanningScene.Create(Ramp(24f), Skeleton).Walking;
+        WalkSteering steep = PlanningScene.Create(Ramp(30f), Skeleton).Walking;
+        Assert.Multiple(() =>
+        {
+            Assert.That(ramp.WalkableDistance(new Vector3(-1f, 0f, 0f), new Vector3(4f, rise, 0f)), Is.EqualTo(5f).Within(1e-3f), "up the fall line");
+            Assert.That(ramp.WalkableDistance(new Vector3(4f, rise, 0.5f), new Vector3(-1f, 0f, 0.5f)), Is.EqualTo(5f).Within(1e-3f), "down it");
+            Assert.That(ramp.WalkableDistance(new Vector3(1.5f, rise / 2f, -1.8f), new Vector3(1.5f, rise / 2f, 1.8f)), Is.LessThan(0.1f), "across it");
+            Assert.That(ramp.WalkableDistance(new Vector3(0.5f, rise / 6f, -1.5f), new Vector3(2.5f, 5f * rise / 6f, 0.5f)), Is.EqualTo(2f * MathF.Sqrt(2f)).Within(1e-3f), "diagonally");
+            Assert.That(steep.WalkableDistance(new Vector3(-1f, 0f, 0f), new Vector3(4f, 3f * MathF.Tan(30f * MathF.PI / 180f), 0f)), Is.InRange(1f - (3f * WalkSteering.SampleSpacing), 1f + WalkSteering.SampleSpacing), "a 30° ramp stops the walk where it begins");
+        });
+
+        // The rule itself: a normal 24° from vertical, falling ahead, to the side, and 45° between.
+        float a = 24f * MathF.PI / 180f;
+        var ahead = new Vector3(MathF.Sin(a), MathF.Cos(a), 0f);
+        var side = new Vector3(0f, MathF.Cos(a), MathF.Sin(a));
+        var diagonal = new Vector3(MathF.Sin(a) * MathF.Sqrt(0.5f), MathF.Cos(a), MathF.Sin(a) * MathF.Sqrt(0.5f));
+        WalkingLimits limits = Skeleton.Walking;
+        Assert.Multiple(() =>
+        {
+            Assert.That(limits.IsWalkable(ahead, Vector3.UnitX), Is.True);
+            Assert.That(limits.IsWalkable(-ahead with { Y = ahead.Y }, Vector3.UnitX), Is.True, "downhill");
+            Assert.That(limits.IsWalkable(side, Vector3.UnitX), Is.False);
+            Assert.That(limits.IsWalkable(diagonal, Vector3.UnitX), Is.True);
+            Assert.That(limits.IsWalkable(ahead, Vector3.Zero), Is.False, "no heading: the any-way limit");
+            Assert.That(limits.IsWalkable(Vector3.Normalize(new Vector3(0.3f, 1f, 0f)), Vector3.Zero), Is.True, "16.7° any way");
+            Assert.That(limits.IsWalkable(-ahead, Vector3.UnitX), Is.True, "either side of a surface");
+        });
+    }
+
     [Test]
     public void ASlopeSteeperThanTheLimitIsRefusedAndAGentleOneIsWalked()
     {
-        static Level Ramp(float degrees)
-        {
-            float rise = 3f * MathF.Tan(degrees * MathF.PI / 180f);
-            var material = new LevelMaterial("ramp", null);
-            return new LevelBuilder($"ramp {degrees}°")
-                .AddBox(new Vector3(-4f, -1f, -2f), new Vector3(0f, 0f, 2f))
-                .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(0f, 0f, 2f), new Vector3(3f, rise, 2f)), material)
-                .AddTriangle(new Triangle(new Vector3(0f, 0f, -2f), new Vector3(3f, rise, 2f), new Vector3(3f, rise, -2f)), material)
-                .AddBox(new Vector3(3f, rise - 1f, -2f), new Vector3(7f, rise, 2f))
-                .Build();
-        }
-
         Level gentle = Ramp(15f);
         Level steep = Ramp(50f);
         Assert.Multiple(() =>
