@@ -265,7 +265,8 @@ public sealed class JumpAnimator : IJumpAnimator
         foreach ((int limb, float time) in slips.GroupBy(s => s.Limb).Select(g => g.First()))
         {
             int move = Enumerable.Range(0, moves.Count).LastOrDefault(m => animation.MoveStart(m) <= time);
-            problems.Add(new JumpProblem(move, $"{Model.Limbs[limb].Name} cannot hold its contact between frames ({time:0.000} s into the clip)"));
+            float along = moves[move] is Walk walk ? walk.DistanceAt(time - animation.MoveStart(move)) : float.NaN;
+            problems.Add(new JumpProblem(move, $"{Model.Limbs[limb].Name} cannot hold its contact between frames ({time:0.000} s into the clip)", along));
         }
 
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));

@@ -1,6 +1,14 @@
 namespace Ballistic.Planner.Animation;
 
-/// <summary>Why the whole body cannot perform one jump of a path cleanly.</summary>
-/// <param name="Jump">Index of the jump in the path.</param>
+/// <summary>Why the whole body cannot perform one move (jump or walk) of a path cleanly.</summary>
+/// <param name="Jump">Index of the move in the path.</param>
 /// <param name="Reason">One sentence: which pose, limb or bone, and what is wrong.</param>
-public readonly record struct JumpProblem(int Jump, string Reason);
+/// <param name="Along">
+/// For a walk's problem, where it first shows: metres along the walk's ground path (<see cref="Roadmaps.Walk.PointAt"/>);
+/// <see cref="float.NaN"/> when it has no place on the path (a jump's problem, or a walk's stance that cannot be stood in).
+/// </param>
+public readonly record struct JumpProblem(int Jump, string Reason, float Along = float.NaN)
+{
+    /// <summary>True when the problem has a place along a walk (<see cref="Along"/> is a number).</summary>
+    public bool IsLocated => !float.IsNaN(Along);
+}

@@ -316,7 +316,7 @@ internal sealed class WalkGait
                     if (!trunkReported)
                     {
                         trunkReported = true;
-                        _problems.Add(new JumpProblem(_move, $"bone '{_rig.Joints[bone].Name}' passes through the level {Time(i):0.000} s into the walk"));
+                        _problems.Add(new JumpProblem(_move, $"bone '{_rig.Joints[bone].Name}' passes through the level {Time(i):0.000} s into the walk", _walk.DistanceAt(Time(i))));
                     }
                 }
             }
@@ -324,7 +324,7 @@ internal sealed class WalkGait
             foreach (((int limb, string kind), (float distance, int count)) in _failures.OrderBy(f => f.Key.Limb).ThenBy(f => f.Value.Distance))
             {
                 string where = count > 1 ? $"{count} times, first {distance:0.00} m along the walk" : $"{distance:0.00} m along the walk";
-                _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})"));
+                _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})", distance));
             }
 
             return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n);

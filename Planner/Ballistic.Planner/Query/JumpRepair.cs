@@ -1,3 +1,4 @@
+using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
@@ -11,7 +12,9 @@ namespace Ballistic.Planner.Query;
 /// walks and jumps falls back to jumps only once its walks failed to animate in <see cref="WalkRounds"/> rounds: walking
 /// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds. Likewise
 /// a move cut from a jump (<see cref="Move.CutFrom"/>) that does not animate gives the jump back whole, and after
-/// <see cref="CutRounds"/> such rounds no jump is cut. Not thread-safe.
+/// <see cref="CutRounds"/> such rounds no jump is cut. A walk whose problems the animator places on its path keeps
+/// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
+/// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. Not thread-safe.
 /// </summary>
 public sealed class JumpRepair
 {
@@ -21,7 +24,11 @@ public sealed class JumpRepair
     /// <summary>Rounds with a move cut from a jump (<see cref="Move.CutFrom"/>) that did not animate cleanly after which jumps are no longer cut.</summary>
     public const int CutRounds = 4;
 
+    /// <summary>Rounds that added spots to hop over (<see cref="HopSpots"/>) after which walk problems set walks aside again.</summary>
+    public const int HopRounds = 4;
+
     private readonly HashSet<(int From, int To)> _excluded = [];
+    private readonly List<Vector3> _spots = [];
     private readonly HashSet<(int From, int To)> _uncut = [];
     private readonly List<RejectedJump> _setAside = [];
 
@@ -46,17 +53,27 @@ public sealed class JumpRepair
     /// <summary>False once moves cut from jumps failed to animate in <see cref="CutRounds"/> rounds: the next searches cut no jump.</summary>
     public bool CuttingAllowed => CutFailures < CutRounds;
 
+    /// <summary>Ground points (world metres) where a walk's body could not walk, in the order found: the next searches hop over them.</summary>
+    public IReadOnlyList<Vector3> HopSpots => _spots;
+
+    /// <summary>Rounds so far that added spots to <see cref="HopSpots"/>.</summary>
+    public int HopFailures { get; private set; }
+
+    /// <summary>False once <see cref="HopRounds"/> rounds added spots: a walk's problems then set it aside.</summary>
+    public bool HoppingAllowed => HopFailures < HopRounds;
+
     /// <summary>
     /// True when a request that has searched <paramref name="searches"/> times has no search left of
-    /// <paramref name="limit"/>: the rounds whose walks failed (at most <see cref="WalkRounds"/>) do not count, so the
+    /// <paramref name="limit"/>: the rounds whose walks failed (at most <see cref="WalkRounds"/>), whose cut moves
+    /// failed (<see cref="CutRounds"/>) or that found spots to hop over (<see cref="HopRounds"/>) do not count, so the
     /// jumps-only fallback has every round.
     /// </summary>
-    public bool IsExhausted(int searches, int limit) => searches - WalkFailures - CutFailures >= limit;
+    public bool IsExhausted(int searches, int limit) => searches - WalkFailures - CutFailures - HopFailures >= limit;
 
     /// <summary>
     /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
-    /// <see cref="WalksAllowed"/> is false, the jumps in <see cref="Uncut"/> kept whole, and no jump cut once
-    /// <see cref="CuttingAllowed"/> is false.
+    /// <see cref="WalksAllowed"/> is false, the jumps in <see cref="Uncut"/> kept whole, no jump cut once
+    /// <see cref="CuttingAllowed"/> is false, and the walks hopping over <see cref="HopSpots"/>.
     /// </summary>
     public QuerySettings Adjust(QuerySettings settings)
     {
@@ -71,36 +88,38 @@ public sealed class JumpRepair
             settings = settings with { TightenJumps = false };
         }
 
+        if (_spots.Count > 0)
+        {
+            settings = settings with { HopSpots = [.. _spots] };
+        }
+
         return _uncut.Count == 0 ? settings : settings with { UncutJumps = _uncut };
     }
 
     /// <summary>
     /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
-    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead.
+    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead; for a
+    /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
+    /// <see cref="HoppingAllowed"/>, and unless a spot is already known: the hop there did not pass); for a move of a
+    /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside.
     /// </summary>
     /// <param name="path">The path that was animated.</param>
     /// <param name="animation">Its animation; problems index moves of <paramref name="path"/>.</param>
-    /// <returns>How many moves were newly set aside (or kept whole).</returns>
+    /// <returns>How many moves were newly set aside, kept whole or hopped over.</returns>
     public int Reject(IReadOnlyList<Move> path, JumpAnimation animation)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(animation);
         int added = 0;
-        if (animation.Problems.Any(p => path[p.Jump] is Walk { CutFrom.Count: 0 }))
+        bool walkFailed = false;
+        bool cutFailed = false;
+        bool hopped = false;
+        foreach (IGrouping<int, JumpProblem> problems in animation.Problems.GroupBy(p => p.Jump))
         {
-            WalkFailures++;
-        }
-
-        if (animation.Problems.Any(p => path[p.Jump].CutFrom.Count > 0))
-        {
-            CutFailures++;
-        }
-
-        foreach (JumpProblem problem in animation.Problems)
-        {
-            Move move = path[problem.Jump];
+            Move move = path[problems.Key];
             if (move.CutFrom.Count > 0)
             {
+                cutFailed = true;
                 bool kept = false;
                 foreach ((int, int) jump in move.CutFrom)
                 {
@@ -109,30 +128,65 @@ public sealed class JumpRepair
 
                 if (kept)
                 {
-                    _setAside.Add(new RejectedJump(move.From, move.To, problem.Reason));
+                    _setAside.Add(new RejectedJump(move.From, move.To, problems.First().Reason));
                     added++;
                 }
 
                 continue;
             }
 
-            bool any = _excluded.Add((move.From.Id, move.To.Id));
-            if (move is Walk walk)
+            if (move is Walk walk && HoppingAllowed && problems.All(p => p.IsLocated) && AddSpots(walk, problems))
             {
-                foreach ((int from, int to) in walk.Segments)
+                hopped = true;
+                added++;
+                continue;
+            }
+
+            walkFailed |= move is Walk || move.HoppedFrom.Count > 0;
+            bool any = false;
+            if (move.HoppedFrom.Count > 0)
+            {
+                foreach ((int, int) searched in move.HoppedFrom)
                 {
-                    any |= _excluded.Add((from, to));
+                    any |= _excluded.Add(searched);
+                }
+            }
+            else
+            {
+                any |= _excluded.Add((move.From.Id, move.To.Id));
+                if (move is Walk segments)
+                {
+                    foreach ((int from, int to) in segments.Segments)
+                    {
+                        any |= _excluded.Add((from, to));
+                    }
                 }
             }
 
             if (any)
             {
-                _setAside.Add(new RejectedJump(move.From, move.To, problem.Reason));
+                _setAside.Add(new RejectedJump(move.From, move.To, problems.First().Reason));
                 added++;
             }
         }
 
+        WalkFailures += walkFailed ? 1 : 0;
+        CutFailures += cutFailed ? 1 : 0;
+        HopFailures += hopped ? 1 : 0;
         return added;
+    }
+
+    /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="HopSpots"/>; true when each is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
+    private bool AddSpots(Walk walk, IEnumerable<JumpProblem> problems)
+    {
+        Vector3[] found = [.. problems.Select(p => walk.PointAt(p.Along))];
+        if (found.Any(f => _spots.Any(s => new Vector2(s.X - f.X, s.Z - f.Z).Length() <= JumpTightener.SpotRadius)))
+        {
+            return false;
+        }
+
+        _spots.AddRange(found);
+        return true;
     }
 
     /// <summary>

@@ -44,6 +44,18 @@ internal sealed class JumpTightener
     /// <summary>Pairs of takeoff and landing steered per jump at most.</summary>
     public const int MaxJumpsTried = 12;
 
+    /// <summary>A walk passing within this distance (metres, seen from above) of a spot the body could not walk hops over it (<see cref="Hop"/>).</summary>
+    public const float SpotRadius = 0.2f;
+
+    /// <summary>Spots that follow each other along a walk by at most this (metres) are hopped over at once.</summary>
+    public const float SpotChain = 1f;
+
+    /// <summary>The shortest hop (metres along the walk from takeoff to landing), unless it jumps the whole walk.</summary>
+    public const float MinHop = 1f;
+
+    /// <summary>How far (metres along the walk) before and after a spot a hop takes off and lands, nearest first.</summary>
+    private static readonly float[] HopReach = [0.5f, 0.8f, 1.1f];
+
     /// <summary>How close a new stance's contacts' centre comes to its point on the line.</summary>
     private static readonly EndpointTolerance Placement = new(0.2f, 0.3f);
 
@@ -63,13 +75,13 @@ internal sealed class JumpTightener
     /// class). New stances get ids from <paramref name="nextId"/> on.
     /// </summary>
     /// <param name="path">The path found, its moves in order.</param>
-    /// <param name="nextId">The first id free for new stances (the roadmap's node count + 2).</param>
+    /// <param name="nextId">The first id free for new stances (the roadmap's node count + 2); on return, the next one still free.</param>
     /// <param name="minWalk">Shortest walk (metres, horizontally) a cut adds; a stance is not moved less.</param>
     /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
     /// <param name="uncut">Jumps (takeoff id, landing id) to leave whole, or <c>null</c>.</param>
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is kept as it is.</param>
-    public List<Move> Tighten(List<Move> path, int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
+    public List<Move> Tighten(List<Move> path, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
     {
         var result = new List<Move>(path.Count);
         foreach (Move move in path)
@@ -177,6 +189,173 @@ internal sealed class JumpTightener
         }
 
         return null;
+    }
+
+    /// <summary>
+    /// The moves of <paramref name="path"/> in a new list, each walk that passes within <see cref="SpotRadius"/> of a
+    /// spot of <paramref name="spots"/> (seen from above) hopping over it: walk to a takeoff before the spot, jump,
+    /// walk on from a landing after it (either walk absent when the hop leaves from the walk's own stance or lands on
+    /// it). Takeoffs and landings lie <see cref="HopReach"/> before and after the spot along the walk's path, placed
+    /// and checked as <see cref="Tighten"/>'s are; the shortest hop that passes is taken. A walk with several spots
+    /// hops over each in turn; one with no hop that passes is kept. The new moves record the searched walk in
+    /// <see cref="Move.HoppedFrom"/>.
+    /// </summary>
+    /// <param name="path">The path, its moves in order.</param>
+    /// <param name="spots">Ground points (world metres) where the body could not walk.</param>
+    /// <param name="nextId">The first id free for new stances; on return, the next one still free.</param>
+    /// <param name="minWalk">Shortest walk (metres) a hop leaves before or after it; nearer a stance, it leaves from or lands on that stance.</param>
+    /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>.</param>
+    /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
+    /// <param name="stop">Polled between walks: when it returns true, the rest of the path is kept as it is.</param>
+    public List<Move> Hop(List<Move> path, IReadOnlyList<Vector3> spots, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
+    {
+        var result = new List<Move>(path.Count);
+        foreach (Move move in path)
+        {
+            if (move is Walk walk && walk.CutFrom.Count == 0 && !stop())
+            {
+                HopOver(walk, spots, result, ref nextId, minWalk, rejected, canStand);
+            }
+            else
+            {
+                result.Add(move);
+            }
+        }
+
+        return result;
+    }
+
+    /// <summary>Adds <paramref name="walk"/> to <paramref name="result"/>, hopping over its spots (see <see cref="Hop"/>).</summary>
+    private void HopOver(Walk walk, IReadOnlyList<Vector3> spots, List<Move> result, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    {
+        (int, int)[] searched = [.. walk.Segments];
+        Walk? rest = walk;
+        while (rest is not null && FirstStretch(rest, spots) is (float first, float last) && HopAt(rest, first, last, ref nextId, minWalk, rejected, canStand) is { } hop)
+        {
+            if (hop.Before is Walk before)
+            {
+                result.Add(before with { HoppedFrom = searched });
+            }
+
+            result.Add(hop.Jump with { HoppedFrom = searched });
+            rest = hop.After is Walk after ? after with { HoppedFrom = searched } : null;
+        }
+
+        if (rest is not null)
+        {
+            result.Add(rest);
+        }
+    }
+
+    /// <summary>
+    /// The shortest hop (at least <see cref="MinHop"/>) over the stretch from <paramref name="first"/> to
+    /// <paramref name="last"/> metres along <paramref name="walk"/> that passes, with the walks before and after it
+    /// (each absent when the hop leaves from or lands on the walk's own stance); <c>null</c> when none does.
+    /// </summary>
+    private (Walk? Before, Jump Jump, Walk? After)? HopAt(Walk walk, float first, float last, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    {
+        float facing = MathF.Atan2(walk.Path[^1].X - walk.Path[0].X, walk.Path[^1].Z - walk.Path[0].Z);
+
+        // Index 0 is the walk's own stance (no walk); 1.. the points before (after) the spot, nearest it first.
+        float[] before = [0f, .. HopReach.Select(r => first - r).Where(d => d >= minWalk)];
+        float[] after = [walk.Length, .. HopReach.Select(r => last + r).Where(d => walk.Length - d >= minWalk)];
+        var takeoffs = new Candidate?[before.Length];
+        var landings = new Candidate?[after.Length];
+        takeoffs[0] = new Candidate(walk.From, null);
+        landings[0] = new Candidate(walk.To, null);
+
+        // The shortest hop first (ties: the lower takeoff index first).
+        var pairs = new List<(int T, int L)>();
+        for (int t = 0; t < before.Length; t++)
+        {
+            for (int l = 0; l < after.Length; l++)
+            {
+                if (after[l] - before[t] >= MinHop || (t == 0 && l == 0))
+                {
+                    pairs.Add((t, l));
+                }
+            }
+        }
+
+        pairs.Sort((x, y) =>
+        {
+            int byLength = (after[x.L] - before[x.T]).CompareTo(after[y.L] - before[y.T]);
+            return byLength != 0 ? byLength : x.T.CompareTo(y.T);
+        });
+
+        int tried = 0;
+        foreach ((int t, int l) in pairs)
+        {
+            Candidate takeoff = takeoffs[t] ??= Place(walk.PointAt(before[t]), facing, walk.From, toStance: true, ref nextId, rejected, canStand);
+            Candidate landing = landings[l] ??= Place(walk.PointAt(after[l]), facing, walk.To, toStance: false, ref nextId, rejected, canStand);
+            if (takeoff.Node is not RoadmapNode from || landing.Node is not RoadmapNode to ||
+                rejected?.Contains((from.Id, to.Id)) == true || !_reach.InReach(from.Pose.Position, to.Pose.Position))
+            {
+                continue;
+            }
+
+            if (++tried > MaxJumpsTried)
+            {
+                break;
+            }
+
+            SteeringResult steered = _scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone);
+            if (steered.Succeeded)
+            {
+                return (takeoff.Walk, new Jump(from, to, steered.Arc), landing.Walk);
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>
+    /// The first stretch of <paramref name="walk"/>'s path (metres along it) with spots beside it, within
+    /// <see cref="SpotRadius"/> seen from above (not behind its start or past its end): from the first such spot to
+    /// the last that follows the one before it by at most <see cref="SpotChain"/>; <c>null</c> when no spot is beside it.
+    /// </summary>
+    private static (float Start, float End)? FirstStretch(Walk walk, IReadOnlyList<Vector3> spots)
+    {
+        var at = new List<float>();
+        float along = 0f;
+        for (int i = 0; i + 1 < walk.Path.Count; i++)
+        {
+            Vector3 a = walk.Path[i];
+            Vector3 b = walk.Path[i + 1];
+            float span = Vector3.Distance(a, b);
+            var ab = new Vector2(b.X - a.X, b.Z - a.Z);
+            float flat = ab.LengthSquared();
+            foreach (Vector3 spot in spots)
+            {
+                var ap = new Vector2(spot.X - a.X, spot.Z - a.Z);
+                float u = flat > 1e-12f ? Vector2.Dot(ap, ab) / flat : 0f;
+                if (u >= 0f && u <= 1f && (ap - (u * ab)).Length() <= SpotRadius)
+                {
+                    at.Add(along + (u * span));
+                }
+            }
+
+            along += span;
+        }
+
+        if (at.Count == 0)
+        {
+            return null;
+        }
+
+        at.Sort();
+        float end = at[0];
+        foreach (float d in at)
+        {
+            if (d - end > SpotChain)
+            {
+                break;
+            }
+
+            end = d;
+        }
+
+        return (at[0], end);
     }
 
     /// <summary>A stance on the line: the node, and the walk linking it to the jump's own stance (<c>null</c> for the jump's own); <see cref="Node"/> null when none could be placed or walked to.</summary>

@@ -365,11 +365,18 @@ public sealed class PathQuery
                 path = Shortcut(path, settings, rejected);
             }
 
+            int nextId = n + 2;
             if (settings.TightenJumps)
             {
                 _tightener ??= new JumpTightener(_scene);
-                path = _tightener.Tighten(path, n + 2, settings.MinCutWalk, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
+                path = _tightener.Tighten(path, ref nextId, settings.MinCutWalk, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
                 path = Shortcut(path, settings, rejected, walksOnly: true);
+            }
+
+            if (settings.HopSpots is { Count: > 0 } spots)
+            {
+                _tightener ??= new JumpTightener(_scene);
+                path = _tightener.Hop(path, spots, ref nextId, 0.5f * settings.MinCutWalk, rejected, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
             }
 
             path = JoinWalks(path, _scene.Walking);
@@ -807,7 +814,11 @@ public sealed class PathQuery
     {
         var points = new List<Vector3>(first.Path);
         points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
-        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via]) { CutFrom = CutFrom([first, second], 0, 2) };
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via])
+        {
+            CutFrom = CutFrom([first, second], 0, 2),
+            HoppedFrom = first.HoppedFrom.Count == 0 ? second.HoppedFrom : [.. first.HoppedFrom.Union(second.HoppedFrom)],
+        };
     }
 
     /// <summary>"3 jumps", "2 walks and 1 jump".</summary>

@@ -1,3 +1,4 @@
+using System.Numerics;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Sampling;
 
@@ -75,8 +76,8 @@ public sealed record QuerySettings
     public bool TightenJumps { get; init; } = true;
 
     /// <summary>
-    /// The shortest walk (metres, horizontally) <see cref="TightenJumps"/> adds before or after a jump: a stance is not
-    /// moved less than this. A walk turns in place at both ends, so a shorter one shuffles more than it walks.
+    /// The shortest walk (metres, horizontally) <see cref="TightenJumps"/> adds before or after a jump (a hop over a
+    /// spot, <see cref="HopSpots"/>, leaves half of it before or after itself): a stance is not moved less than this. A walk turns in place at both ends, so a shorter one shuffles more than it walks.
     /// Positive; 1 m by default.
     /// </summary>
     /// <exception cref="ArgumentOutOfRangeException">Set to a value that is not a finite positive number.</exception>
@@ -93,4 +94,13 @@ public sealed record QuerySettings
     /// moves did not animate (<see cref="JumpRepair"/> fills it); <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<(int From, int To)>? UncutJumps { get; init; }
+
+    /// <summary>
+    /// Ground points (world metres) where the body could not walk: <see cref="JumpRepair"/> fills it from where the
+    /// animator located a walk's problem. When walking is allowed, after the search (and cutting), a walk passing
+    /// within <see cref="JumpTightener.SpotRadius"/> of one (seen from above) hops over it: it walks to a takeoff
+    /// before the spot, jumps, and walks on from a landing after it, each move checked like the roadmap's. A walk
+    /// for which no hop passes the checks is kept as it is. <c>null</c> for none.
+    /// </summary>
+    public IReadOnlyList<Vector3>? HopSpots { get; init; }
 }

@@ -27,4 +27,11 @@ public abstract record Move
     /// keeps those jumps whole (<see cref="Query.QuerySettings.UncutJumps"/>) instead of setting the move aside.
     /// </summary>
     public IReadOnlyList<(int From, int To)> CutFrom { get; init; } = [];
+
+    /// <summary>
+    /// The walks of the searched path (from id, to id) this move stands in for part of, when the query hopped over a
+    /// spot of them the body could not walk (<see cref="Query.QuerySettings.HopSpots"/>); empty for a move as
+    /// searched. When such a move does not animate either, the repair sets those walks aside.
+    /// </summary>
+    public IReadOnlyList<(int From, int To)> HoppedFrom { get; init; } = [];
 }

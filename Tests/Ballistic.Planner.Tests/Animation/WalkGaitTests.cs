@@ -111,5 +111,16 @@ public sealed class WalkGaitTests
         TestContext.Out.WriteLine($"{freeFoot} free at the end: {(everyMomentHeld ? "a foot down throughout" : "a moment with no foot down")}; problems: {string.Join("; ", clip.Problems.Select(p => p.Reason))}");
         Assert.That(everyMomentHeld || reported, Is.True, "every foot in the air at some moment, and the gait said nothing");
         Assert.That(reported, Is.EqualTo(!everyMomentHeld), "reported exactly when it happens");
+
+        // Each problem is placed on the walk's path where it first shows, as its sentence says (the repair hops there).
+        foreach (JumpProblem problem in clip.Problems)
+        {
+            Assert.That(problem.IsLocated, Is.True, problem.Reason);
+            Assert.That(problem.Along, Is.InRange(0f, walk.Length), problem.Reason);
+            if (problem.Reason.Contains("along the walk", StringComparison.Ordinal))
+            {
+                Assert.That(problem.Reason, Does.Contain($"{problem.Along:0.00} m along the walk"));
+            }
+        }
     }
 }
