@@ -44,7 +44,7 @@ public static class SvgPlanRenderer
         float topW = worldW * topScale;
         float topH = worldD * topScale;
         float topX = (PageWidth - topW) / 2f;
-        const float topY = 70f;
+        const float topY = 86f;
         float Tx(Vector3 p) => topX + ((p.X - bounds.Min.X) * topScale);
         float Ty(Vector3 p) => topY + ((p.Z - bounds.Min.Z) * topScale);
 
@@ -133,7 +133,9 @@ public static class SvgPlanRenderer
         string status = PlanReportWriter.StatusName(result.Status);
         int walkCount = result.Walks.Count();
         svg.Append(Invariant($"<text x=\"{Margin}\" y=\"26\" font-size=\"18\" font-weight=\"bold\">Ballistic plan: {Escape(report.Scene.Character.Name)} on {Escape(Path.GetFileName(report.LevelPath))}</text>\n"));
-        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"46\">{status}: {Escape(result.Reason)}; {result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; {walkCount} walks, {result.Walks.Sum(w => w.Length):0.0} m; {result.TotalDuration:0.00} s in all; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
+        // Two lines: the status and reason, then the counts (one line ran past the page's right edge).
+        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"46\">{status}: {Escape(result.Reason)}</text>\n"));
+        svg.Append(Invariant($"<text x=\"{Margin}\" y=\"62\">{result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; {walkCount} walks, {result.Walks.Sum(w => w.Length):0.0} m; {result.TotalDuration:0.00} s in all; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
 
         // Top view.
         svg.Append(Invariant($"<text x=\"{topX}\" y=\"{topY - 8}\" font-weight=\"bold\">Top view (X right, Z down; shading = height {bounds.Min.Y:0.0}…{bounds.Max.Y:0.0} m)</text>\n"));

@@ -20,6 +20,22 @@ public sealed class SvgPlanRendererTests
         })];
 
     [Test]
+    public void TheHeaderFitsThePageWidth()
+    {
+        // The summary under the title was one line of some 190 characters: at 12 px sans-serif (about 6.5 px a
+        // character) it ran past the 1000 px page. The status and reason, then the counts, are two lines now.
+        XDocument svg = XDocument.Parse(SvgPlanRenderer.Render(WalkPlans.Report(WalkPlans.WalkAndJump, WalkPlans.Animation), WalkPlans.Roadmap));
+        float width = float.Parse(svg.Root!.Attribute("width")!.Value, CultureInfo.InvariantCulture);
+        XElement[] header = [.. svg.Root.Elements(Svg + "text").Take(3)];
+        Assert.That(header[2].Value, Does.Contain("s of flight"));
+        foreach (XElement line in header.Skip(1))
+        {
+            float x = float.Parse(line.Attribute("x")!.Value, CultureInfo.InvariantCulture);
+            Assert.That(x + (line.Value.Length * 6.5f), Is.LessThanOrEqualTo(width), line.Value);
+        }
+    }
+
+    [Test]
     public void WalksAreDashedPolylinesThroughTheirGroundPointsInBothViews()
     {
         PlanResult result = WalkPlans.WalkAndJump;
