@@ -29,6 +29,7 @@ public sealed class JumpRepair
 
     private readonly HashSet<(int From, int To)> _excluded = [];
     private readonly List<Vector3> _spots = [];
+    private int _walksSetAside;
     private readonly HashSet<(int From, int To)> _uncut = [];
     private readonly List<RejectedJump> _setAside = [];
 
@@ -128,7 +129,7 @@ public sealed class JumpRepair
 
                 if (kept)
                 {
-                    _setAside.Add(new RejectedJump(move.From, move.To, problems.First().Reason));
+                    Record(move, problems.First().Reason);
                     added++;
                 }
 
@@ -165,7 +166,7 @@ public sealed class JumpRepair
 
             if (any)
             {
-                _setAside.Add(new RejectedJump(move.From, move.To, problems.First().Reason));
+                Record(move, problems.First().Reason);
                 added++;
             }
         }
@@ -174,6 +175,13 @@ public sealed class JumpRepair
         CutFailures += cutFailed ? 1 : 0;
         HopFailures += hopped ? 1 : 0;
         return added;
+    }
+
+    /// <summary>Lists <paramref name="move"/> among the moves set aside, counting walks apart from jumps for the messages.</summary>
+    private void Record(Move move, string reason)
+    {
+        _setAside.Add(new RejectedJump(move.From, move.To, reason));
+        _walksSetAside += move is Walk ? 1 : 0;
     }
 
     /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="HopSpots"/>; true when each is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
@@ -194,16 +202,24 @@ public sealed class JumpRepair
     /// <c>null</c> when none were (the search's own status and reason then stand).
     /// </summary>
     public string? SearchFailed(string searchReason) =>
-        _setAside.Count == 0 ? null : $"no path animates cleanly: {Jumps(_setAside.Count)} set aside ({First()}) and then {searchReason}";
+        _setAside.Count == 0 ? null : $"no path animates cleanly: {SetAsideCount()} set aside ({First()}) and then {searchReason}";
 
     /// <summary>The reason of a request whose every search, <paramref name="rounds"/> of them, gave a path that did not animate cleanly.</summary>
-    public string RoundsExhausted(int rounds) => $"no path animated cleanly in {rounds} searches: {Jumps(_setAside.Count)} set aside ({First()})";
+    public string RoundsExhausted(int rounds) => $"no path animated cleanly in {rounds} searches: {SetAsideCount()} set aside ({First()})";
 
     /// <summary>What to add to a success's reason: empty, or that some jumps were set aside first.</summary>
-    public string SuccessNote() => _setAside.Count == 0 ? "" : $" after setting aside {Jumps(_setAside.Count)} the body could not perform";
+    public string SuccessNote() => _setAside.Count == 0 ? "" : $" after setting aside {SetAsideCount()} the body could not perform";
 
     /// <summary>"1 jump", "3 jumps".</summary>
     internal static string Jumps(int count) => count == 1 ? "1 jump" : $"{count} jumps";
+
+    /// <summary>"2 jumps", "1 walk", "1 jump and 2 walks": the moves set aside so far.</summary>
+    private string SetAsideCount()
+    {
+        int jumps = _setAside.Count - _walksSetAside;
+        string walks = _walksSetAside == 1 ? "1 walk" : $"{_walksSetAside} walks";
+        return _walksSetAside == 0 ? Jumps(jumps) : jumps == 0 ? walks : $"{Jumps(jumps)} and {walks}";
+    }
 
     private string First() => _setAside.Count == 0 ? "none" : _setAside[0].Reason + (_setAside.Count > 1 ? "; …" : "");
 }

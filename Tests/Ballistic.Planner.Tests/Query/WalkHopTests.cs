@@ -122,6 +122,7 @@ public sealed class WalkHopTests
         repair.Reject(walked.Moves, located);
         Assert.That(repair.Excluded, Does.Contain((walk.From.Id, walk.To.Id)));
         Assert.That(repair.WalkFailures, Is.EqualTo(1));
+        Assert.That(repair.SuccessNote(), Is.EqualTo(" after setting aside 1 walk the body could not perform"), "a walk is counted as a walk");
 
         // A problem with no place on the walk sets it aside at once; a hop's move that fails sets the searched walk aside.
         var unlocated = new JumpRepair();
@@ -136,6 +137,7 @@ public sealed class WalkHopTests
             Assert.That(unlocated.HopSpots, Is.Empty);
             Assert.That(hops.Excluded, Is.EquivalentTo(walk.Segments), "the searched walk, not the hop's own stances");
             Assert.That(hops.WalkFailures, Is.EqualTo(1));
+            Assert.That(hops.SuccessNote(), Does.Contain("1 jump the body"), "the hop's jump");
         });
 
         // After HopRounds rounds that found spots, problems set walks aside again.
