@@ -8,6 +8,10 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Query;
 
@@ -169,6 +173,29 @@ public sealed class WalkHopTests
             Assert.That(plan.Result.Walks.Sum(w => w.Length), Is.GreaterThan(6f));
             Assert.That(plan.Rounds, Is.EqualTo(2), "one round found the spot, one hopped it");
             Assert.That(animator.Refused, Is.EqualTo(1));
+        });
+    }
+
+    [TestCase(0)]
+    [TestCase(2)]
+    public void ARuntimeAgentWhoseWalkFailsAtOneSpotHopsOverItAndArrives(int threads)
+    {
+        // The runtime's path requests share the repair: the same double, through a world's agent.
+        (PlanningScene scene, Roadmap roadmap, JumpAnimator real) = Floor.Value;
+        var kind = new CharacterKind(scene, roadmap, real, new SpotAnimator(new SimpleMoveAnimator(real), 0f, 0.15f));
+        using var world = new JumpWorld(scene.Level, new WorldSettings { AnimationThreads = threads });
+        AgentHandle agent = world.AddAgent(world.AddKind(kind).Kind, From).Agent;
+        Assert.That(world.SetTarget(agent, To).Ok, Is.True);
+        List<JumpEvent> events = RuntimeWorlds.Run(world, 60 * 60, RuntimeWorlds.Concluded);
+        JumpEvent[] jumps = [.. events.Where(e => e.Kind == JumpEventKind.JumpStarted)];
+        Assert.Multiple(() =>
+        {
+            Assert.That(events.Select(e => e.Kind), Does.Contain(JumpEventKind.TargetReached), string.Join("; ", events.Select(e => $"{e.Kind} {e.Reason}")));
+            Assert.That(events.Select(e => e.Kind), Does.Not.Contain(JumpEventKind.PathFailed));
+            Assert.That(jumps, Has.Length.EqualTo(1), "one hop");
+            Assert.That(jumps[0].From.X, Is.LessThan(-0.15f), "takes off before the spot");
+            Assert.That(jumps[0].To.X, Is.GreaterThan(0.15f), "lands after it");
+            Assert.That(events.Count(e => e.Kind == JumpEventKind.WalkStarted), Is.EqualTo(2), "walks before and after");
         });
     }
 
