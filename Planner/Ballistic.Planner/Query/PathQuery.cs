@@ -689,8 +689,9 @@ public sealed class PathQuery
     /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that
     /// (two or more moves on) one direct jump, that takes less time than the moves it replaces (jump effort included)
     /// replaces them; a jump to the next pose may become a walk longer than the roadmap's walk edges. Greedy from the
-    /// start; never uses a move set aside. With <paramref name="walksOnly"/>, only stretches of two or more walks are
-    /// replaced, by one direct walk (after <see cref="JumpTightener"/>, whose walks a direct jump would undo).
+    /// start; never uses a move set aside. With <paramref name="walksOnly"/>, stretches are replaced by a direct walk
+    /// only, never a jump (after <see cref="JumpTightener"/>, whose walks a direct jump would undo; a cut jump whose
+    /// ends turn out to be walkable, or walks in a row, become one walk).
     /// </summary>
     private List<Move> Shortcut(List<Move> path, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, bool walksOnly = false)
     {
@@ -718,8 +719,7 @@ public sealed class PathQuery
                 // One move on: only a jump, replaced by a walk between the same stances (longer than a walk edge).
                 RoadmapNode a = poses[i];
                 RoadmapNode b = poses[j];
-                if (a.Id == b.Id || rejected?.Contains((a.Id, b.Id)) == true || (j == i + 1 && path[i] is not Jump) ||
-                    (walksOnly && (j == i + 1 || !AllWalks(path, i, j))))
+                if (a.Id == b.Id || rejected?.Contains((a.Id, b.Id)) == true || (j == i + 1 && path[i] is not Jump))
                 {
                     continue;
                 }
@@ -764,20 +764,6 @@ public sealed class PathQuery
         }
 
         return cut.Count == 0 ? [] : cut;
-    }
-
-    /// <summary>True when the moves from index <paramref name="from"/> up to (not including) <paramref name="to"/> are all walks.</summary>
-    private static bool AllWalks(List<Move> path, int from, int to)
-    {
-        for (int k = from; k < to; k++)
-        {
-            if (path[k] is not Walk)
-            {
-                return false;
-            }
-        }
-
-        return true;
     }
 
     /// <summary>Sharpest corner (degrees) at which two walks are joined into one walked without stopping.</summary>
