@@ -130,6 +130,12 @@ public sealed class WalkPlanTests
                 var hop = new Vector2(jump.Arc.End.X - jump.Arc.Start.X, jump.Arc.End.Z - jump.Arc.Start.Z);
                 var ahead = new Vector2(to.X - jump.Arc.Start.X, to.Z - jump.Arc.Start.Z);
                 Assert.That(Vector2.Dot(hop, ahead), Is.GreaterThan(0f), $"jump {jump.Takeoff.Id} → {jump.Landing.Id} goes back");
+
+                // Jumps only where the ground requires it: no walk links its ends faster than the jump plus its effort.
+                if (scene.Walking.Steer(jump.From, jump.To).Walk is Walk instead)
+                {
+                    Assert.That(instead.Length / instead.Speed, Is.GreaterThanOrEqualTo(jump.Arc.FlightTime + Walking.JumpEffort), $"jump {jump.From.Id} → {jump.To.Id} could be walked");
+                }
             }
         });
 
