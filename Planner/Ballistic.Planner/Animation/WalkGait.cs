@@ -785,6 +785,7 @@ internal sealed class WalkGait
             Vector3 lateral = across - along;
             WalkingLimits walking = _gait._scene.Character.Walking;
             float slope = walking.MaxGrade;
+            var walkable = new GroundSlopeTest(walking);
             (Vector3 Point, Vector3 Normal)? grounded = null;
             int mid = Step(time);
 
@@ -808,7 +809,7 @@ internal sealed class WalkGait
                     || _gait._scene.Surfaces.SurfaceOf(hit.Triangle) < 0
                     || !limb.Filter.Accepts(hit.Normal)
                     || hit.Normal.Y <= 0f
-                    || !walking.IsWalkable(hit.Normal, heading))
+                    || !walkable.Accepts(hit.Normal, heading))
                 {
                     continue;
                 }

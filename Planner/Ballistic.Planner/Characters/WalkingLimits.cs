@@ -48,25 +48,7 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// <see cref="MaxSlopeAlongDegrees"/> and its slope across the heading within <see cref="MaxSlopeDegrees"/>. With
     /// no horizontal heading, only <see cref="MaxSlopeDegrees"/> applies.
     /// </summary>
-    public bool IsWalkable(Vector3 normal, Vector3 heading)
-    {
-        float up = MathF.Abs(normal.Y);
-        if (up >= MathF.Cos(MaxSlopeDegrees * MathF.PI / 180f))
-        {
-            return true;
-        }
-
-        var ahead = new Vector2(heading.X, heading.Z);
-        float length = ahead.Length();
-        if (up < MathF.Cos(MaxSlopeAlongDegrees * MathF.PI / 180f) || !(length > 1e-6f))
-        {
-            return false;
-        }
-
-        // The part of the ground's fall across the heading: the normal's horizontal part along the side axis.
-        float side = MathF.Abs(((normal.X * ahead.Y) - (normal.Z * ahead.X)) / length);
-        return side <= up * MathF.Tan(MaxSlopeDegrees * MathF.PI / 180f);
-    }
+    public bool IsWalkable(Vector3 normal, Vector3 heading) => new GroundSlopeTest(this).Accepts(normal, heading);
 
     /// <summary>Tangent of <see cref="MaxSlopeAlongDegrees"/>: the most the ground rises or drops per metre walked.</summary>
     public float MaxGrade => MathF.Tan(MaxSlopeAlongDegrees * MathF.PI / 180f);

@@ -62,6 +62,7 @@ internal sealed class JumpTightener
     private readonly PlanningScene _scene;
     private readonly ReachTest _reach;
     private readonly List<Vector3> _ground = [];
+    private int _nextId;
 
     /// <summary>Creates the tightener of a scene's jumps.</summary>
     public JumpTightener(PlanningScene scene)
@@ -83,10 +84,11 @@ internal sealed class JumpTightener
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is kept as it is.</param>
     public List<Move> Tighten(List<Move> path, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
     {
+        _nextId = nextId;
         var result = new List<Move>(path.Count);
         foreach (Move move in path)
         {
-            if (move is Jump jump && uncut?.Contains((jump.From.Id, jump.To.Id)) != true && !stop() && TightenOne(jump, minWalk, ref nextId, rejected, canStand) is { } moves)
+            if (move is Jump jump && uncut?.Contains((jump.From.Id, jump.To.Id)) != true && !stop() && TightenOne(jump, minWalk, rejected, canStand) is { } moves)
             {
                 result.AddRange(moves);
             }
@@ -96,11 +98,12 @@ internal sealed class JumpTightener
             }
         }
 
+        nextId = _nextId;
         return result;
     }
 
     /// <summary>Walk, shorter jump, walk (either walk may be absent) replacing <paramref name="jump"/>, or <c>null</c>.</summary>
-    private List<Move>? TightenOne(Jump jump, float minWalk, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    private List<Move>? TightenOne(Jump jump, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
         Vector3 a = Roadmap.CentreOf(jump.From);
         Vector3 b = Roadmap.CentreOf(jump.To);
@@ -111,7 +114,6 @@ internal sealed class JumpTightener
             return null;
         }
 
-        float facing = MathF.Atan2(across.X, across.Y);
         List<Vector3> forward = Candidates(a, b, distance, minWalk);
         List<Vector3> backward = Candidates(b, a, distance, minWalk);
         if (forward.Count == 0 && backward.Count == 0)
@@ -120,11 +122,6 @@ internal sealed class JumpTightener
         }
 
         // Index 0 is the jump's own stance (no walk); 1.. the candidates, farthest from it first.
-        var takeoffs = new Candidate?[forward.Count + 1];
-        var landings = new Candidate?[backward.Count + 1];
-        takeoffs[0] = new Candidate(jump.From, null);
-        landings[0] = new Candidate(jump.To, null);
-
         // Pairs by ground walked, most first (ties: the lower takeoff index first).
         var pairs = new List<(int T, int L, float Walked)>();
         for (int t = 0; t <= forward.Count; t++)
@@ -141,22 +138,54 @@ internal sealed class JumpTightener
         }
 
         pairs.Sort((x, y) => y.Walked != x.Walked ? y.Walked.CompareTo(x.Walked) : x.T.CompareTo(y.T));
-        int tried = 0;
-        foreach ((int t, int l, _) in pairs)
+        if (FirstJump(pairs.Select(p => (p.T, p.L)), jump.From, [a, .. forward], jump.To, [b, .. backward], MathF.Atan2(across.X, across.Y), rejected, canStand) is not { } found)
         {
-            Candidate takeoff = takeoffs[t] ??= Place(forward[t - 1], facing, jump.From, toStance: true, ref nextId, rejected, canStand);
-            if (takeoff.Node is not RoadmapNode from)
+            return null;
+        }
+
+        (Walk? before, Jump cutJump, Walk? after) = found;
+
+        (int, int)[] cut = [(jump.From.Id, jump.To.Id)];
+        var moves = new List<Move>(3);
+        if (before is Walk walkBefore)
+        {
+            moves.Add(walkBefore with { CutFrom = cut });
+        }
+
+        moves.Add(cutJump with { CutFrom = cut });
+        if (after is Walk walkAfter)
+        {
+            moves.Add(walkAfter with { CutFrom = cut });
+        }
+
+        return moves;
+    }
+
+    /// <summary>
+    /// The first pair of <paramref name="pairs"/> (indices into <paramref name="takeoffPoints"/> and
+    /// <paramref name="landingPoints"/>; index 0 is <paramref name="from"/> or <paramref name="to"/> itself) whose
+    /// stances can be placed there facing <paramref name="facing"/> and walked from <paramref name="from"/> and to
+    /// <paramref name="to"/>, and whose jump passes the steering method (at most <see cref="MaxJumpsTried"/> steered):
+    /// the walk before the jump, the jump, the walk after it (a walk absent at index 0); <c>null</c> when none does.
+    /// Each stance is placed once, when a pair first needs it.
+    /// </summary>
+    private (Walk? Before, Jump Jump, Walk? After)? FirstJump(IEnumerable<(int T, int L)> pairs, RoadmapNode from, Vector3[] takeoffPoints, RoadmapNode to, Vector3[] landingPoints, float facing, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    {
+        var takeoffs = new Candidate?[takeoffPoints.Length];
+        var landings = new Candidate?[landingPoints.Length];
+        takeoffs[0] = new Candidate(from, null);
+        landings[0] = new Candidate(to, null);
+        int tried = 0;
+        foreach ((int t, int l) in pairs)
+        {
+            Candidate takeoff = takeoffs[t] ??= Place(takeoffPoints[t], facing, from, toStance: true, rejected, canStand);
+            if (takeoff.Node is not RoadmapNode up)
             {
                 continue;
             }
 
-            Candidate landing = landings[l] ??= Place(backward[l - 1], facing, jump.To, toStance: false, ref nextId, rejected, canStand);
-            if (landing.Node is not RoadmapNode to)
-            {
-                continue;
-            }
-
-            if (rejected?.Contains((from.Id, to.Id)) == true || !_reach.InReach(from.Pose.Position, to.Pose.Position))
+            Candidate landing = landings[l] ??= Place(landingPoints[l], facing, to, toStance: false, rejected, canStand);
+            if (landing.Node is not RoadmapNode down || rejected?.Contains((up.Id, down.Id)) == true || !_reach.InReach(up.Pose.Position, down.Pose.Position))
             {
                 continue;
             }
@@ -166,26 +195,11 @@ internal sealed class JumpTightener
                 break;
             }
 
-            SteeringResult steered = _scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone);
-            if (!steered.Succeeded)
+            SteeringResult steered = _scene.Steering.Steer(up.Pose, up.Cone, down.Pose, down.Cone);
+            if (steered.Succeeded)
             {
-                continue;
+                return (takeoff.Walk, new Jump(up, down, steered.Arc), landing.Walk);
             }
-
-            (int, int)[] cut = [(jump.From.Id, jump.To.Id)];
-            var moves = new List<Move>(3);
-            if (takeoff.Walk is Walk before)
-            {
-                moves.Add(before with { CutFrom = cut });
-            }
-
-            moves.Add(new Jump(from, to, steered.Arc) { CutFrom = cut });
-            if (landing.Walk is Walk after)
-            {
-                moves.Add(after with { CutFrom = cut });
-            }
-
-            return moves;
         }
 
         return null;
@@ -209,12 +223,13 @@ internal sealed class JumpTightener
     /// <param name="stop">Polled between walks: when it returns true, the rest of the path is kept as it is.</param>
     public List<Move> Hop(List<Move> path, IReadOnlyList<Vector3> spots, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand, Func<bool> stop)
     {
+        _nextId = nextId;
         var result = new List<Move>(path.Count);
         foreach (Move move in path)
         {
             if (move is Walk walk && walk.CutFrom.Count == 0 && !stop())
             {
-                HopOver(walk, spots, result, ref nextId, minWalk, rejected, canStand);
+                HopOver(walk, spots, result, minWalk, rejected, canStand);
             }
             else
             {
@@ -222,15 +237,16 @@ internal sealed class JumpTightener
             }
         }
 
+        nextId = _nextId;
         return result;
     }
 
     /// <summary>Adds <paramref name="walk"/> to <paramref name="result"/>, hopping over its spots (see <see cref="Hop"/>).</summary>
-    private void HopOver(Walk walk, IReadOnlyList<Vector3> spots, List<Move> result, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    private void HopOver(Walk walk, IReadOnlyList<Vector3> spots, List<Move> result, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
         (int, int)[] searched = [.. walk.Segments];
         Walk? rest = walk;
-        while (rest is not null && FirstStretch(rest, spots) is (float first, float last) && HopAt(rest, first, last, ref nextId, minWalk, rejected, canStand) is { } hop)
+        while (rest is not null && FirstStretch(rest, spots) is (float first, float last) && HopAt(rest, first, last, minWalk, rejected, canStand) is { } hop)
         {
             if (hop.Before is Walk before)
             {
@@ -252,17 +268,11 @@ internal sealed class JumpTightener
     /// <paramref name="last"/> metres along <paramref name="walk"/> that passes, with the walks before and after it
     /// (each absent when the hop leaves from or lands on the walk's own stance); <c>null</c> when none does.
     /// </summary>
-    private (Walk? Before, Jump Jump, Walk? After)? HopAt(Walk walk, float first, float last, ref int nextId, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    private (Walk? Before, Jump Jump, Walk? After)? HopAt(Walk walk, float first, float last, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
-        float facing = MathF.Atan2(walk.Path[^1].X - walk.Path[0].X, walk.Path[^1].Z - walk.Path[0].Z);
-
         // Index 0 is the walk's own stance (no walk); 1.. the points before (after) the spot, nearest it first.
         float[] before = [0f, .. HopReach.Select(r => first - r).Where(d => d >= minWalk)];
         float[] after = [walk.Length, .. HopReach.Select(r => last + r).Where(d => walk.Length - d >= minWalk)];
-        var takeoffs = new Candidate?[before.Length];
-        var landings = new Candidate?[after.Length];
-        takeoffs[0] = new Candidate(walk.From, null);
-        landings[0] = new Candidate(walk.To, null);
 
         // The shortest hop first (ties: the lower takeoff index first).
         var pairs = new List<(int T, int L)>();
@@ -283,30 +293,8 @@ internal sealed class JumpTightener
             return byLength != 0 ? byLength : x.T.CompareTo(y.T);
         });
 
-        int tried = 0;
-        foreach ((int t, int l) in pairs)
-        {
-            Candidate takeoff = takeoffs[t] ??= Place(walk.PointAt(before[t]), facing, walk.From, toStance: true, ref nextId, rejected, canStand);
-            Candidate landing = landings[l] ??= Place(walk.PointAt(after[l]), facing, walk.To, toStance: false, ref nextId, rejected, canStand);
-            if (takeoff.Node is not RoadmapNode from || landing.Node is not RoadmapNode to ||
-                rejected?.Contains((from.Id, to.Id)) == true || !_reach.InReach(from.Pose.Position, to.Pose.Position))
-            {
-                continue;
-            }
-
-            if (++tried > MaxJumpsTried)
-            {
-                break;
-            }
-
-            SteeringResult steered = _scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone);
-            if (steered.Succeeded)
-            {
-                return (takeoff.Walk, new Jump(from, to, steered.Arc), landing.Walk);
-            }
-        }
-
-        return null;
+        float facing = MathF.Atan2(walk.Path[^1].X - walk.Path[0].X, walk.Path[^1].Z - walk.Path[0].Z);
+        return FirstJump(pairs, walk.From, [.. before.Select(walk.PointAt)], walk.To, [.. after.Select(walk.PointAt)], facing, rejected, canStand);
     }
 
     /// <summary>
@@ -402,7 +390,7 @@ internal sealed class JumpTightener
     /// <paramref name="own"/> to it (<paramref name="toStance"/>: a takeoff) or from it to <paramref name="own"/>
     /// (a landing); a candidate with no node when it cannot be placed or walked, or its walk is set aside.
     /// </summary>
-    private Candidate Place(Vector3 point, float facing, RoadmapNode own, bool toStance, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
+    private Candidate Place(Vector3 point, float facing, RoadmapNode own, bool toStance, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
         EndpointPlacement placed = _scene.Sampler.PlaceFacing(point, Placement, facing, canStand);
         if (placed.Pose is not { } pose)
@@ -410,7 +398,7 @@ internal sealed class JumpTightener
             return new Candidate(null, null);
         }
 
-        var node = new RoadmapNode(nextId++, pose.Pose, pose.Cone, pose.Contacts);
+        var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         (RoadmapNode first, RoadmapNode second) = toStance ? (own, node) : (node, own);
         if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.Steer(first, second).Walk is not Walk walk)
         {

@@ -36,6 +36,7 @@ public sealed class WalkSteering
     private readonly float _tolerance;
     private readonly float _legSpace;
     private readonly float _maxRise;
+    private readonly GroundSlopeTest _slope;
 
     /// <summary>Creates the walking steering method for a character on a level.</summary>
     /// <param name="world">The level's collision geometry (rays and box overlaps).</param>
@@ -51,6 +52,7 @@ public sealed class WalkSteering
         _tolerance = collisionTolerance;
         Limits = character.Walking;
         _maxRise = Limits.StepHeight;
+        _slope = new GroundSlopeTest(Limits);
 
         // Between the ground and the trunk's bottom in its lowest stance the legs move: only ground may be there.
         _legSpace = MathF.Max(character.StanceLift.Min - character.TrunkHalfExtents.Y, _maxRise) + 0.01f;
@@ -164,7 +166,7 @@ public sealed class WalkSteering
                 return WalkFailure.Gap;
             }
 
-            bool steep = !Limits.IsWalkable(hit.Normal, heading);
+            bool steep = !_slope.Accepts(hit.Normal, heading);
             if (steep && steepBefore)
             {
                 passed = MathF.Max(0f, (i - 2) * spacing);

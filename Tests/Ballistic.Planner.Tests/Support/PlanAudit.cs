@@ -204,6 +204,7 @@ internal static class PlanAudit
         float alongCos = MathF.Cos(limits.MaxSlopeAlongDegrees * MathF.PI / 180f);
         float grade = MathF.Tan(limits.MaxSlopeAlongDegrees * MathF.PI / 180f);
         bool steepBefore = false;
+        var heading = new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z);
         for (int i = 0; i < walk.Path.Count; i++)
         {
             Vector3 p = walk.Path[i];
@@ -222,8 +223,7 @@ internal static class PlanAudit
             // Steeper than the slope walked on any way, and either steeper than the slope walked up or down or
             // falling to the side more than the first allows (the walk's heading from its first path point to its last).
             Vector3 n = hit.Normal.Y < 0f ? -hit.Normal : hit.Normal;
-            Vector3 heading = Vector3.Normalize(new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z) + new Vector3(1e-9f, 0f, 0f));
-            float sideways = MathF.Abs(Vector3.Dot(n, Vector3.Cross(Vector3.UnitY, heading)));
+            float sideways = heading.LengthSquared() > 1e-12f ? MathF.Abs(Vector3.Dot(n, Vector3.Cross(Vector3.UnitY, Vector3.Normalize(heading)))) : float.PositiveInfinity;
             bool steep = n.Y < cos - 1e-3f && (n.Y < alongCos - 1e-3f || sideways > (n.Y * tan) + 1e-3f);
             if (steep && steepBefore)
             {
