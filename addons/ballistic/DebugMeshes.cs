@@ -1,3 +1,5 @@
+#nullable enable
+using System;
 using Ballistic.Runtime.DebugDraw;
 using Godot;
 

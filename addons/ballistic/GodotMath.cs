@@ -1,3 +1,4 @@
+#nullable enable
 using Godot;
 using NumericsMatrix = System.Numerics.Matrix4x4;
 using NumericsQuaternion = System.Numerics.Quaternion;

@@ -1,4 +1,6 @@
+#nullable enable
 #if TOOLS
+using System;
 using Ballistic.Runtime.DebugDraw;
 using Godot;
 

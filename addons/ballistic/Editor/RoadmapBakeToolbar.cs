@@ -1,3 +1,4 @@
+#nullable enable
 #if TOOLS
 using Godot;
 
@@ -85,7 +86,9 @@ public partial class RoadmapBakeToolbar : HBoxContainer
             return;
         }
 
-        if (Roadmap.BakeRoadmap(onThread: true) is { Length: > 0 } refused)
+        // BakeRoadmap returns nothing: a bake that cannot start ends at once, not baking, with its reason.
+        Roadmap.BakeRoadmap(onThread: true);
+        if (!Roadmap.IsBaking() && Roadmap.GetLastBakeError() is { Length: > 0 } refused)
         {
             _errorDialog.DialogText = refused;
             _errorDialog.PopupCentered();

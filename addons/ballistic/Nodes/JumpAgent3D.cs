@@ -1,3 +1,5 @@
+#nullable enable
+using System.Linq;
 using Ballistic.Runtime;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;

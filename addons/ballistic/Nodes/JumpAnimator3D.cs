@@ -1,3 +1,5 @@
+#nullable enable
+using System;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Skeletons;

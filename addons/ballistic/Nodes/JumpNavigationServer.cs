@@ -1,3 +1,6 @@
+#nullable enable
+using System;
+using System.Collections.Generic;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
 using Godot;

@@ -1,3 +1,7 @@
+#nullable enable
+using System;
+using System.Collections.Generic;
+using System.Threading.Tasks;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;

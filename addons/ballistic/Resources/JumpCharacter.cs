@@ -1,3 +1,4 @@
+#nullable enable
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Rigs;
 using Ballistic.Runtime.Baking;
@@ -9,7 +10,7 @@ namespace Ballistic.Addon;
 /// A kind of jumping character, as an inspector resource: its rigged glTF binary (<c>.glb</c>) and limb spec
 /// (<c>NAME.limbs.json</c>, schema <c>ballistic.character/1</c>), and optional overrides of the spec's speed limits and
 /// friction. The bundled presets are <c>res://Scenes/characters/{skeleton,frog,jumperman,ant}.tres</c>. The files are
-/// read with <see cref="FileAccess"/>, so they work in exported games; everything else is
+/// read with <see cref="Godot.FileAccess"/>, so they work in exported games; everything else is
 /// <see cref="CharacterAsset"/>'s.
 /// </summary>
 [Tool]
@@ -74,9 +75,9 @@ public partial class JumpCharacter : Resource
             throw new CharacterException($"JumpCharacter '{DisplayName}' ({ResourcePath}): no {what} file is set.");
         }
 
-        byte[] bytes = FileAccess.GetFileAsBytes(path);
+        byte[] bytes = Godot.FileAccess.GetFileAsBytes(path);
         return bytes.Length > 0
             ? bytes
-            : throw new CharacterException($"JumpCharacter '{DisplayName}': the {what} file {path} cannot be read ({FileAccess.GetOpenError()}).");
+            : throw new CharacterException($"JumpCharacter '{DisplayName}': the {what} file {path} cannot be read ({Godot.FileAccess.GetOpenError()}).");
     }
 }

@@ -1,3 +1,4 @@
+#nullable enable
 using Ballistic.Runtime.Baking;
 using Godot;
 

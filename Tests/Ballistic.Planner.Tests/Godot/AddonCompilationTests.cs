@@ -1,0 +1,132 @@
+using System.Xml.Linq;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Godot;
+
+/// <summary>
+/// The Godot project's C# compiles, as far as it can be judged without GodotSharp (<see cref="AddonCompilation"/>), the
+/// way a Godot game compiles it: no implicit usings, nullable off at project level, C# 12. Each kind of mistake the last
+/// compile against the real Godot API found is planted once to show the check catches it.
+/// </summary>
+public sealed class AddonCompilationTests
+{
+    [TestCase(true, TestName = "The addon and scenes have no problem of our own in an editor build")]
+    [TestCase(false, TestName = "The addon and scenes have no problem of our own in an exported game")]
+    public void TheAddonHasNoProblemOfOurOwn(bool editor)
+    {
+        AddonCompilation compilation = AddonCompilation.OfRepository(editor);
+        Assert.Multiple(() =>
+        {
+            Assert.That(compilation.Files, Has.Some.StartsWith("addons/ballistic/Nodes/").And.Some.StartsWith("Scenes/"));
+            Assert.That(compilation.Problems(), Is.Empty);
+        });
+    }
+
+    [Test]
+    public void TheGodotProjectStatesItsImports()
+    {
+        XElement project = XDocument.Load(Path.Combine(RepositoryFiles.Root, "Ballistic.csproj")).Root!;
+        string? implicitUsings = project.Descendants("ImplicitUsings").LastOrDefault()?.Value;
+        Assert.Multiple(() =>
+        {
+            Assert.That(implicitUsings, Is.EqualTo("disable"), "Ballistic.csproj turns implicit usings off, as Godot's template has them");
+            Assert.That(project.Descendants("Using"), Is.Empty, "no global usings through the project file");
+            foreach (string file in AddonCompilation.OfRepository(editor: true).Files)
+            {
+                string text = File.ReadAllText(Path.Combine(RepositoryFiles.Root, file));
+                Assert.That(text, Does.Not.Contain("global using"), file);
+                Assert.That(text.Split('\n').Select(l => l.TrimEnd('\r')), Does.Contain("#nullable enable"),
+                    $"{file}: a game's project has nullable off by default; the file turns it on for itself");
+            }
+        });
+    }
+
+    [Test]
+    public void ANameOfBothGodotAndSystemIsReportedAsTheRealBuildWould()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Loader.cs", """
+            #nullable enable
+            using System.IO;
+            using Godot;
+
+            namespace X;
+
+            /// <summary>Reads with <see cref="FileAccess"/>.</summary>
+            public static class Loader
+            {
+                public static byte[] Read(string path) => FileAccess.GetFileAsBytes(path);
+
+                public static byte[] Fine(string path) => Godot.FileAccess.GetFileAsBytes(path);
+            }
+            """)], editor: false).Problems();
+        Assert.Multiple(() =>
+        {
+            Assert.That(problems, Has.Member("addons/x/Loader.cs:7: CS0419: 'FileAccess' is ambiguous between 'Godot.FileAccess' and 'System.IO.FileAccess' (qualify it or alias it)"));
+            Assert.That(problems, Has.Member("addons/x/Loader.cs:10: CS0104: 'FileAccess' is ambiguous between 'Godot.FileAccess' and 'System.IO.FileAccess' (qualify it or alias it)"));
+            Assert.That(problems, Has.None.Contains(":12:"), "a qualified name is not ambiguous");
+        });
+    }
+
+    [Test]
+    public void AnAliasOrAGlobalUsingIsFollowed()
+    {
+        IReadOnlyList<string> aliased = AddonCompilation.Of([("a/A.cs", """
+            #nullable enable
+            using System;
+            using Godot;
+            using Environment = System.Environment;
+
+            public static class A
+            {
+                public static int Cores => Environment.ProcessorCount;
+            }
+            """)], editor: false).Problems();
+        IReadOnlyList<string> global = AddonCompilation.Of(
+            [("a/Usings.cs", "global using Godot;\n"), ("a/B.cs", "#nullable enable\nusing System;\npublic static class B { public static int Cores => Environment.ProcessorCount; }\n")],
+            editor: false).Problems();
+        Assert.Multiple(() =>
+        {
+            Assert.That(aliased, Is.Empty);
+            Assert.That(global, Is.EqualTo(new[] { "a/B.cs:3: CS0104: 'Environment' is ambiguous between 'Godot.Environment' and 'System.Environment' (qualify it or alias it)" }));
+        });
+    }
+
+    [Test]
+    public void AVoidMethodUsedAsAValueIsReported()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of(
+        [
+            ("addons/x/Roadmap.cs", "#nullable enable\nusing Godot;\nnamespace X;\npublic partial class Roadmap : Node3D { public void BakeRoadmap(bool onThread = true) { } }\n"),
+            ("addons/x/Toolbar.cs", "#nullable enable\nusing Godot;\nnamespace X;\npublic partial class Toolbar : HBoxContainer\n{\n    public Roadmap? Roadmap { get; set; }\n    private void OnBake()\n    {\n        if (Roadmap!.BakeRoadmap(onThread: true) is { Length: > 0 } refused) { GD.Print(refused); }\n    }\n}\n"),
+        ], editor: true).Problems();
+        Assert.That(problems, Has.Some.StartsWith("addons/x/Toolbar.cs:9: CS8117: "));
+    }
+
+    [Test]
+    public void AMissingSystemUsingAndANullableAnnotationWithoutContextAreReported()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Lines.cs", """
+            using Godot;
+
+            public static class Lines
+            {
+                public static string? Name;
+
+                public static int Count(ReadOnlySpan<Vector3> points) => points.Length;
+            }
+            """)], editor: false).Problems();
+        Assert.Multiple(() =>
+        {
+            Assert.That(problems, Has.Some.StartsWith("addons/x/Lines.cs:5: CS8632: "));
+            Assert.That(problems, Has.Some.EqualTo("addons/x/Lines.cs:7: CS0246: 'ReadOnlySpan' is .NET's (System): the file needs a using directive (there are no implicit usings in a Godot project)"));
+            Assert.That(problems, Has.None.Contains("'Vector3'"), "Vector3 is Godot's here");
+        });
+    }
+
+    [Test]
+    public void CSharp13IsNotAvailableToAGameOnNet8()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Lock.cs", "#nullable enable\npublic static class Esc { public const char E = '\\e'; }\n")], editor: false).Problems();
+        Assert.That(problems, Has.Some.Contains("CS8652").Or.Some.Contains("C# 12"));
+    }
+}
