@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Characters;
 
@@ -196,7 +197,7 @@ public sealed class ReducedCharacter
             }
         }
 
-        return Convert.ToHexStringLower(hash.GetHashAndReset());
+        return HexText.Lower(hash.GetHashAndReset());
     }
 
     /// <inheritdoc />

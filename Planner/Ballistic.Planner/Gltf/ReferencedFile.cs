@@ -99,7 +99,7 @@ internal static partial class ReferencedFile
     internal static string? RealPath(string path)
     {
         string root = Path.GetPathRoot(path) ?? "";
-        var pending = new Stack<string>(path[root.Length..].Split(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar).Reverse());
+        var pending = new Stack<string>(Enumerable.Reverse(path[root.Length..].Split(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar)));
         string current = root;
         int links = 0;
         while (pending.Count > 0)
@@ -145,7 +145,7 @@ internal static partial class ReferencedFile
                 target = target[root.Length..];
             }
 
-            foreach (string t in target.Split(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar).Reverse())
+            foreach (string t in Enumerable.Reverse(target.Split(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar)))
             {
                 pending.Push(t);
             }

@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Security.Cryptography;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Levels;
 
@@ -71,6 +72,6 @@ public sealed class Level
             hash.AppendData(buffer);
         }
 
-        return Convert.ToHexStringLower(hash.GetHashAndReset());
+        return HexText.Lower(hash.GetHashAndReset());
     }
 }

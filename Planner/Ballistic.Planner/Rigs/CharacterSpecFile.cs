@@ -200,9 +200,21 @@ public static class CharacterSpecFile
         };
         if (source is not null && (source.UpAxis != "+Y" || source.ForwardAxis != "+Z"))
         {
-            root.Insert(2, "upAxis", source.UpAxis);
-            root.Insert(3, "forwardAxis", source.ForwardAxis);
+            // The axes go third and fourth, after schema and name (JsonObject.Insert is .NET 9 and later).
+            KeyValuePair<string, JsonNode?>[] entries = [.. root];
+            root.Clear();
+            for (int i = 0; i < entries.Length; i++)
+            {
+                if (i == 2)
+                {
+                    root["upAxis"] = source.UpAxis;
+                    root["forwardAxis"] = source.ForwardAxis;
+                }
+
+                root.Add(entries[i]);
+            }
         }
+
         return Encoding.UTF8.GetBytes(root.ToJsonString(new JsonSerializerOptions { WriteIndented = true, Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping }) + "\n");
     }
 

@@ -284,8 +284,8 @@ public static class RoadmapFile
         using var r = new BinaryReader(new MemoryStream(payload), Encoding.UTF8);
         r.ReadBytes(Magic.Length);
         ushort version = r.ReadUInt16();
-        string level = Convert.ToHexStringLower(r.ReadBytes(32));
-        string character = Convert.ToHexStringLower(r.ReadBytes(32));
+        string level = HexText.Lower(r.ReadBytes(32));
+        string character = HexText.Lower(r.ReadBytes(32));
         string characterName = r.ReadString();
         int seed = r.ReadInt32();
         var roadmap = new RoadmapBuilder(level, character, characterName, seed);

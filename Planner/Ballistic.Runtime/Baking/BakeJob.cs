@@ -23,7 +23,7 @@ namespace Ballistic.Runtime.Baking;
 public sealed class BakeJob : IDisposable
 {
     private readonly CancellationTokenSource _cancel = new();
-    private readonly Lock _gate = new();
+    private readonly object _gate = new(); // not System.Threading.Lock, which net8.0 lacks
     private readonly TaskCompletionSource<BakeOutcome> _completion = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private readonly Stopwatch _clock = Stopwatch.StartNew();
     private readonly ProgressTracker _tracker;
