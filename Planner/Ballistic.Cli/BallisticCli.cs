@@ -47,6 +47,17 @@ public static class BallisticCli
         return root;
     }
 
+    private static IEnumerable<string> CommandPath(Command command, RootCommand root)
+    {
+        var names = new List<string>();
+        for (Command? c = command; c is not null && c != root; c = c.Parents.OfType<Command>().FirstOrDefault())
+        {
+            names.Insert(0, c.Name);
+        }
+
+        return names;
+    }
+
     /// <summary>
     /// Parses <paramref name="args"/> and runs the chosen command, writing normal output to <paramref name="output"/>
     /// and errors to <paramref name="error"/>.
@@ -66,8 +77,15 @@ public static class BallisticCli
         {
             RootCommand root = BuildRootCommand(cancellation);
             ParseResult parsed = root.Parse(args);
-            int code = parsed.Invoke(new InvocationConfiguration { Output = output, Error = error, EnableDefaultExceptionHandler = false, ProcessTerminationTimeout = null });
-            return parsed.Errors.Count > 0 ? ExitCode.Usage : code;
+            if (parsed.Errors.Count > 0)
+            {
+                // One line, not the whole help: what is wrong and where the help is.
+                string command = string.Join(' ', CommandPath(parsed.CommandResult.Command, root));
+                error.WriteLine($"error: {string.Join("; ", parsed.Errors.Select(e => e.Message.TrimEnd('.')))} (see 'ballistic{(command.Length > 0 ? " " + command : "")} --help')");
+                return ExitCode.Usage;
+            }
+
+            return parsed.Invoke(new InvocationConfiguration { Output = output, Error = error, EnableDefaultExceptionHandler = false, ProcessTerminationTimeout = null });
         }
         catch (Exception e)
         {

@@ -27,6 +27,14 @@ internal static class BenchCommand
         ("rooftops", "skeleton", 1256, 107.13),
     ];
 
+    private static readonly (string Level, string Character, Vector3 From, Vector3 To)[] AnimationPaths =
+    [
+        ("desert", "skeleton", new Vector3(-9.5f, 0f, -7.5f), new Vector3(9.5f, 0f, 7.5f)),
+        ("pond", "frog", new Vector3(-0.5f, 0f, -5.8f), new Vector3(0.5f, 0f, 4.6f)),
+        ("gap-course", "ant", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
+        ("gap-course", "skeleton", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
+    ];
+
     public static Command Create()
     {
         Option<int> runs = new("--runs") { Description = "Runs per measurement; the median is printed.", DefaultValueFactory = _ => 5 };
@@ -47,7 +55,14 @@ internal static class BenchCommand
                 throw new CliException($"--threads takes 1 to 1024 threads, not {t}.");
             }
 
-            Run(parse.InvocationConfiguration.Output, n, t, parse.GetValue(only));
+            string? filter = parse.GetValue(only);
+            if (filter is not null && !Scenarios.Any(s => Matches(filter, s.Level, s.Character)) && !AnimationPaths.Any(p => Matches(filter, p.Level, p.Character)))
+            {
+                string names = string.Join(", ", Scenarios.Select(s => s.Level).Concat(AnimationPaths.Select(p => p.Level)).Concat(Scenarios.Select(s => s.Character)).Concat(AnimationPaths.Select(p => p.Character)).Distinct());
+                throw new CliException($"--only '{filter}' matches no level or character of the bench ({names}).");
+            }
+
+            Run(parse.InvocationConfiguration.Output, n, t, filter);
             return 0;
         }));
         return command;
@@ -62,7 +77,7 @@ internal static class BenchCommand
         var levels = new Dictionary<string, Level>();
         foreach ((string levelName, string characterName, int nodes, double paper) in Scenarios)
         {
-            if (only is not null && !levelName.Contains(only, StringComparison.OrdinalIgnoreCase) && !characterName.Contains(only, StringComparison.OrdinalIgnoreCase))
+            if (!Matches(only, levelName, characterName))
             {
                 continue;
             }
@@ -82,8 +97,9 @@ internal static class BenchCommand
             output.WriteLine($"| {characterName} on {levelName} | {level.Triangles.Count:N0} | {Median(times):0.0000} | {last!.Roadmap.Nodes.Count} | {last.Roadmap.Edges.Count} | {paper} |");
         }
 
-        if (only is not null && !"desert".Contains(only, StringComparison.OrdinalIgnoreCase) && !"skeleton".Contains(only, StringComparison.OrdinalIgnoreCase))
+        if (!Matches(only, "desert", "skeleton"))
         {
+            Animation(output, runs, levels, only);
             return;
         }
 
@@ -164,19 +180,22 @@ internal static class BenchCommand
 
         output.WriteLine($"trunk box vs level ({desert.Triangles.Count:N0} triangles, {hits / 20} of {boxes.Length} touching): median {Median(boxRates):N0} queries/s");
 
-        Animation(output, runs, levels);
+        Animation(output, runs, levels, only);
     }
 
+    /// <summary>Whether a scenario on <paramref name="level"/> with <paramref name="character"/> runs under <c>--only</c>.</summary>
+    private static bool Matches(string? only, string level, string character) =>
+        only is null || level.Contains(only, StringComparison.OrdinalIgnoreCase) || character.Contains(only, StringComparison.OrdinalIgnoreCase);
+
     /// <summary>Whole-body synthesis on a path across each bundled level: contact generation time and success, time per jump.</summary>
-    private static void Animation(TextWriter output, int runs, Dictionary<string, Level> levels)
+    private static void Animation(TextWriter output, int runs, Dictionary<string, Level> levels, string? only)
     {
-        (string Level, string Character, Vector3 From, Vector3 To)[] paths =
-        [
-            ("desert", "skeleton", new Vector3(-9.5f, 0f, -7.5f), new Vector3(9.5f, 0f, 7.5f)),
-            ("pond", "frog", new Vector3(-0.5f, 0f, -5.8f), new Vector3(0.5f, 0f, 4.6f)),
-            ("gap-course", "ant", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
-            ("gap-course", "skeleton", new Vector3(-6f, 0f, 0f), new Vector3(11.5f, 1f, 0f)),
-        ];
+        (string Level, string Character, Vector3 From, Vector3 To)[] paths = AnimationPaths.Where(p => Matches(only, p.Level, p.Character)).ToArray();
+        if (paths.Length == 0)
+        {
+            return;
+        }
+
         output.WriteLine();
         output.WriteLine("| path | jumps | contact generation (ms, median) | contact poses valid | synthesis per jump (ms, median) |");
         output.WriteLine("|---|---:|---:|---:|---:|");

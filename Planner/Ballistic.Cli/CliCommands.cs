@@ -62,12 +62,15 @@ internal static class CliCommands
             ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
             BakeResult result = new RoadmapBaker(scene).Bake(settings, TerminationCondition.Cancellation(cancellation), progress);
             progress?.Finish();
-            stdout.WriteLine($"status: {PlanReportWriter.StatusName(result.Status)} ({result.Reason})");
+            // A bake has no "exact": it ends done (its reason says which budget stopped it), cancelled or failed.
+            string ending = result.Status == PlannerStatus.Exact ? "done" : PlanReportWriter.StatusName(result.Status);
+            stdout.WriteLine($"bake: {ending} ({result.Reason})");
             stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps, {result.Roadmap.Walks.Count} walks in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
             if (result.SteeringRejections.Count > 0)
             {
-                stdout.WriteLine("rejected jumps: " + string.Join(", ", result.SteeringRejections.OrderByDescending(r => r.Value).Select(r => $"{r.Key} {r.Value}")));
+                stdout.WriteLine("jump candidates refused: " + string.Join("; ", result.SteeringRejections.OrderByDescending(r => r.Value).ThenBy(r => r.Key).Select(r => $"{r.Value:N0} {SteeringFailureText.Describe(r.Key)}")));
             }
+
             string path = parse.GetValue(output)!;
             if (result.Status is PlannerStatus.Cancelled)
             {

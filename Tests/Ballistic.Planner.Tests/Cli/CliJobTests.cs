@@ -174,6 +174,15 @@ public sealed class CliJobTests
         (int bakeCode, string bakeOutput, string bakeError) = Run("bake", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--max-nodes", "80", "--out", roadmap);
         Assert.That(bakeCode, Is.Zero, bakeError);
         Assert.That(bakeOutput, Does.Contain("80 nodes"));
+        Assert.Multiple(() =>
+        {
+            Assert.That(bakeOutput, Does.StartWith("bake: done (reached 80 nodes)"), "a bake is done, not 'exact'");
+            Assert.That(bakeOutput, Does.Contain("jump candidates refused: "));
+            foreach (Ballistic.Planner.Steering.SteeringFailure failure in Enum.GetValues<Ballistic.Planner.Steering.SteeringFailure>())
+            {
+                Assert.That(bakeOutput, Does.Not.Contain(failure.ToString() + " "), "refusals in words, not enum names");
+            }
+        });
 
         string report = Path.Combine(_folder, "r.json");
         (int code, string output, string error) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);

@@ -6,6 +6,7 @@ using Ballistic.Planner.Tests.Support;
 namespace Ballistic.Planner.Tests.Cli;
 
 /// <summary>One error boundary: every failure is one line and an exit code by its class; Ctrl-C and SIGTERM cancel cleanly.</summary>
+[NonParallelizable] // signals a real bake a fixed time after its start
 public sealed class ExitCodeTests
 {
     private string _folder = "";
@@ -46,6 +47,8 @@ public sealed class ExitCodeTests
             (["bake", "--level", level, "--character", "skeleton", "--max-nodes", "0", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--max-nodes takes 1 to"),
             (["bake", "--level", level, "--character", "skeleton", "--threads", "100000", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--threads takes 1 to 1024"),
             (["bench", "--runs", "0"], ExitCode.Usage, "--runs takes 1 to 1000"),
+            (["bench", "--only", "moon"], ExitCode.Usage, "--only 'moon' matches no level or character"),
+            (["bake", "--level", level, "--character", "skeleton"], ExitCode.Usage, "--out"),
             (["bake", "--level", Path.Combine(_folder, "missing.glb"), "--character", "skeleton", "--out", Path.Combine(_folder, "x")], ExitCode.Input, "does not exist"),
             (["bake", "--level", bad, "--character", "skeleton", "--out", Path.Combine(_folder, "x")], ExitCode.Input, "bad.glb"),
             (["plan", "--level", level, "--character", "skeleton", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", Path.Combine(_folder, "r.json")], ExitCode.Input, "not a Ballistic roadmap"),
@@ -59,7 +62,7 @@ public sealed class ExitCodeTests
             (int actual, _, string error) = Run(args);
             string context = string.Join(' ', args);
             Assert.That(actual, Is.EqualTo(code), $"{context}: {error}");
-            if (code != ExitCode.NotFound && code != ExitCode.Usage)
+            if (code != ExitCode.NotFound)
             {
                 Assert.That(error.TrimEnd().Split('\n'), Has.Length.EqualTo(1), $"{context}: one line, no stack trace: {error}");
                 Assert.That(error, Does.StartWith("error: ").And.Contain(expected), context);
@@ -148,7 +151,7 @@ public sealed class ExitCodeTests
         Assert.Multiple(() =>
         {
             Assert.That(process.ExitCode, Is.EqualTo(ExitCode.Cancelled), stderr.Result + stdout.Result);
-            Assert.That(stdout.Result, Does.Contain("status: cancelled"));
+            Assert.That(stdout.Result, Does.Contain("bake: cancelled"));
             Assert.That(File.ReadAllText(path), Is.EqualTo("previous"), "the previous file is intact");
             Assert.That(Directory.GetFiles(_folder, "*.tmp"), Is.Empty, "no temporary file");
         });
