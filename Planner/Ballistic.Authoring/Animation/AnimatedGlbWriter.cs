@@ -216,7 +216,7 @@ public static class AnimatedGlbWriter
             channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = j + 1, ["path"] = "rotation" } });
         }
 
-        writer.Add("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels });
+        writer.AddFirst("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels }); // first: the clip importers pick (Blender's action)
         return writer.ToBytes();
     }
 
@@ -344,7 +344,7 @@ public static class AnimatedGlbWriter
             }
         }
 
-        writer.Add("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels });
+        writer.AddFirst("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels }); // first: the clip importers pick (Blender's action)
         return writer.ToBytes();
     }
 

@@ -107,6 +107,21 @@ public sealed class GlbWriter
         return array.Count - 1;
     }
 
+    /// <summary>
+    /// Puts <paramref name="item"/> first in root array <paramref name="key"/> (created when missing), the items
+    /// already there after it in their order. Only for arrays nothing refers to by index (animations).
+    /// </summary>
+    public void AddFirst(string key, JsonObject item)
+    {
+        if (Root[key] is not JsonArray array)
+        {
+            array = [];
+            Root[key] = array;
+        }
+
+        array.Insert(0, item);
+    }
+
     /// <summary>Adds a VEC3 float accessor (with the min and max glTF requires for positions).</summary>
     public int AddVector3(ReadOnlySpan<Vector3> values, int? target = 34962)
     {
