@@ -18,7 +18,7 @@ public sealed class JumpAnimatorTests
 {
     private static readonly Lazy<(PlanningScene Scene, PlanResult Plan, JumpAnimation Animation)> Desert = new(() =>
     {
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        Level level = SharedLevels.Bundled("desert");
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
         Vector3 from = LevelPoints.Ground(scene.Bvh, -9.5f, -7.5f)!.Value;
         Vector3 to = LevelPoints.Ground(scene.Bvh, 9.5f, 7.5f)!.Value;

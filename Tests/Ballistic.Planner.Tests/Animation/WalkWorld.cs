@@ -50,7 +50,7 @@ internal sealed record WalkWorld(PlanningScene Scene, CharacterModel Model, Jump
     }
 
     /// <summary>The bundled gap course: four flat platforms along +X with gaps between them.</summary>
-    public static Level GapCourse() => GltfLevelLoader.Load(RepositoryFiles.Level("gap-course"));
+    public static Level GapCourse() => SharedLevels.Bundled("gap-course");
 
     /// <summary>
     /// A stance where the whole body stands, its contacts' centre within 0.3 m of <paramref name="point"/>; turned to

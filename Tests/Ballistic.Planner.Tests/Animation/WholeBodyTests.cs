@@ -59,7 +59,7 @@ public sealed class WholeBodyTests
     public void ContactsChangeOnlyByStepsBetweenJumps()
     {
         // Desert, many jumps: no limb's contact moves more than 2 cm within 0.1 s, and stances with steps take time.
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        Level level = SharedLevels.Bundled("desert");
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
         var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));
         (AnimatedPlan plan, _) = planner.BakeAndPlan(LevelPoints.Ground(scene.Bvh, 7.7f, 5.8f)!.Value, LevelPoints.Ground(scene.Bvh, -7.5f, -8.5f)!.Value, new BakeSettings { MaxNodes = 600, Threads = 2, Locomotion = Locomotion.Jump });

@@ -8,6 +8,7 @@ using Ballistic.Runtime.Baking;
 
 namespace Ballistic.Planner.Tests.Baking;
 
+[NonParallelizable] // waits on background bakes with a patience limit
 public sealed class BakeJobTests
 {
     /// <summary>How long a test waits for a bake to reach a state before failing (a bound against hangs, not a timing assertion).</summary>

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
@@ -8,8 +9,10 @@ namespace Ballistic.Planner.Tests.EndToEnd;
 
 /// <summary>
 /// A seeded sweep of start/goal requests on every bundled level and on levels in other tools' shapes, each plan
-/// audited by an independent checker (<see cref="PlanAudit"/>): never a wrong answer (a success that breaks an
-/// invariant), and at least 95 % of the requests fully right (exact, every invariant held, a clean animation).
+/// audited by an independent checker (<see cref="PlanAudit"/>), one test case per request (scenes shared per level
+/// and character): never a wrong answer (a success that breaks an invariant); over the whole sweep at least 95 % of
+/// the requests fully right (exact, every invariant held, a clean animation) and at most one request per level and
+/// character not fully right.
 /// </summary>
 [Category("EndToEnd")]
 [Category("Sweep")]
@@ -38,54 +41,109 @@ public sealed class SweepTests
         ("tailed", "stairs"), ("tailed", "holes-debris"),
     ];
 
-    [Test]
-    public void NineteenRequestsInTwentyAreFullyRightAndNoneIsAWrongAnswer()
+    /// <summary>The reports of every case run, by case name, for the whole-sweep share.</summary>
+    private static readonly ConcurrentDictionary<string, AuditReport> Reports = new(StringComparer.Ordinal);
+
+    /// <summary>Scene and animator per level and character, built once and shared by that pair's requests.</summary>
+    private static readonly ConcurrentDictionary<string, Lazy<(Sweep.Setup Setup, (Vector3 From, Vector3 To)[] Requests)>> Setups = new(StringComparer.Ordinal);
+
+    /// <summary>One case per request: (kind, level, character or rig, request index).</summary>
+    public static IEnumerable<TestCaseData> Cases()
     {
-        var all = new List<AuditReport>();
+        foreach ((string level, string character, int count, float _) in Bundled)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                yield return new TestCaseData("bundled", level, character, i).SetName($"Sweep: {character} on {level}, random request {i + 1} of {count}");
+            }
+        }
+
+        foreach ((string level, string character) in Foreign)
+        {
+            int count = ForeignLevels.Get(level).Requests.Length;
+            for (int i = 0; i < count; i++)
+            {
+                yield return new TestCaseData("foreign level", level, character, i).SetName($"Sweep: {character} on foreign level {level}, request {i + 1} of {count}");
+            }
+        }
+
+        foreach ((string rig, string level) in ForeignRigs)
+        {
+            int count = ForeignLevels.Get(level).Requests.Length;
+            for (int i = 0; i < count; i++)
+            {
+                yield return new TestCaseData("foreign rig", level, rig, i).SetName($"Sweep: foreign rig {rig} on {level}, request {i + 1} of {count}");
+            }
+        }
+    }
+
+    [TestCaseSource(nameof(Cases))]
+    public void EveryPlanIsRightOrHonestlyRefused(string kind, string levelName, string character, int request)
+    {
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Setups.GetOrAdd(
+            $"{kind}/{levelName}/{character}",
+            _ => new Lazy<(Sweep.Setup, (Vector3, Vector3)[])>(() => Prepare(kind, levelName, character))).Value;
+        AuditReport report = Sweep.Run(setup, requests[request].From, requests[request].To);
+        Reports[$"{kind}/{levelName}/{character}/{request}"] = report;
+        TestContext.Out.WriteLine((report.FullyRight ? "ok    " : report.WrongAnswer ? "WRONG " : "fail  ") + report);
+        Assert.That(report.WrongAnswer, Is.False, $"a plan reported as exact breaks an invariant: {report}");
+    }
+
+    /// <summary>
+    /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, and at most one request
+    /// per level and character not fully right.
+    /// </summary>
+    [OneTimeTearDown]
+    public void NineteenRequestsInTwentyAreFullyRight()
+    {
+        if (Reports.Count < Cases().Count())
+        {
+            return; // a filtered run: the shares are judged on the whole sweep only
+        }
+
+        AuditReport[] all = [.. Reports.OrderBy(r => r.Key, StringComparer.Ordinal).Select(r => r.Value)];
+        TestContext.Out.WriteLine("sweep: " + Sweep.Summary(all));
+        string[] pairsWithTwo = [.. Reports.GroupBy(r => r.Key[..r.Key.LastIndexOf('/')]).Where(g => g.Count(r => !r.Value.FullyRight) > 1).Select(g => g.Key)];
+        Assert.Multiple(() =>
+        {
+            Assert.That(all.Count(r => r.FullyRight), Is.GreaterThanOrEqualTo((int)MathF.Ceiling(0.95f * all.Length)), "fewer than 95 % of the requests are fully right");
+            Assert.That(pairsWithTwo, Is.Empty, "levels and characters with more than one request not fully right");
+        });
+    }
+
+    private static (Sweep.Setup, (Vector3 From, Vector3 To)[]) Prepare(string kind, string levelName, string character)
+    {
+        if (kind == "bundled")
+        {
+            (_, _, int count, float maxDistance) = Bundled.Single(b => b.Level == levelName && b.Character == character);
+            Sweep.Setup bundled = Sweep.PrepareBundled(levelName, character);
+            return (bundled, Sweep.RandomPairs(bundled.Scene, count, seed: 42, maxDistance));
+        }
+
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
+        if (kind == "foreign level")
+        {
+            return (Sweep.Prepare(levelName, level, character), requests);
+        }
+
+        ForeignCharacter rig = character switch
+        {
+            "human" => ForeignCharacters.Human(zUpScene: false),
+            "human-zup" => ForeignCharacters.Human(zUpScene: true),
+            "dog" => ForeignCharacters.Dog(),
+            _ => ForeignCharacters.TailedQuadruped(),
+        };
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-sweep-{Guid.NewGuid():N}");
         Directory.CreateDirectory(folder);
-        foreach ((string levelName, string character, int count, float maxDistance) in Bundled)
+        try
         {
-            Sweep.Setup setup = Sweep.Prepare(levelName, GltfLevelLoader.Load(RepositoryFiles.Level(levelName)), character);
-            Record([.. Sweep.RandomPairs(setup.Scene, count, seed: 42, maxDistance).Select(p => Sweep.Run(setup, p.From, p.To))]);
-        }
-
-        foreach ((string levelName, string character) in Foreign)
-        {
-            (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
-            Sweep.Setup setup = Sweep.Prepare(levelName, level, character);
-            Record([.. requests.Select(r => Sweep.Run(setup, r.From, r.To))]);
-        }
-
-        foreach ((string rigName, string levelName) in ForeignRigs)
-        {
-            ForeignCharacter rig = rigName switch
-            {
-                "human" => ForeignCharacters.Human(zUpScene: false),
-                "human-zup" => ForeignCharacters.Human(zUpScene: true),
-                "dog" => ForeignCharacters.Dog(),
-                _ => ForeignCharacters.TailedQuadruped(),
-            };
             (string gltf, string spec) = rig.Write(folder);
             (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, spec);
-            (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
-            Sweep.Setup setup = Sweep.Prepare(levelName, level, model, reduced);
-            Record([.. requests.Select(r => Sweep.Run(setup, r.From, r.To))]);
+            return (Sweep.Prepare(levelName, level, model, reduced), requests);
         }
-
-        Directory.Delete(folder, recursive: true);
-        TestContext.Out.WriteLine("sweep: " + Sweep.Summary(all));
-        Assert.That(all.Where(r => r.WrongAnswer).Select(r => r.ToString()), Is.Empty, "a plan reported as exact breaks an invariant");
-        Assert.That(all.Count(r => r.FullyRight), Is.GreaterThanOrEqualTo((int)MathF.Ceiling(0.95f * all.Count)), "fewer than 95 % of the requests are fully right");
-
-        void Record(List<AuditReport> reports)
+        finally
         {
-            all.AddRange(reports);
-            TestContext.Out.WriteLine(Sweep.Summary(reports));
-            foreach (AuditReport r in reports)
-            {
-                TestContext.Out.WriteLine((r.FullyRight ? "  ok    " : r.WrongAnswer ? "  WRONG " : "  fail  ") + r);
-            }
+            Directory.Delete(folder, recursive: true);
         }
     }
 }

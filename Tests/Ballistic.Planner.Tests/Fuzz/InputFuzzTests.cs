@@ -17,6 +17,7 @@ namespace Ballistic.Planner.Tests.Fuzz;
 /// mutations, and <c>BALLISTIC_FUZZ_REPLAY=format:seed</c> with <see cref="Replay"/> runs it alone.
 /// </summary>
 [Category("Fuzz")]
+[NonParallelizable] // each case has a wall-clock limit
 public sealed class InputFuzzTests
 {
     /// <summary>Master seeds: case <c>i</c> of master seed <c>s</c> has the seed <c>s × 10,000 + i</c>.</summary>

@@ -14,6 +14,7 @@ namespace Ballistic.Planner.Tests.Gltf;
 /// it should not, or fail with a runtime error; each is now a <see cref="LevelException"/> naming the file, the
 /// element and the problem, found quickly and without large allocations.
 /// </summary>
+[NonParallelizable] // loads have wall-clock limits
 public sealed class HostileLevelTests
 {
     private const long FewMegabytes = 32L << 20;

@@ -62,7 +62,7 @@ public sealed class RoadmapValidationTests
     [Test]
     public void ABigBakedRoadmapPassesItsOwnChecks()
     {
-        Level desert = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        Level desert = SharedLevels.Bundled("desert");
         var scene = PlanningScene.Create(desert, CharacterPresets.Skeleton());
         Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 300, Threads = 2 }).Roadmap;
         string path = Path.Combine(_folder, "desert.roadmap");

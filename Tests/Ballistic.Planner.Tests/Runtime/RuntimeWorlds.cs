@@ -17,7 +17,7 @@ internal static class RuntimeWorlds
 {
     private static readonly Lazy<CharacterKind> DesertSkeletonKind = new(() =>
     {
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level("desert"));
+        Level level = SharedLevels.Bundled("desert");
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
         Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 300, Threads = 2, Locomotion = Locomotion.WalkAndJump }).Roadmap;
         return new CharacterKind(scene, roadmap, new JumpAnimator(scene, CharacterPresets.Model("skeleton")));

@@ -1,7 +1,8 @@
+using System.Collections.Concurrent;
+using System.Globalization;
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 
@@ -13,10 +14,18 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class BundledPlans
 {
+    private static readonly ConcurrentDictionary<string, Lazy<(PlanningScene, BakeResult, AnimatedPlan)>> Plans = new(StringComparer.Ordinal);
+
+    /// <summary>The plan of one request, made once per test run and shared by the tests that read it.</summary>
     public static (PlanningScene Scene, BakeResult Bake, AnimatedPlan Plan) Plan(string levelName, string characterName, float x0, float z0, float x1, float z1, int maxNodes = 800)
     {
-        Level level = GltfLevelLoader.Load(RepositoryFiles.Level(levelName));
-        var scene = PlanningScene.Create(level, CharacterPresets.Get(characterName));
+        string key = string.Create(CultureInfo.InvariantCulture, $"{levelName}|{characterName}|{x0}|{z0}|{x1}|{z1}|{maxNodes}");
+        return Plans.GetOrAdd(key, _ => new Lazy<(PlanningScene, BakeResult, AnimatedPlan)>(() => Make(levelName, characterName, x0, z0, x1, z1, maxNodes))).Value;
+    }
+
+    private static (PlanningScene Scene, BakeResult Bake, AnimatedPlan Plan) Make(string levelName, string characterName, float x0, float z0, float x1, float z1, int maxNodes)
+    {
+        PlanningScene scene = SharedLevels.Scene(levelName, characterName);
         Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
         Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
         var planner = new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model(characterName)));

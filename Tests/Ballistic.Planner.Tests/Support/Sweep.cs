@@ -22,6 +22,13 @@ internal static class Sweep
     public static Setup Prepare(string levelName, Level level, string character) =>
         Prepare(levelName, level, CharacterPresets.Model(character), CharacterPresets.Get(character));
 
+    /// <summary>A setup on a bundled level with a preset character, its scene from the suite's cache.</summary>
+    public static Setup PrepareBundled(string levelName, string character)
+    {
+        PlanningScene scene = SharedLevels.Scene(levelName, character);
+        return new Setup(levelName, scene, CharacterPresets.Model(character), new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model(character))));
+    }
+
     /// <summary>A scene and animator for a character loaded from files (a rig made elsewhere).</summary>
     public static Setup Prepare(string levelName, Level level, CharacterModel model, ReducedCharacter reduced)
     {

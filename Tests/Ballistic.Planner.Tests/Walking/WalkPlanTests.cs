@@ -3,7 +3,6 @@ using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Collision;
-using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
@@ -144,42 +143,11 @@ public sealed class WalkPlanTests
     }
 
     [Test]
-    public void OnTheRooftopsTheJumpermanWalksTheRoofsAndJumpsFewerTimes()
-    {
-        // The rooftops row of the README's side-by-side table: an 800-node roadmap (seed 1) and the first of its seeded
-        // node pairs. Jump only: 5 jumps; walk + jump: 2 jumps and walks across the roofs between them, each jump going
-        // from one roof to another (no walk links its ends).
-        var scene = PlanningScene.Create(LevelGenerator.BuildLevel("rooftops"), CharacterPresets.Jumperman());
-        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, MaxNodes = 800, Threads = 2 }).Roadmap;
-        var random = new Random(5);
-        Vector3 from = roadmap.ContactCentres[random.Next(roadmap.Nodes.Count)];
-        Vector3 to = roadmap.ContactCentres[random.Next(roadmap.Nodes.Count)];
-        var query = new PathQuery(scene, roadmap);
-        PlanResult jumped = query.Plan(from, to, new QuerySettings { Locomotion = Locomotion.Jump });
-        PlanResult walked = query.Plan(from, to, Walking);
-        TestContext.Out.WriteLine($"({from.X:0.#}, {from.Z:0.#}) → ({to.X:0.#}, {to.Z:0.#}): jump only {jumped.Reason}; walk + jump {walked.Reason}");
-        Assert.That(jumped.Status, Is.EqualTo(PlannerStatus.Exact), jumped.Reason);
-        Assert.That(walked.Status, Is.EqualTo(PlannerStatus.Exact), walked.Reason);
-        Assert.Multiple(() =>
-        {
-            Assert.That(walked.Jumps, Has.Count.LessThan(jumped.Jumps.Count));
-            Assert.That(walked.Walks, Is.Not.Empty, "the roofs are walked");
-            foreach (Jump jump in walked.Jumps)
-            {
-                Assert.That(scene.Walking.Steer(jump.From, jump.To).Walk, Is.Null, $"jump {jump.From.Id} → {jump.To.Id} could be walked");
-            }
-        });
-
-        AuditReport audit = PlanAudit.Check("rooftops walk+jump", scene, from, to, walked, null);
-        Assert.That(audit.Violations, Is.Empty, audit.ToString());
-    }
-
-    [Test]
     public void TheDesertDemoRequestWalksAndItsWalksAnimate()
     {
         // The planner walks only on ground the skeleton's feet can hold, so the demo request's walks are animated
         // (feet on the ground, not sliding, no bone in the level) rather than set aside for jumps.
-        PlanningScene scene = PlanningScene.Create(GltfLevelLoader.Load(RepositoryFiles.Level("desert")), CharacterPresets.Get("skeleton"));
+        PlanningScene scene = SharedLevels.Scene("desert", "skeleton");
         CharacterModel model = CharacterPresets.Model("skeleton");
         var animator = new JumpAnimator(scene, model);
         (AnimatedPlan plan, _) = new AnimatedPlanner(scene, animator).BakeAndPlan(new Vector3(-9.5f, 0.31f, -7.5f), new Vector3(9.5f, 0.5f, 7.5f), new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 200 });
