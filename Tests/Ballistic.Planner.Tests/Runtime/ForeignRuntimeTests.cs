@@ -26,12 +26,7 @@ public sealed class ForeignRuntimeTests
     [TestCase("dog", "curved")]
     public void PathsFollowedByForeignRigsPassTheAudit(string rigName, string levelName)
     {
-        ForeignCharacter rig = rigName switch
-        {
-            "human-zup" => ForeignCharacters.Human(zUpScene: true),
-            "dog" => ForeignCharacters.Dog(),
-            _ => ForeignCharacters.TailedQuadruped(),
-        };
+        ForeignCharacter rig = ForeignCharacters.Named(rigName);
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-runtime-{Guid.NewGuid():N}");
         Directory.CreateDirectory(folder);
         try

@@ -1,4 +1,6 @@
 using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
 
 namespace Ballistic.Planner.Tests.Support;
 
@@ -29,6 +31,22 @@ internal sealed record ForeignCharacter(string Name, ForeignRig Rig, string Spec
         string spec = Path.Combine(folder, Name + ".limbs.json");
         File.WriteAllText(spec, Spec);
         return (gltf, spec);
+    }
+
+    /// <summary>Writes the files into a temporary folder, loads them as a user's would be, and removes the folder.</summary>
+    public (CharacterModel Model, ReducedCharacter Reduced) Load()
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{Name}-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(folder);
+        try
+        {
+            (string gltf, string spec) = Write(folder);
+            return CharacterSpecFile.Load(gltf, spec);
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
     }
 
     /// <summary>Scene positions of the vertices of the named bones.</summary>

@@ -11,6 +11,16 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class ForeignCharacters
 {
+    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog" or "tailed".</summary>
+    public static ForeignCharacter Named(string name) => name switch
+    {
+        "human" => Human(zUpScene: false),
+        "human-zup" => Human(zUpScene: true),
+        "dog" => Dog(),
+        "tailed" => TailedQuadruped(),
+        _ => throw new ArgumentException($"no foreign character '{name}'", nameof(name)),
+    };
+
     public static ForeignCharacter Human(bool zUpScene)
     {
         var r = new ForeignRig();
