@@ -19,8 +19,11 @@ namespace Ballistic.Planner.Tests.Godot;
 /// </summary>
 public sealed class AddonCompilation
 {
-    /// <summary>Diagnostics that say a name is unknown: ours to report only when the name is a .NET type's.</summary>
-    private static readonly string[] UnknownName = ["CS0246", "CS0103", "CS1574", "CS0234"];
+    /// <summary>
+    /// Diagnostics that say a name is unknown (or, CS0122, names only a type internal to .NET, where Godot's public one
+    /// is meant: <c>Error</c>): ours to report only when the name is a public .NET type's.
+    /// </summary>
+    private static readonly string[] UnknownName = ["CS0246", "CS0103", "CS1574", "CS0234", "CS0122"];
 
     /// <summary>
     /// Definite assignment through an expression of a Godot type (<c>x is T t || !godotDict.TryGetValue(…, out v)</c>)
@@ -67,7 +70,35 @@ public sealed class AddonCompilation
             }
         }
 
+        if (ImplicitUsingsOn(root))
+        {
+            sources.Add(("obj/Ballistic.GlobalUsings.g.cs", string.Concat(ImplicitUsings.Select(u => $"global using global::{u};\n"))));
+        }
+
         return Of(sources, editor);
+    }
+
+    /// <summary>The global usings <c>Microsoft.NET.Sdk</c> (and so <c>Godot.NET.Sdk</c>) adds when implicit usings are on.</summary>
+    private static readonly string[] ImplicitUsings =
+        ["System", "System.Collections.Generic", "System.IO", "System.Linq", "System.Net.Http", "System.Threading", "System.Threading.Tasks"];
+
+    /// <summary>
+    /// Whether the Godot project compiles with implicit usings: the last <c>ImplicitUsings</c> of
+    /// <c>Directory.Build.props</c> and then <c>Ballistic.csproj</c> (MSBuild reads them in that order).
+    /// </summary>
+    private static bool ImplicitUsingsOn(string root)
+    {
+        string? value = null;
+        foreach (string file in new[] { "Directory.Build.props", "Ballistic.csproj" })
+        {
+            string path = Path.Combine(root, file);
+            if (File.Exists(path) && System.Xml.Linq.XDocument.Load(path).Descendants("ImplicitUsings").LastOrDefault() is { } element)
+            {
+                value = element.Value.Trim();
+            }
+        }
+
+        return value is not null && (value.Equals("enable", StringComparison.OrdinalIgnoreCase) || value.Equals("true", StringComparison.OrdinalIgnoreCase));
     }
 
     /// <summary>Compiles <paramref name="sources"/> ((path, text) pairs) with the Godot game's settings.</summary>
@@ -98,8 +129,22 @@ public sealed class AddonCompilation
     public IReadOnlyList<string> Problems()
     {
         var problems = new List<string>();
-        foreach (Diagnostic d in Compilation.GetDiagnostics().Where(d => d.Severity >= DiagnosticSeverity.Warning))
+        foreach (Diagnostic d in Compilation.GetDiagnostics().Where(d => d.Severity >= DiagnosticSeverity.Warning || d.Id == "CS8019"))
         {
+            // An unnecessary using is IDE0005, an error in our Godot build (warnings as errors, code style enforced),
+            // and can be so in one build only (a namespace used inside #if TOOLS alone). Usings of Godot are not
+            // judged: nothing of Godot resolves here.
+            if (d.Id == "CS8019")
+            {
+                string directive = d.Location.SourceTree?.GetText().ToString(d.Location.SourceSpan) ?? "";
+                if (!directive.Contains("Godot", StringComparison.Ordinal))
+                {
+                    problems.Add($"{Where(d.Location)}: IDE0005: unnecessary using directive ({directive.Trim()}) in this build");
+                }
+
+                continue;
+            }
+
             if (NotJudgedWithoutGodot.Contains(d.Id) || IsNullableFlowWarning(d.Id))
             {
                 continue;

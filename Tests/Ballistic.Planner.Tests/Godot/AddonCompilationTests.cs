@@ -15,10 +15,16 @@ public sealed class AddonCompilationTests
     public void TheAddonHasNoProblemOfOurOwn(bool editor)
     {
         AddonCompilation compilation = AddonCompilation.OfRepository(editor);
+        IReadOnlyList<string> problems = compilation.Problems();
+        foreach (string problem in problems)
+        {
+            TestContext.Out.WriteLine(problem);
+        }
+
         Assert.Multiple(() =>
         {
             Assert.That(compilation.Files, Has.Some.StartsWith("addons/ballistic/Nodes/").And.Some.StartsWith("Scenes/"));
-            Assert.That(compilation.Problems(), Is.Empty);
+            Assert.That(problems, Is.Empty);
         });
     }
 
@@ -78,7 +84,7 @@ public sealed class AddonCompilationTests
 
             public static class A
             {
-                public static int Cores => Environment.ProcessorCount;
+                public static int Cores => Math.Max(1, Environment.ProcessorCount);
             }
             """)], editor: false).Problems();
         IReadOnlyList<string> global = AddonCompilation.Of(
@@ -120,6 +126,17 @@ public sealed class AddonCompilationTests
             Assert.That(problems, Has.Some.StartsWith("addons/x/Lines.cs:5: CS8632: "));
             Assert.That(problems, Has.Some.EqualTo("addons/x/Lines.cs:7: CS0246: 'ReadOnlySpan' is .NET's (System): the file needs a using directive (there are no implicit usings in a Godot project)"));
             Assert.That(problems, Has.None.Contains("'Vector3'"), "Vector3 is Godot's here");
+        });
+    }
+
+    [Test]
+    public void AUsingNeededOnlyInTheEditorBuildIsReportedInTheExportBuild()
+    {
+        (string, string)[] sources = [("addons/x/Tool.cs", "#nullable enable\nusing System.Collections.Generic;\n\npublic static class Tool\n{\n#if TOOLS\n    public static List<int> Items { get; } = [];\n#endif\n}\n")];
+        Assert.Multiple(() =>
+        {
+            Assert.That(AddonCompilation.Of(sources, editor: true).Problems(), Is.Empty);
+            Assert.That(AddonCompilation.Of(sources, editor: false).Problems(), Is.EqualTo(new[] { "addons/x/Tool.cs:2: IDE0005: unnecessary using directive (using System.Collections.Generic;) in this build" }));
         });
     }
 
