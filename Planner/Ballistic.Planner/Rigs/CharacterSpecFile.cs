@@ -337,6 +337,13 @@ public static class CharacterSpecFile
             rigLimbs.Add(Named(() => new RigLimb(rig, limb.Name, limb.Kind, limb.RootBone, limb.EffectorBone, offset, normal, filter)));
         }
 
+        if (Lying(rig, rigLimbs, axes) is string seemsUp)
+        {
+            throw Error(
+                $"keys 'upAxis' and 'forwardAxis' ({AxisName(spec.UpAxis)}, {AxisName(spec.ForwardAxis)})",
+                $"in the rest pose the feet of {file} are not below its trunk along upAxis {AxisName(spec.UpAxis)}: the rig lies on its side or stands on its head; it seems to use {seemsUp} as up (set 'upAxis' to \"{seemsUp}\" and 'forwardAxis' to the way it faces).");
+        }
+
         // Body bones: those whose parent carries vertices and is their ancestor in the file (helper bones are not).
         int[] nodeParents = document.NodeParents();
         bool[] bodyBones = new bool[names.Length];
@@ -398,6 +405,35 @@ public static class CharacterSpecFile
         // Rows are the images of the scene's X, Y and Z axes in Ballistic's frame (row vectors).
         var m = new Matrix4x4(left.X, up.X, forward.X, 0f, left.Y, up.Y, forward.Y, 0f, left.Z, up.Z, forward.Z, 0f, 0f, 0f, 0f, 1f);
         return Quaternion.Normalize(Quaternion.CreateFromRotationMatrix(m));
+    }
+
+    /// <summary>
+    /// Null when the rest pose's feet (the foot limbs' effector joints, on average) lie below the trunk centre within
+    /// 60° of straight down along Ballistic's up; otherwise the glTF scene axis the rig seems to use as up (the one
+    /// pointing from its feet to its trunk). A character without feet is not judged.
+    /// </summary>
+    private static string? Lying(Rig rig, IReadOnlyList<RigLimb> limbs, Quaternion axes)
+    {
+        RigLimb[] feet = [.. limbs.Where(l => l.Kind == LimbKind.Foot)];
+        if (feet.Length == 0)
+        {
+            return null;
+        }
+
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), new float[rig.DofCount], positions, rotations);
+        Vector3 down = feet.Aggregate(Vector3.Zero, (sum, l) => sum + positions[l.EffectorJoint]) / feet.Length; // trunk centre at the origin
+        float length = down.Length();
+        if (length < 1e-4f || -down.Y >= 0.5f * length)
+        {
+            return null;
+        }
+
+        Vector3 scene = Vector3.Transform(-down, Quaternion.Inverse(axes)); // feet to trunk, in the scene's axes
+        Vector3 abs = Vector3.Abs(scene);
+        (float value, string letter) = abs.X >= abs.Y && abs.X >= abs.Z ? (scene.X, "X") : abs.Y >= abs.Z ? (scene.Y, "Y") : (scene.Z, "Z");
+        return (value >= 0f ? "+" : "-") + letter;
     }
 
     private static string AxisName(Vector3 axis) => CharacterSpecReader.AxisNames.First(a => a.Value == axis).Key;
