@@ -58,7 +58,7 @@ internal static class BenchCommand
             string? filter = parse.GetValue(only);
             if (filter is not null && !Scenarios.Any(s => Matches(filter, s.Level, s.Character)) && !AnimationPaths.Any(p => Matches(filter, p.Level, p.Character)))
             {
-                string names = string.Join(", ", Scenarios.Select(s => s.Level).Concat(AnimationPaths.Select(p => p.Level)).Concat(Scenarios.Select(s => s.Character)).Concat(AnimationPaths.Select(p => p.Character)).Distinct());
+                string names = string.Join(", ", Scenarios.SelectMany(s => new[] { s.Level, s.Character }).Concat(AnimationPaths.SelectMany(p => new[] { p.Level, p.Character })).Distinct());
                 throw new CliException($"--only '{filter}' matches no level or character of the bench ({names}).");
             }
 
@@ -97,13 +97,17 @@ internal static class BenchCommand
             output.WriteLine($"| {characterName} on {levelName} | {level.Triangles.Count:N0} | {Median(times):0.0000} | {last!.Roadmap.Nodes.Count} | {last.Roadmap.Edges.Count} | {paper} |");
         }
 
-        if (!Matches(only, "desert", "skeleton"))
+        if (Matches(only, "desert", "skeleton"))
         {
-            Animation(output, runs, levels, only);
-            return;
+            DesertQueries(output, runs, levels);
         }
 
-        // Query, steering and box queries on the desert with the skeleton.
+        Animation(output, runs, levels, only);
+    }
+
+    /// <summary>Query, steering and box queries on the desert with the skeleton.</summary>
+    private static void DesertQueries(TextWriter output, int runs, Dictionary<string, Level> levels)
+    {
         Level desert = levels.TryGetValue("desert", out Level? d) ? d : LoadBundled("desert");
         var desertScene = PlanningScene.Create(desert, CharacterPresets.Skeleton());
         Roadmap roadmap = new RoadmapBaker(desertScene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap;
@@ -179,8 +183,6 @@ internal static class BenchCommand
         }
 
         output.WriteLine($"trunk box vs level ({desert.Triangles.Count:N0} triangles, {hits / 20} of {boxes.Length} touching): median {Median(boxRates):N0} queries/s");
-
-        Animation(output, runs, levels, only);
     }
 
     /// <summary>Whether a scenario on <paramref name="level"/> with <paramref name="character"/> runs under <c>--only</c>.</summary>

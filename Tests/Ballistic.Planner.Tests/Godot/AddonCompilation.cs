@@ -39,12 +39,14 @@ public sealed class AddonCompilation
 
     private readonly ILookup<string, string> _systemTypes;
     private readonly ILookup<string, string> _systemExtensions;
+    private readonly UsingDirectiveSyntax[] _globalUsings;
 
     private AddonCompilation(CSharpCompilation compilation, IReadOnlyList<string> files)
     {
         Compilation = compilation;
         Files = files;
         (string Name, string Namespace, INamedTypeSymbol Type)[] systemTypes = SystemTypes(compilation.GlobalNamespace).ToArray();
+        _globalUsings = [.. compilation.SyntaxTrees.SelectMany(t => t.GetCompilationUnitRoot().Usings).Where(u => u.GlobalKeyword.IsKind(SyntaxKind.GlobalKeyword))];
         _systemTypes = systemTypes.ToLookup(t => t.Name, t => t.Namespace, StringComparer.Ordinal);
         _systemExtensions = systemTypes.Where(t => t.Type.IsStatic && t.Type.MightContainExtensionMethods)
             .SelectMany(t => t.Type.GetMembers().OfType<IMethodSymbol>().Where(m => m.IsExtensionMethod && m.DeclaredAccessibility == Accessibility.Public).Select(m => (m.Name, t.Namespace)))
@@ -224,7 +226,7 @@ public sealed class AddonCompilation
     /// <summary>Whether the usings in scope at <paramref name="position"/> (or a global using anywhere) import <paramref name="ns"/>.</summary>
     private bool Imports(SemanticModel model, int position, string ns)
     {
-        if (Compilation.SyntaxTrees.Any(t => t.GetCompilationUnitRoot().Usings.Any(u => u.GlobalKeyword.IsKind(SyntaxKind.GlobalKeyword) && IsImportOf(u, ns))))
+        if (_globalUsings.Any(u => IsImportOf(u, ns)))
         {
             return true;
         }

@@ -23,18 +23,15 @@ internal static class Sweep
         Prepare(levelName, level, CharacterPresets.Model(character), CharacterPresets.Get(character));
 
     /// <summary>A setup on a bundled level with a preset character, its scene from the suite's cache.</summary>
-    public static Setup PrepareBundled(string levelName, string character)
-    {
-        PlanningScene scene = SharedLevels.Scene(levelName, character);
-        return new Setup(levelName, scene, CharacterPresets.Model(character), new AnimatedPlanner(scene, new JumpAnimator(scene, CharacterPresets.Model(character))));
-    }
+    public static Setup PrepareBundled(string levelName, string character) =>
+        Prepare(levelName, SharedLevels.Scene(levelName, character), CharacterPresets.Model(character));
 
     /// <summary>A scene and animator for a character loaded from files (a rig made elsewhere).</summary>
-    public static Setup Prepare(string levelName, Level level, CharacterModel model, ReducedCharacter reduced)
-    {
-        var scene = PlanningScene.Create(level, reduced);
-        return new Setup(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
-    }
+    public static Setup Prepare(string levelName, Level level, CharacterModel model, ReducedCharacter reduced) =>
+        Prepare(levelName, PlanningScene.Create(level, reduced), model);
+
+    private static Setup Prepare(string levelName, PlanningScene scene, CharacterModel model) =>
+        new(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
 
     /// <summary>Plans (walking and jumping unless <paramref name="locomotion"/> says otherwise), animates and audits one request.</summary>
     public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
