@@ -7,11 +7,14 @@ using Ballistic.Planner.Steering;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// A whole-body animation of a path of moves (jumps and walks): flights, walks with a gait, and between two moves a
-/// stance in which the root stays put while limbs whose contacts change step one at a time. Frames at a fixed rate
-/// (per jump, the last frame falls exactly on landing), the contact phases, the moves (the root is evaluated exactly
-/// on a jump's arc or a walk's path at any time) and the problems found: an animation with problems must not be
-/// reported as a success.
+/// A whole-body animation of a path of moves (jumps and walks): flights, walks with a gait, and on the ground around
+/// each jump a stance in which the body crouches before takeoff and absorbs the landing (the root sinking and rising
+/// on held contacts) while limbs whose contacts change step one at a time. A clip that starts with a jump begins with
+/// its crouch (<see cref="LeadIn"/>), one that ends with a landing ends once the body has absorbed it and stood up
+/// (<see cref="LeadOut"/>). Frames at a fixed rate (per jump, the last frame falls exactly on landing), the contact
+/// phases, the moves (the root is evaluated exactly on a jump's arc or a walk's path at any time, and between the
+/// frames of a stance in between) and the problems found: an animation with problems must not be reported as a
+/// success.
 /// </summary>
 public sealed class JumpAnimation
 {
@@ -28,7 +31,9 @@ public sealed class JumpAnimation
     /// <param name="problems">What could not be animated cleanly, per move.</param>
     /// <param name="failedContactPoses">Contact poses that fail the no-slip test.</param>
     /// <param name="collidingFrames">Frames with a bone through the level.</param>
-    public JumpAnimation(CharacterModel model, IReadOnlyList<Move> moves, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames)
+    /// <param name="leadIn">Seconds of stance before the first move starts (a crouch before a first jump).</param>
+    /// <param name="leadOut">Seconds of stance after the last move ends (a landing absorbed).</param>
+    public JumpAnimation(CharacterModel model, IReadOnlyList<Move> moves, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames, float leadIn = 0f, float leadOut = 0f)
     {
         ArgumentNullException.ThrowIfNull(model);
         ArgumentNullException.ThrowIfNull(moves);
@@ -39,6 +44,11 @@ public sealed class JumpAnimation
         if (moves.Count > 0 && stances.Count != moves.Count - 1)
         {
             throw new ArgumentException($"{moves.Count} moves need {moves.Count - 1} stances between them, not {stances.Count}.", nameof(stances));
+        }
+
+        if (!(leadIn >= 0f) || !(leadOut >= 0f) || !float.IsFinite(leadIn) || !float.IsFinite(leadOut))
+        {
+            throw new ArgumentException($"The lead-in ({leadIn} s) and lead-out ({leadOut} s) must be finite and not negative.", nameof(leadIn));
         }
 
         Model = model;
@@ -52,14 +62,23 @@ public sealed class JumpAnimation
         Problems = [.. problems];
         FailedContactPoses = failedContactPoses;
         CollidingFrames = collidingFrames;
+        LeadIn = leadIn;
+        LeadOut = leadOut;
         _moveStarts = new float[_moves.Length + 1];
+        _moveStarts[0] = _moves.Length > 0 ? leadIn : 0f;
         for (int i = 0; i < _moves.Length; i++)
         {
-            _moveStarts[i + 1] = _moveStarts[i] + _moves[i].Duration + (i < stances.Count ? stances[i] : 0f);
+            _moveStarts[i + 1] = _moveStarts[i] + _moves[i].Duration + (i < stances.Count ? stances[i] : leadOut);
         }
     }
 
-    /// <summary>Duration (seconds) of the stance after each move but the last, during which limbs re-step.</summary>
+    /// <summary>Seconds of stance before the first move starts: the crouch before a first jump (0 before a walk).</summary>
+    public float LeadIn { get; }
+
+    /// <summary>Seconds of stance after the last move ends: the last landing absorbed, the body standing up (0 after a walk).</summary>
+    public float LeadOut { get; }
+
+    /// <summary>Duration (seconds) of the stance after each move but the last: landing absorbed, limbs re-stepping, the crouch before the next takeoff.</summary>
     public IReadOnlyList<float> Stances { get; }
 
     /// <summary>What could not be animated cleanly; empty when every jump animates with held contacts and no bone in the level.</summary>
@@ -83,7 +102,7 @@ public sealed class JumpAnimation
     /// <summary>When each limb holds which contact point.</summary>
     public IReadOnlyList<ContactPhase> ContactPhases { get; }
 
-    /// <summary>Duration of the clip, seconds: the moves' durations and the stances between them.</summary>
+    /// <summary>Duration of the clip, seconds: the lead-in, the moves' durations, the stances between them and the lead-out.</summary>
     public float Duration => _moveStarts[^1];
 
     /// <summary>How many takeoff or landing contact poses could not be generated to satisfy the no-slip test (the estimated contacts were then kept).</summary>
@@ -105,19 +124,58 @@ public sealed class JumpAnimation
     public float MoveEnd(int move) => _moveStarts[move] + _moves[move].Duration;
 
     /// <summary>
-    /// The root pose at clip time <paramref name="time"/>: exactly on the current jump's parabola in flight, on the
-    /// current walk's path while walking (<see cref="Walk.PoseAt"/>), at the move's end pose during the stance after it.
+    /// The root pose at clip time <paramref name="time"/> (seconds): exactly on the current jump's parabola in flight,
+    /// on the current walk's path while walking (<see cref="Walk.PoseAt"/>); on the ground between moves (and in the
+    /// lead-in and lead-out) interpolated between the frames' roots, the body sinking and rising on its contacts.
     /// </summary>
     public RootPose RootAt(float time)
     {
         int m = MoveIndex(time);
-        float t = Math.Clamp(time - _moveStarts[m], 0f, _moves[m].Duration);
+        float t = time - _moveStarts[m];
+        if (!(t >= 0f && t <= _moves[m].Duration) && Frames.Count > 0)
+        {
+            return FrameRoot(time);
+        }
+
+        t = Math.Clamp(t, 0f, _moves[m].Duration);
         return _moves[m] switch
         {
             Jump jump => jump.Arc.PoseAt(t),
             Walk walk => walk.PoseAt(t),
             _ => throw new InvalidOperationException("Unknown move kind."),
         };
+    }
+
+    /// <summary>The root interpolated between the frames around <paramref name="time"/> (position linearly, rotation by slerp).</summary>
+    private RootPose FrameRoot(float time)
+    {
+        int hi = FrameAtOrAfter(time);
+        AnimationFrame after = Frames[hi];
+        AnimationFrame before = Frames[Math.Max(0, hi - 1)];
+        float span = after.Time - before.Time;
+        float w = span > 0f ? Math.Clamp((time - before.Time) / span, 0f, 1f) : 1f;
+        return new RootPose(Vector3.Lerp(before.Root.Position, after.Root.Position, w), Quaternion.Slerp(before.Root.Rotation, after.Root.Rotation, w));
+    }
+
+    /// <summary>Index of the first frame at or after <paramref name="time"/> (the last frame when none is).</summary>
+    private int FrameAtOrAfter(float time)
+    {
+        int hi = 0;
+        int lo = Frames.Count - 1;
+        while (hi < lo)
+        {
+            int mid = (hi + lo) / 2;
+            if (Frames[mid].Time < time)
+            {
+                hi = mid + 1;
+            }
+            else
+            {
+                lo = mid;
+            }
+        }
+
+        return hi;
     }
 
     /// <summary>The full pose at clip time <paramref name="time"/>: the root on the parabola, the angles interpolated between frames.</summary>
@@ -140,21 +198,7 @@ public sealed class JumpAnimation
             throw new ArgumentException($"Sampling needs a clip with frames and room for {Model.Rig.DofCount} angles.", nameof(angles));
         }
 
-        int hi = 0;
-        int lo = Frames.Count - 1;
-        while (hi < lo)
-        {
-            int mid = (hi + lo) / 2;
-            if (Frames[mid].Time < time)
-            {
-                hi = mid + 1;
-            }
-            else
-            {
-                lo = mid;
-            }
-        }
-
+        int hi = FrameAtOrAfter(time);
         float[] after = Frames[hi].Angles;
         float[] before = Frames[Math.Max(0, hi - 1)].Angles;
         float span = Frames[hi].Time - Frames[Math.Max(0, hi - 1)].Time;

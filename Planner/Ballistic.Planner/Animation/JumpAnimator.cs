@@ -12,9 +12,11 @@ namespace Ballistic.Planner.Animation;
 /// Turns a planned path into a whole-body animation (paper §5): contact poses at takeoff and landing, each limb
 /// keeping its contact by IK while the root moves along the arc until the IK fails (takeoff) or from the moment it
 /// succeeds (landing), an extended pose at the apex, and per-angle interpolation between these key poses for each
-/// limb, re-sampling a limb's apex pose when it would pass through the level. The root stays on the parabola.
-/// Between two jumps the root stays at the landing pose; when the landing contacts cannot push off for the next
-/// jump, the limbs whose contacts change step to the new ones one at a time (a swing of
+/// limb, re-sampling a limb's apex pose when it would pass through the level. The root stays on the parabola in
+/// flight. On the ground the body crouches before every takeoff and absorbs every landing (<see cref="StanceDip"/>:
+/// the root sinks and rises on held contacts, at least <see cref="StanceDip.MinGroundTime"/> between a landing and the
+/// next takeoff); when the landing contacts cannot push off for the next jump, the body stands up after absorbing,
+/// the limbs whose contacts change step to the new ones one at a time (a swing of
 /// <see cref="StepDuration"/> with the foot lifted clear) while the others hold. Whatever cannot be done cleanly
 /// (no contact pose passing the no-slip test, a bone through the level) is reported per jump in
 /// <see cref="JumpAnimation.Problems"/>, never hidden.
@@ -41,6 +43,7 @@ public sealed class JumpAnimator : IJumpAnimator
     private readonly int _requiredContacts;
     private readonly WalkGait _gait;
     private readonly HoldRefiner _refiner;
+    private readonly StanceDip _dip;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -53,6 +56,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _requiredContacts = scene.Character.RequiredContacts;
         _gait = new WalkGait(scene, model, _contacts);
         _refiner = new HoldRefiner(model, _collision);
+        _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision);
         Model = model;
     }
 
@@ -73,8 +77,8 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <summary>
     /// Animates the moves at <paramref name="frameRate"/> frames per second: jumps as flights between contact poses,
     /// walks with a gait (<see cref="WalkGait"/>) from where the previous move left the feet to the contact pose the
-    /// next one needs. Frames during a walk come at every fine step (<see cref="ContactSubsteps"/> per frame interval)
-    /// since feet hold contacts throughout; the stance after a walk or before one lasts no time.
+    /// next one needs. Frames during a walk and on the ground around a jump come at every fine step
+    /// (<see cref="ContactSubsteps"/> per frame interval) since feet hold contacts throughout.
     /// </summary>
     /// <exception cref="ArgumentException">No moves, a null move, or a non-positive frame rate.</exception>
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
@@ -156,13 +160,16 @@ public sealed class JumpAnimator : IJumpAnimator
             left = end;
         }
 
-        // Assemble: moves, and between two jumps the stances with their steps; contact phases along the way.
+        // Assemble: moves, and on the ground around each jump its crouch and landing with the steps between them;
+        // contact phases along the way.
         var frames = new List<AnimationFrame>();
         var phases = new List<ContactPhase>();
         var stances = new List<float>();
         var open = new Dictionary<int, (Vector3 Position, float From)>();
         int colliding = 0;
         float clock = 0f;
+        float leadIn = 0f;
+        float leadOut = 0f;
         for (int m = 0; m < moves.Count; m++)
         {
             if (walks[m] is WalkGait.Clip walked)
@@ -172,7 +179,10 @@ public sealed class JumpAnimator : IJumpAnimator
                 clock += moves[m].Duration;
                 if (m + 1 < moves.Count)
                 {
-                    stances.Add(0f);
+                    // A jump after a walk: the body crouches on the takeoff contacts the walk ended on.
+                    float crouch = clips[m + 1] is Clip after ? Crouch(Dip(after.Takeoff, m + 1, "crouch before takeoff", problems), ((Jump)moves[m + 1]).Arc, clock, frames, 0f, frameRate) : 0f;
+                    stances.Add(crouch);
+                    clock += crouch;
                 }
 
                 continue;
@@ -186,6 +196,11 @@ public sealed class JumpAnimator : IJumpAnimator
                 {
                     open[c.Limb] = (c.Position, 0f);
                 }
+
+                StanceDip.Table first = Dip(clip.Takeoff, m, "crouch before takeoff", problems);
+                frames.Add(new AnimationFrame(0f, first.Root, (float[])clip.Takeoff.Angles.Clone()));
+                leadIn = Crouch(first, jump.Arc, 0f, frames, 0f, frameRate);
+                clock = leadIn;
             }
 
             // Takeoff contacts are held until they break; landing contacts are held from when they are made.
@@ -208,41 +223,71 @@ public sealed class JumpAnimator : IJumpAnimator
                 open[c.Limb] = (c.Position, clock + clip.Makes[c.Limb]);
             }
 
-            foreach (AnimationFrame f in m == 0 ? clip.Frames : clip.Frames[1..])
+            foreach (AnimationFrame f in clip.Frames[1..])
             {
                 frames.Add(f with { Time = clock + f.Time });
             }
 
             colliding += clip.CollidingFrames;
             clock += jump.Arc.FlightTime;
+            float landed = clock;
+            StanceDip.Table landing = Dip(clip.Landing, m, "absorb the landing", problems);
+            float landingSpeed = jump.Arc.LandingVelocity.Length();
             if (m + 1 < moves.Count && clips[m + 1] is Clip following)
             {
-                Stance stance = Restep(m + 1, jump.Arc.Landing, clip.Landing, following.Takeoff, frameRate);
-                problems.AddRange(stance.Problems);
-                foreach ((int limb, float start, LimbContact? next) in stance.Steps)
+                Jump next = (Jump)moves[m + 1];
+                if (ReferenceEquals(clip.Landing, following.Takeoff))
                 {
-                    if (open.Remove(limb, out (Vector3 Position, float From) o))
+                    // Landing flows into the next crouch: sink, hold as long as the ground time asks, drive up.
+                    float sink = StanceDip.SinkTime(landing, landingSpeed);
+                    float push = StanceDip.PushTime(landing, next.Arc.TakeoffVelocity.Length());
+                    clock = Dip(landing, clock, sink, s => 1f - ((1f - s) * (1f - s)), frames, frameRate);
+                    float hold = MathF.Max(StanceDip.MinGroundTime - sink - push, 0.25f * sink);
+                    clock = Dip(landing, clock, hold, _ => 1f, frames, frameRate);
+                    clock = Dip(landing, clock, push, s => 1f - (s * s), frames, frameRate);
+                }
+                else
+                {
+                    // Absorb, stand, step to the takeoff contacts, crouch on them, drive up.
+                    clock = Absorb(landing, landingSpeed, clock, frames, frameRate);
+                    Stance stance = Restep(m + 1, jump.Arc.Landing, clip.Landing, following.Takeoff, frameRate);
+                    problems.AddRange(stance.Problems);
+                    foreach ((int limb, float start, LimbContact? step) in stance.Steps)
                     {
-                        phases.Add(new ContactPhase(limb, o.Position, o.From, clock + start));
+                        if (open.Remove(limb, out (Vector3 Position, float From) o))
+                        {
+                            phases.Add(new ContactPhase(limb, o.Position, o.From, clock + start));
+                        }
+
+                        if (step is LimbContact c)
+                        {
+                            open[limb] = (c.Position, clock + start + StepDuration);
+                        }
                     }
 
-                    if (next is LimbContact c)
+                    foreach (AnimationFrame f in stance.Frames.Skip(1))
                     {
-                        open[limb] = (c.Position, clock + start + StepDuration);
+                        frames.Add(f with { Time = clock + f.Time });
                     }
+
+                    clock += stance.Duration;
+                    clock += Crouch(Dip(following.Takeoff, m + 1, "crouch before takeoff", problems), next.Arc, clock, frames, StanceDip.MinGroundTime - (clock - landed), frameRate);
                 }
 
-                foreach (AnimationFrame f in stance.Frames.Skip(1))
-                {
-                    frames.Add(f with { Time = clock + f.Time });
-                }
-
-                stances.Add(stance.Duration);
-                clock += stance.Duration;
+                stances.Add(clock - landed);
             }
-            else if (m + 1 < moves.Count)
+            else
             {
-                stances.Add(0f);
+                // A walk follows, or the clip ends: the landing absorbed and the body standing again.
+                clock = Absorb(landing, landingSpeed, clock, frames, frameRate);
+                if (m + 1 < moves.Count)
+                {
+                    stances.Add(clock - landed);
+                }
+                else
+                {
+                    leadOut = clock - landed;
+                }
             }
         }
 
@@ -254,12 +299,12 @@ public sealed class JumpAnimator : IJumpAnimator
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
 
         // Held contacts must hold between frames too, as a player interpolates them.
-        var animation = new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+        var animation = new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding, leadIn, leadOut);
         (List<AnimationFrame> refined, List<(int Limb, float Time)> slips) = _refiner.Refine(animation);
         if (refined.Count == frames.Count && slips.Count == 0)
         {
             problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-            return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding);
+            return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding, leadIn, leadOut);
         }
 
         foreach ((int limb, float time) in slips.GroupBy(s => s.Limb).Select(g => g.First()))
@@ -270,7 +315,69 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-        return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count);
+        return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count, leadIn, leadOut);
+    }
+
+    /// <summary>
+    /// The dip of <paramref name="config"/> (<see cref="StanceDip.Solve(ContactConfiguration)"/>); one shallower than
+    /// <see cref="StanceDip.LeastDepthShare"/> of the leg is a problem of move <paramref name="move"/>: the body cannot
+    /// <paramref name="what"/> there, and a jump without its crouch or its landing does not read as a jump.
+    /// </summary>
+    private StanceDip.Table Dip(ContactConfiguration config, int move, string what, List<JumpProblem> problems)
+    {
+        StanceDip.Table table = _dip.Solve(config);
+        if (config.Contacts.Count > 0 && table.Depth < (StanceDip.LeastDepthShare * table.Leg) - 1e-5f)
+        {
+            problems.Add(new JumpProblem(move, $"the body cannot {what} ({table.Depth * 100f:0.0} cm of the {StanceDip.LeastDepthShare * table.Leg * 100f:0.0} cm needed: {table.Stop})"));
+        }
+
+        return table;
+    }
+
+    /// <summary>
+    /// Appends the frames of the root dipping on <paramref name="table"/> from clip time <paramref name="from"/> for
+    /// <paramref name="duration"/> seconds, at <paramref name="share"/>(s) of the table's depth (s from 0 to 1), every
+    /// contact held; returns the clip time it ends at.
+    /// </summary>
+    private static float Dip(StanceDip.Table table, float from, float duration, Func<float, float> share, List<AnimationFrame> frames, float frameRate)
+    {
+        int count = Math.Max(2, (int)MathF.Ceiling(duration * frameRate * ContactSubsteps));
+        for (int k = 1; k <= count; k++)
+        {
+            float s = k / (float)count;
+            float depth = table.Depth * share(s);
+            frames.Add(new AnimationFrame(from + (duration * s), table.RootAt(depth), table.AnglesAt(depth)));
+        }
+
+        return from + duration;
+    }
+
+    /// <summary>
+    /// The crouch before <paramref name="arc"/>'s takeoff: from standing on <paramref name="table"/>'s contact pose the
+    /// body settles into its dip, holds there until at least <paramref name="least"/> seconds have passed, and drives
+    /// up through the takeoff pose (accelerating, as a push does). Returns its duration, seconds.
+    /// </summary>
+    private static float Crouch(StanceDip.Table table, BallisticArc arc, float from, List<AnimationFrame> frames, float least, float frameRate)
+    {
+        float settle = StanceDip.RiseTime(table);
+        float push = StanceDip.PushTime(table, arc.TakeoffVelocity.Length());
+        float clock = Dip(table, from, settle, s => s * s * (3f - (2f * s)), frames, frameRate);
+        if (settle + push < least)
+        {
+            clock = Dip(table, clock, least - settle - push, _ => 1f, frames, frameRate);
+        }
+
+        return Dip(table, clock, push, s => 1f - (s * s), frames, frameRate) - from;
+    }
+
+    /// <summary>
+    /// A landing at <paramref name="speed"/> m/s absorbed on <paramref name="table"/>'s contact pose: the body keeps
+    /// sinking (decelerating) to its dip, then rises back to the contact pose. Returns the clip time it ends at.
+    /// </summary>
+    private static float Absorb(StanceDip.Table table, float speed, float from, List<AnimationFrame> frames, float frameRate)
+    {
+        float clock = Dip(table, from, StanceDip.SinkTime(table, speed), s => 1f - ((1f - s) * (1f - s)), frames, frameRate);
+        return Dip(table, clock, StanceDip.RiseTime(table), s => 1f - (s * s * (3f - (2f * s))), frames, frameRate);
     }
 
     /// <summary>

@@ -387,21 +387,7 @@ internal sealed class WalkGait
         private Vector3 ToLocal(RootPose root, Vector3 world) => Vector3.Transform(world - root.Position, Quaternion.Conjugate(root.Rotation));
 
         /// <summary>The greatest height (metres, along the trunk's up axis) of a foot's root joint above where the foot stands.</summary>
-        private float LegLength(ContactConfiguration config)
-        {
-            float leg = 0f;
-            for (int l = 0; l < _limbs; l++)
-            {
-                if (IsFoot(l))
-                {
-                    Vector3 foot = Stand(config, l);
-                    _rig.Solve(config.Root, config.Angles, _positions, _rotations);
-                    leg = MathF.Max(leg, Vector3.Dot(_positions[_model.Limbs[l].RootJoint] - foot, config.Root.Up));
-                }
-            }
-
-            return leg > 0f ? leg : 0.5f;
-        }
+        private float LegLength(ContactConfiguration config) => StanceDip.LegLength(_model, config, _positions, _rotations);
 
         /// <summary>
         /// For each foot of <paramref name="config"/>: where it stands in the trunk's frame, and how far (metres) the

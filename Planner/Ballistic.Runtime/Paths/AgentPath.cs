@@ -44,7 +44,7 @@ public sealed class AgentPath
         {
             float start = animation.MoveStart(i);
             float end = animation.MoveEnd(i);
-            float stanceEnd = i + 1 < moves.Count ? animation.MoveStart(i + 1) : end;
+            float stanceEnd = i + 1 < moves.Count ? animation.MoveStart(i + 1) : animation.Duration;
             switch (moves[i])
             {
                 case Jump jump:
@@ -73,7 +73,7 @@ public sealed class AgentPath
             }
         }
 
-        Duration = _moves[^1].End;
+        Duration = animation.Duration;
     }
 
     /// <summary>The point the path was planned to, world metres.</summary>
@@ -91,7 +91,7 @@ public sealed class AgentPath
     /// <summary>The whole-body animation; its clip time is the path's clock.</summary>
     public JumpAnimation Animation { get; }
 
-    /// <summary>Length of the path on its clock, seconds: from the start of the first move to the end of the last (the stances between included).</summary>
+    /// <summary>Length of the path on its clock, seconds: the animation's, from the crouch before the first move to the last landing absorbed (the stances between included).</summary>
     public float Duration { get; }
 
     /// <summary>The move at <paramref name="index"/> without copying the list (for systems).</summary>

@@ -79,12 +79,22 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         agents.Cursor[slot] = cursor;
         if (cursor == boundaries)
         {
-            // Arrived; unless another target came during the last move, which is then planned from here.
             ref readonly PathMove last = ref path.Move(path.Count - 1);
+            if (t < path.Duration && !agents.StopAtStance[slot])
+            {
+                // Landed: the body absorbs the landing and stands up before the target counts as reached.
+                agents.Root[slot] = path.Animation.RootAt(t);
+                agents.State[slot] = AgentState.Stance;
+                return;
+            }
+
+            // Arrived; unless another target came during the last move, which is then planned from here.
             if (!agents.StopAtStance[slot])
             {
                 agents.HasTarget[slot] = false;
-                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + last.End, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null));
+                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + path.Duration, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null));
+                Stop(slot, last.To, last.EndPose, path.Duration, path);
+                return;
             }
 
             Stop(slot, last.To, last.EndPose, last.End, path);
@@ -94,8 +104,9 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         ref readonly PathMove current = ref path.Move(cursor >> 1);
         if ((cursor & 1) == 0)
         {
-            // Between the end of the previous move and the start of this one (cursor > 0 here): the root holds still.
-            agents.Root[slot] = path.Move((cursor >> 1) - 1).EndPose;
+            // On the ground before this move starts (the crouch before a first jump, or the stance after the previous
+            // move): the root sinks and rises with the animation, over the same stance.
+            agents.Root[slot] = path.Animation.RootAt(t);
             agents.State[slot] = AgentState.Stance;
         }
         else if (current.Walk is { } walk)

@@ -63,7 +63,7 @@ public sealed class JumpAnimatorTests
         var positions = new Vector3[model.Rig.Joints.Count];
         var rotations = new Quaternion[model.Rig.Joints.Count];
         Assert.That(animation.CollidingFrames, Is.Zero);
-        Assert.That(animation.Duration, Is.EqualTo(plan.TotalFlightTime + animation.Stances.Sum()).Within(1e-3f));
+        Assert.That(animation.Duration, Is.EqualTo(animation.LeadIn + plan.TotalFlightTime + animation.Stances.Sum() + animation.LeadOut).Within(1e-3f));
         Assert.That(animation.Problems, Is.Empty);
         foreach (AnimationFrame frame in animation.Frames)
         {

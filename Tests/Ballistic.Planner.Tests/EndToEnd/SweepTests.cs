@@ -53,6 +53,9 @@ public sealed class SweepTests
 
     private static readonly Lazy<int> CaseCount = new(() => Cases().Count());
 
+    /// <summary>Where the foreign rigs' files are written for the sweep (removed when it ends).</summary>
+    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-sweep-{Environment.ProcessId}");
+
     /// <summary>One case per request: (kind, level, character or rig, request index).</summary>
     public static IEnumerable<TestCaseData> Cases()
     {
@@ -93,8 +96,18 @@ public sealed class SweepTests
         AuditReport report = Sweep.Run(setup, requests[request].From, requests[request].To, maxNodes: maxNodes);
         Reports[$"{kind}/{levelName}/{character}/{request}"] = report;
         TestContext.Out.WriteLine((report.FullyRight ? "ok    " : report.WrongAnswer ? "WRONG " : "fail  ") + report);
+        if (report.Look is { } look)
+        {
+            TestContext.Out.WriteLine("      eye: " + string.Join("; ", look.All.Select(c => $"{c.Name}: {c.Criterion}")));
+        }
+
         Assert.That(report.WrongAnswer, Is.False, $"a plan reported as exact breaks an invariant: {report}");
+        Assert.That(report.Look is null || Animated(report.Look).All(c => c.Criterion.Passes), Is.True, $"the animation does not read as jumps to an animator: {report.Look}");
     }
+
+    /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
+    private static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>
+        look.All.Where(c => c.Name is "crouch" or "absorb" or "ground time");
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, and at most one request
@@ -103,6 +116,11 @@ public sealed class SweepTests
     [OneTimeTearDown]
     public void NineteenRequestsInTwentyAreFullyRight()
     {
+        if (Directory.Exists(RigFolder))
+        {
+            Directory.Delete(RigFolder, recursive: true);
+        }
+
         if (Reports.Count < CaseCount.Value)
         {
             return; // a filtered run: the shares are judged on the whole sweep only
@@ -110,6 +128,12 @@ public sealed class SweepTests
 
         AuditReport[] all = [.. Reports.OrderBy(r => r.Key, StringComparer.Ordinal).Select(r => r.Value)];
         TestContext.Out.WriteLine("sweep: " + Sweep.Summary(all));
+        foreach (IGrouping<string, (string Name, AnimatorEye.Criterion Criterion)> criterion in all.Where(r => r.Look is not null).SelectMany(r => r.Look!.All).GroupBy(c => c.Name))
+        {
+            (string _, AnimatorEye.Criterion[] measured) = (criterion.Key, criterion.Select(c => c.Criterion).Where(c => c.Worst is not null).ToArray());
+            TestContext.Out.WriteLine($"eye: {criterion.Key}: {measured.Count(c => c.Passes)} of {measured.Length} plans pass; worst: {(measured.Length == 0 ? "-" : measured.Select(c => c.Worst!.Value).MinBy(w => criterion.Key == "facing" ? -w.Score : w.Score).Seen)}");
+        }
+
         string[] pairsWithTwo = [.. Reports.GroupBy(r => r.Key[..r.Key.LastIndexOf('/')]).Where(g => g.Count(r => !r.Value.FullyRight) > 1).Select(g => g.Key)];
         int right = all.Count(r => r.FullyRight);
         string figures = string.Create(CultureInfo.InvariantCulture, $"{all.Length} requests, {right} fully right ({100.0 * right / all.Length:0} %)");
@@ -137,7 +161,8 @@ public sealed class SweepTests
             return (Sweep.Prepare(levelName, level, character), requests);
         }
 
-        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(character).Load();
+        // The rig's files stay until the sweep ends: the animated GLB is written from them (a .gltf's .png included).
+        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(character).Load(Path.Combine(RigFolder, $"{levelName}-{character}"));
         return (Sweep.Prepare(levelName, level, model, reduced), requests);
     }
 }

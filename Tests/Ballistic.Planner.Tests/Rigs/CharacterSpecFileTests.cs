@@ -132,7 +132,7 @@ public sealed class CharacterSpecFileTests
         Assert.Multiple(() =>
         {
             Assert.That(animation.ContactPhases, Is.Not.Empty);
-            Assert.That(animation.Duration, Is.EqualTo(plan.TotalFlightTime + animation.Stances.Sum()).Within(1e-3f));
+            Assert.That(animation.Duration, Is.EqualTo(animation.LeadIn + plan.TotalFlightTime + animation.Stances.Sum() + animation.LeadOut).Within(1e-3f));
             Assert.That(animation.CollidingFrames, Is.Zero);
         });
     }

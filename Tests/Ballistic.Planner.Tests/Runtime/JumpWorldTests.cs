@@ -46,6 +46,46 @@ public sealed class JumpWorldTests
     }
 
     [Test]
+    public void OnTheGroundAnAgentCrouchesBeforeItJumpsAndAbsorbsItsLanding()
+    {
+        // The root on the ground follows the animation's stances: below its stance before the first takeoff (the
+        // crouch) and after each landing (absorbing), never above the stance it stands on.
+        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();
+        using (world)
+        {
+            (AgentHandle agent, RoadmapNode from, _) = RuntimeWorlds.SendAcross(world, kind, seed: 2);
+            float lowestBefore = float.PositiveInfinity;
+            bool jumped = false;
+            float lowestAfterLanding = float.PositiveInfinity;
+            float landedAt = float.NaN;
+            RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
+            {
+                AgentState state = w.GetState(agent);
+                Vector3 root = w.GetRootPose(agent).Position;
+                if (w.TryGetCurrentJump(agent, out JumpInfo jump))
+                {
+                    jumped = true;
+                    landedAt = jump.Arc.End.Y;
+                }
+                else if (state == AgentState.Stance && !jumped)
+                {
+                    lowestBefore = MathF.Min(lowestBefore, root.Y);
+                }
+                else if (state == AgentState.Stance)
+                {
+                    lowestAfterLanding = MathF.Min(lowestAfterLanding, root.Y - landedAt);
+                }
+            });
+            Assert.Multiple(() =>
+            {
+                Assert.That(jumped, Is.True);
+                Assert.That(lowestBefore, Is.LessThan(from.Pose.Position.Y - 0.05f), "a crouch before the first takeoff");
+                Assert.That(lowestAfterLanding, Is.LessThan(-0.05f), "a landing absorbed");
+            });
+        }
+    }
+
+    [Test]
     public void InFlightAnAgentIsExactlyOnItsArcAtEveryTick()
     {
         (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();

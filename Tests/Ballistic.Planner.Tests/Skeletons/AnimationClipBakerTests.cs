@@ -76,7 +76,7 @@ public sealed class AnimationClipBakerTests
             binding.ConvertAngles(root, angles, global, rotations, positions);
             foreach (BoneRotationTrack track in clip.RotationTracks)
             {
-                worstAngle = Math.Max(worstAngle, SkeletonBindingTests.Angle(track.Sample(t), rotations[track.Bone]));
+                worstAngle = Math.Max(worstAngle, AnimationClipBaker.Angle(track.Sample(t), rotations[track.Bone])); // accurate for tiny angles, where 2 acos(a·b) in floats is not
             }
 
             foreach (BonePositionTrack track in clip.PositionTracks)

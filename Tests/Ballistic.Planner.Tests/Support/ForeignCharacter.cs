@@ -37,16 +37,22 @@ internal sealed record ForeignCharacter(string Name, ForeignRig Rig, string Spec
     public (CharacterModel Model, ReducedCharacter Reduced) Load()
     {
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{Name}-{Guid.NewGuid():N}");
-        Directory.CreateDirectory(folder);
         try
         {
-            (string gltf, string spec) = Write(folder);
-            return CharacterSpecFile.Load(gltf, spec);
+            return Load(folder);
         }
         finally
         {
             Directory.Delete(folder, recursive: true);
         }
+    }
+
+    /// <summary>Writes the files into <paramref name="folder"/> (created) and loads them; the folder stays, for writers that read the rig's images again.</summary>
+    public (CharacterModel Model, ReducedCharacter Reduced) Load(string folder)
+    {
+        Directory.CreateDirectory(folder);
+        (string gltf, string spec) = Write(folder);
+        return CharacterSpecFile.Load(gltf, spec);
     }
 
     /// <summary>Scene positions of the vertices of the named bones.</summary>

@@ -521,6 +521,9 @@ internal sealed class AuditReport(string name, PlannerStatus status, string reas
 
     public bool CleanAnimation { get; set; }
 
+    /// <summary>What an animator sees in the exported GLB (null when there is no exact animated plan).</summary>
+    public AnimatorEye.Look? Look { get; set; }
+
     /// <summary>Exact, every invariant held, animated cleanly.</summary>
     public bool FullyRight => Status == PlannerStatus.Exact && Violations.Count == 0 && Animated;
 

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
@@ -12,7 +13,7 @@ namespace Ballistic.Planner.Tests.Support;
 
 /// <summary>
 /// Seeded sweeps of start/goal requests: each case plans (bake until connected, query), animates the whole body
-/// and hands everything to <see cref="PlanAudit"/>.
+/// and hands everything to <see cref="PlanAudit"/>, and the animated GLB to <see cref="AnimatorEye"/>.
 /// </summary>
 internal static class Sweep
 {
@@ -39,7 +40,13 @@ internal static class Sweep
         string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
         PlanningScene scene = setup.Scene;
         (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Locomotion = locomotion });
-        return PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
+        AuditReport report = PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
+        if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
+        {
+            report.Look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), setup.Model).Measure(animation);
+        }
+
+        return report;
     }
 
     /// <summary>

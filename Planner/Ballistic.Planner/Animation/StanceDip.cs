@@ -1,0 +1,290 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Rigs;
+
+namespace Ballistic.Planner.Animation;
+
+/// <summary>
+/// The root's dip on the ground around a jump, as an animator keys it: before takeoff the body sinks (a
+/// countermovement, the legs flexing on their contacts) and drives up through the takeoff pose; after landing it keeps
+/// sinking to absorb the impact before it rises. The root moves straight down (world −Y) from the contact pose by up to
+/// <see cref="DepthShare"/> of the leg length; every limb in contact holds its point by IK at each depth (no bone in
+/// the level, no trunk bone in it), free limbs fold toward the <c>flexion</c> pose with the depth where they stay clear;
+/// where the legs cannot fold that far straight down, the body sinks leaning back or forward along its heading, or
+/// pitching (a frog sinks onto its hind legs, its front held up).
+/// Where a contact cannot be held the dip stops at the last depth that held. Timings scale with the leg's pendulum time
+/// √(L/g) and the jump's speed. Each call works on buffers of its own; the IK solver is shared, as the animator's is.
+/// </summary>
+internal sealed class StanceDip
+{
+    /// <summary>Deepest dip, as a share of the leg length (the standing hip's height above the sole, or the rest pose's when longer).</summary>
+    public const float DepthShare = 0.15f;
+
+    /// <summary>Shallowest dip that reads as a crouch or a landing absorbed, as a share of the leg length; shallower is a problem of the jump.</summary>
+    public const float LeastDepthShare = 0.085f;
+
+    /// <summary>Least time (seconds) on the ground between a landing and the next takeoff.</summary>
+    public const float MinGroundTime = 0.2f;
+
+    /// <summary>Depth samples solved from the contact pose down to the deepest dip.</summary>
+    private const int Samples = 12;
+
+
+    private readonly CharacterModel _model;
+    private readonly LimbIk _ik;
+    private readonly BodyCollision _collision;
+    private readonly float _restLeg;
+    private readonly Vector3 _pivot;
+
+    /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>.</summary>
+    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision)
+    {
+        _model = model;
+        _ik = ik;
+        _collision = collision;
+
+        // The rest pose's leg: a hip's height above its sole with every angle at rest (a rig modelled standing).
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
+        _pivot = positions[0];
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            _restLeg = MathF.Max(_restLeg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+        }
+    }
+
+    /// <summary>
+    /// How the body sinks from a contact pose at <paramref name="Root"/>, moving along −<paramref name="Up"/> and
+    /// pitching nose up by <paramref name="Pitch"/> radians per metre of drop about the root joint (at
+    /// <paramref name="Pivot"/> in the trunk's frame, so that the joint drops exactly the depth): the <paramref name="Angles"/> at evenly spaced
+    /// depths from 0 (exactly the contact pose's) to <paramref name="Depth"/> metres, the deepest that every contact
+    /// held; <paramref name="Leg"/> is the leg length, metres; <paramref name="Stop"/> says what stopped the dip short
+    /// of <see cref="DepthShare"/> of the leg, or is null.
+    /// </summary>
+    public sealed record Table(RootPose Root, Vector3 Up, float Pitch, Vector3 Pivot, float Depth, float[][] Angles, float Leg, string? Stop = null)
+    {
+        /// <summary>The root at <paramref name="depth"/> metres below the contact pose.</summary>
+        public RootPose RootAt(float depth) => Dipped(Root, Up, Pitch, Pivot, depth);
+
+        /// <summary>The angles at <paramref name="depth"/> metres (clamped to the table), interpolated between samples.</summary>
+        public float[] AnglesAt(float depth)
+        {
+            if (Angles.Length == 1 || !(Depth > 0f))
+            {
+                return (float[])Angles[0].Clone();
+            }
+
+            float x = Math.Clamp(depth / Depth, 0f, 1f) * (Angles.Length - 1);
+            int i = Math.Min((int)x, Angles.Length - 2);
+            float w = x - i;
+            var q = new float[Angles[i].Length];
+            for (int d = 0; d < q.Length; d++)
+            {
+                q[d] = float.Lerp(Angles[i][d], Angles[i + 1][d], w);
+            }
+
+            return q;
+        }
+    }
+
+    /// <summary>The leg length (metres): the greatest height, along the trunk's up axis, of a foot's root joint above where the foot stands; 0.5 m without feet.</summary>
+    public static float LegLength(CharacterModel model, ContactConfiguration config, Vector3[] positions, Quaternion[] rotations)
+    {
+        float leg = 0f;
+        model.Rig.Solve(config.Root, config.Angles, positions, rotations);
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            RigLimb limb = model.Limbs[l];
+            if (limb.Kind == LimbKind.Foot)
+            {
+                Vector3 foot = ContactOf(config, l) is LimbContact c ? c.Position : limb.EffectorPosition(positions, rotations);
+                leg = MathF.Max(leg, Vector3.Dot(positions[limb.RootJoint] - foot, config.Root.Up));
+            }
+        }
+
+        return leg > 0f ? leg : 0.5f;
+    }
+
+    /// <summary>
+    /// Solves the dip table of <paramref name="config"/> (its contacts held, its free limbs folding): the root sinks
+    /// straight down, or down and back, or down and forward along the trunk's heading (the legs that cannot fold more
+    /// reaching out instead), whichever goes deepest; the first that reaches <see cref="DepthShare"/> of the leg wins.
+    /// </summary>
+    public Table Solve(ContactConfiguration config)
+    {
+        Rig rig = _model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        float leg = MathF.Max(LegLength(_model, config, positions, rotations), _restLeg);
+        if (config.Contacts.Count == 0)
+        {
+            return new Table(config.Root, Vector3.UnitY, 0f, _pivot, 0f, [(float[])config.Angles.Clone()], leg);
+        }
+
+        // Motions tried: straight down, leaning back or forward along the heading, pitching nose up (the body sinking
+        // onto its hind legs, the front held up) or nose down, so that the front rises or falls about as much as the
+        // root sinks.
+        Vector3 heading = config.Root.Forward with { Y = 0f };
+        heading = heading.LengthSquared() > 1e-8f ? Vector3.Normalize(heading) : Vector3.Zero;
+        rig.Solve(config.Root, config.Angles, positions, rotations);
+        float reach = 0f;
+        foreach (RigLimb limb in _model.Limbs)
+        {
+            reach = MathF.Max(reach, MathF.Abs(Vector3.Dot(positions[limb.RootJoint] - config.Root.Position, config.Root.Forward)));
+        }
+
+        float pitch = 1f / MathF.Max(reach, 0.5f * leg);
+        (float Lean, float Pitch)[] motions = [(0f, 0f), (0.5f, 0f), (-0.5f, 0f), (0f, pitch), (0f, -pitch)];
+        Table? best = null;
+        foreach ((float lean, float turn) in motions)
+        {
+            Table table = Solve(config, Vector3.UnitY - (lean * heading), turn, leg, positions, rotations);
+            if (best is null || table.Depth > best.Depth + 1e-5f)
+            {
+                best = table;
+            }
+
+            if (best.Stop is null)
+            {
+                break;
+            }
+        }
+
+        return best!;
+    }
+
+    /// <summary>The dip along −<paramref name="up"/> pitching nose up by <paramref name="pitch"/> (per metre of drop), as deep as every contact holds.</summary>
+    private Table Solve(ContactConfiguration config, Vector3 up, float pitch, float leg, Vector3[] positions, Quaternion[] rotations)
+    {
+        Rig rig = _model.Rig;
+        float deepest = DepthShare * leg;
+        var table = new List<float[]> { (float[])config.Angles.Clone() };
+        float[] q = (float[])config.Angles.Clone();
+        string? stop = null;
+        for (int k = 1; k <= Samples; k++)
+        {
+            float depth = deepest * k / Samples;
+            float fold = depth / deepest;
+            RootPose root = Dipped(config.Root, up, pitch, _pivot, depth);
+            float[] next = (float[])q.Clone();
+            foreach (LimbContact c in config.Contacts)
+            {
+                RigLimb limb = _model.Limbs[c.Limb];
+                // The sole or palm stays on the surface where it can; otherwise it rolls on its point (a heel lifting in
+                // a deep crouch, a frog's wrist), the limb still kept out of the level below.
+                if (!_ik.Solve(root, next, limb, c.Position, -c.Normal).Success && !_ik.Solve(root, next, limb, c.Position, null).Success)
+                {
+                    stop ??= $"{limb.Name} cannot hold its contact {depth * 100f:0.0} cm down";
+                    break;
+                }
+            }
+
+            if (stop is null)
+            {
+                rig.Solve(root, next, positions, rotations);
+                foreach (LimbContact c in config.Contacts)
+                {
+                    if (_collision.LimbCollides(_model.Limbs[c.Limb], positions, rotations, c.Position))
+                    {
+                        stop ??= $"{_model.Limbs[c.Limb].Name} enters the level {depth * 100f:0.0} cm down";
+                    }
+                }
+
+                if (_collision.OtherBoneColliding(positions) is int bone and >= 0)
+                {
+                    stop ??= $"bone '{rig.Joints[bone].Name}' enters the level {depth * 100f:0.0} cm down";
+                }
+            }
+
+            if (stop is not null)
+            {
+                break;
+            }
+
+            // Free limbs fold toward the flexion pose as the body sinks, where they stay clear of the level.
+            for (int l = 0; l < _model.Limbs.Count; l++)
+            {
+                if (ContactOf(config, l) is not null)
+                {
+                    continue;
+                }
+
+                // Half-way to the flexion pose at the deepest; else as it was; else tucked up fully.
+                RigLimb limb = _model.Limbs[l];
+                bool clear = false;
+                foreach (float share in (float[])[0.5f * fold, -1f, 1f])
+                {
+                    float[] folded = (float[])next.Clone();
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        folded[d] = share < 0f ? next[d] : float.Lerp(config.Angles[d], _model.FlexionPose[d], share);
+                    }
+
+                    rig.Solve(root, folded, positions, rotations);
+                    if (!_collision.LimbCollides(limb, positions, rotations, null))
+                    {
+                        Array.Copy(folded, next, next.Length);
+                        clear = true;
+                        break;
+                    }
+                }
+
+                if (!clear)
+                {
+                    stop ??= $"{limb.Name}, in the air, would touch the level {depth * 100f:0.0} cm down";
+                    break;
+                }
+            }
+
+            if (stop is not null)
+            {
+                break;
+            }
+
+            table.Add(next);
+            q = next;
+        }
+
+        return new Table(config.Root, up, pitch, _pivot, deepest * (table.Count - 1) / Samples, [.. table], leg, stop);
+    }
+
+    /// <summary>
+    /// <paramref name="root"/> with its joint at <paramref name="pivot"/> (trunk frame) moved <paramref name="depth"/>
+    /// metres along −<paramref name="up"/>, the trunk pitched nose up about it by <paramref name="pitch"/> radians per metre.
+    /// </summary>
+    private static RootPose Dipped(RootPose root, Vector3 up, float pitch, Vector3 pivot, float depth)
+    {
+        Quaternion rotation = Quaternion.Normalize(root.Rotation * Quaternion.CreateFromAxisAngle(Vector3.UnitX, -pitch * depth));
+        return new RootPose(root.Position - (depth * up) + Vector3.Transform(pivot, root.Rotation) - Vector3.Transform(pivot, rotation), rotation);
+    }
+
+    /// <summary>Seconds for the body to sink into its crouch, or to absorb a landing at <paramref name="speed"/> m/s.</summary>
+    public static float SinkTime(Table table, float speed) => Between(3f * table.Depth / MathF.Max(speed, 0.5f), 0.1f, 0.7f * Pendulum(table));
+
+    /// <summary>Seconds for the body to drive up from its crouch to the takeoff pose at <paramref name="speed"/> m/s.</summary>
+    public static float PushTime(Table table, float speed) => Between(2.5f * table.Depth / MathF.Max(speed, 0.5f), 0.08f, 0.45f * Pendulum(table));
+
+    /// <summary>Seconds for the body to rise back to its stance after absorbing, or to settle into a crouch from standing.</summary>
+    public static float RiseTime(Table table) => MathF.Max(0.15f, 0.8f * Pendulum(table));
+
+    /// <summary><paramref name="x"/> within [<paramref name="least"/>, <paramref name="most"/>], the least winning when they cross.</summary>
+    private static float Between(float x, float least, float most) => MathF.Max(least, MathF.Min(x, most));
+
+    /// <summary>The leg's pendulum time √(L/g), seconds.</summary>
+    private static float Pendulum(Table table) => MathF.Sqrt(table.Leg / 9.81f);
+
+    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
+    {
+        foreach (LimbContact c in config.Contacts)
+        {
+            if (c.Limb == limb)
+            {
+                return c;
+            }
+        }
+
+        return null;
+    }
+}

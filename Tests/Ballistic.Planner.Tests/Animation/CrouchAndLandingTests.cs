@@ -1,0 +1,55 @@
+using System.Numerics;
+using Ballistic.Authoring.Animation;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Animation;
+
+/// <summary>
+/// Jumps read as jumps on the ground, seen in the exported GLB as an importer reads it (<see cref="AnimatorEye"/>):
+/// the body sinks before every takeoff and drives up through it, absorbs every landing, and stays on the ground a
+/// while between two jumps, on every bundled character.
+/// </summary>
+public sealed class CrouchAndLandingTests
+{
+    [TestCase("desert", "skeleton", 7.7f, 5.8f, -7.5f, -8.5f)]
+    [TestCase("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f)]
+    [TestCase("gap-course", "ant", -6f, 0f, 11.5f, 0f)]
+    [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
+    public void EveryJumpCrouchesDrivesUpAndAbsorbsItsLanding(string levelName, string characterName, float x0, float z0, float x1, float z1)
+    {
+        (_, _, AnimatedPlan plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        JumpAnimation animation = plan.Animation!;
+        Assert.That(animation.Arcs, Is.Not.Empty);
+        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(look.Crouch.Passes, Is.True, $"a crouch of at least {AnimatorEye.LeastDip} L, rising into takeoff: {look.Crouch}");
+            Assert.That(look.Absorb.Passes, Is.True, $"a landing absorbed by at least {AnimatorEye.LeastDip} L: {look.Absorb}");
+            Assert.That(look.GroundTime.Passes, Is.True, $"at least {AnimatorEye.LeastGroundTime} s on the ground between jumps: {look.GroundTime}");
+        });
+    }
+
+    [Test]
+    public void TheClipStartsStandingAndEndsStandingOnItsStances()
+    {
+        // The lead-in starts on the first stance's contact pose and the lead-out ends on the last one's: the root
+        // exactly on the stances at both ends, the crouch and the absorbing in between.
+        (_, _, AnimatedPlan plan) = BundledPlans.Plan("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f);
+        JumpAnimation animation = plan.Animation!;
+        Assert.That(animation.Moves[0], Is.InstanceOf<Jump>(), "the frog's path starts with a jump");
+        Assert.Multiple(() =>
+        {
+            Assert.That(animation.LeadIn, Is.GreaterThan(0.1f));
+            Assert.That(animation.LeadOut, Is.GreaterThan(0.1f));
+            Assert.That(animation.MoveStart(0), Is.EqualTo(animation.LeadIn));
+            Assert.That(Vector3.Distance(animation.RootAt(0f).Position, animation.Moves[0].From.Pose.Position), Is.LessThan(1e-4f));
+            Assert.That(Vector3.Distance(animation.RootAt(animation.Duration).Position, animation.Moves[^1].To.Pose.Position), Is.LessThan(1e-4f));
+            Assert.That(animation.RootAt(0.5f * animation.LeadIn).Position.Y, Is.LessThan(animation.Moves[0].From.Pose.Position.Y - 0.005f), "sinking in the lead-in");
+        });
+    }
+}

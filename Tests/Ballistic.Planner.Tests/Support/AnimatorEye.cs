@@ -1,0 +1,211 @@
+using System.Globalization;
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using SharpGLTF.Schema2;
+using GltfAnimation = SharpGLTF.Schema2.Animation;
+
+namespace Ballistic.Planner.Tests.Support;
+
+/// <summary>
+/// What an animator sees in an animated GLB, read the way an importer reads it: SharpGLTF (not our own glTF code)
+/// parses the file, and every bone's world transform at a time comes from the node hierarchy, the rest transforms and
+/// the clip's channels. From the plan it takes only the timeline (when each move starts and ends, where each jump
+/// goes) and the spec's inputs (which bones are a limb's hip and ankle, the rig's up and forward axes); never the
+/// animator's own poses. L is the leg length: the hip's height above the sole in the rest pose (ankle plus the sole
+/// offset); heading is the trunk's forward on the ground plane.
+/// </summary>
+internal sealed class AnimatorEye
+{
+    /// <summary>Jumps travelling at least this far across (metres) must face their direction.</summary>
+    public const float FacingDistance = 1f;
+
+    /// <summary>Largest angle (degrees) between the heading at takeoff and the jump's direction across.</summary>
+    public const float TakeoffFacing = 30f;
+
+    /// <summary>Largest angle (degrees) between the heading at landing and the jump's direction across.</summary>
+    public const float LandingFacing = 45f;
+
+    /// <summary>Least dip before a takeoff and after a landing, in leg lengths.</summary>
+    public const float LeastDip = 0.08f;
+
+    /// <summary>Window (seconds) before a takeoff or after a landing in which the dip is looked for.</summary>
+    public const float DipWindow = 0.6f;
+
+    /// <summary>Least time (seconds) on the ground between a landing and the next takeoff.</summary>
+    public const float LeastGroundTime = 0.2f;
+
+    private const float Step = 1f / 120f;
+
+    private readonly GltfAnimation _clip;
+    private readonly Node _trunk;
+    private readonly Quaternion _restTrunk;
+    private readonly Vector3 _restForward;
+
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg)
+    {
+        _clip = clip;
+        _trunk = trunk;
+        _restTrunk = Rotation(trunk.WorldMatrix);
+        _restForward = restForward;
+        Leg = leg;
+    }
+
+    /// <summary>The leg length read from the rest pose, metres.</summary>
+    public float Leg { get; }
+
+    /// <summary>Reads <paramref name="glb"/> (the file written for <paramref name="model"/>'s animation, its clip first).</summary>
+    public static AnimatorEye Read(byte[] glb, CharacterModel model)
+    {
+        ModelRoot root = ModelRoot.ParseGLB(glb);
+        GltfAnimation clip = root.LogicalAnimations[0];
+        Node Named(string name) => root.LogicalNodes.First(n => n.Name == name);
+        Rig rig = model.Rig;
+        Node trunk = Named(rig.Joints[0].Name);
+        Vector3 up = Axis(model.Source?.UpAxis ?? "+Y");
+        Vector3 forward = Axis(model.Source?.ForwardAxis ?? "+Z");
+
+        // Leg length: the greatest rest height of a foot's hip above its ankle along the rig's up, plus the sole.
+        float leg = 0f;
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            Vector3 hip = Named(rig.Joints[limb.RootJoint].Name).WorldMatrix.Translation;
+            Vector3 ankle = Named(rig.Joints[limb.EffectorJoint].Name).WorldMatrix.Translation;
+            leg = MathF.Max(leg, Vector3.Dot(hip - ankle, up) + limb.EffectorOffset.Length());
+        }
+
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f);
+    }
+
+    /// <summary>The trunk bone's world position at clip time <paramref name="time"/>, metres.</summary>
+    public Vector3 TrunkAt(float time) => _trunk.GetWorldMatrix(_clip, time).Translation;
+
+    /// <summary>The trunk's forward on the ground plane at <paramref name="time"/> (unit; zero when it points straight up or down).</summary>
+    public Vector3 HeadingAt(float time)
+    {
+        Quaternion now = Rotation(_trunk.GetWorldMatrix(_clip, time));
+        Vector3 f = Vector3.Transform(_restForward, now * Quaternion.Conjugate(_restTrunk));
+        f.Y = 0f;
+        return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
+    }
+
+    /// <summary>Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria.</summary>
+    public Look Measure(JumpAnimation animation)
+    {
+        var look = new Look();
+        for (int j = 0; j < animation.Arcs.Count; j++)
+        {
+            var arc = animation.Arcs[j];
+            int move = animation.MoveOfJump(j);
+            float takeoff = animation.JumpStart(j);
+            float landing = takeoff + arc.FlightTime;
+            string jump = $"jump {j + 1} (move {move})";
+
+            // Facing: the heading at takeoff and landing against the direction across.
+            Vector3 across = arc.End - arc.Start;
+            across.Y = 0f;
+            if (across.Length() >= FacingDistance)
+            {
+                across = Vector3.Normalize(across);
+                float off = Degrees(HeadingAt(takeoff), across);
+                float on = Degrees(HeadingAt(landing), across);
+                look.Facing.Add(MathF.Max(off / TakeoffFacing, on / LandingFacing), $"{jump} takes off {off:0}° and lands {on:0}° off its direction");
+            }
+
+            // Crouch: the trunk's lowest point in the window before takeoff, below its height at takeoff; rising into it.
+            float before = MathF.Max(0f, takeoff - DipWindow);
+            if (move > 0)
+            {
+                before = MathF.Max(before, animation.MoveEnd(move - 1));
+            }
+
+            float top = TrunkAt(takeoff).Y;
+            float crouch = (top - Lowest(before, takeoff)) / Leg;
+            bool rising = TrunkAt(takeoff).Y > TrunkAt(MathF.Max(before, takeoff - 0.05f)).Y + 1e-4f;
+            look.Crouch.Add(rising ? crouch / LeastDip : 0f, $"{jump} dips {crouch:0.000} L before takeoff{(rising ? "" : " and does not rise into it")}");
+
+            // Absorb: the lowest point in the window after landing (before the next move), below the landing height.
+            float after = MathF.Min(animation.Duration, landing + DipWindow);
+            if (move + 1 < animation.Moves.Count)
+            {
+                after = MathF.Min(after, animation.MoveStart(move + 1));
+            }
+
+            float absorb = (TrunkAt(landing).Y - Lowest(landing, after)) / Leg;
+            look.Absorb.Add(absorb / LeastDip, $"{jump} absorbs {absorb:0.000} L after landing");
+
+            // Ground time before the next jump.
+            if (move + 1 < animation.Moves.Count && animation.Moves[move + 1] is Jump)
+            {
+                float ground = animation.MoveStart(move + 1) - landing;
+                look.GroundTime.Add(ground / LeastGroundTime, $"{jump} lands {ground:0.000} s before the next takeoff");
+            }
+        }
+
+        return look;
+    }
+
+    private float Lowest(float from, float to)
+    {
+        float lowest = float.PositiveInfinity;
+        for (float t = from; t <= to + 1e-6f; t += Step)
+        {
+            lowest = MathF.Min(lowest, TrunkAt(MathF.Min(t, to)).Y);
+        }
+
+        return MathF.Min(lowest, TrunkAt(to).Y);
+    }
+
+    private static float Degrees(Vector3 a, Vector3 b) =>
+        a == Vector3.Zero ? 180f : MathF.Acos(Math.Clamp(Vector3.Dot(a, b), -1f, 1f)) * 180f / MathF.PI;
+
+    private static Quaternion Rotation(Matrix4x4 m) => Matrix4x4.Decompose(m, out _, out Quaternion r, out _) ? Quaternion.Normalize(r) : Quaternion.Identity;
+
+    private static Vector3 Axis(string name)
+    {
+        float sign = name[0] == '-' ? -1f : 1f;
+        return char.ToUpperInvariant(name[^1]) switch
+        {
+            'X' => new Vector3(sign, 0f, 0f),
+            'Y' => new Vector3(0f, sign, 0f),
+            _ => new Vector3(0f, 0f, sign),
+        };
+    }
+
+    /// <summary>
+    /// One criterion over a plan: each measurement as a score (1 = exactly at the threshold, higher passes; for
+    /// facing, lower passes) with what was seen.
+    /// </summary>
+    public sealed class Criterion(bool higherPasses)
+    {
+        public List<(float Score, string Seen)> Seen { get; } = [];
+
+        public void Add(float score, string seen) => Seen.Add((score, seen));
+
+        /// <summary>The worst measurement, or null when there was none.</summary>
+        public (float Score, string Seen)? Worst => Seen.Count == 0 ? null : higherPasses ? Seen.MinBy(s => s.Score) : Seen.MaxBy(s => s.Score);
+
+        public bool Passes => Seen.All(s => higherPasses ? s.Score >= 1f - 1e-4f : s.Score <= 1f + 1e-4f);
+
+        public override string ToString() => Worst is { } w ? w.Seen : "nothing to measure";
+    }
+
+    /// <summary>What the eye saw of one plan, per criterion.</summary>
+    public sealed class Look
+    {
+        public Criterion Facing { get; } = new(higherPasses: false);
+
+        public Criterion Crouch { get; } = new(higherPasses: true);
+
+        public Criterion Absorb { get; } = new(higherPasses: true);
+
+        public Criterion GroundTime { get; } = new(higherPasses: true);
+
+        public IEnumerable<(string Name, Criterion Criterion)> All =>
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime)];
+
+        public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
+    }
+}
