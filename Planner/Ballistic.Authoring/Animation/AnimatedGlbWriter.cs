@@ -17,7 +17,8 @@ namespace Ballistic.Authoring.Animation;
 /// that moves, relative to its glTF parent (so anchor nodes between bones keep their place), and the translation and
 /// rotation of every root bone, relative to its non-bone ancestors' transforms (an <c>Armature</c> rotated or scaled
 /// stays as it is). A character built in code is written as an <c>Armature</c> node holding the joint hierarchy
-/// (node names = joint names), a mesh of one box per bone skinned rigidly to it, and one clip whose channels are the
+/// (node names = joint names), a mesh of one box per bone skinned rigidly to it (the boxes of each effector bone and
+/// the bones below it cut flat at the limb's contact point, a sole), and one clip whose channels are the
 /// root joint's translation and rotation (its world placement on the jump arcs and walk paths) and every joint's
 /// local rotation. Either way the clip is keyed at each of the animation's frames (flights, walks and the stances
 /// between them alike) with linear interpolation; world frame Y up, metres, seconds.
@@ -115,6 +116,23 @@ public static class AnimatedGlbWriter
         {
             Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
             AddBox(positions, indices, joints, bindPositions[limb.EffectorJoint], tip, model.BoneRadii[limb.EffectorJoint], bindRotations[limb.EffectorJoint], limb.EffectorJoint);
+        }
+
+        // Soles flat on the contact point: the boxes of an effector bone and the bones below it (a foot, its toes) end
+        // at the plane through the limb's contact point across its contact normal, so that a held foot stands on the
+        // ground instead of sinking its box corners into it.
+        foreach (RigLimb limb in model.Limbs)
+        {
+            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
+            Vector3 normal = Vector3.Normalize(Vector3.Transform(limb.ContactNormal, bindRotations[limb.EffectorJoint]));
+            for (int v = 0; v < positions.Count; v++)
+            {
+                float beyond = Vector3.Dot(positions[v] - tip, normal);
+                if (beyond > 0f && Below(rig, joints[4 * v], limb.EffectorJoint))
+                {
+                    positions[v] -= beyond * normal;
+                }
+            }
         }
 
         int material = writer.Add("materials", new JsonObject
@@ -372,6 +390,20 @@ public static class AnimatedGlbWriter
                 }
             }
         }
+    }
+
+    /// <summary>True when <paramref name="joint"/> is <paramref name="ancestor"/> or below it in the rig.</summary>
+    private static bool Below(Rig rig, int joint, int ancestor)
+    {
+        for (int j = joint; j >= 0; j = rig.Joints[j].Parent)
+        {
+            if (j == ancestor)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     private static void AddBox(List<Vector3> positions, List<int> indices, List<byte> joints, Vector3 a, Vector3 b, float radius, Quaternion frame, int joint)

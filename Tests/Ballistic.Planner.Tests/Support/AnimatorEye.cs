@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Collision;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using SharpGLTF.Schema2;
@@ -15,7 +16,8 @@ namespace Ballistic.Planner.Tests.Support;
 /// the clip's channels. From the plan it takes only the timeline (when each move starts and ends, where each jump
 /// goes) and the spec's inputs (which bones are a limb's hip and ankle, the rig's up and forward axes); never the
 /// animator's own poses. L is the leg length: the hip's height above the sole in the rest pose (ankle plus the sole
-/// offset); heading is the trunk's forward on the ground plane.
+/// offset); heading is the trunk's forward on the ground plane. Skinned vertices are placed by linear blend skinning,
+/// as a renderer places them.
 /// </summary>
 internal sealed class AnimatorEye
 {
@@ -37,16 +39,23 @@ internal sealed class AnimatorEye
     /// <summary>Least time (seconds) on the ground between a landing and the next takeoff.</summary>
     public const float LeastGroundTime = 0.2f;
 
+    /// <summary>Farthest (metres) a held foot's lowest skinned vertex may be from the surface, above or below.</summary>
+    public const float SoleTolerance = 0.015f;
+
     private const float Step = 1f / 120f;
 
     private readonly GltfAnimation _clip;
     private readonly Node _trunk;
+    private readonly SkinnedVertex[] _vertices;
+    private readonly Dictionary<string, int[]> _feet;
     private readonly Quaternion _restTrunk;
     private readonly Vector3 _restForward;
 
-    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg)
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, Dictionary<string, int[]> feet)
     {
         _clip = clip;
+        _vertices = vertices;
+        _feet = feet;
         _trunk = trunk;
         _restTrunk = Rotation(trunk.WorldMatrix);
         _restForward = restForward;
@@ -76,7 +85,90 @@ internal sealed class AnimatorEye
             leg = MathF.Max(leg, Vector3.Dot(hip - ankle, up) + limb.EffectorOffset.Length());
         }
 
-        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f);
+        // The skinned vertices (linear blend skinning: joint world matrices times inverse bind matrices), and for each
+        // foot, the vertices mostly skinned to its effector bone or a bone below it.
+        var vertices = new List<SkinnedVertex>();
+        var owner = new List<Node>();
+        foreach (Node node in root.LogicalNodes.Where(n => n.Mesh is not null && n.Skin is not null))
+        {
+            Skin skin = node.Skin;
+            var joints = new (Node Joint, Matrix4x4 InverseBind)[skin.JointsCount];
+            for (int j = 0; j < joints.Length; j++)
+            {
+                joints[j] = skin.GetJoint(j);
+            }
+
+            foreach (MeshPrimitive primitive in node.Mesh.Primitives)
+            {
+                var positions = primitive.GetVertexAccessor("POSITION").AsVector3Array();
+                var jointIndices = primitive.GetVertexAccessor("JOINTS_0").AsVector4Array();
+                var weights = primitive.GetVertexAccessor("WEIGHTS_0").AsVector4Array();
+                for (int v = 0; v < positions.Count; v++)
+                {
+                    Vector4 ji = jointIndices[v];
+                    Vector4 w = weights[v];
+                    var influences = new (Node, Matrix4x4, float)[4];
+                    float[] ws = [w.X, w.Y, w.Z, w.W];
+                    float[] js = [ji.X, ji.Y, ji.Z, ji.W];
+                    for (int k = 0; k < 4; k++)
+                    {
+                        (Node joint, Matrix4x4 inverse) = joints[(int)js[k]];
+                        influences[k] = (joint, inverse, ws[k]);
+                    }
+
+                    vertices.Add(new SkinnedVertex(positions[v], influences));
+                    owner.Add(influences.MaxBy(i => i.Item3).Item1);
+                }
+            }
+        }
+
+        var feet = new Dictionary<string, int[]>(StringComparer.Ordinal);
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            Node effector = Named(rig.Joints[limb.EffectorJoint].Name);
+            feet[limb.Name] = [.. Enumerable.Range(0, vertices.Count).Where(v => Below(owner[v], effector))];
+        }
+
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], feet);
+    }
+
+    /// <summary>A vertex of a skinned mesh: its bind position and up to four (joint, inverse bind matrix, weight).</summary>
+    private sealed record SkinnedVertex(Vector3 Bind, (Node Joint, Matrix4x4 InverseBind, float Weight)[] Influences);
+
+    private static bool Below(Node node, Node ancestor)
+    {
+        for (Node? n = node; n is not null; n = n.VisualParent)
+        {
+            if (n == ancestor)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>A skinned vertex's world position at clip time <paramref name="time"/>, metres.</summary>
+    private Vector3 VertexAt(SkinnedVertex vertex, float time, Dictionary<Node, Matrix4x4> worlds)
+    {
+        Vector3 sum = Vector3.Zero;
+        foreach ((Node joint, Matrix4x4 inverse, float weight) in vertex.Influences)
+        {
+            if (weight <= 0f)
+            {
+                continue;
+            }
+
+            if (!worlds.TryGetValue(joint, out Matrix4x4 world))
+            {
+                world = joint.GetWorldMatrix(_clip, time);
+                worlds[joint] = world;
+            }
+
+            sum += weight * Vector3.Transform(vertex.Bind, inverse * world);
+        }
+
+        return sum;
     }
 
     /// <summary>The trunk bone's world position at clip time <paramref name="time"/>, metres.</summary>
@@ -91,10 +183,14 @@ internal sealed class AnimatorEye
         return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
     }
 
-    /// <summary>Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria.</summary>
-    public Look Measure(JumpAnimation animation)
+    /// <summary>
+    /// Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria, and the feet's
+    /// skinned soles in every contact phase against <paramref name="level"/>'s surface under each held point.
+    /// </summary>
+    public Look Measure(JumpAnimation animation, TriangleBvh level)
     {
         var look = new Look();
+        MeasureSoles(animation, level, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
         {
             var arc = animation.Arcs[j];
@@ -145,6 +241,45 @@ internal sealed class AnimatorEye
         }
 
         return look;
+    }
+
+    /// <summary>
+    /// Feet on the ground, not in it: in each contact phase of a foot (sampled at its start, middle and end), the foot's
+    /// vertices against the plane of the surface under the held point (found by a ray of our own): the lowest within
+    /// <see cref="SoleTolerance"/> of it, above or below.
+    /// </summary>
+    private void MeasureSoles(JumpAnimation animation, TriangleBvh level, Look look)
+    {
+        var worlds = new Dictionary<Node, Matrix4x4>();
+        foreach (ContactPhase phase in animation.ContactPhases)
+        {
+            string limb = animation.Model.Limbs[phase.Limb].Name;
+            if (!_feet.TryGetValue(limb, out int[]? foot) || foot.Length == 0 || phase.To - phase.From < 1e-3f)
+            {
+                continue;
+            }
+
+            if (!level.Raycast(phase.Position + new Vector3(0f, 0.05f, 0f), -Vector3.UnitY, 0.1f, out RayHit hit))
+            {
+                continue;
+            }
+
+            Vector3 n = hit.Normal.Y < 0f ? -hit.Normal : hit.Normal;
+            float worst = 0f;
+            foreach (float time in (float[])[phase.From, 0.5f * (phase.From + phase.To), phase.To])
+            {
+                worlds.Clear();
+                float lowest = float.PositiveInfinity;
+                foreach (int v in foot)
+                {
+                    lowest = MathF.Min(lowest, Vector3.Dot(VertexAt(_vertices[v], time, worlds) - hit.Point, n));
+                }
+
+                worst = MathF.Abs(lowest) > MathF.Abs(worst) ? lowest : worst;
+            }
+
+            look.Soles.Add(SoleTolerance / MathF.Max(MathF.Abs(worst), 1e-6f), $"{limb}'s sole {(worst < 0f ? "sinks" : "floats")} {MathF.Abs(worst) * 100f:0.0} cm {(worst < 0f ? "into" : "above")} the ground at {phase.From:0.000}–{phase.To:0.000} s");
+        }
     }
 
     private float Lowest(float from, float to)
@@ -203,8 +338,10 @@ internal sealed class AnimatorEye
 
         public Criterion GroundTime { get; } = new(higherPasses: true);
 
+        public Criterion Soles { get; } = new(higherPasses: true);
+
         public IEnumerable<(string Name, Criterion Criterion)> All =>
-            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime)];
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles)];
 
         public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
     }

@@ -43,7 +43,7 @@ internal static class Sweep
         AuditReport report = PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
         if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
         {
-            report.Look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), setup.Model).Measure(animation);
+            report.Look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), setup.Model).Measure(animation, scene.Bvh);
         }
 
         return report;

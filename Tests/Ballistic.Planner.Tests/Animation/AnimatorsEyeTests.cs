@@ -11,26 +11,28 @@ namespace Ballistic.Planner.Tests.Animation;
 /// <summary>
 /// Jumps read as jumps on the ground, seen in the exported GLB as an importer reads it (<see cref="AnimatorEye"/>):
 /// the body sinks before every takeoff and drives up through it, absorbs every landing, and stays on the ground a
-/// while between two jumps, on every bundled character.
+/// while between two jumps; held feet stand on the ground, not in it; on every bundled character.
 /// </summary>
-public sealed class CrouchAndLandingTests
+public sealed class AnimatorsEyeTests
 {
     [TestCase("desert", "skeleton", 7.7f, 5.8f, -7.5f, -8.5f)]
     [TestCase("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f)]
     [TestCase("gap-course", "ant", -6f, 0f, 11.5f, 0f)]
     [TestCase("rooftops", "jumperman", -130f, -70f, 96f, 41f)]
-    public void EveryJumpCrouchesDrivesUpAndAbsorbsItsLanding(string levelName, string characterName, float x0, float z0, float x1, float z1)
+    public void EveryJumpCrouchesDrivesUpAndAbsorbsItsLandingOnFeetStandingOnTheGround(string levelName, string characterName, float x0, float z0, float x1, float z1)
     {
-        (_, _, AnimatedPlan plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
+        (PlanningScene scene, _, AnimatedPlan plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         JumpAnimation animation = plan.Animation!;
         Assert.That(animation.Arcs, Is.Not.Empty);
-        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation);
+        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene.Bvh);
         Assert.Multiple(() =>
         {
             Assert.That(look.Crouch.Passes, Is.True, $"a crouch of at least {AnimatorEye.LeastDip} L, rising into takeoff: {look.Crouch}");
             Assert.That(look.Absorb.Passes, Is.True, $"a landing absorbed by at least {AnimatorEye.LeastDip} L: {look.Absorb}");
             Assert.That(look.GroundTime.Passes, Is.True, $"at least {AnimatorEye.LeastGroundTime} s on the ground between jumps: {look.GroundTime}");
+            Assert.That(look.Soles.Passes, Is.True, $"held soles within {AnimatorEye.SoleTolerance * 100f} cm of the ground: {look.Soles}");
+            Assert.That(look.Soles.Seen, Is.Not.Empty, "the feet's soles were measured");
         });
     }
 
