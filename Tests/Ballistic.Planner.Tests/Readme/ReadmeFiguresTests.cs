@@ -33,6 +33,13 @@ public sealed partial class ReadmeFiguresTests
             string sentence = $"plans and animates {walks} walks ({walked} m) and {jumps} jumps";
             TestContext.Out.WriteLine(printed);
             Assert.That(Readme.ReplaceLineEndings(" ").Replace("  ", " ", StringComparison.Ordinal), Does.Contain(sentence), "the README's demo sentence");
+
+            // The clip's length where the README says how many frames Blender needs for it (24 frames a second).
+            Match clip = ClipLine().Match(printed);
+            Assert.That(clip.Success, Is.True, printed);
+            double seconds = double.Parse(clip.Groups["seconds"].Value, CultureInfo.InvariantCulture);
+            string frames = string.Create(CultureInfo.InvariantCulture, $"demo's {seconds:0.0} s are {Math.Ceiling(seconds * 24):0} frames at Blender's 24 fps");
+            Assert.That(Readme.ReplaceLineEndings(" ").Replace("  ", " ", StringComparison.Ordinal), Does.Contain(frames), "the README's clip length");
         }
         finally
         {
@@ -61,4 +68,7 @@ public sealed partial class ReadmeFiguresTests
 
     [GeneratedRegex(@"path: (?<jumps>[0-9]+) jumps \([0-9.]+ s of flight, [0-9.]+ m of arcs\) and (?<walks>[0-9]+) walks \((?<walked>[0-9.]+) m")]
     private static partial Regex PathLine();
+
+    [GeneratedRegex(@"^animation: (?<seconds>[0-9.]+) s ", RegexOptions.Multiline)]
+    private static partial Regex ClipLine();
 }
