@@ -477,7 +477,7 @@ public sealed class JumpAnimator : IJumpAnimator
         int minAir = (int)MathF.Ceiling(MinAirTime / h);
         for (int l = 0; l < limbs; l++)
         {
-            if (ContactOf(takeoff, l) is { } up && ContactOf(landing, l) is { } down && Vector3.Distance(up.Position, down.Position) > 0.02f && makes[l] - breaks[l] < minAir)
+            if (takeoff.ContactOf(l) is { } up && landing.ContactOf(l) is { } down && Vector3.Distance(up.Position, down.Position) > 0.02f && makes[l] - breaks[l] < minAir)
             {
                 int centre = (breaks[l] + makes[l]) / 2;
                 breaks[l] = Math.Max(0, Math.Min(breaks[l], centre - (minAir / 2)));
@@ -715,8 +715,8 @@ public sealed class JumpAnimator : IJumpAnimator
         for (int l = 0; l < Model.Limbs.Count; l++)
         {
             RigLimb limb = Model.Limbs[l];
-            LimbContact? from = ContactOf(landing, l);
-            LimbContact? to = ContactOf(takeoff, l);
+            LimbContact? from = landing.ContactOf(l);
+            LimbContact? to = takeoff.ContactOf(l);
             bool samePoint = from is { } a && to is { } b && Vector3.Distance(a.Position, b.Position) <= 1e-4f;
             bool sameAngles = limb.ChainDofs.All(d => MathF.Abs(q[d] - takeoff.Angles[d]) <= 1e-4f);
             if ((samePoint || (from is null && to is null)) && sameAngles)
@@ -828,19 +828,6 @@ public sealed class JumpAnimator : IJumpAnimator
         return true;
     }
 
-    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
-    {
-        foreach (LimbContact c in config.Contacts)
-        {
-            if (c.Limb == limb)
-            {
-                return c;
-            }
-        }
-
-        return null;
-    }
-
     /// <summary>
     /// Records limb <paramref name="l"/>'s angles at fine step <paramref name="start"/> and onward by
     /// <paramref name="direction"/> while it holds its contact in <paramref name="config"/> by IK (with no bone through
@@ -852,7 +839,7 @@ public sealed class JumpAnimator : IJumpAnimator
         RigLimb limb = Model.Limbs[l];
         float[] q = (float[])config.Angles.Clone();
         held[start] = (float[])q.Clone();
-        if (ContactOf(config, l) is not LimbContact contact)
+        if (config.ContactOf(l) is not LimbContact contact)
         {
             return start;
         }

@@ -30,7 +30,6 @@ internal sealed class StanceDip
     /// <summary>Depth samples solved from the contact pose down to the deepest dip.</summary>
     private const int Samples = 12;
 
-
     private readonly CharacterModel _model;
     private readonly LimbIk _ik;
     private readonly BodyCollision _collision;
@@ -99,7 +98,7 @@ internal sealed class StanceDip
             RigLimb limb = model.Limbs[l];
             if (limb.Kind == LimbKind.Foot)
             {
-                Vector3 foot = ContactOf(config, l) is LimbContact c ? c.Position : limb.EffectorPosition(positions, rotations);
+                Vector3 foot = config.ContactOf(l) is LimbContact c ? c.Position : limb.EffectorPosition(positions, rotations);
                 leg = MathF.Max(leg, Vector3.Dot(positions[limb.RootJoint] - foot, config.Root.Up));
             }
         }
@@ -206,7 +205,7 @@ internal sealed class StanceDip
             // Free limbs fold toward the flexion pose as the body sinks, where they stay clear of the level.
             for (int l = 0; l < _model.Limbs.Count; l++)
             {
-                if (ContactOf(config, l) is not null)
+                if (config.ContactOf(l) is not null)
                 {
                     continue;
                 }
@@ -274,17 +273,4 @@ internal sealed class StanceDip
 
     /// <summary>The leg's pendulum time √(L/g), seconds.</summary>
     private static float Pendulum(Table table) => MathF.Sqrt(table.Leg / 9.81f);
-
-    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
-    {
-        foreach (LimbContact c in config.Contacts)
-        {
-            if (c.Limb == limb)
-            {
-                return c;
-            }
-        }
-
-        return null;
-    }
 }

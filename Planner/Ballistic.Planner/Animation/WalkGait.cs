@@ -141,19 +141,6 @@ internal sealed class WalkGait
         return x * x * (3f - (2f * x));
     }
 
-    private static LimbContact? ContactOf(ContactConfiguration config, int limb)
-    {
-        foreach (LimbContact c in config.Contacts)
-        {
-            if (c.Limb == limb)
-            {
-                return c;
-            }
-        }
-
-        return null;
-    }
-
     /// <summary>What a contact pose lets one foot do: where it stands in the trunk's frame, how far the trunk may move either way along a direction with the foot held.</summary>
     private readonly record struct Footing(Vector3 Local, float Ahead, float Behind);
 
@@ -375,7 +362,7 @@ internal sealed class WalkGait
         /// <summary>Where limb <paramref name="l"/> stands in <paramref name="config"/>, world: its contact, or where its effector is.</summary>
         private Vector3 Stand(ContactConfiguration config, int l)
         {
-            if (ContactOf(config, l) is LimbContact c)
+            if (config.ContactOf(l) is LimbContact c)
             {
                 return c.Position;
             }
@@ -401,7 +388,7 @@ internal sealed class WalkGait
             for (int l = 0; l < _limbs; l++)
             {
                 Vector3 local = ToLocal(config.Root, Stand(config, l));
-                if (!IsFoot(l) || ContactOf(config, l) is not LimbContact c)
+                if (!IsFoot(l) || config.ContactOf(l) is not LimbContact c)
                 {
                     footings[l] = new Footing(local, float.PositiveInfinity, float.PositiveInfinity);
                     continue;
@@ -601,7 +588,7 @@ internal sealed class WalkGait
             float until = limit;
             for (int l = 0; l < _limbs; l++)
             {
-                if (group[l] != g || ContactOf(_start, l) is not LimbContact c)
+                if (group[l] != g || _start.ContactOf(l) is not LimbContact c)
                 {
                     continue;
                 }
@@ -630,7 +617,7 @@ internal sealed class WalkGait
             float duration = _walk.Duration;
             for (int l = 0; l < _limbs; l++)
             {
-                if (!IsFoot(l) || ContactOf(_end, l) is not LimbContact c)
+                if (!IsFoot(l) || _end.ContactOf(l) is not LimbContact c)
                 {
                     continue;
                 }
@@ -680,7 +667,7 @@ internal sealed class WalkGait
             Segment Stance(int a, int b, bool atEnd)
             {
                 ContactConfiguration config = atEnd ? _end : _start;
-                return ContactOf(config, l) is LimbContact c
+                return config.ContactOf(l) is LimbContact c
                     ? new Holding(a, b, c.Position, c.Normal, atEnd)
                     : new Free(a, b, config.Angles, config.Angles);
             }
@@ -707,7 +694,7 @@ internal sealed class WalkGait
             int a1 = _swingStart[halfCycles - 1];
             int b1 = _swingEnd[halfCycles - 1];
             var plan = new List<Segment>();
-            if (ContactOf(_start, l) is LimbContact s)
+            if (_start.ContactOf(l) is LimbContact s)
             {
                 plan.Add(new Holding(0, a0, s.Position, s.Normal, Settle: false));
                 plan.Add(new Swinging(a0, b0));
@@ -719,7 +706,7 @@ internal sealed class WalkGait
             }
 
             plan.Add(new Free(b0, a1, hang, hang));
-            if (ContactOf(_end, l) is LimbContact e)
+            if (_end.ContactOf(l) is LimbContact e)
             {
                 plan.Add(new Swinging(a1, b1));
                 plan.Add(new Holding(b1, _steps, e.Position, e.Normal, Settle: true));
@@ -736,12 +723,12 @@ internal sealed class WalkGait
         /// <summary>The angles a hand hangs in while walking: its free pose at the start or end, else one clear of the level mid-walk.</summary>
         private float[] Hang(int l)
         {
-            if (ContactOf(_start, l) is null)
+            if (_start.ContactOf(l) is null)
             {
                 return _start.Angles;
             }
 
-            if (ContactOf(_end, l) is null)
+            if (_end.ContactOf(l) is null)
             {
                 return _end.Angles;
             }
