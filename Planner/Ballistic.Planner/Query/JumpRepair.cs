@@ -11,8 +11,8 @@ namespace Ballistic.Planner.Query;
 /// <see cref="AnimatedPlanner"/> and the runtime's path requests so both repair and explain alike. A request that
 /// walks and jumps falls back to jumps only once its walks failed to animate in <see cref="WalkRounds"/> rounds: walking
 /// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds. Likewise
-/// a move cut from a jump (<see cref="Move.CutFrom"/>) that does not animate gives the jump back whole, and after
-/// <see cref="CutRounds"/> such rounds no jump is cut. A walk whose problems the animator places on its path keeps
+/// a move cut from a jump (<see cref="Move.CutFrom"/>: cut down, or turned to face its way) that does not animate
+/// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned. A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
 /// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. Not thread-safe.
 /// </summary>
@@ -31,6 +31,7 @@ public sealed class JumpRepair
     private readonly List<Vector3> _spots = [];
     private int _walksSetAside;
     private readonly HashSet<(int From, int To)> _uncut = [];
+    private readonly HashSet<(int From, int To)> _unfaced = [];
     private readonly List<RejectedJump> _setAside = [];
 
     /// <summary>Moves (jumps or walks: from node id, to node id) the next search must not use.</summary>
@@ -47,6 +48,12 @@ public sealed class JumpRepair
 
     /// <summary>Jumps (takeoff id, landing id, as searched) whose cut-down moves did not animate: the next searches keep them whole.</summary>
     public IReadOnlySet<(int From, int To)> Uncut => _uncut;
+
+    /// <summary>
+    /// Jumps (takeoff id, landing id, as searched) given back whole (<see cref="Uncut"/>) whose moves, turned by hops
+    /// to face their way, did not animate either: the next searches fly them as searched.
+    /// </summary>
+    public IReadOnlySet<(int From, int To)> Unfaced => _unfaced;
 
     /// <summary>Rounds so far in which a move cut from a jump did not animate cleanly.</summary>
     public int CutFailures { get; private set; }
@@ -84,9 +91,9 @@ public sealed class JumpRepair
             settings = settings with { Locomotion = Locomotion.Jump };
         }
 
-        if (!CuttingAllowed && settings.TightenJumps)
+        if (!CuttingAllowed && (settings.TightenJumps || settings.FaceJumps))
         {
-            settings = settings with { TightenJumps = false };
+            settings = settings with { TightenJumps = false, FaceJumps = false };
         }
 
         if (_spots.Count > 0)
@@ -94,12 +101,18 @@ public sealed class JumpRepair
             settings = settings with { HopSpots = [.. _spots] };
         }
 
+        if (_unfaced.Count > 0)
+        {
+            settings = settings with { UnfacedJumps = _unfaced };
+        }
+
         return _uncut.Count == 0 ? settings : settings with { UncutJumps = _uncut };
     }
 
     /// <summary>
     /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
-    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead; for a
+    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead (and,
+    /// for jumps already kept whole, leaves them unturned: <see cref="Unfaced"/>); for a
     /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
     /// <see cref="HoppingAllowed"/>, and unless a spot is already known: the hop there did not pass); for a move of a
     /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside.
@@ -124,7 +137,8 @@ public sealed class JumpRepair
                 bool kept = false;
                 foreach ((int, int) jump in move.CutFrom)
                 {
-                    kept |= _uncut.Add(jump);
+                    // Given back once (kept whole, turned by hops only); failing again, flown as searched.
+                    kept |= _uncut.Add(jump) || _unfaced.Add(jump);
                 }
 
                 if (kept)

@@ -140,7 +140,9 @@ public sealed class PathQuery
         }
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
-        return Connect(start, goal, settings, rejected, termination, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+        _goalPoint = reused is null ? to : null;
+        PlanResult result = Connect(start, goal, settings, rejected, termination, clock);
+        return result with { StartPlacement = startPlacement, GoalPlacement = result.GoalPlacement ?? goalPlacement };
     }
 
     /// <summary>
@@ -175,7 +177,9 @@ public sealed class PathQuery
         }
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
-        return Connect(from, goal, settings, rejected, termination, clock) with { GoalPlacement = goalPlacement };
+        _goalPoint = reused is null ? to : null;
+        PlanResult result = Connect(from, goal, settings, rejected, termination, clock);
+        return result with { GoalPlacement = result.GoalPlacement ?? goalPlacement };
     }
 
     /// <summary>
@@ -201,6 +205,7 @@ public sealed class PathQuery
             : _roadmap.FindPose(goal.Pose) is int id ? _roadmap.Node(id)
             : from.Pose == goal.Pose ? from
             : goal.Id == n + 1 ? goal : goal with { Id = n + 1 };
+        _goalPoint = null;
         return Connect(from, to, settings, rejected, termination, clock);
     }
 
@@ -358,6 +363,8 @@ public sealed class PathQuery
             return Fail(PlannerStatus.NoPath, $"the roadmap's walk from node {lostFrom} to node {lostTo} no longer finds its ground on this level: bake the roadmap again", start, goal, clock) with { Expansions = expansions };
         }
 
+        int nextId = n + 2;
+        EndpointPlacement? goalPlacement = null;
         if (path is not null && _walking)
         {
             if (settings.Shortcut)
@@ -365,7 +372,6 @@ public sealed class PathQuery
                 path = Shortcut(path, settings, rejected);
             }
 
-            int nextId = n + 2;
             if (settings.TightenJumps)
             {
                 _tightener ??= new JumpTightener(_scene);
@@ -379,15 +385,61 @@ public sealed class PathQuery
                 path = _tightener.Hop(path, spots, ref nextId, 0.5f * settings.MinCutWalk, rejected, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
             }
 
+            if (settings.FaceJumps)
+            {
+                path = Face(path, walking: true, ref nextId, goal, settings, rejected, termination, clock, out goalPlacement);
+            }
+
             path = JoinWalks(path, _scene.Walking);
+        }
+        else if (path is not null && settings.FaceJumps)
+        {
+            path = Face(path, walking: false, ref nextId, goal, settings, rejected, termination, clock, out goalPlacement);
+        }
+
+        if (goalPlacement is not null && path is { Count: > 0 })
+        {
+            goal = path[^1].To; // placed again facing the last jump (same requested point and tolerance)
         }
 
         string moves = _walking ? "moves (jumps or walks)" : "jumps";
         string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed);
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { GoalPlacement = goalPlacement };
         return result with { Expansions = expansions };
+    }
+
+    /// <summary>
+    /// The path's jumps turned to face their way (<see cref="JumpFacer"/>). A goal this request placed at a point
+    /// (not a roadmap node it was given or preferred; the bake's node of that very placement included) may be placed
+    /// again at that point, within the same tolerance, facing the last jump, as id n + 1: <paramref name="goalPlacement"/>
+    /// is then that placement, otherwise <c>null</c>.
+    /// </summary>
+    private List<Move> Face(List<Move> path, bool walking, ref int nextId, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out EndpointPlacement? goalPlacement)
+    {
+        EndpointPlacement? placed = null;
+        RoadmapNode? newGoal = null;
+        Func<float, RoadmapNode?>? placeGoal = null;
+        int n = _roadmap.Nodes.Count;
+        if (_goalPoint is Vector3 point && (goal.Id == n + 1 || goal.Id < n))
+        {
+            placeGoal = facing =>
+            {
+                EndpointPlacement p = _scene.Sampler.PlaceFacingWithin(point, settings.Tolerance, facing, JumpFacer.Yaws, settings.CanStand);
+                if (p.Pose is not { } pose)
+                {
+                    return null;
+                }
+
+                placed = p;
+                return newGoal = new RoadmapNode(n + 1, pose.Pose, pose.Cone, pose.Contacts);
+            };
+        }
+
+        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, placeGoal, () => Stopped(termination, clock, null, null) is not null);
+        goalPlacement = faced.Count > 0 && ReferenceEquals(faced[^1].To, newGoal) ? placed : null;
+        return faced;
     }
 
     /// <summary>
@@ -821,6 +873,9 @@ public sealed class PathQuery
     private static string Moves(int count) => Plural(count, "move");
 
     private static string Plural(int count, string noun) => count == 1 ? $"1 {noun}" : $"{count} {noun}s";
+
+    /// <summary>The requested goal point of the request being planned, when its goal was placed there (not a roadmap node given or preferred).</summary>
+    private Vector3? _goalPoint;
 
     /// <summary>The failure to return when <paramref name="termination"/> says to stop now, otherwise <c>null</c>.</summary>
     private static PlanResult? Stopped(TerminationCondition? termination, Stopwatch clock, RoadmapNode? start, RoadmapNode? goal) =>

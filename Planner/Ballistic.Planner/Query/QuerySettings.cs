@@ -76,6 +76,15 @@ public sealed record QuerySettings
     public bool TightenJumps { get; init; } = true;
 
     /// <summary>
+    /// After the search (and cutting), turn each jump travelling about a metre or more to face the way it goes: a
+    /// takeoff (landing) heading more than 20° (30°) off the jump's direction is replaced by a stance at the same spot
+    /// facing the jump, which the character turns into in place (a turn walk, or a hop in place for a character that
+    /// only jumps), each new stance and move checked like the roadmap's (<see cref="JumpFacer"/>). A jump whose turns
+    /// do not pass is kept as searched. On by default; off for the paper's plans, whose stances face any way.
+    /// </summary>
+    public bool FaceJumps { get; init; } = true;
+
+    /// <summary>
     /// The shortest walk (metres, horizontally) <see cref="TightenJumps"/> adds before or after a jump (a hop over a
     /// spot, <see cref="HopSpots"/>, leaves half of it before or after itself): a stance is not moved less than this. A walk turns in place at both ends, so a shorter one shuffles more than it walks.
     /// Positive; 1 m by default.
@@ -94,6 +103,13 @@ public sealed record QuerySettings
     /// moves did not animate (<see cref="JumpRepair"/> fills it); <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<(int From, int To)>? UncutJumps { get; init; }
+
+    /// <summary>
+    /// Jumps (takeoff id, landing id, as searched) <see cref="FaceJumps"/> must leave as searched: those given back
+    /// whole (<see cref="UncutJumps"/>) whose moves turned by hops did not animate either (<see cref="JumpRepair"/>
+    /// fills it); <c>null</c> for none.
+    /// </summary>
+    public IReadOnlySet<(int From, int To)>? UnfacedJumps { get; init; }
 
     /// <summary>
     /// Ground points (world metres) where the body could not walk: <see cref="JumpRepair"/> fills it from where the

@@ -158,8 +158,30 @@ public sealed class TrunkSampler
         return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false);
     }
 
-    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond)
+    /// <summary>
+    /// As <see cref="PlaceFacing"/>, but only the yaws <paramref name="facing"/> plus each of
+    /// <paramref name="yawOffsets"/> (radians, tried in order) are tried: a stance that must face within a bound of a
+    /// heading (a jump's takeoff) is never placed facing elsewhere.
+    /// </summary>
+    internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand)
     {
+        if (!float.IsFinite(facing))
+        {
+            throw new ArgumentException($"The yaw {facing} is not finite.", nameof(facing));
+        }
+
+        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets);
+    }
+
+    /// <summary>Yaw offsets of <see cref="PlaceFacing"/>: 0, +45°, −45°, +90°, … (eighths of a turn).</summary>
+    private static readonly float[] EighthTurns = [.. Enumerable.Range(0, 8).Select(y => (y % 2 == 1 ? (y + 1) / 2 : -(y / 2)) * MathF.PI / 4f)];
+
+    /// <summary>Yaws of <see cref="Place(Vector3, EndpointTolerance, Func{PoseEvaluation, bool}?)"/>: eighths of a turn from 0.</summary>
+    private static readonly float[] AllYaws = [.. Enumerable.Range(0, 8).Select(y => y * MathF.PI / 4f)];
+
+    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null)
+    {
+        float[] yaws = facing is null ? AllYaws : yawOffsets ?? EighthTurns;
         tolerance.Validate();
         if (!float.IsFinite(point.X) || !float.IsFinite(point.Y) || !float.IsFinite(point.Z))
         {
@@ -191,10 +213,10 @@ public sealed class TrunkSampler
                         continue; // nothing to stand on: a wall, a ceiling or a face no limb may touch
                     }
 
-                    for (int y = 0; y < 8; y++)
+                    foreach (float offset in yaws)
                     {
-                        // From the facing yaw: 0, +1, −1, +2, −2, … eighths of a turn.
-                        float yaw = facing is float f ? f + ((y % 2 == 1 ? (y + 1) / 2 : -(y / 2)) * MathF.PI / 4f) : y * MathF.PI / 4f;
+                        // From the facing yaw: 0, +1, −1, +2, −2, … eighths of a turn (or the offsets asked for).
+                        float yaw = (facing ?? 0f) + offset;
                         float[] lifts = facing is null ? PlacementLifts : UprightLifts;
                         foreach (float lift in beyond ? lifts.AsSpan(0, 1) : lifts)
                         {

@@ -63,7 +63,21 @@ public sealed class ParabolaSteering
     /// <param name="fromCone">Centroidal friction cone at takeoff; the takeoff velocity must lie in it.</param>
     /// <param name="to">Landing root pose.</param>
     /// <param name="toCone">Centroidal friction cone at landing; the reversed landing velocity must lie in it.</param>
-    public SteeringResult Steer(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone)
+    public SteeringResult Steer(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone) =>
+        SteerTrying(from, fromCone, to, toCone, Fractions);
+
+    /// <summary>
+    /// As <see cref="Steer(in RootPose, in FrictionCone, in RootPose, in FrictionCone)"/>, the steepest admissible
+    /// takeoff angles tried first: the arc that stays longest in the air, for a hop in place that must leave the
+    /// limbs time to move.
+    /// </summary>
+    internal SteeringResult SteerSteep(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone) =>
+        SteerTrying(from, fromCone, to, toCone, SteepFractions);
+
+    /// <summary>Fractions of the admissible angle interval tried in order by <see cref="SteerSteep"/>.</summary>
+    private static readonly double[] SteepFractions = [0.875, 0.75, 0.625, 0.5];
+
+    private SteeringResult SteerTrying(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone, double[] fractions)
     {
         SteeringFailure failure = TryAngleInterval(from.Position, fromCone, to.Position, toCone, out AngleInterval interval);
         if (failure != SteeringFailure.None)
@@ -78,7 +92,7 @@ public sealed class ParabolaSteering
         }
 
         bool anyLowEnough = false;
-        foreach (double fraction in Fractions)
+        foreach (double fraction in fractions)
         {
             double alpha = interval.Min + (fraction * (interval.Max - interval.Min));
             if (ApexHeight(from.Position, interval, alpha) > Limits.MaxApexHeight)

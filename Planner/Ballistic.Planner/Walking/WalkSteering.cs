@@ -98,6 +98,36 @@ public sealed class WalkSteering
     }
 
     /// <summary>
+    /// A turn in place from <paramref name="from"/> to <paramref name="to"/>, two stances at (nearly) the same spot
+    /// facing different ways: a walk whose ground path joins their contact centres (the feet re-step while the trunk
+    /// turns), checked like <see cref="Steer"/>'s (ground, steps, slope, trunk); <c>null</c> when the character
+    /// does not walk, the ground or the trunk fails, or the stances lie more than <paramref name="maxDistance"/> apart.
+    /// </summary>
+    /// <param name="from">The stance turned from, world frame.</param>
+    /// <param name="to">The stance turned to, world frame.</param>
+    /// <param name="maxDistance">The farthest (metres, horizontally between contact centres) the stances may lie apart.</param>
+    internal Walk? Turn(RoadmapNode from, RoadmapNode to, float maxDistance)
+    {
+        ArgumentNullException.ThrowIfNull(from);
+        ArgumentNullException.ThrowIfNull(to);
+        Vector3 a = Roadmap.CentreOf(from);
+        Vector3 b = Roadmap.CentreOf(to);
+        if (!Limits.CanWalk || !(new Vector2(b.X - a.X, b.Z - a.Z).Length() <= maxDistance))
+        {
+            return null;
+        }
+
+        var path = new List<Vector3>();
+        if (TraceGround(a, b, path, out _) != WalkFailure.None)
+        {
+            return null;
+        }
+
+        var walk = new Walk(from, to, path, Limits.Speed);
+        return TrunkIsFree(walk) ? walk : null;
+    }
+
+    /// <summary>
     /// How far (metres, horizontally) the ground allows a walk from <paramref name="from"/> straight toward
     /// <paramref name="toward"/> (seen from above): the distance of the last ground sample before the first gap,
     /// step too high or steep stretch, by the same ground checks as <see cref="Steer"/> makes; the whole distance

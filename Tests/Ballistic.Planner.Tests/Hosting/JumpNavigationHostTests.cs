@@ -87,10 +87,14 @@ public sealed class JumpNavigationHostTests
             Assert.That(events.Select(e => e.Event.Kind), Does.Not.Contain(JumpEventKind.Removed), "a rebake is not a removal");
             AgentEvent found = events.First(e => e.Event.Kind == JumpEventKind.PathFound);
             Assert.That(Vector3.Distance(Stances.ContactCentre(found.Path!.Start), restart), Is.LessThan(1e-4f), "the new path starts where the agent was put");
+            // Each landing but the last is a node of the new roadmap, or a stance the query placed (facing a jump): ids n + 2 on.
+            int placedFrom = HostingWorlds.DesertRebaked.Roadmap.Nodes.Count + 2;
             foreach (var move in found.Path.Moves.SkipLast(1))
             {
-                Assert.That(Stances.IsNodeOf(HostingWorlds.DesertRebaked.Roadmap, move.To), Is.True, $"jump {move.Index} lands on a node of the new roadmap");
+                Assert.That(move.To.Id >= placedFrom || Stances.IsNodeOf(HostingWorlds.DesertRebaked.Roadmap, move.To), Is.True, $"jump {move.Index} lands on a node of the new roadmap");
             }
+
+            Assert.That(found.Path.Moves.SkipLast(1).Count(m => Stances.IsNodeOf(HostingWorlds.DesertRebaked.Roadmap, m.To)), Is.Positive, "the path goes through the new roadmap");
         }
     }
 

@@ -37,7 +37,7 @@ public sealed class JumpTighteningTests
     public void OnTheDesertJumpsAreCutDownToTheDunesAndTheRestIsWalked()
     {
         (PlanningScene scene, Vector3 from, Vector3 to, Roadmap roadmap, JumpAnimator real) = Desert.Value;
-        var settings = new QuerySettings { CanStand = real.CanStand };
+        var settings = new QuerySettings { CanStand = real.CanStand, FaceJumps = false }; // cutting alone: facing adds moves of its own
         PlanResult whole = new PathQuery(scene, roadmap).Plan(from, to, settings with { TightenJumps = false });
         PlanResult cut = new PathQuery(scene, roadmap).Plan(from, to, settings);
         Assert.That(whole.Status, Is.EqualTo(PlannerStatus.Exact), whole.Reason);
@@ -91,7 +91,7 @@ public sealed class JumpTighteningTests
     public void AJumpKeptWholeIsNotCutAndNeitherIsAnyWithCuttingOff()
     {
         (PlanningScene scene, Vector3 from, Vector3 to, Roadmap roadmap, JumpAnimator real) = Desert.Value;
-        var settings = new QuerySettings { CanStand = real.CanStand };
+        var settings = new QuerySettings { CanStand = real.CanStand, FaceJumps = false }; // cutting alone: facing adds moves of its own
         PlanResult cut = new PathQuery(scene, roadmap).Plan(from, to, settings);
         PlanResult whole = new PathQuery(scene, roadmap).Plan(from, to, settings with { TightenJumps = false });
         HashSet<(int From, int To)> all = [.. cut.Moves.SelectMany(m => m.CutFrom)];
@@ -153,6 +153,7 @@ public sealed class JumpTighteningTests
 
         Assert.That(repair.CuttingAllowed, Is.False);
         Assert.That(repair.Adjust(settings).TightenJumps, Is.False);
+        Assert.That(repair.Adjust(settings).FaceJumps, Is.False, "nor turned to face their way");
         Assert.That(repair.IsExhausted(JumpRepair.CutRounds, 1), Is.False, "cut rounds do not count against the searches");
     }
 }

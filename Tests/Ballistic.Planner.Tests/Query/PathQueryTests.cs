@@ -44,21 +44,24 @@ public sealed class PathQueryTests
         return text.ToString();
     }
 
+    /// <summary>The search alone: turning jumps to face their way adds stances of its own (and places a goal again), see <see cref="JumpFacingTests"/>.</summary>
+    private static readonly QuerySettings Searched = new() { FaceJumps = false };
+
     [Test]
     public void BetweenTheNodesAPointRequestPlacedOnTheSearchIsTheSame()
     {
         BakeResult bake = WithEndpoints.Value;
         Roadmap roadmap = bake.Roadmap;
         var query = new PathQuery(Scene.Value, roadmap);
-        PlanResult byPoints = query.Plan(GapCourse.From, GapCourse.To);
+        PlanResult byPoints = query.Plan(GapCourse.From, GapCourse.To, Searched);
         Assert.That(byPoints.Status, Is.EqualTo(PlannerStatus.Exact), byPoints.Reason);
         Assert.That(byPoints.Start!.Id, Is.EqualTo(bake.StartNode), "the start point places on the baked start node");
         Assert.That(byPoints.Goal!.Id, Is.EqualTo(bake.GoalNode));
 
         RoadmapNode start = roadmap.Nodes[bake.StartNode!.Value];
         RoadmapNode goal = roadmap.Nodes[bake.GoalNode!.Value];
-        PlanResult byNodes = query.Plan(start, goal);
-        PlanResult byNodeAndPoint = query.Plan(start, GapCourse.To);
+        PlanResult byNodes = query.Plan(start, goal, Searched);
+        PlanResult byNodeAndPoint = query.Plan(start, GapCourse.To, Searched);
         Assert.Multiple(() =>
         {
             Assert.That(Describe(byNodes), Is.EqualTo(Describe(byPoints)));
@@ -82,15 +85,15 @@ public sealed class PathQueryTests
         {
             foreach (Vector3 to in Points)
             {
-                PlanResult byPoints = query.Plan(from, to);
+                PlanResult byPoints = query.Plan(from, to, Searched);
                 if (byPoints.Start is null || byPoints.Goal is null)
                 {
                     continue;
                 }
 
                 // The placed stances off the roadmap keep their ids (n and n + 1), so the node requests repeat the point request.
-                Assert.That(Describe(query.Plan(byPoints.Start, byPoints.Goal)), Is.EqualTo(Describe(byPoints)), $"{from} → {to}");
-                Assert.That(Describe(query.Plan(byPoints.Start, to)), Is.EqualTo(Describe(byPoints)), $"{from} → {to}");
+                Assert.That(Describe(query.Plan(byPoints.Start, byPoints.Goal, Searched)), Is.EqualTo(Describe(byPoints)), $"{from} → {to}");
+                Assert.That(Describe(query.Plan(byPoints.Start, to, Searched)), Is.EqualTo(Describe(byPoints)), $"{from} → {to}");
                 compared += byPoints.Status == PlannerStatus.Exact && byPoints.Start.Id == n && byPoints.Goal.Id == n + 1 ? 1 : 0;
             }
         }
@@ -147,7 +150,7 @@ public sealed class PathQueryTests
         RoadmapNode goal = roadmap.Nodes[bake.GoalNode!.Value];
         var rejected = new HashSet<(int From, int To)>();
         float previous = 0f;
-        PlanResult result = query.Plan(start, goal, rejected: rejected);
+        PlanResult result = query.Plan(start, goal, Searched, rejected: rejected);
         int rounds = 0;
         for (; result.Status == PlannerStatus.Exact && rounds < 40; rounds++)
         {
@@ -156,7 +159,7 @@ public sealed class PathQueryTests
             previous = result.TotalFlightTime;
             Jump middle = result.Jumps[result.Jumps.Count / 2];
             rejected.Add((middle.Takeoff.Id, middle.Landing.Id));
-            result = query.Plan(start, goal, rejected: rejected);
+            result = query.Plan(start, goal, Searched, rejected: rejected);
         }
 
         Assert.That(rounds, Is.GreaterThan(1));

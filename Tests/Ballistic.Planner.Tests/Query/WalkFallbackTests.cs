@@ -41,10 +41,11 @@ public sealed class WalkFallbackTests
     public void TheRepairRecordSwitchesToJumpsOnlyAfterTwoRoundsWithAFailedWalk()
     {
         (PlanningScene scene, Roadmap roadmap, JumpAnimator real) = Course.Value;
-        PlanResult path = new PathQuery(scene, roadmap).Plan(GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false });
+        // Walks as searched: neither cut from jumps nor turning into them (their failures are the cut's, not the walk's).
+        PlanResult path = new PathQuery(scene, roadmap).Plan(GapCourse.From, GapCourse.To, new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false, FaceJumps = false });
         Assume.That(path.Walks, Is.Not.Empty);
         var repair = new JumpRepair();
-        var walking = new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false };
+        var walking = new QuerySettings { Locomotion = Locomotion.WalkAndJump, TightenJumps = false, FaceJumps = false };
         JumpAnimation refused = new RefusingAnimator(new SimpleMoveAnimator(real), m => m is Walk, "cannot walk here").Animate(path.Moves);
         JumpAnimation clean = new SimpleMoveAnimator(real).Animate(path.Moves);
 

@@ -110,7 +110,8 @@ public sealed class EndpointPlacementTests
         Assert.That(again.Pose!.Pose, Is.EqualTo(first.Pose!.Pose));
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 4, MaxNodes = 400, Start = from, Goal = to, StopWhenConnected = true, Threads = 2 });
         Assert.That(bake.Status, Is.EqualTo(PlannerStatus.Exact), bake.Reason);
-        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to);
+        PlanResult plan = new PathQuery(scene, bake.Roadmap).Plan(from, to, new QuerySettings { FaceJumps = false });
+        PlanResult faced = new PathQuery(scene, bake.Roadmap).Plan(from, to);
         Assert.Multiple(() =>
         {
             Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), "the bake connected start and goal, so the query does too");
@@ -118,6 +119,14 @@ public sealed class EndpointPlacementTests
             Assert.That(plan.Goal!.Id, Is.EqualTo(bake.GoalNode));
             Assert.That(plan.StartPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
             Assert.That(plan.GoalPlacement!.UpDown, Is.LessThanOrEqualTo(0.25f));
+
+            // Facing the last jump may place the goal again: at the same point, within the same tolerance, said so.
+            Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
+            Assert.That(faced.Start!.Id, Is.EqualTo(bake.StartNode));
+            Assert.That(faced.Goal, Is.SameAs(faced.Moves[^1].To));
+            Assert.That(faced.GoalPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
+            Assert.That(faced.GoalPlacement!.UpDown, Is.LessThanOrEqualTo(0.25f));
+            Assert.That(faced.GoalPlacement!.Pose!.Pose, Is.EqualTo(faced.Goal!.Pose), "the placement reported is the goal's");
         });
     }
 

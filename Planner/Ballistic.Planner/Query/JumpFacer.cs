@@ -1,0 +1,349 @@
+using System.Numerics;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Steering;
+
+namespace Ballistic.Planner.Query;
+
+/// <summary>
+/// Jumps made facing the way they go, after the search: a roadmap stance faces whichever way it was sampled, so a
+/// jump between two of them may leave sideways or land backwards. For each jump of the path travelling at least
+/// <see cref="MinDistance"/> across whose takeoff (landing) heading is more than <see cref="TakeoffTurn"/>
+/// (<see cref="LandingTurn"/>) off its direction, a new takeoff (landing) stance is placed where the old one stands,
+/// facing the jump (<see cref="TrunkSampler.PlaceFacingWithin"/>: contacts on the level, within
+/// <see cref="Placement"/> of the old ones, the request's <see cref="QuerySettings.CanStand"/>), and the jump is
+/// steered again between the stances it uses (friction cones of the contacts it actually stands on, speed limits,
+/// trunk sweep). The character turns in place into the new takeoff and out of the new landing: a walker by a turn
+/// walk (<see cref="Walking.WalkSteering.Turn"/>, its feet re-stepping) or, when the walk before the jump can be
+/// steered to the new takeoff directly (the walk after it from the new landing), by that walk's own turn; a
+/// character that does not walk, a request that only jumps, or a walker on ground too steep to walk, by a hop in
+/// place, steered like any jump.
+/// </summary>
+/// <remarks>
+/// A jump is faced only when every move linking it to the path passes its checks; otherwise it is kept as it was
+/// searched. The new moves record the jump they replace in <see cref="Move.CutFrom"/> (its own cut, or the jump
+/// itself), so that when one of them does not animate, <see cref="JumpRepair"/> gives that jump back whole
+/// (<see cref="QuerySettings.UncutJumps"/>), as it does for a cut jump; such a jump is faced again turning by hops
+/// only (a turn walk the gait could not perform is the usual cause), and after <see cref="JumpRepair.CutRounds"/>
+/// rounds with such failures no jump is turned. The path still starts and ends on the
+/// request's start and goal stances. New stances get ids from a counter in the order they are placed:
+/// deterministic for the same path.
+/// </remarks>
+internal sealed class JumpFacer
+{
+    /// <summary>Jumps shorter than this (metres, horizontally between the trunk's takeoff and landing) are kept as they are: a hop may go any way.</summary>
+    public const float MinDistance = 0.9f;
+
+    /// <summary>A takeoff whose heading is more than this (radians, 20°) off the jump's direction is turned to face it.</summary>
+    public const float TakeoffTurn = 20f * MathF.PI / 180f;
+
+    /// <summary>A landing whose heading is more than this (radians, 30°) off the jump's direction is turned to face it.</summary>
+    public const float LandingTurn = 30f * MathF.PI / 180f;
+
+    /// <summary>The farthest (metres, horizontally between contact centres) a turn in place moves the stance.</summary>
+    public const float MaxTurnShift = 0.5f;
+
+    /// <summary>Yaws (radians, from the jump's direction) a new stance is tried at, in order.</summary>
+    internal static readonly float[] Yaws = [0f, 10f * MathF.PI / 180f, -10f * MathF.PI / 180f];
+
+    /// <summary>How close a new stance's contacts' centre comes to the old one's.</summary>
+    private static readonly EndpointTolerance Placement = new(0.2f, 0.3f);
+
+    private readonly PlanningScene _scene;
+    private readonly bool _walking;
+    private readonly Func<PoseEvaluation, bool>? _canStand;
+    private int _nextId;
+
+    /// <summary>Whether the jump being faced turns by hops only: the request does not walk, or the repair gave it back once (its turn walks did not animate).</summary>
+    private bool _hops;
+    private RoadmapNode? _placedGoal;
+
+    /// <summary>Creates the facer of one request's path.</summary>
+    /// <param name="scene">The level and character.</param>
+    /// <param name="walking">Whether the request walks (turns are walked) or only jumps (turns are hopped).</param>
+    /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
+    public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand)
+    {
+        _scene = scene;
+        _walking = walking;
+        _canStand = canStand;
+    }
+
+    /// <summary>
+    /// The moves of <paramref name="path"/> in a new list, its jumps facing the way they go where the checks allow
+    /// (see the class). New stances get ids from <paramref name="nextId"/> on.
+    /// </summary>
+    /// <param name="path">The path, its moves in order, each starting where the one before ends.</param>
+    /// <param name="nextId">The first id free for new stances; on return, the next one still free.</param>
+    /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>: never used.</param>
+    /// <param name="uncut">Jumps (takeoff id, landing id) the repair gave back because a move made from them did not animate, or <c>null</c>: faced again turning by hops only.</param>
+    /// <param name="unfaced">Jumps (takeoff id, landing id) whose hops did not animate either, or <c>null</c>: left as searched.</param>
+    /// <param name="placeGoal">
+    /// Places the path's goal again facing a yaw (radians about +Y) for a last jump landing off its way (at the
+    /// request's own point, within its tolerance), or returns <c>null</c>; <c>null</c> when the goal must stay (a
+    /// roadmap node given): the path then turns in place into it.
+    /// </param>
+    /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is linked as it is.</param>
+    public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, RoadmapNode?>? placeGoal, Func<bool> stop)
+    {
+        _nextId = nextId;
+        var result = new List<Move>(path.Count + 4);
+        if (path.Count == 0)
+        {
+            return result;
+        }
+
+        RoadmapNode current = path[0].From;
+        for (int i = 0; i < path.Count; i++)
+        {
+            Move move = path[i];
+            _hops = !_walking || (move is Jump given && Given(given, uncut));
+            if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
+            {
+                current = landed;
+                continue;
+            }
+
+            current = Continue(move, current, result, rejected);
+        }
+
+        if (current.Id != path[^1].To.Id && !ReferenceEquals(current, _placedGoal))
+        {
+            // Only reached when the last landing was turned, not the goal placed again: turn back into the goal's stance (checked when placed).
+            result.AddRange(Link(current, path[^1].To, rejected, Cut(path[^1]))!);
+        }
+
+        nextId = _nextId;
+        return result;
+    }
+
+    /// <summary>Whether <paramref name="jump"/> travels far enough across to need facing.</summary>
+    private static bool Far(Jump jump)
+    {
+        Vector3 across = jump.Arc.End - jump.Arc.Start;
+        return new Vector2(across.X, across.Z).Length() >= MinDistance;
+    }
+
+    /// <summary>Whether the repair gave <paramref name="jump"/> (or the jump it was cut from) back: a move made from it did not animate.</summary>
+    private static bool Given(Jump jump, IReadOnlySet<(int From, int To)>? uncut) =>
+        uncut is { Count: > 0 } && (uncut.Contains((jump.From.Id, jump.To.Id)) || jump.CutFrom.Any(uncut.Contains));
+
+    /// <summary>The jumps a move replacing <paramref name="move"/> stands in for: its own cut, or the jump itself.</summary>
+    private static IReadOnlyList<(int From, int To)> Cut(Move move) =>
+        move.CutFrom.Count > 0 ? move.CutFrom : move is Jump ? [(move.From.Id, move.To.Id)] : [];
+
+    /// <summary>
+    /// Appends <paramref name="move"/> to <paramref name="result"/>, started from <paramref name="current"/> (where the
+    /// path stands, which differs from the move's start only after a turned landing): steered again from there when
+    /// it can be, else after a turn back into its own start. Returns where the path then stands.
+    /// </summary>
+    private RoadmapNode Continue(Move move, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected)
+    {
+        if (current.Id == move.From.Id)
+        {
+            result.Add(move);
+            return move.To;
+        }
+
+        IReadOnlyList<(int From, int To)> cut = Cut(result[^1]);
+        if (Restart(move, current, rejected) is Move restarted)
+        {
+            result.Add(restarted with { CutFrom = [.. cut.Union(move.CutFrom)], HoppedFrom = move.HoppedFrom });
+            return move.To;
+        }
+
+        // Checked when the turned landing was placed.
+        result.AddRange(Link(current, move.From, rejected, cut)!);
+        result.Add(move);
+        return move.To;
+    }
+
+    /// <summary><paramref name="move"/> steered again from <paramref name="from"/> to its own end, or <c>null</c>.</summary>
+    private Move? Restart(Move move, RoadmapNode from, IReadOnlySet<(int From, int To)>? rejected)
+    {
+        if (rejected?.Contains((from.Id, move.To.Id)) == true)
+        {
+            return null;
+        }
+
+        if (move is Walk walk)
+        {
+            return walk.Via.Count == 0 && !_hops && _scene.Walking.Steer(from, walk.To).Walk is Walk steered ? steered : null;
+        }
+
+        SteeringResult r = _scene.Steering.Steer(from.Pose, from.Cone, move.To.Pose, move.To.Cone);
+        return r.Succeeded ? new Jump(from, move.To, r.Arc) : null;
+    }
+
+    /// <summary>
+    /// Appends <paramref name="jump"/> facing its way, started from <paramref name="current"/>, with the turns into and
+    /// out of it, and returns its landing; <c>null</c> (and <paramref name="result"/> unchanged) when no faced jump
+    /// passes the checks.
+    /// </summary>
+    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, RoadmapNode?>? placeGoal)
+    {
+        Vector3 across = jump.Arc.End - jump.Arc.Start;
+        float facing = MathF.Atan2(across.X, across.Z);
+        bool turnOff = Off(current, facing) > TakeoffTurn;
+        bool turnOn = Off(jump.To, facing) > LandingTurn;
+        if (!turnOff && !turnOn)
+        {
+            return null;
+        }
+
+        IReadOnlyList<(int From, int To)> cut = Cut(jump);
+
+        // The landing: turned when it must be, and only if the path can turn back into the old one from it.
+        RoadmapNode landing = jump.To;
+        RoadmapNode? goal = turnOn ? placeGoal?.Invoke(facing) : null;
+        if (goal is not null)
+        {
+            landing = goal;
+        }
+        else if (turnOn && Placed(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut) is not null) is RoadmapNode placed)
+        {
+            landing = placed;
+        }
+
+        // The takeoff: where the path stands when that faces the jump, else a new stance where the old one stands
+        // (or a little ahead, for a hop) that the path can turn into.
+        RoadmapNode takeoff = current;
+        if (turnOff && Placed(jump.From, facing, 1f, node => Link(current, node, rejected, cut) is not null) is RoadmapNode turned)
+        {
+            takeoff = turned;
+        }
+
+        if (Same(takeoff, current) && Same(landing, jump.To))
+        {
+            return null;
+        }
+
+        // Steer the faced jump, the new landing dropped if need be, then the new takeoff.
+        Jump? faced = null;
+        foreach ((RoadmapNode up, RoadmapNode down) in Pairs(takeoff, landing, current, jump.To))
+        {
+            if (rejected?.Contains((up.Id, down.Id)) != true &&
+                _scene.Steering.Steer(up.Pose, up.Cone, down.Pose, down.Cone) is { Succeeded: true } r)
+            {
+                faced = new Jump(up, down, r.Arc) with { CutFrom = cut };
+                break;
+            }
+        }
+
+        if (faced is null || (Same(faced.From, current) && Same(faced.To, jump.To)))
+        {
+            return null;
+        }
+
+        // Into the takeoff: the walk before steered to it, else a turn in place.
+        if (!Same(faced.From, current))
+        {
+            if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
+                rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
+                _scene.Walking.Steer(before.From, faced.From).Walk is Walk steered)
+            {
+                result[^1] = steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom };
+            }
+            else if (Link(current, faced.From, rejected, cut) is { } turn)
+            {
+                result.AddRange(turn);
+            }
+            else
+            {
+                return null;
+            }
+        }
+
+        // The turn out of a new landing comes with whatever follows (Continue, or the path's end), unless it is the goal.
+        _placedGoal = ReferenceEquals(faced.To, goal) ? goal : null;
+        result.Add(faced);
+        return faced.To;
+    }
+
+    /// <summary>The pairs of takeoff and landing tried, most turned first, none twice.</summary>
+    private static IEnumerable<(RoadmapNode Up, RoadmapNode Down)> Pairs(RoadmapNode takeoff, RoadmapNode landing, RoadmapNode oldTakeoff, RoadmapNode oldLanding)
+    {
+        yield return (takeoff, landing);
+        if (!Same(landing, oldLanding))
+        {
+            yield return (takeoff, oldLanding);
+        }
+
+        if (!Same(takeoff, oldTakeoff) && !Same(landing, oldLanding))
+        {
+            yield return (oldTakeoff, landing);
+        }
+    }
+
+    /// <summary>
+    /// A stance facing <paramref name="facing"/> placed where <paramref name="old"/> stands, or
+    /// <see cref="HopShift"/> from there along the facing (times <paramref name="side"/>: ahead for a takeoff, behind
+    /// for a landing) for a hop to turn by, that passes <paramref name="linked"/>: walkers try the spot first, others
+    /// the shifted one; <c>null</c> when neither passes.
+    /// </summary>
+    private RoadmapNode? Placed(RoadmapNode old, float facing, float side, Func<RoadmapNode, bool> linked)
+    {
+        Vector3 centre = Roadmap.CentreOf(old);
+        Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
+        foreach (Vector3 point in _hops ? [centre + ahead, centre] : (Vector3[])[centre, centre + ahead])
+        {
+            EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, Yaws, _canStand);
+            if (placed.Pose is { } pose)
+            {
+                var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
+                if (linked(node))
+                {
+                    return node;
+                }
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>How far (metres) from a stance a stance turned by a hop is placed, along the jump: a hop in place needs some ground to cover to stay long enough in the air.</summary>
+    public const float HopShift = 0.15f;
+
+    /// <summary>The shortest flight (seconds) of a hop in place: time for the limbs to leave and land again.</summary>
+    public const float MinHopFlight = 0.2f;
+
+    /// <summary>
+    /// The moves turning in place from <paramref name="from"/> to <paramref name="to"/> (two stances at nearly the
+    /// same spot): a turn walk for a walking request where the ground is walked, else a hop in place; <c>null</c>
+    /// when neither passes its checks.
+    /// </summary>
+    private List<Move>? Link(RoadmapNode from, RoadmapNode to, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
+    {
+        if (from.Id == to.Id)
+        {
+            return [];
+        }
+
+        if (rejected?.Contains((from.Id, to.Id)) == true)
+        {
+            return null;
+        }
+
+        if (!_hops && _scene.Walking.Turn(from, to, MaxTurnShift) is Walk turn)
+        {
+            return [turn with { CutFrom = cut }];
+        }
+
+        SteeringResult hop = _scene.Steering.SteerSteep(from.Pose, from.Cone, to.Pose, to.Cone);
+        return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }] : null;
+    }
+
+    /// <summary>Whether two stances are the same one (a goal placed again keeps its id, not its pose).</summary>
+    private static bool Same(RoadmapNode a, RoadmapNode b) => a.Id == b.Id && a.Pose == b.Pose;
+
+    /// <summary>The angle (radians, 0 to π) between a stance's heading and the yaw <paramref name="facing"/>.</summary>
+    private static float Off(RoadmapNode node, float facing)
+    {
+        Vector3 f = node.Pose.Forward;
+        float yaw = MathF.Atan2(f.X, f.Z);
+        float d = MathF.Abs(yaw - facing) % (2f * MathF.PI);
+        return d > MathF.PI ? (2f * MathF.PI) - d : d;
+    }
+}

@@ -1,0 +1,139 @@
+using System.Numerics;
+using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Runtime;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Query;
+
+/// <summary>
+/// Jumps made facing the way they go (<see cref="QuerySettings.FaceJumps"/>): roadmap stances face whichever way they
+/// were sampled; the query turns a jump's takeoff and landing to face it, the character turning in place (a turn walk
+/// for a walker, a hop for the frog), every new stance and move checked like the roadmap's.
+/// </summary>
+public sealed class JumpFacingTests
+{
+    /// <summary>The desert request of the tightening tests, and one across the pond.</summary>
+    private static readonly Lazy<Case> Desert = new(() => Make("desert", "skeleton", -9.5f, -7.5f, 9.5f, 7.5f, Locomotion.WalkAndJump));
+
+    private static readonly Lazy<Case> Pond = new(() => Make("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f, Locomotion.Jump));
+
+    private sealed record Case(PlanningScene Scene, Vector3 From, Vector3 To, Roadmap Roadmap, JumpAnimator Real);
+
+    private static Case Make(string level, string character, float x0, float z0, float x1, float z1, Locomotion locomotion)
+    {
+        PlanningScene scene = SharedLevels.Scene(level, character);
+        Vector3 from = LevelPoints.Highest(scene.Bvh, x0, z0);
+        Vector3 to = LevelPoints.Highest(scene.Bvh, x1, z1);
+        var real = new JumpAnimator(scene, CharacterPresets.Model(character));
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 1, MaxNodes = 300, Threads = 2, Start = from, Goal = to, Locomotion = locomotion, CanStand = real.CanStand }).Roadmap;
+        return new Case(scene, from, to, roadmap, real);
+    }
+
+    /// <summary>Degrees between a stance's heading and a jump's direction across.</summary>
+    private static float Off(RoadmapNode stance, Jump jump)
+    {
+        Vector3 f = stance.Pose.Forward;
+        Vector3 d = jump.Arc.End - jump.Arc.Start;
+        var a = Vector2.Normalize(new Vector2(f.X, f.Z));
+        var b = Vector2.Normalize(new Vector2(d.X, d.Z));
+        return MathF.Acos(Math.Clamp(Vector2.Dot(a, b), -1f, 1f)) * 180f / MathF.PI;
+    }
+
+    private static bool Far(Jump jump) => new Vector2(jump.Arc.End.X - jump.Arc.Start.X, jump.Arc.End.Z - jump.Arc.Start.Z).Length() >= AnimatorEye.FacingDistance;
+
+    /// <summary>The worst heading off a jump's direction at takeoff and at landing, over the jumps of a metre or more.</summary>
+    private static (float Takeoff, float Landing) Worst(PlanResult plan)
+    {
+        Jump[] far = [.. plan.Jumps.Where(Far)];
+        return far.Length == 0 ? (0f, 0f) : (far.Max(j => Off(j.From, j)), far.Max(j => Off(j.To, j)));
+    }
+
+    [TestCase("desert")]
+    [TestCase("pond")]
+    public void EveryJumpOfAMetreOrMoreLeavesAndLandsFacingItsWay(string level)
+    {
+        Case c = level == "desert" ? Desert.Value : Pond.Value;
+        var settings = new QuerySettings { CanStand = c.Real.CanStand, Locomotion = level == "desert" ? Locomotion.WalkAndJump : Locomotion.Jump };
+        PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { FaceJumps = false });
+        PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings);
+        Assert.That(searched.Status, Is.EqualTo(PlannerStatus.Exact), searched.Reason);
+        Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
+        (float offBefore, float onBefore) = Worst(searched);
+        (float off, float on) = Worst(faced);
+        TestContext.Out.WriteLine($"{level}: takeoff {offBefore:0}° → {off:0}°, landing {onBefore:0}° → {on:0}°; {searched.Moves.Count} → {faced.Moves.Count} moves");
+        Assert.Multiple(() =>
+        {
+            Assert.That(MathF.Max(offBefore / AnimatorEye.TakeoffFacing, onBefore / AnimatorEye.LandingFacing), Is.GreaterThan(1f), "the searched path has a jump not facing its way (else this test shows nothing)");
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(faced.Jumps.Where(Far), Is.Not.Empty);
+
+            // The path is continuous from the request's own start to its own goal stance.
+            Assert.That(faced.Moves[0].From, Is.EqualTo(faced.Start));
+            Assert.That(faced.Moves[^1].To, Is.EqualTo(faced.Goal));
+            Assert.That(faced.Goal, Is.EqualTo(searched.Goal));
+            for (int i = 1; i < faced.Moves.Count; i++)
+            {
+                Assert.That(faced.Moves[i].From, Is.EqualTo(faced.Moves[i - 1].To), $"move {i} starts where move {i - 1} ends");
+            }
+
+            // Every new move records the jump it stands in for, so that the repair can give that jump back.
+            int n = c.Roadmap.Nodes.Count;
+            Assert.That(faced.Moves.Where(m => m.From.Id >= n + 2 || m.To.Id >= n + 2).Select(m => m.CutFrom.Count), Has.All.Positive, "moves to and from new stances carry the jump they were made from");
+            if (level == "pond")
+            {
+                Assert.That(faced.Walks, Is.Empty, "a frog turns by hopping");
+            }
+        });
+
+        // The independent checker: arcs land where reported, velocities in their cones and under the limits, walks on the ground.
+        AuditReport audit = PlanAudit.Check($"{level} faced", c.Scene, c.From, c.To, faced, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+
+        // Deterministic.
+        PlanResult again = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings);
+        Assert.That(again.Moves.Select(m => (m.From.Id, m.To.Id, m.From.Pose, m.To.Pose)), Is.EqualTo(faced.Moves.Select(m => (m.From.Id, m.To.Id, m.From.Pose, m.To.Pose))));
+    }
+
+    [Test]
+    public void AJumpGivenBackByTheRepairIsFacedAgainTurningByHops()
+    {
+        // A turn walk the gait cannot perform makes the repair give its jump back (UncutJumps); that jump is then
+        // turned by hops, which the jump animator performs, and still faces its way.
+        Case c = Desert.Value;
+        var settings = new QuerySettings { CanStand = c.Real.CanStand };
+        PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings);
+        HashSet<(int From, int To)> walked = [.. faced.Walks.Where(w => w.Length < JumpFacer.MaxTurnShift + 0.1f).SelectMany(w => w.CutFrom)];
+        Assume.That(walked, Is.Not.Empty, "the desert path turns by walking somewhere");
+        PlanResult again = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { UncutJumps = walked });
+        Assert.That(again.Status, Is.EqualTo(PlannerStatus.Exact), again.Reason);
+        (float off, float on) = Worst(again);
+        Assert.Multiple(() =>
+        {
+            Assert.That(again.Walks.Where(w => w.CutFrom.Any(walked.Contains)), Is.Empty, "no walk stands in for a jump given back");
+            Assert.That(again.Jumps.Count(j => j.CutFrom.Any(walked.Contains)), Is.GreaterThan(walked.Count), "each given-back jump turns by hops");
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing));
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing));
+        });
+        AuditReport audit = PlanAudit.Check("desert hops", c.Scene, c.From, c.To, again, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    [Test]
+    public void AFacedMoveTheBodyCannotPerformGivesTheJumpBackAsSearched()
+    {
+        Case c = Pond.Value;
+        var animator = new RefusingAnimator(new SimpleMoveAnimator(c.Real), m => m.CutFrom.Count > 0, "cannot turn here");
+        AnimatedPlan plan = new AnimatedPlanner(c.Scene, animator).Plan(c.Roadmap, c.From, c.To, new QuerySettings { Locomotion = Locomotion.Jump }, rounds: 1);
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(plan.Result.Moves.SelectMany(m => m.CutFrom), Is.Empty, "every turn given back");
+            Assert.That(animator.PathsRefused, Is.InRange(1, JumpRepair.CutRounds));
+        });
+    }
+}
