@@ -28,7 +28,8 @@ namespace Ballistic.Planner.Query;
 /// (<see cref="QuerySettings.UncutJumps"/>), as it does for a cut jump; such a jump is faced again turning by hops
 /// only (a turn walk the gait could not perform is the usual cause), and after <see cref="JumpRepair.CutRounds"/>
 /// rounds with such failures no jump is turned. The path still starts and ends on the
-/// request's start and goal stances. New stances get ids from a counter in the order they are placed:
+/// request's start and goal stances, or on stances placed again at the request's points facing the first and last
+/// jumps. New stances get ids from a counter in the order they are placed:
 /// deterministic for the same path.
 /// </remarks>
 internal sealed class JumpFacer
@@ -56,7 +57,7 @@ internal sealed class JumpFacer
     private readonly Func<PoseEvaluation, bool>? _canStand;
     private int _nextId;
 
-    /// <summary>Whether the jump being faced turns by hops only: the request does not walk, or the repair gave it back once (its turn walks did not animate).</summary>
+    /// <summary>Whether the jump being faced (or the last one, for the moves after it) turns by hops only: the request does not walk, or the repair gave it back once (its turn walks did not animate).</summary>
     private bool _hops;
     private RoadmapNode? _placedGoal;
 
@@ -80,13 +81,14 @@ internal sealed class JumpFacer
     /// <param name="rejected">Moves (from id, to id) set aside, or <c>null</c>: never used.</param>
     /// <param name="uncut">Jumps (takeoff id, landing id) the repair gave back because a move made from them did not animate, or <c>null</c>: faced again turning by hops only.</param>
     /// <param name="unfaced">Jumps (takeoff id, landing id) whose hops did not animate either, or <c>null</c>: left as searched.</param>
+    /// <param name="placeStart">As <paramref name="placeGoal"/>, for the path's start and a first jump taking off off its way.</param>
     /// <param name="placeGoal">
     /// Places the path's goal again facing a yaw (radians about +Y) for a last jump landing off its way (at the
     /// request's own point, within its tolerance), or returns <c>null</c>; <c>null</c> when the goal must stay (a
     /// roadmap node given): the path then turns in place into it.
     /// </param>
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is linked as it is.</param>
-    public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, RoadmapNode?>? placeGoal, Func<bool> stop)
+    public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, RoadmapNode?>? placeStart, Func<float, RoadmapNode?>? placeGoal, Func<bool> stop)
     {
         _nextId = nextId;
         var result = new List<Move>(path.Count + 4);
@@ -99,8 +101,13 @@ internal sealed class JumpFacer
         for (int i = 0; i < path.Count; i++)
         {
             Move move = path[i];
-            _hops = !_walking || (move is Jump given && Given(given, uncut));
-            if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
+            if (move is Jump given)
+            {
+                // Kept for the moves after it: the turn out of its landing is made the same way.
+                _hops = !_walking || Given(given, uncut);
+            }
+
+            if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == 0 ? placeStart : null, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
             {
                 current = landed;
                 continue;
@@ -182,7 +189,7 @@ internal sealed class JumpFacer
     /// out of it, and returns its landing; <c>null</c> (and <paramref name="result"/> unchanged) when no faced jump
     /// passes the checks.
     /// </summary>
-    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, RoadmapNode?>? placeGoal)
+    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, RoadmapNode?>? placeStart, Func<float, RoadmapNode?>? placeGoal)
     {
         Vector3 across = jump.Arc.End - jump.Arc.Start;
         float facing = MathF.Atan2(across.X, across.Z);
@@ -210,7 +217,12 @@ internal sealed class JumpFacer
         // The takeoff: where the path stands when that faces the jump, else a new stance where the old one stands
         // (or a little ahead, for a hop) that the path can turn into.
         RoadmapNode takeoff = current;
-        if (turnOff && Placed(jump.From, facing, 1f, node => Link(current, node, rejected, cut) is not null) is RoadmapNode turned)
+        RoadmapNode? start = turnOff ? placeStart?.Invoke(facing) : null;
+        if (start is not null)
+        {
+            takeoff = start;
+        }
+        else if (turnOff && Placed(jump.From, facing, 1f, node => Link(current, node, rejected, cut) is not null) is RoadmapNode turned)
         {
             takeoff = turned;
         }
@@ -238,7 +250,7 @@ internal sealed class JumpFacer
         }
 
         // Into the takeoff: the walk before steered to it, else a turn in place.
-        if (!Same(faced.From, current))
+        if (!Same(faced.From, current) && !ReferenceEquals(faced.From, start))
         {
             if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
                 rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
@@ -289,7 +301,7 @@ internal sealed class JumpFacer
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
         foreach (Vector3 point in _hops ? [centre + ahead, centre] : (Vector3[])[centre, centre + ahead])
         {
-            EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, Yaws, _canStand);
+            EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, Yaws, _canStand, Height(old));
             if (placed.Pose is { } pose)
             {
                 var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
@@ -302,6 +314,9 @@ internal sealed class JumpFacer
 
         return null;
     }
+
+    /// <summary>The trunk's height (metres) above the contacts' centre of <paramref name="node"/>: a stance replacing it stands as high (a cave's ceiling, a doorway).</summary>
+    internal static float Height(RoadmapNode node) => node.Pose.Position.Y - Roadmap.CentreOf(node).Y;
 
     /// <summary>How far (metres) from a stance a stance turned by a hop is placed, along the jump: a hop in place needs some ground to cover to stay long enough in the air.</summary>
     public const float HopShift = 0.15f;

@@ -121,6 +121,7 @@ public sealed class PathQuery
         }
 
         EndpointPlacement startPlacement = Locate(from, settings, out RoadmapNode? reused);
+        bool startReused = reused is not null;
         if (startPlacement.Pose is not { } startPose)
         {
             return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
@@ -141,8 +142,9 @@ public sealed class PathQuery
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         _goalPoint = reused is null ? to : null;
+        _startPoint = startReused ? null : from;
         PlanResult result = Connect(start, goal, settings, rejected, termination, clock);
-        return result with { StartPlacement = startPlacement, GoalPlacement = result.GoalPlacement ?? goalPlacement };
+        return result with { StartPlacement = result.StartPlacement ?? startPlacement, GoalPlacement = result.GoalPlacement ?? goalPlacement };
     }
 
     /// <summary>
@@ -178,6 +180,7 @@ public sealed class PathQuery
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         _goalPoint = reused is null ? to : null;
+        _startPoint = null;
         PlanResult result = Connect(from, goal, settings, rejected, termination, clock);
         return result with { GoalPlacement = result.GoalPlacement ?? goalPlacement };
     }
@@ -206,6 +209,7 @@ public sealed class PathQuery
             : from.Pose == goal.Pose ? from
             : goal.Id == n + 1 ? goal : goal with { Id = n + 1 };
         _goalPoint = null;
+        _startPoint = null;
         return Connect(from, to, settings, rejected, termination, clock);
     }
 
@@ -364,6 +368,7 @@ public sealed class PathQuery
         }
 
         int nextId = n + 2;
+        EndpointPlacement? startPlacement = null;
         EndpointPlacement? goalPlacement = null;
         if (path is not null && _walking)
         {
@@ -387,14 +392,14 @@ public sealed class PathQuery
 
             if (settings.FaceJumps)
             {
-                path = Face(path, walking: true, ref nextId, goal, settings, rejected, termination, clock, out goalPlacement);
+                path = Face(path, walking: true, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement);
             }
 
             path = JoinWalks(path, _scene.Walking);
         }
         else if (path is not null && settings.FaceJumps)
         {
-            path = Face(path, walking: false, ref nextId, goal, settings, rejected, termination, clock, out goalPlacement);
+            path = Face(path, walking: false, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement);
         }
 
         if (goalPlacement is not null && path is { Count: > 0 })
@@ -402,44 +407,59 @@ public sealed class PathQuery
             goal = path[^1].To; // placed again facing the last jump (same requested point and tolerance)
         }
 
+        if (startPlacement is not null && path is { Count: > 0 })
+        {
+            start = path[0].From; // placed again facing the first jump
+        }
+
         string moves = _walking ? "moves (jumps or walks)" : "jumps";
         string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { GoalPlacement = goalPlacement };
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
         return result with { Expansions = expansions };
     }
 
     /// <summary>
-    /// The path's jumps turned to face their way (<see cref="JumpFacer"/>). A goal this request placed at a point
-    /// (not a roadmap node it was given or preferred; the bake's node of that very placement included) may be placed
-    /// again at that point, within the same tolerance, facing the last jump, as id n + 1: <paramref name="goalPlacement"/>
-    /// is then that placement, otherwise <c>null</c>.
+    /// The path's jumps turned to face their way (<see cref="JumpFacer"/>). A start (goal) this request placed at a
+    /// point (not a stance it was given or a roadmap node preferred; the bake's node of that very placement included)
+    /// may be placed again at that point, within the same tolerance, facing the first (last) jump, as id n (n + 1):
+    /// <paramref name="startPlacement"/> (<paramref name="goalPlacement"/>) is then that placement, otherwise <c>null</c>.
     /// </summary>
-    private List<Move> Face(List<Move> path, bool walking, ref int nextId, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out EndpointPlacement? goalPlacement)
+    private List<Move> Face(List<Move> path, bool walking, ref int nextId, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out EndpointPlacement? startPlacement, out EndpointPlacement? goalPlacement)
     {
-        EndpointPlacement? placed = null;
-        RoadmapNode? newGoal = null;
-        Func<float, RoadmapNode?>? placeGoal = null;
         int n = _roadmap.Nodes.Count;
-        if (_goalPoint is Vector3 point && (goal.Id == n + 1 || goal.Id < n))
-        {
-            placeGoal = facing =>
-            {
-                EndpointPlacement p = _scene.Sampler.PlaceFacingWithin(point, settings.Tolerance, facing, JumpFacer.Yaws, settings.CanStand);
-                if (p.Pose is not { } pose)
-                {
-                    return null;
-                }
-
-                placed = p;
-                return newGoal = new RoadmapNode(n + 1, pose.Pose, pose.Cone, pose.Contacts);
-            };
-        }
-
-        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, placeGoal, () => Stopped(termination, clock, null, null) is not null);
-        goalPlacement = faced.Count > 0 && ReferenceEquals(faced[^1].To, newGoal) ? placed : null;
+        var startEnd = new PlacedEnd(this, _startPoint is Vector3 from && start.Id <= n ? from : null, start, n, settings);
+        var goalEnd = new PlacedEnd(this, _goalPoint is Vector3 to && (goal.Id == n + 1 || goal.Id < n) ? to : null, goal, n + 1, settings);
+        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
+        startPlacement = faced.Count > 0 ? startEnd.PlacementOf(faced[0].From) : null;
+        goalPlacement = faced.Count > 0 ? goalEnd.PlacementOf(faced[^1].To) : null;
         return faced;
+    }
+
+    /// <summary>A start or goal that may be placed again at its requested point, facing a jump (<see cref="Face"/>).</summary>
+    private sealed class PlacedEnd(PathQuery query, Vector3? point, RoadmapNode old, int id, QuerySettings settings)
+    {
+        private EndpointPlacement? _placed;
+        private RoadmapNode? _node;
+
+        /// <summary>Places the end again facing the yaw (radians about +Y), or <c>null</c> (none placed, or it must stay: then <see cref="Place"/> itself is <c>null</c>).</summary>
+        public Func<float, RoadmapNode?>? Place => point is Vector3 p ? facing => PlaceAt(p, facing) : null;
+
+        /// <summary>The placement of <paramref name="node"/> when it is the end placed again, otherwise <c>null</c>.</summary>
+        public EndpointPlacement? PlacementOf(RoadmapNode node) => _node is not null && ReferenceEquals(node, _node) ? _placed : null;
+
+        private RoadmapNode? PlaceAt(Vector3 p, float facing)
+        {
+            EndpointPlacement placed = query._scene.Sampler.PlaceFacingWithin(p, settings.Tolerance, facing, JumpFacer.Yaws, settings.CanStand, JumpFacer.Height(old));
+            if (placed.Pose is not { } pose)
+            {
+                return null;
+            }
+
+            _placed = placed;
+            return _node = new RoadmapNode(id, pose.Pose, pose.Cone, pose.Contacts);
+        }
     }
 
     /// <summary>
@@ -876,6 +896,9 @@ public sealed class PathQuery
 
     /// <summary>The requested goal point of the request being planned, when its goal was placed there (not a roadmap node given or preferred).</summary>
     private Vector3? _goalPoint;
+
+    /// <summary>The requested start point of the request being planned, when its start was placed there (not a stance given or a roadmap node preferred).</summary>
+    private Vector3? _startPoint;
 
     /// <summary>The failure to return when <paramref name="termination"/> says to stop now, otherwise <c>null</c>.</summary>
     private static PlanResult? Stopped(TerminationCondition? termination, Stopwatch clock, RoadmapNode? start, RoadmapNode? goal) =>

@@ -161,17 +161,32 @@ public sealed class TrunkSampler
     /// <summary>
     /// As <see cref="PlaceFacing"/>, but only the yaws <paramref name="facing"/> plus each of
     /// <paramref name="yawOffsets"/> (radians, tried in order) are tried: a stance that must face within a bound of a
-    /// heading (a jump's takeoff) is never placed facing elsewhere.
+    /// heading (a jump's takeoff) is never placed facing elsewhere. With <paramref name="height"/> (metres of the
+    /// trunk above the surface: the stance it replaces stands that high, under a ceiling or in a cave, say), the trunk
+    /// is tried at that height first, then at the stance range's lifts up to it, highest first; without it, at all
+    /// the range's lifts, highest first.
     /// </summary>
-    internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand)
+    internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand, float? height = null)
     {
         if (!float.IsFinite(facing))
         {
             throw new ArgumentException($"The yaw {facing} is not finite.", nameof(facing));
         }
 
-        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets);
+        float[]? lifts = null;
+        if (height is float h)
+        {
+            // The stance replaced's own height first (even below the range: a crouch a sample repaired into place),
+            // then no taller than it (a taller trunk may hit what the old one cleared), the highest first.
+            float own = _lift.Max > _lift.Min ? (h - _lift.Min) / (_lift.Max - _lift.Min) : 0f;
+            lifts = [own, .. UprightLifts.Where(l => _lift.Lerp(l) <= h + LiftSlack).OrderByDescending(l => l)];
+        }
+
+        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts);
     }
+
+    /// <summary>How much higher (metres) than the height asked a lift of <see cref="PlaceFacingWithin"/> may stand.</summary>
+    private const float LiftSlack = 0.03f;
 
     /// <summary>Yaw offsets of <see cref="PlaceFacing"/>: 0, +45°, −45°, +90°, … (eighths of a turn).</summary>
     private static readonly float[] EighthTurns = [.. Enumerable.Range(0, 8).Select(y => (y % 2 == 1 ? (y + 1) / 2 : -(y / 2)) * MathF.PI / 4f)];
@@ -179,7 +194,7 @@ public sealed class TrunkSampler
     /// <summary>Yaws of <see cref="Place(Vector3, EndpointTolerance, Func{PoseEvaluation, bool}?)"/>: eighths of a turn from 0.</summary>
     private static readonly float[] AllYaws = [.. Enumerable.Range(0, 8).Select(y => y * MathF.PI / 4f)];
 
-    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null)
+    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null, float[]? liftOrder = null)
     {
         float[] yaws = facing is null ? AllYaws : yawOffsets ?? EighthTurns;
         tolerance.Validate();
@@ -217,7 +232,7 @@ public sealed class TrunkSampler
                     {
                         // From the facing yaw: 0, +1, −1, +2, −2, … eighths of a turn (or the offsets asked for).
                         float yaw = (facing ?? 0f) + offset;
-                        float[] lifts = facing is null ? PlacementLifts : UprightLifts;
+                        float[] lifts = liftOrder ?? (facing is null ? PlacementLifts : UprightLifts);
                         foreach (float lift in beyond ? lifts.AsSpan(0, 1) : lifts)
                         {
                             PoseEvaluation? pose = TryPose(hit.Triangle, hit.Point, yaw, _lift.Lerp(lift));

@@ -37,20 +37,26 @@ public sealed class JumpAgentLogicTests
                 }
             });
 
-            Assert.That(signals.Select(s => s.GetType().Name), Is.EqualTo(new[]
-            {
-                nameof(PathChangedSignal), nameof(JumpStartedSignal), nameof(LandedSignal), nameof(JumpStartedSignal), nameof(LandedSignal),
-                nameof(TargetReachedSignal), nameof(NavigationFinishedSignal),
-            }), string.Join("; ", signals));
+            // The searched trip has two jumps; the path flown may differ (jumps turned to face their way, a hop to turn,
+            // or another route once a move the body could not perform was set aside): one or more jumps, each landed.
+            int jumps = signals.Count(s => s is JumpStartedSignal);
+            Assert.That(jumps, Is.GreaterThanOrEqualTo(1));
+            Assert.That(signals.Select(s => s.GetType().Name), Is.EqualTo(new[] { nameof(PathChangedSignal) }
+                .Concat(Enumerable.Repeat(new[] { nameof(JumpStartedSignal), nameof(LandedSignal) }, jumps).SelectMany(x => x))
+                .Concat([nameof(TargetReachedSignal), nameof(NavigationFinishedSignal)])), string.Join("; ", signals));
             Assert.That(signals.Zip(signals.Skip(1)).All(p => p.First.Time <= p.Second.Time + 1e-9), Is.True, "signal times never go back");
             Assert.That(airborne, Is.GreaterThan(10));
 
             var takeoffs = signals.OfType<JumpStartedSignal>().ToList();
             var landings = signals.OfType<LandedSignal>().ToList();
             Assert.That(Vector3.Distance(takeoffs[0].From, RuntimeWorlds.Point(from)), Is.LessThan(1e-4f), "the first takeoff is where the agent stood");
-            Assert.That(Vector3.Distance(takeoffs[1].From, landings[0].Position), Is.LessThan(1e-4f), "the second takeoff is where the first jump landed");
-            Assert.That(Vector3.Distance(landings[1].Position, RuntimeWorlds.Point(to)), Is.LessThan(1e-4f), "the last landing is the target node");
-            for (int i = 0; i < 2; i++)
+            for (int i = 1; i < jumps; i++)
+            {
+                Assert.That(Vector3.Distance(takeoffs[i].From, landings[i - 1].Position), Is.LessThan(1e-4f), $"takeoff {i + 1} is where jump {i} landed");
+            }
+
+            Assert.That(Vector3.Distance(landings[^1].Position, RuntimeWorlds.Point(to)), Is.LessThan(1e-4f), "the last landing is the target node");
+            for (int i = 0; i < jumps; i++)
             {
                 JumpStartedSignal s = takeoffs[i];
                 Vector3 end = s.From + (s.Velocity * s.FlightTime) + (0.5f * s.FlightTime * s.FlightTime * Gravity);

@@ -120,9 +120,12 @@ public sealed class EndpointPlacementTests
             Assert.That(plan.StartPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
             Assert.That(plan.GoalPlacement!.UpDown, Is.LessThanOrEqualTo(0.25f));
 
-            // Facing the last jump may place the goal again: at the same point, within the same tolerance, said so.
+            // Facing the first and last jumps may place the start and goal again: at the same points, within the same
+            // tolerance, said so.
             Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
-            Assert.That(faced.Start!.Id, Is.EqualTo(bake.StartNode));
+            Assert.That(faced.Start, Is.SameAs(faced.Moves[0].From));
+            Assert.That(faced.StartPlacement!.Pose!.Pose, Is.EqualTo(faced.Start!.Pose), "the placement reported is the start's");
+            Assert.That(faced.StartPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
             Assert.That(faced.Goal, Is.SameAs(faced.Moves[^1].To));
             Assert.That(faced.GoalPlacement!.Across, Is.LessThanOrEqualTo(0.5f));
             Assert.That(faced.GoalPlacement!.UpDown, Is.LessThanOrEqualTo(0.25f));
