@@ -61,6 +61,9 @@ internal sealed class JumpFacer
     private bool _hops;
     private RoadmapNode? _placedGoal;
 
+    /// <summary>The last turned landing and the moves turning from it back into the stance it replaced, found when it was placed.</summary>
+    private (RoadmapNode From, List<Move> Moves)? _turnBack;
+
     /// <summary>Creates the facer of one request's path.</summary>
     /// <param name="scene">The level and character.</param>
     /// <param name="walking">Whether the request walks (turns are walked) or only jumps (turns are hopped).</param>
@@ -119,7 +122,7 @@ internal sealed class JumpFacer
         if (current.Id != path[^1].To.Id && !ReferenceEquals(current, _placedGoal))
         {
             // Only reached when the last landing was turned, not the goal placed again: turn back into the goal's stance (checked when placed).
-            result.AddRange(Link(current, path[^1].To, rejected, Cut(path[^1]))!);
+            result.AddRange(TurnBack(current, path[^1].To, rejected, Cut(path[^1])));
         }
 
         nextId = _nextId;
@@ -161,8 +164,7 @@ internal sealed class JumpFacer
             return move.To;
         }
 
-        // Checked when the turned landing was placed.
-        result.AddRange(Link(current, move.From, rejected, cut)!);
+        result.AddRange(TurnBack(current, move.From, rejected, cut));
         result.Add(move);
         return move.To;
     }
@@ -209,7 +211,8 @@ internal sealed class JumpFacer
         {
             landing = goal;
         }
-        else if (turnOn && Placed(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut) is not null) is RoadmapNode placed)
+        List<Move>? turnBack = null;
+        if (goal is null && turnOn && Placed(jump.To, facing, -1f, node => (turnBack = Link(node, jump.To, rejected, cut)) is not null) is RoadmapNode placed)
         {
             landing = placed;
         }
@@ -218,11 +221,12 @@ internal sealed class JumpFacer
         // (or a little ahead, for a hop) that the path can turn into.
         RoadmapNode takeoff = current;
         RoadmapNode? start = turnOff ? placeStart?.Invoke(facing) : null;
+        List<Move>? turnIn = null;
         if (start is not null)
         {
             takeoff = start;
         }
-        else if (turnOff && Placed(jump.From, facing, 1f, node => Link(current, node, rejected, cut) is not null) is RoadmapNode turned)
+        else if (turnOff && Placed(jump.From, facing, 1f, node => (turnIn = Link(current, node, rejected, cut)) is not null) is RoadmapNode turned)
         {
             takeoff = turned;
         }
@@ -258,18 +262,16 @@ internal sealed class JumpFacer
             {
                 result[^1] = steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom };
             }
-            else if (Link(current, faced.From, rejected, cut) is { } turn)
-            {
-                result.AddRange(turn);
-            }
             else
             {
-                return null;
+                // Checked when the takeoff was placed.
+                result.AddRange(turnIn!);
             }
         }
 
         // The turn out of a new landing comes with whatever follows (Continue, or the path's end), unless it is the goal.
         _placedGoal = ReferenceEquals(faced.To, goal) ? goal : null;
+        _turnBack = ReferenceEquals(faced.To, landing) && turnBack is not null ? (landing, turnBack) : null;
         result.Add(faced);
         return faced.To;
     }
@@ -349,6 +351,13 @@ internal sealed class JumpFacer
         SteeringResult hop = _scene.Steering.SteerSteep(from.Pose, from.Cone, to.Pose, to.Cone);
         return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }] : null;
     }
+
+    /// <summary>
+    /// The moves turning from the turned landing <paramref name="from"/> back into the stance <paramref name="to"/> it
+    /// replaced: those found when it was placed (it was only placed when they passed their checks).
+    /// </summary>
+    private List<Move> TurnBack(RoadmapNode from, RoadmapNode to, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut) =>
+        _turnBack is { } back && ReferenceEquals(back.From, from) ? back.Moves : Link(from, to, rejected, cut)!;
 
     /// <summary>Whether two stances are the same one (a goal placed again keeps its id, not its pose).</summary>
     private static bool Same(RoadmapNode a, RoadmapNode b) => a.Id == b.Id && a.Pose == b.Pose;
