@@ -241,19 +241,10 @@ public static class CharacterSpecFile
         int Bone(string bone, string where) => IndexOf(bone) is int i && i >= 0 ? i : throw Error(where, $"'{bone}' is not a bone of {file}.");
 
         // Bones on limb chains move by default; the spec may give any bone its own axes.
-        var chainBones = new HashSet<int>();
         foreach (LimbSpec limb in spec.Limbs)
         {
-            int effector = IndexOf(limb.EffectorBone) is int e && e >= 0 ? e : throw Error($"limb '{limb.Name}'", $"names the effector bone '{limb.EffectorBone}', which is not a bone of {file}.");
-            int root = IndexOf(limb.RootBone) is int r && r >= 0 ? r : throw Error($"limb '{limb.Name}'", $"names the root bone '{limb.RootBone}', which is not a bone of {file}.");
-            for (int j = effector; j >= 0; j = skeleton.Parents[j])
-            {
-                chainBones.Add(j);
-                if (j == root)
-                {
-                    break;
-                }
-            }
+            _ = IndexOf(limb.EffectorBone) is int e && e >= 0 ? e : throw Error($"limb '{limb.Name}'", $"names the effector bone '{limb.EffectorBone}', which is not a bone of {file}.");
+            _ = IndexOf(limb.RootBone) is int r && r >= 0 ? r : throw Error($"limb '{limb.Name}'", $"names the root bone '{limb.RootBone}', which is not a bone of {file}.");
         }
 
         foreach (string bone in spec.Joints.Keys)
@@ -266,12 +257,14 @@ public static class CharacterSpecFile
             Bone(bone, $"boneRadii, bone '{bone}'");
         }
 
+        // Limb bones the spec gives no axes: hips, hinges and ball joints derived from the rest pose (LimbJointAxes).
+        Joint[] bare = [.. names.Select((n, j) => new Joint(n, skeleton.Parents[j], skeleton.Offsets[j], skeleton.RestRotations[j], []))];
+        Dictionary<int, JointAxis[]> derivedAxes = LimbJointAxes.Derive(bare, [.. spec.Limbs.Select(l => (l.Kind, IndexOf(l.RootBone), IndexOf(l.EffectorBone)))]);
         var joints = new List<Joint>();
-        JointAxis[] ball = [new JointAxis(Vector3.UnitX, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitY, Radians(-90f), Radians(90f)), new JointAxis(Vector3.UnitZ, Radians(-90f), Radians(90f))];
         for (int j = 0; j < names.Length; j++)
         {
-            JointAxis[] axesOf = spec.Joints.TryGetValue(names[j], out JointAxis[]? given) ? given : chainBones.Contains(j) && j != 0 ? ball : [];
-            joints.Add(new Joint(names[j], skeleton.Parents[j], skeleton.Offsets[j], skeleton.RestRotations[j], axesOf));
+            JointAxis[] axesOf = spec.Joints.TryGetValue(names[j], out JointAxis[]? given) ? given : derivedAxes.TryGetValue(j, out JointAxis[]? derived) ? derived : [];
+            joints.Add(bare[j] with { Axes = axesOf });
         }
 
         // Radii: the spec's, else from the skinned vertices, else the spec's boneRadius or the default.
@@ -360,7 +353,12 @@ public static class CharacterSpecFile
         }
 
         var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis)) { DerivedRadii = derivedRadii, BodyBones = bodyBones };
-        CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, PoseFrom(rig, spec, "contact", specPath), PoseFrom(rig, spec, "flexion", specPath), PoseFrom(rig, spec, "extending", specPath)) { Source = source });
+        // Flight poses the spec does not give are derived from the limbs' workspaces, not left in the bind pose.
+        float[] contact = PoseFrom(rig, spec, "contact", specPath);
+        (float[] tucked, float[] stretched) = spec.Poses.ContainsKey("flexion") && spec.Poses.ContainsKey("extending") ? (contact, contact) : FlightPoses.Derive(rig, rigLimbs, contact);
+        float[] flexion = spec.Poses.ContainsKey("flexion") ? PoseFrom(rig, spec, "flexion", specPath) : tucked;
+        float[] extending = spec.Poses.ContainsKey("extending") ? PoseFrom(rig, spec, "extending", specPath) : stretched;
+        CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, contact, flexion, extending) { Source = source });
         ReducedCharacter reduced = Named(() => ReducedModelBuilder.Derive(
             model,
             spec.RequiredContacts ?? Math.Min(2, rigLimbs.Count),

@@ -112,7 +112,8 @@ public sealed class CharacterSpecFileTests
     [Test]
     public void ARiggedCharacterAnimatesGivenOnlyItsLimbs()
     {
-        // Only limbs and speeds: no joint axes, no poses, no radii. Limb bones become ball joints, poses the rest pose.
+        // Only limbs and speeds: no joint axes, no poses, no radii. Hips and ankles become ball joints, knees hinges;
+        // the contact pose is the rest pose, the flight poses are derived.
         string spec = Path.Combine(_folder, "minimal.limbs.json");
         File.WriteAllText(spec, """
         {"schema":"ballistic.character/1","name":"borrowed","requiredContacts":2,"takeoffSpeedMax":8,"landingSpeedMax":12,"friction":0.5,
@@ -122,7 +123,7 @@ public sealed class CharacterSpecFileTests
            "right_foot":{"rootBone":"right_hip","effectorBone":"right_ankle","effectorOffset":[0,-0.06,0.04],"contactNormal":[0,-1,0],"contact":"foot","normalFilter":{"direction":[0,1,0],"minCosine":0.3}}}}
         """);
         (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "skeleton.glb"), spec);
-        Assert.That(model.Rig.DofCount, Is.EqualTo(2 * 3 * 3), "hip, knee and ankle of each leg as ball joints");
+        Assert.That(model.Rig.DofCount, Is.EqualTo(2 * (3 + 1 + 3)), "hip and ankle of each leg as ball joints, the knee a hinge");
 
         var scene = PlanningScene.Create(GapCourse.Build(), reduced);
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 300, Start = GapCourse.From, Goal = GapCourse.To, StopWhenConnected = true, Threads = 2 });
