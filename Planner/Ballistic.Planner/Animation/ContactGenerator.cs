@@ -19,6 +19,9 @@ public sealed class ContactGenerator
 {
     private const int CandidatesPerLimb = 6;
 
+    /// <summary>Most (radians, 50°) the effector joint of a rig loaded from a file turns from its contact pose to hold a contact.</summary>
+    private const float MaxEffectorFold = 50f * MathF.PI / 180f;
+
     /// <summary>Only the samples closest to the contact pose are tried as contacts: the comfortable ones.</summary>
     private const int DatabaseScan = 400;
 
@@ -101,14 +104,7 @@ public sealed class ContactGenerator
                     continue;
                 }
 
-                Array.Copy(q, trial, q.Length);
-                int start = _databases[l].Nearest(Vector3.Transform(surface.Point - root.Position, Quaternion.Conjugate(root.Rotation)));
-                if (start >= 0)
-                {
-                    _databases[l].Apply(start, trial);
-                }
-
-                if (TrySolve(root, trial, Model.Limbs[l], surface.Point, surface.Normal, positions, rotations))
+                if (SolveFromPoseOrNearest(root, q, trial, l, surface.Point, surface.Normal, positions, rotations))
                 {
                     Array.Copy(trial, q, q.Length);
                     contacts.Add(new LimbContact(l, surface.Point, surface.Normal, c.Mu));
@@ -268,7 +264,7 @@ public sealed class ContactGenerator
         rig.Solve(root, q, positions, rotations);
         Vector3 limbRoot = positions[limb.RootJoint];
 
-        // First the database: samples nearest the contact pose whose contact point lies within 6 cm of an acceptable
+        // Then the database: samples nearest the contact pose whose contact point lies within 6 cm of an acceptable
         // surface, started from that very sample; then the surface points nearest the reference effector position.
         LimbSampleDatabase database = _databases[l];
         Aabb surfaceNear = surfaceBounds.Inflate(0.06f); // samples farther from every acceptable surface cannot touch one
@@ -283,6 +279,19 @@ public sealed class ContactGenerator
             {
                 Triangle tri = _scene.Level.Triangles[t];
                 slabHalf = MathF.Max(slabHalf, 0.06f + MathF.Max(MathF.Abs(Vector3.Dot(tri.A - slabCentre, slabAxis)), MathF.Max(MathF.Abs(Vector3.Dot(tri.B - slabCentre, slabAxis)), MathF.Abs(Vector3.Dot(tri.C - slabCentre, slabAxis)))));
+            }
+        }
+
+        // The surface point nearest the reference effector position, from the contact pose itself: the limb as the
+        // rig holds it, bending the way it bends there.
+        if (candidates.Count > 0 && Vector3.Distance(candidates[0].Point, limbRoot) <= _reach[l])
+        {
+            Array.Copy(q, trial, q.Length);
+            if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, positions, rotations))
+            {
+                Array.Copy(trial, q, q.Length);
+                contact = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
+                return true;
             }
         }
 
@@ -334,15 +343,7 @@ public sealed class ContactGenerator
             }
 
             tried++;
-            Array.Copy(q, trial, q.Length);
-            Vector3 local = Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation));
-            int start = database.Nearest(local);
-            if (start >= 0)
-            {
-                database.Apply(start, trial);
-            }
-
-            if (TrySolve(root, trial, limb, point, normal, positions, rotations))
+            if (SolveFromPoseOrNearest(root, q, trial, l, point, normal, positions, rotations))
             {
                 Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, point, normal, mu);
@@ -384,6 +385,30 @@ public sealed class ContactGenerator
         return best;
     }
 
+    /// <summary>
+    /// IK of limb <paramref name="l"/> to a surface point into <paramref name="trial"/>: first from the limb's angles in
+    /// <paramref name="q"/> (the contact pose: the knee bending the way it does there, the foot under its hip), then
+    /// from the database sample whose effector lies nearest the point (another branch of the limb's solutions).
+    /// </summary>
+    private bool SolveFromPoseOrNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
+    {
+        Array.Copy(q, trial, q.Length);
+        if (TrySolve(root, trial, Model.Limbs[l], point, normal, positions, rotations))
+        {
+            return true;
+        }
+
+        Array.Copy(q, trial, q.Length);
+        int start = _databases[l].Nearest(Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation)));
+        if (start < 0)
+        {
+            return false;
+        }
+
+        _databases[l].Apply(start, trial);
+        return TrySolve(root, trial, Model.Limbs[l], point, normal, positions, rotations);
+    }
+
     /// <summary>IK to a surface point with the contact face against the surface, then the bone check.</summary>
     private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
     {
@@ -391,6 +416,19 @@ public sealed class ContactGenerator
         if (!result.Success)
         {
             return false;
+        }
+
+        // A user's skinned mesh blends the sole with the bone above the effector: an ankle or wrist folded far from its
+        // contact pose presses the sole's skin into the ground (linear blend skinning). Another candidate, then.
+        if (Model.Source is not null)
+        {
+            Rig rig = Model.Rig;
+            int effector = limb.EffectorJoint;
+            float fold = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, trial), rig.LocalRotation(effector, Model.ContactPose)))));
+            if (fold > MaxEffectorFold)
+            {
+                return false;
+            }
         }
 
         Model.Rig.Solve(root, trial, positions, rotations);

@@ -13,7 +13,8 @@ namespace Ballistic.Planner.Animation;
 /// the level, no trunk bone in it), free limbs fold toward the <c>flexion</c> pose with the depth where they stay clear;
 /// where the legs cannot fold that far straight down, the body sinks leaning back or forward along its heading, or
 /// pitching (a frog sinks onto its hind legs, its front held up).
-/// Where a contact cannot be held the dip stops at the last depth that held. Timings scale with the leg's pendulum time
+/// Where a contact cannot be held, or (for a rig loaded from a file) an ankle or wrist holding one would fold more than
+/// 20° from its contact pose, the dip stops at the last depth that held. Timings scale with the leg's pendulum time
 /// √(L/g) and the jump's speed. Each call works on buffers of its own; the IK solver is shared, as the animator's is.
 /// </summary>
 internal sealed class StanceDip
@@ -26,6 +27,12 @@ internal sealed class StanceDip
 
     /// <summary>Least time (seconds) on the ground between a landing and the next takeoff.</summary>
     public const float MinGroundTime = 0.2f;
+
+    /// <summary>
+    /// Most (radians, 20°) a held effector joint of a rig loaded from a file turns from its contact pose as the body
+    /// sinks: its skin is blended with the bone above, and folding further presses the sole's skin into the ground.
+    /// </summary>
+    private const float MaxEffectorFold = 20f * MathF.PI / 180f;
 
     /// <summary>Depth samples solved from the contact pose down to the deepest dip.</summary>
     private const int Samples = 12;
@@ -177,6 +184,21 @@ internal sealed class StanceDip
                 {
                     stop ??= $"{limb.Name} cannot hold its contact {depth * 100f:0.0} cm down";
                     break;
+                }
+            }
+
+            if (stop is null && _model.Source is not null)
+            {
+                // A user's skinned mesh blends the sole with the bone above the effector: an ankle or wrist folding
+                // far beyond its contact pose pulls the sole's blended skin into the ground (linear blend skinning).
+                foreach (LimbContact c in config.Contacts)
+                {
+                    int effector = _model.Limbs[c.Limb].EffectorJoint;
+                    float turn = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, next), rig.LocalRotation(effector, config.Angles)))));
+                    if (turn > MaxEffectorFold)
+                    {
+                        stop ??= $"{_model.Limbs[c.Limb].Name} would fold its '{rig.Joints[effector].Name}' more than {MaxEffectorFold * 180f / MathF.PI:0}° {depth * 100f:0.0} cm down";
+                    }
                 }
             }
 
