@@ -103,7 +103,7 @@ internal static class CliCommands
         Option<int> maxNodes = new("--max-nodes") { Description = "When baking: the most nodes before giving up on connecting start and goal.", DefaultValueFactory = _ => 400 };
         Option<double?> timeLimit = TimeLimitOption();
         Option<string> report = new("--report") { Description = "JSON report to write (schema ballistic.plan/2).", Required = true };
-        Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile." };
+        Option<string?> svg = new("--svg") { Description = "SVG picture to write: top view and side profile (with --animate, also NAME-phases.svg: the longest jump in five poses)." };
         Option<bool> animate = new("--animate") { Description = "Animate the whole body along the path and write an animated GLB." };
         Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
         Option<string> tolerance = new("--goal-tolerance") { Description = "How close (metres) the first and last stances' contacts must come to --from and --to: ACROSS[,UPDOWN], horizontally and vertically.", DefaultValueFactory = _ => "0.5,0.25" };

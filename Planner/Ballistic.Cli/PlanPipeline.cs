@@ -112,9 +112,15 @@ internal sealed class PlanPipeline
         }
 
         PlanReportWriter.Save(report, reportPath);
+        string? phasesPath = null;
         if (svgPath is not null)
         {
             SvgPlanRenderer.Save(report, roadmap, svgPath);
+            if (Animation is { } animated)
+            {
+                string stem = svgPath.EndsWith(".svg", StringComparison.OrdinalIgnoreCase) ? svgPath[..^4] : svgPath;
+                phasesPath = PhaseStripRenderer.Save(animated, stem + "-phases.svg") ? stem + "-phases.svg" : null;
+            }
         }
 
         PlanResult r = report.Result;
@@ -145,6 +151,6 @@ internal sealed class PlanPipeline
         }
 
         output.WriteLine("timings: " + string.Join(", ", report.Timings.Select(t => $"{t.Key} {t.Value * 1000:0.#} ms")));
-        output.WriteLine($"report: {reportPath}" + (svgPath is null ? "" : $"; picture: {svgPath}"));
+        output.WriteLine($"report: {reportPath}" + (svgPath is null ? "" : $"; picture: {svgPath}") + (phasesPath is null ? "" : $"; phases of its longest jump: {phasesPath}"));
     }
 }

@@ -37,6 +37,9 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <summary>Contact phases are stepped this many times finer than the frame rate, so that held contacts do not slide between frames.</summary>
     private const int ContactSubsteps = 4;
 
+    /// <summary>Earliest and latest share of the flight at which its apex pose is keyed.</summary>
+    private const float ApexKeyShare = 0.3f;
+
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
     private readonly BodyCollision _collision;
@@ -511,7 +514,7 @@ public sealed class JumpAnimator : IJumpAnimator
         var rotations = new Quaternion[rig.Joints.Count];
 
         // Apex: the extending pose, each limb kept out of the level.
-        int apex = Math.Clamp((int)MathF.Round(arc.ApexTime / h), 1, steps - 1);
+        int apex = Math.Clamp((int)MathF.Round(ApexKeyTime(arc) / h), 1, steps - 1);
         RootPose apexRoot = arc.PoseAt(Time(apex));
         float[] apexAngles = (float[])Model.ExtendingPose.Clone();
         for (int l = 0; l < limbs; l++)
@@ -690,6 +693,14 @@ public sealed class JumpAnimator : IJumpAnimator
 
         return new Clip(result, takeoff, landing, [.. breaks.Select(b => Time(b))], [.. makes.Select(m => Time(m))], colliding, problems);
     }
+
+    /// <summary>
+    /// When (seconds after takeoff) the flight's apex pose is keyed: at the top of the arc, kept within the middle of the
+    /// flight (0.3 of it from either end) so that a jump rising to its landing or falling from its takeoff still has
+    /// time to reach that pose and leave it.
+    /// </summary>
+    public static float ApexKeyTime(BallisticArc arc) =>
+        Math.Clamp(arc.ApexTime, ApexKeyShare * arc.FlightTime, (1f - ApexKeyShare) * arc.FlightTime);
 
     /// <summary>
     /// The stance at <paramref name="root"/> between a landing and the next takeoff: each limb whose contact (or

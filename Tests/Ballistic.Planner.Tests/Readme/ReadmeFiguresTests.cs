@@ -40,6 +40,12 @@ public sealed partial class ReadmeFiguresTests
             double seconds = double.Parse(clip.Groups["seconds"].Value, CultureInfo.InvariantCulture);
             string frames = string.Create(CultureInfo.InvariantCulture, $"demo's {seconds:0.0} s are {Math.Ceiling(seconds * 24):0} frames at Blender's 24 fps");
             Assert.That(Readme.ReplaceLineEndings(" ").Replace("  ", " ", StringComparison.Ordinal), Does.Contain(frames), "the README's clip length");
+
+            // The README's phase picture is the demo's, as the demo draws it now.
+            string phases = Path.Combine(folder, "desert-skeleton-phases.svg");
+            Assert.That(File.Exists(phases), Is.True, "the demo draws its longest jump's phases");
+            Assert.That(File.ReadAllText(Path.Combine(RepositoryFiles.Root, "docs", "jump-phases.svg")), Is.EqualTo(File.ReadAllText(phases)), "docs/jump-phases.svg is not the demo's phase picture: copy out/desert-skeleton-phases.svg there");
+            Assert.That(Readme, Does.Contain("![The demo's longest jump in five poses](docs/jump-phases.svg)"), "the README shows the phase picture");
         }
         finally
         {

@@ -3,6 +3,8 @@ using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using SharpGLTF.Schema2;
@@ -42,6 +44,24 @@ internal sealed class AnimatorEye
     /// <summary>Farthest (metres) a held foot's lowest skinned vertex may be from the surface, above or below.</summary>
     public const float SoleTolerance = 0.015f;
 
+    /// <summary>Flights at least this long (seconds) must show a flight pose at their apex.</summary>
+    public const float FlightPoseTime = 0.4f;
+
+    /// <summary>Least average angle (degrees) of the limbs' joints from their rest rotations at the apex.</summary>
+    public const float ApexFromRest = 10f;
+
+    /// <summary>Least average angle (degrees) the limbs' joints turn between takeoff and the apex.</summary>
+    public const float ApexFromTakeoff = 5f;
+
+    /// <summary>Farthest (metres) a left foot may be right of its right partner in the trunk's frame.</summary>
+    public const float CrossTolerance = 0.05f;
+
+    /// <summary>Farthest (metres) an animated foothold at a move boundary may lie from the stance contact the plan reports.</summary>
+    public const float FootholdTolerance = 0.25f;
+
+    /// <summary>Farthest a foot may move sideways of its own hip from where the contact pose holds it, in leg lengths.</summary>
+    public const float SidewaysShare = 0.35f;
+
     private const float Step = 1f / 120f;
 
     private readonly GltfAnimation _clip;
@@ -51,9 +71,20 @@ internal sealed class AnimatorEye
     private readonly Quaternion _restTrunk;
     private readonly Vector3 _restForward;
 
-    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, Dictionary<string, int[]> feet)
+    private readonly Node[][] _limbJoints;
+    private readonly Vector3 _restLeft;
+    private readonly FootPair[] _pairs;
+    private readonly (string Name, Node Hip, Node Ankle, float RestSideways)[] _legs;
+    private readonly (string Name, Node Effector, float Offset)[] _effectors;
+
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors)
     {
+        _effectors = effectors;
         _clip = clip;
+        _limbJoints = limbJoints;
+        _restLeft = restLeft;
+        _pairs = pairs;
+        _legs = legs;
         _vertices = vertices;
         _feet = feet;
         _trunk = trunk;
@@ -129,8 +160,43 @@ internal sealed class AnimatorEye
             feet[limb.Name] = [.. Enumerable.Range(0, vertices.Count).Where(v => Below(owner[v], effector))];
         }
 
-        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], feet);
+        // Limb joints (the chain from each limb's root bone to its effector bone), and the feet in pairs: each side's
+        // feet ordered from front to back in the rest pose, left (the rig's own left of its trunk) with right.
+        Node[][] limbJoints = [.. model.Limbs.Select(l => l.Chain.Select(j => Named(rig.Joints[j].Name)).ToArray())];
+        Vector3 left = Vector3.Cross(up, forward);
+        Vector3 trunkRest = trunk.WorldMatrix.Translation;
+
+        // Where the spec's contact pose holds each foot sideways of its hip (model frame: +X is the left).
+        var contact = new Vector3[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, new Quaternion[rig.Joints.Count]);
+        var legs = new List<(string, Node, Node, float)>();
+        var sides = new List<(string Name, float Forward)>[2];
+        sides[0] = [];
+        sides[1] = [];
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            Node hip = Named(rig.Joints[limb.RootJoint].Name);
+            Node ankle = Named(rig.Joints[limb.EffectorJoint].Name);
+            legs.Add((limb.Name, hip, ankle, (contact[limb.EffectorJoint] - contact[limb.RootJoint]).X));
+            Vector3 fromTrunk = hip.WorldMatrix.Translation - trunkRest;
+            float side = Vector3.Dot(fromTrunk, left);
+            if (MathF.Abs(side) > 1e-3f)
+            {
+                sides[side > 0f ? 0 : 1].Add((limb.Name, Vector3.Dot(fromTrunk, forward)));
+            }
+        }
+
+        string[] lefts = [.. sides[0].OrderByDescending(s => s.Forward).Select(s => s.Name)];
+        string[] rights = [.. sides[1].OrderByDescending(s => s.Forward).Select(s => s.Name)];
+        FootPair[] pairs = [.. Enumerable.Range(0, Math.Min(lefts.Length, rights.Length)).Select(i => new FootPair(
+            lefts[i], Named(rig.Joints[model.Limbs.First(l => l.Name == lefts[i]).EffectorJoint].Name),
+            rights[i], Named(rig.Joints[model.Limbs.First(l => l.Name == rights[i]).EffectorJoint].Name)))];
+        (string, Node, float)[] effectors = [.. model.Limbs.Select(l => (l.Name, Named(rig.Joints[l.EffectorJoint].Name), l.EffectorOffset.Length()))];
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], feet, limbJoints, left, pairs, [.. legs], effectors);
     }
+
+    /// <summary>A left foot and its right partner (their effector bones).</summary>
+    private sealed record FootPair(string Left, Node LeftAnkle, string Right, Node RightAnkle);
 
     /// <summary>A vertex of a skinned mesh: its bind position and up to four (joint, inverse bind matrix, weight).</summary>
     private sealed record SkinnedVertex(Vector3 Bind, (Node Joint, Matrix4x4 InverseBind, float Weight)[] Influences);
@@ -183,6 +249,15 @@ internal sealed class AnimatorEye
         return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
     }
 
+    /// <summary>The trunk's left on the ground plane at <paramref name="time"/> (unit; zero when it lies flat).</summary>
+    public Vector3 LeftAt(float time)
+    {
+        Quaternion now = Rotation(_trunk.GetWorldMatrix(_clip, time));
+        Vector3 l = Vector3.Transform(_restLeft, now * Quaternion.Conjugate(_restTrunk));
+        l.Y = 0f;
+        return l.LengthSquared() > 1e-8f ? Vector3.Normalize(l) : Vector3.Zero;
+    }
+
     /// <summary>
     /// Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria, and the feet's
     /// skinned soles in every contact phase against <paramref name="level"/>'s surface under each held point.
@@ -191,6 +266,8 @@ internal sealed class AnimatorEye
     {
         var look = new Look();
         MeasureSoles(animation, level, look);
+        MeasureLegs(animation, look);
+        MeasureFootholds(animation, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
         {
             var arc = animation.Arcs[j];
@@ -208,6 +285,27 @@ internal sealed class AnimatorEye
                 float off = Degrees(HeadingAt(takeoff), across);
                 float on = Degrees(HeadingAt(landing), across);
                 look.Facing.Add(MathF.Max(off / TakeoffFacing, on / LandingFacing), $"{jump} takes off {off:0}° and lands {on:0}° off its direction");
+            }
+
+            // Flight pose: at the flight's key pose (its apex, kept within the middle of the flight as the animator
+            // keys it) the limbs' joints away from their rest rotations, and turned since takeoff.
+            if (arc.FlightTime >= FlightPoseTime)
+            {
+                float apex = takeoff + JumpAnimator.ApexKeyTime(arc);
+                float fromRest = 0f;
+                float fromTakeoff = 0f;
+                int count = 0;
+                foreach (Node joint in _limbJoints.SelectMany(j => j))
+                {
+                    Quaternion now = joint.GetLocalTransform(_clip, apex).Rotation;
+                    fromRest += Between(now, joint.LocalTransform.Rotation);
+                    fromTakeoff += Between(now, joint.GetLocalTransform(_clip, takeoff).Rotation);
+                    count++;
+                }
+
+                fromRest /= Math.Max(count, 1);
+                fromTakeoff /= Math.Max(count, 1);
+                look.FlightPose.Add(MathF.Min(fromRest / ApexFromRest, fromTakeoff / ApexFromTakeoff), $"{jump}'s limbs at its apex are {fromRest:0.0}° from rest and {fromTakeoff:0.0}° from takeoff on average");
             }
 
             // Crouch: the trunk's lowest point in the window before takeoff, below its height at takeoff; rising into it.
@@ -266,6 +364,7 @@ internal sealed class AnimatorEye
 
             Vector3 n = hit.Normal.Y < 0f ? -hit.Normal : hit.Normal;
             float worst = 0f;
+            float worstTime = phase.From;
             foreach (float time in (float[])[phase.From, 0.5f * (phase.From + phase.To), phase.To])
             {
                 worlds.Clear();
@@ -275,12 +374,107 @@ internal sealed class AnimatorEye
                     lowest = MathF.Min(lowest, Vector3.Dot(VertexAt(_vertices[v], time, worlds) - hit.Point, n));
                 }
 
-                worst = MathF.Abs(lowest) > MathF.Abs(worst) ? lowest : worst;
+                if (MathF.Abs(lowest) > MathF.Abs(worst))
+                {
+                    (worst, worstTime) = (lowest, time);
+                }
             }
 
-            look.Soles.Add(SoleTolerance / MathF.Max(MathF.Abs(worst), 1e-6f), $"{limb}'s sole {(worst < 0f ? "sinks" : "floats")} {MathF.Abs(worst) * 100f:0.0} cm {(worst < 0f ? "into" : "above")} the ground at {phase.From:0.000}–{phase.To:0.000} s");
+            look.Soles.Add(SoleTolerance / MathF.Max(MathF.Abs(worst), 1e-6f), $"{limb}'s sole {(worst < 0f ? "sinks" : "floats")} {MathF.Abs(worst) * 100f:0.0} cm {(worst < 0f ? "into" : "above")} the ground at {worstTime:0.000} s (held {phase.From:0.000}–{phase.To:0.000} s)");
         }
     }
+
+    /// <summary>
+    /// Legs under the body, on the ground (every 1/30 s outside flights): in the trunk's frame no left foot more than
+    /// <see cref="CrossTolerance"/> right of its right partner, and each foot within <see cref="SidewaysShare"/> L
+    /// sideways of its own hip, counted from where the spec's contact pose holds it.
+    /// </summary>
+    private void MeasureLegs(JumpAnimation animation, Look look)
+    {
+        if (_legs.Length == 0)
+        {
+            return;
+        }
+
+        float crossWorst = float.PositiveInfinity;
+        string crossSeen = "";
+        float sideWorst = 0f;
+        string sideSeen = "";
+        for (float t = 0f; t <= animation.Duration + 1e-6f; t += 1f / 30f)
+        {
+            bool flying = false;
+            for (int j = 0; j < animation.Arcs.Count && !flying; j++)
+            {
+                float start = animation.JumpStart(j);
+                flying = t > start && t < start + animation.Arcs[j].FlightTime;
+            }
+
+            Vector3 left = LeftAt(t);
+            if (flying || left == Vector3.Zero)
+            {
+                continue;
+            }
+
+            foreach (FootPair pair in _pairs)
+            {
+                float gap = Vector3.Dot(pair.LeftAnkle.GetWorldMatrix(_clip, t).Translation - pair.RightAnkle.GetWorldMatrix(_clip, t).Translation, left);
+                if (gap < crossWorst)
+                {
+                    crossWorst = gap;
+                    crossSeen = $"{pair.Left} is {-gap * 100f:0.0} cm right of {pair.Right} at {t:0.00} s";
+                }
+            }
+
+            foreach ((string name, Node hip, Node ankle, float rest) in _legs)
+            {
+                float off = MathF.Abs(Vector3.Dot(ankle.GetWorldMatrix(_clip, t).Translation - hip.GetWorldMatrix(_clip, t).Translation, left) - rest) / Leg;
+                if (off > sideWorst)
+                {
+                    sideWorst = off;
+                    sideSeen = $"{name} is {off:0.00} L sideways of where its contact pose holds it at {t:0.00} s";
+                }
+            }
+        }
+
+        if (_pairs.Length > 0 && float.IsFinite(crossWorst))
+        {
+            look.Crossing.Add(1f + ((crossWorst + CrossTolerance) / CrossTolerance), crossWorst >= 0f ? $"the feet never cross (closest {crossWorst * 100f:0.0} cm apart, {crossSeen.Split(" at ")[^1]})" : crossSeen);
+        }
+
+        look.UnderHips.Add(SidewaysShare / MathF.Max(sideWorst, 1e-6f), sideSeen.Length > 0 ? sideSeen : "the feet stay under the hips");
+    }
+
+    /// <summary>
+    /// Footholds where the plan says: at the start and end of every move, each limb the plan's stance puts on a contact
+    /// has its effector bone within <see cref="FootholdTolerance"/> of that contact (beyond the contact point's own
+    /// offset from the bone).
+    /// </summary>
+    private void MeasureFootholds(JumpAnimation animation, Look look)
+    {
+        float worst = 0f;
+        string seen = "";
+        for (int m = 0; m < animation.Moves.Count; m++)
+        {
+            foreach ((float time, RoadmapNode stance) in new[] { (animation.MoveStart(m), animation.Moves[m].From), (animation.MoveEnd(m), animation.Moves[m].To) })
+            {
+                foreach (Contact c in stance.Contacts)
+                {
+                    (string name, Node effector, float offset) = _effectors[c.Limb];
+                    float off = MathF.Max(0f, Vector3.Distance(effector.GetWorldMatrix(_clip, time).Translation, c.Position) - offset);
+                    if (off > worst)
+                    {
+                        worst = off;
+                        seen = $"{name} is {off:0.00} m from the contact the plan reports at {time:0.00} s (move {m})";
+                    }
+                }
+            }
+        }
+
+        look.Footholds.Add(FootholdTolerance / MathF.Max(worst, 1e-6f), seen.Length > 0 ? seen : "every foothold on its reported contact");
+    }
+
+    private static float Between(Quaternion a, Quaternion b) =>
+        2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(Quaternion.Normalize(a), Quaternion.Normalize(b))), 0f, 1f)) * 180f / MathF.PI;
 
     private float Lowest(float from, float to)
     {
@@ -340,8 +534,16 @@ internal sealed class AnimatorEye
 
         public Criterion Soles { get; } = new(higherPasses: true);
 
+        public Criterion FlightPose { get; } = new(higherPasses: true);
+
+        public Criterion Crossing { get; } = new(higherPasses: true);
+
+        public Criterion UnderHips { get; } = new(higherPasses: true);
+
+        public Criterion Footholds { get; } = new(higherPasses: true);
+
         public IEnumerable<(string Name, Criterion Criterion)> All =>
-            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles)];
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds)];
 
         public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
     }

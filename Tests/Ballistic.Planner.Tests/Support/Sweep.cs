@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
+using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
@@ -43,10 +44,45 @@ internal static class Sweep
         AuditReport report = PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
         if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
         {
-            report.Look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), setup.Model).Measure(animation, scene.Bvh);
+            byte[] glb = AnimatedGlbWriter.ToBytes(animation);
+            report.Look = AnimatorEye.Read(glb, setup.Model).Measure(animation, scene.Bvh);
+            Dump(setup, name, glb, animation);
         }
 
         return report;
+    }
+
+    /// <summary>
+    /// With BALLISTIC_SWEEP_OUT set, writes each exact plan's animated GLB, its level (once per level) and its jumps'
+    /// times (takeoff, flight's key pose, landing, and the jump's direction across) there, to look at in Blender.
+    /// </summary>
+    private static void Dump(Setup setup, string name, byte[] glb, JumpAnimation animation)
+    {
+        if (Environment.GetEnvironmentVariable("BALLISTIC_SWEEP_OUT") is not { Length: > 0 } folder)
+        {
+            return;
+        }
+
+        Directory.CreateDirectory(folder);
+        string stem = Path.Combine(folder, string.Concat(name.Select(c => char.IsLetterOrDigit(c) || c is '-' or '.' ? c : '_')));
+        File.WriteAllBytes(stem + ".glb", glb);
+        string level = Path.Combine(folder, setup.LevelName + ".level.glb");
+        if (!File.Exists(level))
+        {
+            Vector3[] points = [.. setup.Scene.Level.Triangles.SelectMany(t => new[] { t.A, t.B, t.C })];
+            File.WriteAllBytes(level, GltfLevelWriter.ToBytes([new LevelMesh(setup.LevelName, points, [.. Enumerable.Range(0, points.Length)], new LevelMaterial("ground", null), new System.Numerics.Vector4(0.7f, 0.65f, 0.55f, 1f))]));
+        }
+
+        var lines = new List<string>();
+        for (int j = 0; j < animation.Arcs.Count; j++)
+        {
+            var arc = animation.Arcs[j];
+            float t = animation.JumpStart(j);
+            Vector3 d = arc.End - arc.Start;
+            lines.Add(FormattableString.Invariant($"{t} {t + JumpAnimator.ApexKeyTime(arc)} {t + arc.FlightTime} {d.X} {d.Z} {arc.Start.X} {arc.Start.Y} {arc.Start.Z}"));
+        }
+
+        File.WriteAllLines(stem + ".jumps", lines);
     }
 
     /// <summary>
