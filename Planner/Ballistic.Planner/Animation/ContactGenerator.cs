@@ -104,7 +104,7 @@ public sealed class ContactGenerator
                     continue;
                 }
 
-                if (SolveFromPoseOrNearest(root, q, trial, l, surface.Point, surface.Normal, positions, rotations))
+                if (SolveFromNearest(root, q, trial, l, surface.Point, surface.Normal, positions, rotations))
                 {
                     Array.Copy(trial, q, q.Length);
                     contacts.Add(new LimbContact(l, surface.Point, surface.Normal, c.Mu));
@@ -343,7 +343,7 @@ public sealed class ContactGenerator
             }
 
             tried++;
-            if (SolveFromPoseOrNearest(root, q, trial, l, point, normal, positions, rotations))
+            if (SolveFromNearest(root, q, trial, l, point, normal, positions, rotations))
             {
                 Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, point, normal, mu);
@@ -386,18 +386,11 @@ public sealed class ContactGenerator
     }
 
     /// <summary>
-    /// IK of limb <paramref name="l"/> to a surface point into <paramref name="trial"/>: first from the limb's angles in
-    /// <paramref name="q"/> (the contact pose: the knee bending the way it does there, the foot under its hip), then
-    /// from the database sample whose effector lies nearest the point (another branch of the limb's solutions).
+    /// IK of limb <paramref name="l"/> to a surface point into <paramref name="trial"/>, from the database sample whose
+    /// effector lies nearest the point (the configuration <paramref name="q"/> otherwise).
     /// </summary>
-    private bool SolveFromPoseOrNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
+    private bool SolveFromNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
     {
-        Array.Copy(q, trial, q.Length);
-        if (TrySolve(root, trial, Model.Limbs[l], point, normal, positions, rotations))
-        {
-            return true;
-        }
-
         Array.Copy(q, trial, q.Length);
         int start = _databases[l].Nearest(Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation)));
         if (start < 0)
