@@ -70,6 +70,7 @@ public static class PhaseStripRenderer
             }
         }
 
+        bool[] onLeftSide = LeftSide(animation.Model);
         float scale = 0.5f * Figure / extent;
         float width = Panel * phases.Length;
         var svg = new StringBuilder();
@@ -101,7 +102,7 @@ public static class PhaseStripRenderer
                 svg.Append(Invariant($"<g stroke=\"{color}\" stroke-width=\"2.2\" stroke-linecap=\"round\">"));
                 for (int j = 1; j < rig.Joints.Count; j++)
                 {
-                    bool onLeft = Side(animation.Model, j) > 0.02f;
+                    bool onLeft = onLeftSide[j];
                     if (onLeft == left)
                     {
                         Vector3 a = points[rig.Joints[j].Parent];
@@ -113,7 +114,7 @@ public static class PhaseStripRenderer
                 for (int l = 0; l < animation.Model.Limbs.Count; l++)
                 {
                     RigLimb limb = animation.Model.Limbs[l];
-                    if ((Side(animation.Model, limb.RootJoint) > 0.02f) == left)
+                    if (onLeftSide[limb.RootJoint] == left)
                     {
                         Vector3 a = points[limb.EffectorJoint];
                         svg.Append(Invariant($"<line x1=\"{X(a):0.#}\" y1=\"{Y(a.Y):0.#}\" x2=\"{X(ends[l]):0.#}\" y2=\"{Y(ends[l].Y):0.#}\"/>"));
@@ -167,13 +168,13 @@ public static class PhaseStripRenderer
         return best;
     }
 
-    /// <summary>Which side of the body joint <paramref name="joint"/> is on in the contact pose: over 0.02 on its left (+X), the trunk's bones within a centimetre of the middle about 0.01.</summary>
-    private static float Side(CharacterModel model, int joint)
+    /// <summary>For each joint, whether it lies on the character's left (+X) in the contact pose, more than a centimetre from the middle.</summary>
+    private static bool[] LeftSide(CharacterModel model)
     {
         var positions = new Vector3[model.Rig.Joints.Count];
         var rotations = new Quaternion[model.Rig.Joints.Count];
         model.Rig.Solve(new(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        return positions[joint].X - positions[0].X + 0.01f;
+        return [.. positions.Select(p => p.X - positions[0].X > 0.01f)];
     }
 
     private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
