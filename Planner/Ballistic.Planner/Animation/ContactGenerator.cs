@@ -65,10 +65,18 @@ public sealed class ContactGenerator
     /// <param name="root">The root pose, fixed.</param>
     /// <param name="estimated">The planner's estimated contacts at this pose (tried among the candidates), or empty.</param>
     /// <param name="velocity">The velocity the contacts must produce (takeoff velocity) or absorb (reversed landing velocity), m/s.</param>
-    public ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    public ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity) => Generate(root, estimated, velocity, 0f);
+
+    /// <summary>
+    /// Generates a contact pose at <paramref name="root"/> whose every contact the limb also holds, clear of the level,
+    /// with the root <paramref name="crouch"/> metres lower (world −Y): a takeoff the body can crouch on, a landing it
+    /// can absorb. For a rig loaded from a file, holding it there must not fold the effector joint more than
+    /// <see cref="StanceDip.MaxEffectorFold"/> from the contact.
+    /// </summary>
+    internal ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch)
     {
         ArgumentNullException.ThrowIfNull(estimated);
-        ContactConfiguration projected = Project(root, estimated, velocity);
+        ContactConfiguration projected = Project(root, estimated, velocity, crouch);
         if (projected.Valid || estimated.Count == 0)
         {
             return projected;
@@ -76,11 +84,11 @@ public sealed class ContactGenerator
 
         // The projected contacts' cone rejects the velocity: fall back on the planner's estimated contacts, whose
         // cone accepted it, reached by IK where the limbs can.
-        ContactConfiguration planned = OnEstimated(root, estimated, velocity);
+        ContactConfiguration planned = OnEstimated(root, estimated, velocity, crouch);
         return planned.Valid || planned.Contacts.Count > projected.Contacts.Count ? planned : projected;
     }
 
-    private ContactConfiguration OnEstimated(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    private ContactConfiguration OnEstimated(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch)
     {
         Rig rig = Model.Rig;
         float[] q = (float[])Model.ContactPose.Clone();
@@ -104,7 +112,7 @@ public sealed class ContactGenerator
                     continue;
                 }
 
-                if (SolveFromNearest(root, q, trial, l, surface.Point, surface.Normal, positions, rotations))
+                if (SolveFromNearest(root, q, trial, l, surface.Point, surface.Normal, crouch, positions, rotations))
                 {
                     Array.Copy(trial, q, q.Length);
                     contacts.Add(new LimbContact(l, surface.Point, surface.Normal, c.Mu));
@@ -121,7 +129,7 @@ public sealed class ContactGenerator
         return Finish(root, q, contacts, velocity);
     }
 
-    private ContactConfiguration Project(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity)
+    private ContactConfiguration Project(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch)
     {
         Rig rig = Model.Rig;
         float[] q = (float[])Model.ContactPose.Clone();
@@ -134,7 +142,7 @@ public sealed class ContactGenerator
         {
             RigLimb limb = Model.Limbs[l];
             Vector3 reference = limb.EffectorPosition(positions, rotations);
-            if (TryContact(root, q, l, reference, estimated, nearby, out LimbContact contact))
+            if (TryContact(root, q, l, reference, estimated, crouch, nearby, out LimbContact contact))
             {
                 contacts.Add(contact);
             }
@@ -211,7 +219,7 @@ public sealed class ContactGenerator
     }
 
     /// <summary>Tries to put limb <paramref name="l"/> on a surface point, nearest to its reference effector position first.</summary>
-    private bool TryContact(in RootPose root, float[] q, int l, Vector3 reference, IReadOnlyList<Contact> estimated, List<int> nearby, out LimbContact contact)
+    private bool TryContact(in RootPose root, float[] q, int l, Vector3 reference, IReadOnlyList<Contact> estimated, float crouch, List<int> nearby, out LimbContact contact)
     {
         contact = default;
         RigLimb limb = Model.Limbs[l];
@@ -287,7 +295,7 @@ public sealed class ContactGenerator
         if (candidates.Count > 0 && Vector3.Distance(candidates[0].Point, limbRoot) <= _reach[l])
         {
             Array.Copy(q, trial, q.Length);
-            if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, positions, rotations))
+            if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
             {
                 Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
@@ -314,7 +322,7 @@ public sealed class ContactGenerator
             tried++;
             Array.Copy(q, trial, q.Length);
             database.Apply(s, trial);
-            if (TrySolve(root, trial, limb, found.Point, found.Normal, positions, rotations))
+            if (TrySolve(root, trial, limb, found.Point, found.Normal, crouch, positions, rotations))
             {
                 Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, found.Point, found.Normal, found.Mu);
@@ -343,7 +351,7 @@ public sealed class ContactGenerator
             }
 
             tried++;
-            if (SolveFromNearest(root, q, trial, l, point, normal, positions, rotations))
+            if (SolveFromNearest(root, q, trial, l, point, normal, crouch, positions, rotations))
             {
                 Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, point, normal, mu);
@@ -389,7 +397,7 @@ public sealed class ContactGenerator
     /// IK of limb <paramref name="l"/> to a surface point into <paramref name="trial"/>, from the database sample whose
     /// effector lies nearest the point (the configuration <paramref name="q"/> otherwise).
     /// </summary>
-    private bool SolveFromNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
+    private bool SolveFromNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
         Array.Copy(q, trial, q.Length);
         int start = _databases[l].Nearest(Vector3.Transform(point - root.Position, Quaternion.Conjugate(root.Rotation)));
@@ -399,11 +407,14 @@ public sealed class ContactGenerator
         }
 
         _databases[l].Apply(start, trial);
-        return TrySolve(root, trial, Model.Limbs[l], point, normal, positions, rotations);
+        return TrySolve(root, trial, Model.Limbs[l], point, normal, crouch, positions, rotations);
     }
 
-    /// <summary>IK to a surface point with the contact face against the surface, then the bone check.</summary>
-    private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, Vector3[] positions, Quaternion[] rotations)
+    /// <summary>
+    /// IK to a surface point with the contact face against the surface, then the bone check; with
+    /// <paramref name="crouch"/> metres, the same with the root that much lower.
+    /// </summary>
+    private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
         IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: 1);
         if (!result.Success)
@@ -425,6 +436,45 @@ public sealed class ContactGenerator
         }
 
         Model.Rig.Solve(root, trial, positions, rotations);
+        if (_collision.LimbCollides(limb, positions, rotations, point))
+        {
+            return false;
+        }
+
+        return !(crouch > 0f) || HoldsCrouched(root, trial, limb, point, normal, crouch, positions, rotations);
+    }
+
+    /// <summary>
+    /// True when <paramref name="limb"/>, posed in <paramref name="q"/> on <paramref name="point"/>, holds it by IK
+    /// with the root <paramref name="crouch"/> metres lower, as <see cref="StanceDip"/> holds it (sole flat, else
+    /// rolling on its point; for a rig loaded from a file, sole flat only and without folding its effector joint more
+    /// than <see cref="StanceDip.MaxEffectorFold"/>), clear of the level.
+    /// </summary>
+    private bool HoldsCrouched(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
+    {
+        var low = new RootPose(root.Position - (crouch * Vector3.UnitY), root.Rotation);
+        float[] dipped = (float[])q.Clone();
+        if (!Ik.Solve(low, dipped, limb, point, -normal, seed: 1).Success)
+        {
+            Array.Copy(q, dipped, q.Length);
+            if (Model.Source is not null || !Ik.Solve(low, dipped, limb, point, null, seed: 1).Success)
+            {
+                return false;
+            }
+        }
+
+        if (Model.Source is not null)
+        {
+            Rig rig = Model.Rig;
+            int effector = limb.EffectorJoint;
+            float fold = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, dipped), rig.LocalRotation(effector, q)))));
+            if (fold > StanceDip.MaxEffectorFold)
+            {
+                return false;
+            }
+        }
+
+        Model.Rig.Solve(low, dipped, positions, rotations);
         return !_collision.LimbCollides(limb, positions, rotations, point);
     }
 }

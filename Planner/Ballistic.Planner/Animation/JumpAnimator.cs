@@ -109,6 +109,7 @@ public sealed class JumpAnimator : IJumpAnimator
         // walk takes off from the contact pose generated for it, which the walk ends on.
         var clips = new Clip?[moves.Count];
         var problems = new List<JumpProblem>();
+        var dips = new Dictionary<ContactConfiguration, StanceDip.Table>(ReferenceEqualityComparer.Instance);
         int failed = 0;
         for (int m = 0; m < moves.Count; m++)
         {
@@ -122,20 +123,20 @@ public sealed class JumpAnimator : IJumpAnimator
             Clip clip;
             if (m > 0 && moves[m - 1] is Walk)
             {
-                clip = AnimateJump(m, jump, _contacts.Generate(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity), frameRate);
+                clip = AnimateJump(m, jump, Pose(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity, dips), dips, frameRate);
             }
             else if (landed is { Valid: true } && landed.Cone.Contains(arc.TakeoffVelocity, 1e-3f))
             {
-                clip = AnimateJump(m, jump, landed, frameRate);
+                clip = AnimateJump(m, jump, landed, dips, frameRate);
                 if (clip.Problems.Count > 0)
                 {
-                    Clip fresh = AnimateJump(m, jump, null, frameRate);
+                    Clip fresh = AnimateJump(m, jump, null, dips, frameRate);
                     clip = fresh.Problems.Count < clip.Problems.Count ? fresh : clip;
                 }
             }
             else
             {
-                clip = AnimateJump(m, jump, null, frameRate);
+                clip = AnimateJump(m, jump, null, dips, frameRate);
             }
 
             failed += (clip.Takeoff.Valid ? 0 : 1) + (clip.Landing.Valid ? 0 : 1);
@@ -183,7 +184,7 @@ public sealed class JumpAnimator : IJumpAnimator
                 if (m + 1 < moves.Count)
                 {
                     // A jump after a walk: the body crouches on the takeoff contacts the walk ended on.
-                    float crouch = clips[m + 1] is Clip after ? Crouch(Dip(after.Takeoff, m + 1, "crouch before takeoff", problems), ((Jump)moves[m + 1]).Arc, clock, frames, 0f, frameRate) : 0f;
+                    float crouch = clips[m + 1] is Clip after ? Crouch(Dip(after.Takeoff, m + 1, ProblemStance.Takeoff, problems, dips), ((Jump)moves[m + 1]).Arc, clock, frames, 0f, frameRate) : 0f;
                     stances.Add(crouch);
                     clock += crouch;
                 }
@@ -200,7 +201,7 @@ public sealed class JumpAnimator : IJumpAnimator
                     open[c.Limb] = (c.Position, 0f);
                 }
 
-                StanceDip.Table first = Dip(clip.Takeoff, m, "crouch before takeoff", problems);
+                StanceDip.Table first = Dip(clip.Takeoff, m, ProblemStance.Takeoff, problems, dips);
                 frames.Add(new AnimationFrame(0f, first.Root, (float[])clip.Takeoff.Angles.Clone()));
                 leadIn = Crouch(first, jump.Arc, 0f, frames, 0f, frameRate);
                 clock = leadIn;
@@ -234,7 +235,7 @@ public sealed class JumpAnimator : IJumpAnimator
             colliding += clip.CollidingFrames;
             clock += jump.Arc.FlightTime;
             float landed = clock;
-            StanceDip.Table landing = Dip(clip.Landing, m, "absorb the landing", problems);
+            StanceDip.Table landing = Dip(clip.Landing, m, ProblemStance.Landing, problems, dips);
             float landingSpeed = jump.Arc.LandingVelocity.Length();
             if (m + 1 < moves.Count && clips[m + 1] is Clip following)
             {
@@ -274,7 +275,7 @@ public sealed class JumpAnimator : IJumpAnimator
                     }
 
                     clock += stance.Duration;
-                    clock += Crouch(Dip(following.Takeoff, m + 1, "crouch before takeoff", problems), next.Arc, clock, frames, StanceDip.MinGroundTime - (clock - landed), frameRate);
+                    clock += Crouch(Dip(following.Takeoff, m + 1, ProblemStance.Takeoff, problems, dips), next.Arc, clock, frames, StanceDip.MinGroundTime - (clock - landed), frameRate);
                 }
 
                 stances.Add(clock - landed);
@@ -324,17 +325,60 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <summary>
     /// The dip of <paramref name="config"/> (<see cref="StanceDip.Solve(ContactConfiguration)"/>); one shallower than
     /// <see cref="StanceDip.LeastDepthShare"/> of the leg is a problem of move <paramref name="move"/>: the body cannot
-    /// <paramref name="what"/> there, and a jump without its crouch or its landing does not read as a jump.
+    /// crouch on its takeoff stance or absorb the landing on its landing stance (<paramref name="stance"/>), and a jump
+    /// without its crouch or its landing does not read as a jump. Tables already solved in this animation are in
+    /// <paramref name="dips"/>.
     /// </summary>
-    private StanceDip.Table Dip(ContactConfiguration config, int move, string what, List<JumpProblem> problems)
+    private StanceDip.Table Dip(ContactConfiguration config, int move, ProblemStance stance, List<JumpProblem> problems, Dictionary<ContactConfiguration, StanceDip.Table> dips)
     {
-        StanceDip.Table table = _dip.Solve(config);
-        if (config.Contacts.Count > 0 && table.Depth < (StanceDip.LeastDepthShare * table.Leg) - 1e-5f)
+        StanceDip.Table table = DipOf(config, dips);
+        if (!Deep(config, table))
         {
-            problems.Add(new JumpProblem(move, $"the body cannot {what} ({table.Depth * 100f:0.0} cm of the {StanceDip.LeastDepthShare * table.Leg * 100f:0.0} cm needed: {table.Stop})"));
+            string what = stance == ProblemStance.Takeoff ? "crouch before takeoff" : "absorb the landing";
+            problems.Add(new JumpProblem(move, $"the body cannot {what} ({table.Depth * 100f:0.0} cm of the {StanceDip.LeastDepthShare * table.Leg * 100f:0.0} cm needed: {table.Stop})") { Stance = stance });
         }
 
         return table;
+    }
+
+    /// <summary>The dip table of <paramref name="config"/>, solved once per animation (<paramref name="dips"/>).</summary>
+    private StanceDip.Table DipOf(ContactConfiguration config, Dictionary<ContactConfiguration, StanceDip.Table> dips)
+    {
+        if (!dips.TryGetValue(config, out StanceDip.Table? table))
+        {
+            table = _dip.Solve(config);
+            dips[config] = table;
+        }
+
+        return table;
+    }
+
+    /// <summary>True when <paramref name="table"/> dips at least <see cref="StanceDip.LeastDepthShare"/> of the leg, or <paramref name="config"/> holds nothing.</summary>
+    private static bool Deep(ContactConfiguration config, StanceDip.Table table) =>
+        config.Contacts.Count == 0 || table.Depth >= (StanceDip.LeastDepthShare * table.Leg) - 1e-5f;
+
+    /// <summary>
+    /// The contact pose at <paramref name="root"/> for a takeoff (or a landing: <paramref name="velocity"/> reversed);
+    /// where the body cannot crouch (or absorb) on the contacts found first, contacts each limb also holds with the
+    /// root as low as the least crouch, when the body dips deeper on them.
+    /// </summary>
+    private ContactConfiguration Pose(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, Dictionary<ContactConfiguration, StanceDip.Table> dips)
+    {
+        ContactConfiguration first = _contacts.Generate(root, estimated, velocity);
+        if (!first.Valid)
+        {
+            return first;
+        }
+
+        StanceDip.Table table = DipOf(first, dips);
+        if (Deep(first, table))
+        {
+            return first;
+        }
+
+        // A little deeper than the least crouch: the dip is solved in steps, from the contact pose down.
+        ContactConfiguration lower = _contacts.Generate(root, estimated, velocity, 1.2f * StanceDip.LeastDepthShare * table.Leg);
+        return lower.Valid && DipOf(lower, dips).Depth > table.Depth ? lower : first;
     }
 
     /// <summary>
@@ -441,11 +485,11 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <summary>A stance between two jumps: frames from 0 to its duration, and each step (limb, start time, the contact it steps to).</summary>
     private sealed record Stance(float Duration, AnimationFrame[] Frames, List<(int Limb, float Start, LimbContact? Next)> Steps, List<JumpProblem> Problems);
 
-    private Clip AnimateJump(int index, Jump jump, ContactConfiguration? takeoffPose, float frameRate)
+    private Clip AnimateJump(int index, Jump jump, ContactConfiguration? takeoffPose, Dictionary<ContactConfiguration, StanceDip.Table> dips, float frameRate)
     {
         BallisticArc arc = jump.Arc;
-        ContactConfiguration takeoff = takeoffPose ?? _contacts.Generate(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity);
-        ContactConfiguration landing = _contacts.Generate(arc.Landing, jump.Landing.Contacts, -arc.LandingVelocity);
+        ContactConfiguration takeoff = takeoffPose ?? Pose(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity, dips);
+        ContactConfiguration landing = Pose(arc.Landing, jump.Landing.Contacts, -arc.LandingVelocity, dips);
         var problems = new List<JumpProblem>();
         if (!takeoff.Valid)
         {

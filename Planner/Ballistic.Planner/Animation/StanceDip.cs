@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Animation;
 /// the level, no trunk bone in it), free limbs fold toward the <c>flexion</c> pose with the depth where they stay clear;
 /// where the legs cannot fold that far straight down, the body sinks leaning back or forward along its heading, or
 /// pitching (a frog sinks onto its hind legs, its front held up).
-/// Where a contact cannot be held, or (for a rig loaded from a file) an ankle or wrist holding one would fold more than
+/// Where a contact cannot be held (for a rig loaded from a file: with its sole flat on the surface), or (for such a rig) an ankle or wrist holding one would fold more than
 /// 20° from its contact pose, the dip stops at the last depth that held. Timings scale with the leg's pendulum time
 /// √(L/g) and the jump's speed. Each call works on buffers of its own; the IK solver is shared, as the animator's is.
 /// </summary>
@@ -32,7 +32,7 @@ internal sealed class StanceDip
     /// Most (radians, 20°) a held effector joint of a rig loaded from a file turns from its contact pose as the body
     /// sinks: its skin is blended with the bone above, and folding further presses the sole's skin into the ground.
     /// </summary>
-    private const float MaxEffectorFold = 20f * MathF.PI / 180f;
+    internal const float MaxEffectorFold = 20f * MathF.PI / 180f;
 
     /// <summary>Depth samples solved from the contact pose down to the deepest dip.</summary>
     private const int Samples = 12;
@@ -179,8 +179,10 @@ internal sealed class StanceDip
             {
                 RigLimb limb = _model.Limbs[c.Limb];
                 // The sole or palm stays on the surface where it can; otherwise it rolls on its point (a heel lifting in
-                // a deep crouch, a frog's wrist), the limb still kept out of the level below.
-                if (!_ik.Solve(root, next, limb, c.Position, -c.Normal).Success && !_ik.Solve(root, next, limb, c.Position, null).Success)
+                // a deep crouch, a frog's wrist), the limb still kept out of the level below. Not a user's skinned
+                // paw: rolling on the contact point presses the blended skin of its sole into the ground (2.4 cm
+                // measured on the tailed quadruped's front paws).
+                if (!_ik.Solve(root, next, limb, c.Position, -c.Normal).Success && (_model.Source is not null || !_ik.Solve(root, next, limb, c.Position, null).Success))
                 {
                     stop ??= $"{limb.Name} cannot hold its contact {depth * 100f:0.0} cm down";
                     break;

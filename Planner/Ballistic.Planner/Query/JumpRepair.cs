@@ -14,7 +14,9 @@ namespace Ballistic.Planner.Query;
 /// a move cut from a jump (<see cref="Move.CutFrom"/>: cut down, or turned to face its way) that does not animate
 /// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned. A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
-/// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. Not thread-safe.
+/// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
+/// crouch on (or absorb a landing on) is set aside as a takeoff (a landing) for every jump, since each would have the
+/// same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it. Not thread-safe.
 /// </summary>
 public sealed class JumpRepair
 {
@@ -33,9 +35,17 @@ public sealed class JumpRepair
     private readonly HashSet<(int From, int To)> _uncut = [];
     private readonly HashSet<(int From, int To)> _unfaced = [];
     private readonly List<RejectedJump> _setAside = [];
+    private readonly HashSet<int> _noTakeoffs = [];
+    private readonly HashSet<int> _noLandings = [];
 
     /// <summary>Moves (jumps or walks: from node id, to node id) the next search must not use.</summary>
     public IReadOnlySet<(int From, int To)> Excluded => _excluded;
+
+    /// <summary>Stances (node ids) no jump of the next searches takes off from: the body could not crouch on them.</summary>
+    public IReadOnlySet<int> NoTakeoffs => _noTakeoffs;
+
+    /// <summary>Stances (node ids) no jump of the next searches lands on: the body could not absorb a landing on them.</summary>
+    public IReadOnlySet<int> NoLandings => _noLandings;
 
     /// <summary>The jumps set aside so far, in order, each with the animator's reason.</summary>
     public IReadOnlyList<RejectedJump> SetAside => _setAside;
@@ -81,7 +91,8 @@ public sealed class JumpRepair
     /// <summary>
     /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
     /// <see cref="WalksAllowed"/> is false, the jumps in <see cref="Uncut"/> kept whole, no jump cut once
-    /// <see cref="CuttingAllowed"/> is false, and the walks hopping over <see cref="HopSpots"/>.
+    /// <see cref="CuttingAllowed"/> is false, the walks hopping over <see cref="HopSpots"/>, and no jump from
+    /// <see cref="NoTakeoffs"/> or to <see cref="NoLandings"/>.
     /// </summary>
     public QuerySettings Adjust(QuerySettings settings)
     {
@@ -106,6 +117,11 @@ public sealed class JumpRepair
             settings = settings with { UnfacedJumps = _unfaced };
         }
 
+        if (_noTakeoffs.Count > 0 || _noLandings.Count > 0)
+        {
+            settings = settings with { NoTakeoffs = _noTakeoffs, NoLandings = _noLandings };
+        }
+
         return _uncut.Count == 0 ? settings : settings with { UncutJumps = _uncut };
     }
 
@@ -115,7 +131,9 @@ public sealed class JumpRepair
     /// for jumps already kept whole, leaves them unturned: <see cref="Unfaced"/>); for a
     /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
     /// <see cref="HoppingAllowed"/>, and unless a spot is already known: the hop there did not pass); for a move of a
-    /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside.
+    /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside; for a searched jump whose
+    /// every problem is its takeoff's crouch or its landing's absorption, sets that stance aside as a takeoff or a
+    /// landing instead (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>).
     /// </summary>
     /// <param name="path">The path that was animated.</param>
     /// <param name="animation">Its animation; problems index moves of <paramref name="path"/>.</param>
@@ -148,6 +166,22 @@ public sealed class JumpRepair
                 }
 
                 continue;
+            }
+
+            if (move is Jump && move.CutFrom.Count == 0 && move.HoppedFrom.Count == 0 && problems.All(p => p.Stance != ProblemStance.None))
+            {
+                bool stance = false;
+                foreach (JumpProblem p in problems)
+                {
+                    stance |= p.Stance == ProblemStance.Takeoff ? _noTakeoffs.Add(move.From.Id) : _noLandings.Add(move.To.Id);
+                }
+
+                if (stance)
+                {
+                    Record(move, problems.First().Reason);
+                    added++;
+                    continue;
+                }
             }
 
             if (move is Walk walk && HoppingAllowed && problems.All(p => p.IsLocated) && AddSpots(walk, problems))

@@ -49,6 +49,8 @@ public sealed class PathQuery
     // The costs of the current request: a jump's flight time plus this effort (0 without walking); walks when allowed.
     private float _effort;
     private bool _walking;
+    private IReadOnlySet<int>? _noTakeoffs;
+    private IReadOnlySet<int>? _noLandings;
     private JumpTightener? _tightener;
     private (int From, int To)? _lostWalk;
 
@@ -262,6 +264,8 @@ public sealed class PathQuery
 
         // The request's costs: walking allowed when asked and the character walks.
         _walking = settings.Locomotion == Locomotion.WalkAndJump && _scene.Walking.Limits.CanWalk;
+        _noTakeoffs = settings.NoTakeoffs;
+        _noLandings = settings.NoLandings;
         _effort = _walking ? settings.JumpEffort : 0f;
         float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
 
@@ -579,7 +583,8 @@ public sealed class PathQuery
 
         void Relax(int node, int next, float candidate, int edge, int kind, ref Heuristic h)
         {
-            if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true)
+            if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true
+                && (kind == FromWalk || (kind == FromExtra && _extra[edge].Walk is not null) || (_noTakeoffs?.Contains(node) != true && _noLandings?.Contains(next) != true)))
             {
                 float bound = h.At(next);
                 if (bound < float.PositiveInfinity)

@@ -119,4 +119,16 @@ public sealed record QuerySettings
     /// for which no hop passes the checks is kept as it is. <c>null</c> for none.
     /// </summary>
     public IReadOnlyList<Vector3>? HopSpots { get; init; }
+
+    /// <summary>
+    /// Stances (node ids, as searched) no jump takes off from: the body cannot crouch on them (<see cref="JumpRepair"/>
+    /// fills it); walks still leave them. <c>null</c> for none.
+    /// </summary>
+    public IReadOnlySet<int>? NoTakeoffs { get; init; }
+
+    /// <summary>
+    /// Stances (node ids, as searched) no jump lands on: the body cannot absorb a landing there (<see cref="JumpRepair"/>
+    /// fills it); walks still reach them. <c>null</c> for none.
+    /// </summary>
+    public IReadOnlySet<int>? NoLandings { get; init; }
 }

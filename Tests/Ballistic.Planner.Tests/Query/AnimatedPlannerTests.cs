@@ -15,7 +15,8 @@ namespace Ballistic.Planner.Tests.Query;
 /// <summary>Lazy repair: jumps the body cannot perform are set aside and the search goes on; failure is never success.</summary>
 public sealed class AnimatedPlannerTests
 {
-    private static readonly Lazy<(PlanningScene Scene, BakeResult Bake)> GapCourseBake = new(() =>
+    /// <summary>The gap course baked for a skeleton that only jumps (shared with <see cref="StanceRepairTests"/>).</summary>
+    internal static readonly Lazy<(PlanningScene Scene, BakeResult Bake)> GapCourseBake = new(() =>
     {
         var scene = PlanningScene.Create(GapCourse.Build(), CharacterPresets.Skeleton().WithWalking(WalkingLimits.None)); // jump repair, on a skeleton that only jumps
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 2, MaxNodes = 150, Threads = 2, Start = GapCourse.From, Goal = GapCourse.To });

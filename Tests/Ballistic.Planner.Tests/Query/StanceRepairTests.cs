@@ -1,0 +1,109 @@
+using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Query;
+
+/// <summary>
+/// A stance the body cannot crouch on (or absorb a landing on) is set aside for every jump from (to) it at once, not
+/// one jump per search: each jump would have the same contact pose there.
+/// </summary>
+public sealed class StanceRepairTests
+{
+    private static Lazy<(PlanningScene Scene, BakeResult Bake)> GapCourseBake => AnimatedPlannerTests.GapCourseBake;
+
+    /// <summary>Searched moves as they are: no cutting, no turning, so node ids are the roadmap's.</summary>
+    private static readonly QuerySettings AsSearched = new() { TightenJumps = false, FaceJumps = false };
+
+    /// <summary>Reports the stance problem <paramref name="stance"/> on every jump from (to) node <paramref name="node"/>, and counts the paths it refused.</summary>
+    private sealed class StanceRefuser(int node, ProblemStance stance) : IJumpAnimator
+    {
+        public int PathsRefused { get; private set; }
+
+        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
+        {
+            var problems = new List<JumpProblem>();
+            for (int m = 0; m < moves.Count; m++)
+            {
+                if ((stance == ProblemStance.Takeoff ? moves[m].From.Id : moves[m].To.Id) == node)
+                {
+                    problems.Add(new JumpProblem(m, "the body cannot crouch (test)") { Stance = stance });
+                }
+            }
+
+            PathsRefused += problems.Count > 0 ? 1 : 0;
+            return new JumpAnimation(CharacterPresets.Model("skeleton"), moves, new float[moves.Count - 1], [], [], problems, 0, 0);
+        }
+
+        public bool CanStand(PoseEvaluation pose) => true;
+    }
+
+    /// <summary>The first jump of the best path that takes off from (or lands on) a roadmap node other than the start and goal.</summary>
+    private static (Roadmap Roadmap, int Node) Inner(ProblemStance stance)
+    {
+        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
+        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
+        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        Assume.That(best.Jumps, Has.Count.GreaterThanOrEqualTo(2));
+        return (bake.Roadmap, stance == ProblemStance.Takeoff ? best.Jumps[1].From.Id : best.Jumps[0].To.Id);
+    }
+
+    [Test]
+    public void NoJumpTakesOffFromOrLandsOnAStanceSetAside()
+    {
+        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
+        (_, int takeoff) = Inner(ProblemStance.Takeoff);
+        (_, int landing) = Inner(ProblemStance.Landing);
+        var query = new PathQuery(scene, bake.Roadmap);
+        PlanResult noTakeoff = query.Plan(GapCourse.From, GapCourse.To, AsSearched with { NoTakeoffs = new HashSet<int> { takeoff } });
+        PlanResult noLanding = query.Plan(GapCourse.From, GapCourse.To, AsSearched with { NoLandings = new HashSet<int> { landing } });
+        Assert.Multiple(() =>
+        {
+            Assert.That(noTakeoff.Status, Is.EqualTo(PlannerStatus.Exact), noTakeoff.Reason);
+            Assert.That(noTakeoff.Jumps.Select(j => j.From.Id), Has.No.Member(takeoff));
+            Assert.That(noLanding.Status, Is.EqualTo(PlannerStatus.Exact), noLanding.Reason);
+            Assert.That(noLanding.Jumps.Select(j => j.To.Id), Has.No.Member(landing));
+        });
+    }
+
+    [TestCase(true)]
+    [TestCase(false)]
+    public void AStanceTheBodyCannotDipOnIsSetAsideInOneRound(bool takeoff)
+    {
+        ProblemStance stance = takeoff ? ProblemStance.Takeoff : ProblemStance.Landing;
+        (PlanningScene scene, _) = GapCourseBake.Value;
+        (Roadmap roadmap, int node) = Inner(stance);
+        var animator = new StanceRefuser(node, stance);
+        AnimatedPlan plan = new AnimatedPlanner(scene, animator).Plan(roadmap, GapCourse.From, GapCourse.To, AsSearched, rounds: 20);
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(animator.PathsRefused, Is.EqualTo(1), "every jump from (to) the stance set aside with the first");
+            Assert.That(plan.Rejected, Has.Count.EqualTo(1));
+            Assert.That(plan.Result.Jumps.Select(j => stance == ProblemStance.Takeoff ? j.From.Id : j.To.Id), Has.No.Member(node));
+            Assert.That(plan.Result.Reason, Does.Contain("after setting aside 1 jump"));
+        });
+    }
+
+    [Test]
+    public void AStanceProblemOfAMoveCutFromAJumpGivesTheJumpBackWhole()
+    {
+        var repair = new JumpRepair();
+        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
+        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
+        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        Jump jump = best.Jumps[0];
+        Jump cut = jump with { CutFrom = [(jump.From.Id, jump.To.Id)] };
+        var animation = new JumpAnimation(CharacterPresets.Model("skeleton"), [cut], [], [], [], [new JumpProblem(0, "cannot crouch (test)") { Stance = ProblemStance.Takeoff }], 0, 0);
+        repair.Reject([cut], animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(repair.NoTakeoffs, Is.Empty, "a cut move's takeoff is not a searched stance");
+            Assert.That(repair.Uncut, Does.Contain((jump.From.Id, jump.To.Id)));
+        });
+    }
+}
