@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
@@ -25,7 +26,7 @@ public sealed class AnimatorsEyeTests
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         JumpAnimation animation = plan.Animation!;
         Assert.That(animation.Arcs, Is.Not.Empty);
-        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene.Bvh);
+        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene);
         Assert.Multiple(() =>
         {
             Assert.That(look.Crouch.Passes, Is.True, $"a crouch of at least {AnimatorEye.LeastDip} L, rising into takeoff: {look.Crouch}");
@@ -33,6 +34,41 @@ public sealed class AnimatorsEyeTests
             Assert.That(look.GroundTime.Passes, Is.True, $"at least {AnimatorEye.LeastGroundTime} s on the ground between jumps: {look.GroundTime}");
             Assert.That(look.Soles.Passes, Is.True, $"held soles within {AnimatorEye.SoleTolerance * 100f} cm of the ground: {look.Soles}");
             Assert.That(look.Soles.Seen, Is.Not.Empty, "the feet's soles were measured");
+            Assert.That(look.Inside.Passes, Is.True, $"no vertex of the body more than {AnimatorEye.InsideTolerance * 100f} cm inside the level: {look.Inside}");
+        });
+    }
+
+    /// <summary>The eye's own sampling of the clip (keys read by SharpGLTF, searched by halves) gives SharpGLTF's world matrices.</summary>
+    [Test]
+    public void TheEyeSamplesTheClipAsSharpGltfDoes()
+    {
+        (_, _, AnimatedPlan plan) = BundledPlans.Plan("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f);
+        JumpAnimation animation = plan.Animation!;
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        float[] times = [.. Enumerable.Range(0, 41).Select(i => animation.Duration * i / 40f), 0.123f, animation.Duration + 1f];
+        Assert.That(eye.LargestDifferenceFromSharpGltf(times), Is.LessThan(1e-4f));
+    }
+
+    /// <summary>
+    /// The eye sees a body sunk into the ground: the same clip with the root 5 cm lower all along has vertices of the
+    /// standing feet about 5 cm inside the level, where the clip as animated has none beyond the tolerance.
+    /// </summary>
+    [Test]
+    public void ABodySunkIntoTheGroundIsSeenInsideTheLevel()
+    {
+        (PlanningScene scene, _, AnimatedPlan plan) = BundledPlans.Plan("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f);
+        JumpAnimation animation = plan.Animation!;
+        var sunk = new JumpAnimation(
+            animation.Model, animation.Moves, animation.Stances,
+            [.. animation.Frames.Select(f => f with { Root = new RootPose(f.Root.Position - new Vector3(0f, 0.05f, 0f), f.Root.Rotation) })],
+            animation.ContactPhases, animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        AnimatorEye.Look asAnimated = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene);
+        AnimatorEye.Look lowered = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(sunk), sunk.Model).Measure(sunk, scene);
+        Assert.Multiple(() =>
+        {
+            Assert.That(asAnimated.Inside.Passes, Is.True, asAnimated.Inside.ToString());
+            Assert.That(lowered.Inside.Passes, Is.False, "a body 5 cm into the ground");
+            Assert.That(lowered.Inside.Worst!.Value.Score, Is.LessThan(AnimatorEye.InsideTolerance / 0.04f), lowered.Inside.ToString());
         });
     }
 
@@ -49,7 +85,7 @@ public sealed class AnimatorsEyeTests
         (PlanningScene scene, _, AnimatedPlan plan) = BundledPlans.Plan(levelName, characterName, x0, z0, x1, z1);
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         JumpAnimation animation = plan.Animation!;
-        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene.Bvh);
+        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene);
         Assert.That(look.Facing.Worst, Is.Not.Null, "a jump of a metre or more was measured");
         Assert.That(look.Facing.Passes, Is.True, $"every jump of a metre or more leaves within {AnimatorEye.TakeoffFacing}° and lands within {AnimatorEye.LandingFacing}° of its direction: {look.Facing}");
     }

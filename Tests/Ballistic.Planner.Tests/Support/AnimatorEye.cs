@@ -5,6 +5,7 @@ using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using SharpGLTF.Schema2;
@@ -62,11 +63,24 @@ internal sealed class AnimatorEye
     /// <summary>Farthest a foot may move sideways of its own hip from where the contact pose holds it, in leg lengths.</summary>
     public const float SidewaysShare = 0.35f;
 
+    /// <summary>Deepest (metres) any skinned vertex of the body may be inside the level at any frame.</summary>
+    public const float InsideTolerance = 0.02f;
+
+    /// <summary>Interval (seconds) at which the whole body's vertices are checked against the level.</summary>
+    public const float InsideStep = 1f / 15f;
+
+    /// <summary>How far (metres) from a vertex the level's surface is looked for: depths up to this are measured.</summary>
+    private const float InsideProbe = 0.1f;
+
     private const float Step = 1f / 120f;
 
     private readonly GltfAnimation _clip;
     private readonly Node _trunk;
     private readonly SkinnedVertex[] _vertices;
+    private readonly string[] _owners;
+    private readonly Dictionary<Node, Track> _tracks = [];
+    private readonly (Node Joint, Matrix4x4 InverseBind)[] _bindings;
+    private readonly int[][] _groups;
     private readonly Dictionary<string, int[]> _feet;
     private readonly Quaternion _restTrunk;
     private readonly Vector3 _restForward;
@@ -77,8 +91,11 @@ internal sealed class AnimatorEye
     private readonly (string Name, Node Hip, Node Ankle, float RestSideways)[] _legs;
     private readonly (string Name, Node Effector, float Offset)[] _effectors;
 
-    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors)
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, (Node Joint, Matrix4x4 InverseBind)[] bindings, string[] owners, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors)
     {
+        _owners = owners;
+        _bindings = bindings;
+        _groups = [.. Enumerable.Range(0, owners.Length).GroupBy(v => owners[v], StringComparer.Ordinal).Select(g => g.ToArray())];
         _effectors = effectors;
         _clip = clip;
         _limbJoints = limbJoints;
@@ -119,6 +136,8 @@ internal sealed class AnimatorEye
         // The skinned vertices (linear blend skinning: joint world matrices times inverse bind matrices), and for each
         // foot, the vertices mostly skinned to its effector bone or a bone below it.
         var vertices = new List<SkinnedVertex>();
+        var bindings = new List<(Node Joint, Matrix4x4 InverseBind)>();
+        var bindingOf = new Dictionary<(int Skin, int Joint), int>();
         var owner = new List<Node>();
         foreach (Node node in root.LogicalNodes.Where(n => n.Mesh is not null && n.Skin is not null))
         {
@@ -139,15 +158,21 @@ internal sealed class AnimatorEye
                     Vector4 ji = jointIndices[v];
                     Vector4 w = weights[v];
                     var influences = new (Node, Matrix4x4, float)[4];
+                    int[] bound = new int[4];
                     float[] ws = [w.X, w.Y, w.Z, w.W];
                     float[] js = [ji.X, ji.Y, ji.Z, ji.W];
                     for (int k = 0; k < 4; k++)
                     {
                         (Node joint, Matrix4x4 inverse) = joints[(int)js[k]];
                         influences[k] = (joint, inverse, ws[k]);
+                        if (!bindingOf.TryGetValue((skin.LogicalIndex, (int)js[k]), out bound[k]))
+                        {
+                            bound[k] = bindingOf[(skin.LogicalIndex, (int)js[k])] = bindings.Count;
+                            bindings.Add((joint, inverse));
+                        }
                     }
 
-                    vertices.Add(new SkinnedVertex(positions[v], influences));
+                    vertices.Add(new SkinnedVertex(positions[v], influences, bound));
                     owner.Add(influences.MaxBy(i => i.Item3).Item1);
                 }
             }
@@ -192,14 +217,15 @@ internal sealed class AnimatorEye
             lefts[i], Named(rig.Joints[model.Limbs.First(l => l.Name == lefts[i]).EffectorJoint].Name),
             rights[i], Named(rig.Joints[model.Limbs.First(l => l.Name == rights[i]).EffectorJoint].Name)))];
         (string, Node, float)[] effectors = [.. model.Limbs.Select(l => (l.Name, Named(rig.Joints[l.EffectorJoint].Name), l.EffectorOffset.Length()))];
-        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], feet, limbJoints, left, pairs, [.. legs], effectors);
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors);
     }
 
     /// <summary>A left foot and its right partner (their effector bones).</summary>
     private sealed record FootPair(string Left, Node LeftAnkle, string Right, Node RightAnkle);
 
     /// <summary>A vertex of a skinned mesh: its bind position and up to four (joint, inverse bind matrix, weight).</summary>
-    private sealed record SkinnedVertex(Vector3 Bind, (Node Joint, Matrix4x4 InverseBind, float Weight)[] Influences);
+    /// <summary>A vertex of a skinned mesh: its bind position, up to four (joint, inverse bind matrix, weight), and each one's index in the eye's list of (joint, inverse bind) pairs.</summary>
+    private sealed record SkinnedVertex(Vector3 Bind, (Node Joint, Matrix4x4 InverseBind, float Weight)[] Influences, int[] Bindings);
 
     private static bool Below(Node node, Node ancestor)
     {
@@ -227,7 +253,7 @@ internal sealed class AnimatorEye
 
             if (!worlds.TryGetValue(joint, out Matrix4x4 world))
             {
-                world = joint.GetWorldMatrix(_clip, time);
+                world = WorldAt(joint, time);
                 worlds[joint] = world;
             }
 
@@ -237,13 +263,129 @@ internal sealed class AnimatorEye
         return sum;
     }
 
+    /// <summary>
+    /// <paramref name="node"/>'s world matrix at clip time <paramref name="time"/>: its local transform from the clip's
+    /// channels (their keys read by SharpGLTF once per node, sampled as glTF's LINEAR and STEP modes say: lerp, slerp
+    /// for rotations) or its rest transform where a channel is missing, times its parent's world matrix, as
+    /// <c>Node.GetWorldMatrix(animation, time)</c> composes it (whose samplers search the keys from the first each
+    /// call: 12 s for the rooftops clip's vertices, against well under one this way).
+    /// </summary>
+    private Matrix4x4 WorldAt(Node node, float time)
+    {
+        if (!_tracks.TryGetValue(node, out Track? track))
+        {
+            track = new Track(node, _clip);
+            _tracks[node] = track;
+        }
+
+        Matrix4x4 local = track.LocalAt(time);
+        return node.VisualParent is Node parent ? local * WorldAt(parent, time) : local;
+    }
+
+    /// <summary>
+    /// The largest difference (any matrix entry) between the eye's world matrices and SharpGLTF's own
+    /// <c>Node.GetWorldMatrix(animation, time)</c>, over the trunk and every limb joint at <paramref name="times"/>.
+    /// </summary>
+    public float LargestDifferenceFromSharpGltf(IEnumerable<float> times)
+    {
+        float largest = 0f;
+        foreach (float time in times)
+        {
+            foreach (Node node in _limbJoints.SelectMany(j => j).Append(_trunk))
+            {
+                Matrix4x4 d = WorldAt(node, time) - node.GetWorldMatrix(_clip, time);
+                largest = MathF.Max(largest, new[] { d.M11, d.M12, d.M13, d.M21, d.M22, d.M23, d.M31, d.M32, d.M33, d.M41, d.M42, d.M43 }.Max(MathF.Abs));
+            }
+        }
+
+        return largest;
+    }
+
+    /// <summary>A node's animation channels as key arrays, sampled by binary search.</summary>
+    private sealed class Track
+    {
+        private readonly Matrix4x4? _rest;
+        private readonly Vector3 _scale;
+        private readonly Quaternion _rotation;
+        private readonly Vector3 _translation;
+        private readonly (float[] Times, Vector3[] Values, bool Step)? _s;
+        private readonly (float[] Times, Quaternion[] Values, bool Step)? _r;
+        private readonly (float[] Times, Vector3[] Values, bool Step)? _t;
+
+        public Track(Node node, GltfAnimation clip)
+        {
+            _s = Keys(clip.FindScaleChannel(node)?.GetScaleSampler());
+            _r = Keys(clip.FindRotationChannel(node)?.GetRotationSampler());
+            _t = Keys(clip.FindTranslationChannel(node)?.GetTranslationSampler());
+            _rest = _s is null && _r is null && _t is null ? node.LocalMatrix : null;
+            if (_rest is null)
+            {
+                // An animated node has its rest transform as scale, rotation and translation (glTF: never a matrix).
+                var rest = node.LocalTransform.GetDecomposed();
+                (_scale, _rotation, _translation) = (rest.Scale, rest.Rotation, rest.Translation);
+            }
+        }
+
+        public Matrix4x4 LocalAt(float time)
+        {
+            if (_rest is Matrix4x4 rest)
+            {
+                return rest;
+            }
+
+            Vector3 s = _s is { } sk ? Sample(sk, time, Vector3.Lerp) : _scale;
+            Quaternion r = _r is { } rk ? Sample(rk, time, Quaternion.Slerp) : _rotation;
+            Vector3 t = _t is { } tk ? Sample(tk, time, Vector3.Lerp) : _translation;
+            return Matrix4x4.CreateScale(s) * Matrix4x4.CreateFromQuaternion(Quaternion.Normalize(r)) * Matrix4x4.CreateTranslation(t);
+        }
+
+        private static (float[], T[], bool)? Keys<T>(IAnimationSampler<T>? sampler)
+        {
+            if (sampler is null)
+            {
+                return null;
+            }
+
+            if (sampler.InterpolationMode == AnimationInterpolationMode.CUBICSPLINE)
+            {
+                throw new NotSupportedException("The eye reads LINEAR and STEP channels; this clip has a CUBICSPLINE one.");
+            }
+
+            (float Key, T Value)[] keys = [.. sampler.GetLinearKeys()];
+            return ([.. keys.Select(k => k.Key)], [.. keys.Select(k => k.Value)], sampler.InterpolationMode == AnimationInterpolationMode.STEP);
+        }
+
+        private static T Sample<T>((float[] Times, T[] Values, bool Step) keys, float time, Func<T, T, float, T> mix)
+        {
+            (float[] times, T[] values, bool step) = keys;
+            int i = Array.BinarySearch(times, time);
+            if (i >= 0)
+            {
+                return values[i];
+            }
+
+            i = ~i; // the first key after the time
+            if (i == 0)
+            {
+                return values[0];
+            }
+
+            if (i >= times.Length)
+            {
+                return values[^1];
+            }
+
+            return step ? values[i - 1] : mix(values[i - 1], values[i], (time - times[i - 1]) / (times[i] - times[i - 1]));
+        }
+    }
+
     /// <summary>The trunk bone's world position at clip time <paramref name="time"/>, metres.</summary>
-    public Vector3 TrunkAt(float time) => _trunk.GetWorldMatrix(_clip, time).Translation;
+    public Vector3 TrunkAt(float time) => WorldAt(_trunk, time).Translation;
 
     /// <summary>The trunk's forward on the ground plane at <paramref name="time"/> (unit; zero when it points straight up or down).</summary>
     public Vector3 HeadingAt(float time)
     {
-        Quaternion now = Rotation(_trunk.GetWorldMatrix(_clip, time));
+        Quaternion now = Rotation(WorldAt(_trunk, time));
         Vector3 f = Vector3.Transform(_restForward, now * Quaternion.Conjugate(_restTrunk));
         f.Y = 0f;
         return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
@@ -252,20 +394,23 @@ internal sealed class AnimatorEye
     /// <summary>The trunk's left on the ground plane at <paramref name="time"/> (unit; zero when it lies flat).</summary>
     public Vector3 LeftAt(float time)
     {
-        Quaternion now = Rotation(_trunk.GetWorldMatrix(_clip, time));
+        Quaternion now = Rotation(WorldAt(_trunk, time));
         Vector3 l = Vector3.Transform(_restLeft, now * Quaternion.Conjugate(_restTrunk));
         l.Y = 0f;
         return l.LengthSquared() > 1e-8f ? Vector3.Normalize(l) : Vector3.Zero;
     }
 
     /// <summary>
-    /// Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria, and the feet's
-    /// skinned soles in every contact phase against <paramref name="level"/>'s surface under each held point.
+    /// Measures every jump of <paramref name="animation"/> (whose GLB this is) against the criteria, the feet's
+    /// skinned soles in every contact phase against the surface under each held point, and the whole body's vertices
+    /// against <paramref name="scene"/>'s level.
     /// </summary>
-    public Look Measure(JumpAnimation animation, TriangleBvh level)
+    public Look Measure(JumpAnimation animation, PlanningScene scene)
     {
         var look = new Look();
+        TriangleBvh level = scene.Bvh;
         MeasureSoles(animation, level, look);
+        MeasureInside(animation, scene.Level.Triangles, level, look);
         MeasureLegs(animation, look);
         MeasureFootholds(animation, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
@@ -385,6 +530,104 @@ internal sealed class AnimatorEye
     }
 
     /// <summary>
+    /// No part of the body in the level: every <see cref="InsideStep"/> seconds, each skinned vertex against the level
+    /// triangles within <see cref="InsideProbe"/> of it: on the back side of the nearest (at an edge shared by several,
+    /// the one it is most in front of), it is inside by its distance, which must not exceed <see cref="InsideTolerance"/>.
+    /// </summary>
+    private void MeasureInside(JumpAnimation animation, IReadOnlyList<Triangle> triangles, TriangleBvh level, Look look)
+    {
+        if (_vertices.Length == 0)
+        {
+            return;
+        }
+
+        var worlds = new Dictionary<Node, Matrix4x4>();
+        var near = new List<int>();
+        var points = new Vector3[_vertices.Length];
+        var skinning = new Matrix4x4[_bindings.Length];
+        float worst = 0f;
+        string seen = "";
+        for (float t = 0f; t <= animation.Duration + 1e-6f; t += InsideStep)
+        {
+            float time = MathF.Min(t, animation.Duration);
+            worlds.Clear();
+            for (int b = 0; b < skinning.Length; b++)
+            {
+                (Node joint, Matrix4x4 inverse) = _bindings[b];
+                if (!worlds.TryGetValue(joint, out Matrix4x4 world))
+                {
+                    world = WorldAt(joint, time);
+                    worlds[joint] = world;
+                }
+
+                skinning[b] = inverse * world;
+            }
+
+            for (int v = 0; v < points.Length; v++)
+            {
+                SkinnedVertex vertex = _vertices[v];
+                Vector3 sum = Vector3.Zero;
+                for (int k = 0; k < vertex.Bindings.Length; k++)
+                {
+                    float weight = vertex.Influences[k].Weight;
+                    sum += weight > 0f ? weight * Vector3.Transform(vertex.Bind, skinning[vertex.Bindings[k]]) : Vector3.Zero;
+                }
+
+                points[v] = sum;
+            }
+
+            near.Clear();
+            level.TrianglesNear(Aabb.FromPoints(points).Inflate(InsideProbe), near);
+            if (near.Count == 0)
+            {
+                continue; // in the air, clear of everything
+            }
+
+            // Bone by bone: the triangles near the bone's vertices, then each vertex against them.
+            foreach (int[] group in _groups)
+            {
+                near.Clear();
+                Aabb box = Aabb.Empty;
+                foreach (int v in group)
+                {
+                    box = Aabb.Union(box, new Aabb(points[v], points[v]));
+                }
+
+                level.TrianglesNear(box.Inflate(InsideProbe), near);
+                foreach (int v in near.Count == 0 ? [] : group)
+                {
+                    float nearest = InsideProbe * InsideProbe;
+                    float side = 1f;
+                    foreach (int i in near)
+                    {
+                        Triangle triangle = triangles[i];
+                        Vector3 closest = triangle.ClosestPoint(points[v]);
+                        float d2 = Vector3.DistanceSquared(closest, points[v]);
+                        float front = Vector3.Dot(points[v] - closest, triangle.Normal);
+                        if (d2 < nearest - 1e-9f)
+                        {
+                            (nearest, side) = (d2, front);
+                        }
+                        else if (d2 <= nearest + 1e-9f)
+                        {
+                            side = MathF.Max(side, front);
+                        }
+                    }
+
+                    float depth = side < 0f ? MathF.Sqrt(nearest) : 0f;
+                    if (depth > worst)
+                    {
+                        worst = depth;
+                        seen = $"a vertex of '{_owners[v]}' is {depth * 100f:0.0} cm inside the level at {time:0.00} s";
+                    }
+                }
+            }
+        }
+
+        look.Inside.Add(InsideTolerance / MathF.Max(worst, 1e-6f), seen.Length > 0 ? seen : "no vertex inside the level");
+    }
+
+    /// <summary>
     /// Legs under the body, on the ground (every 1/30 s outside flights): in the trunk's frame no left foot more than
     /// <see cref="CrossTolerance"/> right of its right partner, and each foot within <see cref="SidewaysShare"/> L
     /// sideways of its own hip, counted from where the spec's contact pose holds it.
@@ -417,7 +660,7 @@ internal sealed class AnimatorEye
 
             foreach (FootPair pair in _pairs)
             {
-                float gap = Vector3.Dot(pair.LeftAnkle.GetWorldMatrix(_clip, t).Translation - pair.RightAnkle.GetWorldMatrix(_clip, t).Translation, left);
+                float gap = Vector3.Dot(WorldAt(pair.LeftAnkle, t).Translation - WorldAt(pair.RightAnkle, t).Translation, left);
                 if (gap < crossWorst)
                 {
                     crossWorst = gap;
@@ -427,7 +670,7 @@ internal sealed class AnimatorEye
 
             foreach ((string name, Node hip, Node ankle, float rest) in _legs)
             {
-                float off = MathF.Abs(Vector3.Dot(ankle.GetWorldMatrix(_clip, t).Translation - hip.GetWorldMatrix(_clip, t).Translation, left) - rest) / Leg;
+                float off = MathF.Abs(Vector3.Dot(WorldAt(ankle, t).Translation - WorldAt(hip, t).Translation, left) - rest) / Leg;
                 if (off > sideWorst)
                 {
                     sideWorst = off;
@@ -460,7 +703,7 @@ internal sealed class AnimatorEye
                 foreach (Contact c in stance.Contacts)
                 {
                     (string name, Node effector, float offset) = _effectors[c.Limb];
-                    float off = MathF.Max(0f, Vector3.Distance(effector.GetWorldMatrix(_clip, time).Translation, c.Position) - offset);
+                    float off = MathF.Max(0f, Vector3.Distance(WorldAt(effector, time).Translation, c.Position) - offset);
                     if (off > worst)
                     {
                         worst = off;
@@ -542,8 +785,10 @@ internal sealed class AnimatorEye
 
         public Criterion Footholds { get; } = new(higherPasses: true);
 
+        public Criterion Inside { get; } = new(higherPasses: true);
+
         public IEnumerable<(string Name, Criterion Criterion)> All =>
-            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds)];
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside)];
 
         public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
     }

@@ -45,7 +45,7 @@ internal static class Sweep
         if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
         {
             byte[] glb = AnimatedGlbWriter.ToBytes(animation);
-            report.Look = AnimatorEye.Read(glb, setup.Model).Measure(animation, scene.Bvh);
+            report.Look = AnimatorEye.Read(glb, setup.Model).Measure(animation, scene);
             Dump(setup, name, glb, animation);
         }
 
