@@ -12,12 +12,24 @@ namespace Ballistic.Planner.Animation;
 /// surface; every other bone (spine, neck, head, tail, ears) is as thick as half its radius
 /// (<see cref="CharacterModel.BoneRadii"/>), since it should not even touch the level. Within
 /// <see cref="ContactClearance"/> of a held contact point a bone may touch. Helper bones of a loaded rig that are no
-/// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. Thread-safe.
+/// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. A loaded rig's limbs are also checked by
+/// points of their skinned mesh (<see cref="CharacterSource.SkinProbes"/>: toes and heels reach beyond the segments
+/// between joints): none may be more than <see cref="SkinDepth"/> inside the level, when the level's triangles are
+/// given. Thread-safe.
 /// </summary>
 public sealed class BodyCollision
 {
     /// <summary>Distance from a contact point within which a bone may touch the surface, metres.</summary>
     public const float ContactClearance = 0.01f;
+
+    /// <summary>
+    /// Deepest (metres) a point of a loaded rig's skinned limb may be inside the level: a held sole lies on the
+    /// surface within a centimetre or so; a toe digging in goes deeper.
+    /// </summary>
+    public const float SkinDepth = 0.015f;
+
+    /// <summary>How far (metres) around a skin point the level's surface is looked for: deeper points are not seen.</summary>
+    private const float SkinReach = 0.1f;
 
     /// <summary>Half-thickness of a limb bone's box, metres.</summary>
     private const float Thickness = 0.002f;
@@ -27,9 +39,21 @@ public sealed class BodyCollision
     private readonly int[][] _limbBones;
     private readonly int[] _otherBones;
     private readonly float[] _otherThickness;
+    private readonly IReadOnlyList<Triangle>? _triangles;
+    private readonly (int Joint, Vector3 Point)[][] _probes;
+    private readonly float[] _probeReach;
 
     /// <summary>Creates a checker of <paramref name="model"/>'s bones against a level.</summary>
     public BodyCollision(TriangleBvh bvh, CharacterModel model)
+        : this(bvh, model, null)
+    {
+    }
+
+    /// <summary>
+    /// Creates a checker of <paramref name="model"/>'s bones, and of a loaded rig's skinned limbs, against the level
+    /// whose <paramref name="triangles"/> (indexed as <paramref name="bvh"/> reports them) are given.
+    /// </summary>
+    public BodyCollision(TriangleBvh bvh, CharacterModel model, IReadOnlyList<Triangle>? triangles)
     {
         ArgumentNullException.ThrowIfNull(bvh);
         ArgumentNullException.ThrowIfNull(model);
@@ -82,6 +106,20 @@ public sealed class BodyCollision
 
         _otherBones = [.. others];
         _otherThickness = [.. others.Select(j => MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
+
+        // A loaded rig's skin points of each limb: its chain's bones and those below its effector (a foot's toes and
+        // heel, a hand's fingers reach beyond the segments between joints).
+        _triangles = triangles;
+        IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source?.SkinProbes ?? [];
+        _probes = new (int, Vector3)[model.Limbs.Count][];
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            RigLimb limb = model.Limbs[l];
+            IEnumerable<int> joints = limb.Chain.Concat(_limbBones[l]).Distinct().Where(j => IsBody(j) || j == limb.Chain[0]);
+            _probes[l] = skin.Count == rig.Joints.Count ? [.. joints.SelectMany(j => skin[j].Select(p => (j, p)))] : [];
+        }
+
+        _probeReach = [.. _probes.Select(probes => probes.Length == 0 ? 0f : probes.Max(p => p.Point.Length()))];
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>
@@ -111,7 +149,7 @@ public sealed class BodyCollision
             max = Vector3.Max(max, Vector3.Max(positions[j], positions[rig.Joints[j].Parent]));
         }
 
-        if (!_bvh.Overlaps(new OrientedBox((min + max) * 0.5f, ((max - min) * 0.5f) + new Vector3(Thickness), Quaternion.Identity)))
+        if (!_bvh.Overlaps(new OrientedBox((min + max) * 0.5f, ((max - min) * 0.5f) + new Vector3(Thickness + _probeReach[l]), Quaternion.Identity)))
         {
             return false;
         }
@@ -124,7 +162,61 @@ public sealed class BodyCollision
             }
         }
 
-        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness);
+        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness) || SkinInside(l, positions, rotations);
+    }
+
+    /// <summary>True when a skin point of limb <paramref name="l"/> lies more than <see cref="SkinDepth"/> inside the level.</summary>
+    private bool SkinInside(int l, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    {
+        (int Joint, Vector3 Point)[] probes = _probes[l];
+        if (probes.Length == 0 || _triangles is null)
+        {
+            return false;
+        }
+
+        Span<Vector3> world = probes.Length <= 256 ? stackalloc Vector3[probes.Length] : new Vector3[probes.Length];
+        Aabb box = Aabb.Empty;
+        for (int i = 0; i < probes.Length; i++)
+        {
+            world[i] = positions[probes[i].Joint] + Vector3.Transform(probes[i].Point, rotations[probes[i].Joint]);
+            box = Aabb.Union(box, new Aabb(world[i], world[i]));
+        }
+
+        var near = new List<int>();
+        _bvh.TrianglesNear(box.Inflate(SkinReach), near);
+        if (near.Count == 0)
+        {
+            return false;
+        }
+
+        foreach (Vector3 p in world)
+        {
+            // Inside: behind the nearest triangle (at an edge shared by several, the one it is most in front of).
+            float nearest = SkinReach * SkinReach;
+            float side = 1f;
+            foreach (int t in near)
+            {
+                Triangle triangle = _triangles[t];
+                Vector3 closest = triangle.ClosestPoint(p);
+                float d2 = Vector3.DistanceSquared(closest, p);
+                float front = Vector3.Dot(p - closest, triangle.Normal);
+                if (d2 < nearest - 1e-9f)
+                {
+                    (nearest, side) = (d2, front);
+                }
+                else if (d2 <= nearest + 1e-9f)
+                {
+                    side = MathF.Max(side, front);
+                }
+            }
+
+            if (side < 0f && nearest > SkinDepth * SkinDepth)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>

@@ -46,7 +46,7 @@ public sealed class ContactGenerator
         Ik = new LimbIk(model.Rig, ik ?? new IkSettings { Restarts = 0, MaxIterations = 30 });
         _databases = [.. model.Limbs.Select(l => new LimbSampleDatabase(model, l))];
         _reach = [.. model.Limbs.Select(l => l.Chain.Skip(1).Sum(j => model.Rig.Joints[j].Offset.Length()) + l.EffectorOffset.Length())];
-        _collision = new BodyCollision(scene.Bvh, model);
+        _collision = new BodyCollision(scene.Bvh, model, scene.Level.Triangles);
     }
 
     /// <summary>The whole character.</summary>

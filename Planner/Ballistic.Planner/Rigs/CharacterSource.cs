@@ -1,3 +1,4 @@
+using System.Numerics;
 using Ballistic.Planner.Gltf;
 
 namespace Ballistic.Planner.Rigs;
@@ -56,6 +57,14 @@ public sealed class CharacterSource
     /// joint's ancestor in the file (not a root bone hung from the rig's root, such as an IK target). Empty: every bone.
     /// </summary>
     public IReadOnlyList<bool> BodyBones { get; init; } = [];
+
+    /// <summary>
+    /// For each joint, points of the skinned mesh around its bone, in the bone's rest frame (metres): of the vertices
+    /// skinned mostly to it, the farthest along each of 14 directions (the bone frame's axes and diagonals). A limb
+    /// bone's points are kept out of the level (<see cref="Animation.BodyCollision"/>): a toe or heel reaches beyond
+    /// the segments between joints. Empty: none.
+    /// </summary>
+    internal IReadOnlyList<Vector3[]> SkinProbes { get; init; } = [];
 
     /// <summary>For each joint, whether its radius was derived from the skinned mesh (so a saved spec leaves it out and derives it again).</summary>
     internal IReadOnlyList<bool> DerivedRadii { get; init; } = [];

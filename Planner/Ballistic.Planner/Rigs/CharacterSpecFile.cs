@@ -352,7 +352,12 @@ public static class CharacterSpecFile
             bodyBones[j] = ancestor && skeleton.Points[skeleton.Parents[j]].Count > 0;
         }
 
-        var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis)) { DerivedRadii = derivedRadii, BodyBones = bodyBones };
+        var source = new CharacterSource(document, skeleton.Nodes, AxisName(spec.UpAxis), AxisName(spec.ForwardAxis))
+        {
+            DerivedRadii = derivedRadii,
+            BodyBones = bodyBones,
+            SkinProbes = [.. skeleton.Points.Select(MeshDefaults.Extremes)],
+        };
         // Flight poses the spec does not give are derived from the limbs' workspaces, not left in the bind pose.
         float[] contact = PoseFrom(rig, spec, "contact", specPath);
         (float[] tucked, float[] stretched) = spec.Poses.ContainsKey("flexion") && spec.Poses.ContainsKey("extending") ? (contact, contact) : FlightPoses.Derive(rig, rigLimbs, contact);

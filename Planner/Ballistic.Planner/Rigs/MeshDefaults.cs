@@ -69,6 +69,46 @@ internal static class MeshDefaults
     }
 
     /// <summary>
+    /// Of <paramref name="points"/>, the farthest along each of 14 directions (±X, ±Y, ±Z and the 8 diagonals), each
+    /// point once: a handful of points on the hull of a bone's skinned vertices.
+    /// </summary>
+    public static Vector3[] Extremes(IReadOnlyList<Vector3> points)
+    {
+        ArgumentNullException.ThrowIfNull(points);
+        if (points.Count == 0)
+        {
+            return [];
+        }
+
+        var found = new List<Vector3>();
+        foreach (Vector3 direction in Directions)
+        {
+            Vector3 best = points[0];
+            foreach (Vector3 p in points)
+            {
+                if (Vector3.Dot(p, direction) > Vector3.Dot(best, direction))
+                {
+                    best = p;
+                }
+            }
+
+            if (!found.Contains(best))
+            {
+                found.Add(best);
+            }
+        }
+
+        return [.. found];
+    }
+
+    private static readonly Vector3[] Directions =
+    [
+        Vector3.UnitX, -Vector3.UnitX, Vector3.UnitY, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ,
+        new(1f, 1f, 1f), new(1f, 1f, -1f), new(1f, -1f, 1f), new(1f, -1f, -1f),
+        new(-1f, 1f, 1f), new(-1f, 1f, -1f), new(-1f, -1f, 1f), new(-1f, -1f, -1f),
+    ];
+
+    /// <summary>
     /// The contact point and sole normal of a limb in its effector's frame, from the vertices of the effector and
     /// its descendants in the rest pose (every angle 0): the normal is the rest pose's down direction; the point lies
     /// at the height of the lowest vertex, at the centre (in the horizontal plane) of the vertices within

@@ -55,6 +55,60 @@ public sealed class WholeBodyTests
         }
     }
 
+    /// <summary>
+    /// A loaded rig's skinned feet reach beyond the segments between their joints (toes, heels): a wall just clear of
+    /// every bone of a foot's limb but inside the foot's skin is seen when the checker has the level's triangles, and
+    /// was not by the bones alone (the armature human's toes went 8.2 cm into a stair).
+    /// </summary>
+    [TestCase("tailed")]
+    [TestCase("human")]
+    public void ALoadedRigsSkinnedFeetAreKeptOutOfTheLevel(string rigName)
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-skin-{Guid.NewGuid():N}");
+        try
+        {
+            (CharacterModel model, _) = ForeignCharacters.Named(rigName).Load(folder);
+            Rig rig = model.Rig;
+            var positions = new Vector3[rig.Joints.Count];
+            var rotations = new Quaternion[rig.Joints.Count];
+            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+            IReadOnlyList<Vector3[]> skin = model.Source!.SkinProbes;
+            int tested = 0;
+            foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+            {
+                // Farthest forward (+Z) of the limb's bones, and of the skin of its foot (effector and below).
+                int[] bones = [.. Enumerable.Range(0, rig.Joints.Count).Where(j => limb.Chain.Contains(j) || rig.IsAncestor(limb.EffectorJoint, j))];
+                float boneFront = bones.Max(j => positions[j].Z);
+                boneFront = MathF.Max(boneFront, limb.EffectorPosition(positions, rotations).Z);
+                float skinFront = bones.Where(j => j == limb.EffectorJoint || rig.IsAncestor(limb.EffectorJoint, j))
+                    .SelectMany(j => skin[j].Select(p => (positions[j] + Vector3.Transform(p, rotations[j])).Z))
+                    .DefaultIfEmpty(float.NegativeInfinity).Max();
+                if (skinFront < boneFront + 0.03f)
+                {
+                    continue; // this foot's skin does not reach far enough beyond its bones to tell
+                }
+
+                Level wall = new LevelBuilder("wall").AddBox(new Vector3(-5f, -5f, boneFront + 0.005f), new Vector3(5f, 5f, boneFront + 1f)).Build();
+                var bvh = new TriangleBvh(wall.Triangles);
+                Assert.Multiple(() =>
+                {
+                    Assert.That(new BodyCollision(bvh, model).LimbCollides(limb, positions, rotations, null), Is.False, $"{limb.Name}'s bones are clear of the wall");
+                    Assert.That(new BodyCollision(bvh, model, wall.Triangles).LimbCollides(limb, positions, rotations, null), Is.True, $"{limb.Name}'s skin reaches {(skinFront - boneFront) * 100f:0.0} cm beyond its bones, into the wall");
+                });
+                tested++;
+            }
+
+            Assert.That(tested, Is.GreaterThan(0), "a foot whose skin reaches beyond its bones");
+        }
+        finally
+        {
+            if (Directory.Exists(folder))
+            {
+                Directory.Delete(folder, recursive: true);
+            }
+        }
+    }
+
     [Test]
     public void ContactsChangeOnlyByStepsBetweenJumps()
     {
