@@ -43,6 +43,10 @@ public sealed class BodyCollision
     private readonly (int Joint, Vector3 Point)[][] _probes;
     private readonly float[] _probeReach;
 
+    /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
+    [ThreadStatic]
+    private static List<int>? s_near;
+
     /// <summary>Creates a checker of <paramref name="model"/>'s bones against a level.</summary>
     public BodyCollision(TriangleBvh bvh, CharacterModel model)
         : this(bvh, model, null)
@@ -182,7 +186,8 @@ public sealed class BodyCollision
             box = Aabb.Union(box, new Aabb(world[i], world[i]));
         }
 
-        var near = new List<int>();
+        List<int> near = s_near ??= [];
+        near.Clear();
         _bvh.TrianglesNear(box.Inflate(SkinReach), near);
         if (near.Count == 0)
         {

@@ -428,8 +428,7 @@ public sealed class ContactGenerator
         {
             Rig rig = Model.Rig;
             int effector = limb.EffectorJoint;
-            float fold = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, trial), rig.LocalRotation(effector, Model.ContactPose)))));
-            if (fold > MaxEffectorFold)
+            if (rig.JointTurn(effector, trial, Model.ContactPose) > MaxEffectorFold)
             {
                 return false;
             }
@@ -445,36 +444,12 @@ public sealed class ContactGenerator
     }
 
     /// <summary>
-    /// True when <paramref name="limb"/>, posed in <paramref name="q"/> on <paramref name="point"/>, holds it by IK
-    /// with the root <paramref name="crouch"/> metres lower, as <see cref="StanceDip"/> holds it (sole flat, else
-    /// rolling on its point; for a rig loaded from a file, sole flat only and without folding its effector joint more
-    /// than <see cref="StanceDip.MaxEffectorFold"/>), clear of the level.
+    /// True when <paramref name="limb"/>, posed in <paramref name="q"/> on <paramref name="point"/>, still holds it
+    /// with the root <paramref name="crouch"/> metres lower, as a dip holds it (<see cref="StanceDip.Hold"/>).
     /// </summary>
     private bool HoldsCrouched(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
         var low = new RootPose(root.Position - (crouch * Vector3.UnitY), root.Rotation);
-        float[] dipped = (float[])q.Clone();
-        if (!Ik.Solve(low, dipped, limb, point, -normal, seed: 1).Success)
-        {
-            Array.Copy(q, dipped, q.Length);
-            if (Model.Source is not null || !Ik.Solve(low, dipped, limb, point, null, seed: 1).Success)
-            {
-                return false;
-            }
-        }
-
-        if (Model.Source is not null)
-        {
-            Rig rig = Model.Rig;
-            int effector = limb.EffectorJoint;
-            float fold = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, dipped), rig.LocalRotation(effector, q)))));
-            if (fold > StanceDip.MaxEffectorFold)
-            {
-                return false;
-            }
-        }
-
-        Model.Rig.Solve(low, dipped, positions, rotations);
-        return !_collision.LimbCollides(limb, positions, rotations, point);
+        return StanceDip.Hold(Ik, Model, _collision, low, (float[])q.Clone(), limb, point, normal, q, positions, rotations, seed: 1) is null;
     }
 }

@@ -177,44 +177,16 @@ internal sealed class StanceDip
             float[] next = (float[])q.Clone();
             foreach (LimbContact c in config.Contacts)
             {
-                RigLimb limb = _model.Limbs[c.Limb];
-                // The sole or palm stays on the surface where it can; otherwise it rolls on its point (a heel lifting in
-                // a deep crouch, a frog's wrist), the limb still kept out of the level below. Not a user's skinned
-                // paw: rolling on the contact point presses the blended skin of its sole into the ground (2.4 cm
-                // measured on the tailed quadruped's front paws).
-                if (!_ik.Solve(root, next, limb, c.Position, -c.Normal).Success && (_model.Source is not null || !_ik.Solve(root, next, limb, c.Position, null).Success))
+                if (Hold(_ik, _model, _collision, root, next, _model.Limbs[c.Limb], c.Position, c.Normal, config.Angles, positions, rotations) is string why)
                 {
-                    stop ??= $"{limb.Name} cannot hold its contact {depth * 100f:0.0} cm down";
+                    stop = $"{_model.Limbs[c.Limb].Name} {why} {depth * 100f:0.0} cm down";
                     break;
-                }
-            }
-
-            if (stop is null && _model.Source is not null)
-            {
-                // A user's skinned mesh blends the sole with the bone above the effector: an ankle or wrist folding
-                // far beyond its contact pose pulls the sole's blended skin into the ground (linear blend skinning).
-                foreach (LimbContact c in config.Contacts)
-                {
-                    int effector = _model.Limbs[c.Limb].EffectorJoint;
-                    float turn = 2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(effector, next), rig.LocalRotation(effector, config.Angles)))));
-                    if (turn > MaxEffectorFold)
-                    {
-                        stop ??= $"{_model.Limbs[c.Limb].Name} would fold its '{rig.Joints[effector].Name}' more than {MaxEffectorFold * 180f / MathF.PI:0}° {depth * 100f:0.0} cm down";
-                    }
                 }
             }
 
             if (stop is null)
             {
                 rig.Solve(root, next, positions, rotations);
-                foreach (LimbContact c in config.Contacts)
-                {
-                    if (_collision.LimbCollides(_model.Limbs[c.Limb], positions, rotations, c.Position))
-                    {
-                        stop ??= $"{_model.Limbs[c.Limb].Name} enters the level {depth * 100f:0.0} cm down";
-                    }
-                }
-
                 if (_collision.OtherBoneColliding(positions) is int bone and >= 0)
                 {
                     stop ??= $"bone '{rig.Joints[bone].Name}' enters the level {depth * 100f:0.0} cm down";
@@ -271,6 +243,33 @@ internal sealed class StanceDip
         }
 
         return new Table(config.Root, up, pitch, _pivot, deepest * (table.Count - 1) / Samples, [.. table], leg, stop);
+    }
+
+    /// <summary>
+    /// Holds <paramref name="limb"/> on <paramref name="point"/> (surface normal <paramref name="normal"/>) by IK into
+    /// <paramref name="q"/> with the root at <paramref name="root"/>, as a dip holds it: the sole or palm flat on the
+    /// surface where it can, otherwise rolling on its point (a heel lifting in a deep crouch, a frog's wrist), the limb
+    /// clear of the level. Not a user's skinned paw: rolling on its point, or folding its ankle or wrist more than
+    /// <see cref="MaxEffectorFold"/> from <paramref name="reference"/>, presses the sole's blended skin into the
+    /// ground (linear blend skinning; 2.4 cm measured on the tailed quadruped's front paws). Returns why it cannot
+    /// ("cannot hold its contact", "would fold its 'ankle' more than 20°", "enters the level"), or <c>null</c>.
+    /// </summary>
+    internal static string? Hold(LimbIk ik, CharacterModel model, BodyCollision collision, in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, float[] reference, Vector3[] positions, Quaternion[] rotations, int seed = 0)
+    {
+        bool skinned = model.Source is not null;
+        if (!ik.Solve(root, q, limb, point, -normal, seed).Success && (skinned || !ik.Solve(root, q, limb, point, null, seed).Success))
+        {
+            return "cannot hold its contact";
+        }
+
+        Rig rig = model.Rig;
+        if (skinned && rig.JointTurn(limb.EffectorJoint, q, reference) > MaxEffectorFold)
+        {
+            return $"would fold its '{rig.Joints[limb.EffectorJoint].Name}' more than {MaxEffectorFold * 180f / MathF.PI:0}°";
+        }
+
+        rig.Solve(root, q, positions, rotations);
+        return collision.LimbCollides(limb, positions, rotations, point) ? "enters the level" : null;
     }
 
     /// <summary>

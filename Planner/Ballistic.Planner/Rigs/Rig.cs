@@ -137,6 +137,10 @@ public sealed class Rig
         return true;
     }
 
+    /// <summary>How far (radians) joint <paramref name="joint"/>'s local rotation in <paramref name="a"/> is from that in <paramref name="b"/>.</summary>
+    internal float JointTurn(int joint, ReadOnlySpan<float> a, ReadOnlySpan<float> b) =>
+        2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(LocalRotation(joint, a), LocalRotation(joint, b)))));
+
     /// <summary>The local rotation of joint <paramref name="joint"/> (rest rotation, then its axes in order).</summary>
     public Quaternion LocalRotation(int joint, ReadOnlySpan<float> q)
     {
