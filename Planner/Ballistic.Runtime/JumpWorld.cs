@@ -528,7 +528,7 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>
     /// The walk the agent is walking now, with the world times of its start and end: the agent's root is
-    /// <c>Walk.PoseAt((float)(Time − StartTime))</c>. False when the agent stands or jumps (or is unknown).
+    /// <c>Walk.PoseAt((float)(Time − StartTime))</c>, raised by the animation's <c>WalkLift</c>. False when the agent stands or jumps (or is unknown).
     /// </summary>
     public bool TryGetCurrentWalk(AgentHandle agent, out WalkInfo walk)
     {

@@ -70,7 +70,24 @@ public sealed class JumpAnimation
         {
             _moveStarts[i + 1] = _moveStarts[i] + _moves[i].Duration + (i < stances.Count ? stances[i] : leadOut);
         }
+
+        // How far each walking frame's root is above its walk's path (an upright walk's lift and bob); lifts under
+        // 0.1 mm are rounding, not a lift, and count as none.
+        _lifts = new float[Frames.Count];
+        for (int f = 0; f < _lifts.Length && _moves.Length > 0; f++)
+        {
+            int m = MoveIndex(Frames[f].Time);
+            float t = Frames[f].Time - _moveStarts[m];
+            if (_moves[m] is Walk walk && t >= 0f && t <= walk.Duration)
+            {
+                float lift = Frames[f].Root.Position.Y - walk.PoseAt(t).Position.Y;
+                _lifts[f] = MathF.Abs(lift) >= 1e-4f ? lift : 0f;
+            }
+        }
     }
+
+    /// <summary>Per frame: how far (metres, world up) its root is above its walk's path; 0 outside walks.</summary>
+    private readonly float[] _lifts;
 
     /// <summary>Seconds of stance before the first move starts: the crouch before a first jump (0 before a walk).</summary>
     public float LeadIn { get; }
@@ -125,7 +142,8 @@ public sealed class JumpAnimation
 
     /// <summary>
     /// The root pose at clip time <paramref name="time"/> (seconds): exactly on the current jump's parabola in flight,
-    /// on the current walk's path while walking (<see cref="Walk.PoseAt"/>); on the ground between moves (and in the
+    /// on the current walk's path while walking (<see cref="Walk.PoseAt"/>), raised by the walk's <see cref="WalkLift"/>;
+    /// on the ground between moves (and in the
     /// lead-in and lead-out) interpolated between the frames' roots, the body sinking and rising on its contacts.
     /// </summary>
     public RootPose RootAt(float time)
@@ -141,10 +159,33 @@ public sealed class JumpAnimation
         return _moves[m] switch
         {
             Jump jump => jump.Arc.PoseAt(t),
-            Walk walk => walk.PoseAt(t),
+            Walk walk => Lifted(walk.PoseAt(t), WalkLift(time)),
             _ => throw new InvalidOperationException("Unknown move kind."),
         };
     }
+
+    /// <summary>
+    /// How far (metres, world up) the walking trunk is above its walk's path (<see cref="Walk.PoseAt"/>) at clip time
+    /// <paramref name="time"/> (seconds): an upright walk's hips rising over the held feet and dipping between steps,
+    /// none while it turns in place or stands; interpolated between frames; 0 outside walks.
+    /// </summary>
+    public float WalkLift(float time)
+    {
+        if (_lifts.Length == 0)
+        {
+            return 0f;
+        }
+
+        int hi = FrameAtOrAfter(time);
+        int lo = Math.Max(0, hi - 1);
+        float span = Frames[hi].Time - Frames[lo].Time;
+        float w = span > 0f ? Math.Clamp((time - Frames[lo].Time) / span, 0f, 1f) : 1f;
+        return _lifts[lo] == 0f && _lifts[hi] == 0f ? 0f : float.Lerp(_lifts[lo], _lifts[hi], w);
+    }
+
+    /// <summary><paramref name="pose"/> raised by <paramref name="lift"/> metres (itself when the lift is 0).</summary>
+    public static RootPose Lifted(in RootPose pose, float lift) =>
+        lift == 0f ? pose : new RootPose(pose.Position + new Vector3(0f, lift, 0f), pose.Rotation);
 
     /// <summary>The root interpolated between the frames around <paramref name="time"/> (position linearly, rotation by slerp).</summary>
     private RootPose FrameRoot(float time)

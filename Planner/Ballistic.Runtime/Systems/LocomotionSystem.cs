@@ -1,3 +1,4 @@
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
@@ -111,8 +112,8 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         }
         else if (current.Walk is { } walk)
         {
-            // Walking: exactly along the walk's path at its speed.
-            agents.Root[slot] = walk.PoseAt(MoveTime(time, start, current));
+            // Walking: exactly along the walk's path at its speed, the trunk raised by the animation's upright lift.
+            agents.Root[slot] = JumpAnimation.Lifted(walk.PoseAt(MoveTime(time, start, current)), path.Animation.WalkLift(t));
             agents.State[slot] = AgentState.Walking;
         }
         else
@@ -139,7 +140,8 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
     /// <summary>
     /// Seconds since the start of <paramref name="move"/> (a walk's first step), from world time: the formula every
     /// reader of the runtime's walks uses (<see cref="Paths.WalkInfo.StartTime"/> is <c>pathStart + move.Start</c>), so
-    /// that an agent's root equals <c>walk.PoseAt((float)(time − startTime))</c> bit for bit.
+    /// that an agent's root equals <c>walk.PoseAt((float)(time − startTime))</c> bit for bit, raised by the path's
+    /// <see cref="JumpAnimation.WalkLift"/>.
     /// </summary>
     public static float MoveTime(double time, double pathStart, in PathMove move) => (float)(time - (pathStart + move.Start));
 

@@ -73,6 +73,38 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// The eye reads a walk's hip height from the clip: the desert demo's walks with their trunk 0.15 L lower (the
+    /// limbs' angles as animated) cruise exactly 0.15 L lower above the held feet, their cadence unchanged.
+    /// </summary>
+    [Test]
+    public void AWalkCrouchedLowerIsSeenLowerByAsMuch()
+    {
+        (PlanningScene scene, _, AnimatedPlan plan) = BundledPlans.Plan("desert", "skeleton", 7.7f, 5.8f, -7.5f, -8.5f);
+        JumpAnimation animation = plan.Animation!;
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        float drop = 0.15f * eye.Leg;
+        bool Walking(float time) => animation.Moves[animation.MoveIndex(time)] is Walk && time > animation.MoveStart(animation.MoveIndex(time)) && time < animation.MoveEnd(animation.MoveIndex(time));
+        var lowered = new JumpAnimation(
+            animation.Model, animation.Moves, animation.Stances,
+            [.. animation.Frames.Select(f => Walking(f.Time) ? f with { Root = new RootPose(f.Root.Position - new Vector3(0f, drop, 0f), f.Root.Rotation) } : f)],
+            animation.ContactPhases, animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        AnimatorEye.Look asAnimated = eye.Measure(animation, scene);
+        AnimatorEye.Look crouched = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(lowered), lowered.Model).Measure(lowered, scene);
+        Assert.That(asAnimated.Upright.Seen, Is.Not.Empty, "the demo's walks cruise on ground under 10°");
+        Assert.Multiple(() =>
+        {
+            for (int i = 0; i < asAnimated.Upright.Seen.Count; i++)
+            {
+                float before = asAnimated.Upright.Seen[i].Score * AnimatorEye.UprightHips;
+                float after = crouched.Upright.Seen[i].Score * AnimatorEye.UprightHips;
+                Assert.That(before - after, Is.EqualTo(0.15f).Within(0.01f), $"{asAnimated.Upright.Seen[i].Seen} / {crouched.Upright.Seen[i].Seen}");
+            }
+
+            Assert.That(crouched.Cadence.Seen.Select(c => c.Score), Is.EqualTo(asAnimated.Cadence.Seen.Select(c => c.Score)));
+        });
+    }
+
+    /// <summary>
     /// The body faces the way it jumps (<see cref="QuerySettings.FaceJumps"/>), as the exported GLB shows (before
     /// jumps were turned, the desert demo's took off 77° and 100° off their direction and the frog's 83–159°). The
     /// ant's gap-course plan is not among these: one of its landings is still 47° off (issue 21).

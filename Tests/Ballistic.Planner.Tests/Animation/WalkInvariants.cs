@@ -46,13 +46,17 @@ internal static class WalkInvariants
             float t1 = animation.MoveEnd(m);
             Assert.That(t1 - t0, Is.EqualTo(walk.Duration).Within(1e-4f));
 
-            // The root is the walk's at every frame.
+            // The root is the walk's at every frame, raised straight up by the upright walk's lift (never lowered), which
+            // the clip's root gives between frames too.
             foreach (AnimationFrame frame in animation.Frames.Where(f => f.Time >= t0 && f.Time <= t1))
             {
                 RootPose expected = walk.PoseAt(frame.Time - t0);
-                Assert.That(Vector3.Distance(frame.Root.Position, expected.Position), Is.LessThan(1e-4f), $"root off the walk at {frame.Time:0.000} s");
+                Vector3 off = frame.Root.Position - expected.Position;
+                Assert.That(new Vector2(off.X, off.Z).Length(), Is.LessThan(1e-4f), $"root off the walk at {frame.Time:0.000} s");
+                Assert.That(off.Y, Is.GreaterThan(-1e-4f), $"root below the walk at {frame.Time:0.000} s");
+                Assert.That(animation.WalkLift(frame.Time), Is.EqualTo(off.Y).Within(1e-4f), $"the clip's lift at {frame.Time:0.000} s");
                 Assert.That(MathF.Abs(Quaternion.Dot(frame.Root.Rotation, expected.Rotation)), Is.GreaterThan(1f - 1e-5f), $"root turned off the walk at {frame.Time:0.000} s");
-                Assert.That(Vector3.Distance(animation.RootAt(frame.Time).Position, expected.Position), Is.LessThan(1e-4f));
+                Assert.That(Vector3.Distance(animation.RootAt(frame.Time).Position, frame.Root.Position), Is.LessThan(1e-4f));
             }
 
             // Held feet: on the ground, and not sliding; every foot's phases during the walk counted.

@@ -1,5 +1,6 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Tests.Runtime;
@@ -8,9 +9,10 @@ namespace Ballistic.Planner.Tests.Runtime;
 /// A test double of the whole-body animator that animates walks as well as jumps, simply: a fixed stance between
 /// moves, frames at the frame rate with the root exactly on the moves (<see cref="JumpAnimation.RootAt"/>: the arc in
 /// flight, <see cref="Walk.PoseAt"/> while walking) and the character's contact pose angles; no problems. Standing
-/// checks are the real animator's.
+/// checks are the real animator's. With a <c>lift</c>, walking frames have their root that far above the walk's path
+/// halfway through each walk, rising and falling as a sine of the walk's time (an upright walk's lift, simply).
 /// </summary>
-internal sealed class SimpleMoveAnimator(JumpAnimator real, float stance = 0.2f) : IJumpAnimator
+internal sealed class SimpleMoveAnimator(JumpAnimator real, float stance = 0.2f, float lift = 0f) : IJumpAnimator
 {
     /// <summary>Seconds of stance between two moves.</summary>
     public float Stance { get; } = stance;
@@ -28,7 +30,15 @@ internal sealed class SimpleMoveAnimator(JumpAnimator real, float stance = 0.2f)
         for (int k = 0; k <= n; k++)
         {
             float t = k == n ? timing.Duration : MathF.Min(k / frameRate, timing.Duration);
-            frames.Add(new AnimationFrame(t, timing.RootAt(t), real.Model.ContactPose));
+            RootPose root = timing.RootAt(t);
+            int m = timing.MoveIndex(t);
+            float since = t - timing.MoveStart(m);
+            if (lift != 0f && moves[m] is Walk walk && since > 0f && since < walk.Duration)
+            {
+                root = JumpAnimation.Lifted(root, lift * MathF.Sin(MathF.PI * since / walk.Duration));
+            }
+
+            frames.Add(new AnimationFrame(t, root, real.Model.ContactPose));
         }
 
         return new JumpAnimation(real.Model, moves, stances, frames, [], [], 0, 0);

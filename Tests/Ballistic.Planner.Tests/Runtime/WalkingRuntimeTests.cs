@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
@@ -236,6 +237,42 @@ public sealed class WalkingRuntimeTests
 
             Assert.That(walking, Is.GreaterThan(100), "the ticks measured had agents walking");
         }
+    }
+
+    /// <summary>
+    /// An upright walk's trunk rises above the walk's path in the animation (<see cref="Planner.Animation.JumpAnimation.WalkLift"/>);
+    /// the agent's root follows it (the skeleton is posed from the root and the animation's angles, solved for the
+    /// lifted trunk): exactly the walk's pose raised by the lift, the lift up to the animation's own.
+    /// </summary>
+    [Test]
+    public void AWalkingAgentsRootRisesWithItsAnimationsLift()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, new SimpleMoveAnimator(desert.Animator, lift: 0.05f));
+        using var world = new JumpWorld(kind.Scene.Level, new WorldSettings { AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump });
+        AddKindResult addedKind = world.AddKind(kind);
+        IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+        AddAgentResult added = world.AddAgent(addedKind.Kind, WalkingPaths.Centre(moves[0].To));
+        Assert.That(world.PerformMoves(added.Agent, moves).Ok, Is.True);
+        float highest = 0f;
+        int walking = 0;
+        RuntimeWorlds.Run(world, MaxTicks, RuntimeWorlds.Concluded, w =>
+        {
+            if (w.GetState(added.Agent) != AgentState.Walking || !w.TryGetCurrentWalk(added.Agent, out WalkInfo info))
+            {
+                return;
+            }
+
+            walking++;
+            RootPose onPath = info.Walk.PoseAt((float)(w.Time - info.StartTime));
+            float lift = w.GetPath(added.Agent)!.Animation.WalkLift(w.GetPathTime(added.Agent));
+            highest = MathF.Max(highest, lift);
+            Assert.That(w.GetRootPose(added.Agent), Is.EqualTo(Planner.Animation.JumpAnimation.Lifted(onPath, lift)));
+            Assert.That(lift, Is.InRange(0f, 0.05f + 1e-4f));
+        });
+
+        Assert.That(walking, Is.GreaterThan(30), "ticks walking were seen");
+        Assert.That(highest, Is.GreaterThan(0.045f), "the trunk rose with the animation mid-walk");
     }
 
     [Test]

@@ -69,6 +69,24 @@ internal sealed class AnimatorEye
     /// <summary>Interval (seconds) at which the whole body's vertices are checked against the level.</summary>
     public const float InsideStep = 1f / 15f;
 
+    /// <summary>Least median height of the hips above the held feet while a walk cruises on ground under 10°, in leg lengths.</summary>
+    public const float UprightHips = 0.88f;
+
+    /// <summary>Most foot placements per second of a biped cruising at its walk speed.</summary>
+    public const float MostCadence = 2.6f;
+
+    /// <summary>Least step (distance the trunk walks per foot placement) of a biped cruising, in leg lengths.</summary>
+    public const float LeastStep = 0.5f;
+
+    /// <summary>Least rise and fall (peak to peak) of the hips above the held feet while a walk cruises, in leg lengths.</summary>
+    public const float LeastBob = 0.02f;
+
+    /// <summary>Least fore-and-aft swing (peak to peak, degrees) of an arm about its shoulder while a walk cruises.</summary>
+    public const float LeastArmSwing = 20f;
+
+    /// <summary>Steepest ground (degrees) on which a cruising walk's hip height, bob and arms are judged.</summary>
+    private const float FlatGround = 10f;
+
     /// <summary>How far (metres) from a vertex the level's surface is looked for: depths up to this are measured.</summary>
     private const float InsideProbe = 0.1f;
 
@@ -90,9 +108,11 @@ internal sealed class AnimatorEye
     private readonly FootPair[] _pairs;
     private readonly (string Name, Node Hip, Node Ankle, float RestSideways)[] _legs;
     private readonly (string Name, Node Effector, float Offset)[] _effectors;
+    private readonly (string Name, Node Shoulder, Node Wrist, int Leg)[] _arms;
 
-    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, (Node Joint, Matrix4x4 InverseBind)[] bindings, string[] owners, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors)
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, (Node Joint, Matrix4x4 InverseBind)[] bindings, string[] owners, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors, (string, Node, Node, int)[] arms)
     {
+        _arms = arms;
         _owners = owners;
         _bindings = bindings;
         _groups = [.. Enumerable.Range(0, owners.Length).GroupBy(v => owners[v], StringComparer.Ordinal).Select(g => g.ToArray())];
@@ -217,7 +237,28 @@ internal sealed class AnimatorEye
             lefts[i], Named(rig.Joints[model.Limbs.First(l => l.Name == lefts[i]).EffectorJoint].Name),
             rights[i], Named(rig.Joints[model.Limbs.First(l => l.Name == rights[i]).EffectorJoint].Name)))];
         (string, Node, float)[] effectors = [.. model.Limbs.Select(l => (l.Name, Named(rig.Joints[l.EffectorJoint].Name), l.EffectorOffset.Length()))];
-        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors);
+        // Arms (hand limbs), each with the leg on its side whose hip is nearest its shoulder (-1: none).
+        var arms = new List<(string, Node, Node, int)>();
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Hand))
+        {
+            Node shoulder = Named(rig.Joints[limb.RootJoint].Name);
+            float side = Vector3.Dot(shoulder.WorldMatrix.Translation - trunkRest, left);
+            int partner = -1;
+            float nearest = float.PositiveInfinity;
+            for (int k = 0; k < legs.Count; k++)
+            {
+                Vector3 hip = legs[k].Item2.WorldMatrix.Translation;
+                float d = Vector3.Distance(hip, shoulder.WorldMatrix.Translation);
+                if (MathF.Abs(side) > 1e-3f && Vector3.Dot(hip - trunkRest, left) * side > 0f && d < nearest)
+                {
+                    (nearest, partner) = (d, k);
+                }
+            }
+
+            arms.Add((limb.Name, shoulder, Named(rig.Joints[limb.EffectorJoint].Name), partner));
+        }
+
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors, [.. arms]);
     }
 
     /// <summary>A left foot and its right partner (their effector bones).</summary>
@@ -413,6 +454,7 @@ internal sealed class AnimatorEye
         MeasureInside(animation, scene.Level.Triangles, level, look);
         MeasureLegs(animation, look);
         MeasureFootholds(animation, look);
+        MeasureWalks(animation, level, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
         {
             var arc = animation.Arcs[j];
@@ -716,6 +758,108 @@ internal sealed class AnimatorEye
         look.Footholds.Add(FootholdTolerance / MathF.Max(worst, 1e-6f), seen.Length > 0 ? seen : "every foothold on its reported contact");
     }
 
+    /// <summary>
+    /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
+    /// slows down; every 1/60 s): on ground under <see cref="FlatGround"/>° (a ray down from the trunk), the median
+    /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L, rising and
+    /// falling at least <see cref="LeastBob"/> L; a biped (two feet) at most <see cref="MostCadence"/> foot placements
+    /// per second, each step at least <see cref="LeastStep"/> L; each arm swinging at least
+    /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
+    /// above or below the trunk's side plane), against the leg on its side (forward as it goes back).
+    /// </summary>
+    private void MeasureWalks(JumpAnimation animation, TriangleBvh level, Look look)
+    {
+        float flat = MathF.Cos(FlatGround * MathF.PI / 180f);
+        int feet = _legs.Length;
+        for (int m = 0; m < animation.Moves.Count; m++)
+        {
+            if (animation.Moves[m] is not Walk walk)
+            {
+                continue;
+            }
+
+            float from = animation.MoveStart(m) + walk.StartTurn + Walk.RampTime;
+            float to = animation.MoveStart(m) + walk.StartTurn + walk.WalkTime - Walk.RampTime;
+            if (to - from < 0.5f)
+            {
+                continue;
+            }
+
+            string name = $"walk {m}";
+            var hips = new List<float>();
+            var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
+            for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
+            {
+                Vector3 trunk = TrunkAt(t);
+                if (!level.Raycast(trunk, -Vector3.UnitY, 4f * Leg, out RayHit ground) || MathF.Abs(ground.Normal.Y) < flat)
+                {
+                    continue;
+                }
+
+                float sum = 0f;
+                int held = 0;
+                foreach (ContactPhase phase in animation.ContactPhases)
+                {
+                    if (t >= phase.From && t <= phase.To && _legs.FirstOrDefault(l => l.Name == animation.Model.Limbs[phase.Limb].Name) is { Hip: not null } leg)
+                    {
+                        sum += WorldAt(leg.Hip, t).Translation.Y - phase.Position.Y;
+                        held++;
+                    }
+                }
+
+                if (held > 0)
+                {
+                    hips.Add(sum / held / Leg);
+                }
+
+                Vector3 heading = HeadingAt(t);
+                for (int a = 0; a < _arms.Length; a++)
+                {
+                    (_, Node shoulder, Node wrist, int partner) = _arms[a];
+                    Vector3 arm = WorldAt(wrist, t).Translation - WorldAt(shoulder, t).Translation;
+                    float angle = MathF.Asin(Math.Clamp(Vector3.Dot(Vector3.Normalize(arm), heading), -1f, 1f)) * 180f / MathF.PI;
+                    float legAhead = partner < 0 ? 0f : Vector3.Dot(WorldAt(_legs[partner].Ankle, t).Translation - WorldAt(_legs[partner].Hip, t).Translation, heading);
+                    arms[a].Add((angle, legAhead));
+                }
+            }
+
+            if (hips.Count >= 10)
+            {
+                float[] sorted = [.. hips.Order()];
+                float median = sorted[sorted.Length / 2];
+                look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet");
+                float bob = sorted[^1] - sorted[0];
+                look.Bob.Add(bob / LeastBob, $"{name}'s hips rise and fall {bob:0.000} L");
+                for (int a = 0; a < _arms.Length; a++)
+                {
+                    List<(float Arm, float Leg)> samples = arms[a];
+                    float swing = samples.Max(s => s.Arm) - samples.Min(s => s.Arm);
+                    float against = _arms[a].Leg < 0 ? -1f : Correlation(samples);
+                    look.ArmSwing.Add(against < 0f ? swing / LeastArmSwing : 0f, $"{name}'s {_arms[a].Name} swings {swing:0}° {(against < 0f ? "against" : "with")} its leg");
+                }
+            }
+
+            if (feet == 2)
+            {
+                int placed = animation.ContactPhases.Count(p => p.From > from && p.From <= to && _legs.Any(l => l.Name == animation.Model.Limbs[p.Limb].Name));
+                float cadence = placed / (to - from);
+                float step = walk.Speed / MathF.Max(cadence, 1e-3f) / Leg;
+                look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.0} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
+            }
+        }
+    }
+
+    /// <summary>Pearson correlation of the pairs' two values (0 when either does not vary).</summary>
+    private static float Correlation(List<(float A, float B)> pairs)
+    {
+        float ma = pairs.Average(p => p.A);
+        float mb = pairs.Average(p => p.B);
+        float ab = pairs.Sum(p => (p.A - ma) * (p.B - mb));
+        float aa = pairs.Sum(p => (p.A - ma) * (p.A - ma));
+        float bb = pairs.Sum(p => (p.B - mb) * (p.B - mb));
+        return aa > 1e-9f && bb > 1e-9f ? ab / MathF.Sqrt(aa * bb) : 0f;
+    }
+
     private static float Between(Quaternion a, Quaternion b) =>
         2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(Quaternion.Normalize(a), Quaternion.Normalize(b))), 0f, 1f)) * 180f / MathF.PI;
 
@@ -787,8 +931,16 @@ internal sealed class AnimatorEye
 
         public Criterion Inside { get; } = new(higherPasses: true);
 
+        public Criterion Upright { get; } = new(higherPasses: true);
+
+        public Criterion Bob { get; } = new(higherPasses: true);
+
+        public Criterion Cadence { get; } = new(higherPasses: true);
+
+        public Criterion ArmSwing { get; } = new(higherPasses: true);
+
         public IEnumerable<(string Name, Criterion Criterion)> All =>
-            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside)];
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside), ("upright", Upright), ("bob", Bob), ("cadence", Cadence), ("arm swing", ArmSwing)];
 
         public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
     }
