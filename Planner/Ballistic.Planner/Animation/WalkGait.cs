@@ -40,6 +40,27 @@ internal sealed class WalkGait
     /// <summary>Share of the range a held foot's leg reaches (along the trunk's forward axis) that a step may use.</summary>
     public const float ReachMargin = 0.7f;
 
+    /// <summary>
+    /// Height of the hips above the held feet (in rest leg lengths) an upright walk rises to at full speed: a walker's
+    /// stance knee is nearly straight at mid-stance, the hip joints at 0.93–0.98 L.
+    /// </summary>
+    public const float UprightHips = 0.93f;
+
+    /// <summary>Share of a leg's full length (hip to ankle along its bones) the hips rise to at most over a held foot: the knee stays a little bent.</summary>
+    public const float KneeMargin = 0.99f;
+
+    /// <summary>Share of the range a held foot's leg reaches that an upright walk's step may use (the hips dip between steps to let it).</summary>
+    public const float UprightReachMargin = 0.95f;
+
+    /// <summary>Amplitude of the arms' swing about the shoulders in an upright walk at full speed, radians (15°), opposite the legs.</summary>
+    public const float ArmSwing = MathF.PI / 12f;
+
+    /// <summary>Time (seconds) over which a hand drops from its hanging pose to beside the thigh as an upright walk starts, and back as it ends.</summary>
+    private const float ArmDrop = 0.4f;
+
+    /// <summary>Time (seconds) over which the hips' lift is smoothed: no faster rise or fall than a walker's.</summary>
+    private const float LiftSmoothing = 0.03f;
+
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
 
@@ -94,6 +115,15 @@ internal sealed class WalkGait
     private readonly LimbIk _swingIk;
     private readonly BodyCollision _collision;
 
+    /// <summary>The rest pose's leg (metres): a hip's greatest height above its sole with every angle at rest.</summary>
+    private readonly float _restLeg;
+
+    /// <summary>Per limb: the length of its bones from root joint to effector joint (metres), in the rest pose.</summary>
+    private readonly float[] _bones;
+
+    /// <summary>Per limb: its contact point's offset from its effector joint in the rest pose, model frame (metres).</summary>
+    private readonly Vector3[] _soles;
+
     /// <summary>Creates the gait of <paramref name="model"/> on <paramref name="scene"/>, using the animator's contact generator.</summary>
     public WalkGait(PlanningScene scene, CharacterModel model, ContactGenerator contacts)
     {
@@ -103,6 +133,26 @@ internal sealed class WalkGait
         _sole = new SoleHold(model.Rig);
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
+
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
+        _bones = new float[model.Limbs.Count];
+        _soles = new Vector3[model.Limbs.Count];
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            RigLimb limb = model.Limbs[l];
+            for (int k = 1; k < limb.Chain.Count; k++)
+            {
+                _bones[l] += Vector3.Distance(positions[limb.Chain[k - 1]], positions[limb.Chain[k]]);
+            }
+
+            _soles[l] = limb.EffectorPosition(positions, rotations) - positions[limb.EffectorJoint];
+            if (limb.Kind == LimbKind.Foot)
+            {
+                _restLeg = MathF.Max(_restLeg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+            }
+        }
     }
 
     /// <summary>A walk animated on its own: frames and contact phases on the walk's clock (0 to its duration), problems, frames with a bone in the level, the step length (metres) and half-cycle count chosen.</summary>
@@ -129,8 +179,19 @@ internal sealed class WalkGait
     /// <param name="start">Where the previous move left the body (a landing contact pose, or the first stance's).</param>
     /// <param name="end">The pose the next move needs (a takeoff contact pose, or the last stance's).</param>
     /// <param name="frameRate">Frames per second.</param>
-    public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate) =>
-        new Run(this, move, walk, start, end, frameRate).Animate();
+    public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
+    {
+        // Upright first (hips lifted toward UprightHips, the step from the leg and speed, arms swinging); where the
+        // body cannot walk so on this ground, the walk at the stances' own height.
+        Clip upright = new Run(this, move, walk, start, end, frameRate, upright: true).Animate();
+        if (upright.Problems.Count == 0 || !(_restLeg > 0f))
+        {
+            return upright;
+        }
+
+        Clip low = new Run(this, move, walk, start, end, frameRate, upright: false).Animate();
+        return low.Problems.Count < upright.Problems.Count ? low : upright;
+    }
 
     /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/> (<see cref="SoleHold"/>).</summary>
     private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) => _sole.Hold(root, q, limb, point, normal);
@@ -174,9 +235,11 @@ internal sealed class WalkGait
         private int[] _swingEnd = [];
         private Vector3[] _startLocal = [];
         private Vector3[] _endLocal = [];
+        private readonly bool _upright;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool upright)
         {
+            _upright = upright && gait._restLeg > 0f && walk.Speed > 0f;
             _gait = gait;
             _model = gait._model;
             _rig = _model.Rig;
@@ -232,7 +295,18 @@ internal sealed class WalkGait
             }
 
             float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
-            _step = MathF.Max(MathF.Min(step, ReachMargin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+            float margin = ReachMargin;
+            if (_upright)
+            {
+                // Upright: the step a walker of this leg takes at this speed (Alexander's stride 2.3·L·Fr^0.3, Fr =
+                // v²/(g·L): about 0.75 L at a relaxed walk), as much of the reach as the hips dipping between steps allows.
+                float leg = _gait._restLeg;
+                float froude = _walk.Speed * _walk.Speed / (9.81f * leg);
+                step = MathF.Max(1.15f * leg * MathF.Pow(froude, 0.3f), 2f * _walk.Speed * MinHalfCycle);
+                margin = UprightReachMargin;
+            }
+
+            _step = MathF.Max(MathF.Min(step, margin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
 
             // Feet in two groups; the group whose feet can stay least on the start contacts steps first.
             int[] group = Groups();
@@ -253,9 +327,36 @@ internal sealed class WalkGait
                 _swingEnd[k] = Math.Max(_swingStart[k] + 1, Step(k == n - 2 && n > 2 ? t1 : t1 - overlap));
             }
 
+            // The feet's footholds, then (upright) the hips lifted as far as the held feet let them, then the limbs moved.
+            var plans = new List<Segment>?[_limbs];
             for (int l = 0; l < _limbs; l++)
             {
-                Perform(l, IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : HandPlan(l, n));
+                plans[l] = IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : null;
+            }
+
+            if (_upright)
+            {
+                Lift(plans);
+            }
+
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (plans[l] is List<Segment> plan)
+                {
+                    Perform(l, plan);
+                }
+            }
+
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (!IsFoot(l))
+                {
+                    Perform(l, HandPlan(l, n));
+                    if (_upright && n > 2)
+                    {
+                        SwingArm(l, _swingEnd[0], _swingStart[n - 1]);
+                    }
+                }
             }
 
             // No foot steps to a new foothold faster than MinAirTime allows (it would read as a slide): a walk too
@@ -343,6 +444,198 @@ internal sealed class WalkGait
                 }
 
                 _angles[i] = q;
+            }
+        }
+
+        /// <summary>
+        /// Lifts the roots (world up) toward hips <see cref="UprightHips"/> of the rest leg above the held feet, in
+        /// proportion to the walk's speed (none while it turns in place or stands): at each fine step as far as every
+        /// held foot (and a swinging one near its footholds) stays within <see cref="KneeMargin"/> of its leg's length
+        /// from the hip, its sole flat; eroded then averaged over <see cref="LiftSmoothing"/>, so the lift never
+        /// exceeds what the feet allow. The hips rise over each held foot and dip where the feet are apart: the bob.
+        /// </summary>
+        private void Lift(List<Segment>?[] plans)
+        {
+            float target = UprightHips * _gait._restLeg;
+            float[] raw = new float[_steps + 1];
+            var points = new List<(int Limb, Vector3 Point)>();
+            for (int i = 0; i <= _steps; i++)
+            {
+                float w = Math.Clamp(_walk.SpeedAt(Time(i)) / _walk.Speed, 0f, 1f);
+                if (w <= 0f)
+                {
+                    continue;
+                }
+
+                points.Clear();
+                float heldY = 0f;
+                int held = 0;
+                for (int l = 0; l < _limbs; l++)
+                {
+                    if (plans[l] is not List<Segment> plan)
+                    {
+                        continue;
+                    }
+
+                    for (int s = 0; s < plan.Count; s++)
+                    {
+                        Segment segment = plan[s];
+                        if (i < segment.From || i > segment.To)
+                        {
+                            continue;
+                        }
+
+                        if (segment is Holding hold)
+                        {
+                            points.Add((l, hold.Point));
+                            heldY += hold.Point.Y;
+                            held++;
+                        }
+                        else if (segment is Swinging swing)
+                        {
+                            float u = (i - swing.From) / (float)Math.Max(1, swing.To - swing.From);
+                            if (u < 0.3f && s > 0 && plan[s - 1] is Holding before)
+                            {
+                                points.Add((l, before.Point));
+                            }
+                            else if (u > 0.7f && s + 1 < plan.Count && plan[s + 1] is Holding after)
+                            {
+                                points.Add((l, after.Point));
+                            }
+                        }
+
+                        break;
+                    }
+                }
+
+                if (held == 0)
+                {
+                    continue;
+                }
+
+                _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                float hips = 0f;
+                int feet = 0;
+                float lift = float.PositiveInfinity;
+                foreach ((int l, Vector3 point) in points)
+                {
+                    Vector3 hip = _positions[_model.Limbs[l].RootJoint];
+                    Vector3 ankle = point - Vector3.Transform(_gait._soles[l], _roots[i].Rotation);
+                    Vector3 d = hip - ankle;
+                    float across = (d.X * d.X) + (d.Z * d.Z);
+                    float reach = KneeMargin * _gait._bones[l];
+                    lift = MathF.Min(lift, reach * reach > across ? MathF.Sqrt((reach * reach) - across) - d.Y : 0f);
+                    hips += hip.Y;
+                    feet++;
+                }
+
+                float want = target - ((hips / feet) - (heldY / held));
+                raw[i] = Math.Clamp(MathF.Min(want, lift), 0f, target) * w;
+            }
+
+            int k = Math.Max(1, (int)MathF.Round(LiftSmoothing / _h));
+            float[] eroded = new float[raw.Length];
+            for (int i = 0; i < raw.Length; i++)
+            {
+                float least = float.PositiveInfinity;
+                for (int j = Math.Max(0, i - k); j <= Math.Min(_steps, i + k); j++)
+                {
+                    least = MathF.Min(least, raw[j]);
+                }
+
+                eroded[i] = least;
+            }
+
+            for (int i = 0; i < raw.Length; i++)
+            {
+                float sum = 0f;
+                for (int j = i - k; j <= i + k; j++)
+                {
+                    sum += eroded[Math.Clamp(j, 0, _steps)];
+                }
+
+                float lift = sum / ((2 * k) + 1);
+                _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * lift), _roots[i].Rotation);
+            }
+        }
+
+        /// <summary>
+        /// Swings hand <paramref name="l"/> fore and aft about its shoulder from fine step <paramref name="from"/> to
+        /// <paramref name="to"/> (while it hangs): by IK, its effector brought down beside the thigh over
+        /// <see cref="ArmDrop"/> (a rig hanging its arms out in a T stays so no longer) and turned about the trunk's left axis by up to
+        /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed;
+        /// where the arm cannot reach or would touch the level it keeps its last swing.
+        /// </summary>
+        private void SwingArm(int l, int from, int to)
+        {
+            RigLimb limb = _model.Limbs[l];
+            _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
+            Vector3 shoulderLocal = ToLocal(_roots[from], _positions[limb.RootJoint]);
+            int foot = -1;
+            float nearest = float.PositiveInfinity;
+            for (int o = 0; o < _limbs; o++)
+            {
+                Vector3 hip = ToLocal(_roots[from], _positions[_model.Limbs[o].RootJoint]);
+                float d = Vector3.Distance(hip, shoulderLocal);
+                if (IsFoot(o) && hip.X * shoulderLocal.X > 0f && d < nearest)
+                {
+                    (nearest, foot) = (d, o);
+                }
+            }
+
+            if (foot < 0 || to - from < 2)
+            {
+                return;
+            }
+
+            int ramp = Math.Max(1, (int)MathF.Round(ArmDrop / _h));
+            float side = MathF.Sign(shoulderLocal.X);
+            float[]? last = null;
+            for (int i = from; i <= to; i++)
+            {
+                _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                Vector3 shoulder = _positions[limb.RootJoint];
+                Vector3 hanging = limb.EffectorPosition(_positions, _rotations);
+                RigLimb leg = _model.Limbs[foot];
+                float behind = -ToLocal(_roots[i], _positions[leg.EffectorJoint]).Z + ToLocal(_roots[i], _positions[leg.RootJoint]).Z;
+                float share = Math.Clamp(behind / MathF.Max(0.5f * _step, 1e-3f), -1f, 1f);
+                float fade = MathF.Min(1f, MathF.Min(i - from, to - i) / (float)ramp);
+                float angle = ArmSwing * share * Smooth(fade) * Math.Clamp(_walk.SpeedAt(Time(i)) / _walk.Speed, 0f, 1f);
+                Vector3 left = Vector3.Transform(Vector3.UnitX, _roots[i].Rotation);
+                Vector3 forward = Vector3.Transform(Vector3.UnitZ, _roots[i].Rotation);
+
+                // The hand drops from its hanging pose to beside the thigh (the arm down, elbow a little bent, clear of
+                // the body sideways), then swings about the shoulder.
+                float reach = _gait._bones[l];
+                Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * (0.08f * reach)) + (left * (side * 0.06f * reach));
+                Vector3 hand = Vector3.Lerp(hanging, down, Smooth(fade));
+                Vector3 target = shoulder + Vector3.Transform(hand - shoulder, Quaternion.CreateFromAxisAngle(left, -angle));
+                float[] trial = (float[])_angles[i].Clone();
+                if (last is not null)
+                {
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        trial[d] = last[d];
+                    }
+                }
+
+                bool ok = _gait._swingIk.Solve(_roots[i], trial, limb, target, null).Success;
+                if (ok)
+                {
+                    _rig.Solve(_roots[i], trial, _positions, _rotations);
+                    ok = !_gait._collision.LimbCollides(limb, _positions, _rotations, null);
+                }
+
+                float[]? keep = ok ? trial : last;
+                if (keep is not null)
+                {
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        _angles[i][d] = keep[d];
+                    }
+                }
+
+                last = keep;
             }
         }
 
@@ -1012,7 +1305,9 @@ internal sealed class WalkGait
                 mid[d] = float.Lerp(before[d], after[d], 0.5f);
             }
 
-            _rig.Solve(_walk.PoseAt(0.5f * (Time(i - 1) + Time(i))), mid, _positions, _rotations);
+            RootPose previous = _roots[i - 1];
+            RootPose now = _roots[i];
+            _rig.Solve(new RootPose(Vector3.Lerp(previous.Position, now.Position, 0.5f), Quaternion.Slerp(previous.Rotation, now.Rotation, 0.5f)), mid, _positions, _rotations);
             return _gait._collision.LimbCollides(limb, _positions, _rotations, contact);
         }
 
