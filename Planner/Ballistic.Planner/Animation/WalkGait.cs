@@ -9,8 +9,9 @@ using Ballistic.Planner.Roadmaps;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> exactly (turning in place,
-/// speeding up, walking, slowing down, turning in place); the feet (<see cref="LimbKind.Foot"/> limbs) form two
+/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> (turning in place,
+/// speeding up, walking, slowing down, turning in place), raised while walking by an upright walk's lift (issue 21:
+/// see <see cref="Animate"/>); the feet (<see cref="LimbKind.Foot"/> limbs) form two
 /// groups that alternate, split by side and rank front to back (a biped's left and right, a quadruped's diagonal
 /// pairs: a trot, a hexapod's tripods). The walk is cut into half-cycles in time; in each one group swings while the
 /// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
@@ -44,7 +45,7 @@ internal sealed class WalkGait
     /// Height of the hips above the held feet (in rest leg lengths) an upright walk rises to at full speed: a walker's
     /// stance knee is nearly straight at mid-stance, the hip joints at 0.93–0.98 L.
     /// </summary>
-    public const float UprightHips = 0.93f;
+    public const float UprightHips = 0.96f;
 
     /// <summary>Share of a leg's full length (hip to ankle along its bones) the hips rise to at most over a held foot: the knee stays a little bent.</summary>
     public const float KneeMargin = 0.99f;
@@ -52,11 +53,17 @@ internal sealed class WalkGait
     /// <summary>Share of the range a held foot's leg reaches that an upright walk's step may use (the hips dip between steps to let it).</summary>
     public const float UprightReachMargin = 0.95f;
 
-    /// <summary>Amplitude of the arms' swing about the shoulders in an upright walk at full speed, radians (15°), opposite the legs.</summary>
-    public const float ArmSwing = MathF.PI / 12f;
+    /// <summary>Amplitude of the arms' swing about the shoulders in an upright walk at full speed, radians (20°), opposite the legs.</summary>
+    public const float ArmSwing = MathF.PI / 9f;
 
     /// <summary>Time (seconds) over which a hand drops from its hanging pose to beside the thigh as an upright walk starts, and back as it ends.</summary>
     private const float ArmDrop = 0.4f;
+
+    /// <summary>Share of a swing at each end during which the lift keeps the swinging foot within reach of the foothold it leaves or reaches.</summary>
+    private const float SwingNearFoothold = 0.1f;
+
+    /// <summary>Most the hips rise above their lowest within a step either way in an upright walk, in rest leg lengths: a walker's pelvis bobs about 0.05 L.</summary>
+    public const float MostBob = 0.06f;
 
     /// <summary>Time (seconds) over which the hips' lift is smoothed: no faster rise or fall than a walker's.</summary>
     private const float LiftSmoothing = 0.03f;
@@ -173,7 +180,14 @@ internal sealed class WalkGait
     /// <summary>The limb swings from the state before it to the state after it.</summary>
     private sealed record Swinging(int From, int To) : Segment(From, To);
 
-    /// <summary>Animates <paramref name="walk"/> from the contact pose <paramref name="start"/> to <paramref name="end"/>.</summary>
+    /// <summary>
+    /// Animates <paramref name="walk"/> from the contact pose <paramref name="start"/> to <paramref name="end"/>,
+    /// upright where the body can: steps from the rest leg and speed (stride 2.3·L·Fr^0.3) within
+    /// <see cref="UprightReachMargin"/> of the held legs' reach, the trunk lifted toward <see cref="UprightHips"/> as
+    /// far as the held feet allow (<see cref="KneeMargin"/>), the hands down beside the thighs swinging
+    /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: lifted with the classic steps, then at
+    /// the stances' own height; the first clean one is kept, else the one with the fewest problems.
+    /// </summary>
     /// <param name="move">Index of the walk in the path, for problems.</param>
     /// <param name="walk">The walk.</param>
     /// <param name="start">Where the previous move left the body (a landing contact pose, or the first stance's).</param>
@@ -181,16 +195,30 @@ internal sealed class WalkGait
     /// <param name="frameRate">Frames per second.</param>
     public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
     {
-        // Upright first (hips lifted toward UprightHips, the step from the leg and speed, arms swinging); where the
-        // body cannot walk so on this ground, the walk at the stances' own height.
-        Clip upright = new Run(this, move, walk, start, end, frameRate, upright: true).Animate();
-        if (upright.Problems.Count == 0 || !(_restLeg > 0f))
+        // Upright first (hips lifted toward UprightHips, the step from the leg and speed); where the body cannot walk
+        // so on this ground, lifted with steps the legs reach easily; then at the stances' own height. The first
+        // without problems is kept, else the one with fewest.
+        Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true).Animate();
+        if (best.Problems.Count == 0 || !(_restLeg > 0f))
         {
-            return upright;
+            return best;
         }
 
-        Clip low = new Run(this, move, walk, start, end, frameRate, upright: false).Animate();
-        return low.Problems.Count < upright.Problems.Count ? low : upright;
+        foreach (bool lift in (bool[])[true, false])
+        {
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift, longSteps: false).Animate();
+            if (clip.Problems.Count < best.Problems.Count)
+            {
+                best = clip;
+            }
+
+            if (best.Problems.Count == 0)
+            {
+                break;
+            }
+        }
+
+        return best;
     }
 
     /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/> (<see cref="SoleHold"/>).</summary>
@@ -235,11 +263,15 @@ internal sealed class WalkGait
         private int[] _swingEnd = [];
         private Vector3[] _startLocal = [];
         private Vector3[] _endLocal = [];
-        private readonly bool _upright;
+        private readonly bool _lift;
+        private readonly bool _longSteps;
+        private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool upright)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps)
         {
-            _upright = upright && gait._restLeg > 0f && walk.Speed > 0f;
+            _arms = gait._restLeg > 0f && walk.Speed > 0f;
+            _lift = lift && _arms;
+            _longSteps = longSteps && _arms;
             _gait = gait;
             _model = gait._model;
             _rig = _model.Rig;
@@ -296,7 +328,7 @@ internal sealed class WalkGait
 
             float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
             float margin = ReachMargin;
-            if (_upright)
+            if (_longSteps)
             {
                 // Upright: the step a walker of this leg takes at this speed (Alexander's stride 2.3·L·Fr^0.3, Fr =
                 // v²/(g·L): about 0.75 L at a relaxed walk), as much of the reach as the hips dipping between steps allows.
@@ -334,7 +366,7 @@ internal sealed class WalkGait
                 plans[l] = IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : null;
             }
 
-            if (_upright)
+            if (_lift)
             {
                 Lift(plans);
             }
@@ -352,7 +384,7 @@ internal sealed class WalkGait
                 if (!IsFoot(l))
                 {
                     Perform(l, HandPlan(l, n));
-                    if (_upright && n > 2)
+                    if (_arms && n > 2)
                     {
                         SwingArm(l, _swingEnd[0], _swingStart[n - 1]);
                     }
@@ -458,6 +490,8 @@ internal sealed class WalkGait
         {
             float target = UprightHips * _gait._restLeg;
             float[] raw = new float[_steps + 1];
+            float[] height = new float[_steps + 1];
+            bool[] measured = new bool[_steps + 1];
             var points = new List<(int Limb, Vector3 Point)>();
             for (int i = 0; i <= _steps; i++)
             {
@@ -494,11 +528,11 @@ internal sealed class WalkGait
                         else if (segment is Swinging swing)
                         {
                             float u = (i - swing.From) / (float)Math.Max(1, swing.To - swing.From);
-                            if (u < 0.3f && s > 0 && plan[s - 1] is Holding before)
+                            if (u < SwingNearFoothold && s > 0 && plan[s - 1] is Holding before)
                             {
                                 points.Add((l, before.Point));
                             }
-                            else if (u > 0.7f && s + 1 < plan.Count && plan[s + 1] is Holding after)
+                            else if (u > 1f - SwingNearFoothold && s + 1 < plan.Count && plan[s + 1] is Holding after)
                             {
                                 points.Add((l, after.Point));
                             }
@@ -531,6 +565,26 @@ internal sealed class WalkGait
 
                 float want = target - ((hips / feet) - (heldY / held));
                 raw[i] = Math.Clamp(MathF.Min(want, lift), 0f, target) * w;
+                height[i] = (hips / feet) - (heldY / held) + raw[i];
+                measured[i] = true;
+            }
+
+            // The hips rise and fall at most MostBob of the leg within a step either way (a walker's pelvis bobs 4–5
+            // cm): the peaks over each foot are kept within that of the dips between the steps.
+            int window = Math.Max(1, (int)MathF.Round(_step / _walk.Speed / _h));
+            float bob = MostBob * _gait._restLeg;
+            for (int i = 0; i <= _steps; i++)
+            {
+                float floor = float.PositiveInfinity;
+                for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+                {
+                    floor = measured[j] ? MathF.Min(floor, height[j]) : floor;
+                }
+
+                if (measured[i] && float.IsFinite(floor))
+                {
+                    raw[i] = MathF.Max(0f, MathF.Min(raw[i], raw[i] - (height[i] - (floor + bob))));
+                }
             }
 
             int k = Math.Max(1, (int)MathF.Round(LiftSmoothing / _h));

@@ -81,6 +81,9 @@ internal sealed class AnimatorEye
     /// <summary>Least rise and fall (peak to peak) of the hips above the held feet while a walk cruises, in leg lengths.</summary>
     public const float LeastBob = 0.02f;
 
+    /// <summary>Most rise and fall (peak to peak) of the hips while a walk cruises, in leg lengths: a walker's pelvis bobs 4–5 cm, about 0.05 L; more reads as bouncing.</summary>
+    public const float MostBob = 0.08f;
+
     /// <summary>Least fore-and-aft swing (peak to peak, degrees) of an arm about its shoulder while a walk cruises.</summary>
     public const float LeastArmSwing = 20f;
 
@@ -762,7 +765,8 @@ internal sealed class AnimatorEye
     /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
     /// slows down; every 1/60 s): on ground under <see cref="FlatGround"/>° (a ray down from the trunk), the median
     /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L, rising and
-    /// falling at least <see cref="LeastBob"/> L; a biped (two feet) at most <see cref="MostCadence"/> foot placements
+    /// falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about their mean over the second
+    /// around (5th to 95th percentile: the steps' bob, not the ground's slope); a biped (two feet) at most <see cref="MostCadence"/> foot placements
     /// per second, each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back).
@@ -787,6 +791,7 @@ internal sealed class AnimatorEye
 
             string name = $"walk {m}";
             var hips = new List<float>();
+            var times = new List<float>();
             var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
             {
@@ -810,6 +815,7 @@ internal sealed class AnimatorEye
                 if (held > 0)
                 {
                     hips.Add(sum / held / Leg);
+                    times.Add(t);
                 }
 
                 Vector3 heading = HeadingAt(t);
@@ -828,8 +834,28 @@ internal sealed class AnimatorEye
                 float[] sorted = [.. hips.Order()];
                 float median = sorted[sorted.Length / 2];
                 look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet");
-                float bob = sorted[^1] - sorted[0];
-                look.Bob.Add(bob / LeastBob, $"{name}'s hips rise and fall {bob:0.000} L");
+                // The bob: the hips' rise and fall about their mean over the second around each sample (the ground's and
+                // the stances' slower changes taken out), 5th to 95th percentile.
+                float[] residual = new float[hips.Count];
+                for (int k = 0; k < hips.Count; k++)
+                {
+                    float around = 0f;
+                    int count = 0;
+                    for (int j = 0; j < hips.Count; j++)
+                    {
+                        if (MathF.Abs(times[j] - times[k]) <= 0.5f)
+                        {
+                            around += hips[j];
+                            count++;
+                        }
+                    }
+
+                    residual[k] = hips[k] - (around / count);
+                }
+
+                Array.Sort(residual);
+                float bob = residual[(int)(0.95f * (residual.Length - 1))] - residual[(int)(0.05f * (residual.Length - 1))];
+                look.Bob.Add(MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f)), $"{name}'s hips rise and fall {bob:0.000} L");
                 for (int a = 0; a < _arms.Length; a++)
                 {
                     List<(float Arm, float Leg)> samples = arms[a];
