@@ -50,15 +50,25 @@ internal sealed class StanceDip
         _ik = ik;
         _collision = collision;
 
-        // The rest pose's leg: a hip's height above its sole with every angle at rest (a rig modelled standing).
+        var positions = new Vector3[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, new Quaternion[model.Rig.Joints.Count]);
+        _pivot = positions[0];
+        _restLeg = RestLegLength(model);
+    }
+
+    /// <summary>The rest pose's leg (metres): a foot's root joint's greatest height above its contact point with every angle at rest (a rig modelled standing); 0 without feet.</summary>
+    public static float RestLegLength(CharacterModel model)
+    {
         var positions = new Vector3[model.Rig.Joints.Count];
         var rotations = new Quaternion[model.Rig.Joints.Count];
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
-        _pivot = positions[0];
+        float leg = 0f;
         foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
-            _restLeg = MathF.Max(_restLeg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+            leg = MathF.Max(leg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
         }
+
+        return leg;
     }
 
     /// <summary>

@@ -155,11 +155,9 @@ internal sealed class WalkGait
             }
 
             _soles[l] = limb.EffectorPosition(positions, rotations) - positions[limb.EffectorJoint];
-            if (limb.Kind == LimbKind.Foot)
-            {
-                _restLeg = MathF.Max(_restLeg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
-            }
         }
+
+        _restLeg = StanceDip.RestLegLength(model);
     }
 
     /// <summary>A walk animated on its own: frames and contact phases on the walk's clock (0 to its duration), problems, frames with a bone in the level, the step length (metres) and half-cycle count chosen.</summary>
@@ -583,7 +581,7 @@ internal sealed class WalkGait
 
                 if (measured[i] && float.IsFinite(floor))
                 {
-                    raw[i] = MathF.Max(0f, MathF.Min(raw[i], raw[i] - (height[i] - (floor + bob))));
+                    raw[i] = MathF.Max(0f, raw[i] - MathF.Max(0f, height[i] - (floor + bob)));
                 }
             }
 
