@@ -22,6 +22,9 @@ public sealed class ContactGenerator
     /// <summary>Most (radians, 50°) the effector joint of a rig loaded from a file turns from its contact pose to hold a contact.</summary>
     private const float MaxEffectorFold = 50f * MathF.PI / 180f;
 
+    /// <summary>How far (share of the stretched limb) to the side of where the contact pose holds a limb's effector its contact is taken, the planner's estimate brought in from farther.</summary>
+    private const float EstimateSideways = 0.1f;
+
     /// <summary>Only the samples closest to the contact pose are tried as contacts: the comfortable ones.</summary>
     private const int DatabaseScan = 400;
 
@@ -73,10 +76,19 @@ public sealed class ContactGenerator
     /// can absorb. For a rig loaded from a file, holding it there must not fold the effector joint more than
     /// <see cref="StanceDip.MaxEffectorFold"/> from the contact.
     /// </summary>
-    internal ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch)
+    /// <param name="root">The root pose, fixed.</param>
+    /// <param name="estimated">The planner's estimated contacts at this pose, or empty.</param>
+    /// <param name="velocity">The velocity the contacts must produce or absorb, m/s.</param>
+    /// <param name="crouch">How much lower (metres) the root must be able to dip with every contact held.</param>
+    /// <param name="onEstimates">
+    /// True for a jump's takeoff or landing: each limb stands on its estimated contact first (the one the plan reports
+    /// and its no-slip test used), brought sideways to within <see cref="EstimateSideways"/> of the limb from where the
+    /// contact pose holds it; otherwise on the surface nearest the contact pose first.
+    /// </param>
+    internal ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch, bool onEstimates = false)
     {
         ArgumentNullException.ThrowIfNull(estimated);
-        ContactConfiguration projected = Project(root, estimated, velocity, crouch);
+        ContactConfiguration projected = Project(root, estimated, velocity, crouch, onEstimates);
         if (projected.Valid || estimated.Count == 0)
         {
             return projected;
@@ -129,7 +141,7 @@ public sealed class ContactGenerator
         return Finish(root, q, contacts, velocity);
     }
 
-    private ContactConfiguration Project(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch)
+    private ContactConfiguration Project(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch, bool onEstimates)
     {
         Rig rig = Model.Rig;
         float[] q = (float[])Model.ContactPose.Clone();
@@ -142,7 +154,7 @@ public sealed class ContactGenerator
         {
             RigLimb limb = Model.Limbs[l];
             Vector3 reference = limb.EffectorPosition(positions, rotations);
-            if (TryContact(root, q, l, reference, estimated, crouch, nearby, out LimbContact contact))
+            if (TryContact(root, q, l, reference, estimated, crouch, onEstimates, nearby, out LimbContact contact))
             {
                 contacts.Add(contact);
             }
@@ -218,8 +230,8 @@ public sealed class ContactGenerator
         }
     }
 
-    /// <summary>Tries to put limb <paramref name="l"/> on a surface point, nearest to its reference effector position first.</summary>
-    private bool TryContact(in RootPose root, float[] q, int l, Vector3 reference, IReadOnlyList<Contact> estimated, float crouch, List<int> nearby, out LimbContact contact)
+    /// <summary>Tries to put limb <paramref name="l"/> on a surface point: its estimated contact first when <paramref name="onEstimates"/>, then nearest to its reference effector position.</summary>
+    private bool TryContact(in RootPose root, float[] q, int l, Vector3 reference, IReadOnlyList<Contact> estimated, float crouch, bool onEstimates, List<int> nearby, out LimbContact contact)
     {
         contact = default;
         RigLimb limb = Model.Limbs[l];
@@ -287,6 +299,37 @@ public sealed class ContactGenerator
             {
                 Triangle tri = _scene.Level.Triangles[t];
                 slabHalf = MathF.Max(slabHalf, 0.06f + MathF.Max(MathF.Abs(Vector3.Dot(tri.A - slabCentre, slabAxis)), MathF.Max(MathF.Abs(Vector3.Dot(tri.B - slabCentre, slabAxis)), MathF.Abs(Vector3.Dot(tri.C - slabCentre, slabAxis)))));
+            }
+        }
+
+        // For a jump, the planner's estimated contact first (the stance the plan reports stands on it), brought sideways (the
+        // trunk's left axis) to within EstimateSideways of where the contact pose holds the effector (legs neither
+        // splayed nor crossed) and onto the surface: from the contact pose itself, then from the database sample
+        // nearest it.
+        Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
+        float most = EstimateSideways * _reach[l];
+        foreach (Contact c in estimated)
+        {
+            if (!onEstimates || c.Limb != l)
+            {
+                continue;
+            }
+
+            float side = Vector3.Dot(c.Position - reference, left);
+            Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
+            if (NearestSurfacePoint(target, limb, root.Position, 0.2f, []) is not { } onSurface
+                || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l])
+            {
+                continue;
+            }
+
+            Array.Copy(q, trial, q.Length);
+            if (TrySolve(root, trial, limb, onSurface.Point, onSurface.Normal, crouch, positions, rotations)
+                || SolveFromNearest(root, q, trial, l, onSurface.Point, onSurface.Normal, crouch, positions, rotations))
+            {
+                Array.Copy(trial, q, q.Length);
+                contact = new LimbContact(l, onSurface.Point, onSurface.Normal, c.Mu);
+                return true;
             }
         }
 

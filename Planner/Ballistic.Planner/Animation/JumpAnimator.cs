@@ -364,7 +364,7 @@ public sealed class JumpAnimator : IJumpAnimator
     /// </summary>
     private ContactConfiguration Pose(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, Dictionary<ContactConfiguration, StanceDip.Table> dips)
     {
-        ContactConfiguration first = _contacts.Generate(root, estimated, velocity);
+        ContactConfiguration first = _contacts.Generate(root, estimated, velocity, 0f, onEstimates: true);
         if (!first.Valid)
         {
             return first;
@@ -377,7 +377,7 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         // A little deeper than the least crouch: the dip is solved in steps, from the contact pose down.
-        ContactConfiguration lower = _contacts.Generate(root, estimated, velocity, 1.2f * StanceDip.LeastDepthShare * table.Leg);
+        ContactConfiguration lower = _contacts.Generate(root, estimated, velocity, 1.2f * StanceDip.LeastDepthShare * table.Leg, onEstimates: true);
         return lower.Valid && DipOf(lower, dips).Depth > table.Depth ? lower : first;
     }
 

@@ -1,0 +1,51 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Planner.Tests.Animation;
+
+/// <summary>
+/// A contact pose stands where the plan says: on the planner's estimated contacts (the ones the plan reports and its
+/// no-slip test used), brought sideways no farther than 0.1 of the limb from where the rig's contact pose holds the
+/// foot, so the legs stay under the hips.
+/// </summary>
+public sealed class ContactPoseTests
+{
+    /// <summary>
+    /// On the flat gap course a stance's estimated foot contact moved 12 cm ahead of where the skeleton's contact pose
+    /// puts the foot is stood on exactly (before: the foot went to the ground nearest its contact pose, 12 cm off);
+    /// one moved 30 cm out to the side is stood on 30 cm − 0.1 of the limb out, its fore-aft place kept.
+    /// </summary>
+    [Test]
+    public void AContactPoseStandsOnTheEstimatedContactsWithTheLegsUnderTheHips()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        RoadmapNode node = world.Stance(new Vector3(-5.5f, 0f, 0f), 0, Vector3.UnitX);
+        CharacterModel model = world.Model;
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(node.Pose, model.ContactPose, positions, rotations);
+        Vector3 forward = node.Pose.Forward;
+        Vector3 left = Vector3.Transform(Vector3.UnitX, node.Pose.Rotation);
+        int foot = Enumerable.Range(0, model.Limbs.Count).First(l => model.Limbs[l].Kind == LimbKind.Foot && node.Contacts.Any(c => c.Limb == l));
+        RigLimb limb = model.Limbs[foot];
+        Vector3 reference = limb.EffectorPosition(positions, rotations);
+        Vector3 Ground(Vector3 p) => world.Ground(p.X, p.Z, p.Y + 0.5f) ?? throw new AssertionException($"no ground below {p}");
+
+        Contact original = node.Contacts.First(c => c.Limb == foot);
+        Vector3 ahead = Ground(reference + (0.12f * forward));
+        Vector3 aside = Ground(reference + (0.3f * left * MathF.Sign(Vector3.Dot(reference - node.Pose.Position, left))));
+        float reach = limb.Chain.Skip(1).Sum(j => model.Rig.Joints[j].Offset.Length()) + limb.EffectorOffset.Length();
+        foreach ((Vector3 estimate, Vector3 expected) in new[] { (ahead, ahead), (aside, aside - ((0.3f - (0.1f * reach)) * left * MathF.Sign(Vector3.Dot(aside - reference, left)))) })
+        {
+            Contact[] contacts = [.. node.Contacts.Select(c => c.Limb == foot ? original with { Position = estimate, Normal = Vector3.UnitY } : c)];
+            ContactConfiguration pose = world.Animator.Contacts.Generate(node.Pose, contacts, node.Cone.Axis, 0f, onEstimates: true);
+            LimbContact? made = pose.ContactOf(foot);
+            Assert.That(made, Is.Not.Null, $"{limb.Name} stands");
+            Assert.That(Vector3.Distance(made!.Value.Position, expected), Is.LessThan(0.01f), $"{limb.Name} on {made.Value.Position}, estimate {estimate}, expected {expected}");
+        }
+    }
+}
