@@ -193,6 +193,75 @@ internal sealed class WalkGait
     /// <param name="frameRate">Frames per second.</param>
     public Clip Animate(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
     {
+        ArgumentNullException.ThrowIfNull(walk);
+        ArgumentNullException.ThrowIfNull(start);
+        ArgumentNullException.ThrowIfNull(end);
+        var key = new WalkKey(walk, start, end, frameRate);
+        lock (_animated)
+        {
+            if (_animated.TryGetValue(key, out Clip? known))
+            {
+                return Copy(known, move);
+            }
+        }
+
+        Clip clip = AnimateAnew(move, walk, start, end, frameRate);
+        lock (_animated)
+        {
+            if (_animated.Count >= Remembered)
+            {
+                _animated.Clear();
+            }
+
+            _animated[key] = Copy(clip, move);
+        }
+
+        return clip;
+    }
+
+    /// <summary>How many walks' clips <see cref="Animate"/> keeps: a plan's repair animates the same walk between the same poses again, and agents of one kind walk the same moves.</summary>
+    private const int Remembered = 64;
+
+    /// <summary>Clips animated, by everything they were animated from (the gait is a function of those).</summary>
+    private readonly Dictionary<WalkKey, Clip> _animated = [];
+
+    /// <summary><paramref name="clip"/> with its own frames' angles (callers may change them in place) and its problems placed on move <paramref name="move"/>.</summary>
+    private static Clip Copy(Clip clip, int move) => clip with
+    {
+        Frames = [.. clip.Frames.Select(f => f with { Angles = (float[])f.Angles.Clone() })],
+        Phases = [.. clip.Phases],
+        Problems = [.. clip.Problems.Select(p => p with { Jump = move })],
+    };
+
+    /// <summary>What a walk's clip is animated from: the walk's ground path, speed and stances' poses (all <see cref="Walk.PoseAt"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
+    private sealed class WalkKey(Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate) : IEquatable<WalkKey>
+    {
+        private readonly int _hash = HashCode.Combine(walk.Speed, walk.Path.Count, walk.Path[0], walk.Path[^1], start.Root, end.Root, frameRate);
+
+        public bool Equals(WalkKey? other) =>
+            other is not null && _hash == other._hash && walk.Speed == other.Walk.Speed && frameRate == other.FrameRate
+            && walk.From.Pose == other.Walk.From.Pose && walk.To.Pose == other.Walk.To.Pose && walk.Path.SequenceEqual(other.Walk.Path)
+            && Same(start, other.Start) && Same(end, other.End);
+
+        public override bool Equals(object? obj) => Equals(obj as WalkKey);
+
+        public override int GetHashCode() => _hash;
+
+        private Walk Walk => walk;
+
+        private ContactConfiguration Start => start;
+
+        private ContactConfiguration End => end;
+
+        private float FrameRate => frameRate;
+
+        private static bool Same(ContactConfiguration a, ContactConfiguration b) =>
+            a.Root == b.Root && a.Valid == b.Valid && a.Angles.AsSpan().SequenceEqual(b.Angles) && a.Contacts.SequenceEqual(b.Contacts);
+    }
+
+    /// <summary><see cref="Animate"/> without the remembered clips.</summary>
+    private Clip AnimateAnew(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
+    {
         // Upright first (hips lifted toward UprightHips, the step from the leg and speed); where the body cannot walk
         // so on this ground, lifted with steps the legs reach easily; then at the stances' own height. The first
         // without problems is kept, else the one with fewest.

@@ -64,6 +64,39 @@ public sealed class WalkGaitTests
         });
     }
 
+    /// <summary>
+    /// A walk animated again between the same poses (the repair's next round, another agent of the kind) is the clip
+    /// a fresh gait animates, its problems on the move asked, its angles its own; a walk ending on another pose is
+    /// animated anew.
+    /// </summary>
+    [Test]
+    public void AWalkAnimatedAgainBetweenTheSamePosesIsTheClipAFreshGaitAnimates()
+    {
+        (WalkWorld world, Walk walk, ContactConfiguration start, ContactConfiguration end) = ShortFlatWalk();
+        ContactGenerator contacts = world.Animator.Contacts;
+        ContactConfiguration bent = end with { Angles = [.. end.Angles.Select((a, d) => d == 0 ? a + 0.05f : a)] };
+        var gait = new WalkGait(world.Scene, world.Model, contacts);
+        WalkGait.Clip first = gait.Animate(0, walk, start, end, 60f);
+        first.Frames[^1].Angles[0] += 1f; // a caller changing its clip in place changes no other
+        WalkGait.Clip again = gait.Animate(3, walk, start, end, 60f);
+        WalkGait.Clip other = gait.Animate(3, walk, start, bent, 60f);
+        WalkGait.Clip fresh = new WalkGait(world.Scene, world.Model, contacts).Animate(3, walk, start, end, 60f);
+        WalkGait.Clip freshOther = new WalkGait(world.Scene, world.Model, contacts).Animate(3, walk, start, bent, 60f);
+        Assert.Multiple(() =>
+        {
+            foreach ((WalkGait.Clip clip, WalkGait.Clip expected, string name) in new[] { (again, fresh, "again"), (other, freshOther, "to another pose") })
+            {
+                Assert.That(clip.Frames.Select(f => (f.Time, f.Root)), Is.EqualTo(expected.Frames.Select(f => (f.Time, f.Root))), name);
+                Assert.That(clip.Frames.SelectMany(f => f.Angles), Is.EqualTo(expected.Frames.SelectMany(f => f.Angles)), name);
+                Assert.That(clip.Phases, Is.EqualTo(expected.Phases), name);
+                Assert.That(clip.Problems, Is.EqualTo(expected.Problems), name);
+                Assert.That(clip.Problems.Select(p => p.Jump), Has.All.EqualTo(3), name);
+            }
+
+            Assert.That(other.Frames.SelectMany(f => f.Angles), Is.Not.EqualTo(again.Frames.SelectMany(f => f.Angles)), "a walk to another pose is another clip");
+        });
+    }
+
     [Test]
     public void AVeryShortWalkStepsWithoutSliding()
     {
@@ -123,13 +156,8 @@ public sealed class WalkGaitTests
     {
         // The next jump may take off without one foot. Whichever group swings last, every moment has a foot on the
         // ground or the gait says it has not.
-        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
-        RoadmapNode from = world.Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
-        RoadmapNode to = world.Stance(new Vector3(-4.4f, 0f, -0.2f), 1, Vector3.UnitX);
-        Walk walk = world.Walk(from, to);
+        (WalkWorld world, Walk walk, ContactConfiguration start, ContactConfiguration full) = ShortFlatWalk();
         ContactGenerator contacts = world.Animator.Contacts;
-        ContactConfiguration start = contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis);
-        ContactConfiguration full = contacts.Generate(to.Pose, to.Contacts, to.Cone.Axis);
         int foot = Enumerable.Range(0, world.Model.Limbs.Count).Single(l => world.Model.Limbs[l].Name == freeFoot);
         Assume.That(full.Contacts.Any(c => c.Limb == foot), Is.True);
         ContactConfiguration end = full with { Contacts = [.. full.Contacts.Where(c => c.Limb != foot)] };
@@ -151,5 +179,15 @@ public sealed class WalkGaitTests
                 Assert.That(problem.Reason, Does.Contain($"{problem.Along:0.00} m along the walk"));
             }
         }
+    }
+
+    /// <summary>The skeleton's 2.9 m walk along the gap course's first platform, with the contact poses it starts and ends in.</summary>
+    private static (WalkWorld World, Walk Walk, ContactConfiguration Start, ContactConfiguration End) ShortFlatWalk()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        RoadmapNode from = world.Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(new Vector3(-4.4f, 0f, -0.2f), 1, Vector3.UnitX);
+        ContactGenerator contacts = world.Animator.Contacts;
+        return (world, world.Walk(from, to), contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis), contacts.Generate(to.Pose, to.Contacts, to.Cone.Axis));
     }
 }
