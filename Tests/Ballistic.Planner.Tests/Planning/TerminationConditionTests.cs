@@ -46,15 +46,27 @@ public sealed class TerminationConditionTests
     [Test]
     public void ABakeCutShortMidRoundIsAPrefixOfALongerBake()
     {
+        // Both cut a round short after at least one whole round, however busy the machine: the time limit is three
+        // first rounds' time (400 ms at least), the cancellation comes 100 ms after the first round is reported.
         var baker = new RoadmapBaker(Scene.Value);
-        BakeResult timed = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = null, TimeLimit = TimeSpan.FromMilliseconds(400), Threads = 2 });
-        using var source = new CancellationTokenSource(TimeSpan.FromMilliseconds(400));
-        BakeResult cancelled = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = 5_000, Threads = 2 }, TerminationCondition.Cancellation(source.Token));
+        TimeSpan round = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = 1, Threads = 2 }).Elapsed;
+        TimeSpan limit = TimeSpan.FromTicks(Math.Max(TimeSpan.FromMilliseconds(400).Ticks, 3 * round.Ticks));
+        BakeResult timed = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = null, TimeLimit = limit, Threads = 2 });
+        using var source = new CancellationTokenSource();
+        int reports = 0;
+        var firstRound = new OnReport(_ =>
+        {
+            if (Interlocked.Increment(ref reports) == 1)
+            {
+                source.CancelAfter(100);
+            }
+        });
+        BakeResult cancelled = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = 5_000, Threads = 2 }, TerminationCondition.Cancellation(source.Token), firstRound);
         Roadmap full = baker.Bake(new BakeSettings { Seed = 6, MaxNodes = Math.Max(timed.Roadmap.Nodes.Count, cancelled.Roadmap.Nodes.Count) + 64, Threads = 2 }).Roadmap;
         Assert.Multiple(() =>
         {
             Assert.That(timed.Status, Is.EqualTo(PlannerStatus.Timeout));
-            Assert.That(timed.Elapsed, Is.LessThan(TimeSpan.FromSeconds(5)), "the budget cuts the round short, not just the bake");
+            Assert.That(timed.Elapsed, Is.LessThan(limit + TimeSpan.FromSeconds(5)), "the budget cuts the round short, not just the bake");
             Assert.That(cancelled.Status, Is.EqualTo(PlannerStatus.Cancelled));
             Assert.That(cancelled.Reason, Is.EqualTo("cancelled"));
         });
@@ -87,5 +99,11 @@ public sealed class TerminationConditionTests
             Assert.That(late.Result.Status, Is.EqualTo(PlannerStatus.Timeout));
             Assert.That(late.Result.Reason, Does.Contain("time budget"));
         });
+    }
+
+    /// <summary>Progress reported on the baking thread itself, as it happens.</summary>
+    private sealed class OnReport(Action<BakeState> report) : IProgress<BakeState>
+    {
+        public void Report(BakeState value) => report(value);
     }
 }
