@@ -308,6 +308,7 @@ public sealed class ContactGenerator
         // nearest it.
         Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
         float most = EstimateSideways * _reach[l];
+        var near = new List<int>();
         foreach (Contact c in estimated)
         {
             if (!onEstimates || c.Limb != l)
@@ -317,7 +318,7 @@ public sealed class ContactGenerator
 
             float side = Vector3.Dot(c.Position - reference, left);
             Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
-            if (NearestSurfacePoint(target, limb, root.Position, 0.2f, []) is not { } onSurface
+            if (NearestSurfacePoint(target, limb, root.Position, 0.2f, near) is not { } onSurface
                 || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l])
             {
                 continue;
@@ -347,7 +348,6 @@ public sealed class ContactGenerator
         }
 
         int tried = 0;
-        var near = new List<int>();
         for (int s = 0; s < Math.Min(database.Count, DatabaseScan) && tried < CandidatesPerLimb; s++)
         {
             Vector3 world = root.ToWorld(database.PointOf(s));

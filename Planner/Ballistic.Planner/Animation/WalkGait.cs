@@ -234,26 +234,16 @@ internal sealed class WalkGait
     };
 
     /// <summary>What a walk's clip is animated from: the walk's ground path, speed and stances' poses (all <see cref="Walk.PoseAt"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
-    private sealed class WalkKey(Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate) : IEquatable<WalkKey>
+    private sealed record WalkKey(Walk Walk, ContactConfiguration Start, ContactConfiguration End, float FrameRate)
     {
-        private readonly int _hash = HashCode.Combine(walk.Speed, walk.Path.Count, walk.Path[0], walk.Path[^1], start.Root, end.Root, frameRate);
+        private readonly int _hash = HashCode.Combine(Walk.Speed, Walk.Path.Count, Walk.Path[0], Walk.Path[^1], Start.Root, End.Root, FrameRate);
 
         public bool Equals(WalkKey? other) =>
-            other is not null && _hash == other._hash && walk.Speed == other.Walk.Speed && frameRate == other.FrameRate
-            && walk.From.Pose == other.Walk.From.Pose && walk.To.Pose == other.Walk.To.Pose && walk.Path.SequenceEqual(other.Walk.Path)
-            && Same(start, other.Start) && Same(end, other.End);
-
-        public override bool Equals(object? obj) => Equals(obj as WalkKey);
+            other is not null && _hash == other._hash && Walk.Speed == other.Walk.Speed && FrameRate == other.FrameRate
+            && Walk.From.Pose == other.Walk.From.Pose && Walk.To.Pose == other.Walk.To.Pose && Walk.Path.SequenceEqual(other.Walk.Path)
+            && Same(Start, other.Start) && Same(End, other.End);
 
         public override int GetHashCode() => _hash;
-
-        private Walk Walk => walk;
-
-        private ContactConfiguration Start => start;
-
-        private ContactConfiguration End => end;
-
-        private float FrameRate => frameRate;
 
         private static bool Same(ContactConfiguration a, ContactConfiguration b) =>
             a.Root == b.Root && a.Valid == b.Valid && a.Angles.AsSpan().SequenceEqual(b.Angles) && a.Contacts.SequenceEqual(b.Contacts);
