@@ -47,6 +47,21 @@ internal sealed class WalkGait
     /// </summary>
     public const float UprightHips = 0.96f;
 
+    /// <summary>
+    /// Share of the rest leg the hips cruise at, over the held feet, before the bob lifts them over each foot: the
+    /// height at which an upright walk's step is measured, the feet ahead and behind the hips, legs nearly straight.
+    /// </summary>
+    public const float CruiseHips = 0.88f;
+
+    /// <summary>Grade (rise over run) up to which the ground counts as level for cruising (tan 5°).</summary>
+    private const float LevelGrade = 0.0875f;
+
+    /// <summary>Grade from which the trunk does not cruise at all (tan 12°).</summary>
+    private const float SteepGrade = 0.2126f;
+
+    /// <summary>Distance (metres) along the path either way over which the ground's grade is measured.</summary>
+    private const float LevelWindow = 0.5f;
+
     /// <summary>Share of a leg's full length (hip to ankle along its bones) the hips rise to at most over a held foot: the knee stays a little bent.</summary>
     public const float KneeMargin = 0.99f;
 
@@ -252,18 +267,19 @@ internal sealed class WalkGait
     /// <summary><see cref="Animate"/> without the remembered clips.</summary>
     private Clip AnimateAnew(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
     {
-        // Upright first (hips lifted toward UprightHips, the step from the leg and speed); where the body cannot walk
-        // so on this ground, lifted with steps the legs reach easily; then at the stances' own height. The first
-        // without problems is kept, else the one with fewest.
-        Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true).Animate();
+        // Upright first (cruising with the hips CruiseHips of the leg up, the step from the leg and speed, the hips
+        // lifted toward UprightHips over each foot); where the body cannot walk so on this ground, the step measured
+        // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
+        // first without problems is kept, else the one with fewest.
+        Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
         if (best.Problems.Count == 0 || !(_restLeg > 0f))
         {
             return best;
         }
 
-        foreach (bool lift in (bool[])[true, false])
+        foreach ((bool lift, bool longSteps) in ((bool, bool)[])[(true, true), (true, false), (false, false)])
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift, longSteps: false).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift, longSteps, cruise: false).Animate();
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
@@ -314,18 +330,25 @@ internal sealed class WalkGait
         private float _leg;
         private float _stepHeight;
         private float _step;
+        private float _stepLow;
         private float[] _times = [];
         private float[] _cost = [0f, 1f];
+        private float _cruiseStart;
+        private float _cruiseEnd;
         private int[] _swingStart = [];
         private int[] _swingEnd = [];
         private Vector3[] _startLocal = [];
         private Vector3[] _endLocal = [];
+        private Vector3[] _startLocalLow = [];
+        private Vector3[] _endLocalLow = [];
         private readonly bool _lift;
         private readonly bool _longSteps;
+        private readonly bool _cruise;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise)
         {
+            _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
             _lift = lift && _arms;
             _longSteps = longSteps && _arms;
@@ -362,27 +385,30 @@ internal sealed class WalkGait
                 return new Clip([new AnimationFrame(0f, root, (float[])_start.Angles.Clone()), new AnimationFrame(0f, root, (float[])_end.Angles.Clone())], [], 0, _problems, 0f, 0);
             }
 
-            TrunkAndRoots();
             WalkingLimits walking = _gait._scene.Character.Walking;
             _leg = MathF.Max(LegLength(_start), LegLength(_end));
             _stepHeight = walking.StepHeight > 0f ? walking.StepHeight : 0.25f * _leg;
+            if (_lift && _longSteps && _cruise)
+            {
+                // Upright: at full speed the trunk cruises with its hips CruiseHips of the leg above the held feet
+                // (as far as the stances' feet hold there), and the step is measured there.
+                _cruiseStart = Cruise(_start);
+                _cruiseEnd = Cruise(_end);
+            }
+
+            TrunkAndRoots();
 
             // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis: where
             // to centre the footholds (the trunk turns in place to face the way it walks, then walks straight ahead).
-            Footing[] startForward = Footings(_start, Forward(_start.Root));
-            Footing[] endForward = Footings(_end, Forward(_end.Root));
+            Footing[] startForward = Footings(_start, Forward(_start.Root), _cruiseStart);
+            Footing[] endForward = Footings(_end, Forward(_end.Root), _cruiseEnd);
             _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
             _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
+            (_startLocalLow, _endLocalLow) = (_startLocal, _endLocal);
 
             // The step: StepShare of the leg; long enough that a swing at full speed lasts MinSwing; short enough that a
             // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays within
             // ReachMargin of what its leg reaches.
-            float reach = float.PositiveInfinity;
-            for (int l = 0; l < _limbs; l++)
-            {
-                reach = MathF.Min(reach, MathF.Min(HalfRange(startForward[l]), HalfRange(endForward[l])));
-            }
-
             float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
             float margin = ReachMargin;
             if (_longSteps)
@@ -395,7 +421,22 @@ internal sealed class WalkGait
                 margin = UprightReachMargin;
             }
 
+            bool cruising = _cruiseStart > 0f || _cruiseEnd > 0f;
+            float reach = Reach(startForward, endForward, cruising);
             _step = MathF.Max(MathF.Min(step, margin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+            _stepLow = _step;
+            if (cruising)
+            {
+                // Steps shorten as the trunk slows and sinks toward the stances at either end (or where the ground
+                // is not level): there the step, and where the feet are centred, are those measured at the stances'
+                // own height (a crouched leg reaches farther ahead than behind).
+                Footing[] startLow = Footings(_start, Forward(_start.Root), 0f);
+                Footing[] endLow = Footings(_end, Forward(_end.Root), 0f);
+                _startLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startLow[l]))];
+                _endLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endLow[l]))];
+                float low = Reach(startLow, endLow, either: false);
+                _stepLow = MathF.Max(MathF.Min(step, margin * low / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+            }
 
             // Feet in two groups; the group whose feet can stay least on the start contacts steps first.
             int[] group = Groups();
@@ -521,7 +562,7 @@ internal sealed class WalkGait
 
             for (int i = 0; i <= _steps; i++)
             {
-                _roots[i] = _walk.PoseAt(Time(i));
+                _roots[i] = RootAt(Time(i));
                 float w = Smooth(Time(i) / _walk.Duration);
                 float[] q = (float[])_start.Angles.Clone();
                 for (int d = 0; d < q.Length; d++)
@@ -780,18 +821,153 @@ internal sealed class WalkGait
         /// <summary>The greatest height (metres, along the trunk's up axis) of a foot's root joint above where the foot stands.</summary>
         private float LegLength(ContactConfiguration config) => StanceDip.LegLength(_model, config, _positions, _rotations);
 
-        /// <summary>
-        /// For each foot of <paramref name="config"/>: where it stands in the trunk's frame, and how far (metres) the
-        /// trunk may move along <paramref name="direction"/> (Ahead) and against it (Behind) while the foot holds its
-        /// contact by IK, sole flat, no bone in the level, probed in small increments up to the leg length. Free feet
-        /// and other limbs are not limited.
-        /// </summary>
-        private Footing[] Footings(ContactConfiguration config, Vector3 direction)
+        /// <summary>The walk's root at <paramref name="t"/> seconds: the walk's pose, lifted (world up) by the cruise in proportion to the walk's speed.</summary>
+        private RootPose RootAt(float t)
         {
-            var footings = new Footing[_limbs];
+            RootPose pose = _walk.PoseAt(t);
+            float cruise = float.Lerp(_cruiseStart, _cruiseEnd, Smooth(t / _walk.Duration)) * Weight(t);
+            return cruise > 0f ? new RootPose(pose.Position + (Vector3.UnitY * cruise), pose.Rotation) : pose;
+        }
+
+        /// <summary>
+        /// How far into its cruise the walk is at <paramref name="t"/> seconds, 0 to 1: its speed over the walking
+        /// speed, on ground whose grade along the path (over <see cref="LevelWindow"/> either way) is under
+        /// <see cref="LevelGrade"/>, fading out by <see cref="SteepGrade"/> (on stairs and slopes a straight leg reaches
+        /// less far down and up: the steps and the hips stay as at the stances).
+        /// </summary>
+        private float Weight(float t)
+        {
+            float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
+            if (!(w > 0f))
+            {
+                return 0f;
+            }
+
+            float distance = _walk.DistanceAt(t);
+            Vector3 d = _walk.PointAt(distance + LevelWindow) - _walk.PointAt(distance - LevelWindow);
+            float across = new Vector2(d.X, d.Z).Length();
+            float grade = across > 1e-3f ? MathF.Abs(d.Y) / across : 0f;
+            return w * Math.Clamp((SteepGrade - grade) / (SteepGrade - LevelGrade), 0f, 1f);
+        }
+
+        /// <summary>
+        /// The least half range (metres) any foot reaches along the trunk's forward axis on the start and end
+        /// contacts; with <paramref name="either"/>, on whichever of the two it reaches farther (cruising, the feet
+        /// are between the stances: one foot cramped by its stance's ground does not shorten every step).
+        /// </summary>
+        private float Reach(Footing[] start, Footing[] end, bool either)
+        {
+            float reach = float.PositiveInfinity;
             for (int l = 0; l < _limbs; l++)
             {
-                Vector3 local = ToLocal(config.Root, Stand(config, l));
+                float s = HalfRange(start[l]);
+                float e = HalfRange(end[l]);
+                reach = MathF.Min(reach, either ? MathF.Max(s, e) : MathF.Min(s, e));
+            }
+
+            return reach;
+        }
+
+        /// <summary>
+        /// How far (metres, world up) the root of <paramref name="config"/> rises toward its hips <see cref="CruiseHips"/>
+        /// of the rest leg above the lowest held foot, every held foot holding its contact by IK with no bone in the
+        /// level, probed in small increments.
+        /// </summary>
+        private float Cruise(ContactConfiguration config)
+        {
+            _rig.Solve(config.Root, config.Angles, _positions, _rotations);
+            float low = float.NegativeInfinity;
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (IsFoot(l) && config.ContactOf(l) is LimbContact c)
+                {
+                    low = MathF.Max(low, _positions[_model.Limbs[l].RootJoint].Y - c.Position.Y);
+                }
+            }
+
+            float want = MathF.Min((CruiseHips * _gait._restLeg) - low, _leg);
+            if (!(want > 0f) || !float.IsFinite(want))
+            {
+                return 0f;
+            }
+
+            int steps = Math.Clamp((int)MathF.Ceiling(want / (_leg / ProbeSteps)), 1, ProbeSteps);
+            float[] q = (float[])config.Angles.Clone();
+            float lo = 0f;
+            for (int k = 1; k <= steps && HoldsRaised(config, want * k / steps, q); k++)
+            {
+                lo = want * k / steps;
+            }
+
+            return lo;
+        }
+
+        /// <summary>True when every held foot of <paramref name="config"/> holds its contact by IK from <paramref name="q"/> (updated) with the root lifted <paramref name="lift"/> metres, no bone in the level.</summary>
+        private bool HoldsRaised(ContactConfiguration config, float lift, float[] q)
+        {
+            var root = new RootPose(config.Root.Position + (Vector3.UnitY * lift), config.Root.Rotation);
+            for (int l = 0; l < _limbs; l++)
+            {
+                if (!IsFoot(l) || config.ContactOf(l) is not LimbContact c)
+                {
+                    continue;
+                }
+
+                RigLimb limb = _model.Limbs[l];
+                if (!_gait.Hold(root, q, limb, c.Position, c.Normal))
+                {
+                    return false;
+                }
+
+                _rig.Solve(root, q, _positions, _rotations);
+                if (_gait._collision.LimbCollides(limb, _positions, _rotations, c.Position))
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+
+        /// <summary>
+        /// The angles of <paramref name="config"/> with its root lifted <paramref name="lift"/> metres (world up), every
+        /// held foot holding its contact by IK (lifted in small increments) with no bone in the level; null when one cannot.
+        /// </summary>
+        private float[]? Raised(ContactConfiguration config, float lift)
+        {
+            float[] q = (float[])config.Angles.Clone();
+            if (!(lift > 0f))
+            {
+                return q;
+            }
+
+            int steps = Math.Clamp((int)MathF.Ceiling(lift / (_leg / ProbeSteps)), 1, ProbeSteps);
+            for (int k = 1; k <= steps; k++)
+            {
+                if (!HoldsRaised(config, lift * k / steps, q))
+                {
+                    return null;
+                }
+            }
+
+            return q;
+        }
+
+        /// <summary>
+        /// For each foot of <paramref name="config"/> with its root lifted <paramref name="lift"/> metres (world up):
+        /// where it stands in the trunk's frame, and how far (metres) the trunk may move along
+        /// <paramref name="direction"/> (Ahead) and against it (Behind) while the foot holds its contact by IK, sole
+        /// flat, no bone in the level, probed in small increments up to the leg length. Free feet and other limbs are
+        /// not limited.
+        /// </summary>
+        private Footing[] Footings(ContactConfiguration config, Vector3 direction, float lift)
+        {
+            var footings = new Footing[_limbs];
+            float[] raised = Raised(config, lift) ?? config.Angles;
+            var start = new RootPose(config.Root.Position + (Vector3.UnitY * lift), config.Root.Rotation);
+            for (int l = 0; l < _limbs; l++)
+            {
+                Vector3 local = ToLocal(start, Stand(config, l));
                 if (!IsFoot(l) || config.ContactOf(l) is not LimbContact c)
                 {
                     footings[l] = new Footing(local, float.PositiveInfinity, float.PositiveInfinity);
@@ -803,11 +979,11 @@ internal sealed class WalkGait
                 float increment = _leg / ProbeSteps;
                 for (int side = 0; side < 2; side++)
                 {
-                    float[] q = (float[])config.Angles.Clone();
+                    float[] q = (float[])raised.Clone();
                     float x = 0f;
                     for (int k = 1; k <= ProbeSteps; k++)
                     {
-                        var root = new RootPose(config.Root.Position + (direction * ((side == 0 ? 1f : -1f) * k * increment)), config.Root.Rotation);
+                        var root = new RootPose(start.Position + (direction * ((side == 0 ? 1f : -1f) * k * increment)), start.Rotation);
                         float[] trial = (float[])q.Clone();
                         if (!_gait.Hold(root, trial, limb, c.Position, c.Normal))
                         {
@@ -913,7 +1089,8 @@ internal sealed class WalkGait
                 RootPose pose = _walk.PoseAt(duration * i / samples);
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
-                cost[i] = cost[i - 1] + MathF.Min((moved / _step) + (turn / MaxTurn), dt / MinHalfCycle);
+                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples));
+                cost[i] = cost[i - 1] + MathF.Min((moved / stepHere) + (turn / MaxTurn), dt / MinHalfCycle);
                 previous = pose;
             }
 
@@ -1044,7 +1221,7 @@ internal sealed class WalkGait
         private bool HoldsAt(int l, float t, LimbContact contact, float[] q)
         {
             RigLimb limb = _model.Limbs[l];
-            RootPose root = _walk.PoseAt(t);
+            RootPose root = RootAt(t);
             float[] trial = (float[])q.Clone();
             if (!_gait.Hold(root, trial, limb, contact.Position, contact.Normal))
             {
@@ -1153,7 +1330,8 @@ internal sealed class WalkGait
             float time = TimeAtCost((CostAt(Time(from)) + CostAt(Time(to))) * 0.5f);
             float distance = _walk.DistanceAt(time);
             RootPose pose = _walk.PoseAt(time);
-            Vector3 nominal = pose.ToWorld(Vector3.Lerp(_startLocal[l], _endLocal[l], Smooth(time / _walk.Duration)));
+            float u = Smooth(time / _walk.Duration);
+            Vector3 nominal = pose.ToWorld(Vector3.Lerp(Vector3.Lerp(_startLocalLow[l], _endLocalLow[l], u), Vector3.Lerp(_startLocal[l], _endLocal[l], u), Weight(time)));
             Vector3 ground = _walk.PointAt(distance);
             Vector3 heading = Forward(pose);
             Vector3 across = nominal - ground;
