@@ -309,9 +309,9 @@ public sealed class ContactGenerator
         Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
         float most = EstimateSideways * _reach[l];
         var near = new List<int>();
-        foreach (Contact c in estimated)
+        foreach (Contact c in onEstimates ? estimated : [])
         {
-            if (!onEstimates || c.Limb != l)
+            if (c.Limb != l)
             {
                 continue;
             }

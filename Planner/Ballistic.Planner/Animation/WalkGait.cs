@@ -388,20 +388,22 @@ internal sealed class WalkGait
             WalkingLimits walking = _gait._scene.Character.Walking;
             _leg = MathF.Max(LegLength(_start), LegLength(_end));
             _stepHeight = walking.StepHeight > 0f ? walking.StepHeight : 0.25f * _leg;
+            float[] raisedStart = _start.Angles;
+            float[] raisedEnd = _end.Angles;
             if (_lift && _longSteps && _cruise)
             {
                 // Upright: at full speed the trunk cruises with its hips CruiseHips of the leg above the held feet
                 // (as far as the stances' feet hold there), and the step is measured there.
-                _cruiseStart = Cruise(_start);
-                _cruiseEnd = Cruise(_end);
+                (_cruiseStart, raisedStart) = Cruise(_start);
+                (_cruiseEnd, raisedEnd) = Cruise(_end);
             }
 
             TrunkAndRoots();
 
             // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis: where
             // to centre the footholds (the trunk turns in place to face the way it walks, then walks straight ahead).
-            Footing[] startForward = Footings(_start, Forward(_start.Root), _cruiseStart);
-            Footing[] endForward = Footings(_end, Forward(_end.Root), _cruiseEnd);
+            Footing[] startForward = Footings(_start, Forward(_start.Root), _cruiseStart, raisedStart);
+            Footing[] endForward = Footings(_end, Forward(_end.Root), _cruiseEnd, raisedEnd);
             _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
             _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
             (_startLocalLow, _endLocalLow) = (_startLocal, _endLocal);
@@ -430,8 +432,8 @@ internal sealed class WalkGait
                 // Steps shorten as the trunk slows and sinks toward the stances at either end (or where the ground
                 // is not level): there the step, and where the feet are centred, are those measured at the stances'
                 // own height (a crouched leg reaches farther ahead than behind).
-                Footing[] startLow = Footings(_start, Forward(_start.Root), 0f);
-                Footing[] endLow = Footings(_end, Forward(_end.Root), 0f);
+                Footing[] startLow = Footings(_start, Forward(_start.Root), 0f, _start.Angles);
+                Footing[] endLow = Footings(_end, Forward(_end.Root), 0f, _end.Angles);
                 _startLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startLow[l]))];
                 _endLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endLow[l]))];
                 float low = Reach(startLow, endLow, either: false);
@@ -871,9 +873,9 @@ internal sealed class WalkGait
         /// <summary>
         /// How far (metres, world up) the root of <paramref name="config"/> rises toward its hips <see cref="CruiseHips"/>
         /// of the rest leg above the lowest held foot, every held foot holding its contact by IK with no bone in the
-        /// level, probed in small increments.
+        /// level, probed in small increments; and the angles that hold them there.
         /// </summary>
-        private float Cruise(ContactConfiguration config)
+        private (float Lift, float[] Angles) Cruise(ContactConfiguration config)
         {
             _rig.Solve(config.Root, config.Angles, _positions, _rotations);
             float low = float.NegativeInfinity;
@@ -888,18 +890,24 @@ internal sealed class WalkGait
             float want = MathF.Min((CruiseHips * _gait._restLeg) - low, _leg);
             if (!(want > 0f) || !float.IsFinite(want))
             {
-                return 0f;
+                return (0f, config.Angles);
             }
 
             int steps = Math.Clamp((int)MathF.Ceiling(want / (_leg / ProbeSteps)), 1, ProbeSteps);
-            float[] q = (float[])config.Angles.Clone();
+            float[] q = config.Angles;
             float lo = 0f;
-            for (int k = 1; k <= steps && HoldsRaised(config, want * k / steps, q); k++)
+            for (int k = 1; k <= steps; k++)
             {
-                lo = want * k / steps;
+                float[] trial = (float[])q.Clone();
+                if (!HoldsRaised(config, want * k / steps, trial))
+                {
+                    break;
+                }
+
+                (q, lo) = (trial, want * k / steps);
             }
 
-            return lo;
+            return (lo, q);
         }
 
         /// <summary>True when every held foot of <paramref name="config"/> holds its contact by IK from <paramref name="q"/> (updated) with the root lifted <paramref name="lift"/> metres, no bone in the level.</summary>
@@ -930,40 +938,15 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// The angles of <paramref name="config"/> with its root lifted <paramref name="lift"/> metres (world up), every
-        /// held foot holding its contact by IK (lifted in small increments) with no bone in the level; null when one cannot.
-        /// </summary>
-        private float[]? Raised(ContactConfiguration config, float lift)
-        {
-            float[] q = (float[])config.Angles.Clone();
-            if (!(lift > 0f))
-            {
-                return q;
-            }
-
-            int steps = Math.Clamp((int)MathF.Ceiling(lift / (_leg / ProbeSteps)), 1, ProbeSteps);
-            for (int k = 1; k <= steps; k++)
-            {
-                if (!HoldsRaised(config, lift * k / steps, q))
-                {
-                    return null;
-                }
-            }
-
-            return q;
-        }
-
-        /// <summary>
-        /// For each foot of <paramref name="config"/> with its root lifted <paramref name="lift"/> metres (world up):
-        /// where it stands in the trunk's frame, and how far (metres) the trunk may move along
+        /// For each foot of <paramref name="config"/> with its root lifted <paramref name="lift"/> metres (world up),
+        /// held there by the angles <paramref name="raised"/> (<see cref="Cruise"/>'s): where it stands in the trunk's frame, and how far (metres) the trunk may move along
         /// <paramref name="direction"/> (Ahead) and against it (Behind) while the foot holds its contact by IK, sole
         /// flat, no bone in the level, probed in small increments up to the leg length. Free feet and other limbs are
         /// not limited.
         /// </summary>
-        private Footing[] Footings(ContactConfiguration config, Vector3 direction, float lift)
+        private Footing[] Footings(ContactConfiguration config, Vector3 direction, float lift, float[] raised)
         {
             var footings = new Footing[_limbs];
-            float[] raised = Raised(config, lift) ?? config.Angles;
             var start = new RootPose(config.Root.Position + (Vector3.UnitY * lift), config.Root.Rotation);
             for (int l = 0; l < _limbs; l++)
             {
