@@ -19,7 +19,10 @@ namespace Ballistic.Planner.Query;
 /// walk (<see cref="Walking.WalkSteering.Turn"/>, its feet re-stepping) or, when the walk before the jump can be
 /// steered to the new takeoff directly (the walk after it from the new landing), by that walk's own turn; a
 /// character that does not walk, a request that only jumps, or a walker on ground too steep to walk, by a hop in
-/// place, steered like any jump.
+/// place, steered like any jump. When the jump cannot be steered from the turned takeoff (or to the turned landing),
+/// the next stance is placed and tried: facing within <see cref="Yaws"/>, then within <see cref="WideYaws"/>, where
+/// the old one stands, then <see cref="HopShift"/> along the jump, the start or goal placed again at the request's
+/// point first; a turned end is dropped (kept as searched) only when none steers.
 /// </summary>
 /// <remarks>
 /// A jump is faced only when every move linking it to the path passes its checks; otherwise it is kept as it was
@@ -86,12 +89,13 @@ internal sealed class JumpFacer
     /// <param name="unfaced">Jumps (takeoff id, landing id) whose hops did not animate either, or <c>null</c>: left as searched.</param>
     /// <param name="placeStart">As <paramref name="placeGoal"/>, for the path's start and a first jump taking off off its way.</param>
     /// <param name="placeGoal">
-    /// Places the path's goal again facing a yaw (radians about +Y) for a last jump landing off its way (at the
-    /// request's own point, within its tolerance), or returns <c>null</c>; <c>null</c> when the goal must stay (a
-    /// roadmap node given): the path then turns in place into it.
+    /// Places the path's goal again facing a yaw (radians about +Y) within one of the yaw offsets given (radians) for
+    /// a last jump landing off its way (at the request's own point, within its tolerance), or returns <c>null</c>;
+    /// each call places a new stance with the same id. <c>null</c> when the goal must stay (a roadmap node given): the
+    /// path then turns in place into it.
     /// </param>
     /// <param name="stop">Polled between jumps: when it returns true, the rest of the path is linked as it is.</param>
-    public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, RoadmapNode?>? placeStart, Func<float, RoadmapNode?>? placeGoal, Func<bool> stop)
+    public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal, Func<bool> stop)
     {
         _nextId = nextId;
         var result = new List<Move>(path.Count + 4);
@@ -191,7 +195,7 @@ internal sealed class JumpFacer
     /// out of it, and returns its landing; <c>null</c> (and <paramref name="result"/> unchanged) when no faced jump
     /// passes the checks.
     /// </summary>
-    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, RoadmapNode?>? placeStart, Func<float, RoadmapNode?>? placeGoal)
+    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal)
     {
         Vector3 across = jump.Arc.End - jump.Arc.Start;
         float facing = MathF.Atan2(across.X, across.Z);
@@ -204,57 +208,44 @@ internal sealed class JumpFacer
 
         IReadOnlyList<(int From, int To)> cut = Cut(jump);
 
-        // The landing: turned when it must be, and only if the path can turn back into the old one from it.
-        RoadmapNode landing = jump.To;
-        RoadmapNode? goal = turnOn ? placeGoal?.Invoke(facing) : null;
-        if (goal is not null)
-        {
-            landing = goal;
-        }
-        List<Move>? turnBack = null;
-        if (goal is null && turnOn && Placed(jump.To, facing, -1f, node => (turnBack = Link(node, jump.To, rejected, cut)) is not null) is RoadmapNode placed)
-        {
-            landing = placed;
-        }
+        // The landing: the goal placed again (no moves: the path ends there), else turned where the old one stands
+        // (only if the path can turn back into the old one from it), else the old one. Each further landing is
+        // placed only when no takeoff steers to the ones before it.
+        var landings = new Candidates(turnOn ? Ends(placeGoal, facing, () => Placements(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut))) : []);
 
-        // The takeoff: where the path stands when that faces the jump, else a new stance where the old one stands
-        // (or a little ahead, for a hop) that the path can turn into.
-        RoadmapNode takeoff = current;
-        RoadmapNode? start = turnOff ? placeStart?.Invoke(facing) : null;
-        List<Move>? turnIn = null;
-        if (start is not null)
-        {
-            takeoff = start;
-        }
-        else if (turnOff && Placed(jump.From, facing, 1f, node => (turnIn = Link(current, node, rejected, cut)) is not null) is RoadmapNode turned)
-        {
-            takeoff = turned;
-        }
+        // The takeoff: the start placed again (no moves: the path starts there), else turned where the old one stands
+        // (or a little ahead, for a hop) such that the path can turn into it, else where the path stands.
+        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut))) : []);
 
-        if (Same(takeoff, current) && Same(landing, jump.To))
-        {
-            return null;
-        }
-
-        // Steer the faced jump, the new landing dropped if need be, then the new takeoff.
+        // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
         Jump? faced = null;
-        foreach ((RoadmapNode up, RoadmapNode down) in Pairs(takeoff, landing, current, jump.To))
+        List<Move>? turnIn = null;
+        List<Move>? turnBack = null;
+        foreach (((RoadmapNode Node, List<Move>? Moves)? up, (RoadmapNode Node, List<Move>? Moves)? down) in Pairs(takeoffs, landings))
         {
-            if (rejected?.Contains((up.Id, down.Id)) != true &&
-                _scene.Steering.Steer(up.Pose, up.Cone, down.Pose, down.Cone) is { Succeeded: true } r)
+            RoadmapNode from = up?.Node ?? current;
+            RoadmapNode to = down?.Node ?? jump.To;
+            if ((Same(from, current) && Same(to, jump.To)) || rejected?.Contains((from.Id, to.Id)) == true)
             {
-                faced = new Jump(up, down, r.Arc) with { CutFrom = cut };
+                continue;
+            }
+
+            if (_scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone) is { Succeeded: true } r)
+            {
+                faced = new Jump(from, to, r.Arc) with { CutFrom = cut };
+                turnIn = up?.Moves;
+                turnBack = down?.Moves;
                 break;
             }
         }
 
-        if (faced is null || (Same(faced.From, current) && Same(faced.To, jump.To)))
+        if (faced is null)
         {
             return null;
         }
 
-        // Into the takeoff: the walk before steered to it, else a turn in place.
-        if (!Same(faced.From, current) && !ReferenceEquals(faced.From, start))
+        // Into the takeoff: the walk before steered to it, else a turn in place (none into the start placed again).
+        if (!Same(faced.From, current) && turnIn is not null)
         {
             if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
                 rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
@@ -265,57 +256,120 @@ internal sealed class JumpFacer
             else
             {
                 // Checked when the takeoff was placed.
-                result.AddRange(turnIn!);
+                result.AddRange(turnIn);
             }
         }
 
         // The turn out of a new landing comes with whatever follows (Continue, or the path's end), unless it is the goal.
-        _placedGoal = ReferenceEquals(faced.To, goal) ? goal : null;
-        _turnBack = ReferenceEquals(faced.To, landing) && turnBack is not null ? (landing, turnBack) : null;
+        _placedGoal = !Same(faced.To, jump.To) && turnBack is null ? faced.To : null;
+        _turnBack = turnBack is not null ? (faced.To, turnBack) : null;
         result.Add(faced);
         return faced.To;
     }
 
-    /// <summary>The pairs of takeoff and landing tried, most turned first, none twice.</summary>
-    private static IEnumerable<(RoadmapNode Up, RoadmapNode Down)> Pairs(RoadmapNode takeoff, RoadmapNode landing, RoadmapNode oldTakeoff, RoadmapNode oldLanding)
+    /// <summary>
+    /// The path's end placed again facing <paramref name="facing"/> (within <see cref="Yaws"/>, then within
+    /// <see cref="WideYaws"/>), with no moves, when <paramref name="place"/> is given; then the stances of
+    /// <paramref name="turned"/> (the path turning in place at its end).
+    /// </summary>
+    private static IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Ends(Func<float, float[], RoadmapNode?>? place, float facing, Func<IEnumerable<(RoadmapNode Node, List<Move>? Moves)>> turned)
     {
-        yield return (takeoff, landing);
-        if (!Same(landing, oldLanding))
+        foreach (float[] yaws in place is null ? [] : (float[][])[Yaws, WideYaws])
         {
-            yield return (takeoff, oldLanding);
+            if (place!(facing, yaws) is { } end)
+            {
+                yield return (end, null);
+            }
         }
 
-        if (!Same(takeoff, oldTakeoff) && !Same(landing, oldLanding))
+        foreach ((RoadmapNode Node, List<Move>? Moves) stance in turned())
         {
-            yield return (oldTakeoff, landing);
+            yield return stance;
         }
     }
 
     /// <summary>
-    /// A stance facing <paramref name="facing"/> placed where <paramref name="old"/> stands, or
-    /// <see cref="HopShift"/> from there along the facing (times <paramref name="side"/>: ahead for a takeoff, behind
-    /// for a landing) for a hop to turn by, that passes <paramref name="linked"/>: walkers try the spot first, others
-    /// the shifted one; <c>null</c> when neither passes.
+    /// The pairs of takeoff and landing tried (<c>null</c>: the old one), most turned first: each turned takeoff with
+    /// each turned landing and then the old landing, then the old takeoff with each turned landing. Further turned
+    /// ends are only placed while no pair with the ones before them has been tried in vain.
     /// </summary>
-    private RoadmapNode? Placed(RoadmapNode old, float facing, float side, Func<RoadmapNode, bool> linked)
+    private static IEnumerable<((RoadmapNode, List<Move>?)? Up, (RoadmapNode, List<Move>?)? Down)> Pairs(Candidates takeoffs, Candidates landings)
+    {
+        for (int t = 0; takeoffs.Has(t); t++)
+        {
+            for (int l = 0; landings.Has(l); l++)
+            {
+                yield return (takeoffs[t], landings[l]);
+            }
+
+            yield return (takeoffs[t], null);
+        }
+
+        for (int l = 0; landings.Has(l); l++)
+        {
+            yield return (null, landings[l]);
+        }
+    }
+
+    /// <summary>Stances placed lazily, in order, each kept once placed.</summary>
+    private sealed class Candidates(IEnumerable<(RoadmapNode Node, List<Move>? Moves)> source)
+    {
+        private readonly IEnumerator<(RoadmapNode Node, List<Move>? Moves)> _source = source.GetEnumerator();
+        private readonly List<(RoadmapNode Node, List<Move>? Moves)> _placed = [];
+        private bool _done;
+
+        /// <summary>Whether a stance <paramref name="index"/> exists (placed now when needed).</summary>
+        public bool Has(int index)
+        {
+            while (_placed.Count <= index && !_done)
+            {
+                if (_source.MoveNext())
+                {
+                    _placed.Add(_source.Current);
+                }
+                else
+                {
+                    _done = true;
+                }
+            }
+
+            return index < _placed.Count;
+        }
+
+        /// <summary>The stance <paramref name="index"/>, already placed.</summary>
+        public (RoadmapNode Node, List<Move>? Moves) this[int index] => _placed[index];
+    }
+
+    /// <summary>
+    /// Stances facing <paramref name="facing"/> (within <see cref="Yaws"/>, then within <see cref="WideYaws"/>)
+    /// placed where <paramref name="old"/> stands, or <see cref="HopShift"/> from there along the facing (times
+    /// <paramref name="side"/>: ahead for a takeoff, behind for a landing) for a hop to turn by, each with the moves
+    /// <paramref name="link"/> finds for it: walkers try the spot first, others the shifted one; stances
+    /// <paramref name="link"/> refuses (<c>null</c>) are skipped. At most four are placed.
+    /// </summary>
+    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Placements(RoadmapNode old, float facing, float side, Func<RoadmapNode, List<Move>?> link)
     {
         Vector3 centre = Roadmap.CentreOf(old);
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
         foreach (Vector3 point in _hops ? [centre + ahead, centre] : (Vector3[])[centre, centre + ahead])
         {
-            EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, Yaws, _canStand, Height(old));
-            if (placed.Pose is { } pose)
+            foreach (float[] yaws in (float[][])[Yaws, WideYaws])
             {
-                var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
-                if (linked(node))
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, Height(old));
+                if (placed.Pose is { } pose)
                 {
-                    return node;
+                    var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
+                    if (link(node) is { } moves)
+                    {
+                        yield return (node, moves);
+                    }
                 }
             }
         }
-
-        return null;
     }
+
+    /// <summary>Yaws (radians, from the jump's direction) a new stance is tried at when none at <see cref="Yaws"/> steers: still within the eye's 30° at takeoff.</summary>
+    internal static readonly float[] WideYaws = [20f * MathF.PI / 180f, -20f * MathF.PI / 180f];
 
     /// <summary>The trunk's height (metres) above the contacts' centre of <paramref name="node"/>: a stance replacing it stands as high (a cave's ceiling, a doorway).</summary>
     internal static float Height(RoadmapNode node) => node.Pose.Position.Y - Roadmap.CentreOf(node).Y;

@@ -444,25 +444,26 @@ public sealed class PathQuery
     /// <summary>A start or goal that may be placed again at its requested point, facing a jump (<see cref="Face"/>).</summary>
     private sealed class PlacedEnd(PathQuery query, Vector3? point, RoadmapNode old, int id, QuerySettings settings)
     {
-        private EndpointPlacement? _placed;
-        private RoadmapNode? _node;
+        /// <summary>Every stance placed, with its placement: the path keeps at most one of them.</summary>
+        private readonly List<(RoadmapNode Node, EndpointPlacement Placement)> _placed = [];
 
-        /// <summary>Places the end again facing the yaw (radians about +Y), or <c>null</c> (none placed, or it must stay: then <see cref="Place"/> itself is <c>null</c>).</summary>
-        public Func<float, RoadmapNode?>? Place => point is Vector3 p ? facing => PlaceAt(p, facing) : null;
+        /// <summary>Places the end again facing the yaw (radians about +Y) within one of the offsets (radians), or <c>null</c> (none placed, or it must stay: then <see cref="Place"/> itself is <c>null</c>).</summary>
+        public Func<float, float[], RoadmapNode?>? Place => point is Vector3 p ? (facing, yaws) => PlaceAt(p, facing, yaws) : null;
 
         /// <summary>The placement of <paramref name="node"/> when it is the end placed again, otherwise <c>null</c>.</summary>
-        public EndpointPlacement? PlacementOf(RoadmapNode node) => _node is not null && ReferenceEquals(node, _node) ? _placed : null;
+        public EndpointPlacement? PlacementOf(RoadmapNode node) => _placed.Find(p => ReferenceEquals(p.Node, node)).Placement;
 
-        private RoadmapNode? PlaceAt(Vector3 p, float facing)
+        private RoadmapNode? PlaceAt(Vector3 p, float facing, float[] yaws)
         {
-            EndpointPlacement placed = query._scene.Sampler.PlaceFacingWithin(p, settings.Tolerance, facing, JumpFacer.Yaws, settings.CanStand, JumpFacer.Height(old));
+            EndpointPlacement placed = query._scene.Sampler.PlaceFacingWithin(p, settings.Tolerance, facing, yaws, settings.CanStand, JumpFacer.Height(old));
             if (placed.Pose is not { } pose)
             {
                 return null;
             }
 
-            _placed = placed;
-            return _node = new RoadmapNode(id, pose.Pose, pose.Cone, pose.Contacts);
+            var node = new RoadmapNode(id, pose.Pose, pose.Cone, pose.Contacts);
+            _placed.Add((node, placed));
+            return node;
         }
     }
 

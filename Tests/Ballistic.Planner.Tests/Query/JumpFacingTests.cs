@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
@@ -99,16 +100,51 @@ public sealed class JumpFacingTests
         Assert.That(again.Moves.Select(m => (m.From.Id, m.To.Id, m.From.Pose, m.To.Pose)), Is.EqualTo(faced.Moves.Select(m => (m.From.Id, m.To.Id, m.From.Pose, m.To.Pose))));
     }
 
+    /// <summary>
+    /// Where no stance facing a jump within 12° of its way can stand (the request's own stance check refuses them), the
+    /// facer places the turned stance further round (up to 20° off) rather than leaving the jump sideways: every jump
+    /// of a metre or more still leaves and lands within the eye's limits, and some turned stance stands 12–30° off.
+    /// </summary>
+    [Test]
+    public void AJumpWhoseNearestTurnCannotStandIsTurnedFurtherRound()
+    {
+        Case c = Desert.Value;
+        var settings = new QuerySettings { CanStand = c.Real.CanStand };
+        PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { FaceJumps = false });
+        float[] ways = [.. searched.Jumps.Where(Far).Select(j => MathF.Atan2(j.Arc.End.X - j.Arc.Start.X, j.Arc.End.Z - j.Arc.Start.Z))];
+        bool Near(PoseEvaluation pose)
+        {
+            float yaw = MathF.Atan2(pose.Pose.Forward.X, pose.Pose.Forward.Z);
+            return ways.Any(w => MathF.Abs(MathF.IEEERemainder(yaw - w, 2f * MathF.PI)) < 12f * MathF.PI / 180f);
+        }
+
+        PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { CanStand = pose => c.Real.CanStand(pose) && !Near(pose) });
+        Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
+        Jump[] far = [.. faced.Jumps.Where(Far)];
+        int n = c.Roadmap.Nodes.Count;
+        (float off, float on) = Worst(faced);
+        TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°; turned stances off by {string.Join(", ", far.SelectMany(j => new[] { (j.From, j), (j.To, j) }).Where(s => s.Item1.Id >= n + 2).Select(s => $"{Off(s.Item1, s.j):0}°"))}");
+        Assert.Multiple(() =>
+        {
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(far.SelectMany(j => new[] { (j.From, j), (j.To, j) }).Where(s => s.Item1.Id >= n + 2).Select(s => Off(s.Item1, s.j)), Has.Some.InRange(12f, 30f), "a turned stance stands further round");
+        });
+        AuditReport audit = PlanAudit.Check("desert turned further", c.Scene, c.From, c.To, faced, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
     [Test]
     public void AJumpGivenBackByTheRepairIsFacedAgainTurningByHops()
     {
-        // A turn walk the gait cannot perform makes the repair give its jump back (UncutJumps); that jump is then
-        // turned by hops, which the jump animator performs, and still faces its way.
+        // A walk turning into a faced jump (a turn in place, or the walk before steered to the turned takeoff) that the
+        // gait cannot perform makes the repair give its jump back (UncutJumps); that jump is then turned by hops,
+        // which the jump animator performs, and still faces its way.
         Case c = Desert.Value;
         var settings = new QuerySettings { CanStand = c.Real.CanStand };
         PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings);
-        HashSet<(int From, int To)> walked = [.. faced.Walks.Where(w => w.Length < JumpFacer.MaxTurnShift + 0.1f).SelectMany(w => w.CutFrom)];
-        Assume.That(walked, Is.Not.Empty, "the desert path turns by walking somewhere");
+        HashSet<(int From, int To)> walked = [.. faced.Walks.SelectMany(w => w.CutFrom)];
+        Assert.That(walked, Is.Not.Empty, "the desert path walks into a turned jump somewhere");
         PlanResult again = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { UncutJumps = walked });
         Assert.That(again.Status, Is.EqualTo(PlannerStatus.Exact), again.Reason);
         (float off, float on) = Worst(again);
