@@ -97,7 +97,7 @@ public sealed class AnimatedPlanner
         var clock = Stopwatch.StartNew();
         var query = new PathQuery(_scene, roadmap);
         settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand };
-        var repair = new JumpRepair();
+        var repair = new JumpRepair(roadmap.Nodes.Count + 2);
 
         // The condition sees the time since this request began, not since each search began.
         TerminationCondition? stop = termination is null ? null : new Elapsed(termination, clock);

@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 
@@ -37,6 +38,19 @@ public sealed class JumpRepair
     private readonly List<RejectedJump> _setAside = [];
     private readonly HashSet<int> _noTakeoffs = [];
     private readonly HashSet<int> _noLandings = [];
+    private readonly List<RootPose> _refusedTurns = [];
+
+    private readonly int _placedFrom;
+
+    /// <summary>Creates the repair record of one request.</summary>
+    /// <param name="placedFrom">
+    /// The first node id of stances placed for the request after its search (the roadmap's node count plus two: the
+    /// tightener's and the facer's), whose poses <see cref="RefusedTurns"/> may hold; by default none is refused.
+    /// </param>
+    public JumpRepair(int placedFrom = int.MaxValue)
+    {
+        _placedFrom = placedFrom;
+    }
 
     /// <summary>Moves (jumps or walks: from node id, to node id) the next search must not use.</summary>
     public IReadOnlySet<(int From, int To)> Excluded => _excluded;
@@ -46,6 +60,12 @@ public sealed class JumpRepair
 
     /// <summary>Stances (node ids) no jump of the next searches lands on: the body could not absorb a landing on them.</summary>
     public IReadOnlySet<int> NoLandings => _noLandings;
+
+    /// <summary>
+    /// Stances placed to face a jump (root poses) that a faced jump or a hop turning into it could not be performed
+    /// from or to: the next searches place the next stance instead (<see cref="QuerySettings.RefusedTurns"/>).
+    /// </summary>
+    public IReadOnlyList<RootPose> RefusedTurns => _refusedTurns;
 
     /// <summary>The jumps set aside so far, in order, each with the animator's reason.</summary>
     public IReadOnlyList<RejectedJump> SetAside => _setAside;
@@ -117,6 +137,11 @@ public sealed class JumpRepair
             settings = settings with { UnfacedJumps = _unfaced };
         }
 
+        if (_refusedTurns.Count > 0)
+        {
+            settings = settings with { RefusedTurns = [.. _refusedTurns] };
+        }
+
         if (_noTakeoffs.Count > 0 || _noLandings.Count > 0)
         {
             settings = settings with { NoTakeoffs = _noTakeoffs, NoLandings = _noLandings };
@@ -127,8 +152,10 @@ public sealed class JumpRepair
 
     /// <summary>
     /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
-    /// problem with; for a move cut from jumps (<see cref="Move.CutFrom"/>), keeps those jumps whole instead (and,
-    /// for jumps already kept whole, leaves them unturned: <see cref="Unfaced"/>); for a
+    /// problem with; for a jump cut from jumps (<see cref="Move.CutFrom"/>) whose takeoff (landing) was placed for it
+    /// and cannot crouch (absorb), refuses that stance instead, once (<see cref="RefusedTurns"/>); for any other move cut from
+    /// jumps, keeps those jumps whole instead (and, for jumps already kept whole, leaves them unturned:
+    /// <see cref="Unfaced"/>); for a
     /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
     /// <see cref="HoppingAllowed"/>, and unless a spot is already known: the hop there did not pass); for a move of a
     /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside; for a searched jump whose
@@ -152,6 +179,14 @@ public sealed class JumpRepair
             if (move.CutFrom.Count > 0)
             {
                 cutFailed = true;
+                if (move is Jump && RefuseTurns(move, problems))
+                {
+                    // A jump (or hop) to or from a stance turned to face it: the next search turns it another way.
+                    Record(move, problems.First().Reason);
+                    added++;
+                    continue;
+                }
+
                 bool kept = false;
                 foreach ((int, int) jump in move.CutFrom)
                 {
@@ -224,6 +259,35 @@ public sealed class JumpRepair
         HopFailures += hopped ? 1 : 0;
         return added;
     }
+
+    /// <summary>
+    /// Adds the ends of <paramref name="move"/> the animator blames (the takeoff or landing its stance problems name:
+    /// the body cannot crouch or absorb there) that were placed for the request after its search (by the facer or the
+    /// tightener) to <see cref="RefusedTurns"/>; true when one is new.
+    /// </summary>
+    private bool RefuseTurns(Move move, IEnumerable<JumpProblem> problems)
+    {
+        bool takeoff = problems.Any(p => p.Stance == ProblemStance.Takeoff);
+        bool landing = problems.Any(p => p.Stance == ProblemStance.Landing);
+        bool refusedTakeoff = takeoff && move.From.Id >= _placedFrom && RefuseTurn(move.From.Pose);
+        bool refusedLanding = landing && move.To.Id >= _placedFrom && RefuseTurn(move.To.Pose);
+        return refusedTakeoff || refusedLanding;
+    }
+
+    private bool RefuseTurn(RootPose pose)
+    {
+        if (_refusedTurns.Any(r => IsRefused(r, pose)))
+        {
+            return false;
+        }
+
+        _refusedTurns.Add(pose);
+        return true;
+    }
+
+    /// <summary>Whether <paramref name="pose"/> is the refused turn <paramref name="refused"/>: within 2 cm and 2°.</summary>
+    internal static bool IsRefused(RootPose refused, RootPose pose) =>
+        Vector3.Distance(refused.Position, pose.Position) <= 0.02f && MathF.Abs(Quaternion.Dot(refused.Rotation, pose.Rotation)) >= MathF.Cos(1f * MathF.PI / 180f);
 
     /// <summary>Lists <paramref name="move"/> among the moves set aside, counting walks apart from jumps for the messages.</summary>
     private void Record(Move move, string reason)

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Sampling;
 
@@ -110,6 +111,13 @@ public sealed record QuerySettings
     /// fills it); <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<(int From, int To)>? UnfacedJumps { get; init; }
+
+    /// <summary>
+    /// Stances placed by <see cref="FaceJumps"/> (their root poses, world frame) that the body could not perform a faced
+    /// jump from or to (<see cref="JumpRepair"/> fills it): the facer places its next stance instead (facing further
+    /// round, or a little along the jump), not one within 2 cm and 2° of these. <c>null</c> for none.
+    /// </summary>
+    public IReadOnlyList<RootPose>? RefusedTurns { get; init; }
 
     /// <summary>
     /// Ground points (world metres) where the body could not walk: <see cref="JumpRepair"/> fills it from where the

@@ -159,6 +159,45 @@ public sealed class JumpFacingTests
         Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
     }
 
+    /// <summary>
+    /// A faced jump the body cannot crouch for on its turned takeoff is turned another way the next round
+    /// (<see cref="QuerySettings.RefusedTurns"/>), not flown as searched: the stance refused is never jumped from
+    /// again, and every jump still faces its way.
+    /// </summary>
+    [Test]
+    public void AFacedJumpTheBodyCannotCrouchForOnItsTurnedTakeoffIsTurnedAnotherWay()
+    {
+        Case c = Pond.Value;
+        RoadmapNode? refused = null;
+        int n = c.Roadmap.Nodes.Count;
+
+        // Refuses every jump from the first turned takeoff it sees (a faced jump's takeoff placed for it).
+        bool Refuses(Move m)
+        {
+            if (m is not Jump || m.CutFrom.Count == 0 || m.From.Id < n + 2)
+            {
+                return false;
+            }
+
+            refused ??= m.From;
+            return m.From.Pose == refused.Pose;
+        }
+
+        var animator = new RefusingAnimator(new SimpleMoveAnimator(c.Real), Refuses, "cannot crouch on this turn", ProblemStance.Takeoff);
+        AnimatedPlan plan = new AnimatedPlanner(c.Scene, animator).Plan(c.Roadmap, c.From, c.To, new QuerySettings { Locomotion = Locomotion.Jump });
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        (float off, float on) = Worst(plan.Result);
+        Assert.Multiple(() =>
+        {
+            Assert.That(refused, Is.Not.Null, "the pond path turns a jump");
+            Assert.That(animator.PathsRefused, Is.GreaterThanOrEqualTo(1));
+            Assert.That(plan.Result.Jumps.Select(j => j.From.Pose), Has.No.Member(refused!.Pose), "no jump from the refused stance");
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(plan.Rejected.Select(r => r.Reason), Has.All.EqualTo("cannot crouch on this turn"));
+        });
+    }
+
     [Test]
     public void AFacedMoveTheBodyCannotPerformGivesTheJumpBackAsSearched()
     {
