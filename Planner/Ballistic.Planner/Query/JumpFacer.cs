@@ -73,7 +73,7 @@ internal sealed class JumpFacer
     /// <param name="scene">The level and character.</param>
     /// <param name="walking">Whether the request walks (turns are walked) or only jumps (turns are hopped).</param>
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
-    /// <param name="refused">Stances a faced jump could not be performed from or to (<see cref="QuerySettings.RefusedTurns"/>), or <c>null</c>: not placed again.</param>
+    /// <param name="refused">Stances the body could not crouch or absorb on for a faced jump (<see cref="QuerySettings.RefusedTurns"/>), or <c>null</c>: not placed again.</param>
     public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand, IReadOnlyList<RootPose>? refused = null)
     {
         _scene = scene;
@@ -215,11 +215,11 @@ internal sealed class JumpFacer
         // The landing: the goal placed again (no moves: the path ends there), else turned where the old one stands
         // (only if the path can turn back into the old one from it), else the old one. Each further landing is
         // placed only when no takeoff steers to the ones before it.
-        var landings = new Candidates(turnOn ? Ends(placeGoal, facing, Refused, () => Placements(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut))) : []);
+        var landings = new Candidates(turnOn ? Ends(placeGoal, facing, () => Placements(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut))) : []);
 
         // The takeoff: the start placed again (no moves: the path starts there), else turned where the old one stands
         // (or a little ahead, for a hop) such that the path can turn into it, else where the path stands.
-        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, Refused, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut))) : []);
+        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut))) : []);
 
         // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
         Jump? faced = null;
@@ -273,14 +273,15 @@ internal sealed class JumpFacer
 
     /// <summary>
     /// The path's end placed again facing <paramref name="facing"/> (within <see cref="Yaws"/>, then within
-    /// <see cref="WideYaws"/>), with no moves, when <paramref name="place"/> is given and <paramref name="refused"/>
-    /// does not refuse it; then the stances of <paramref name="turned"/> (the path turning in place at its end).
+    /// <see cref="WideYaws"/>), with no moves, when <paramref name="place"/> is given and the pose is not refused
+    /// (<see cref="QuerySettings.RefusedTurns"/>); then the stances of <paramref name="turned"/> (the path turning in
+    /// place at its end).
     /// </summary>
-    private static IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Ends(Func<float, float[], RoadmapNode?>? place, float facing, Func<RoadmapNode, bool> refused, Func<IEnumerable<(RoadmapNode Node, List<Move>? Moves)>> turned)
+    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Ends(Func<float, float[], RoadmapNode?>? place, float facing, Func<IEnumerable<(RoadmapNode Node, List<Move>? Moves)>> turned)
     {
         foreach (float[] yaws in place is null ? [] : (float[][])[Yaws, WideYaws])
         {
-            if (place!(facing, yaws) is { } end && !refused(end))
+            if (place!(facing, yaws) is { } end && !Refused(end.Pose))
             {
                 yield return (end, null);
             }
@@ -360,7 +361,7 @@ internal sealed class JumpFacer
             foreach (float[] yaws in (float[][])[Yaws, WideYaws])
             {
                 EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, Height(old));
-                if (placed.Pose is { } pose && !_refused.Any(r => JumpRepair.IsRefused(r, pose.Pose)))
+                if (placed.Pose is { } pose && !Refused(pose.Pose))
                 {
                     var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
                     if (link(node) is { } moves)
@@ -372,8 +373,8 @@ internal sealed class JumpFacer
         }
     }
 
-    /// <summary>Whether <paramref name="node"/> stands where a faced jump could not be performed before (<see cref="QuerySettings.RefusedTurns"/>).</summary>
-    private bool Refused(RoadmapNode node) => _refused.Any(r => JumpRepair.IsRefused(r, node.Pose));
+    /// <summary>Whether <paramref name="pose"/> is where the body could not crouch or absorb for a faced jump before (<see cref="QuerySettings.RefusedTurns"/>).</summary>
+    private bool Refused(RootPose pose) => _refused.Any(r => JumpRepair.IsRefused(r, pose));
 
     /// <summary>Yaws (radians, from the jump's direction) a new stance is tried at when none at <see cref="Yaws"/> steers: still within the eye's 30° at takeoff.</summary>
     internal static readonly float[] WideYaws = [20f * MathF.PI / 180f, -20f * MathF.PI / 180f];

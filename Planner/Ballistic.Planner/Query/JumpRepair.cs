@@ -39,7 +39,6 @@ public sealed class JumpRepair
     private readonly HashSet<int> _noTakeoffs = [];
     private readonly HashSet<int> _noLandings = [];
     private readonly List<RootPose> _refusedTurns = [];
-
     private readonly int _placedFrom;
 
     /// <summary>Creates the repair record of one request.</summary>
@@ -62,8 +61,9 @@ public sealed class JumpRepair
     public IReadOnlySet<int> NoLandings => _noLandings;
 
     /// <summary>
-    /// Stances placed to face a jump (root poses) that a faced jump or a hop turning into it could not be performed
-    /// from or to: the next searches place the next stance instead (<see cref="QuerySettings.RefusedTurns"/>).
+    /// Stances placed for the request after its search (root poses) on which the body could not crouch for a cut or
+    /// faced jump's takeoff, or absorb its landing: the next searches' facer places its next stance instead
+    /// (<see cref="QuerySettings.RefusedTurns"/>).
     /// </summary>
     public IReadOnlyList<RootPose> RefusedTurns => _refusedTurns;
 
@@ -181,7 +181,7 @@ public sealed class JumpRepair
                 cutFailed = true;
                 if (move is Jump && RefuseTurns(move, problems))
                 {
-                    // A jump (or hop) to or from a stance turned to face it: the next search turns it another way.
+                    // The body cannot crouch (absorb) on a stance placed for this jump: the next search turns it another way.
                     Record(move, problems.First().Reason);
                     added++;
                     continue;

@@ -113,9 +113,10 @@ public sealed record QuerySettings
     public IReadOnlySet<(int From, int To)>? UnfacedJumps { get; init; }
 
     /// <summary>
-    /// Stances placed by <see cref="FaceJumps"/> (their root poses, world frame) that the body could not perform a faced
-    /// jump from or to (<see cref="JumpRepair"/> fills it): the facer places its next stance instead (facing further
-    /// round, or a little along the jump), not one within 2 cm and 2° of these. <c>null</c> for none.
+    /// Stances placed for the request after its search (their root poses, world frame) on which the body could not
+    /// crouch for a faced jump's takeoff or absorb its landing (<see cref="JumpRepair"/> fills it): the
+    /// <see cref="FaceJumps"/> facer places its next stance instead (facing further round, or a little along the
+    /// jump), not one within 2 cm and 2° of these. <c>null</c> for none.
     /// </summary>
     public IReadOnlyList<RootPose>? RefusedTurns { get; init; }
 
