@@ -86,6 +86,12 @@ internal sealed class WalkGait
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
 
+    /// <summary>Share of the upright step taken near where a first run met trouble (<see cref="Animate"/>).</summary>
+    private const float ShortStep = 0.85f;
+
+    /// <summary>Steps either side of a trouble over which the upright step is shortened.</summary>
+    private const float ShortSpan = 1f;
+
     /// <summary>Least duration of a swing, seconds: a foot never steps to a new foothold faster (a contact that moves within a tenth of a second reads as a slide).</summary>
     public const float MinSwing = 0.16f;
 
@@ -176,7 +182,11 @@ internal sealed class WalkGait
     }
 
     /// <summary>A walk animated on its own: frames and contact phases on the walk's clock (0 to its duration), problems, frames with a bone in the level, the step length (metres) and half-cycle count chosen.</summary>
-    public sealed record Clip(AnimationFrame[] Frames, List<ContactPhase> Phases, int CollidingFrames, List<JumpProblem> Problems, float Step, int HalfCycles);
+    public sealed record Clip(AnimationFrame[] Frames, List<ContactPhase> Phases, int CollidingFrames, List<JumpProblem> Problems, float Step, int HalfCycles)
+    {
+        /// <summary>Times (seconds on the walk's clock) at which something went wrong: where a second run shortens its steps.</summary>
+        public float[] Troubles { get; init; } = [];
+    }
 
     /// <summary>How a limb is moved over a span of fine steps (both ends included).</summary>
     private abstract record Segment(int From, int To);
@@ -198,8 +208,9 @@ internal sealed class WalkGait
     /// upright where the body can: steps from the rest leg and speed (stride 2.3·L·Fr^0.3) within
     /// <see cref="UprightReachMargin"/> of the held legs' reach, the trunk lifted toward <see cref="UprightHips"/> as
     /// far as the held feet allow (<see cref="KneeMargin"/>), the hands down beside the thighs swinging
-    /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: lifted with the classic steps, then at
-    /// the stances' own height; the first clean one is kept, else the one with the fewest problems.
+    /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: walked again with steps shortened to
+    /// <see cref="ShortStep"/> only around them (twice at most), then lifted with the classic steps, then at the
+    /// stances' own height; the first clean one is kept, else the one with the fewest problems.
     /// </summary>
     /// <param name="move">Index of the walk in the path, for problems.</param>
     /// <param name="walk">The walk.</param>
@@ -272,6 +283,25 @@ internal sealed class WalkGait
         // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
         // first without problems is kept, else the one with fewest.
         Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
+        // Where the upright walk met trouble, it is walked again with shorter steps there (twice at most), the rest
+        // of it unchanged: one hollow or a cramped end stance does not shorten every step.
+        float[] shortAt = best.Troubles;
+        for (int again = 0; again < 2 && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
+        {
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, shortAt).Animate();
+            if (clip.Problems.Count >= best.Problems.Count && again > 0)
+            {
+                break;
+            }
+
+            if (clip.Problems.Count < best.Problems.Count)
+            {
+                best = clip;
+            }
+
+            shortAt = [.. shortAt, .. clip.Troubles];
+        }
+
         if (best.Problems.Count == 0 || !(_restLeg > 0f))
         {
             return best;
@@ -326,6 +356,8 @@ internal sealed class WalkGait
         private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
         private readonly List<JumpProblem> _problems = [];
         private readonly List<ContactPhase> _phases = [];
+        private readonly List<float> _troubles = [];
+        private readonly float[] _shortAt;
         private readonly int _limbs;
         private float _leg;
         private float _stepHeight;
@@ -346,8 +378,9 @@ internal sealed class WalkGait
         private readonly bool _cruise;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, float[]? shortAt = null)
         {
+            _shortAt = [.. (shortAt ?? []).Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
             _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
             _lift = lift && _arms;
@@ -533,6 +566,7 @@ internal sealed class WalkGait
                 if (bone >= 0)
                 {
                     _colliding[i] = true;
+                    _troubles.Add(Time(i));
                     if (!trunkReported)
                     {
                         trunkReported = true;
@@ -547,7 +581,7 @@ internal sealed class WalkGait
                 _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})", distance));
             }
 
-            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n);
+            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n) { Troubles = [.. _troubles] };
         }
 
         /// <summary>The roots on the walk at every fine step; the trunk's angles (in no limb) going smoothly from the start pose's to the end pose's; limbs as at the start.</summary>
@@ -795,6 +829,7 @@ internal sealed class WalkGait
 
         private void Fail(int limb, string kind, int step)
         {
+            _troubles.Add(Time(step));
             float distance = _walk.DistanceAt(Time(step));
             _failures[(limb, kind)] = _failures.TryGetValue((limb, kind), out (float Distance, int Count) f) ? (MathF.Min(f.Distance, distance), f.Count + 1) : (distance, 1);
         }
@@ -1072,7 +1107,7 @@ internal sealed class WalkGait
                 RootPose pose = _walk.PoseAt(duration * i / samples);
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
-                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples));
+                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples)) * Shortened(duration * (i - 0.5f) / samples);
                 cost[i] = cost[i - 1] + MathF.Min((moved / stepHere) + (turn / MaxTurn), dt / MinHalfCycle);
                 previous = pose;
             }
@@ -1121,6 +1156,24 @@ internal sealed class WalkGait
                     return times;
                 }
             }
+        }
+
+        /// <summary>
+        /// The share of the step taken at <paramref name="time"/>: <see cref="ShortStep"/> within
+        /// <see cref="ShortSpan"/> steps' time of a trouble the previous run met (on a hollow, a bump or a stance's
+        /// cramped ground the legs reach less far), rising smoothly to 1 a step beyond.
+        /// </summary>
+        private float Shortened(float time)
+        {
+            float share = 1f;
+            float span = ShortSpan * _step / MathF.Max(_walk.Speed, 1e-3f);
+            foreach (float at in _shortAt)
+            {
+                float x = (MathF.Abs(time - at) - span) / MathF.Max(span / ShortSpan, 1e-4f);
+                share = MathF.Min(share, float.Lerp(ShortStep, 1f, Smooth(x)));
+            }
+
+            return share;
         }
 
         /// <summary>The time (seconds into the walk) at which the trunk's motion has cost <paramref name="c"/> half-cycles (<see cref="Boundaries"/>).</summary>
