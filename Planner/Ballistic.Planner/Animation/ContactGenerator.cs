@@ -334,16 +334,26 @@ public sealed class ContactGenerator
             }
         }
 
-        // The surface point nearest the reference effector position, from the contact pose itself: the limb as the
-        // rig holds it, bending the way it bends there.
+        // The surface point nearest the reference effector position, from the contact pose itself (the limb as the
+        // rig holds it, bending the way it bends there), then from the flexion pose: a rig whose contact pose is its
+        // straight-legged bind pose cannot be solved from there to a foot under the lowered hip (a straight chain is
+        // a singular start for IK), and would otherwise stand on a database sample's foothold far ahead or behind.
         if (candidates.Count > 0 && Vector3.Distance(candidates[0].Point, limbRoot) <= _reach[l])
         {
-            Array.Copy(q, trial, q.Length);
-            if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
+            foreach (float[] from in new[] { Model.ContactPose, Model.FlexionPose })
             {
-                Array.Copy(trial, q, q.Length);
-                contact = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
-                return true;
+                Array.Copy(q, trial, q.Length);
+                foreach (int d in limb.ChainDofs)
+                {
+                    trial[d] = from[d];
+                }
+
+                if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
+                {
+                    Array.Copy(trial, q, q.Length);
+                    contact = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
+                    return true;
+                }
             }
         }
 
@@ -438,7 +448,8 @@ public sealed class ContactGenerator
 
     /// <summary>
     /// IK of limb <paramref name="l"/> to a surface point into <paramref name="trial"/>, from the database sample whose
-    /// effector lies nearest the point (the configuration <paramref name="q"/> otherwise).
+    /// effector lies nearest the point (the configuration <paramref name="q"/> otherwise), then from the flexion pose
+    /// (a sample can start the solver toward a twisted solution the effector-fold check refuses).
     /// </summary>
     private bool SolveFromNearest(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
@@ -450,6 +461,17 @@ public sealed class ContactGenerator
         }
 
         _databases[l].Apply(start, trial);
+        if (TrySolve(root, trial, Model.Limbs[l], point, normal, crouch, positions, rotations))
+        {
+            return true;
+        }
+
+        Array.Copy(q, trial, q.Length);
+        foreach (int d in Model.Limbs[l].ChainDofs)
+        {
+            trial[d] = Model.FlexionPose[d];
+        }
+
         return TrySolve(root, trial, Model.Limbs[l], point, normal, crouch, positions, rotations);
     }
 

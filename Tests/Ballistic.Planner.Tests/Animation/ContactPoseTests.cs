@@ -1,6 +1,8 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Tests.Support;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
@@ -46,6 +48,47 @@ public sealed class ContactPoseTests
             LimbContact? made = pose.ContactOf(foot);
             Assert.That(made, Is.Not.Null, $"{limb.Name} stands");
             Assert.That(Vector3.Distance(made!.Value.Position, expected), Is.LessThan(0.01f), $"{limb.Name} on {made.Value.Position}, estimate {estimate}, expected {expected}");
+        }
+    }
+
+    /// <summary>
+    /// A limbs-only spec of a user's rig whose contact pose is its straight-legged bind pose (the assimp-style human,
+    /// 90° rest rotations) stands on level ground with each foot under its hip, knees bent: the IK that cannot start
+    /// from the straight leg starts from the flexion pose (before: both feet 0.41 m ahead of the hips, on a database
+    /// sample's foothold, the animated footholds 0.25–0.91 m from the contacts the plan reports).
+    /// </summary>
+    [Test]
+    public void AStraightLeggedRigStandsWithItsFeetUnderItsHips()
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-contact-pose-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(folder);
+        try
+        {
+            (string gltf, string spec) = ForeignCharacters.Human(zUpScene: false).Write(folder);
+            (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, spec);
+            var scene = PlanningScene.Create(ForeignLevels.Get("stairs").Level, reduced);
+            var world = new WalkWorld(scene, model, new JumpAnimator(scene, model));
+            RoadmapNode node = world.Stance(new Vector3(-4f, 0f, 0f), 0, Vector3.UnitZ);
+            ContactConfiguration pose = world.Animator.Contacts.Generate(node.Pose, node.Contacts, Vector3.Zero);
+            var positions = new Vector3[model.Rig.Joints.Count];
+            var rotations = new Quaternion[model.Rig.Joints.Count];
+            model.Rig.Solve(node.Pose, pose.Angles, positions, rotations);
+            Vector3 forward = node.Pose.Forward;
+            int[] feet = [.. Enumerable.Range(0, model.Limbs.Count).Where(l => model.Limbs[l].Kind == LimbKind.Foot)];
+            Assert.Multiple(() =>
+            {
+                foreach (int foot in feet)
+                {
+                    LimbContact? made = pose.ContactOf(foot);
+                    Assert.That(made, Is.Not.Null, $"{model.Limbs[foot].Name} stands");
+                    float ahead = Vector3.Dot(made!.Value.Position - positions[model.Limbs[foot].RootJoint], forward);
+                    Assert.That(MathF.Abs(ahead), Is.LessThan(0.15f), $"{model.Limbs[foot].Name} stands {ahead:0.00} m ahead of its hip");
+                }
+            });
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
         }
     }
 }
