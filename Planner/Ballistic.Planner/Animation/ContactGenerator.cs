@@ -201,10 +201,7 @@ public sealed class ContactGenerator
         var rotations = new Quaternion[rig.Joints.Count];
         foreach (float[] pose in new[] { Model.ContactPose, Model.FlexionPose, Model.ExtendingPose })
         {
-            foreach (int d in limb.ChainDofs)
-            {
-                q[d] = pose[d];
-            }
+            PoseChain(q, limb, pose);
 
             rig.Solve(root, q, positions, rotations);
             if (!_collision.LimbCollides(limb, positions, rotations, null))
@@ -224,9 +221,15 @@ public sealed class ContactGenerator
             }
         }
 
+        PoseChain(q, limb, Model.ContactPose);
+    }
+
+    /// <summary>Sets <paramref name="limb"/>'s angles in <paramref name="q"/> to those of <paramref name="pose"/>.</summary>
+    private static void PoseChain(float[] q, RigLimb limb, float[] pose)
+    {
         foreach (int d in limb.ChainDofs)
         {
-            q[d] = Model.ContactPose[d];
+            q[d] = pose[d];
         }
     }
 
@@ -343,10 +346,7 @@ public sealed class ContactGenerator
             foreach (float[] from in new[] { Model.ContactPose, Model.FlexionPose })
             {
                 Array.Copy(q, trial, q.Length);
-                foreach (int d in limb.ChainDofs)
-                {
-                    trial[d] = from[d];
-                }
+                PoseChain(trial, limb, from);
 
                 if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
                 {
@@ -467,10 +467,7 @@ public sealed class ContactGenerator
         }
 
         Array.Copy(q, trial, q.Length);
-        foreach (int d in Model.Limbs[l].ChainDofs)
-        {
-            trial[d] = Model.FlexionPose[d];
-        }
+        PoseChain(trial, Model.Limbs[l], Model.FlexionPose);
 
         return TrySolve(root, trial, Model.Limbs[l], point, normal, crouch, positions, rotations);
     }

@@ -289,17 +289,15 @@ internal sealed class WalkGait
         for (int again = 0; again < 2 && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
             Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, shortAt).Animate();
-            if (clip.Problems.Count >= best.Problems.Count && again > 0)
-            {
-                break;
-            }
-
+            shortAt = [.. shortAt, .. clip.Troubles];
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
             }
-
-            shortAt = [.. shortAt, .. clip.Troubles];
+            else if (again > 0)
+            {
+                break;
+            }
         }
 
         if (best.Problems.Count == 0 || !(_restLeg > 0f))

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
@@ -24,29 +25,35 @@ internal sealed record WalkWorld(PlanningScene Scene, CharacterModel Model, Jump
     /// <summary>Ground path points are at most this far apart, metres.</summary>
     public const float PathSpacing = 0.2f;
 
-    private static readonly Lazy<(CharacterModel Model, ReducedCharacter Reduced)> DogCharacter = new(() =>
+    /// <summary>Foreign characters (<see cref="ForeignCharacters"/>) loaded once each, from files written to a folder removed after.</summary>
+    private static readonly ConcurrentDictionary<string, Lazy<(CharacterModel Model, ReducedCharacter Reduced)>> Foreign = new(StringComparer.Ordinal);
+
+    /// <summary>
+    /// The character on the level: a bundled one ("skeleton" biped, "ant" hexapod, …) or a foreign rig loaded through
+    /// its limbs-only spec ("dog", "human", "human-zup", "tailed").
+    /// </summary>
+    public static WalkWorld Create(Level level, string character)
     {
-        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-walk-dog-{Guid.NewGuid():N}");
+        (CharacterModel model, ReducedCharacter reduced) = character is "dog" or "human" or "human-zup" or "tailed"
+            ? Foreign.GetOrAdd(character, name => new Lazy<(CharacterModel, ReducedCharacter)>(() => LoadForeign(name))).Value
+            : (CharacterPresets.Model(character), CharacterPresets.Get(character));
+        var scene = PlanningScene.Create(level, reduced);
+        return new WalkWorld(scene, model, new JumpAnimator(scene, model));
+    }
+
+    private static (CharacterModel Model, ReducedCharacter Reduced) LoadForeign(string name)
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-walk-{name}-{Guid.NewGuid():N}");
         Directory.CreateDirectory(folder);
         try
         {
-            (string gltf, string spec) = ForeignCharacters.Dog().Write(folder);
+            (string gltf, string spec) = ForeignCharacters.Named(name).Write(folder);
             return CharacterSpecFile.Load(gltf, spec);
         }
         finally
         {
             Directory.Delete(folder, recursive: true);
         }
-    });
-
-    /// <summary>The character on the level: "skeleton" (biped), "ant" (hexapod) or "dog" (the foreign quadruped).</summary>
-    public static WalkWorld Create(Level level, string character)
-    {
-        (CharacterModel model, ReducedCharacter reduced) = character == "dog"
-            ? DogCharacter.Value
-            : (CharacterPresets.Model(character), CharacterPresets.Get(character));
-        var scene = PlanningScene.Create(level, reduced);
-        return new WalkWorld(scene, model, new JumpAnimator(scene, model));
     }
 
     /// <summary>The bundled gap course: four flat platforms along +X with gaps between them.</summary>
