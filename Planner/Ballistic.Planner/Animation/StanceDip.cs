@@ -56,16 +56,23 @@ internal sealed class StanceDip
         _restLeg = RestLegLength(model);
     }
 
-    /// <summary>The rest pose's leg (metres): a foot's root joint's greatest height above its contact point with every angle at rest (a rig modelled standing); 0 without feet.</summary>
+    /// <summary>
+    /// The standing leg (metres): a foot's root joint's greatest height above its contact point with every angle at
+    /// rest (a rig modelled standing) or in the spec's contact pose, whichever is higher (a rig modelled with its legs
+    /// spread flat, an insect's, stands only in its contact pose); 0 without feet.
+    /// </summary>
     public static float RestLegLength(CharacterModel model)
     {
         var positions = new Vector3[model.Rig.Joints.Count];
         var rotations = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
         float leg = 0f;
-        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        foreach (float[] pose in new[] { model.Rig.Neutral(), model.ContactPose })
         {
-            leg = MathF.Max(leg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+            model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
+            foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+            {
+                leg = MathF.Max(leg, positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+            }
         }
 
         return leg;

@@ -80,6 +80,9 @@ internal sealed class WalkGait
     /// <summary>Most the hips rise above their lowest within a step either way in an upright walk, in rest leg lengths: a walker's pelvis bobs about 0.05 L.</summary>
     public const float MostBob = 0.06f;
 
+    /// <summary>Least the hips dip (in rest leg lengths) as the feet change over, below their height mid-step: the bob of a walker who does not glide.</summary>
+    public const float LeastBob = 0.05f;
+
     /// <summary>Time (seconds) over which the hips' lift is smoothed: no faster rise or fall than a walker's.</summary>
     private const float LiftSmoothing = 0.03f;
 
@@ -717,6 +720,44 @@ internal sealed class WalkGait
                 {
                     raw[i] = MathF.Max(0f, raw[i] - MathF.Max(0f, height[i] - (floor + bob)));
                 }
+            }
+
+            // The hips dip at least LeastBob of the leg as the feet change over (both groups down, legs apart) below
+            // their height mid-step (one group down, under the hips), as far as the walk is at speed: a walker vaults
+            // over its stance legs instead of gliding, even where its legs would let the hips ride level (sprawled
+            // legs, a crouched gait); below the walk's own path where the hips are not lifted at all. Where the legs'
+            // reach already makes the hips rise and fall that much, they are left as they are.
+            float dip = LeastBob * _gait._restLeg;
+            int half = 0;
+            float[] peaks = (float[])raw.Clone();
+            float[] troughs = (float[])raw.Clone();
+            for (int i = 0; i <= _steps; i++)
+            {
+                for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+                {
+                    peaks[i] = measured[j] ? MathF.Max(peaks[i], raw[j]) : peaks[i];
+                    troughs[i] = measured[j] ? MathF.Min(troughs[i], raw[j]) : troughs[i];
+                }
+            }
+
+            for (int i = 0; i <= _steps; i++)
+            {
+                float t = Time(i);
+                while (half < _times.Length - 2 && t > _times[half + 1])
+                {
+                    half++;
+                }
+
+                float span = _times[half + 1] - _times[half];
+                if (!measured[i] || !(span > 0f))
+                {
+                    continue;
+                }
+
+                float u = Math.Clamp((t - _times[half]) / span, 0f, 1f);
+                float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
+                float deficit = MathF.Max(0f, dip - (peaks[i] - troughs[i]));
+                raw[i] = MathF.Min(raw[i], peaks[i] - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
             }
 
             int k = Math.Max(1, (int)MathF.Round(LiftSmoothing / _h));

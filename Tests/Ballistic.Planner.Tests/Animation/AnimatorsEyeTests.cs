@@ -1,9 +1,11 @@
 using System.Numerics;
 using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
@@ -50,6 +52,33 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// L is the hip's height above the sole standing: for a rig modelled with its legs spread flat (the ant, its hips
+    /// level with its feet at rest) it is the height its contact pose stands at (13 cm), not the rest pose's (before,
+    /// its hips cruised "2.9 L" above its feet and a foot 6 cm in from its contact pose was "1.5 L" sideways).
+    /// </summary>
+    [Test]
+    public void ARigWithSpreadLegsIsMeasuredAtTheHeightItStands()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "ant");
+        JumpAnimation animation = world.AcrossFirstPlatform();
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        CharacterModel model = world.Model;
+        float Standing(float[] pose)
+        {
+            var positions = new Vector3[model.Rig.Joints.Count];
+            var rotations = new Quaternion[model.Rig.Joints.Count];
+            model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
+            return model.Limbs.Where(l => l.Kind == LimbKind.Foot).Max(l => positions[l.RootJoint].Y - l.EffectorPosition(positions, rotations).Y);
+        }
+
+        float rest = Standing(model.Rig.Neutral());
+        float standing = Standing(model.ContactPose);
+        TestContext.Out.WriteLine($"L {eye.Leg:0.000} m; hips above the feet at rest {rest:0.000} m, in the contact pose {standing:0.000} m");
+        Assert.That(standing, Is.GreaterThan(2f * rest), "the ant stands higher than its rest pose");
+        Assert.That(eye.Leg, Is.EqualTo(standing).Within(0.01f));
+    }
+
+    /// <summary>
     /// The eye sees a body sunk into the ground: the same clip with the root 5 cm lower all along has vertices of the
     /// standing feet about 5 cm inside the level, where the clip as animated has none beyond the tolerance.
     /// </summary>
@@ -81,9 +110,7 @@ public sealed class AnimatorsEyeTests
     public void AWalkCrouchedLowerIsSeenLowerByAsMuch()
     {
         WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
-        RoadmapNode from = world.Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
-        RoadmapNode to = world.Stance(new Vector3(-3.8f, 0f, -0.3f), 1, Vector3.UnitX);
-        JumpAnimation animation = world.Animator.Animate([world.Walk(from, to)]);
+        JumpAnimation animation = world.AcrossFirstPlatform();
         PlanningScene scene = world.Scene;
         AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
         float drop = 0.15f * eye.Leg;

@@ -60,6 +60,17 @@ internal sealed record WalkWorld(PlanningScene Scene, CharacterModel Model, Jump
     public static Level GapCourse() => SharedLevels.Bundled("gap-course");
 
     /// <summary>
+    /// A straight walk animated by hand across the gap course's first platform (this world's level), from a stance
+    /// near (−7.3, 0, 0.5) to one near (−3.8, 0, −0.3), both facing +X.
+    /// </summary>
+    public JumpAnimation AcrossFirstPlatform()
+    {
+        RoadmapNode from = Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
+        RoadmapNode to = Stance(new Vector3(-3.8f, 0f, -0.3f), 1, Vector3.UnitX);
+        return Animator.Animate([Walk(from, to)]);
+    }
+
+    /// <summary>
     /// A stance where the whole body stands, its contacts' centre within 0.3 m of <paramref name="point"/>; turned to
     /// face <paramref name="facing"/> (horizontal, world) when given.
     /// </summary>

@@ -18,8 +18,8 @@ namespace Ballistic.Planner.Tests.Support;
 /// parses the file, and every bone's world transform at a time comes from the node hierarchy, the rest transforms and
 /// the clip's channels. From the plan it takes only the timeline (when each move starts and ends, where each jump
 /// goes) and the spec's inputs (which bones are a limb's hip and ankle, the rig's up and forward axes); never the
-/// animator's own poses. L is the leg length: the hip's height above the sole in the rest pose (ankle plus the sole
-/// offset); heading is the trunk's forward on the ground plane. Skinned vertices are placed by linear blend skinning,
+/// animator's own poses. L is the leg length: the hip's height above the sole standing, in the rest pose (ankle plus
+/// the sole offset) or, where it stands higher (a rig modelled with its legs spread flat), the spec's contact pose; heading is the trunk's forward on the ground plane. Skinned vertices are placed by linear blend skinning,
 /// as a renderer places them.
 /// </summary>
 internal sealed class AnimatorEye
@@ -217,6 +217,16 @@ internal sealed class AnimatorEye
         // Where the spec's contact pose holds each foot sideways of its hip (model frame: +X is the left).
         var contact = new Vector3[rig.Joints.Count];
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, new Quaternion[rig.Joints.Count]);
+        float standing = 0f;
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            standing = MathF.Max(standing, contact[limb.RootJoint].Y - contact[limb.EffectorJoint].Y + limb.EffectorOffset.Length());
+        }
+
+        // A rig modelled with its legs spread flat (an insect's) does not stand in its rest pose: it stands in its
+        // contact pose, and its hips are that high.
+        leg = MathF.Max(leg, standing);
+
         var legs = new List<(string, Node, Node, float)>();
         var sides = new List<(string Name, float Forward)>[2];
         sides[0] = [];
