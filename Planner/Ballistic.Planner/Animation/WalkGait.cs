@@ -710,14 +710,9 @@ internal sealed class WalkGait
             float bob = MostBob * _gait._restLeg;
             for (int i = 0; i <= _steps; i++)
             {
-                float floor = float.PositiveInfinity;
-                for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+                if (measured[i])
                 {
-                    floor = measured[j] ? MathF.Min(floor, height[j]) : floor;
-                }
-
-                if (measured[i] && float.IsFinite(floor))
-                {
+                    float floor = Within(height, measured, i, window).Low;
                     raw[i] = MathF.Max(0f, raw[i] - MathF.Max(0f, height[i] - (floor + bob)));
                 }
             }
@@ -729,15 +724,10 @@ internal sealed class WalkGait
             // reach already makes the hips rise and fall that much, they are left as they are.
             float dip = LeastBob * _gait._restLeg;
             int half = 0;
-            float[] peaks = (float[])raw.Clone();
-            float[] troughs = (float[])raw.Clone();
+            var lifted = new (float Low, float High)[_steps + 1];
             for (int i = 0; i <= _steps; i++)
             {
-                for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
-                {
-                    peaks[i] = measured[j] ? MathF.Max(peaks[i], raw[j]) : peaks[i];
-                    troughs[i] = measured[j] ? MathF.Min(troughs[i], raw[j]) : troughs[i];
-                }
+                lifted[i] = measured[i] ? Within(raw, measured, i, window) : default;
             }
 
             for (int i = 0; i <= _steps; i++)
@@ -756,8 +746,8 @@ internal sealed class WalkGait
 
                 float u = Math.Clamp((t - _times[half]) / span, 0f, 1f);
                 float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
-                float deficit = MathF.Max(0f, dip - (peaks[i] - troughs[i]));
-                raw[i] = MathF.Min(raw[i], peaks[i] - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
+                float deficit = MathF.Max(0f, dip - (lifted[i].High - lifted[i].Low));
+                raw[i] = MathF.Min(raw[i], lifted[i].High - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
             }
 
             int k = Math.Max(1, (int)MathF.Round(LiftSmoothing / _h));
@@ -784,6 +774,21 @@ internal sealed class WalkGait
                 float lift = sum / ((2 * k) + 1);
                 _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * lift), _roots[i].Rotation);
             }
+        }
+
+        /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>
+        private (float Low, float High) Within(float[] values, bool[] measured, int i, int window)
+        {
+            (float low, float high) = (values[i], values[i]);
+            for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+            {
+                if (measured[j])
+                {
+                    (low, high) = (MathF.Min(low, values[j]), MathF.Max(high, values[j]));
+                }
+            }
+
+            return (low, high);
         }
 
         /// <summary>

@@ -147,13 +147,19 @@ internal sealed class AnimatorEye
         Vector3 up = Axis(model.Source?.UpAxis ?? "+Y");
         Vector3 forward = Axis(model.Source?.ForwardAxis ?? "+Z");
 
-        // Leg length: the greatest rest height of a foot's hip above its ankle along the rig's up, plus the sole.
+        // Leg length: the greatest height of a foot's hip above its ankle along the rig's up, plus the sole, standing:
+        // in the rest pose, or in the spec's contact pose where that stands higher (a rig modelled with its legs
+        // spread flat, an insect's, stands only in its contact pose). The contact pose also says where it holds each
+        // foot sideways of its hip (model frame: +X is the left).
+        var contact = new Vector3[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, new Quaternion[rig.Joints.Count]);
         float leg = 0f;
         foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
             Vector3 hip = Named(rig.Joints[limb.RootJoint].Name).WorldMatrix.Translation;
             Vector3 ankle = Named(rig.Joints[limb.EffectorJoint].Name).WorldMatrix.Translation;
-            leg = MathF.Max(leg, Vector3.Dot(hip - ankle, up) + limb.EffectorOffset.Length());
+            float sole = limb.EffectorOffset.Length();
+            leg = MathF.Max(leg, MathF.Max(Vector3.Dot(hip - ankle, up), contact[limb.RootJoint].Y - contact[limb.EffectorJoint].Y) + sole);
         }
 
         // The skinned vertices (linear blend skinning: joint world matrices times inverse bind matrices), and for each
@@ -213,19 +219,6 @@ internal sealed class AnimatorEye
         Node[][] limbJoints = [.. model.Limbs.Select(l => l.Chain.Select(j => Named(rig.Joints[j].Name)).ToArray())];
         Vector3 left = Vector3.Cross(up, forward);
         Vector3 trunkRest = trunk.WorldMatrix.Translation;
-
-        // Where the spec's contact pose holds each foot sideways of its hip (model frame: +X is the left).
-        var contact = new Vector3[rig.Joints.Count];
-        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, new Quaternion[rig.Joints.Count]);
-        float standing = 0f;
-        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
-        {
-            standing = MathF.Max(standing, contact[limb.RootJoint].Y - contact[limb.EffectorJoint].Y + limb.EffectorOffset.Length());
-        }
-
-        // A rig modelled with its legs spread flat (an insect's) does not stand in its rest pose: it stands in its
-        // contact pose, and its hips are that high.
-        leg = MathF.Max(leg, standing);
 
         var legs = new List<(string, Node, Node, float)>();
         var sides = new List<(string Name, float Forward)>[2];
