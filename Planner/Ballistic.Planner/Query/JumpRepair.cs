@@ -154,8 +154,8 @@ public sealed class JumpRepair
     /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
     /// problem with; for a jump cut from jumps (<see cref="Move.CutFrom"/>) whose takeoff (landing) was placed for it
     /// and cannot crouch (absorb), refuses that stance instead, once (<see cref="RefusedTurns"/>); for any other move cut from
-    /// jumps, keeps those jumps whole instead (and, for jumps already kept whole, leaves them unturned:
-    /// <see cref="Unfaced"/>); for a
+    /// jumps, keeps those jumps whole instead (and, for jumps already kept whole by an earlier animation, leaves them
+    /// unturned: <see cref="Unfaced"/>; several moves of one jump failing in this animation are one failure); for a
     /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
     /// <see cref="HoppingAllowed"/>, and unless a spot is already known: the hop there did not pass); for a move of a
     /// hop (<see cref="Move.HoppedFrom"/>) that cannot, sets the walks it stands in for aside; for a searched jump whose
@@ -173,6 +173,9 @@ public sealed class JumpRepair
         bool walkFailed = false;
         bool cutFailed = false;
         bool hopped = false;
+
+        // Jumps given back by this animation: several of the moves made from one jump failing are one failure of it.
+        var givenNow = new HashSet<(int From, int To)>();
         foreach (IGrouping<int, JumpProblem> problems in animation.Problems.GroupBy(p => p.Jump))
         {
             Move move = path[problems.Key];
@@ -191,7 +194,10 @@ public sealed class JumpRepair
                 foreach ((int, int) jump in move.CutFrom)
                 {
                     // Given back once (kept whole, turned by hops only); failing again, flown as searched.
-                    kept |= _uncut.Add(jump) || _unfaced.Add(jump);
+                    if (givenNow.Contains(jump) || _uncut.Add(jump) || _unfaced.Add(jump))
+                    {
+                        kept |= givenNow.Add(jump);
+                    }
                 }
 
                 if (kept)

@@ -106,4 +106,34 @@ public sealed class StanceRepairTests
             Assert.That(repair.Uncut, Does.Contain((jump.From.Id, jump.To.Id)));
         });
     }
+
+    /// <summary>
+    /// Two moves made from one faced jump (the hop turning into its takeoff and the jump itself) failing in the same
+    /// animation are one failure of that jump: it is given back whole (turned by hops next time), not also left
+    /// unturned, which only a second failing animation does.
+    /// </summary>
+    [Test]
+    public void MovesOfOneFacedJumpFailingTogetherGiveItBackOnce()
+    {
+        var repair = new JumpRepair();
+        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
+        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
+        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        Assume.That(best.Jumps, Has.Count.GreaterThanOrEqualTo(2));
+        Jump jump = best.Jumps[1];
+        (int, int) id = (jump.From.Id, jump.To.Id);
+        Move[] path = [best.Jumps[0] with { CutFrom = [id] }, jump with { CutFrom = [id] }];
+        JumpAnimation Failing() => new(CharacterPresets.Model("skeleton"), path, new float[path.Length - 1], [], [], [new JumpProblem(0, "left_foot cannot hold its foothold (test)"), new JumpProblem(1, "bone 'tail_1' passes through the level (test)")], 0, 0);
+
+        int first = repair.Reject(path, Failing());
+        bool unturnedAfterOne = repair.Unfaced.Contains(id);
+        repair.Reject(path, Failing());
+        Assert.Multiple(() =>
+        {
+            Assert.That(first, Is.EqualTo(1), "one jump given back");
+            Assert.That(repair.Uncut, Does.Contain(id));
+            Assert.That(unturnedAfterOne, Is.False, "one failing animation does not also leave the jump unturned");
+            Assert.That(repair.Unfaced, Does.Contain(id), "a second failing animation does");
+        });
+    }
 }
