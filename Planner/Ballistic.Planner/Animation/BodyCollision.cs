@@ -42,6 +42,7 @@ public sealed class BodyCollision
     private readonly IReadOnlyList<Triangle>? _triangles;
     private readonly (int Joint, Vector3 Point)[][] _probes;
     private readonly float[] _probeReach;
+    private readonly (int Joint, (int Joint, Vector3 Point)[] Probes)[] _freeSkins;
 
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
     [ThreadStatic]
@@ -124,6 +125,11 @@ public sealed class BodyCollision
         }
 
         _probeReach = [.. _probes.Select(probes => probes.Length == 0 ? 0f : probes.Max(p => p.Point.Length()))];
+
+        // The skin of bones that carry no limb and hang from none (a tail, a head): a tail's tip reaches past its last joint.
+        _freeSkins = skin.Count != rig.Joints.Count ? [] :
+            [.. others.Where(j => skin[j].Length > 0 && !model.Limbs.Any(l => rig.IsAncestor(j, l.RootJoint)))
+                .Select(j => (j, skin[j].Select(p => (j, p)).ToArray()))];
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>
@@ -166,13 +172,12 @@ public sealed class BodyCollision
             }
         }
 
-        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness) || SkinInside(l, positions, rotations);
+        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness) || SkinInside(_probes[l], positions, rotations);
     }
 
-    /// <summary>True when a skin point of limb <paramref name="l"/> lies more than <see cref="SkinDepth"/> inside the level.</summary>
-    private bool SkinInside(int l, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    /// <summary>True when a skin point of <paramref name="probes"/> (joint, point in its frame) lies more than <see cref="SkinDepth"/> inside the level.</summary>
+    private bool SkinInside((int Joint, Vector3 Point)[] probes, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
     {
-        (int Joint, Vector3 Point)[] probes = _probes[l];
         if (probes.Length == 0 || _triangles is null)
         {
             return false;
@@ -225,7 +230,32 @@ public sealed class BodyCollision
     }
 
     /// <summary>
-    /// The first bone that belongs to no limb (spine, neck, head, tail…) and passes through the level, or −1.
+    /// The first bone that belongs to no limb (spine, neck, head, tail…) and passes through the level, or −1: each
+    /// bone the segment from its parent joint, with its radius; and, for a loaded rig, the skin of bones that carry no
+    /// limb and hang from none (a tail's tip, a head) more than <see cref="SkinDepth"/> inside.
+    /// </summary>
+    public int OtherBoneColliding(ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    {
+        int bone = OtherBoneColliding(positions);
+        if (bone >= 0)
+        {
+            return bone;
+        }
+
+        foreach ((int joint, (int Joint, Vector3 Point)[] probes) in _freeSkins)
+        {
+            if (SkinInside(probes, positions, rotations))
+            {
+                return joint;
+            }
+        }
+
+        return -1;
+    }
+
+    /// <summary>
+    /// The first bone that belongs to no limb (spine, neck, head, tail…) and passes through the level, or −1: each
+    /// bone the segment from its parent joint, with its radius; no skin.
     /// </summary>
     public int OtherBoneColliding(ReadOnlySpan<Vector3> positions)
     {

@@ -47,6 +47,7 @@ public sealed class JumpAnimator : IJumpAnimator
     private readonly WalkGait _gait;
     private readonly HoldRefiner _refiner;
     private readonly StanceDip _dip;
+    private readonly FreeBones _free;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -59,7 +60,8 @@ public sealed class JumpAnimator : IJumpAnimator
         _requiredContacts = scene.Character.RequiredContacts;
         _gait = new WalkGait(scene, model, _contacts);
         _refiner = new HoldRefiner(model, _collision);
-        _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision);
+        _free = new FreeBones(model, _collision);
+        _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
         Model = model;
     }
 
@@ -301,6 +303,7 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
+        colliding += ClearFreeBones(moves, stances, frames, phases, problems, failed, leadIn, leadOut);
 
         // Held contacts must hold between frames too, as a player interpolates them.
         var animation = new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding, leadIn, leadOut);
@@ -320,6 +323,50 @@ public sealed class JumpAnimator : IJumpAnimator
 
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
         return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count, leadIn, leadOut);
+    }
+
+    /// <summary>
+    /// The free chains (a tail) bent out of the level over the whole clip, crouches, landings and re-steps included
+    /// (<see cref="FreeBones"/>), then every frame checked for a bone of no limb in the level: the first such frame of
+    /// a move not already reported is a problem of that move. Returns how many frames are left colliding that were
+    /// not counted before.
+    /// </summary>
+    private int ClearFreeBones(IReadOnlyList<Move> moves, List<float> stances, List<AnimationFrame> frames, List<ContactPhase> phases, List<JumpProblem> problems, int failed, float leadIn, float leadOut)
+    {
+        float[] times = [.. frames.Select(f => f.Time)];
+        float[][] angles = [.. frames.Select(f => f.Angles)];
+        if (_free.Clear(times, k => frames[k].Root, angles) > 0)
+        {
+            for (int k = 0; k < frames.Count; k++)
+            {
+                frames[k] = frames[k] with { Angles = angles[k] };
+            }
+        }
+
+        var timeline = new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, 0, leadIn, leadOut);
+        Rig rig = Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var reported = new HashSet<int>(problems.Where(p => p.Reason.StartsWith("bone '", StringComparison.Ordinal)).Select(p => p.Jump));
+        int colliding = 0;
+        for (int k = 0; k < frames.Count; k++)
+        {
+            rig.Solve(frames[k].Root, frames[k].Angles, positions, rotations);
+            int bone = _collision.OtherBoneColliding(positions, rotations);
+            if (bone < 0)
+            {
+                continue;
+            }
+
+            int move = Enumerable.Range(0, moves.Count).LastOrDefault(m => timeline.MoveStart(m) <= frames[k].Time);
+            if (reported.Add(move))
+            {
+                colliding++;
+                problems.Add(new JumpProblem(move, $"bone '{rig.Joints[bone].Name}' passes through the level {frames[k].Time:0.000} s into the clip"));
+            }
+        }
+
+        return colliding;
     }
 
     /// <summary>
@@ -714,7 +761,10 @@ public sealed class JumpAnimator : IJumpAnimator
             problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} passes through the level in flight ({firstHit[l]:0.000} s after takeoff) whatever pose it takes"));
         }
 
-        // Bones of no limb (spine, head, tail…) follow the trunk: nothing to re-sample, so a hit is a problem.
+        // Bones of no limb (spine, head, tail…) follow the trunk; a free chain (a tail) bends out of the level where
+        // it can, and a hit left is a problem.
+        float[] seconds = [.. times.Select(Time)];
+        _free.Clear(seconds, k => arc.PoseAt(seconds[k]), angles);
         var result = new AnimationFrame[times.Length];
         bool trunkReported = false;
         for (int k = 0; k < times.Length; k++)
@@ -725,7 +775,7 @@ public sealed class JumpAnimator : IJumpAnimator
             if (!trunkReported)
             {
                 rig.Solve(root, angles[k], positions, rotations);
-                int bone = _collision.OtherBoneColliding(positions);
+                int bone = _collision.OtherBoneColliding(positions, rotations);
                 if (bone >= 0)
                 {
                     trunkReported = true;

@@ -40,15 +40,17 @@ internal sealed class StanceDip
     private readonly CharacterModel _model;
     private readonly LimbIk _ik;
     private readonly BodyCollision _collision;
+    private readonly FreeBones? _free;
     private readonly float _restLeg;
     private readonly Vector3 _pivot;
 
-    /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>.</summary>
-    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision)
+    /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>, free bones (a tail) bent clear by <paramref name="free"/>.</summary>
+    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision, FreeBones? free = null)
     {
         _model = model;
         _ik = ik;
         _collision = collision;
+        _free = free;
 
         var positions = new Vector3[model.Rig.Joints.Count];
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, new Quaternion[model.Rig.Joints.Count]);
@@ -204,7 +206,16 @@ internal sealed class StanceDip
             if (stop is null)
             {
                 rig.Solve(root, next, positions, rotations);
-                if (_collision.OtherBoneColliding(positions) is int bone and >= 0)
+                if (_collision.OtherBoneColliding(positions, rotations) >= 0 && _free is not null)
+                {
+                    // A tail behind the sinking body bends up out of the step it would enter.
+                    float[][] one = [next];
+                    _free.Clear([0f], _ => root, one);
+                    next = one[0];
+                    rig.Solve(root, next, positions, rotations);
+                }
+
+                if (_collision.OtherBoneColliding(positions, rotations) is int bone and >= 0)
                 {
                     stop ??= $"bone '{rig.Joints[bone].Name}' enters the level {depth * 100f:0.0} cm down";
                 }

@@ -145,6 +145,7 @@ internal sealed class WalkGait
     private readonly SoleHold _sole;
     private readonly LimbIk _swingIk;
     private readonly BodyCollision _collision;
+    private readonly FreeBones _free;
 
     /// <summary>The rest pose's leg (metres): a hip's greatest height above its sole with every angle at rest.</summary>
     private readonly float _restLeg;
@@ -164,6 +165,7 @@ internal sealed class WalkGait
         _sole = new SoleHold(model.Rig);
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
+        _free = new FreeBones(model, _collision);
 
         var positions = new Vector3[model.Rig.Joints.Count];
         var rotations = new Quaternion[model.Rig.Joints.Count];
@@ -328,11 +330,7 @@ internal sealed class WalkGait
     /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/> (<see cref="SoleHold"/>).</summary>
     private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) => _sole.Hold(root, q, limb, point, normal);
 
-    private static float Smooth(float x)
-    {
-        x = Math.Clamp(x, 0f, 1f);
-        return x * x * (3f - (2f * x));
-    }
+    private static float Smooth(float x) => Easing.Smooth(x);
 
     /// <summary>What a contact pose lets one foot do: where it stands in the trunk's frame, how far the trunk may move either way along a direction with the foot held.</summary>
     private readonly record struct Footing(Vector3 Local, float Ahead, float Behind);
@@ -556,14 +554,17 @@ internal sealed class WalkGait
                 }
             }
 
-            // Frames at every fine step; bones of no limb are checked on each.
+            // Frames at every fine step; a free chain (a tail) bends out of the level where it can, and bones of no
+            // limb are checked on each.
+            float[] seconds = [.. Enumerable.Range(0, _steps + 1).Select(Time)];
+            _gait._free.Clear(seconds, i => _roots[i], _angles);
             var frames = new AnimationFrame[_steps + 1];
             bool trunkReported = false;
             for (int i = 0; i <= _steps; i++)
             {
                 frames[i] = new AnimationFrame(Time(i), _roots[i], _angles[i]);
                 _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
-                int bone = _gait._collision.OtherBoneColliding(_positions);
+                int bone = _gait._collision.OtherBoneColliding(_positions, _rotations);
                 if (bone >= 0)
                 {
                     _colliding[i] = true;

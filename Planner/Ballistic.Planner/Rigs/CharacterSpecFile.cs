@@ -257,9 +257,10 @@ public static class CharacterSpecFile
             Bone(bone, $"boneRadii, bone '{bone}'");
         }
 
-        // Limb bones the spec gives no axes: hips, hinges and ball joints derived from the rest pose (LimbJointAxes).
+        // Limb bones the spec gives no axes: hips, hinges and ball joints derived from the rest pose (LimbJointAxes);
+        // a spec that gives none at all also gets free bends for its tails and heads.
         Joint[] bare = [.. names.Select((n, j) => new Joint(n, skeleton.Parents[j], skeleton.Offsets[j], skeleton.RestRotations[j], []))];
-        Dictionary<int, JointAxis[]> derivedAxes = LimbJointAxes.Derive(bare, [.. spec.Limbs.Select(l => (l.Kind, IndexOf(l.RootBone), IndexOf(l.EffectorBone)))]);
+        Dictionary<int, JointAxis[]> derivedAxes = LimbJointAxes.Derive(bare, [.. spec.Limbs.Select(l => (l.Kind, IndexOf(l.RootBone), IndexOf(l.EffectorBone)))], free: spec.Joints.Count == 0, trunk: spec.TrunkBones?.Select(IndexOf).ToArray());
         var joints = new List<Joint>();
         for (int j = 0; j < names.Length; j++)
         {

@@ -34,10 +34,13 @@ internal static class LimbJointAxes
 
     /// <summary>
     /// The axes of every bone on the limb chains of <paramref name="bare"/> (joints with their rest transforms in the
-    /// model frame; their own axes are ignored), limb by limb (kind, root bone, effector bone). The rig's root joint
+    /// model frame; their own axes are ignored), limb by limb (kind, root bone, effector bone); with
+    /// <paramref name="free"/> (a spec that gives no joint axes at all), also a bend of <see cref="FreeBend"/>° and a
+    /// turn of <see cref="FreeTurn"/>° for every bone that carries no limb, hangs from none and is not in
+    /// <paramref name="trunk"/> (the spec's trunk bones). The rig's root joint
     /// gets none.
     /// </summary>
-    public static Dictionary<int, JointAxis[]> Derive(IReadOnlyList<Joint> bare, IReadOnlyList<(LimbKind Kind, int Root, int Effector)> limbs)
+    public static Dictionary<int, JointAxis[]> Derive(IReadOnlyList<Joint> bare, IReadOnlyList<(LimbKind Kind, int Root, int Effector)> limbs, bool free = false, IReadOnlyCollection<int>? trunk = null)
     {
         var rest = new Rig([.. bare.Select(j => j with { Axes = [] })], Vector3.Zero);
         var positions = new Vector3[bare.Count];
@@ -79,8 +82,48 @@ internal static class LimbJointAxes
             }
         }
 
+        if (!free)
+        {
+            return axes;
+        }
+
+        // With free: bones that carry no limb and hang from none (a tail, a head, a helper bone) get a free bend, so
+        // that the animation can lift a tail out of a step behind the body instead of through it.
+        var carries = new bool[bare.Count];
+        foreach ((LimbKind _, int root, int effector) in limbs)
+        {
+            for (int j = Math.Max(effector, 0); j >= 0; j = bare[j].Parent)
+            {
+                carries[j] = true;
+            }
+
+            for (int j = 0; j < bare.Count; j++)
+            {
+                carries[j] |= root >= 0 && rest.IsAncestor(root, j);
+            }
+        }
+
+        for (int j = 1; j < bare.Count; j++)
+        {
+            if (!carries[j] && !axes.ContainsKey(j) && trunk?.Contains(j) != true)
+            {
+                Quaternion toLocal = Quaternion.Conjugate(rotations[j]);
+                axes[j] =
+                [
+                    new JointAxis(Local(Vector3.UnitX, toLocal), Radians(-FreeBend), Radians(FreeBend)),
+                    new JointAxis(Local(Vector3.UnitY, toLocal), Radians(-FreeTurn), Radians(FreeTurn)),
+                ];
+            }
+        }
+
         return axes;
     }
+
+    /// <summary>How far a free bone (<see cref="Derive"/>) bends up or down, about the body's left, degrees.</summary>
+    public const float FreeBend = 45f;
+
+    /// <summary>How far a free bone turns left or right, about the body's up, degrees.</summary>
+    public const float FreeTurn = 30f;
 
     /// <summary>
     /// A hip: flexion about the body's left (−90° to 90°), a spread about its forward (away from the body at most 30°,

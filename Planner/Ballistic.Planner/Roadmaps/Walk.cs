@@ -293,9 +293,5 @@ public sealed record Walk : Move
     /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn).</summary>
     private static float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
 
-    private static float Smooth(float x)
-    {
-        x = Math.Clamp(x, 0f, 1f);
-        return x * x * (3f - (2f * x));
-    }
+    private static float Smooth(float x) => Easing.Smooth(x);
 }

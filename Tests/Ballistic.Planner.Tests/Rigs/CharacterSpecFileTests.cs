@@ -123,7 +123,9 @@ public sealed class CharacterSpecFileTests
            "right_foot":{"rootBone":"right_hip","effectorBone":"right_ankle","effectorOffset":[0,-0.06,0.04],"contactNormal":[0,-1,0],"contact":"foot","normalFilter":{"direction":[0,1,0],"minCosine":0.3}}}}
         """);
         (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "skeleton.glb"), spec);
-        Assert.That(model.Rig.DofCount, Is.EqualTo(2 * (3 + 1 + 3)), "hip and ankle of each leg as ball joints, the knee a hinge");
+        Assert.That(model.Limbs.Sum(l => l.Chain.Sum(model.Rig.DofsOf)), Is.EqualTo(2 * (3 + 1 + 3)), "hip and ankle of each leg as ball joints, the knee a hinge");
+        Assert.That(((string[])["pelvis", "spine", "chest", "neck", "head"]).Sum(b => model.Rig.DofsOf(model.Rig.IndexOf(b))), Is.Zero, "the trunk the spec names stays rigid");
+        Assert.That(model.Rig.DofsOf(model.Rig.IndexOf("left_shoulder")), Is.EqualTo(2), "an arm the spec does not animate bends freely, to stay out of the level");
 
         var scene = PlanningScene.Create(GapCourse.Build(), reduced);
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { MaxNodes = 300, Start = GapCourse.From, Goal = GapCourse.To, StopWhenConnected = true, Threads = 2 });

@@ -39,7 +39,7 @@ public sealed class SpecErrorTests
         yield return Case("radius of an unknown bone", Spec(Foot + "}", "\"boneRadii\":{\"tail\":0.1},"), "boneRadii, bone 'tail'", "not a bone");
         yield return Case("unknown pose", Spec(Foot + "}", "\"poses\":{\"crouch\":{}},"), "'poses'", "unknown key 'crouch'");
         yield return Case("pose with too few angles", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_hip\":[1,2]}},"), "pose 'contact', bone 'left_hip'", "2 angles", "3 degrees");
-        yield return Case("pose of a fixed bone", Spec(Foot + "}", "\"poses\":{\"flexion\":{\"head\":[10]}},"), "pose 'flexion', bone 'head'", "fixed");
+        yield return Case("pose of a fixed bone", Spec(Foot + "}", "\"trunkBones\":[\"pelvis\",\"spine\",\"chest\",\"neck\",\"head\"],\"poses\":{\"flexion\":{\"head\":[10]}},"), "pose 'flexion', bone 'head'", "fixed");
         yield return Case("pose beyond the limits", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_knee\":[170]}},"), "pose 'contact', bone 'left_knee'", "170", "limits");
         yield return Case("pose angle not a number", Spec(Foot + "}", "\"poses\":{\"contact\":{\"left_knee\":[\"a\",0,0]}},"), "pose 'contact', bone 'left_knee'", "angle 0", "must be a number");
         yield return Case("trunk bones not a list", Spec(Foot + "}", "\"trunkBones\":\"pelvis\","), "key 'trunkBones'", "must be a list");
