@@ -53,6 +53,15 @@ internal sealed class WalkGait
     /// </summary>
     public const float CruiseHips = 0.88f;
 
+    /// <summary>
+    /// Share of the leg the hips of a rig with more than two feet keep at the ends of every foot's range: some foot is
+    /// always near the end of its range, so the steps are no longer than the legs reach holding the hips this high.
+    /// </summary>
+    public const float ManyFeetHips = 0.92f;
+
+    /// <summary>Least share of the step <see cref="ManyFeetHips"/> leaves for it to apply.</summary>
+    private const float ManyFeetShare = 0.75f;
+
     /// <summary>Grade (rise over run) up to which the ground counts as level for cruising (tan 5°).</summary>
     private const float LevelGrade = 0.0875f;
 
@@ -150,6 +159,12 @@ internal sealed class WalkGait
     /// <summary>The rest pose's leg (metres): a hip's greatest height above its sole with every angle at rest.</summary>
     private readonly float _restLeg;
 
+    /// <summary>
+    /// With more than two feet, the half range (metres) each foot holds on level ground with the hips
+    /// <see cref="ManyFeetHips"/> of the leg up (<see cref="FlatReach"/>); infinite for a biped.
+    /// </summary>
+    private readonly float _manyFeetReach;
+
     /// <summary>Per limb: the length of its bones from root joint to effector joint (metres), in the rest pose.</summary>
     private readonly float[] _bones;
 
@@ -184,6 +199,58 @@ internal sealed class WalkGait
         }
 
         _restLeg = StanceDip.RestLegLength(model);
+        _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips * _restLeg) : float.PositiveInfinity;
+    }
+
+    /// <summary>
+    /// The least half range (metres) over the feet that the trunk can move along its forward axis on level ground
+    /// with its hips <paramref name="hips"/> metres above its feet, while each foot holds where the contact pose puts
+    /// it, sole flat (IK only: the rig's own reach, not a level's); 0 when a foot cannot stand there.
+    /// </summary>
+    private float FlatReach(float hips)
+    {
+        if (!(hips > 0f))
+        {
+            return 0f;
+        }
+
+        Rig rig = _model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        float increment = _restLeg / ProbeSteps;
+        float reach = float.PositiveInfinity;
+        foreach (RigLimb limb in _model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), _model.ContactPose, positions, rotations);
+            Vector3 foot = limb.EffectorPosition(positions, rotations);
+            float lift = hips - (positions[limb.RootJoint].Y - foot.Y);
+            float[] reached = new float[2];
+            for (int side = 0; side < 2; side++)
+            {
+                float[] q = (float[])_model.ContactPose.Clone();
+                for (int k = 0; k <= ProbeSteps; k++)
+                {
+                    var root = new RootPose(new Vector3(0f, lift, (side == 0 ? -1f : 1f) * k * increment), Quaternion.Identity);
+                    float[] trial = (float[])q.Clone();
+                    if (!_sole.Hold(root, trial, limb, foot, Vector3.UnitY))
+                    {
+                        if (k == 0)
+                        {
+                            return 0f;
+                        }
+
+                        break;
+                    }
+
+                    q = trial;
+                    reached[side] = k * increment;
+                }
+            }
+
+            reach = MathF.Min(reach, (reached[0] + reached[1]) * 0.5f);
+        }
+
+        return reach;
     }
 
     /// <summary>A walk animated on its own: frames and contact phases on the walk's clock (0 to its duration), problems, frames with a bone in the level, the step length (metres) and half-cycle count chosen.</summary>
@@ -457,6 +524,13 @@ internal sealed class WalkGait
 
             bool cruising = _cruiseStart > 0f || _cruiseEnd > 0f;
             float reach = Reach(startForward, endForward, cruising);
+            if (cruising && _gait._manyFeetReach >= ManyFeetShare * reach)
+            {
+                // More than two feet: some foot is always near the end of its range, holding the hips down; steps
+                // no longer than the legs reach with the hips ManyFeetHips of the leg up keep the body upright
+                // (unless that shortens them by more than a quarter: legs that barely reach that high walk as before).
+                reach = MathF.Min(reach, _gait._manyFeetReach);
+            }
             _step = MathF.Max(MathF.Min(step, margin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
             _stepLow = _step;
             if (cruising)
