@@ -33,10 +33,12 @@ internal sealed class FreeBones
         {
             _free[j] = _rig.DofsOf(j) > 0 && !model.Limbs.Any(l => _rig.IsAncestor(j, l.RootJoint) || _rig.IsAncestor(l.RootJoint, j));
         }
+
+        Any = _free.Any(f => f);
     }
 
     /// <summary>Whether the rig has any free bone to bend.</summary>
-    public bool Any => _free.Any(f => f);
+    public bool Any { get; }
 
     /// <summary>
     /// Bends the free chains in <paramref name="angles"/> (one pose per frame, at <paramref name="times"/> seconds, the

@@ -60,7 +60,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _requiredContacts = scene.Character.RequiredContacts;
         _gait = new WalkGait(scene, model, _contacts);
         _refiner = new HoldRefiner(model, _collision);
-        _free = new FreeBones(model, _collision);
+        _free = _gait.FreeBones;
         _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
         Model = model;
     }

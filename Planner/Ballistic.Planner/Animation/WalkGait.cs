@@ -156,6 +156,9 @@ internal sealed class WalkGait
     private readonly BodyCollision _collision;
     private readonly FreeBones _free;
 
+    /// <summary>The clearance of the rig's free bones (a tail) this gait bends, shared with the animator.</summary>
+    public FreeBones FreeBones => _free;
+
     /// <summary>The rest pose's leg (metres): a hip's greatest height above its sole with every angle at rest.</summary>
     private readonly float _restLeg;
 

@@ -89,13 +89,20 @@ public sealed class StanceRepairTests
         });
     }
 
+    /// <summary>The gap course's best path as searched (the ant's: jumps only).</summary>
+    private static PlanResult BestAsSearched()
+    {
+        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
+        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
+        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        return best;
+    }
+
     [Test]
     public void AStanceProblemOfAMoveCutFromAJumpGivesTheJumpBackWhole()
     {
         var repair = new JumpRepair();
-        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
-        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
-        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        PlanResult best = BestAsSearched();
         Jump jump = best.Jumps[0];
         Jump cut = jump with { CutFrom = [(jump.From.Id, jump.To.Id)] };
         var animation = new JumpAnimation(CharacterPresets.Model("skeleton"), [cut], [], [], [], [new JumpProblem(0, "cannot crouch (test)") { Stance = ProblemStance.Takeoff }], 0, 0);
@@ -116,9 +123,7 @@ public sealed class StanceRepairTests
     public void MovesOfOneFacedJumpFailingTogetherGiveItBackOnce()
     {
         var repair = new JumpRepair();
-        (PlanningScene scene, BakeResult bake) = GapCourseBake.Value;
-        PlanResult best = new PathQuery(scene, bake.Roadmap).Plan(GapCourse.From, GapCourse.To, AsSearched);
-        Assume.That(best.Status, Is.EqualTo(PlannerStatus.Exact));
+        PlanResult best = BestAsSearched();
         Assume.That(best.Jumps, Has.Count.GreaterThanOrEqualTo(2));
         Jump jump = best.Jumps[1];
         (int, int) id = (jump.From.Id, jump.To.Id);
