@@ -87,8 +87,11 @@ internal sealed class AnimatorEye
     /// <summary>Least fore-and-aft swing (peak to peak, degrees) of an arm about its shoulder while a walk cruises.</summary>
     public const float LeastArmSwing = 20f;
 
-    /// <summary>Steepest ground (degrees) on which a cruising walk's hip height, bob and arms are judged.</summary>
+    /// <summary>Steepest ground (degrees) on which a cruising walk's hip height, bob, arms and cadence are judged.</summary>
     private const float FlatGround = 10f;
+
+    /// <summary>Half the span (metres, along the heading) over which the ground's grade under a walk is judged.</summary>
+    private const float GradeSpan = 0.5f;
 
     /// <summary>How far (metres) from a vertex the level's surface is looked for: depths up to this are measured.</summary>
     private const float InsideProbe = 0.1f;
@@ -424,6 +427,30 @@ internal sealed class AnimatorEye
 
             return step ? values[i - 1] : mix(values[i - 1], values[i], (time - times[i - 1]) / (times[i] - times[i - 1]));
         }
+    }
+
+    /// <summary>
+    /// True when the ground under the trunk at clip time <paramref name="time"/> is level at the scale of a step: the
+    /// surface straight below is under <see cref="FlatGround"/>°, and so is the grade between the ground
+    /// <see cref="GradeSpan"/> m ahead of the trunk and as far behind (a staircase's treads are flat, the staircase is not).
+    /// </summary>
+    private bool LevelGroundAt(TriangleBvh level, float time)
+    {
+        Vector3 trunk = TrunkAt(time);
+        Vector3 heading = HeadingAt(time);
+        float flat = MathF.Cos(FlatGround * MathF.PI / 180f);
+        if (!level.Raycast(trunk, -Vector3.UnitY, 4f * Leg, out RayHit ground) || MathF.Abs(ground.Normal.Y) < flat)
+        {
+            return false;
+        }
+
+        if (!level.Raycast(trunk + (heading * GradeSpan), -Vector3.UnitY, 4f * Leg, out RayHit ahead)
+            || !level.Raycast(trunk - (heading * GradeSpan), -Vector3.UnitY, 4f * Leg, out RayHit behind))
+        {
+            return false;
+        }
+
+        return MathF.Abs(ahead.Point.Y - behind.Point.Y) <= 2f * GradeSpan * MathF.Tan(FlatGround * MathF.PI / 180f);
     }
 
     /// <summary>The trunk bone's world position at clip time <paramref name="time"/>, metres.</summary>
@@ -766,17 +793,16 @@ internal sealed class AnimatorEye
 
     /// <summary>
     /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
-    /// slows down; every 1/60 s): on ground under <see cref="FlatGround"/>° (a ray down from the trunk), the median
+    /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes), the median
     /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L, rising and
     /// falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about their mean over the second
     /// around (5th to 95th percentile: the steps' bob, not the ground's slope); a biped (two feet) at most <see cref="MostCadence"/> foot placements
-    /// per second, each step at least <see cref="LeastStep"/> L; each arm swinging at least
+    /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back).
     /// </summary>
     private void MeasureWalks(JumpAnimation animation, TriangleBvh level, Look look)
     {
-        float flat = MathF.Cos(FlatGround * MathF.PI / 180f);
         int feet = _legs.Length;
         for (int m = 0; m < animation.Moves.Count; m++)
         {
@@ -798,8 +824,7 @@ internal sealed class AnimatorEye
             var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
             {
-                Vector3 trunk = TrunkAt(t);
-                if (!level.Raycast(trunk, -Vector3.UnitY, 4f * Leg, out RayHit ground) || MathF.Abs(ground.Normal.Y) < flat)
+                if (!LevelGroundAt(level, t))
                 {
                     continue;
                 }
@@ -868,10 +893,25 @@ internal sealed class AnimatorEye
                 }
             }
 
-            if (feet == 2)
+            // The cadence: one over the mean time between successive foot placements on level ground (placements
+            // counted in a window miss or gain one at its ends, up to 0.4 per second over the shortest walks).
+            float[] placed = [.. animation.ContactPhases
+                .Where(p => p.From >= from && p.From <= to && _legs.Any(l => l.Name == animation.Model.Limbs[p.Limb].Name))
+                .Select(p => p.From).Order()];
+            float spanned = 0f;
+            int intervals = 0;
+            for (int k = 1; k < placed.Length; k++)
             {
-                int placed = animation.ContactPhases.Count(p => p.From > from && p.From <= to && _legs.Any(l => l.Name == animation.Model.Limbs[p.Limb].Name));
-                float cadence = placed / (to - from);
+                if (placed[k] - placed[k - 1] > 1e-4f && LevelGroundAt(level, placed[k - 1]) && LevelGroundAt(level, placed[k]))
+                {
+                    spanned += placed[k] - placed[k - 1];
+                    intervals++;
+                }
+            }
+
+            if (feet == 2 && intervals >= 2 && spanned >= 0.5f)
+            {
+                float cadence = intervals / spanned;
                 float step = walk.Speed / MathF.Max(cadence, 1e-3f) / Leg;
                 look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.0} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
             }
