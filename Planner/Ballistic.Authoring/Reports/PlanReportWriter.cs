@@ -404,6 +404,16 @@ public static class PlanReportWriter
             w.WriteNumberValue(limb.EffectorOffset.Y);
             w.WriteNumberValue(limb.EffectorOffset.Z);
             w.WriteEndArray();
+            if (limb.Ball is RigLimb ball)
+            {
+                // Where a foot rolled heel up touches (phases "on": "ball"), in the same frame.
+                w.WriteStartArray("ballOffset");
+                w.WriteNumberValue(ball.EffectorOffset.X);
+                w.WriteNumberValue(ball.EffectorOffset.Y);
+                w.WriteNumberValue(ball.EffectorOffset.Z);
+                w.WriteEndArray();
+            }
+
             w.WriteEndObject();
         }
 
@@ -420,6 +430,11 @@ public static class PlanReportWriter
             w.WriteEndArray();
             w.WriteNumber("from", phase.From);
             w.WriteNumber("to", phase.To);
+            if (phase.OnBall)
+            {
+                w.WriteString("on", "ball");
+            }
+
             w.WriteEndObject();
         }
 

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Rigs;
 
 namespace Ballistic.Planner.Animation;
 
@@ -7,4 +8,18 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Position">The contact point held, world metres.</param>
 /// <param name="From">Start of the phase, seconds of clip time.</param>
 /// <param name="To">End of the phase, seconds of clip time.</param>
-public readonly record struct ContactPhase(int Limb, Vector3 Position, float From, float To);
+public readonly record struct ContactPhase(int Limb, Vector3 Position, float From, float To)
+{
+    /// <summary>
+    /// True when the limb holds <see cref="Position"/> with the ball of its foot, heel raised (a walker's trailing
+    /// foot rolling off before it swings), not with its contact point.
+    /// </summary>
+    public bool OnBall { get; init; }
+
+    /// <summary>The point of <paramref name="limb"/> (this phase's) that touches <see cref="Position"/>, world metres, given the joints' world positions and rotations: its contact point, or its ball when <see cref="OnBall"/>.</summary>
+    public Vector3 Touching(RigLimb limb, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    {
+        ArgumentNullException.ThrowIfNull(limb);
+        return (OnBall && limb.Ball is RigLimb ball ? ball : limb).EffectorPosition(positions, rotations);
+    }
+}

@@ -98,7 +98,7 @@ internal sealed class HoldRefiner
         for (int h = 0; h < held.Length; h++)
         {
             RigLimb limb = _model.Limbs[held[h].Limb];
-            atA[h] = limb.EffectorPosition(positions, rotations);
+            atA[h] = held[h].Touching(limb, positions, rotations);
             normals[h] = limb.EffectorNormal(rotations);
             clear[h] = !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
         }
@@ -107,7 +107,7 @@ internal sealed class HoldRefiner
         for (int h = 0; h < held.Length; h++)
         {
             RigLimb limb = _model.Limbs[held[h].Limb];
-            atB[h] = limb.EffectorPosition(positions, rotations);
+            atB[h] = held[h].Touching(limb, positions, rotations);
             clear[h] &= !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
         }
 
@@ -118,16 +118,18 @@ internal sealed class HoldRefiner
             RigLimb limb = _model.Limbs[phase.Limb];
             float allowed = MathF.Max(Vector3.Distance(atA[h], phase.Position), Vector3.Distance(atB[h], phase.Position)) + Tolerance;
             rig.Solve(root, angles, positions, rotations);
-            if (Holds(limb, pose, phase.Position, allowed, clear[h]))
+            if (Holds(limb, phase, pose, allowed, clear[h]))
             {
                 continue;
             }
 
-            // Hold it there by IK (where the effector is at the two frames, its sole turned as at the first).
+            // Hold it there by IK (where the effector, or the ball it rolled onto, is at the two frames, its sole
+            // turned as at the first).
             float[] trial = (float[])angles.Clone();
-            bool solved = _ik.Solve(root, trial, limb, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]).Success;
+            RigLimb touching = phase.OnBall && limb.Ball is RigLimb ball ? ball : limb;
+            bool solved = _ik.Solve(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]).Success;
             rig.Solve(root, trial, positions, rotations);
-            if (!(solved && Holds(limb, pose, phase.Position, allowed, clear[h])) && depth >= MaxDepth)
+            if (!(solved && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)
             {
                 failures.Add((phase.Limb, time));
                 continue;
@@ -155,8 +157,8 @@ internal sealed class HoldRefiner
         }
     }
 
-    /// <summary>True when, in the pose last solved, <paramref name="limb"/>'s effector lies within <paramref name="allowed"/> metres of <paramref name="point"/> and, when <paramref name="clear"/>, none of its bones is in the level.</summary>
-    private bool Holds(RigLimb limb, Pose pose, Vector3 point, float allowed, bool clear) =>
-        Vector3.Distance(limb.EffectorPosition(pose.Positions, pose.Rotations), point) <= allowed
-        && (!clear || !_collision.LimbCollides(limb, pose.Positions, pose.Rotations, point));
+    /// <summary>True when, in the pose last solved, <paramref name="limb"/> touches within <paramref name="allowed"/> metres of <paramref name="phase"/>'s point (<see cref="ContactPhase.Touching"/>) and, when <paramref name="clear"/>, none of its bones is in the level.</summary>
+    private bool Holds(RigLimb limb, ContactPhase phase, Pose pose, float allowed, bool clear) =>
+        Vector3.Distance(phase.Touching(limb, pose.Positions, pose.Rotations), phase.Position) <= allowed
+        && (!clear || !_collision.LimbCollides(limb, pose.Positions, pose.Rotations, phase.Position));
 }

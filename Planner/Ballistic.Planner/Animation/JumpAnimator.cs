@@ -171,7 +171,7 @@ public sealed class JumpAnimator : IJumpAnimator
         var frames = new List<AnimationFrame>();
         var phases = new List<ContactPhase>();
         var stances = new List<float>();
-        var open = new Dictionary<int, (Vector3 Position, float From)>();
+        var open = new Dictionary<int, (Vector3 Position, float From, bool OnBall)>();
         int colliding = 0;
         float clock = 0f;
         float leadIn = 0f;
@@ -200,7 +200,7 @@ public sealed class JumpAnimator : IJumpAnimator
             {
                 foreach (LimbContact c in clip.Takeoff.Contacts)
                 {
-                    open[c.Limb] = (c.Position, 0f);
+                    open[c.Limb] = (c.Position, 0f, false);
                 }
 
                 StanceDip.Table first = Dip(clip.Takeoff, m, ProblemStance.Takeoff, problems, dips);
@@ -212,21 +212,21 @@ public sealed class JumpAnimator : IJumpAnimator
             // Takeoff contacts are held until they break; landing contacts are held from when they are made.
             foreach (LimbContact c in clip.Takeoff.Contacts)
             {
-                if (open.Remove(c.Limb, out (Vector3 Position, float From) o))
+                if (open.Remove(c.Limb, out (Vector3 Position, float From, bool OnBall) o))
                 {
-                    phases.Add(new ContactPhase(c.Limb, o.Position, o.From, clock + clip.Breaks[c.Limb]));
+                    phases.Add(new ContactPhase(c.Limb, o.Position, o.From, clock + clip.Breaks[c.Limb]) { OnBall = o.OnBall });
                 }
             }
 
-            foreach ((int limb, (Vector3 position, float from)) in open)
+            foreach ((int limb, (Vector3 position, float from, bool onBall)) in open)
             {
-                phases.Add(new ContactPhase(limb, position, from, clock));
+                phases.Add(new ContactPhase(limb, position, from, clock) { OnBall = onBall });
             }
 
             open.Clear();
             foreach (LimbContact c in clip.Landing.Contacts)
             {
-                open[c.Limb] = (c.Position, clock + clip.Makes[c.Limb]);
+                open[c.Limb] = (c.Position, clock + clip.Makes[c.Limb], false);
             }
 
             foreach (AnimationFrame f in clip.Frames[1..])
@@ -260,14 +260,14 @@ public sealed class JumpAnimator : IJumpAnimator
                     problems.AddRange(stance.Problems);
                     foreach ((int limb, float start, LimbContact? step) in stance.Steps)
                     {
-                        if (open.Remove(limb, out (Vector3 Position, float From) o))
+                        if (open.Remove(limb, out (Vector3 Position, float From, bool OnBall) o))
                         {
-                            phases.Add(new ContactPhase(limb, o.Position, o.From, clock + start));
+                            phases.Add(new ContactPhase(limb, o.Position, o.From, clock + start) { OnBall = o.OnBall });
                         }
 
                         if (step is LimbContact c)
                         {
-                            open[limb] = (c.Position, clock + start + StepDuration);
+                            open[limb] = (c.Position, clock + start + StepDuration, false);
                         }
                     }
 
@@ -297,9 +297,9 @@ public sealed class JumpAnimator : IJumpAnimator
             }
         }
 
-        foreach ((int limb, (Vector3 position, float from)) in open)
+        foreach ((int limb, (Vector3 position, float from, bool onBall)) in open)
         {
-            phases.Add(new ContactPhase(limb, position, from, clock));
+            phases.Add(new ContactPhase(limb, position, from, clock) { OnBall = onBall });
         }
 
         phases.Sort((a, b) => a.From != b.From ? a.From.CompareTo(b.From) : a.Limb.CompareTo(b.Limb));
@@ -479,15 +479,15 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <paramref name="clock"/>: a foot still on the contact the previous move left it on continues that phase; the
     /// phases that last to the walk's end stay open for the next move.
     /// </summary>
-    private static void AddWalk(WalkGait.Clip walk, float clock, bool first, List<AnimationFrame> frames, List<ContactPhase> phases, Dictionary<int, (Vector3 Position, float From)> open)
+    private static void AddWalk(WalkGait.Clip walk, float clock, bool first, List<AnimationFrame> frames, List<ContactPhase> phases, Dictionary<int, (Vector3 Position, float From, bool OnBall)> open)
     {
         float end = walk.Frames[^1].Time;
-        var left = new Dictionary<int, (Vector3 Position, float From)>(open);
+        var left = new Dictionary<int, (Vector3 Position, float From, bool OnBall)>(open);
         open.Clear();
         foreach (ContactPhase phase in walk.Phases.OrderBy(p => p.From))
         {
             float from = clock + phase.From;
-            if (phase.From <= 1e-6f && left.TryGetValue(phase.Limb, out (Vector3 Position, float From) o) && Vector3.Distance(o.Position, phase.Position) <= 1e-3f)
+            if (phase.From <= 1e-6f && left.TryGetValue(phase.Limb, out (Vector3 Position, float From, bool OnBall) o) && o.OnBall == phase.OnBall && Vector3.Distance(o.Position, phase.Position) <= 1e-3f)
             {
                 from = o.From;
                 left.Remove(phase.Limb);
@@ -495,7 +495,7 @@ public sealed class JumpAnimator : IJumpAnimator
 
             if (phase.To >= end - 1e-6f)
             {
-                open[phase.Limb] = (phase.Position, from);
+                open[phase.Limb] = (phase.Position, from, phase.OnBall);
             }
             else
             {
@@ -503,9 +503,9 @@ public sealed class JumpAnimator : IJumpAnimator
             }
         }
 
-        foreach ((int limb, (Vector3 position, float from)) in left)
+        foreach ((int limb, (Vector3 position, float from, bool onBall)) in left)
         {
-            phases.Add(new ContactPhase(limb, position, from, clock));
+            phases.Add(new ContactPhase(limb, position, from, clock) { OnBall = onBall });
         }
 
         foreach (AnimationFrame f in first ? walk.Frames : walk.Frames[1..])

@@ -71,6 +71,9 @@ internal sealed class WalkGait
     /// <summary>Distance (metres) along the path either way over which the ground's grade is measured.</summary>
     private const float LevelWindow = 0.5f;
 
+    /// <summary>Samples either side over which the cruise's level share is averaged (<see cref="LevelWindow"/> of travel).</summary>
+    private const int LevelSamples = 4;
+
     /// <summary>Share of a leg's full length (hip to ankle along its bones) the hips rise to at most over a held foot: the knee stays a little bent.</summary>
     public const float KneeMargin = 0.99f;
 
@@ -152,6 +155,7 @@ internal sealed class WalkGait
     private readonly CharacterModel _model;
     private readonly ContactGenerator _contacts;
     private readonly SoleHold _sole;
+    private readonly Func<Vector3, bool> _onGround;
     private readonly LimbIk _swingIk;
     private readonly BodyCollision _collision;
     private readonly FreeBones _free;
@@ -181,6 +185,7 @@ internal sealed class WalkGait
         _model = model;
         _contacts = contacts;
         _sole = new SoleHold(model.Rig);
+        _onGround = OnGround;
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
         _free = new FreeBones(model, _collision);
@@ -397,8 +402,12 @@ internal sealed class WalkGait
         return best;
     }
 
-    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/> (<see cref="SoleHold"/>).</summary>
-    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal) => _sole.Hold(root, q, limb, point, normal);
+    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>, or rolled onto its ball where it cannot lie flat (<see cref="SoleHold"/>).</summary>
+    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null) => _sole.Hold(root, q, limb, point, normal, _onGround, ball);
+
+    /// <summary>True when a point (world metres) lies on the level's surface, within <see cref="Touch"/> (a rolling foot's ball never rests on air).</summary>
+    private bool OnGround(Vector3 point) =>
+        _scene.Bvh.Raycast(point + (Vector3.UnitY * Touch), -Vector3.UnitY, 2f * Touch, out RayHit hit) && _scene.Surfaces.SurfaceOf(hit.Triangle) >= 0;
 
     private static float Smooth(float x) => Easing.Smooth(x);
 
@@ -601,13 +610,16 @@ internal sealed class WalkGait
             }
 
             // No foot steps to a new foothold faster than MinAirTime allows (it would read as a slide): a walk too
-            // short or turning too fast for its steps says so.
+            // short or turning too fast for its steps says so. (A foot rolling onto its ball, or back, keeps its foothold.)
             foreach (IGrouping<int, ContactPhase> limbPhases in _phases.GroupBy(p => p.Limb))
             {
                 ContactPhase[] ordered = [.. limbPhases.OrderBy(p => p.From)];
                 for (int i = 1; i < ordered.Length; i++)
                 {
-                    if (ordered[i].From - ordered[i - 1].To < JumpAnimator.MinAirTime && Vector3.Distance(ordered[i].Position, ordered[i - 1].Position) > 2f * Touch)
+                    float moved = Vector3.Distance(ordered[i].Position, ordered[i - 1].Position);
+                    bool rolling = ordered[i].OnBall != ordered[i - 1].OnBall && _model.Limbs[ordered[i].Limb].Ball is RigLimb ball
+                        && moved <= Vector3.Distance(ball.EffectorOffset, _model.Limbs[ordered[i].Limb].EffectorOffset) + (2f * Touch);
+                    if (!rolling && ordered[i].From - ordered[i - 1].To < JumpAnimator.MinAirTime && moved > 2f * Touch)
                     {
                         Fail(ordered[i].Limb, "would have to step faster than it can", Step(ordered[i - 1].To));
                     }
@@ -990,23 +1002,37 @@ internal sealed class WalkGait
 
         /// <summary>
         /// How far into its cruise the walk is at <paramref name="t"/> seconds, 0 to 1: its speed over the walking
-        /// speed, on ground whose grade along the path (over <see cref="LevelWindow"/> either way) is under
-        /// <see cref="LevelGrade"/>, fading out by <see cref="SteepGrade"/> (on stairs and slopes a straight leg reaches
-        /// less far down and up: the steps and the hips stay as at the stances).
+        /// speed, times the share of the path within <see cref="LevelWindow"/> either way that is level
+        /// (<see cref="LevelShare"/>: on stairs and slopes a straight leg reaches less far down and up: the steps and
+        /// the hips stay as at the stances).
         /// </summary>
         private float Weight(float t)
         {
-            float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
+            float w = Cruising(t);
             if (!(w > 0f))
             {
                 return 0f;
             }
 
+            // Averaged over LevelWindow of travel either way: a stair's first riser coming within the window would
+            // otherwise drop the hips the whole cruise lift within a frame or two.
             float distance = _walk.DistanceAt(t);
+            float level = 0f;
+            for (int k = -LevelSamples; k <= LevelSamples; k++)
+            {
+                level += LevelShare(distance + (k * LevelWindow / LevelSamples));
+            }
+
+            return w * level / ((2 * LevelSamples) + 1);
+        }
+
+        /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/>, fading to 0 by <see cref="SteepGrade"/>.</summary>
+        private float LevelShare(float distance)
+        {
             Vector3 d = _walk.PointAt(distance + LevelWindow) - _walk.PointAt(distance - LevelWindow);
             float across = new Vector2(d.X, d.Z).Length();
             float grade = across > 1e-3f ? MathF.Abs(d.Y) / across : 0f;
-            return w * Math.Clamp((SteepGrade - grade) / (SteepGrade - LevelGrade), 0f, 1f);
+            return Math.Clamp((SteepGrade - grade) / (SteepGrade - LevelGrade), 0f, 1f);
         }
 
         /// <summary>
@@ -1078,8 +1104,9 @@ internal sealed class WalkGait
                     continue;
                 }
 
+                // Flat: a stance's feet do not rise onto their toes to lift the trunk.
                 RigLimb limb = _model.Limbs[l];
-                if (!_gait.Hold(root, q, limb, c.Position, c.Normal))
+                if (!_gait._sole.Hold(root, q, limb, c.Position, c.Normal))
                 {
                     return false;
                 }
@@ -1297,6 +1324,9 @@ internal sealed class WalkGait
 
             return share;
         }
+
+        /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>
+        private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
 
         /// <summary>The time (seconds into the walk) at which the trunk's motion has cost <paramref name="c"/> half-cycles (<see cref="Boundaries"/>).</summary>
         private float TimeAtCost(float c)
@@ -1631,30 +1661,114 @@ internal sealed class WalkGait
             }
 
             // Each hold is a contact phase, from the first fine step to the last when the effector is within Touch of
-            // its point (the swings around it leave and reach it gradually).
+            // its point (the swings around it leave and reach it gradually); where the foot rolls onto its ball (and
+            // back), the hold is phases on the sole and on the ball in turn.
             foreach (Holding hold in holds)
             {
                 int from = hold.From;
-                int to = hold.To;
                 while (from > 0 && Near(l, from - 1, hold.Point))
                 {
                     from--;
                 }
 
-                while (to < _steps && Near(l, to + 1, hold.Point))
+                List<(int From, int To, bool OnBall)> runs = Runs(l, hold, out Vector3 ball);
+                for (int r = 0; r < runs.Count; r++)
                 {
-                    to++;
-                }
+                    (int a, int b, bool onBall) = runs[r];
+                    Vector3 point = onBall ? ball : hold.Point;
+                    RigLimb touching = onBall ? limb.Ball! : limb;
+                    if (r == 0)
+                    {
+                        a = onBall ? a : from;
+                        while (onBall && a > 0 && Near(touching, a - 1, point))
+                        {
+                            a--;
+                        }
+                    }
+                    else if (Near(touching, a - 1, point))
+                    {
+                        // From the last step of the run before where this point is held already (the two phases meet).
+                        a--;
+                    }
 
-                _phases.Add(new ContactPhase(l, hold.Point, Time(from), Time(to)));
+                    if (r == runs.Count - 1)
+                    {
+                        while (b < _steps && Near(touching, b + 1, point))
+                        {
+                            b++;
+                        }
+                    }
+
+                    _phases.Add(new ContactPhase(l, point, Time(a), Time(b)) { OnBall = onBall });
+                }
             }
         }
 
+        /// <summary>
+        /// Foot <paramref name="l"/>'s hold of <paramref name="hold"/> in runs of fine steps on its sole (its contact
+        /// point within <see cref="Touch"/> of the hold's) and on its ball (the ball within <see cref="Touch"/> of
+        /// <paramref name="ball"/>, where it first stood rolled), and on the sole again from where it is down on its point
+        /// to the hold's end; a step on both before that, or on neither (a slip, which the problems already say), stays
+        /// in the run it is in. One run on the sole for a foot that never rolls.
+        /// </summary>
+        private List<(int From, int To, bool OnBall)> Runs(int l, Holding hold, out Vector3 ball)
+        {
+            ball = hold.Point;
+            var runs = new List<(int From, int To, bool OnBall)>();
+            RigLimb? rolled = _model.Limbs[l].Ball;
+            bool on = false;
+            bool known = false;
+            int start = hold.From;
+
+            // From where the sole is down on its point to the hold's end (a walk settling on its end stance), the foot
+            // is back on its sole; before that, a step with the sole on its point stays in the run it is in (at the
+            // first degrees of a roll both the sole and the ball are within Touch of theirs).
+            int flatFrom = hold.To + 1;
+            while (rolled is not null && flatFrom > hold.From && Near(l, flatFrom - 1, hold.Point))
+            {
+                flatFrom--;
+            }
+
+            for (int i = hold.From; i <= hold.To && rolled is not null; i++)
+            {
+                bool onBall = on;
+                if (!Near(l, i, hold.Point))
+                {
+                    _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+                    Vector3 at = rolled.EffectorPosition(_positions, _rotations);
+                    if (!known && Vector3.Distance(at, hold.Point) < 2f * Vector3.Distance(rolled.EffectorOffset, _model.Limbs[l].EffectorOffset))
+                    {
+                        (ball, known) = (at, true);
+                    }
+
+                    onBall = known && (on || Vector3.Distance(at, ball) <= Touch);
+                }
+                else if (i >= flatFrom)
+                {
+                    onBall = false;
+                }
+
+                if (onBall != on && i > start)
+                {
+                    runs.Add((start, i - 1, on));
+                    start = i;
+                }
+
+                on = onBall;
+            }
+
+            runs.Add((start, hold.To, on));
+            return runs;
+        }
+
         /// <summary>True when limb <paramref name="l"/>'s effector lies within <see cref="Touch"/> of <paramref name="point"/> at fine step <paramref name="i"/>.</summary>
-        private bool Near(int l, int i, Vector3 point)
+        private bool Near(int l, int i, Vector3 point) => Near(_model.Limbs[l], i, point);
+
+        /// <summary>True when <paramref name="limb"/>'s effector lies within <see cref="Touch"/> of <paramref name="point"/> at fine step <paramref name="i"/>.</summary>
+        private bool Near(RigLimb limb, int i, Vector3 point)
         {
             _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
-            return Vector3.Distance(_model.Limbs[l].EffectorPosition(_positions, _rotations), point) <= Touch;
+            return Vector3.Distance(limb.EffectorPosition(_positions, _rotations), point) <= Touch;
         }
 
         /// <summary>Holds the segment's point by IK at every fine step, sole flat, from the angles the limb has at its first.</summary>
@@ -1663,6 +1777,7 @@ internal sealed class WalkGait
             RigLimb limb = _model.Limbs[l];
             float[] q = (float[])_angles[hold.From].Clone();
             bool slipped = false;
+            Vector3? ball = null;
             for (int i = hold.From; i <= hold.To; i++)
             {
                 float[] trial = _angles[i];
@@ -1672,7 +1787,19 @@ internal sealed class WalkGait
                     trial[d] = float.Lerp(q[d], _end.Angles[d], w);
                 }
 
-                if (!_gait.Hold(_roots[i], trial, limb, hold.Point, hold.Normal) && !Reseeded(i, trial, limb, hold, q))
+                // Settling into the walk's end stance, the foot comes down flat as soon as it can (the stance it ends
+                // on, which the next move starts from, has it flat); until then, and elsewhere, as Hold tries.
+                if ((w > 0f && _gait._sole.Hold(_roots[i], trial, limb, hold.Point, hold.Normal))
+                    || _gait.Hold(_roots[i], trial, limb, hold.Point, hold.Normal, ball) || Reseeded(i, trial, limb, hold, q, ball))
+                {
+                    // Once rolled onto its ball, the foot keeps the ball where it first put it.
+                    _rig.Solve(_roots[i], trial, _positions, _rotations);
+                    if (ball is null && limb.Ball is RigLimb rolled && Vector3.Distance(limb.EffectorPosition(_positions, _rotations), hold.Point) > Touch)
+                    {
+                        ball = rolled.EffectorPosition(_positions, _rotations);
+                    }
+                }
+                else
                 {
                     foreach (int d in limb.ChainDofs)
                     {
@@ -1698,7 +1825,7 @@ internal sealed class WalkGait
         }
 
         /// <summary>Holds at fine step <paramref name="i"/> from the hold's known angles, then from the stance angles, when the limb's own fail.</summary>
-        private bool Reseeded(int i, float[] trial, RigLimb limb, Holding hold, float[] q)
+        private bool Reseeded(int i, float[] trial, RigLimb limb, Holding hold, float[] q, Vector3? ball)
         {
             foreach (float[]? seed in new[] { hold.Seed, hold.Settle ? _end.Angles : Stance(Time(i) / _walk.Duration) })
             {
@@ -1713,7 +1840,7 @@ internal sealed class WalkGait
                     attempt[d] = seed[d];
                 }
 
-                if (_gait.Hold(_roots[i], attempt, limb, hold.Point, hold.Normal))
+                if (_gait.Hold(_roots[i], attempt, limb, hold.Point, hold.Normal, ball))
                 {
                     Array.Copy(attempt, trial, trial.Length);
                     return true;
@@ -1776,7 +1903,12 @@ internal sealed class WalkGait
             Vector3 ground0 = Vector3.UnitY;
             if (previous is Holding held)
             {
-                (p0, n0, contact0, ground0) = (held.Point, -held.Normal, held.Point, held.Normal);
+                // From where the foot is: on its hold, or rolled onto its ball there.
+                (contact0, ground0) = (held.Point, held.Normal);
+                if (Vector3.Distance(p0, held.Point) <= 2f * _gait._sole.Flat.Settings.PositionTolerance)
+                {
+                    (p0, n0) = (held.Point, -held.Normal);
+                }
             }
 
             float[] endAngles;

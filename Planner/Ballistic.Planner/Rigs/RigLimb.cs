@@ -71,6 +71,50 @@ public sealed class RigLimb
         Filter = filter;
         Chain = [.. chain];
         ChainDofs = [.. dofs];
+        Ball = kind == LimbKind.Foot && FindBall(rig, effector, effectorOffset, ContactNormal) is Vector3 ball ? new RigLimb(this, ball) : null;
+    }
+
+    /// <summary>The same limb touching at <paramref name="ball"/> (effector frame) instead of its contact point.</summary>
+    private RigLimb(RigLimb limb, Vector3 ball)
+    {
+        Name = limb.Name;
+        Kind = limb.Kind;
+        RootJoint = limb.RootJoint;
+        EffectorJoint = limb.EffectorJoint;
+        EffectorOffset = ball;
+        ContactNormal = limb.ContactNormal;
+        Filter = limb.Filter;
+        Chain = limb.Chain;
+        ChainDofs = limb.ChainDofs;
+    }
+
+    /// <summary>Least distance (metres) from a foot's contact point to its ball for the foot to roll onto it.</summary>
+    private const float LeastBall = 0.02f;
+
+    /// <summary>
+    /// A foot's ball in its effector joint's frame: of the joints hanging from the effector (a toe), the one farthest
+    /// along the sole from the contact point, seen on the sole's plane; <c>null</c> when none is <see cref="LeastBall"/> away.
+    /// </summary>
+    private static Vector3? FindBall(Rig rig, int effector, Vector3 offset, Vector3 normal)
+    {
+        Vector3? best = null;
+        float far = LeastBall;
+        foreach (Joint joint in rig.Joints)
+        {
+            if (joint.Parent != effector)
+            {
+                continue;
+            }
+
+            Vector3 onSole = joint.Offset - (Vector3.Dot(joint.Offset - offset, normal) * normal);
+            float d = Vector3.Distance(onSole, offset);
+            if (d > far && float.IsFinite(d))
+            {
+                (best, far) = (onSole, d);
+            }
+        }
+
+        return best;
     }
 
     /// <summary>Limb name, e.g. <c>left_foot</c>.</summary>
@@ -99,6 +143,13 @@ public sealed class RigLimb
 
     /// <summary>Indices of the degrees of freedom that move the effector.</summary>
     public IReadOnlyList<int> ChainDofs { get; }
+
+    /// <summary>
+    /// A foot touching at its ball instead of its contact point (the same chain, its effector offset the ball: the
+    /// effector's child joint, a toe, seen on the sole), for a foot rolled heel up; <c>null</c> for hands and for feet
+    /// with no toe bone.
+    /// </summary>
+    public RigLimb? Ball { get; }
 
     /// <summary>The contact point in world space given the joints' world positions and rotations.</summary>
     public Vector3 EffectorPosition(ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations) =>

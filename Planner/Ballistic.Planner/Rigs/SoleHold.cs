@@ -8,21 +8,31 @@ namespace Ballistic.Planner.Rigs;
 /// against the surface, as flat as <see cref="FlatTolerance"/> when it can, else within the IK's default 15°; joints
 /// at their limits are released so the others make up for them (<see cref="IkSettings.ReleaseLimits"/>). One rule
 /// for the gait that holds the feet and for <see cref="ReducedModelBuilder.WalkableSlope"/>, which asks where it
-/// can. Thread-safe.
+/// can. A walking foot may also roll onto its ball (<see cref="Hold"/> with <c>rollOnto</c>). Thread-safe.
 /// </summary>
 internal sealed class SoleHold
 {
     /// <summary>How far a held sole may tilt from the ground when it can lie flat, radians (5°).</summary>
     public const float FlatTolerance = 5f * MathF.PI / 180f;
 
+    /// <summary>Most a rolling foot's heel rises, radians (36°): a walker's trailing foot peels off its heel before it swings.</summary>
+    public const float MostRoll = 36f * MathF.PI / 180f;
+
+    /// <summary>The heel's rise is tried in steps of this (radians, 6°), least first: it rises no more than the hold needs.</summary>
+    private const float RollStep = 6f * MathF.PI / 180f;
+
     /// <summary>Iterations of each solve: few, since a held foot is tracked from where it was.</summary>
     public const int Iterations = 24;
+
+    private readonly Rig _rig;
 
     /// <summary>Creates the rule for <paramref name="rig"/>.</summary>
     public SoleHold(Rig rig)
     {
+        _rig = rig;
         Flat = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = Iterations, NormalTolerance = FlatTolerance, ReleaseLimits = true });
         Loose = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = Iterations, ReleaseLimits = true });
+        Rolling = new LimbIk(rig, new IkSettings { Restarts = 0, MaxIterations = Iterations, NormalTolerance = 0.5f * RollStep, ReleaseLimits = true });
     }
 
     /// <summary>The solver holding the sole within <see cref="FlatTolerance"/>.</summary>
@@ -31,11 +41,74 @@ internal sealed class SoleHold
     /// <summary>The solver holding it within the IK's default 15°.</summary>
     public LimbIk Loose { get; }
 
+    /// <summary>The solver holding the ball with the heel up one <see cref="RollStep"/>.</summary>
+    private LimbIk Rolling { get; }
+
     /// <summary>
     /// Moves <paramref name="limb"/>'s angles in <paramref name="q"/> (updated only on success) so that its contact point
     /// lies on <paramref name="point"/> (world metres) with its contact face against ground of normal
-    /// <paramref name="groundNormal"/> (world, unit, pointing out of the ground); true when it does.
+    /// <paramref name="groundNormal"/> (world, unit, pointing out of the ground); true when it does. With
+    /// <paramref name="rollOnto"/>, where the sole cannot lie flat the foot may instead keep its ball where it is when the
+    /// sole lies flat on <paramref name="point"/> (facing as the foot faces in <paramref name="q"/>; only where
+    /// <paramref name="rollOnto"/> accepts that point as ground; at <paramref name="ball"/> when given: where a hold
+    /// that has rolled first put it, so the foot does not swivel off it, and then the foot stays on its ball, its heel
+    /// lowering as far as the hold allows, rather than dropping flat at once), the heel raised
+    /// up to <see cref="MostRoll"/> (<see cref="RigLimb.Ball"/>; a foot without a toe bone does not roll).
     /// </summary>
-    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal) =>
-        Flat.Solve(root, q, limb, point, -groundNormal).Success || Loose.Solve(root, q, limb, point, -groundNormal).Success;
+    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, bool>? rollOnto = null, Vector3? ball = null) =>
+        (ball is not null && rollOnto is not null && Roll(root, q, limb, point, groundNormal, rollOnto, ball))
+        || Flat.Solve(root, q, limb, point, -groundNormal).Success
+        || (rollOnto is not null && Roll(root, q, limb, point, groundNormal, rollOnto, ball))
+        || Loose.Solve(root, q, limb, point, -groundNormal).Success;
+
+    /// <summary>The heel raised, the ball held (<see cref="Hold"/>).</summary>
+    private bool Roll(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, bool> rollOnto, Vector3? ball0)
+    {
+        if (limb.Ball is not RigLimb ball)
+        {
+            return false;
+        }
+
+        int joints = _rig.Joints.Count;
+        Span<Vector3> positions = joints <= 128 ? stackalloc Vector3[joints] : new Vector3[joints];
+        Span<Quaternion> rotations = joints <= 128 ? stackalloc Quaternion[joints] : new Quaternion[joints];
+        _rig.Solve(root, q, positions, rotations);
+        Vector3 up = Vector3.Normalize(groundNormal);
+        Vector3 toBall = ball.EffectorOffset - limb.EffectorOffset;
+        Vector3 along = Vector3.Transform(toBall, rotations[limb.EffectorJoint]);
+        along -= Vector3.Dot(along, up) * up;
+        if (along.LengthSquared() < 1e-8f)
+        {
+            return false;
+        }
+
+        Vector3 target = ball0 ?? point + (Vector3.Normalize(along) * toBall.Length());
+        Vector3 forward = target - point;
+        forward -= Vector3.Dot(forward, up) * up;
+        if (forward.LengthSquared() < 1e-8f)
+        {
+            return false;
+        }
+
+        forward = Vector3.Normalize(forward);
+        if (!rollOnto(target))
+        {
+            return false;
+        }
+
+        // The sole's normal (out of the sole, into the ground when flat) tilted back, the heel raised by as few
+        // RollSteps as hold it (each within half a step either way), up to MostRoll.
+        Vector3 side = Vector3.Normalize(Vector3.Cross(up, forward));
+        float sign = Vector3.Dot(Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, RollStep)), forward) > 0f ? -1f : 1f;
+        for (float tilt = 0.5f * RollStep; tilt <= MostRoll; tilt += RollStep)
+        {
+            Vector3 sole = Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, sign * tilt));
+            if (Rolling.Solve(root, q, ball, target, sole).Success)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
 }

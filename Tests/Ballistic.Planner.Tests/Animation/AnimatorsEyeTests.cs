@@ -136,6 +136,44 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// The eye's bob is the trunk's rise and fall with the steps, not the ground's grade or a walk's slow sink: the walk
+    /// across the gap course's first platform with its trunk rising steadily 0.2 L a second (as up a gentle slope, or
+    /// sinking toward a stop) bobs as much as walked, within 0.005 L (about its mean over the second around, it read
+    /// up to 0.05 L more near the window's ends); with a 0.1 L rise and fall at 3.3 Hz added, over 0.08 L: too much.
+    /// </summary>
+    [Test]
+    public void AWalksBobIsItsRiseAndFallWithTheStepsNotASteadyRise()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        JumpAnimation animation = world.AcrossFirstPlatform();
+        PlanningScene scene = world.Scene;
+        float leg = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Leg;
+        int walk = Enumerable.Range(0, animation.Moves.Count).First(m => animation.Moves[m] is Walk);
+        float start = animation.MoveStart(walk);
+        float end = animation.MoveEnd(walk);
+        JumpAnimation Lifted(Func<float, float> lift) => new(
+            animation.Model, animation.Moves, animation.Stances,
+            [.. animation.Frames.Select(f => f.Time > start && f.Time < end ? f with { Root = new RootPose(f.Root.Position + new Vector3(0f, lift(f.Time - start) * leg, 0f), f.Root.Rotation) } : f)],
+            animation.ContactPhases, animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        float Bob(JumpAnimation clip)
+        {
+            AnimatorEye.Criterion bob = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(clip), clip.Model).Measure(clip, scene).Bob;
+            Assert.That(bob.Seen, Has.Count.EqualTo(1), bob.ToString());
+            return float.Parse(bob.Seen[0].Seen.Split(" fall ")[1].Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+        }
+
+        float walked = Bob(animation);
+        float rising = Bob(Lifted(t => 0.2f * t));
+        float bouncing = Bob(Lifted(t => 0.05f * MathF.Sin(2f * MathF.PI * 3.3f * t)));
+        Assert.Multiple(() =>
+        {
+            Assert.That(walked, Is.InRange(AnimatorEye.LeastBob, AnimatorEye.MostBob), "the walk as animated bobs naturally");
+            Assert.That(rising, Is.EqualTo(walked).Within(0.005f), "a steady rise is not a bob");
+            Assert.That(bouncing, Is.GreaterThan(AnimatorEye.MostBob), "a 0.1 L bounce is too much");
+        });
+    }
+
+    /// <summary>
     /// The body faces the way it jumps (<see cref="QuerySettings.FaceJumps"/>), as the exported GLB shows (before
     /// jumps were turned, the desert demo's took off 77° and 100° off their direction and the frog's 83–159°). The
     /// ant's gap-course plan is not among these: one of its landings is still 47° off (issue 21).

@@ -42,7 +42,7 @@ public sealed class JumpAnimatorTests
             for (float t = phase.From; t <= phase.To + 1e-6f; t += 1f / 240f)
             {
                 animation.Joints(MathF.Min(t, phase.To), positions, rotations);
-                Assert.That(Vector3.Distance(limb.EffectorPosition(positions, rotations), phase.Position), Is.LessThanOrEqualTo(0.01f), $"{limb.Name} slides at t = {t:0.000} s");
+                Assert.That(Vector3.Distance(phase.Touching(limb, positions, rotations), phase.Position), Is.LessThanOrEqualTo(0.01f), $"{limb.Name} slides at t = {t:0.000} s");
             }
 
             // The contact lies on the level, and the contact face lies against it.
@@ -169,7 +169,7 @@ public sealed class JumpAnimatorTests
             for (float t = phase.From; t <= phase.To + 1e-6f; t += 1f / 240f)
             {
                 animation.Joints(MathF.Min(t, phase.To), positions, rotations);
-                Assert.That(Vector3.Distance(model.Limbs[phase.Limb].EffectorPosition(positions, rotations), phase.Position), Is.LessThanOrEqualTo(0.01f), $"{characterName} {model.Limbs[phase.Limb].Name} slides at {t:0.000} s");
+                Assert.That(Vector3.Distance(phase.Touching(model.Limbs[phase.Limb], positions, rotations), phase.Position), Is.LessThanOrEqualTo(0.01f), $"{characterName} {model.Limbs[phase.Limb].Name} slides at {t:0.000} s");
             }
         }
     }

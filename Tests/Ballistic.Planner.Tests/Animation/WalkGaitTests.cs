@@ -42,9 +42,10 @@ public sealed class WalkGaitTests
     /// Seen in the exported GLB (<see cref="AnimatorEye"/>), a walk on flat ground is upright: while it cruises the
     /// hips stay at least 0.88 L above the held feet (before issue 21's upright gait: 0.78 L on this walk; before the
     /// trunk cruised at <see cref="WalkGait.CruiseHips"/> with its step measured there: 0.85–0.86 L), rising and
-    /// falling 0.02–0.08 L with the steps, at most 2.9 steps a second at 1.5 m/s (2.8, steps of 0.59 L, from the mean
-    /// time between placements; before: 3.3–3.8, steps 0.44–0.51 L; the issue asks 2.6, which on this short walk needs
-    /// the feet to roll heel to toe), and each arm swings at least 20° against the leg on its side (it hung still).
+    /// falling 0.02–0.08 L with the steps, at most 2.6 steps a second at 1.5 m/s (before: 3.3–3.8, steps 0.44–0.51 L;
+    /// then 2.7–2.8 with the sole held flat to the end of each step: 2.4 once the trailing foot rolls onto its ball),
+    /// and each arm swings at least 20° against the leg on its side (it hung still). The trailing foot peels off: in
+    /// the clip its heel rises at least 1 cm before it swings while the ball of its foot stays on the ground.
     /// </summary>
     [TestCase("skeleton")]
     [TestCase("jumperman")]
@@ -57,11 +58,28 @@ public sealed class WalkGaitTests
         Assert.Multiple(() =>
         {
             Assert.That(look.Upright.Worst!.Value.Score * AnimatorEye.UprightHips, Is.GreaterThanOrEqualTo(0.88f), look.Upright.ToString());
-            Assert.That(look.Cadence.Worst!.Value.Score, Is.GreaterThanOrEqualTo(2.6f / 2.9f), look.Cadence.ToString());
+            Assert.That(look.Cadence.Seen, Is.Not.Empty, "the cadence measured");
+            Assert.That(look.Cadence.Passes, Is.True, look.Cadence.ToString());
             Assert.That(look.Bob.Passes, Is.True, look.Bob.ToString());
             Assert.That(look.ArmSwing.Seen, Has.Count.EqualTo(2), "both arms measured");
             Assert.That(look.ArmSwing.Passes, Is.True, look.ArmSwing.ToString());
         });
+
+        // Heel off: at the end of each phase on the ball, the sole's contact point is above the ground and the ball on it.
+        var positions = new Vector3[world.Model.Rig.Joints.Count];
+        var rotations = new Quaternion[world.Model.Rig.Joints.Count];
+        ContactPhase[] rolled = [.. animation.ContactPhases.Where(p => p.OnBall)];
+        Assert.That(rolled, Has.Length.GreaterThanOrEqualTo(2), "the trailing feet roll onto their balls");
+        foreach (ContactPhase phase in rolled)
+        {
+            animation.Joints(phase.To, positions, rotations);
+            RigLimb foot = world.Model.Limbs[phase.Limb];
+            Assert.Multiple(() =>
+            {
+                Assert.That(foot.EffectorPosition(positions, rotations).Y - phase.Position.Y, Is.GreaterThan(0.01f), $"{foot.Name}'s heel is up at {phase.To:0.00} s");
+                Assert.That(Vector3.Distance(phase.Touching(foot, positions, rotations), phase.Position), Is.LessThan(0.01f), $"{foot.Name}'s ball is down at {phase.To:0.00} s");
+            });
+        }
     }
 
     /// <summary>
@@ -122,7 +140,7 @@ public sealed class WalkGaitTests
         Assert.Multiple(() =>
         {
             Assert.That(look.Upright.Worst!.Value.Score * AnimatorEye.UprightHips, Is.GreaterThanOrEqualTo(0.88f), look.Upright.ToString());
-            Assert.That(look.Cadence.Worst!.Value.Score, Is.GreaterThanOrEqualTo(2.6f / 2.8f), look.Cadence.ToString());
+            Assert.That(look.Cadence.Passes, Is.True, look.Cadence.ToString());
         });
     }
 

@@ -4,6 +4,7 @@ using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
@@ -152,6 +153,21 @@ public sealed class PlanReportWriterTests
         Assert.That(walking.Select(p => (string?)p["limb"]), Is.EqualTo(expected.Select(p => animation.Model.Limbs[p.Limb].Name)));
         Assert.That(walking.Select(p => Vec(p["position"])), Is.EqualTo(expected.Select(p => p.Position)));
         Assert.That(walking.Select(p => (string?)p["limb"]).Distinct().Count(), Is.EqualTo(2), "both feet step");
+
+        // A foot rolled onto its ball says so, and where the ball is on the foot (every other phase marked rolled, as
+        // the gait marks a trailing foot on its ball: whether this plan's feet roll is the gait's business).
+        Assert.That(phases.Select(p => (string?)p!["on"]), Is.EqualTo(animation.ContactPhases.Select(p => p.OnBall ? "ball" : null)));
+        var rolled = new JumpAnimation(
+            animation.Model, animation.Moves, animation.Stances, animation.Frames,
+            [.. animation.ContactPhases.Select((p, i) => i % 2 == 0 ? p with { OnBall = true } : p)],
+            animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        JsonArray rolledPhases = Write(WalkPlans.Report(WalkPlans.WalkAndJump, rolled))["animation"]!["contactPhases"]!.AsArray();
+        Assert.That(rolledPhases.Select(p => (string?)p!["on"]), Is.EqualTo(rolled.ContactPhases.Select(p => p.OnBall ? "ball" : null)));
+        Assert.That(rolledPhases.Count(p => (string?)p!["on"] == "ball"), Is.GreaterThan(0));
+        foreach (RigLimb foot in animation.Model.Limbs.Where(l => l.Ball is not null))
+        {
+            Assert.That(Vec(section["limbs"]![foot.Name]!["ballOffset"]), Is.EqualTo(foot.Ball!.EffectorOffset));
+        }
     }
 
     [Test]

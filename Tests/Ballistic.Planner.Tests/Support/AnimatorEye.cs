@@ -78,7 +78,7 @@ internal sealed class AnimatorEye
     /// <summary>Least step (distance the trunk walks per foot placement) of a biped cruising, in leg lengths.</summary>
     public const float LeastStep = 0.5f;
 
-    /// <summary>Least rise and fall (peak to peak) of the hips above the held feet while a walk cruises, in leg lengths.</summary>
+    /// <summary>Least rise and fall (peak to peak) of the hips while a walk cruises, in leg lengths.</summary>
     public const float LeastBob = 0.02f;
 
     /// <summary>Most rise and fall (peak to peak) of the hips while a walk cruises, in leg lengths: a walker's pelvis bobs 4–5 cm, about 0.05 L; more reads as bouncing.</summary>
@@ -453,6 +453,29 @@ internal sealed class AnimatorEye
         return MathF.Abs(ahead.Point.Y - behind.Point.Y) <= 2f * GradeSpan * MathF.Tan(FlatGround * MathF.PI / 180f);
     }
 
+    /// <summary>
+    /// True when the contacts held at one instant are level with each other: between every two of them the rise is
+    /// under <see cref="FlatGround"/>° over their distance on the ground plane (with a centimetre for the soles).
+    /// </summary>
+    private static bool LevelFooting(IEnumerable<Vector3> contacts)
+    {
+        Vector3[] held = [.. contacts];
+        float grade = MathF.Tan(FlatGround * MathF.PI / 180f);
+        for (int i = 0; i < held.Length; i++)
+        {
+            for (int j = i + 1; j < held.Length; j++)
+            {
+                Vector3 d = held[j] - held[i];
+                if (MathF.Abs(d.Y) > (grade * MathF.Sqrt((d.X * d.X) + (d.Z * d.Z))) + 0.01f)
+                {
+                    return false;
+                }
+            }
+        }
+
+        return true;
+    }
+
     /// <summary>The trunk bone's world position at clip time <paramref name="time"/>, metres.</summary>
     public Vector3 TrunkAt(float time) => WorldAt(_trunk, time).Translation;
 
@@ -793,10 +816,10 @@ internal sealed class AnimatorEye
 
     /// <summary>
     /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
-    /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes), the median
-    /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L, rising and
-    /// falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about their mean over the second
-    /// around (5th to 95th percentile: the steps' bob, not the ground's slope); a biped (two feet) at most <see cref="MostCadence"/> foot placements
+    /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes; <see cref="LevelFooting"/>: the feet then held level with each other), the median
+    /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L; the hips (in
+    /// the world) rising and falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about the
+    /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade); a biped (two feet) at most <see cref="MostCadence"/> foot placements
     /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back).
@@ -820,6 +843,7 @@ internal sealed class AnimatorEye
 
             string name = $"walk {m}";
             var hips = new List<float>();
+            var heights = new List<float>();
             var times = new List<float>();
             var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
@@ -829,20 +853,53 @@ internal sealed class AnimatorEye
                     continue;
                 }
 
-                float sum = 0f;
-                int held = 0;
-                foreach (ContactPhase phase in animation.ContactPhases)
+                // The step's footing must be level too (the feet held now and where each foot in the air lands next):
+                // a foot put up on a rock or down a step 25 cm from the other is not a walk on level ground, whatever
+                // lies under the trunk, and the hips rightly rise or sink for it.
+                var footing = new List<(float Hips, Vector3 Contact)>();
+                var landing = new List<Vector3>();
+                foreach ((string legName, Node hip, _, _) in _legs)
                 {
-                    if (t >= phase.From && t <= phase.To && _legs.FirstOrDefault(l => l.Name == animation.Model.Limbs[phase.Limb].Name) is { Hip: not null } leg)
+                    ContactPhase? now = null;
+                    ContactPhase? next = null;
+                    foreach (ContactPhase phase in animation.ContactPhases)
                     {
-                        sum += WorldAt(leg.Hip, t).Translation.Y - phase.Position.Y;
-                        held++;
+                        if (animation.Model.Limbs[phase.Limb].Name != legName)
+                        {
+                            continue;
+                        }
+
+                        if (t >= phase.From && t <= phase.To)
+                        {
+                            now = phase;
+                        }
+                        else if (phase.From > t && (next is null || phase.From < next.Value.From))
+                        {
+                            next = phase;
+                        }
+                    }
+
+                    if (now is { } holding)
+                    {
+                        footing.Add((WorldAt(hip, t).Translation.Y - holding.Position.Y, holding.Position));
+                    }
+                    else if (next is { } lands)
+                    {
+                        landing.Add(lands.Position);
                     }
                 }
 
+                if (!LevelFooting(footing.Select(f => f.Contact).Concat(landing)))
+                {
+                    continue;
+                }
+
+                float sum = footing.Sum(f => f.Hips);
+                int held = footing.Count;
                 if (held > 0)
                 {
                     hips.Add(sum / held / Leg);
+                    heights.Add(_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) / Leg);
                     times.Add(t);
                 }
 
@@ -862,23 +919,25 @@ internal sealed class AnimatorEye
                 float[] sorted = [.. hips.Order()];
                 float median = sorted[sorted.Length / 2];
                 look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet");
-                // The bob: the hips' rise and fall about their mean over the second around each sample (the ground's and
-                // the stances' slower changes taken out), 5th to 95th percentile.
-                float[] residual = new float[hips.Count];
-                for (int k = 0; k < hips.Count; k++)
+                // The bob: the hips' height in the world (as the eye sees the trunk rise and fall, whichever foot holds
+                // it on a gentle slope) about the straight line fitted through the second around each sample (the
+                // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th percentile.
+                float[] residual = new float[heights.Count];
+                for (int k = 0; k < heights.Count; k++)
                 {
-                    float around = 0f;
-                    int count = 0;
-                    for (int j = 0; j < hips.Count; j++)
+                    (float n, float st, float sy, float stt, float sty) = (0f, 0f, 0f, 0f, 0f);
+                    for (int j = 0; j < heights.Count; j++)
                     {
-                        if (MathF.Abs(times[j] - times[k]) <= 0.5f)
+                        float dt = times[j] - times[k];
+                        if (MathF.Abs(dt) <= 0.5f)
                         {
-                            around += hips[j];
-                            count++;
+                            (n, st, sy, stt, sty) = (n + 1f, st + dt, sy + heights[j], stt + (dt * dt), sty + (dt * heights[j]));
                         }
                     }
 
-                    residual[k] = hips[k] - (around / count);
+                    float spread = (n * stt) - (st * st);
+                    float slope = spread > 1e-9f ? ((n * sty) - (st * sy)) / spread : 0f;
+                    residual[k] = heights[k] - ((sy - (slope * st)) / n);
                 }
 
                 Array.Sort(residual);
@@ -894,9 +953,10 @@ internal sealed class AnimatorEye
             }
 
             // The cadence: one over the mean time between successive foot placements on level ground (placements
-            // counted in a window miss or gain one at its ends, up to 0.4 per second over the shortest walks).
+            // counted in a window miss or gain one at its ends, up to 0.4 per second over the shortest walks; a foot
+            // rolling onto its ball is not placed anew).
             float[] placed = [.. animation.ContactPhases
-                .Where(p => p.From >= from && p.From <= to && _legs.Any(l => l.Name == animation.Model.Limbs[p.Limb].Name))
+                .Where(p => !p.OnBall && p.From >= from && p.From <= to && _legs.Any(l => l.Name == animation.Model.Limbs[p.Limb].Name))
                 .Select(p => p.From).Order()];
             float spanned = 0f;
             int intervals = 0;

@@ -336,7 +336,7 @@ internal static class PlanAudit
             for (float t = phase.From; t <= phase.To + 1e-6f; t += 1f / 240f)
             {
                 animation.Joints(MathF.Min(t, phase.To), positions, rotations);
-                float slip = Vector3.Distance(limb.EffectorPosition(positions, rotations), phase.Position);
+                float slip = Vector3.Distance(phase.Touching(limb, positions, rotations), phase.Position);
                 report.MaxStanceSlip = MathF.Max(report.MaxStanceSlip, slip);
                 if (slip > 0.01f)
                 {
@@ -359,6 +359,15 @@ internal static class PlanAudit
             {
                 float gap = ordered[i].From - ordered[i - 1].To;
                 float moved = Vector3.Distance(ordered[i].Position, ordered[i - 1].Position);
+                if (ordered[i].OnBall != ordered[i - 1].OnBall && gap <= 0.01f && model.Limbs[ordered[i].Limb].Ball is RigLimb ball
+                    && moved <= Vector3.Distance(ball.EffectorOffset, model.Limbs[ordered[i].Limb].EffectorOffset) + 0.02f)
+                {
+                    // A foot rolling heel up onto its ball (or back down): its sole held its point to the end of the
+                    // one phase and its ball holds its own from the start of the next (each checked above), a ball's
+                    // length apart: nothing moved.
+                    continue;
+                }
+
                 if (gap < 0.1f && moved > 0.02f)
                 {
                     report.MaxContactJump = MathF.Max(report.MaxContactJump, moved);
