@@ -20,6 +20,9 @@ public readonly record struct ContactPhase(int Limb, Vector3 Position, float Fro
     public Vector3 Touching(RigLimb limb, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
     {
         ArgumentNullException.ThrowIfNull(limb);
-        return (OnBall && limb.Ball is RigLimb ball ? ball : limb).EffectorPosition(positions, rotations);
+        return TouchingLimb(limb).EffectorPosition(positions, rotations);
     }
+
+    /// <summary><paramref name="limb"/> as it touches in this phase: itself, or its ball (<see cref="RigLimb.Ball"/>) when <see cref="OnBall"/>.</summary>
+    internal RigLimb TouchingLimb(RigLimb limb) => OnBall && limb.Ball is RigLimb ball ? ball : limb;
 }

@@ -126,7 +126,7 @@ internal sealed class HoldRefiner
             // Hold it there by IK (where the effector, or the ball it rolled onto, is at the two frames, its sole
             // turned as at the first).
             float[] trial = (float[])angles.Clone();
-            RigLimb touching = phase.OnBall && limb.Ball is RigLimb ball ? ball : limb;
+            RigLimb touching = phase.TouchingLimb(limb);
             bool solved = _ik.Solve(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]).Success;
             rig.Solve(root, trial, positions, rotations);
             if (!(solved && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)

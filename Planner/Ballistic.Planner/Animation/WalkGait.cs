@@ -1723,8 +1723,10 @@ internal sealed class WalkGait
             // From where the sole is down on its point to the hold's end (a walk settling on its end stance), the foot
             // is back on its sole; before that, a step with the sole on its point stays in the run it is in (at the
             // first degrees of a roll both the sole and the ball are within Touch of theirs).
+            // (Whether the sole is on its point is solved once per step, for both passes.)
+            bool[] down = rolled is null ? [] : [.. Enumerable.Range(hold.From, hold.To - hold.From + 1).Select(i => Near(l, i, hold.Point))];
             int flatFrom = hold.To + 1;
-            while (rolled is not null && flatFrom > hold.From && Near(l, flatFrom - 1, hold.Point))
+            while (rolled is not null && flatFrom > hold.From && down[flatFrom - 1 - hold.From])
             {
                 flatFrom--;
             }
@@ -1732,7 +1734,7 @@ internal sealed class WalkGait
             for (int i = hold.From; i <= hold.To && rolled is not null; i++)
             {
                 bool onBall = on;
-                if (!Near(l, i, hold.Point))
+                if (!down[i - hold.From])
                 {
                     _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
                     Vector3 at = rolled.EffectorPosition(_positions, _rotations);
