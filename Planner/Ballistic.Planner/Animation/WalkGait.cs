@@ -16,7 +16,8 @@ namespace Ballistic.Planner.Animation;
 /// pairs: a trot, a hexapod's tripods). The walk is cut into half-cycles in time; in each one group swings while the
 /// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
 /// costed in steps (<see cref="StepShare"/> of the leg, shortened to <see cref="ReachMargin"/> of what the legs reach
-/// by IK with the sole flat) plus turns of <see cref="MaxTurn"/>; a half-cycle covers at most one and lasts at least
+/// by IK with the sole flat), a turn counting as far as it moves the farthest foot under the trunk (at most as turns
+/// of <see cref="MaxTurn"/>), and at least as turns of <see cref="MaxTurn"/>; a half-cycle covers at most one and lasts at least
 /// <see cref="MinHalfCycle"/>, so no swing is shorter than <see cref="MinSwing"/>. The first lasts as long as the
 /// feet left on the start contacts can hold them (probed by IK), the last starts once the feet can hold the end
 /// contacts. A foothold is the foot's stance offset (from the start and end contact poses, centred in the range its
@@ -172,6 +173,9 @@ internal sealed class WalkGait
     /// </summary>
     private readonly float _manyFeetReach;
 
+    /// <summary>The farthest any foot stands from the trunk's centre horizontally in the contact pose (metres): how far a turn moves it per radian.</summary>
+    private readonly float _footRadius;
+
     /// <summary>Per limb: the length of its bones from root joint to effector joint (metres), in the rest pose.</summary>
     private readonly float[] _bones;
 
@@ -207,6 +211,12 @@ internal sealed class WalkGait
         }
 
         _restLeg = StanceDip.RestLegLength(model);
+
+        // How far from the trunk's centre the contact pose holds the farthest foot, horizontally: a turn of the trunk
+        // moves that foot this far per radian under it.
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        _footRadius = model.Limbs.Where(l => l.Kind == LimbKind.Foot).Select(l => l.EffectorPosition(positions, rotations))
+            .Select(p => new Vector2(p.X, p.Z).Length()).DefaultIfEmpty(0f).Max();
         _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips * _restLeg) : float.PositiveInfinity;
     }
 
@@ -1237,8 +1247,11 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed as distance in steps plus turning
-        /// in <see cref="MaxTurn"/>s (at most one half-cycle per <see cref="MinHalfCycle"/>); the first half-cycle lasts
+        /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed in steps as the distance the
+        /// farthest foot moves under it (the trunk's travel plus its turn times the foot's distance from its centre,
+        /// a turn counting no more than in <see cref="MaxTurn"/>s), and at least as its turn in <see cref="MaxTurn"/>s
+        /// (at most one half-cycle per <see cref="MinHalfCycle"/>): a biped's turn along a curve barely shortens its
+        /// steps, a long-bodied rig re-steps its feet as it turns. The first half-cycle lasts
         /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
         /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
         /// at most one, none shorter than <see cref="MinHalfCycle"/>.
@@ -1257,7 +1270,8 @@ internal sealed class WalkGait
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
                 float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples)) * Shortened(duration * (i - 0.5f) / samples);
-                cost[i] = cost[i - 1] + MathF.Min((moved / stepHere) + (turn / MaxTurn), dt / MinHalfCycle);
+                float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / MaxTurn);
+                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / MaxTurn), dt / MinHalfCycle);
                 previous = pose;
             }
 

@@ -272,6 +272,37 @@ public sealed class WalkGaitTests
     }
 
     /// <summary>A walk animated without problems, as the eye sees its exported GLB (printed).</summary>
+    /// <summary>
+    /// A person walking a gentle curve keeps the length of their steps: the skeleton on a 6.5 m arc bowing 1.5 m to the
+    /// side across the block level's open floor (its heading turning 72° in all) walks at most 2.6 steps a second, each
+    /// at least 0.5 L, seen in the exported GLB: 2.3 steps a second of 0.71 L. A turn of the trunk costs a step only as
+    /// far as it moves the feet under it (before, every 20° of turn counted as a whole step on top of the distance:
+    /// 3.2 steps a second of 0.53 L here).
+    /// </summary>
+    [Test]
+    public void AWalkAlongACurveKeepsItsStepLength()
+    {
+        WalkWorld world = WalkWorld.Create(ForeignLevels.Get("block").Level, "skeleton");
+        RoadmapNode from = world.Stance(new Vector3(-6.5f, 0f, 6f), 0, Vector3.Normalize(new Vector3(1f, 0f, -0.7f)));
+        RoadmapNode to = world.Stance(new Vector3(0f, 0f, 6f), 1, Vector3.Normalize(new Vector3(1f, 0f, 0.7f)));
+        Vector3 a = WalkWorld.Centre(from);
+        Vector3 b = WalkWorld.Centre(to);
+        var path = new List<Vector3>();
+        for (int i = 0; i <= 40; i++)
+        {
+            float t = i / 40f;
+            Vector3 p = Vector3.Lerp(a, b, t) - (Vector3.UnitZ * (1.5f * MathF.Sin(MathF.PI * t)));
+            path.Add(world.Ground(p.X, p.Z, 1f) ?? throw new AssertionException($"no ground below {p}"));
+        }
+
+        path[0] = a;
+        path[^1] = b;
+        JumpAnimation animation = world.Animator.Animate([new Walk(from, to, path, world.Scene.Character.Walking.Speed)]);
+        AnimatorEye.Look look = Seen(world, animation);
+        Assert.That(look.Cadence.Seen, Is.Not.Empty, "the walk cruises on level ground");
+        Assert.That(look.Cadence.Passes, Is.True, look.Cadence.ToString());
+    }
+
     private static AnimatorEye.Look Seen(WalkWorld world, JumpAnimation animation)
     {
         Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
