@@ -16,8 +16,8 @@ namespace Ballistic.Planner.Animation;
 /// pairs: a trot, a hexapod's tripods). The walk is cut into half-cycles in time; in each one group swings while the
 /// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
 /// costed in steps (<see cref="StepShare"/> of the leg, shortened to <see cref="ReachMargin"/> of what the legs reach
-/// by IK with the sole flat), a turn counting as far as it moves the farthest foot under the trunk (at most as turns
-/// of <see cref="MaxTurn"/>), and at least as turns of <see cref="MaxTurn"/>; a half-cycle covers at most one and lasts at least
+/// by IK with the sole flat), a turn adding what it moves the farthest foot under the trunk (never more than a step
+/// per <see cref="MaxTurn"/>), no half-cycle turning more than <see cref="MaxTurn"/>; a half-cycle covers at most one step and lasts at least
 /// <see cref="MinHalfCycle"/>, so no swing is shorter than <see cref="MinSwing"/>. The first lasts as long as the
 /// feet left on the start contacts can hold them (probed by IK), the last starts once the feet can hold the end
 /// contacts. A foothold is the foot's stance offset (from the start and end contact poses, centred in the range its
@@ -1247,11 +1247,10 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed in steps as the distance the
-        /// farthest foot moves under it (the trunk's travel plus its turn times the foot's distance from its centre,
-        /// a turn counting no more than in <see cref="MaxTurn"/>s), and at least as its turn in <see cref="MaxTurn"/>s
-        /// (at most one half-cycle per <see cref="MinHalfCycle"/>): a biped's turn along a curve barely shortens its
-        /// steps, a long-bodied rig re-steps its feet as it turns. The first half-cycle lasts
+        /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed in steps: its travel plus what
+        /// its turn moves the farthest foot under it (never more than a step per <see cref="MaxTurn"/>), and never less
+        /// than its turn in <see cref="MaxTurn"/>s (at most one half-cycle per <see cref="MinHalfCycle"/>): a biped's
+        /// turn along a curve barely shortens its steps, a long-bodied rig re-steps its feet as it turns. The first half-cycle lasts
         /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
         /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
         /// at most one, none shorter than <see cref="MinHalfCycle"/>.
