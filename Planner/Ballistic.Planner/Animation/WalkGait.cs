@@ -90,6 +90,9 @@ internal sealed class WalkGait
     /// <summary>Share of a swing at each end during which the lift keeps the swinging foot within reach of the foothold it leaves or reaches.</summary>
     private const float SwingNearFoothold = 0.1f;
 
+    /// <summary>Heel rises tried when the hips' lift allows for a trailing foot rolling onto its ball (even steps up to <see cref="SoleHold.MostRoll"/>).</summary>
+    private const int RollTries = 6;
+
     /// <summary>Most the hips rise above their lowest within a step either way in an upright walk, in rest leg lengths: a walker's pelvis bobs about 0.05 L.</summary>
     public const float MostBob = 0.06f;
 
@@ -182,6 +185,9 @@ internal sealed class WalkGait
     /// <summary>Per limb: its contact point's offset from its effector joint in the rest pose, model frame (metres).</summary>
     private readonly Vector3[] _soles;
 
+    /// <summary>Per limb: its ball's offset from its effector joint in the rest pose, model frame (metres); <c>null</c> for a limb that does not roll (<see cref="RigLimb.Ball"/>).</summary>
+    private readonly Vector3?[] _balls;
+
     /// <summary>Creates the gait of <paramref name="model"/> on <paramref name="scene"/>, using the animator's contact generator.</summary>
     public WalkGait(PlanningScene scene, CharacterModel model, ContactGenerator contacts)
     {
@@ -199,6 +205,7 @@ internal sealed class WalkGait
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
         _bones = new float[model.Limbs.Count];
         _soles = new Vector3[model.Limbs.Count];
+        _balls = new Vector3?[model.Limbs.Count];
         for (int l = 0; l < model.Limbs.Count; l++)
         {
             RigLimb limb = model.Limbs[l];
@@ -208,6 +215,7 @@ internal sealed class WalkGait
             }
 
             _soles[l] = limb.EffectorPosition(positions, rotations) - positions[limb.EffectorJoint];
+            _balls[l] = limb.Ball?.EffectorPosition(positions, rotations) - positions[limb.EffectorJoint];
         }
 
         _restLeg = StanceDip.RestLegLength(model);
@@ -369,16 +377,26 @@ internal sealed class WalkGait
     private Clip AnimateAnew(int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate)
     {
         // Upright first (cruising with the hips CruiseHips of the leg up, the step from the leg and speed, the hips
-        // lifted toward UprightHips over each foot); where the body cannot walk so on this ground, the step measured
+        // lifted toward UprightHips over each foot, as far as a trailing foot reaches rolled onto its ball, else as far
+        // as it reaches flat); where the body cannot walk so on this ground, the step measured
         // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
         // first without problems is kept, else the one with fewest.
         Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
+        bool roll = true;
+        if (best.Problems.Count > 0 && _balls.Any(b => b is not null))
+        {
+            // The hips lifted as far as a trailing foot reaches rolled onto its ball, where the rig's foot cannot roll
+            // so (its toes would go into the ground): lifted as far as the feet reach flat.
+            Clip flat = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false).Animate();
+            (best, roll) = flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
+        }
+
         // Where the upright walk met trouble, it is walked again with shorter steps there (twice at most), the rest
         // of it unchanged: one hollow or a cramped end stance does not shorten every step.
         float[] shortAt = best.Troubles;
         for (int again = 0; again < 2 && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, shortAt).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt).Animate();
             shortAt = [.. shortAt, .. clip.Troubles];
             if (clip.Problems.Count < best.Problems.Count)
             {
@@ -464,10 +482,12 @@ internal sealed class WalkGait
         private readonly bool _lift;
         private readonly bool _longSteps;
         private readonly bool _cruise;
+        private readonly bool _roll;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, float[]? shortAt = null)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null)
         {
+            _roll = roll;
             _shortAt = [.. (shortAt ?? []).Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
             _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
@@ -718,7 +738,8 @@ internal sealed class WalkGait
         /// Lifts the roots (world up) toward hips <see cref="UprightHips"/> of the rest leg above the held feet, in
         /// proportion to the walk's speed (none while it turns in place or stands): at each fine step as far as every
         /// held foot (and a swinging one near its footholds) stays within <see cref="KneeMargin"/> of its leg's length
-        /// from the hip, its sole flat; eroded then averaged over <see cref="LiftSmoothing"/>, so the lift never
+        /// from the hip, its sole flat or, for a foot behind its hip that has a ball, rolled heel up onto it
+        /// (<see cref="Rolled"/>: the hold then rolls it as <see cref="SoleHold"/> does); eroded then averaged over <see cref="LiftSmoothing"/>, so the lift never
         /// exceeds what the feet allow. The hips rise over each held foot and dip where the feet are apart: the bob.
         /// </summary>
         private void Lift(List<Segment>?[] plans)
@@ -790,10 +811,8 @@ internal sealed class WalkGait
                 {
                     Vector3 hip = _positions[_model.Limbs[l].RootJoint];
                     Vector3 ankle = point - Vector3.Transform(_gait._soles[l], _roots[i].Rotation);
-                    Vector3 d = hip - ankle;
-                    float across = (d.X * d.X) + (d.Z * d.Z);
                     float reach = KneeMargin * _gait._bones[l];
-                    lift = MathF.Min(lift, reach * reach > across ? MathF.Sqrt((reach * reach) - across) - d.Y : 0f);
+                    lift = MathF.Min(lift, MathF.Max(Reaching(hip, ankle, reach), Rolled(l, i, hip, point, ankle, reach)));
                     hips += hip.Y;
                     feet++;
                 }
@@ -874,6 +893,51 @@ internal sealed class WalkGait
                 float lift = sum / ((2 * k) + 1);
                 _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * lift), _roots[i].Rotation);
             }
+        }
+
+        /// <summary>How far (metres, world up) a hip at <paramref name="hip"/> may rise with the ankle at <paramref name="ankle"/> still within <paramref name="reach"/> of it (negative: it must sink; <see cref="float.NegativeInfinity"/> where no height brings it within reach).</summary>
+        private static float Reaching(Vector3 hip, Vector3 ankle, float reach)
+        {
+            Vector3 d = hip - ankle;
+            float across = (d.X * d.X) + (d.Z * d.Z);
+            return reach * reach > across ? MathF.Sqrt((reach * reach) - across) - d.Y : float.NegativeInfinity;
+        }
+
+        /// <summary>
+        /// How far (metres, world up) the hip may rise over foot <paramref name="l"/> held at <paramref name="point"/>
+        /// behind it at fine step <paramref name="i"/> when the foot rolls onto its ball (its heel up to
+        /// <see cref="SoleHold.MostRoll"/>, the ball where the flat sole puts it, on the ground), as a walker's trailing
+        /// foot peels off its heel; <see cref="float.NegativeInfinity"/> for a foot ahead of its hip or one that does not roll.
+        /// </summary>
+        private float Rolled(int l, int i, Vector3 hip, Vector3 point, Vector3 ankle, float reach)
+        {
+            Quaternion rotation = _roots[i].Rotation;
+            if (!_roll || _gait._balls[l] is not Vector3 offset || Vector3.Dot(ankle - hip, Forward(_roots[i])) >= 0f)
+            {
+                return float.NegativeInfinity;
+            }
+
+            Vector3 ball = ankle + Vector3.Transform(offset, rotation);
+            Vector3 toBall = ball - point;
+            toBall.Y = 0f;
+            if (toBall.LengthSquared() < 1e-8f || !_gait._onGround(ball))
+            {
+                return float.NegativeInfinity;
+            }
+
+            // The heel rises about the ball's side axis: of the two senses of turning, the one that lifts the ankle.
+            Vector3 side = Vector3.Normalize(Vector3.Cross(Vector3.UnitY, toBall));
+            Vector3 back = ankle - ball;
+            float best = float.NegativeInfinity;
+            for (int k = 1; k <= RollTries; k++)
+            {
+                float tilt = k * SoleHold.MostRoll / RollTries;
+                Vector3 a = Vector3.Transform(back, Quaternion.CreateFromAxisAngle(side, tilt));
+                Vector3 b = Vector3.Transform(back, Quaternion.CreateFromAxisAngle(side, -tilt));
+                best = MathF.Max(best, Reaching(hip, ball + (a.Y > b.Y ? a : b), reach));
+            }
+
+            return best;
         }
 
         /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>
