@@ -25,6 +25,9 @@ public sealed class ContactGenerator
     /// <summary>How far (share of the stretched limb) to the side of where the contact pose holds a limb's effector its contact is taken, the planner's estimate brought in from farther.</summary>
     private const float EstimateSideways = 0.1f;
 
+    /// <summary>A contact solve that ends farther than this (metres) from its point missed it; nearer, it stalled and is solved again for the point alone.</summary>
+    private const float StallDistance = 0.01f;
+
     /// <summary>Only the samples closest to the contact pose are tried as contacts: the comfortable ones.</summary>
     private const int DatabaseScan = 400;
 
@@ -479,7 +482,7 @@ public sealed class ContactGenerator
     private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
         IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: 1);
-        if (!result.Success)
+        if (!result.Success && !PositionFirst(root, trial, limb, point, normal, result, positions, rotations))
         {
             return false;
         }
@@ -503,6 +506,35 @@ public sealed class ContactGenerator
         }
 
         return !(crouch > 0f) || HoldsCrouched(root, trial, limb, point, normal, crouch, positions, rotations);
+    }
+
+    /// <summary>
+    /// The second try of a solve that stalled a few millimetres short with its contact face already within the IK's
+    /// normal tolerance of the surface: the damped solve weighs the last degrees of face alignment against the last
+    /// millimetre of position and can settle between them (a sprawled insect leg near full stretch on a slope). The
+    /// point is solved alone, from the same start, and kept when the face still lies within the tolerance.
+    /// </summary>
+    private bool PositionFirst(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, IkResult failed, Vector3[] positions, Quaternion[] rotations)
+    {
+        if (!(failed.PositionError < StallDistance) || !(failed.NormalError <= Ik.Settings.NormalTolerance))
+        {
+            return false;
+        }
+
+        float[] position = (float[])trial.Clone();
+        if (!Ik.Solve(root, position, limb, point, null, seed: 1).Success)
+        {
+            return false;
+        }
+
+        Model.Rig.Solve(root, position, positions, rotations);
+        if (Vector3.Dot(limb.EffectorNormal(rotations), -normal) < MathF.Cos(Ik.Settings.NormalTolerance))
+        {
+            return false;
+        }
+
+        Array.Copy(position, trial, trial.Length);
+        return true;
     }
 
     /// <summary>
