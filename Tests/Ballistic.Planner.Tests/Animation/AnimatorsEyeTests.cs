@@ -79,6 +79,29 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// Sideways is the trunk's own sideways: the ant's walk across the gap course's first platform with its whole body
+    /// rolled 15° about its forward axis (as it stands across a slope, parallel to the ground) has its feet exactly as
+    /// far sideways of their hips as walked, within 0.005 L (read along the trunk's left flattened onto the ground, the
+    /// legs' downward reach counted as sideways, the rolled walk read 0.43 L where it walked 0.30 L).
+    /// </summary>
+    [Test]
+    public void FeetAreSidewaysInTheTrunksOwnFrame()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "ant");
+        JumpAnimation animation = world.AcrossFirstPlatform();
+        PlanningScene scene = world.Scene;
+        Quaternion roll = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 15f * MathF.PI / 180f);
+        var rolled = new JumpAnimation(
+            animation.Model, animation.Moves, animation.Stances,
+            [.. animation.Frames.Select(f => f with { Root = new RootPose(f.Root.Position, f.Root.Rotation * roll) })],
+            animation.ContactPhases, animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        AnimatorEye.Look walked = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model).Measure(animation, scene);
+        AnimatorEye.Look tilted = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(rolled), rolled.Model).Measure(rolled, scene);
+        float Sideways(AnimatorEye.Look look) => AnimatorEye.SidewaysShare / look.UnderHips.Seen.Single().Score;
+        Assert.That(Sideways(tilted), Is.EqualTo(Sideways(walked)).Within(0.005f), $"{walked.UnderHips} / {tilted.UnderHips}");
+    }
+
+    /// <summary>
     /// The eye sees a body sunk into the ground: the same clip with the root 5 cm lower all along has vertices of the
     /// standing feet about 5 cm inside the level, where the clip as animated has none beyond the tolerance.
     /// </summary>

@@ -273,7 +273,6 @@ internal sealed class AnimatorEye
     /// <summary>A left foot and its right partner (their effector bones).</summary>
     private sealed record FootPair(string Left, Node LeftAnkle, string Right, Node RightAnkle);
 
-    /// <summary>A vertex of a skinned mesh: its bind position and up to four (joint, inverse bind matrix, weight).</summary>
     /// <summary>A vertex of a skinned mesh: its bind position, up to four (joint, inverse bind matrix, weight), and each one's index in the eye's list of (joint, inverse bind) pairs.</summary>
     private sealed record SkinnedVertex(Vector3 Bind, (Node Joint, Matrix4x4 InverseBind, float Weight)[] Influences, int[] Bindings);
 
@@ -488,13 +487,15 @@ internal sealed class AnimatorEye
         return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
     }
 
-    /// <summary>The trunk's left on the ground plane at <paramref name="time"/> (unit; zero when it lies flat).</summary>
+    /// <summary>
+    /// The trunk's own left at <paramref name="time"/> (unit, world), rolling with it: sideways in the trunk's frame,
+    /// so that an insect standing across a slope with its body parallel to the ground is measured the way it stands,
+    /// not with its legs' downward reach counted as sideways.
+    /// </summary>
     public Vector3 LeftAt(float time)
     {
         Quaternion now = Rotation(WorldAt(_trunk, time));
-        Vector3 l = Vector3.Transform(_restLeft, now * Quaternion.Conjugate(_restTrunk));
-        l.Y = 0f;
-        return l.LengthSquared() > 1e-8f ? Vector3.Normalize(l) : Vector3.Zero;
+        return Vector3.Normalize(Vector3.Transform(_restLeft, now * Quaternion.Conjugate(_restTrunk)));
     }
 
     /// <summary>
@@ -726,9 +727,9 @@ internal sealed class AnimatorEye
     }
 
     /// <summary>
-    /// Legs under the body, on the ground (every 1/30 s outside flights): in the trunk's frame no left foot more than
-    /// <see cref="CrossTolerance"/> right of its right partner, and each foot within <see cref="SidewaysShare"/> L
-    /// sideways of its own hip, counted from where the spec's contact pose holds it.
+    /// Legs under the body, on the ground (every 1/30 s outside flights): in the trunk's frame (along its own left,
+    /// rolling with it) no left foot more than <see cref="CrossTolerance"/> right of its right partner, and each foot
+    /// within <see cref="SidewaysShare"/> L sideways of its own hip, counted from where the spec's contact pose holds it.
     /// </summary>
     private void MeasureLegs(JumpAnimation animation, Look look)
     {
@@ -751,7 +752,7 @@ internal sealed class AnimatorEye
             }
 
             Vector3 left = LeftAt(t);
-            if (flying || left == Vector3.Zero)
+            if (flying)
             {
                 continue;
             }
