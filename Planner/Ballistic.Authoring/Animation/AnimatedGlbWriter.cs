@@ -95,45 +95,16 @@ public static class AnimatedGlbWriter
             }
         }
 
-        // Skinned mesh: a box along each bone (parent → joint) bound to the parent, and one at each effector.
-        var positions = new List<Vector3>();
-        var indices = new List<int>();
+        // Skinned mesh: the bone boxes (BoneBoxes: the body the animator checks against the level), each vertex bound to one joint.
+        BoneBoxes boxes = BoneBoxes.Of(model);
+        Vector3[] positions = [.. boxes.Positions];
         var joints = new List<byte>();
-        for (int j = 0; j < jointCount; j++)
+        foreach (int joint in boxes.Joints)
         {
-            int parent = rig.Joints[j].Parent;
-            if (parent >= 0)
-            {
-                AddBox(positions, indices, joints, bindPositions[parent], bindPositions[j], model.BoneRadii[j], bindRotations[parent], parent);
-            }
-            else
-            {
-                AddBox(positions, indices, joints, bindPositions[0] - new Vector3(0f, model.BoneRadii[0] * 0.5f, 0f), bindPositions[0] + new Vector3(0f, model.BoneRadii[0] * 0.5f, 0f), model.BoneRadii[0], bindRotations[0], 0);
-            }
+            joints.AddRange([(byte)joint, 0, 0, 0]);
         }
 
-        foreach (RigLimb limb in model.Limbs)
-        {
-            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
-            AddBox(positions, indices, joints, bindPositions[limb.EffectorJoint], tip, model.BoneRadii[limb.EffectorJoint], bindRotations[limb.EffectorJoint], limb.EffectorJoint);
-        }
-
-        // Soles flat on the contact point: the boxes of an effector bone and the bones below it (a foot, its toes) end
-        // at the plane through the limb's contact point across its contact normal, so that a held foot stands on the
-        // ground instead of sinking its box corners into it.
-        foreach (RigLimb limb in model.Limbs)
-        {
-            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
-            Vector3 normal = Vector3.Normalize(Vector3.Transform(limb.ContactNormal, bindRotations[limb.EffectorJoint]));
-            for (int v = 0; v < positions.Count; v++)
-            {
-                float beyond = Vector3.Dot(positions[v] - tip, normal);
-                if (beyond > 0f && Below(rig, joints[4 * v], limb.EffectorJoint))
-                {
-                    positions[v] -= beyond * normal;
-                }
-            }
-        }
+        int[] indices = [.. boxes.Indices];
 
         int material = writer.Add("materials", new JsonObject
         {
@@ -141,16 +112,16 @@ public static class AnimatedGlbWriter
             ["pbrMetallicRoughness"] = new JsonObject { ["baseColorFactor"] = new JsonArray(0.85f, 0.82f, 0.74f, 1f), ["metallicFactor"] = 0f, ["roughnessFactor"] = 0.7f },
             ["doubleSided"] = true,
         });
-        float[] weights = new float[positions.Count * 4];
-        for (int v = 0; v < positions.Count; v++)
+        float[] weights = new float[positions.Length * 4];
+        for (int v = 0; v < positions.Length; v++)
         {
             weights[4 * v] = 1f;
         }
 
-        int positionAccessor = writer.AddVector3([.. positions]);
+        int positionAccessor = writer.AddVector3(positions);
         int jointAccessor = writer.AddJoints([.. joints]);
         int weightAccessor = writer.AddFloats(weights, "VEC4", 4, 34962);
-        int indexAccessor = writer.AddIndices([.. indices]);
+        int indexAccessor = writer.AddIndices(indices);
         int mesh = writer.Add("meshes", new JsonObject
         {
             ["name"] = model.Name,
@@ -389,43 +360,6 @@ public static class AnimatedGlbWriter
                     }
                 }
             }
-        }
-    }
-
-    /// <summary>True when <paramref name="joint"/> is <paramref name="ancestor"/> or below it in the rig.</summary>
-    private static bool Below(Rig rig, int joint, int ancestor)
-    {
-        for (int j = joint; j >= 0; j = rig.Joints[j].Parent)
-        {
-            if (j == ancestor)
-            {
-                return true;
-            }
-        }
-
-        return false;
-    }
-
-    private static void AddBox(List<Vector3> positions, List<int> indices, List<byte> joints, Vector3 a, Vector3 b, float radius, Quaternion frame, int joint)
-    {
-        Vector3 axis = b - a;
-        float length = axis.Length();
-        Vector3 along = length > 1e-5f ? axis / length : Vector3.Transform(Vector3.UnitY, frame);
-        Vector3 side = Vector3.Cross(along, MathF.Abs(along.Y) < 0.9f ? Vector3.UnitY : Vector3.UnitX);
-        side = Vector3.Normalize(side) * radius;
-        Vector3 up = Vector3.Normalize(Vector3.Cross(side, along)) * radius;
-        int start = positions.Count;
-        for (int i = 0; i < 8; i++)
-        {
-            Vector3 p = ((i & 1) == 0 ? a : b) + ((i & 2) == 0 ? -side : side) + ((i & 4) == 0 ? -up : up);
-            positions.Add(p);
-            joints.AddRange([(byte)joint, 0, 0, 0]);
-        }
-
-        int[] faces = [0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3];
-        foreach (int f in faces)
-        {
-            indices.Add(start + f);
         }
     }
 

@@ -14,7 +14,8 @@ namespace Ballistic.Planner.Animation;
 /// <see cref="ContactClearance"/> of a held contact point a bone may touch. Helper bones of a loaded rig that are no
 /// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. A loaded rig's limbs are also checked by
 /// points of their skinned mesh (<see cref="CharacterSource.SkinProbes"/>: toes and heels reach beyond the segments
-/// between joints): none may be more than <see cref="SkinDepth"/> inside the level, when the level's triangles are
+/// between joints), and a character built in code by the corners of its bone boxes (<see cref="BoneBoxes"/>, the body
+/// its GLB draws): none may be more than <see cref="SkinDepth"/> inside the level, when the level's triangles are
 /// given. Thread-safe.
 /// </summary>
 public sealed class BodyCollision
@@ -27,6 +28,15 @@ public sealed class BodyCollision
     /// surface within a centimetre or so; a toe digging in goes deeper.
     /// </summary>
     public const float SkinDepth = 0.015f;
+
+    /// <summary>
+    /// Deepest (metres) a corner of a built character's held foot box may press into the surface it stands on: its box
+    /// held within the IK's normal tolerance tilts an edge that far down (the animator's eye allows 2 cm).
+    /// </summary>
+    public const float SoleDepth = 0.02f;
+
+    /// <summary>Farthest (metres) a held contact point lies off the plane of the surface its foot stands on.</summary>
+    private const float ContactPlane = 0.01f;
 
     /// <summary>How far (metres) around a skin point the level's surface is looked for: deeper points are not seen.</summary>
     private const float SkinReach = 0.1f;
@@ -112,10 +122,11 @@ public sealed class BodyCollision
         _otherBones = [.. others];
         _otherThickness = [.. others.Select(j => MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
 
-        // A loaded rig's skin points of each limb: its chain's bones and those below its effector (a foot's toes and
-        // heel, a hand's fingers reach beyond the segments between joints).
+        // The skin points of each limb (a loaded rig's skinned mesh, the corners of a built character's bone boxes): its
+        // chain's bones and those below its effector (a foot's toes and heel, a hand's fingers reach beyond the
+        // segments between joints; a shin's box is as wide as its radius).
         _triangles = triangles;
-        IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source?.SkinProbes ?? [];
+        IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source is CharacterSource source ? source.SkinProbes : BoneBoxes.Of(model).InJointFrames(model);
         _probes = new (int, Vector3)[model.Limbs.Count][];
         for (int l = 0; l < model.Limbs.Count; l++)
         {
@@ -172,11 +183,19 @@ public sealed class BodyCollision
             }
         }
 
-        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness) || SkinInside(_probes[l], positions, rotations);
+        return SegmentCollides(positions[limb.EffectorJoint], tip, contact, Thickness) || SkinInside(_probes[l], positions, rotations, contact is Vector3 held ? (held, limb.EffectorJoint) : null);
     }
 
-    /// <summary>True when a skin point of <paramref name="probes"/> (joint, point in its frame) lies more than <see cref="SkinDepth"/> inside the level.</summary>
-    private bool SkinInside((int Joint, Vector3 Point)[] probes, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    /// <summary>
+    /// True when a skin point of <paramref name="probes"/> (joint, point in its frame) lies more than
+    /// <see cref="SkinDepth"/> inside the level. For a character built in code, with <paramref name="sole"/> (a held
+    /// contact point and the effector joint holding it), a corner of the box of the effector bone or a bone below it
+    /// (the sole, the toes) up to <see cref="SoleDepth"/> inside the very surface the contact lies on does not count: a
+    /// foot box held within the IK's normal tolerance may press its edge that far into the ground it stands on, never
+    /// into another surface (a block beside it, a stair's riser). A loaded rig's skinned sole is held to
+    /// <see cref="SkinDepth"/> everywhere.
+    /// </summary>
+    private bool SkinInside((int Joint, Vector3 Point)[] probes, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, (Vector3 Contact, int Effector)? sole = null)
     {
         if (probes.Length == 0 || _triangles is null)
         {
@@ -199,40 +218,84 @@ public sealed class BodyCollision
             return false;
         }
 
-        foreach (Vector3 p in world)
+        // Bone by bone (the probes come grouped by joint): each bone's points against the triangles near that bone only.
+        for (int start = 0; start < probes.Length;)
         {
-            // Inside: behind the nearest triangle (at an edge shared by several, the one it is most in front of).
-            float nearest = SkinReach * SkinReach;
-            float side = 1f;
-            foreach (int t in near)
+            int end = start + 1;
+            Aabb bone = new(world[start], world[start]);
+            while (end < probes.Length && probes[end].Joint == probes[start].Joint)
             {
-                Triangle triangle = _triangles[t];
-                Vector3 closest = triangle.ClosestPoint(p);
-                float d2 = Vector3.DistanceSquared(closest, p);
-                float front = Vector3.Dot(p - closest, triangle.Normal);
-                if (d2 < nearest - 1e-9f)
+                bone = Aabb.Union(bone, new Aabb(world[end], world[end]));
+                end++;
+            }
+
+            near.Clear();
+            _bvh.TrianglesNear(bone.Inflate(SkinReach), near);
+            int joint = probes[start].Joint;
+            bool onSole = _model.Source is null && sole is (_, int effector) && (joint == effector || _model.Rig.IsAncestor(effector, joint));
+            for (int i = start; i < end && near.Count > 0; i++)
+            {
+                if (Inside(world[i], near, out int by, out float depth) && !(onSole && depth <= SoleDepth && OnPlaneOf(by, sole!.Value.Contact)))
                 {
-                    (nearest, side) = (d2, front);
-                }
-                else if (d2 <= nearest + 1e-9f)
-                {
-                    side = MathF.Max(side, front);
+                    return true;
                 }
             }
 
-            if (side < 0f && nearest > SkinDepth * SkinDepth)
-            {
-                return true;
-            }
+            start = end;
         }
 
         return false;
     }
 
     /// <summary>
+    /// True when <paramref name="p"/> lies behind the nearest of the triangles <paramref name="near"/> (at an edge shared
+    /// by several, the one it is most in front of) by more than <see cref="SkinDepth"/>; <paramref name="by"/> is that
+    /// triangle (−1 when none is within reach), <paramref name="depth"/> how far behind it (metres, 0 in front).
+    /// </summary>
+    private bool Inside(Vector3 p, List<int> near, out int by, out float depth)
+    {
+        float nearest = SkinReach * SkinReach;
+        float side = 1f;
+        by = -1;
+        foreach (int t in near)
+        {
+            Triangle triangle = _triangles![t];
+            Aabb bounds = triangle.Bounds;
+            Vector3 outside = Vector3.Max(Vector3.Max(bounds.Min - p, p - bounds.Max), Vector3.Zero);
+            if (outside.LengthSquared() > nearest + 1e-9f)
+            {
+                continue; // its box is already farther than the nearest triangle
+            }
+
+            Vector3 closest = triangle.ClosestPoint(p);
+            float d2 = Vector3.DistanceSquared(closest, p);
+            float front = Vector3.Dot(p - closest, triangle.Normal);
+            if (d2 < nearest - 1e-9f)
+            {
+                (nearest, side, by) = (d2, front, t);
+            }
+            else if (d2 <= nearest + 1e-9f && front > side)
+            {
+                (side, by) = (front, t);
+            }
+        }
+
+        depth = side < 0f ? MathF.Sqrt(nearest) : 0f;
+        return depth > SkinDepth;
+    }
+
+    /// <summary>True when triangle <paramref name="triangle"/>'s plane passes within <see cref="ContactPlane"/> of <paramref name="contact"/>: the surface a held foot stands on.</summary>
+    private bool OnPlaneOf(int triangle, Vector3 contact)
+    {
+        Triangle t = _triangles![triangle];
+        return MathF.Abs(Vector3.Dot(contact - t.A, t.Normal)) <= ContactPlane;
+    }
+
+    /// <summary>
     /// The first bone that belongs to no limb (spine, neck, head, tail…) and passes through the level, or −1: each
-    /// bone the segment from its parent joint, with its radius; and, for a loaded rig, the skin of bones that carry no
-    /// limb and hang from none (a tail's tip, a head) more than <see cref="SkinDepth"/> inside.
+    /// bone the segment from its parent joint, with its radius; and the skin (a loaded rig's mesh, a built character's
+    /// bone boxes) of bones that carry no limb and hang from none (a tail's tip, a head) more than
+    /// <see cref="SkinDepth"/> inside.
     /// </summary>
     public int OtherBoneColliding(ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
     {

@@ -56,6 +56,50 @@ public sealed class WholeBodyTests
     }
 
     /// <summary>
+    /// A character built in code is checked by the corners of the bone boxes its GLB draws: a wall a few millimetres
+    /// beside every bone of a leg but inside the leg's boxes (as wide as the bones' radii) is seen when the checker has
+    /// the level's triangles, and was not by the bones alone (the skeleton's foot box went 4.5 cm into a debris block on
+    /// the holes-and-debris level, its ankle and knee boxes 3.5-3.8 cm into a dune and a block, in plans reported exact).
+    /// </summary>
+    [TestCase("skeleton")]
+    [TestCase("jumperman")]
+    public void ABuiltCharactersBoneBoxesAreKeptOutOfTheLevel(string name)
+    {
+        CharacterModel model = CharacterPresets.Model(name);
+        Rig rig = model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        Vector3[][] boxes = BoneBoxes.Of(model).InJointFrames(model);
+        int tested = 0;
+        foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
+        {
+            // Farthest out to the limb's own side (model +X is the left) of its bones, and of its boxes' corners.
+            float side = MathF.Sign(positions[limb.RootJoint].X - positions[0].X);
+            int[] bones = [.. Enumerable.Range(0, rig.Joints.Count).Where(j => (limb.Chain.Contains(j) && j != limb.RootJoint) || rig.IsAncestor(limb.EffectorJoint, j))];
+            float boneOut = bones.Max(j => MathF.Max(side * positions[j].X, side * positions[rig.Joints[j].Parent].X));
+            boneOut = MathF.Max(boneOut, side * limb.EffectorPosition(positions, rotations).X);
+            float boxOut = limb.Chain.Concat(bones).Distinct().SelectMany(j => boxes[j].Select(p => side * (positions[j] + Vector3.Transform(p, rotations[j])).X)).Max();
+            if (boxOut < boneOut + 0.03f)
+            {
+                continue; // this leg's boxes do not reach far enough beyond its bones to tell
+            }
+
+            float x = side * (boneOut + 0.005f);
+            Level wall = new LevelBuilder("wall").AddBox(new Vector3(MathF.Min(x, x + side), -5f, -5f), new Vector3(MathF.Max(x, x + side), 5f, 5f)).Build();
+            var bvh = new TriangleBvh(wall.Triangles);
+            Assert.Multiple(() =>
+            {
+                Assert.That(new BodyCollision(bvh, model).LimbCollides(limb, positions, rotations, null), Is.False, $"{limb.Name}'s bones are clear of the wall");
+                Assert.That(new BodyCollision(bvh, model, wall.Triangles).LimbCollides(limb, positions, rotations, null), Is.True, $"{limb.Name}'s boxes reach {(boxOut - boneOut) * 100f:0.0} cm beyond its bones, into the wall");
+            });
+            tested++;
+        }
+
+        Assert.That(tested, Is.GreaterThan(0), "a leg whose boxes reach beyond its bones");
+    }
+
+    /// <summary>
     /// A loaded rig's skinned feet reach beyond the segments between their joints (toes, heels): a wall just clear of
     /// every bone of a foot's limb but inside the foot's skin is seen when the checker has the level's triangles, and
     /// was not by the bones alone (the armature human's toes went 8.2 cm into a stair).
