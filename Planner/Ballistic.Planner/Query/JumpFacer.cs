@@ -22,8 +22,8 @@ namespace Ballistic.Planner.Query;
 /// character that does not walk, a request that only jumps, or a walker on ground too steep to walk, by a hop in
 /// place, steered like any jump. When the jump cannot be steered from the turned takeoff (or to the turned landing),
 /// the next stance is placed and tried: facing within <see cref="Yaws"/>, then within <see cref="WideYaws"/>, where
-/// the old one stands, then <see cref="HopShift"/> along the jump, the start or goal placed again at the request's
-/// point first; a turned end is dropped (kept as searched) only when none steers.
+/// the old one stands, then one and two <see cref="HopShift"/> along the jump and back, the start or goal placed again
+/// at the request's point first; a turned end is dropped (kept as searched) only when none steers.
 /// </summary>
 /// <remarks>
 /// A jump is faced only when every move linking it to the path passes its checks; otherwise it is kept as it was
@@ -347,16 +347,18 @@ internal sealed class JumpFacer
 
     /// <summary>
     /// Stances facing <paramref name="facing"/> (within <see cref="Yaws"/>, then within <see cref="WideYaws"/>)
-    /// placed where <paramref name="old"/> stands, or <see cref="HopShift"/> from there along the facing (times
-    /// <paramref name="side"/>: ahead for a takeoff, behind for a landing) for a hop to turn by, each with the moves
-    /// <paramref name="link"/> finds for it: walkers try the spot first, others the shifted one; stances
-    /// <paramref name="link"/> refuses (<c>null</c>) are skipped. At most four are placed.
+    /// placed where <paramref name="old"/> stands, or one or two <see cref="HopShift"/> from there along the facing
+    /// (times <paramref name="side"/>: ahead for a takeoff, behind for a landing), then as far the other way, for a hop
+    /// to turn by, each with the moves <paramref name="link"/> finds for it: walkers try the spot first, others one
+    /// shift ahead; stances <paramref name="link"/> refuses (<c>null</c>) are skipped. On a slope a hop ahead downhill
+    /// may land outside its cone and one on the spot has no parabola, where a hop back up the slope passes. At most
+    /// ten are placed, lazily: the later spots only when no earlier stance links.
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Placements(RoadmapNode old, float facing, float side, Func<RoadmapNode, List<Move>?> link)
     {
         Vector3 centre = Roadmap.CentreOf(old);
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
-        foreach (Vector3 point in _hops ? [centre + ahead, centre] : (Vector3[])[centre, centre + ahead])
+        foreach (Vector3 point in _hops ? [centre + ahead, centre + (2f * ahead), centre, centre - ahead, centre - (2f * ahead)] : (Vector3[])[centre, centre + ahead, centre + (2f * ahead), centre - ahead, centre - (2f * ahead)])
         {
             foreach (float[] yaws in (float[][])[Yaws, WideYaws])
             {

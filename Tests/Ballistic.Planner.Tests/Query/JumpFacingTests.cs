@@ -1,9 +1,12 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
@@ -131,6 +134,44 @@ public sealed class JumpFacingTests
             Assert.That(far.SelectMany(j => new[] { (j.From, j), (j.To, j) }).Where(s => s.Item1.Id >= n + 2).Select(s => Off(s.Item1, s.j)), Has.Some.InRange(12f, 30f), "a turned stance stands further round");
         });
         AuditReport audit = PlanAudit.Check("desert turned further", c.Scene, c.From, c.To, faced, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    /// <summary>
+    /// On the curved level's slopes the dog cannot walk, so it turns by hops; where a hop in place ahead down the slope
+    /// lands outside its cone and one on the spot has no parabola, it hops back up the slope (or further ahead) to turn:
+    /// every jump of a metre or more leaves and lands facing its way (before: the last jump left 69° off its way, no
+    /// takeoff facing it linked), and the independent checker passes the path.
+    /// </summary>
+    [Test]
+    public void ADogThatCannotHopAheadOnASlopeTurnsByAHopBehind()
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-dog-{Guid.NewGuid():N}");
+        Sweep.Setup setup;
+        try
+        {
+            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("dog").Load(folder);
+            setup = Sweep.Prepare("curved", level, model, reduced);
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+
+        (Vector3 from, Vector3 to) = requests[1];
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        (float off, float on) = Worst(plan.Result);
+        TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {plan.Result.Jumps.Count} jumps, {plan.Result.Jumps.Count(j => !Far(j))} of them hops");
+        Assert.Multiple(() =>
+        {
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(plan.Result.Walks, Is.Empty, "the dog does not walk these slopes: it turns by hops");
+        });
+        AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
+        Assert.That(plan.Animation, Is.Not.Null, "the path animates");
         Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
     }
 
