@@ -79,6 +79,35 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// L is the hip's height above the spec's contact point, not above the ankle plus the contact offset's length: the
+    /// tailed rig's paws touch the ground ahead of their ankles, so its front hips stand 30.0 cm above their contact
+    /// points (before, L read 31.7 cm, and its walk's hips, crouches and landings all read about 6 % low; a dip the
+    /// gait makes of 0.15 of the leg read 0.142 L). The rest pose's hip and ankle still come from the file.
+    /// </summary>
+    [Test]
+    public void ALegIsMeasuredToItsContactPointNotItsAnklePlusTheOffset()
+    {
+        WalkWorld world = WalkWorld.Create(ForeignLevels.Get("block").Level, "tailed");
+        RoadmapNode from = world.Stance(new Vector3(-6.5f, 0f, 6f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(new Vector3(-4.5f, 0f, 6f), 1, Vector3.UnitX);
+        JumpAnimation animation = world.Animator.Animate([world.Walk(from, to)]);
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        CharacterModel model = world.Model;
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, rotations);
+        RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
+        float standing = feet.Max(l => positions[l.RootJoint].Y - l.EffectorPosition(positions, rotations).Y);
+        float anklePlusOffset = feet.Max(l => positions[l.RootJoint].Y - positions[l.EffectorJoint].Y + l.EffectorOffset.Length());
+        TestContext.Out.WriteLine($"L {eye.Leg:0.000} m; hip above the contact point {standing:0.000} m, above the ankle plus the offset's length {anklePlusOffset:0.000} m");
+        Assert.Multiple(() =>
+        {
+            Assert.That(anklePlusOffset - standing, Is.GreaterThan(0.01f), "the tailed rig's contact points lie ahead of its ankles (else this test shows nothing)");
+            Assert.That(eye.Leg, Is.EqualTo(standing).Within(0.002f));
+        });
+    }
+
+    /// <summary>
     /// Sideways is the trunk's own sideways: the ant's walk across the gap course's first platform with its whole body
     /// rolled 15° about its forward axis (as it stands across a slope, parallel to the ground) has its feet exactly as
     /// far sideways of their hips as walked, within 0.005 L (read along the trunk's left flattened onto the ground, the

@@ -18,8 +18,9 @@ namespace Ballistic.Planner.Tests.Support;
 /// parses the file, and every bone's world transform at a time comes from the node hierarchy, the rest transforms and
 /// the clip's channels. From the plan it takes only the timeline (when each move starts and ends, where each jump
 /// goes) and the spec's inputs (which bones are a limb's hip and ankle, the rig's up and forward axes); never the
-/// animator's own poses. L is the leg length: the hip's height above the sole standing, in the rest pose (ankle plus
-/// the sole offset) or, where it stands higher (a rig modelled with its legs spread flat), the spec's contact pose; heading is the trunk's forward on the ground plane. Skinned vertices are placed by linear blend skinning,
+/// animator's own poses. L is the leg length: the longest leg's hip height above its sole standing, in the rest pose
+/// (the ankle plus the height of the spec's contact point below it) or, where it stands higher (a rig modelled with
+/// its legs spread flat), the spec's contact pose; heading is the trunk's forward on the ground plane. Skinned vertices are placed by linear blend skinning,
 /// as a renderer places them.
 /// </summary>
 internal sealed class AnimatorEye
@@ -69,7 +70,7 @@ internal sealed class AnimatorEye
     /// <summary>Interval (seconds) at which the whole body's vertices are checked against the level.</summary>
     public const float InsideStep = 1f / 15f;
 
-    /// <summary>Least median height of the hips above the held feet while a walk cruises on ground under 10°, in leg lengths.</summary>
+    /// <summary>Least median height of the hips above the held feet while a walk cruises on ground under 10°, in leg lengths (each hip in its own leg's).</summary>
     public const float UprightHips = 0.88f;
 
     /// <summary>Most foot placements per second of a biped cruising at its walk speed.</summary>
@@ -116,8 +117,12 @@ internal sealed class AnimatorEye
     private readonly (string Name, Node Effector, float Offset)[] _effectors;
     private readonly (string Name, Node Shoulder, Node Wrist, int Leg)[] _arms;
 
-    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, (Node Joint, Matrix4x4 InverseBind)[] bindings, string[] owners, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors, (string, Node, Node, int)[] arms)
+    /// <summary>Per foot (by limb name), its own leg's length, metres (L is the longest).</summary>
+    private readonly Dictionary<string, float> _legOf;
+
+    private AnimatorEye(GltfAnimation clip, Node trunk, Vector3 restForward, float leg, SkinnedVertex[] vertices, (Node Joint, Matrix4x4 InverseBind)[] bindings, string[] owners, Dictionary<string, int[]> feet, Node[][] limbJoints, Vector3 restLeft, FootPair[] pairs, (string, Node, Node, float)[] legs, (string, Node, float)[] effectors, (string, Node, Node, int)[] arms, Dictionary<string, float> legOf)
     {
+        _legOf = legOf;
         _arms = arms;
         _owners = owners;
         _bindings = bindings;
@@ -150,19 +155,29 @@ internal sealed class AnimatorEye
         Vector3 up = Axis(model.Source?.UpAxis ?? "+Y");
         Vector3 forward = Axis(model.Source?.ForwardAxis ?? "+Z");
 
-        // Leg length: the greatest height of a foot's hip above its ankle along the rig's up, plus the sole, standing:
-        // in the rest pose, or in the spec's contact pose where that stands higher (a rig modelled with its legs
-        // spread flat, an insect's, stands only in its contact pose). The contact pose also says where it holds each
-        // foot sideways of its hip (model frame: +X is the left).
+        // Leg length: the greatest height of a foot's hip above its sole along the rig's up, standing: in the rest
+        // pose (the hip above the ankle read from the file, plus how far the spec's contact point lies below the
+        // ankle at rest: a paw's contact point ahead of its ankle lies less than its offset's length below it), or in
+        // the spec's contact pose where that stands higher (a rig modelled with its legs spread flat, an insect's,
+        // stands only in its contact pose). L is the longest leg's; each leg's own is kept for the hips' height
+        // above their feet (a dog's hind legs are shorter than its front ones). The contact pose also says where it
+        // holds each foot sideways of its hip (model frame: +X is the left).
         var contact = new Vector3[rig.Joints.Count];
-        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, new Quaternion[rig.Joints.Count]);
+        var contactTurns = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, contact, contactTurns);
+        var rest = new Vector3[rig.Joints.Count];
+        var restTurns = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), rig.Neutral(), rest, restTurns);
         float leg = 0f;
+        var legOf = new Dictionary<string, float>(StringComparer.Ordinal);
         foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
             Vector3 hip = Named(rig.Joints[limb.RootJoint].Name).WorldMatrix.Translation;
             Vector3 ankle = Named(rig.Joints[limb.EffectorJoint].Name).WorldMatrix.Translation;
-            float sole = limb.EffectorOffset.Length();
-            leg = MathF.Max(leg, MathF.Max(Vector3.Dot(hip - ankle, up), contact[limb.RootJoint].Y - contact[limb.EffectorJoint].Y) + sole);
+            float sole = rest[limb.EffectorJoint].Y - limb.EffectorPosition(rest, restTurns).Y;
+            float own = MathF.Max(Vector3.Dot(hip - ankle, up) + sole, contact[limb.RootJoint].Y - limb.EffectorPosition(contact, contactTurns).Y);
+            legOf[limb.Name] = own;
+            leg = MathF.Max(leg, own);
         }
 
         // The skinned vertices (linear blend skinning: joint world matrices times inverse bind matrices), and for each
@@ -267,7 +282,7 @@ internal sealed class AnimatorEye
             arms.Add((limb.Name, shoulder, Named(rig.Joints[limb.EffectorJoint].Name), partner));
         }
 
-        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors, [.. arms]);
+        return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors, [.. arms], legOf);
     }
 
     /// <summary>A left foot and its right partner (their effector bones).</summary>
@@ -858,6 +873,7 @@ internal sealed class AnimatorEye
                 // a foot put up on a rock or down a step 25 cm from the other is not a walk on level ground, whatever
                 // lies under the trunk, and the hips rightly rise or sink for it.
                 var footing = new List<(float Hips, Vector3 Contact)>();
+                float ownShare = 0f;
                 var landing = new List<Vector3>();
                 foreach ((string legName, Node hip, _, _) in _legs)
                 {
@@ -882,7 +898,9 @@ internal sealed class AnimatorEye
 
                     if (now is { } holding)
                     {
+                        // In the leg's own lengths: a shorter hind leg's hip stands as high over its foot as it reaches.
                         footing.Add((WorldAt(hip, t).Translation.Y - holding.Position.Y, holding.Position));
+                        ownShare += (WorldAt(hip, t).Translation.Y - holding.Position.Y) / (_legOf.TryGetValue(legName, out float own) && own > 0f ? own : Leg);
                     }
                     else if (next is { } lands)
                     {
@@ -895,11 +913,10 @@ internal sealed class AnimatorEye
                     continue;
                 }
 
-                float sum = footing.Sum(f => f.Hips);
                 int held = footing.Count;
                 if (held > 0)
                 {
-                    hips.Add(sum / held / Leg);
+                    hips.Add(ownShare / held);
                     heights.Add(_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) / Leg);
                     times.Add(t);
                 }
@@ -919,7 +936,7 @@ internal sealed class AnimatorEye
             {
                 float[] sorted = [.. hips.Order()];
                 float median = sorted[sorted.Length / 2];
-                look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet");
+                look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet (each hip in its own leg's length)");
                 // The bob: the hips' height in the world (as the eye sees the trunk rise and fall, whichever foot holds
                 // it on a gentle slope) about the straight line fitted through the second around each sample (the
                 // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th percentile.
