@@ -172,12 +172,15 @@ internal sealed class WalkGait
 
     /// <summary>
     /// With more than two feet, the half range (metres) each foot holds on level ground with the hips
-    /// <see cref="ManyFeetHips"/> of the leg up (<see cref="FlatReach"/>); infinite for a biped.
+    /// <see cref="ManyFeetHips"/> of the leg up, each leg's own (<see cref="FlatReach"/>); infinite for a biped.
     /// </summary>
     private readonly float _manyFeetReach;
 
     /// <summary>The farthest any foot stands from the trunk's centre horizontally in the contact pose (metres): how far a turn moves it per radian.</summary>
     private readonly float _footRadius;
+
+    /// <summary>Per limb: where the contact pose holds its effector's contact point in the trunk's frame (metres, +X the trunk's left, +Z its forward): where a cruising foot is set down.</summary>
+    private readonly Vector3[] _poseFeet;
 
     /// <summary>Per limb: the length of its bones from root joint to effector joint (metres), in the rest pose.</summary>
     private readonly float[] _bones;
@@ -225,17 +228,21 @@ internal sealed class WalkGait
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
         _footRadius = model.Limbs.Where(l => l.Kind == LimbKind.Foot).Select(l => l.EffectorPosition(positions, rotations))
             .Select(p => new Vector2(p.X, p.Z).Length()).DefaultIfEmpty(0f).Max();
-        _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips * _restLeg) : float.PositiveInfinity;
+        _poseFeet = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))];
+        _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips) : float.PositiveInfinity;
     }
 
     /// <summary>
     /// The least half range (metres) over the feet that the trunk can move along its forward axis on level ground
-    /// with its hips <paramref name="hips"/> metres above its feet, while each foot holds where the contact pose puts
-    /// it, sole flat (IK only: the rig's own reach, not a level's); 0 when a foot cannot stand there.
+    /// with the trunk lifted, level, until some foot's hip stands <paramref name="share"/> of that foot's own leg
+    /// (<see cref="StanceDip.LegLengths"/>) above it, while each foot holds where the contact pose puts it, sole flat
+    /// (IK only: the rig's own reach, not a level's); 0 when a foot cannot stand there. Each leg's own length, not
+    /// the longest: a rig whose hind legs are shorter than its front ones (a dog, a lizard) lifts its trunk as far as
+    /// the hind legs allow, and the front ones then stand less straight.
     /// </summary>
-    private float FlatReach(float hips)
+    private float FlatReach(float share)
     {
-        if (!(hips > 0f))
+        if (!(share > 0f))
         {
             return 0f;
         }
@@ -245,11 +252,22 @@ internal sealed class WalkGait
         var rotations = new Quaternion[rig.Joints.Count];
         float increment = _restLeg / ProbeSteps;
         float reach = float.PositiveInfinity;
+        float[] legs = StanceDip.LegLengths(_model);
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), _model.ContactPose, positions, rotations);
+        float lift = float.PositiveInfinity;
+        for (int l = 0; l < _model.Limbs.Count; l++)
+        {
+            RigLimb limb = _model.Limbs[l];
+            if (limb.Kind == LimbKind.Foot)
+            {
+                lift = MathF.Min(lift, (share * legs[l]) - (positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y));
+            }
+        }
+
         foreach (RigLimb limb in _model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
             rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), _model.ContactPose, positions, rotations);
             Vector3 foot = limb.EffectorPosition(positions, rotations);
-            float lift = hips - (positions[limb.RootJoint].Y - foot.Y);
             float[] reached = new float[2];
             for (int side = 0; side < 2; side++)
             {
@@ -258,7 +276,15 @@ internal sealed class WalkGait
                 {
                     var root = new RootPose(new Vector3(0f, lift, (side == 0 ? -1f : 1f) * k * increment), Quaternion.Identity);
                     float[] trial = (float[])q.Clone();
-                    if (!_sole.Hold(root, trial, limb, foot, Vector3.UnitY))
+                    bool held = _sole.Hold(root, trial, limb, foot, Vector3.UnitY);
+                    if (!held && k == 0)
+                    {
+                        // A leg standing straight in its contact pose gives the IK no bend to follow: start from the flexion pose.
+                        trial = (float[])_model.FlexionPose.Clone();
+                        held = _sole.Hold(root, trial, limb, foot, Vector3.UnitY);
+                    }
+
+                    if (!held)
                     {
                         if (k == 0)
                         {
@@ -547,7 +573,21 @@ internal sealed class WalkGait
             Footing[] endForward = Footings(_end, Forward(_end.Root), _cruiseEnd, raisedEnd);
             _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
             _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
-            (_startLocalLow, _endLocalLow) = (_startLocal, _endLocal);
+            (_startLocalLow, _endLocalLow) = ((Vector3[])_startLocal.Clone(), (Vector3[])_endLocal.Clone());
+            if (_lift && _longSteps && _cruise && float.IsFinite(_gait._manyFeetReach))
+            {
+                // Upright, more than two feet: at full speed each foot is set down where the contact pose holds it
+                // under the trunk, not where the stances at either end happen to place it: a foot planted out to the
+                // side or far ahead of a stance would hold the hips down all the way (its range is FlatReach's).
+                for (int l = 0; l < _limbs; l++)
+                {
+                    if (IsFoot(l))
+                    {
+                        _startLocal[l] = _startLocal[l] with { X = _gait._poseFeet[l].X, Z = _gait._poseFeet[l].Z };
+                        _endLocal[l] = _endLocal[l] with { X = _gait._poseFeet[l].X, Z = _gait._poseFeet[l].Z };
+                    }
+                }
+            }
 
             // The step: StepShare of the leg; long enough that a swing at full speed lasts MinSwing; short enough that a
             // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays within
@@ -1671,7 +1711,24 @@ internal sealed class WalkGait
 
                 if (!_gait.Hold(_roots[i], trial, limb, point, normal))
                 {
-                    return null;
+                    // A foothold far from where the stances at either end hold this foot (a cruising foot set down
+                    // under the trunk, a stance's foot planted wide) may not be found from their angles: from the
+                    // flexion pose's (a bent leg the IK can straighten toward it), at the first check only.
+                    if (i != steps[0])
+                    {
+                        return null;
+                    }
+
+                    trial = (float[])_angles[i].Clone();
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        trial[d] = _model.FlexionPose[d];
+                    }
+
+                    if (!_gait.Hold(_roots[i], trial, limb, point, normal))
+                    {
+                        return null;
+                    }
                 }
 
                 _rig.Solve(_roots[i], trial, _positions, _rotations);
