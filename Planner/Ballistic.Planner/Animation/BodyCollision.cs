@@ -126,7 +126,7 @@ public sealed class BodyCollision
         // chain's bones and those below its effector (a foot's toes and heel, a hand's fingers reach beyond the
         // segments between joints; a shin's box is as wide as its radius).
         _triangles = triangles;
-        IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source is CharacterSource source ? source.SkinProbes : BoneBoxes.Of(model).InJointFrames(model);
+        IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source is CharacterSource source ? source.SkinProbes : BoneBoxes.Of(model).InJointFrames();
         _probes = new (int, Vector3)[model.Limbs.Count][];
         for (int l = 0; l < model.Limbs.Count; l++)
         {

@@ -266,7 +266,6 @@ internal sealed class WalkGait
 
         foreach (RigLimb limb in _model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
-            rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), _model.ContactPose, positions, rotations);
             Vector3 foot = limb.EffectorPosition(positions, rotations);
             float[] reached = new float[2];
             for (int side = 0; side < 2; side++)
@@ -1701,34 +1700,28 @@ internal sealed class WalkGait
             RigLimb limb = _model.Limbs[l];
             float[] q = Stance(Time(steps[0]) / _walk.Duration);
             float[]? seed = null;
-            foreach (int i in steps)
+            float[] Seeded(int i, float[] chain)
             {
                 float[] trial = (float[])_angles[i].Clone();
                 foreach (int d in limb.ChainDofs)
                 {
-                    trial[d] = q[d];
+                    trial[d] = chain[d];
                 }
 
-                if (!_gait.Hold(_roots[i], trial, limb, point, normal))
+                return trial;
+            }
+
+            foreach (int i in steps)
+            {
+                float[] trial = Seeded(i, q);
+
+                // A foothold far from where the stances at either end hold this foot (a cruising foot set down under
+                // the trunk, a stance's foot planted wide) may not be found from their angles: from the flexion
+                // pose's (a bent leg the IK can straighten toward it), at the first check only.
+                if (!_gait.Hold(_roots[i], trial, limb, point, normal)
+                    && (i != steps[0] || !_gait.Hold(_roots[i], trial = Seeded(i, _model.FlexionPose), limb, point, normal)))
                 {
-                    // A foothold far from where the stances at either end hold this foot (a cruising foot set down
-                    // under the trunk, a stance's foot planted wide) may not be found from their angles: from the
-                    // flexion pose's (a bent leg the IK can straighten toward it), at the first check only.
-                    if (i != steps[0])
-                    {
-                        return null;
-                    }
-
-                    trial = (float[])_angles[i].Clone();
-                    foreach (int d in limb.ChainDofs)
-                    {
-                        trial[d] = _model.FlexionPose[d];
-                    }
-
-                    if (!_gait.Hold(_roots[i], trial, limb, point, normal))
-                    {
-                        return null;
-                    }
+                    return null;
                 }
 
                 _rig.Solve(_roots[i], trial, _positions, _rotations);

@@ -18,11 +18,15 @@ public sealed class BoneBoxes
     private readonly int[] _joints;
     private readonly int[] _indices;
 
-    private BoneBoxes(Vector3[] positions, int[] joints, int[] indices)
+    /// <summary>The joints' positions and rotations at rest, model frame, from which the boxes were built.</summary>
+    private readonly (Vector3[] Positions, Quaternion[] Rotations) _rest;
+
+    private BoneBoxes(Vector3[] positions, int[] joints, int[] indices, (Vector3[], Quaternion[]) rest)
     {
         _positions = positions;
         _joints = joints;
         _indices = indices;
+        _rest = rest;
     }
 
     /// <summary>Each vertex in the rest pose, model frame, metres (eight per box).</summary>
@@ -59,15 +63,17 @@ public sealed class BoneBoxes
             }
         }
 
-        foreach (RigLimb limb in model.Limbs)
+        Vector3[] tips = [.. model.Limbs.Select(l => l.EffectorPosition(bindPositions, bindRotations))];
+        for (int l = 0; l < model.Limbs.Count; l++)
         {
-            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
-            AddBox(positions, indices, joints, bindPositions[limb.EffectorJoint], tip, model.BoneRadii[limb.EffectorJoint], bindRotations[limb.EffectorJoint], limb.EffectorJoint);
+            int effector = model.Limbs[l].EffectorJoint;
+            AddBox(positions, indices, joints, bindPositions[effector], tips[l], model.BoneRadii[effector], bindRotations[effector], effector);
         }
 
-        foreach (RigLimb limb in model.Limbs)
+        for (int l = 0; l < model.Limbs.Count; l++)
         {
-            Vector3 tip = bindPositions[limb.EffectorJoint] + Vector3.Transform(limb.EffectorOffset, bindRotations[limb.EffectorJoint]);
+            RigLimb limb = model.Limbs[l];
+            Vector3 tip = tips[l];
             Vector3 normal = Vector3.Normalize(Vector3.Transform(limb.ContactNormal, bindRotations[limb.EffectorJoint]));
             for (int v = 0; v < positions.Count; v++)
             {
@@ -79,20 +85,17 @@ public sealed class BoneBoxes
             }
         }
 
-        return new BoneBoxes([.. positions], [.. joints], [.. indices]);
+        return new BoneBoxes([.. positions], [.. joints], [.. indices], (bindPositions, bindRotations));
     }
 
     /// <summary>
     /// The vertices skinned to each joint, in that joint's own frame at rest (metres): where the corners of a posed
     /// body are, given the joints' world positions and rotations.
     /// </summary>
-    internal Vector3[][] InJointFrames(CharacterModel model)
+    internal Vector3[][] InJointFrames()
     {
-        Rig rig = model.Rig;
-        var bindPositions = new Vector3[rig.Joints.Count];
-        var bindRotations = new Quaternion[rig.Joints.Count];
-        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), new float[rig.DofCount], bindPositions, bindRotations);
-        var points = new List<Vector3>[rig.Joints.Count];
+        (Vector3[] bindPositions, Quaternion[] bindRotations) = _rest;
+        var points = new List<Vector3>[bindPositions.Length];
         for (int j = 0; j < points.Length; j++)
         {
             points[j] = [];

@@ -70,7 +70,7 @@ public sealed class WholeBodyTests
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        Vector3[][] boxes = BoneBoxes.Of(model).InJointFrames(model);
+        Vector3[][] boxes = BoneBoxes.Of(model).InJointFrames();
         int tested = 0;
         foreach (RigLimb limb in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {

@@ -872,7 +872,7 @@ internal sealed class AnimatorEye
                 // The step's footing must be level too (the feet held now and where each foot in the air lands next):
                 // a foot put up on a rock or down a step 25 cm from the other is not a walk on level ground, whatever
                 // lies under the trunk, and the hips rightly rise or sink for it.
-                var footing = new List<(float Hips, Vector3 Contact)>();
+                var footing = new List<Vector3>();
                 float ownShare = 0f;
                 var landing = new List<Vector3>();
                 foreach ((string legName, Node hip, _, _) in _legs)
@@ -899,7 +899,7 @@ internal sealed class AnimatorEye
                     if (now is { } holding)
                     {
                         // In the leg's own lengths: a shorter hind leg's hip stands as high over its foot as it reaches.
-                        footing.Add((WorldAt(hip, t).Translation.Y - holding.Position.Y, holding.Position));
+                        footing.Add(holding.Position);
                         ownShare += (WorldAt(hip, t).Translation.Y - holding.Position.Y) / (_legOf.TryGetValue(legName, out float own) && own > 0f ? own : Leg);
                     }
                     else if (next is { } lands)
@@ -908,7 +908,7 @@ internal sealed class AnimatorEye
                     }
                 }
 
-                if (!LevelFooting(footing.Select(f => f.Contact).Concat(landing)))
+                if (!LevelFooting(footing.Concat(landing)))
                 {
                     continue;
                 }
