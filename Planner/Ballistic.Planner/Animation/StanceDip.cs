@@ -63,32 +63,7 @@ internal sealed class StanceDip
     /// rest (a rig modelled standing) or in the spec's contact pose, whichever is higher (a rig modelled with its legs
     /// spread flat, an insect's, stands only in its contact pose); 0 without feet.
     /// </summary>
-    public static float RestLegLength(CharacterModel model) => LegLengths(model).DefaultIfEmpty(0f).Max();
-
-    /// <summary>
-    /// Per limb, its standing leg (metres) as <see cref="RestLegLength"/> measures it: a foot's root joint's greatest
-    /// height above its contact point at rest or in the contact pose; 0 for a limb that is not a foot.
-    /// </summary>
-    public static float[] LegLengths(CharacterModel model)
-    {
-        var positions = new Vector3[model.Rig.Joints.Count];
-        var rotations = new Quaternion[model.Rig.Joints.Count];
-        float[] legs = new float[model.Limbs.Count];
-        foreach (float[] pose in new[] { model.Rig.Neutral(), model.ContactPose })
-        {
-            model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
-            for (int l = 0; l < model.Limbs.Count; l++)
-            {
-                RigLimb limb = model.Limbs[l];
-                if (limb.Kind == LimbKind.Foot)
-                {
-                    legs[l] = MathF.Max(legs[l], positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
-                }
-            }
-        }
-
-        return legs;
-    }
+    public static float RestLegLength(CharacterModel model) => model.LegLengths().DefaultIfEmpty(0f).Max();
 
     /// <summary>
     /// How the body sinks from a contact pose at <paramref name="Root"/>, moving along −<paramref name="Up"/> and

@@ -17,7 +17,8 @@ namespace Ballistic.Planner.Animation;
 /// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
 /// costed in steps (<see cref="StepShare"/> of the leg, shortened to <see cref="ReachMargin"/> of what the legs reach
 /// by IK with the sole flat), a turn adding what it moves the farthest foot under the trunk (never more than a step
-/// per <see cref="MaxTurn"/>), no half-cycle turning more than <see cref="MaxTurn"/>; a half-cycle covers at most one step and lasts at least
+/// per <see cref="MaxTurn"/>), no half-cycle turning more than <see cref="MaxTurn"/> (less for a rig whose feet stand
+/// far ahead of or behind its trunk: <see cref="TurnDrift"/>); a half-cycle covers at most one step and lasts at least
 /// <see cref="MinHalfCycle"/>, so no swing is shorter than <see cref="MinSwing"/>. The first lasts as long as the
 /// feet left on the start contacts can hold them (probed by IK), the last starts once the feet can hold the end
 /// contacts. A foothold is the foot's stance offset (from the start and end contact poses, centred in the range its
@@ -117,6 +118,14 @@ internal sealed class WalkGait
     /// <summary>Least duration of a half-cycle, seconds: its swing lasts at least <see cref="MinSwing"/>.</summary>
     public const float MinHalfCycle = MinSwing / (1f - (2f * Overlap));
 
+    /// <summary>
+    /// Most a held foot drifts sideways under its hip as the trunk turns over it during one half-cycle, in its own
+    /// leg's lengths: a rig whose feet stand far ahead of or behind its trunk's centre (an ant's front and hind legs)
+    /// turns less than <see cref="MaxTurn"/> per half-cycle (its turns in place are slower too:
+    /// <see cref="ReducedModelBuilder.TurnSweep"/>).
+    /// </summary>
+    public const float TurnDrift = 0.4f;
+
     /// <summary>Interval (seconds) at which how long the feet can stay on the walk's start and end contacts is probed.</summary>
     private const float HoldProbe = 0.02f;
 
@@ -179,6 +188,9 @@ internal sealed class WalkGait
     /// <summary>The farthest any foot stands from the trunk's centre horizontally in the contact pose (metres): how far a turn moves it per radian.</summary>
     private readonly float _footRadius;
 
+    /// <summary>Most this rig's trunk turns during one half-cycle, radians: <see cref="MaxTurn"/>, less for feet far ahead of or behind the trunk's centre (<see cref="TurnDrift"/>).</summary>
+    private readonly float _maxTurn;
+
     /// <summary>Per limb: where the contact pose holds its effector's contact point in the trunk's frame (metres, +X the trunk's left, +Z its forward): where a cruising foot is set down.</summary>
     private readonly Vector3[] _poseFeet;
 
@@ -229,13 +241,27 @@ internal sealed class WalkGait
         _footRadius = model.Limbs.Where(l => l.Kind == LimbKind.Foot).Select(l => l.EffectorPosition(positions, rotations))
             .Select(p => new Vector2(p.X, p.Z).Length()).DefaultIfEmpty(0f).Max();
         _poseFeet = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))];
+
+        // A turn of the trunk by θ moves a held foot sideways under it by about θ times its distance ahead of (or
+        // behind) the trunk's centre.
+        float[] legs = model.LegLengths();
+        _maxTurn = MaxTurn;
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            float ahead = MathF.Abs(_poseFeet[l].Z);
+            if (legs[l] > 0f && ahead * MaxTurn > TurnDrift * legs[l])
+            {
+                _maxTurn = MathF.Min(_maxTurn, TurnDrift * legs[l] / ahead);
+            }
+        }
+
         _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips) : float.PositiveInfinity;
     }
 
     /// <summary>
     /// The least half range (metres) over the feet that the trunk can move along its forward axis on level ground
     /// with the trunk lifted, level, until some foot's hip stands <paramref name="share"/> of that foot's own leg
-    /// (<see cref="StanceDip.LegLengths"/>) above it, while each foot holds where the contact pose puts it, sole flat
+    /// (<see cref="CharacterModel.LegLengths"/>) above it, while each foot holds where the contact pose puts it, sole flat
     /// (IK only: the rig's own reach, not a level's); 0 when a foot cannot stand there. Each leg's own length, not
     /// the longest: a rig whose hind legs are shorter than its front ones (a dog, a lizard) lifts its trunk as far as
     /// the hind legs allow, and the front ones then stand less straight.
@@ -252,7 +278,7 @@ internal sealed class WalkGait
         var rotations = new Quaternion[rig.Joints.Count];
         float increment = _restLeg / ProbeSteps;
         float reach = float.PositiveInfinity;
-        float[] legs = StanceDip.LegLengths(_model);
+        float[] legs = _model.LegLengths();
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), _model.ContactPose, positions, rotations);
         float lift = float.PositiveInfinity;
         for (int l = 0; l < _model.Limbs.Count; l++)
@@ -1372,8 +1398,8 @@ internal sealed class WalkGait
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
                 float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples)) * Shortened(duration * (i - 0.5f) / samples);
-                float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / MaxTurn);
-                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / MaxTurn), dt / MinHalfCycle);
+                float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
+                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / MinHalfCycle);
                 previous = pose;
             }
 
@@ -2067,6 +2093,7 @@ internal sealed class WalkGait
             Vector3 up = Vector3.Normalize(ground0 + ground1);
             float h0 = Vector3.Dot(p0, up);
             float h1 = Vector3.Dot(p1, up);
+
             var keys = new float[b - a + 1][];
             float[][]? best = null;
             int bestFailures = int.MaxValue;

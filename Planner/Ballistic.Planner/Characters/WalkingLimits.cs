@@ -25,6 +25,12 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// <summary>The default steepest slope, degrees.</summary>
     public const float DefaultMaxSlopeDegrees = 35f;
 
+    /// <summary>
+    /// The default average rate at which the trunk turns in place at either end of a walk, radians per second (86°/s):
+    /// a walker's, whose feet stand under its trunk.
+    /// </summary>
+    public const float DefaultTurnRate = 1.5f;
+
     /// <summary>A character that never walks.</summary>
     public static WalkingLimits None { get; } = new(0f, DefaultMaxSlopeDegrees, 0f);
 
@@ -50,6 +56,13 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// </summary>
     public bool IsWalkable(Vector3 normal, Vector3 heading) => new GroundSlopeTest(this).Accepts(normal, heading);
 
+    /// <summary>
+    /// Average rate at which the trunk turns in place at either end of a walk, radians per second
+    /// (<see cref="DefaultTurnRate"/> unless set): slower for a rig whose feet stand far ahead of or behind its trunk,
+    /// which a turn carries sideways under it.
+    /// </summary>
+    public float TurnRate { get; init; } = DefaultTurnRate;
+
     /// <summary>Tangent of <see cref="MaxSlopeAlongDegrees"/>: the most the ground rises or drops per metre walked.</summary>
     public float MaxGrade => MathF.Tan(MaxSlopeAlongDegrees * MathF.PI / 180f);
 
@@ -71,5 +84,6 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
         : !(MaxSlopeAlongDegrees >= MaxSlopeDegrees) || MaxSlopeAlongDegrees > 80f ? $"the steepest slope walked up or down must lie between the steepest walkable slope ({MaxSlopeDegrees}) and 80 degrees, not {MaxSlopeAlongDegrees}"
         : !(StepHeight >= 0f) || !float.IsFinite(StepHeight) || StepHeight > 100f ? $"the step height must lie between 0 and 100 m, not {StepHeight}"
         : CanWalk && StepHeight <= 0f ? "a walking character needs a positive step height"
+        : !(TurnRate > 0f) || TurnRate > 100f ? $"the turn rate must lie between 0 and 100 radians per second, not {TurnRate}"
         : null;
 }

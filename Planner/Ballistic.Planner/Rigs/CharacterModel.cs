@@ -1,3 +1,7 @@
+using System.Numerics;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Geometry;
+
 namespace Ballistic.Planner.Rigs;
 
 /// <summary>
@@ -79,5 +83,31 @@ public sealed class CharacterModel
         init => _source = value is null || value.JointNodes.Count == Rig.Joints.Count
             ? value
             : throw new RigException($"Character '{Name}': the source maps {value.JointNodes.Count} joints, but the rig has {Rig.Joints.Count}.");
+    }
+
+    /// <summary>
+    /// Per limb, its standing leg (metres): a foot's root joint's greatest height above its contact point with every
+    /// angle at rest (a rig modelled standing) or in the contact pose (a rig modelled with its legs spread flat, an
+    /// insect's, stands only in its contact pose); 0 for a limb that is not a foot.
+    /// </summary>
+    internal float[] LegLengths()
+    {
+        var positions = new Vector3[Rig.Joints.Count];
+        var rotations = new Quaternion[Rig.Joints.Count];
+        float[] legs = new float[Limbs.Count];
+        foreach (float[] pose in new[] { Rig.Neutral(), ContactPose })
+        {
+            Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), pose, positions, rotations);
+            for (int l = 0; l < Limbs.Count; l++)
+            {
+                RigLimb limb = Limbs[l];
+                if (limb.Kind == LimbKind.Foot)
+                {
+                    legs[l] = MathF.Max(legs[l], positions[limb.RootJoint].Y - limb.EffectorPosition(positions, rotations).Y);
+                }
+            }
+        }
+
+        return legs;
     }
 }

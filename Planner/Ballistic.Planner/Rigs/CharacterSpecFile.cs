@@ -395,7 +395,7 @@ public static class CharacterSpecFile
                 throw Error("key 'maxSlopeAlong'", $"{along} degrees is below the steepest slope walked any way ({slope} degrees, {(spec.MaxSlope is null ? "derived from the rig" : "key 'maxSlope'")}); give at least that.");
             }
 
-            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, slope, step) { MaxSlopeAlongDegrees = along }));
+            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, slope, step) { MaxSlopeAlongDegrees = along, TurnRate = derived.TurnRate }));
         }
 
         return (model, reduced);

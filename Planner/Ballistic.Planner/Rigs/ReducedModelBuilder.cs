@@ -157,7 +157,42 @@ public static class ReducedModelBuilder
         }
 
         float slope = WalkableSlope(model, rootHeight);
-        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope) };
+        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope), TurnRate = TurnRate(model) };
+    }
+
+    /// <summary>
+    /// How fast, at most, a turn in place carries a held foot sideways under the trunk, in that foot's own leg lengths
+    /// per second at the average turn rate: a trunk turning by θ moves a foot standing d ahead of (or behind) its
+    /// centre sideways by about d·θ. At this rate (1.5 times it at the turn's fastest) the gait's shortest half-cycle
+    /// (<see cref="Animation.WalkGait.MinHalfCycle"/>, 0.2 s) turns no more than its feet allow
+    /// (<see cref="Animation.WalkGait.TurnDrift"/> of a leg); a rig whose feet stand under its trunk (a biped, a dog)
+    /// turns at <see cref="WalkingLimits.DefaultTurnRate"/>, well within it.
+    /// </summary>
+    public const float TurnSweep = 1.3f;
+
+    /// <summary>
+    /// The average rate (radians per second) at which the rig turns in place: <see cref="WalkingLimits.DefaultTurnRate"/>,
+    /// or less where a foot of the contact pose stands so far ahead of or behind the trunk's centre that a turn would
+    /// carry it sideways faster than <see cref="TurnSweep"/> of its leg per second (an ant's front and hind legs).
+    /// </summary>
+    public static float TurnRate(CharacterModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        float[] legs = model.LegLengths();
+        float rate = WalkingLimits.DefaultTurnRate;
+        for (int l = 0; l < model.Limbs.Count; l++)
+        {
+            float ahead = MathF.Abs(model.Limbs[l].EffectorPosition(positions, rotations).Z);
+            if (legs[l] > 0f && ahead * WalkingLimits.DefaultTurnRate > TurnSweep * legs[l])
+            {
+                rate = MathF.Min(rate, TurnSweep * legs[l] / ahead);
+            }
+        }
+
+        return rate;
     }
 
     /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 
 namespace Ballistic.Planner.Roadmaps;
@@ -8,15 +9,12 @@ namespace Ballistic.Planner.Roadmaps;
 /// step. The ground path runs from the first stance's contact centre to the second's; the trunk keeps its stance
 /// offset above the ground (blended from the first stance's to the second's) and faces the way it walks. In time:
 /// the trunk first turns in place from the first stance's orientation to the walking heading (at
-/// <see cref="TurnRate"/> on average, in <see cref="MinTurnTime"/> at least), speeds up from rest to <see cref="Speed"/> over <see cref="RampTime"/>, walks,
+/// <see cref="TurnRate"/> on average, the character's <see cref="WalkingLimits.TurnRate"/>, in <see cref="MinTurnTime"/> at least), speeds up from rest to <see cref="Speed"/> over <see cref="RampTime"/>, walks,
 /// slows down to rest over <see cref="RampTime"/> (a shorter walk never reaches full speed), and turns in place to
 /// the second stance's orientation. Immutable.
 /// </summary>
 public sealed record Walk : Move
 {
-    /// <summary>Average rate (radians per second) at which the trunk turns in place at either end of a walk (86°/s).</summary>
-    public const float TurnRate = 1.5f;
-
     /// <summary>Least time (seconds) of a turn in place: even a small turn takes two steps' time, one for each group of feet.</summary>
     public const float MinTurnTime = 0.4f;
 
@@ -40,8 +38,9 @@ public sealed record Walk : Move
     /// The stances the walk passes through without stopping, in order, when it joins several walks of a search
     /// (their ground points lie on <paramref name="path"/>); <c>null</c> or empty for a walk straight from one stance to the next.
     /// </param>
-    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, or a speed not positive.</exception>
-    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null)
+    /// <param name="turnRate">Average rate at which the trunk turns in place at either end, radians per second (positive).</param>
+    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, or a speed or turn rate not positive.</exception>
+    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate)
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
@@ -54,6 +53,11 @@ public sealed record Walk : Move
         if (!(speed > 0f) || !float.IsFinite(speed))
         {
             throw new ArgumentException($"The walking speed must be positive, not {speed}.", nameof(speed));
+        }
+
+        if (!(turnRate > 0f) || !float.IsFinite(turnRate))
+        {
+            throw new ArgumentException($"The turn rate must be positive, not {turnRate}.", nameof(turnRate));
         }
 
         _path = [.. path];
@@ -73,6 +77,7 @@ public sealed record Walk : Move
         To = to;
         Via = via is null ? [] : [.. via];
         Speed = speed;
+        TurnRate = turnRate;
         Length = _distances[^1];
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
@@ -119,6 +124,9 @@ public sealed record Walk : Move
 
     /// <summary>Walking speed along the path, m/s.</summary>
     public float Speed { get; }
+
+    /// <summary>Average rate at which the trunk turns in place at either end, radians per second (<see cref="WalkingLimits.TurnRate"/>).</summary>
+    public float TurnRate { get; }
 
     /// <summary>Length of the ground path, metres (3D, along the polyline).</summary>
     public float Length { get; }
@@ -291,7 +299,7 @@ public sealed record Walk : Move
     private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));
 
     /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn).</summary>
-    private static float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
+    private float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
 
     private static float Smooth(float x) => Easing.Smooth(x);
 }

@@ -93,7 +93,7 @@ public sealed class WalkSteering
             return new WalkResult(null, ground);
         }
 
-        var walk = new Walk(from, to, path, Limits.Speed);
+        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate);
         return TrunkIsFree(walk) ? new WalkResult(walk, WalkFailure.None) : new WalkResult(null, WalkFailure.TrunkCollides);
     }
 
@@ -123,7 +123,7 @@ public sealed class WalkSteering
             return null;
         }
 
-        var walk = new Walk(from, to, path, Limits.Speed);
+        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate);
         return TrunkIsFree(walk) ? walk : null;
     }
 
@@ -234,7 +234,7 @@ public sealed class WalkSteering
     public bool TrunkIsFree(Walk walk)
     {
         float spacing = MathF.Min(_trunkHalfExtents.X, MathF.Min(_trunkHalfExtents.Y, _trunkHalfExtents.Z));
-        float travel = walk.Length + ((walk.StartTurn + walk.EndTurn) * Walk.TurnRate * _trunkHalfExtents.Length());
+        float travel = walk.Length + ((walk.StartTurn + walk.EndTurn) * walk.TurnRate * _trunkHalfExtents.Length());
         int steps = Math.Max(1, (int)MathF.Ceiling(travel / spacing));
         for (int i = 0; i < steps; i++)
         {

@@ -150,6 +150,28 @@ public sealed class WalkGaitTests
     }
 
     /// <summary>
+    /// An ant (its front and hind feet stand about twice its leg ahead of and behind its trunk's centre) turning in
+    /// place a quarter turn at both ends of a short walk across open floor keeps every foot within 0.35 of its leg
+    /// sideways of where its contact pose holds it, seen in the exported GLB: it turns more slowly
+    /// (<see cref="ReducedModelBuilder.TurnRate"/>) and less during each step (<see cref="WalkGait.TurnDrift"/>)
+    /// (before, this walk could not be animated at all, and the sweep's turns in place read 0.40–0.58 L: each held
+    /// front foot carried 20° round at the planner's 86°/s).
+    /// </summary>
+    [Test]
+    public void AnAntTurningInPlaceKeepsItsFeetUnderItsHips()
+    {
+        WalkWorld world = WalkWorld.Create(ForeignLevels.Get("block").Level, "ant");
+        RoadmapNode from = world.Stance(new Vector3(-6.5f, 0f, 6f), 0, -Vector3.UnitZ);
+        RoadmapNode to = world.Stance(new Vector3(-5f, 0f, 6f), 1, Vector3.UnitZ);
+        Walk walk = world.Walk(from, to);
+        Assert.That(walk.StartTurn * walk.TurnRate, Is.GreaterThan(1.2f), "it turns about a quarter turn in place before it walks");
+        JumpAnimation animation = world.Animator.Animate([walk]);
+        AnimatorEye.Look look = Seen(world, animation);
+        TestContext.Out.WriteLine(look.UnderHips.ToString());
+        Assert.That(look.UnderHips.Passes, Is.True, look.UnderHips.ToString());
+    }
+
+    /// <summary>
     /// A walk whose upright steps cannot all be held (here beside a block, where the stance the walk ends on is cramped)
     /// is walked again with shorter steps only around the trouble, not at the classic short step all along: seen in
     /// the GLB, the walk keeps its upright cadence (before: 3.4 steps a second, 0.49 L each, on this walk in the sweep).
@@ -326,7 +348,7 @@ public sealed class WalkGaitTests
 
         path[0] = a;
         path[^1] = b;
-        JumpAnimation animation = world.Animator.Animate([new Walk(from, to, path, world.Scene.Character.Walking.Speed)]);
+        JumpAnimation animation = world.Animator.Animate([new Walk(from, to, path, world.Scene.Character.Walking.Speed, turnRate: world.Scene.Character.Walking.TurnRate)]);
         AnimatorEye.Look look = Seen(world, animation);
         Assert.That(look.Cadence.Seen, Is.Not.Empty, "the walk cruises on level ground");
         Assert.That(look.Cadence.Passes, Is.True, look.Cadence.ToString());

@@ -110,7 +110,7 @@ internal sealed record WalkWorld(PlanningScene Scene, CharacterModel Model, Jump
     }
 
     /// <summary>A straight walk from one stance to another at the character's walking speed on the ground sampled every <see cref="PathSpacing"/> or less.</summary>
-    public Walk Walk(RoadmapNode from, RoadmapNode to) => new(from, to, GroundPath(Centre(from), Centre(to)), Scene.Character.Walking.Speed);
+    public Walk Walk(RoadmapNode from, RoadmapNode to) => new(from, to, GroundPath(Centre(from), Centre(to)), Scene.Character.Walking.Speed, turnRate: Scene.Character.Walking.TurnRate);
 
     /// <summary>Ground points from below <paramref name="a"/> to below <paramref name="b"/>, straight across, at most <see cref="PathSpacing"/> apart.</summary>
     public Vector3[] GroundPath(Vector3 a, Vector3 b)

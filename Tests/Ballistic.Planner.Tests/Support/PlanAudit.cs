@@ -149,7 +149,7 @@ internal static class PlanAudit
     /// neighbouring points; the trunk box as it moves (<see cref="Walk.PoseAt"/>, turning in place included) clear
     /// of the level every 2 cm and 2°; the trunk exactly on the stances at both ends; the trunk never faster than
     /// the walking speed (so the duration at least the length at that speed), never turning faster than twice
-    /// <see cref="Walk.TurnRate"/>.
+    /// the character's <see cref="WalkingLimits.TurnRate"/>.
     /// </summary>
     private static void CheckWalk(PlanningScene scene, Walk walk, string context, AuditReport report)
     {
@@ -184,7 +184,7 @@ internal static class PlanAudit
                 break;
             }
 
-            if (step > 1e-6f && turn > (2f * Walk.TurnRate * step) + 1e-3f)
+            if (step > 1e-6f && turn > (2f * limits.TurnRate * step) + 1e-3f)
             {
                 Fail($"the trunk turns at {turn / step:0.0} rad/s at {t:0.000} s into the walk");
                 break;
@@ -262,7 +262,7 @@ internal static class PlanAudit
         // Turning in place at both ends, every 2°.
         foreach ((float t0, float span) in new[] { (0f, walk.StartTurn), (walk.Duration - walk.EndTurn, walk.EndTurn) })
         {
-            int n = Math.Max(1, (int)MathF.Ceiling(span * 2f * Walk.TurnRate / (2f * MathF.PI / 180f)));
+            int n = Math.Max(1, (int)MathF.Ceiling(span * 2f * limits.TurnRate / (2f * MathF.PI / 180f)));
             for (int k = 0; k <= n; k++)
             {
                 RootPose pose = walk.PoseAt(t0 + (span * k / n));

@@ -108,7 +108,7 @@ public sealed class WalkSteeringTests
         float speed = Skeleton.Walking.Speed;
         Assert.Multiple(() =>
         {
-            Assert.That(walk.StartTurn, Is.EqualTo(MathF.Max(turn / global::Ballistic.Planner.Roadmaps.Walk.TurnRate, global::Ballistic.Planner.Roadmaps.Walk.MinTurnTime)).Within(0.02f), "the start turn takes its angle at the turn rate");
+            Assert.That(walk.StartTurn, Is.EqualTo(MathF.Max(turn / Skeleton.Walking.TurnRate, global::Ballistic.Planner.Roadmaps.Walk.MinTurnTime)).Within(0.02f), "the start turn takes its angle at the turn rate");
             Assert.That(walk.PoseAt(0.5f * walk.StartTurn).Position, Is.EqualTo(a.Pose.Position), "turning in place");
             Assert.That(Vector3.Dot(walk.PoseAt(walk.StartTurn).Forward, h), Is.GreaterThan(0.99f), "facing the way it walks when it sets off");
             Assert.That(walk.SpeedAt(0.5f * walk.StartTurn), Is.Zero);
