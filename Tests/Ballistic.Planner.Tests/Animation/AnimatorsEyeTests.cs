@@ -3,6 +3,7 @@ using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
@@ -223,6 +224,65 @@ public sealed class AnimatorsEyeTests
             Assert.That(rising, Is.EqualTo(walked).Within(0.005f), "a steady rise is not a bob");
             Assert.That(bouncing, Is.GreaterThan(AnimatorEye.MostBob), "a 0.1 L bounce is too much");
         });
+    }
+
+    /// <summary>
+    /// An arm's swing is read over a whole stride of its leg: the skeleton's walk across the gap course's first
+    /// platform, judged on a floor that is level under only 0.4 m of it (ridged elsewhere, as a dune's crest is short),
+    /// is judged upright there but not on its arm swing, which a fifth of a stride cannot show (before, it was judged
+    /// anyway: 22° and 34° here by chance of where the window fell, 7° on a walk of the sweep's curved terrain whose
+    /// arms swing 30–39° on the plan's other walks).
+    /// </summary>
+    [Test]
+    public void AnArmsSwingIsReadOverAWholeStride()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        JumpAnimation animation = world.AcrossFirstPlatform();
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        AnimatorEye.Look level = eye.Measure(animation, world.Scene);
+        AnimatorEye.Look ridged = eye.Measure(animation, PlanningScene.Create(RidgedFloor(-5.6f, -5.2f), world.Scene.Character));
+        Assert.Multiple(() =>
+        {
+            Assert.That(level.ArmSwing.Seen, Is.Not.Empty, "on the level platform the arms are judged");
+            Assert.That(level.ArmSwing.Passes, Is.True, level.ArmSwing.ToString());
+            Assert.That(ridged.Upright.Seen, Is.Not.Empty, "the level strip is long enough to judge the hips");
+            Assert.That(ridged.ArmSwing.Seen, Is.Empty, ridged.ArmSwing.ToString());
+        });
+    }
+
+    /// <summary>
+    /// A floor at y = 0 from x = −9 to −2 m and z = −2 to 2 m, ridged every centimetre (facets at 39°: no level ground
+    /// under the trunk, though level over half a metre) except a flat strip from <paramref name="x0"/> to <paramref name="x1"/>.
+    /// </summary>
+    private static Level RidgedFloor(float x0, float x1)
+    {
+        var b = new LevelBuilder("ridged floor");
+        var material = new LevelMaterial("floor", null);
+        void Quad(Vector3 a, Vector3 c, float y0, float y1)
+        {
+            var p00 = new Vector3(a.X, y0, a.Z);
+            var p10 = new Vector3(c.X, y1, a.Z);
+            var p11 = new Vector3(c.X, y1, c.Z);
+            var p01 = new Vector3(a.X, y0, c.Z);
+            b.AddTriangle(new Triangle(p00, p01, p11), material);
+            b.AddTriangle(new Triangle(p00, p11, p10), material);
+        }
+
+        Quad(new Vector3(x0, 0f, -2f), new Vector3(x1, 0f, 2f), 0f, 0f);
+        foreach ((float from, float to) in new[] { (-9f, x0), (x1, -2f) })
+        {
+            int n = (int)MathF.Round((to - from) / 0.01f);
+            for (int i = 0; i < n; i++)
+            {
+                float u = from + ((to - from) * i / n);
+                float v = from + ((to - from) * (i + 1) / n);
+                float m = 0.5f * (u + v);
+                Quad(new Vector3(u, 0f, -2f), new Vector3(m, 0f, 2f), 0f, 0.004f);
+                Quad(new Vector3(m, 0f, -2f), new Vector3(v, 0f, 2f), 0.004f, 0f);
+            }
+        }
+
+        return b.Build();
     }
 
     /// <summary>

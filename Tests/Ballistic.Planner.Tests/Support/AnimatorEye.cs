@@ -802,6 +802,34 @@ internal sealed class AnimatorEye
     }
 
     /// <summary>
+    /// The time (seconds) from one placement of leg <paramref name="leg"/>'s foot to its next during move
+    /// <paramref name="move"/>, the median over the walk (a foot rolling onto its ball is not placed anew);
+    /// infinity when the foot is placed fewer than twice or <paramref name="leg"/> is no leg.
+    /// </summary>
+    private float Stride(JumpAnimation animation, int move, int leg)
+    {
+        if (leg < 0)
+        {
+            return float.PositiveInfinity;
+        }
+
+        float start = animation.MoveStart(move);
+        float end = animation.MoveEnd(move);
+        string name = _legs[leg].Name;
+        float[] placed = [.. animation.ContactPhases
+            .Where(p => !p.OnBall && p.From > start && p.From < end && animation.Model.Limbs[p.Limb].Name == name)
+            .Select(p => p.From)
+            .Order()];
+        if (placed.Length < 2)
+        {
+            return float.PositiveInfinity;
+        }
+
+        float[] gaps = [.. Enumerable.Range(1, placed.Length - 1).Select(k => placed[k] - placed[k - 1]).Where(g => g > 1e-4f).Order()];
+        return gaps.Length == 0 ? float.PositiveInfinity : gaps[gaps.Length / 2];
+    }
+
+    /// <summary>
     /// Footholds where the plan says: at the start and end of every move, each limb the plan's stance puts on a contact
     /// has its effector bone within <see cref="FootholdTolerance"/> of that contact (beyond the contact point's own
     /// offset from the bone).
@@ -838,7 +866,8 @@ internal sealed class AnimatorEye
     /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade); a biped (two feet) at most <see cref="MostCadence"/> foot placements
     /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
-    /// above or below the trunk's side plane), against the leg on its side (forward as it goes back).
+    /// above or below the trunk's side plane), against the leg on its side (forward as it goes back), read where the
+    /// level ground spans at least a stride of that leg (<see cref="Stride"/>).
     /// </summary>
     private void MeasureWalks(JumpAnimation animation, TriangleBvh level, Look look)
     {
@@ -963,7 +992,15 @@ internal sealed class AnimatorEye
                 look.Bob.Add(MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f)), $"{name}'s hips rise and fall {bob:0.000} L");
                 for (int a = 0; a < _arms.Length; a++)
                 {
+                    // An arm's swing is read over a whole stride of its leg (from one placement of the foot to its
+                    // next): level ground that spans less sees only part of the swing (a third of a stride on the
+                    // curved terrain read 7°; the same arms swing 30–39° on the plan's other walks).
                     List<(float Arm, float Leg)> samples = arms[a];
+                    if (!(times[^1] - times[0] >= Stride(animation, m, _arms[a].Leg)))
+                    {
+                        continue;
+                    }
+
                     float swing = samples.Max(s => s.Arm) - samples.Min(s => s.Arm);
                     float against = _arms[a].Leg < 0 ? -1f : Correlation(samples);
                     look.ArmSwing.Add(against < 0f ? swing / LeastArmSwing : 0f, $"{name}'s {_arms[a].Name} swings {swing:0}° {(against < 0f ? "against" : "with")} its leg");
