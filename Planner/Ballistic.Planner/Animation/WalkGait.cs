@@ -109,6 +109,9 @@ internal sealed class WalkGait
     /// <summary>Share of the upright step taken near where a first run met trouble (<see cref="Animate"/>).</summary>
     private const float ShortStep = 0.85f;
 
+    /// <summary>Most times an upright walk that met trouble is walked again with its steps shortened there (<see cref="Animate"/>).</summary>
+    private const int ShortenRounds = 4;
+
     /// <summary>Steps either side of a trouble over which the upright step is shortened.</summary>
     private const float ShortSpan = 1f;
 
@@ -442,18 +445,27 @@ internal sealed class WalkGait
             (best, roll) = flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
         }
 
-        // Where the upright walk met trouble, it is walked again with shorter steps there (twice at most), the rest
-        // of it unchanged: one hollow or a cramped end stance does not shorten every step.
+        // Where the upright walk met trouble, it is walked again with shorter steps there (ShortenRounds times at
+        // most), the rest of it unchanged: one hollow or a cramped end stance does not shorten every step. Shortening
+        // steps moves the footholds after them, so a walk may meet a new trouble further on: it is shortened there
+        // too, the earlier places kept, until a walk does worse than the best yet or meets no new trouble.
         float[] shortAt = best.Troubles;
-        for (int again = 0; again < 2 && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
+        for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
             Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt).Animate();
-            shortAt = [.. shortAt, .. clip.Troubles];
+            float[] more = [.. shortAt, .. clip.Troubles];
+            bool news = Run.Places(more) > Run.Places(shortAt);
+            shortAt = more;
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
             }
-            else if (again > 0)
+            else if (again > 0 && clip.Problems.Count > best.Problems.Count)
+            {
+                break;
+            }
+
+            if (!news)
             {
                 break;
             }
@@ -515,6 +527,12 @@ internal sealed class WalkGait
         private readonly List<ContactPhase> _phases = [];
         private readonly List<float> _troubles = [];
         private readonly float[] _shortAt;
+
+        /// <summary>How many places (times on the walk's clock, to the nearest 0.05 s) <paramref name="times"/> names.</summary>
+        public static int Places(float[] times) => Rounded(times).Length;
+
+        /// <summary><paramref name="times"/> to the nearest 0.05 s, each once: where a walk is shortened.</summary>
+        private static float[] Rounded(float[] times) => [.. times.Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
         private readonly int _limbs;
         private float _leg;
         private float _stepHeight;
@@ -539,7 +557,7 @@ internal sealed class WalkGait
         public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null)
         {
             _roll = roll;
-            _shortAt = [.. (shortAt ?? []).Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
+            _shortAt = Rounded(shortAt ?? []);
             _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
             _lift = lift && _arms;

@@ -106,7 +106,7 @@ public sealed class SweepTests
     }
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
-    private static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>
+    internal static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>
         look.All.Where(c => c.Name is "crouch" or "absorb" or "ground time" or "soles" or "flight pose" or "crossing" or "bob" or "arm swing");
 
     /// <summary>
