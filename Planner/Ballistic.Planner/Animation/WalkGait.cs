@@ -245,18 +245,7 @@ internal sealed class WalkGait
             .Select(p => new Vector2(p.X, p.Z).Length()).DefaultIfEmpty(0f).Max();
         _poseFeet = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))];
 
-        // A turn of the trunk by θ moves a held foot sideways under it by about θ times its distance ahead of (or
-        // behind) the trunk's centre.
-        float[] legs = model.LegLengths();
-        _maxTurn = MaxTurn;
-        for (int l = 0; l < model.Limbs.Count; l++)
-        {
-            float ahead = MathF.Abs(_poseFeet[l].Z);
-            if (legs[l] > 0f && ahead * MaxTurn > TurnDrift * legs[l])
-            {
-                _maxTurn = MathF.Min(_maxTurn, TurnDrift * legs[l] / ahead);
-            }
-        }
+        _maxTurn = model.TurnLimit(TurnDrift, MaxTurn);
 
         _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips) : float.PositiveInfinity;
     }

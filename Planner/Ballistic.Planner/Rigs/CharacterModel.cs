@@ -110,4 +110,29 @@ public sealed class CharacterModel
 
         return legs;
     }
+
+    /// <summary>
+    /// The most a turn of the trunk about its up axis may be (radians, or radians per second), at most
+    /// <paramref name="most"/>, so that no foot where the contact pose holds it is carried sideways under the trunk by
+    /// more than <paramref name="share"/> of its own leg (<see cref="LegLengths"/>; per second for a rate): a trunk
+    /// turning by θ moves a foot standing d ahead of (or behind) its centre sideways by about d·θ.
+    /// </summary>
+    internal float TurnLimit(float share, float most)
+    {
+        var positions = new Vector3[Rig.Joints.Count];
+        var rotations = new Quaternion[Rig.Joints.Count];
+        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        float[] legs = LegLengths();
+        float limit = most;
+        for (int l = 0; l < Limbs.Count; l++)
+        {
+            float ahead = MathF.Abs(Limbs[l].EffectorPosition(positions, rotations).Z);
+            if (legs[l] > 0f && ahead * most > share * legs[l])
+            {
+                limit = MathF.Min(limit, share * legs[l] / ahead);
+            }
+        }
+
+        return limit;
+    }
 }

@@ -178,21 +178,7 @@ public static class ReducedModelBuilder
     public static float TurnRate(CharacterModel model)
     {
         ArgumentNullException.ThrowIfNull(model);
-        var positions = new Vector3[model.Rig.Joints.Count];
-        var rotations = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        float[] legs = model.LegLengths();
-        float rate = WalkingLimits.DefaultTurnRate;
-        for (int l = 0; l < model.Limbs.Count; l++)
-        {
-            float ahead = MathF.Abs(model.Limbs[l].EffectorPosition(positions, rotations).Z);
-            if (legs[l] > 0f && ahead * WalkingLimits.DefaultTurnRate > TurnSweep * legs[l])
-            {
-                rate = MathF.Min(rate, TurnSweep * legs[l] / ahead);
-            }
-        }
-
-        return rate;
+        return model.TurnLimit(TurnSweep, WalkingLimits.DefaultTurnRate);
     }
 
     /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>
