@@ -1,4 +1,6 @@
+using System.Numerics;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Planner.Animation;
@@ -14,4 +16,12 @@ public interface IJumpAnimator
 
     /// <summary>True when the whole body can stand at <paramref name="pose"/>: as many limbs as the character needs reach the level by IK with no bone through it.</summary>
     bool CanStand(PoseEvaluation pose);
+
+    /// <summary>
+    /// True when the whole body, its root at <paramref name="root"/>, can push off with <paramref name="velocity"/>
+    /// (m/s, world frame; a landing's velocity reversed, to absorb it) on the contacts the plan reports,
+    /// <paramref name="contacts"/>: the contact pose the animation would take off (land) on holds them and its cone
+    /// contains the velocity. True unless an implementation says otherwise.
+    /// </summary>
+    bool CanPush(RootPose root, IReadOnlyList<Contact> contacts, Vector3 velocity) => true;
 }

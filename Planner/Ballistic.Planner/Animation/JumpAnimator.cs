@@ -40,6 +40,9 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <summary>Earliest and latest share of the flight at which its apex pose is keyed.</summary>
     private const float ApexKeyShare = 0.3f;
 
+    /// <summary>Farthest (metres) a limb may stand from the contact the plan reports for it when a push is checked (<see cref="CanPush"/>).</summary>
+    private const float ReportedFoothold = 0.25f;
+
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
     private readonly BodyCollision _collision;
@@ -77,6 +80,31 @@ public sealed class JumpAnimator : IJumpAnimator
         ArgumentNullException.ThrowIfNull(pose);
         ContactConfiguration stance = _contacts.Generate(pose.Pose, pose.Contacts, pose.Cone.Axis);
         return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>
+    /// The contact pose a jump's animation takes off (lands) on, each limb on its reported contact first: valid, and
+    /// every limb the plan puts on a contact within <see cref="ReportedFoothold"/> of it.
+    /// </remarks>
+    public bool CanPush(RootPose root, IReadOnlyList<Contact> contacts, Vector3 velocity)
+    {
+        ArgumentNullException.ThrowIfNull(contacts);
+        ContactConfiguration pose = _contacts.Generate(root, contacts, velocity, 0f, onEstimates: true);
+        if (!pose.Valid)
+        {
+            return false;
+        }
+
+        foreach (Contact c in contacts)
+        {
+            if (pose.ContactOf(c.Limb) is not LimbContact held || Vector3.Distance(held.Position, c.Position) > ReportedFoothold)
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     /// <summary>

@@ -96,7 +96,7 @@ public sealed class AnimatedPlanner
         ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
         var clock = Stopwatch.StartNew();
         var query = new PathQuery(_scene, roadmap);
-        settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand };
+        settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
         var repair = new JumpRepair(roadmap.Nodes.Count + 2);
 
         // The condition sees the time since this request began, not since each search began.

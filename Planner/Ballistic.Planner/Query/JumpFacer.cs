@@ -59,6 +59,7 @@ internal sealed class JumpFacer
     private readonly PlanningScene _scene;
     private readonly bool _walking;
     private readonly Func<PoseEvaluation, bool>? _canStand;
+    private readonly Func<RootPose, IReadOnlyList<Contact>, Vector3, bool>? _canPush;
     private readonly IReadOnlyList<RootPose> _refused;
     private int _nextId;
 
@@ -74,11 +75,13 @@ internal sealed class JumpFacer
     /// <param name="walking">Whether the request walks (turns are walked) or only jumps (turns are hopped).</param>
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
     /// <param name="refused">Stances the body could not crouch or absorb on for a faced jump (<see cref="QuerySettings.RefusedTurns"/>), or <c>null</c>: not placed again.</param>
-    public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand, IReadOnlyList<RootPose>? refused = null)
+    /// <param name="canPush">Whether the body pushes off with a velocity (absorbs it, given reversed) at either end of a turn hop (<see cref="QuerySettings.CanPush"/>), or <c>null</c>: not checked.</param>
+    public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand, IReadOnlyList<RootPose>? refused = null, Func<RootPose, IReadOnlyList<Contact>, Vector3, bool>? canPush = null)
     {
         _scene = scene;
         _walking = walking;
         _canStand = canStand;
+        _canPush = canPush;
         _refused = refused ?? [];
     }
 
@@ -412,8 +415,13 @@ internal sealed class JumpFacer
             return [turn with { CutFrom = cut }];
         }
 
+        // A hop the body cannot push off for or absorb (its arc is the steepest the cones allow, at their edge) is no turn.
         SteeringResult hop = _scene.Steering.SteerSteep(from.Pose, from.Cone, to.Pose, to.Cone);
-        return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }] : null;
+        return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight
+            && _canPush?.Invoke(from.Pose, from.Contacts, hop.Arc.TakeoffVelocity) != false
+            && _canPush?.Invoke(to.Pose, to.Contacts, -hop.Arc.LandingVelocity) != false
+            ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }]
+            : null;
     }
 
     /// <summary>

@@ -435,7 +435,7 @@ public sealed class PathQuery
         int n = _roadmap.Nodes.Count;
         var startEnd = new PlacedEnd(this, _startPoint is Vector3 from && start.Id <= n ? from : null, start, n, settings);
         var goalEnd = new PlacedEnd(this, _goalPoint is Vector3 to && (goal.Id == n + 1 || goal.Id < n) ? to : null, goal, n + 1, settings);
-        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
+        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns, settings.CanPush).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
         startPlacement = faced.Count > 0 ? startEnd.PlacementOf(faced[0].From) : null;
         goalPlacement = faced.Count > 0 ? goalEnd.PlacementOf(faced[^1].To) : null;
         return faced;

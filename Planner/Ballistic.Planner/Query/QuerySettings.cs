@@ -18,6 +18,15 @@ public sealed record QuerySettings
     /// </summary>
     public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
 
+    /// <summary>
+    /// An extra check a hop turning the character in place to face a jump (<see cref="FaceJumps"/>) must pass at both
+    /// ends: whether the whole body, its root at the stance's pose, pushes off with the hop's takeoff velocity (absorbs
+    /// its landing velocity, given reversed; m/s, world frame) on the stance's contacts; <c>null</c> for none.
+    /// <see cref="Query.AnimatedPlanner"/> sets it to its animator's <see cref="Animation.IJumpAnimator.CanPush"/>: a
+    /// turn hop the body cannot perform is not made, the next placement is tried instead.
+    /// </summary>
+    public Func<RootPose, IReadOnlyList<Contacts.Contact>, Vector3, bool>? CanPush { get; init; }
+
     /// <summary>Start and goal are steered to and from at most this many nearest roadmap nodes within reach.</summary>
     public int MaxNeighbours { get; init; } = 32;
 

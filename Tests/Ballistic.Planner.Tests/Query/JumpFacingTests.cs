@@ -4,6 +4,7 @@ using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
@@ -135,6 +136,64 @@ public sealed class JumpFacingTests
         });
         AuditReport audit = PlanAudit.Check("desert turned further", c.Scene, c.From, c.To, faced, null);
         Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    /// <summary>
+    /// A turn hop the body cannot push off for or land from is not made: the request's <see cref="QuerySettings.CanPush"/>
+    /// refuses every stance facing within 12° of a searched jump's way, so the frog, which turns by hops, reaches no
+    /// such turned takeoff and leaves no such turned landing, while the check was asked about its hops (on the curved
+    /// level the skeleton's turn hops, the steepest arcs their cones allow, landed on stances whose generated contacts'
+    /// cone held no hop: the repair gave those jumps back and they flew 82° and 83° off their way).
+    /// </summary>
+    [Test]
+    public void ATurnedEndTheBodyCannotPushOffFromIsNotPlaced()
+    {
+        Case c = Pond.Value;
+        var settings = new QuerySettings { CanStand = c.Real.CanStand, Locomotion = Locomotion.Jump };
+        PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { FaceJumps = false });
+        float[] ways = [.. searched.Jumps.Where(Far).Select(j => MathF.Atan2(j.Arc.End.X - j.Arc.Start.X, j.Arc.End.Z - j.Arc.Start.Z))];
+        bool Near(RootPose pose)
+        {
+            float yaw = MathF.Atan2(pose.Forward.X, pose.Forward.Z);
+            return ways.Any(w => MathF.Abs(MathF.IEEERemainder(yaw - w, 2f * MathF.PI)) < 12f * MathF.PI / 180f);
+        }
+
+        int asked = 0;
+        PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with
+        {
+            CanPush = (root, contacts, velocity) =>
+            {
+                Interlocked.Increment(ref asked);
+                return c.Real.CanPush(root, contacts, velocity) && !Near(root);
+            },
+        });
+        Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
+        int n = c.Roadmap.Nodes.Count;
+        RoadmapNode[] turned = [.. faced.Jumps.Where(Far).SelectMany(j => new[] { j.From, j.To }).Where(s => s.Id >= n + 2)];
+        TestContext.Out.WriteLine($"asked {asked} times; turned ends {string.Join(", ", turned.Select(s => s.Id))}");
+        Assert.That(asked, Is.Positive, "the facer asks about the hops it turns by");
+        Assert.That(turned.Where(s => Near(s.Pose)).Select(s => s.Id), Is.Empty, "a far jump leaves or lands on a turned end the check refused");
+        AuditReport audit = PlanAudit.Check("pond hops checked", c.Scene, c.From, c.To, faced, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    /// <summary>
+    /// The animator's push check is the contact pose its jumps take off on: a faced jump's own takeoff velocity passes on
+    /// its takeoff's contacts, a velocity into the ground (outside every friction cone) does not.
+    /// </summary>
+    [Test]
+    public void TheAnimatorPushesOffWithAJumpsVelocityOnlyInsideItsCone()
+    {
+        Case c = Desert.Value;
+        PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, new QuerySettings { CanStand = c.Real.CanStand, CanPush = c.Real.CanPush });
+        Assert.That(faced.Status, Is.EqualTo(PlannerStatus.Exact), faced.Reason);
+        Jump jump = faced.Jumps.Where(Far).First();
+        Assert.Multiple(() =>
+        {
+            Assert.That(c.Real.CanPush(jump.From.Pose, jump.From.Contacts, jump.Arc.TakeoffVelocity), Is.True, "its takeoff");
+            Assert.That(c.Real.CanPush(jump.To.Pose, jump.To.Contacts, -jump.Arc.LandingVelocity), Is.True, "its landing");
+            Assert.That(c.Real.CanPush(jump.From.Pose, jump.From.Contacts, new Vector3(0f, -5f, 0f)), Is.False, "into the ground");
+        });
     }
 
     /// <summary>
