@@ -1,5 +1,3 @@
-using System.Numerics;
-using Ballistic.Planner.Collision;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -16,7 +14,8 @@ public sealed class DemoLookTests
     public void TheDemoIsFullyRightAndReadsAsJumpsAndWalks()
     {
         Sweep.Setup setup = Sweep.PrepareBundled("desert", "skeleton");
-        AuditReport report = Sweep.Run(setup, Ground(setup.Scene.Bvh, -9.5f, -7.5f), Ground(setup.Scene.Bvh, 9.5f, 7.5f), seed: 1, maxNodes: 600);
+        // Start and goal on the highest surface straight below, as the CLI places them.
+        AuditReport report = Sweep.Run(setup, LevelPoints.Ground(setup.Scene.Bvh, -9.5f, -7.5f)!.Value, LevelPoints.Ground(setup.Scene.Bvh, 9.5f, 7.5f)!.Value, seed: 1, maxNodes: 600);
         TestContext.Out.WriteLine(report.Look is { } seen ? string.Join("; ", seen.All.Select(c => $"{c.Name}: {c.Criterion}")) : "not animated");
 
         // Its longest walk (9.8 s across the flat between the dunes) met a trouble further on each time its steps
@@ -32,13 +31,5 @@ public sealed class DemoLookTests
                 Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
             }
         });
-    }
-
-    /// <summary>The highest point of the level under (x, z), as the CLI places the demo's start and goal.</summary>
-    private static Vector3 Ground(TriangleBvh bvh, float x, float z)
-    {
-        float top = bvh.Bounds.Max.Y + 1f;
-        Assert.That(bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -(top - bvh.Bounds.Min.Y + 2f), 0f), 1f, out RayHit hit), Is.True, "the desert lies under the demo's start and goal");
-        return hit.Point;
     }
 }

@@ -146,7 +146,7 @@ public sealed class JumpFacingTests
     /// cone held no hop: the repair gave those jumps back and they flew 82° and 83° off their way).
     /// </summary>
     [Test]
-    public void ATurnedEndTheBodyCannotPushOffFromIsNotPlaced()
+    public void ATurnHopTheBodyCannotPushOffForOrLandFromIsNotMade()
     {
         Case c = Pond.Value;
         var settings = new QuerySettings { CanStand = c.Real.CanStand, Locomotion = Locomotion.Jump };
