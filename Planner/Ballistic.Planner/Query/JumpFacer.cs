@@ -34,7 +34,8 @@ namespace Ballistic.Planner.Query;
 /// rounds with such failures no jump is turned. The path still starts and ends on the
 /// request's start and goal stances, or on stances placed again at the request's points facing the first and last
 /// jumps. New stances get ids from a counter in the order they are placed:
-/// deterministic for the same path.
+/// deterministic for the same path. Jumps left still off their way are listed in <see cref="Unturned"/>: the query
+/// searches again without them (<see cref="PathQuery.FacingSearches"/>).
 /// </remarks>
 internal sealed class JumpFacer
 {
@@ -105,6 +106,7 @@ internal sealed class JumpFacer
     public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal, Func<bool> stop)
     {
         _nextId = nextId;
+        _unturned.Clear();
         var result = new List<Move>(path.Count + 4);
         if (path.Count == 0)
         {
@@ -124,10 +126,16 @@ internal sealed class JumpFacer
             if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == 0 ? placeStart : null, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
             {
                 current = landed;
-                continue;
+            }
+            else
+            {
+                current = Continue(move, current, result, rejected);
             }
 
-            current = Continue(move, current, result, rejected);
+            if (move is Jump searched && result[^1] is Jump made && Far(made) && StillOff(made))
+            {
+                _unturned.AddRange(Cut(searched));
+            }
         }
 
         if (current.Id != path[^1].To.Id && !ReferenceEquals(current, _placedGoal))
@@ -138,6 +146,29 @@ internal sealed class JumpFacer
 
         nextId = _nextId;
         return result;
+    }
+
+    /// <summary>
+    /// The searched jumps (takeoff id, landing id; those a cut jump was cut from) the last <see cref="Face"/> left
+    /// taking off more than <see cref="StillOffTakeoff"/> or landing more than <see cref="StillOffLanding"/> off their
+    /// way: no turned stance steered, or the repair gave them back unturned.
+    /// </summary>
+    public IReadOnlyList<(int From, int To)> Unturned => _unturned;
+
+    private readonly List<(int From, int To)> _unturned = [];
+
+    /// <summary>A jump taking off more than this (radians, 30°) off its way is still off after facing.</summary>
+    public const float StillOffTakeoff = 30f * MathF.PI / 180f;
+
+    /// <summary>A jump landing more than this (radians, 45°) off its way is still off after facing.</summary>
+    public const float StillOffLanding = 45f * MathF.PI / 180f;
+
+    /// <summary>Whether <paramref name="jump"/> takes off or lands further off its way than a viewer accepts (<see cref="StillOffTakeoff"/>, <see cref="StillOffLanding"/>).</summary>
+    private static bool StillOff(Jump jump)
+    {
+        Vector3 across = jump.Arc.End - jump.Arc.Start;
+        float facing = MathF.Atan2(across.X, across.Z);
+        return Off(jump.From, facing) > StillOffTakeoff || Off(jump.To, facing) > StillOffLanding;
     }
 
     /// <summary>Whether <paramref name="jump"/> travels far enough across to need facing.</summary>

@@ -371,9 +371,70 @@ public sealed class PathQuery
             return Fail(PlannerStatus.NoPath, $"the roadmap's walk from node {lostFrom} to node {lostTo} no longer finds its ground on this level: bake the roadmap again", start, goal, clock) with { Expansions = expansions };
         }
 
-        int nextId = n + 2;
+        float searched = path?.Sum(CostOf) ?? 0f;
+        (path, EndpointPlacement? startPlacement, EndpointPlacement? goalPlacement, IReadOnlyList<(int From, int To)> unturned) = Finish(path, start, goal, settings, rejected, termination, clock);
+        if (path is not null && unturned.Count > 0)
+        {
+            // Jumps the facer could not turn to face their way (the takeoff or landing on ground too steep to turn
+            // on, or their turns did not animate): searched again without them, while that costs little more.
+            var avoided = new HashSet<(int From, int To)>(rejected ?? (IEnumerable<(int From, int To)>)[]);
+            int fewest = unturned.Count;
+            for (int again = 0; again < FacingSearches && unturned.Count > 0; again++)
+            {
+                avoided.UnionWith(unturned);
+                _lostWalk = null;
+                List<Move>? other = AStar(start, goal, avoided, termination, clock, out int more, out PlanResult? stopped);
+                expansions += more;
+                if (stopped is not null || _lostWalk is not null || other is null || other.Sum(CostOf) > FacingDetour * searched)
+                {
+                    break;
+                }
+
+                (List<Move>? made, EndpointPlacement? madeStart, EndpointPlacement? madeGoal, IReadOnlyList<(int From, int To)> left) = Finish(other, start, goal, settings, avoided, termination, clock);
+                if (made is not null && left.Count < fewest)
+                {
+                    (path, startPlacement, goalPlacement, fewest) = (made, madeStart, madeGoal, left.Count);
+                }
+
+                unturned = left;
+            }
+        }
+
+        if (goalPlacement is not null && path is { Count: > 0 })
+        {
+            goal = path[^1].To; // placed again facing the last jump (same requested point and tolerance)
+        }
+
+        if (startPlacement is not null && path is { Count: > 0 })
+        {
+            start = path[0].From; // placed again facing the first jump
+        }
+
+        string moves = _walking ? "moves (jumps or walks)" : "jumps";
+        string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
+        PlanResult result = path is null
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+        return result with { Expansions = expansions };
+    }
+
+    /// <summary>How many times at most a request searches again without the jumps it could not turn to face (<see cref="JumpFacer.Unturned"/>).</summary>
+    internal const int FacingSearches = 2;
+
+    /// <summary>A path searched again without unturned jumps is taken only when it costs at most this times the first one searched.</summary>
+    internal const float FacingDetour = 1.5f;
+
+    /// <summary>
+    /// The searched <paramref name="path"/> made ready to perform: shortcut, jumps cut down to walks, hops over
+    /// ground the body could not walk, jumps turned to face their way (as <paramref name="settings"/> ask), walks
+    /// joined; with the start and goal placements made for facing and the jumps left unturned.
+    /// </summary>
+    private (List<Move>? Path, EndpointPlacement? Start, EndpointPlacement? Goal, IReadOnlyList<(int From, int To)> Unturned) Finish(List<Move>? path, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
+    {
+        int nextId = _roadmap.Nodes.Count + 2;
         EndpointPlacement? startPlacement = null;
         EndpointPlacement? goalPlacement = null;
+        IReadOnlyList<(int From, int To)> unturned = [];
         if (path is not null && _walking)
         {
             if (settings.Shortcut)
@@ -396,32 +457,17 @@ public sealed class PathQuery
 
             if (settings.FaceJumps)
             {
-                path = Face(path, walking: true, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement);
+                path = Face(path, walking: true, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement, out unturned);
             }
 
             path = JoinWalks(path, _scene.Walking);
         }
         else if (path is not null && settings.FaceJumps)
         {
-            path = Face(path, walking: false, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement);
+            path = Face(path, walking: false, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement, out unturned);
         }
 
-        if (goalPlacement is not null && path is { Count: > 0 })
-        {
-            goal = path[^1].To; // placed again facing the last jump (same requested point and tolerance)
-        }
-
-        if (startPlacement is not null && path is { Count: > 0 })
-        {
-            start = path[0].From; // placed again facing the first jump
-        }
-
-        string moves = _walking ? "moves (jumps or walks)" : "jumps";
-        string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
-        PlanResult result = path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
-        return result with { Expansions = expansions };
+        return (path, startPlacement, goalPlacement, unturned);
     }
 
     /// <summary>
@@ -430,12 +476,14 @@ public sealed class PathQuery
     /// may be placed again at that point, within the same tolerance, facing the first (last) jump, as id n (n + 1):
     /// <paramref name="startPlacement"/> (<paramref name="goalPlacement"/>) is then that placement, otherwise <c>null</c>.
     /// </summary>
-    private List<Move> Face(List<Move> path, bool walking, ref int nextId, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out EndpointPlacement? startPlacement, out EndpointPlacement? goalPlacement)
+    private List<Move> Face(List<Move> path, bool walking, ref int nextId, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out EndpointPlacement? startPlacement, out EndpointPlacement? goalPlacement, out IReadOnlyList<(int From, int To)> unturned)
     {
         int n = _roadmap.Nodes.Count;
         var startEnd = new PlacedEnd(this, _startPoint is Vector3 from && start.Id <= n ? from : null, start, n, settings);
         var goalEnd = new PlacedEnd(this, _goalPoint is Vector3 to && (goal.Id == n + 1 || goal.Id < n) ? to : null, goal, n + 1, settings);
-        List<Move> faced = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns, settings.CanPush).Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
+        var facer = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns, settings.CanPush);
+        List<Move> faced = facer.Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
+        unturned = [.. facer.Unturned];
         startPlacement = faced.Count > 0 ? startEnd.PlacementOf(faced[0].From) : null;
         goalPlacement = faced.Count > 0 ? goalEnd.PlacementOf(faced[^1].To) : null;
         return faced;

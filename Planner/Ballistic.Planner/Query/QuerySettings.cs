@@ -90,7 +90,9 @@ public sealed record QuerySettings
     /// takeoff (landing) heading more than 20° (30°) off the jump's direction is replaced by a stance at the same spot
     /// facing the jump, which the character turns into in place (a turn walk, or a hop in place for a character that
     /// only jumps), each new stance and move checked like the roadmap's (<see cref="JumpFacer"/>). A jump whose turns
-    /// do not pass is kept as searched. On by default; off for the paper's plans, whose stances face any way.
+    /// do not pass is searched around when another path costs at most <see cref="PathQuery.FacingDetour"/> times the
+    /// first (<see cref="PathQuery.FacingSearches"/>), else kept as searched. On by default; off for the paper's
+    /// plans, whose stances face any way.
     /// </summary>
     public bool FaceJumps { get; init; } = true;
 

@@ -57,12 +57,18 @@ public sealed class JumpFacingTests
         return far.Length == 0 ? (0f, 0f) : (far.Max(j => Off(j.From, j)), far.Max(j => Off(j.To, j)));
     }
 
+    /// <summary>The desert's or the pond's request and its settings (the desert walks and jumps, the frog only jumps).</summary>
+    private static (Case Case, QuerySettings Settings) Request(string level)
+    {
+        Case c = level == "desert" ? Desert.Value : Pond.Value;
+        return (c, new QuerySettings { CanStand = c.Real.CanStand, Locomotion = level == "desert" ? Locomotion.WalkAndJump : Locomotion.Jump });
+    }
+
     [TestCase("desert")]
     [TestCase("pond")]
     public void EveryJumpOfAMetreOrMoreLeavesAndLandsFacingItsWay(string level)
     {
-        Case c = level == "desert" ? Desert.Value : Pond.Value;
-        var settings = new QuerySettings { CanStand = c.Real.CanStand, Locomotion = level == "desert" ? Locomotion.WalkAndJump : Locomotion.Jump };
+        (Case c, QuerySettings settings) = Request(level);
         PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { FaceJumps = false });
         PlanResult faced = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings);
         Assert.That(searched.Status, Is.EqualTo(PlannerStatus.Exact), searched.Reason);
@@ -296,6 +302,35 @@ public sealed class JumpFacingTests
             Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
             Assert.That(plan.Rejected.Select(r => r.Reason), Has.All.EqualTo("cannot crouch on this turn"));
         });
+    }
+
+    /// <summary>
+    /// A jump the facer cannot turn (here: every jump of the searched path off its way, given back unturned by the
+    /// repair, <see cref="QuerySettings.UnfacedJumps"/>) is not flown sideways when another path costs little more:
+    /// the query searches again without it (<see cref="PathQuery.FacingSearches"/>), and the path it takes faces
+    /// every jump and uses none of the jumps left unturned.
+    /// </summary>
+    [TestCase("desert")]
+    [TestCase("pond")]
+    public void AJumpThatCannotBeTurnedIsSearchedAroundWhenAnotherPathCostsLittleMore(string level)
+    {
+        (Case c, QuerySettings settings) = Request(level);
+        PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { FaceJumps = false });
+        HashSet<(int From, int To)> unturnable = [.. searched.Jumps.Where(j => Far(j) && (Off(j.From, j) > AnimatorEye.TakeoffFacing || Off(j.To, j) > AnimatorEye.LandingFacing)).Select(j => (j.From.Id, j.To.Id))];
+        Assert.That(unturnable, Is.Not.Empty, "the searched path has a jump off its way (else this test shows nothing)");
+
+        PlanResult plan = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { UnfacedJumps = unturnable });
+        Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact), plan.Reason);
+        (float off, float on) = Worst(plan);
+        TestContext.Out.WriteLine($"{level}: {unturnable.Count} jumps left unturned; the path taken: takeoff {off:0}°, landing {on:0}° off, {plan.Moves.Count} moves");
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Jumps.Select(j => (j.From.Id, j.To.Id)).Concat(plan.Moves.SelectMany(m => m.CutFrom)), Has.None.Matches<(int, int)>(unturnable.Contains), "no jump left unturned is flown, whole or cut");
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+        });
+        AuditReport audit = PlanAudit.Check($"{level} searched around", c.Scene, c.From, c.To, plan, null);
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
     }
 
     [Test]
