@@ -23,7 +23,10 @@ namespace Ballistic.Planner.Query;
 /// place, steered like any jump. When the jump cannot be steered from the turned takeoff (or to the turned landing),
 /// the next stance is placed and tried: facing within <see cref="Yaws"/>, then within <see cref="WideYaws"/>, where
 /// the old one stands, then one and two <see cref="HopShift"/> along the jump and back, the start or goal placed again
-/// at the request's point first; a turned end is dropped (kept as searched) only when none steers.
+/// at the request's point first; where no turn into a takeoff links (ground too steep to walk or hop round on) and a
+/// jump lands there, a takeoff turned part of the way back toward that jump (<see cref="RelandYaws"/>), on which the
+/// jump before lands instead, no more than <see cref="StillOffLanding"/> off its own way; a turned end is dropped
+/// (kept as searched) only when none steers.
 /// </summary>
 /// <remarks>
 /// A jump is faced only when every move linking it to the path passes its checks; otherwise it is kept as it was
@@ -253,7 +256,11 @@ internal sealed class JumpFacer
 
         // The takeoff: the start placed again (no moves: the path starts there), else turned where the old one stands
         // (or a little ahead, for a hop) such that the path can turn into it, else where the path stands.
-        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut))) : []);
+        // Where no turned takeoff links (ground too steep to turn on) after a jump landing here, the jump before may
+        // land turned part of the way instead, facing as far toward this jump as its own landing allows.
+        _relanded = null;
+        Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) ? b : null;
+        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut)).Concat(Relandings(landed, current, facing, rejected))) : []);
 
         // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
         Jump? faced = null;
@@ -282,8 +289,13 @@ internal sealed class JumpFacer
             return null;
         }
 
-        // Into the takeoff: the walk before steered to it, else a turn in place (none into the start placed again).
-        if (!Same(faced.From, current) && turnIn is not null)
+        // Into the takeoff: the jump before landing on it (placed so), the walk before steered to it, else a turn in
+        // place (none into the start placed again).
+        if (_relanded is (RoadmapNode relanded, Jump landing) && ReferenceEquals(faced.From, relanded))
+        {
+            result[^1] = landing;
+        }
+        else if (!Same(faced.From, current) && turnIn is not null)
         {
             if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
                 rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
@@ -407,6 +419,51 @@ internal sealed class JumpFacer
                 }
             }
         }
+    }
+
+    /// <summary>Yaws (radians, from a jump's direction toward the way of the jump before) a takeoff the jump before lands on is tried at, in order (<see cref="Relandings"/>): within the eye's 30° at takeoff, turned as far toward the landing as that allows first.</summary>
+    private static readonly float[] RelandYaws = [25f * MathF.PI / 180f, 20f * MathF.PI / 180f, 10f * MathF.PI / 180f, 0f];
+
+    /// <summary>The last takeoff placed by <see cref="Relandings"/> and the jump before steered to land on it.</summary>
+    private (RoadmapNode Node, Jump Landing)? _relanded;
+
+    /// <summary>
+    /// Takeoffs for a jump whose own turned takeoffs do not link, when the jump <paramref name="before"/> it lands
+    /// where the path stands (<paramref name="current"/>): stances placed there facing the jump's way
+    /// (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way (<see cref="RelandYaws"/>), to which <paramref name="before"/> is steered again and lands at most
+    /// <see cref="StillOffLanding"/> off its way; each with no turn in (the jump before lands on it:
+    /// <see cref="_relanded"/>). The two jumps then turn the body between them.
+    /// </summary>
+    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected)
+    {
+        if (before is null)
+        {
+            yield break;
+        }
+
+        Vector3 across = before.Arc.End - before.Arc.Start;
+        float way = MathF.Atan2(across.X, across.Z);
+        float toward = MathF.IEEERemainder(way - facing, 2f * MathF.PI);
+        float sign = toward >= 0f ? 1f : -1f;
+        float[] yaws = [.. RelandYaws.Select(y => y * sign)];
+        EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(Roadmap.CentreOf(current), Placement, facing, yaws, _canStand, Height(current));
+        if (placed.Pose is not { } pose || Refused(pose.Pose))
+        {
+            yield break;
+        }
+
+        var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
+        if (rejected?.Contains((before.From.Id, node.Id)) == true
+            || _scene.Steering.Steer(before.From.Pose, before.From.Cone, node.Pose, node.Cone) is not { Succeeded: true } r
+            || Off(node, MathF.Atan2(r.Arc.End.X - r.Arc.Start.X, r.Arc.End.Z - r.Arc.Start.Z)) > StillOffLanding)
+        {
+            yield break;
+        }
+
+        Jump landing = new Jump(before.From, node, r.Arc) with { CutFrom = before.CutFrom.Count > 0 ? before.CutFrom : [(before.From.Id, before.To.Id)], HoppedFrom = before.HoppedFrom };
+
+        _relanded = (node, landing);
+        yield return (node, []);
     }
 
     /// <summary>Whether <paramref name="pose"/> is where the body could not crouch or absorb for a faced jump before (<see cref="QuerySettings.RefusedTurns"/>).</summary>

@@ -211,6 +211,47 @@ public sealed class JumpFacingTests
     [Test]
     public void ADogThatCannotHopAheadOnASlopeTurnsByAHopBehind()
     {
+        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = CurvedDog(1);
+        (float off, float on) = Worst(plan.Result);
+        TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {plan.Result.Jumps.Count} jumps, {plan.Result.Jumps.Count(j => !Far(j))} of them hops");
+        Assert.Multiple(() =>
+        {
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(plan.Result.Walks, Is.Empty, "the dog does not walk these slopes: it turns by hops");
+        });
+        AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
+        Assert.That(plan.Animation, Is.Not.Null, "the path animates");
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    /// <summary>
+    /// Where a jump takes off from a stance on a slope the dog can neither walk nor hop round on (its turned takeoffs
+    /// link by no hop: the cones there hold none), the jump before it lands turned toward it instead, as far as that
+    /// landing may be off its own way: both face their way within the eye's limits (the takeoff 98° off before).
+    /// </summary>
+    [Test]
+    public void AJumpTakingOffWhereTheBodyCannotTurnIsLandedOnTurnedTowardIt()
+    {
+        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = CurvedDog(2);
+        (float off, float on) = Worst(plan.Result);
+        Jump[] jumps = [.. plan.Result.Jumps];
+        TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {jumps.Length} jumps");
+        Assert.Multiple(() =>
+        {
+            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
+            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
+            Assert.That(Enumerable.Range(1, jumps.Length - 1).Any(i => Far(jumps[i - 1]) && Far(jumps[i]) && jumps[i].From == jumps[i - 1].To && Off(jumps[i].From, jumps[i - 1]) > JumpFacer.LandingTurn * 180f / MathF.PI),
+                Is.True, "some far jump lands turned toward the far jump it takes off for");
+        });
+        AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
+        Assert.That(plan.Animation, Is.Not.Null, "the path animates");
+        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+    }
+
+    /// <summary>The dog's animated plan of the curved terrain's request <paramref name="request"/>, as the sweep makes it.</summary>
+    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) CurvedDog(int request)
+    {
         (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-dog-{Guid.NewGuid():N}");
         Sweep.Setup setup;
@@ -224,20 +265,10 @@ public sealed class JumpFacingTests
             Directory.Delete(folder, recursive: true);
         }
 
-        (Vector3 from, Vector3 to) = requests[1];
+        (Vector3 from, Vector3 to) = requests[request];
         (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
-        (float off, float on) = Worst(plan.Result);
-        TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {plan.Result.Jumps.Count} jumps, {plan.Result.Jumps.Count(j => !Far(j))} of them hops");
-        Assert.Multiple(() =>
-        {
-            Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
-            Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
-            Assert.That(plan.Result.Walks, Is.Empty, "the dog does not walk these slopes: it turns by hops");
-        });
-        AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
-        Assert.That(plan.Animation, Is.Not.Null, "the path animates");
-        Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+        return (setup, from, to, plan);
     }
 
     [Test]
