@@ -259,7 +259,7 @@ internal sealed class JumpFacer
         // Where no turned takeoff links (ground too steep to turn on) after a jump landing here, the jump before may
         // land turned part of the way instead, facing as far toward this jump as its own landing allows.
         _relanded = null;
-        Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) ? b : null;
+        Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) && Far(b) ? b : null;
         var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut)).Concat(Relandings(landed, current, facing, rejected))) : []);
 
         // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
@@ -428,11 +428,13 @@ internal sealed class JumpFacer
     private (RoadmapNode Node, Jump Landing)? _relanded;
 
     /// <summary>
-    /// Takeoffs for a jump whose own turned takeoffs do not link, when the jump <paramref name="before"/> it lands
-    /// where the path stands (<paramref name="current"/>): stances placed there facing the jump's way
-    /// (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way (<see cref="RelandYaws"/>), to which <paramref name="before"/> is steered again and lands at most
-    /// <see cref="StillOffLanding"/> off its way; each with no turn in (the jump before lands on it:
-    /// <see cref="_relanded"/>). The two jumps then turn the body between them.
+    /// Takeoffs for a jump whose own turned takeoffs do not link, when the jump <paramref name="before"/> it (one
+    /// travelling <see cref="MinDistance"/> or more, not a turn hop, which has checks of its own) lands where the
+    /// path stands (<paramref name="current"/>): stances placed there facing the jump's way
+    /// (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way (<see cref="RelandYaws"/>), to
+    /// which <paramref name="before"/> is steered again and lands at most <see cref="StillOffLanding"/> off its way;
+    /// each with no turn in (the jump before lands on it: <see cref="_relanded"/>). The two jumps then turn the body
+    /// between them.
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected)
     {
