@@ -169,10 +169,12 @@ internal sealed class JumpFacer
     /// <summary>Whether <paramref name="jump"/> takes off or lands further off its way than a viewer accepts (<see cref="StillOffTakeoff"/>, <see cref="StillOffLanding"/>).</summary>
     private static bool StillOff(Jump jump)
     {
-        Vector3 across = jump.Arc.End - jump.Arc.Start;
-        float facing = MathF.Atan2(across.X, across.Z);
+        float facing = Way(jump.Arc);
         return Off(jump.From, facing) > StillOffTakeoff || Off(jump.To, facing) > StillOffLanding;
     }
+
+    /// <summary>The yaw (radians about +Y, 0 along +Z) of <paramref name="arc"/>'s direction across, from takeoff to landing.</summary>
+    private static float Way(BallisticArc arc) => MathF.Atan2(arc.End.X - arc.Start.X, arc.End.Z - arc.Start.Z);
 
     /// <summary>Whether <paramref name="jump"/> travels far enough across to need facing.</summary>
     private static bool Far(Jump jump)
@@ -238,8 +240,7 @@ internal sealed class JumpFacer
     /// </summary>
     private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal)
     {
-        Vector3 across = jump.Arc.End - jump.Arc.Start;
-        float facing = MathF.Atan2(across.X, across.Z);
+        float facing = Way(jump.Arc);
         bool turnOff = Off(current, facing) > TakeoffTurn;
         bool turnOn = Off(jump.To, facing) > LandingTurn;
         if (!turnOff && !turnOn)
@@ -443,9 +444,7 @@ internal sealed class JumpFacer
             yield break;
         }
 
-        Vector3 across = before.Arc.End - before.Arc.Start;
-        float way = MathF.Atan2(across.X, across.Z);
-        float toward = MathF.IEEERemainder(way - facing, 2f * MathF.PI);
+        float toward = MathF.IEEERemainder(Way(before.Arc) - facing, 2f * MathF.PI);
         float sign = toward >= 0f ? 1f : -1f;
         float[] yaws = [.. RelandYaws.Select(y => y * sign)];
         EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(Roadmap.CentreOf(current), Placement, facing, yaws, _canStand, Height(current));
@@ -457,7 +456,7 @@ internal sealed class JumpFacer
         var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         if (rejected?.Contains((before.From.Id, node.Id)) == true
             || _scene.Steering.Steer(before.From.Pose, before.From.Cone, node.Pose, node.Cone) is not { Succeeded: true } r
-            || Off(node, MathF.Atan2(r.Arc.End.X - r.Arc.Start.X, r.Arc.End.Z - r.Arc.Start.Z)) > StillOffLanding)
+            || Off(node, Way(r.Arc)) > StillOffLanding)
         {
             yield break;
         }
