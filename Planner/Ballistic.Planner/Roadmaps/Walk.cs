@@ -25,6 +25,8 @@ public sealed record Walk : Move
     private readonly float[] _distances;
     private readonly Quaternion _startHeading;
     private readonly Quaternion _endHeading;
+    private readonly Vector3 _startUpright;
+    private readonly Vector3 _endUpright;
     private readonly float _acceleration;
     private readonly float _cruise;
     private readonly float _ramp;
@@ -85,6 +87,8 @@ public sealed record Walk : Move
         _endHeading = Upright(HeadingAt(Length));
         StartTurn = TurnTime(Rotations.AngleBetween(from.Pose.Rotation, _startHeading));
         EndTurn = TurnTime(Rotations.AngleBetween(_endHeading, to.Pose.Rotation));
+        _startUpright = StoodUp(StartOffset, from.Pose.Rotation);
+        _endUpright = StoodUp(EndOffset, to.Pose.Rotation);
 
         // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway.
         _acceleration = speed / RampTime;
@@ -148,6 +152,12 @@ public sealed record Walk : Move
 
     /// <summary>The trunk centre's offset from the path's last point at the end (the second stance's), world metres.</summary>
     public Vector3 EndOffset { get; }
+
+    /// <summary>
+    /// The horizontal distance (metres) the trunk centre moves while it turns in place at either end, summed: a stance
+    /// whose trunk leans with a slope stands up over its contacts as it turns to walk (<see cref="PoseAt"/>).
+    /// </summary>
+    internal float TurnTravel => Horizontal(StartOffset - _startUpright).Length() + Horizontal(EndOffset - _endUpright).Length();
 
     /// <summary>Distance walked along the path at <paramref name="time"/> seconds after the walk starts (clamped to the walk), metres.</summary>
     public float DistanceAt(float time)
@@ -248,26 +258,28 @@ public sealed record Walk : Move
 
     /// <summary>
     /// The trunk's walking pose <paramref name="distance"/> metres along the path (clamped): the ground point plus the
-    /// stance offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt"/> upright. Its
-    /// position is exactly <see cref="From"/>'s at 0 and <see cref="To"/>'s at the end; the stances' orientations are
-    /// turned to in place (<see cref="PoseAt"/>).
+    /// upright trunk's offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt"/> upright.
+    /// The upright offset of a stance is its own offset turned as the stance's trunk stands up (the shortest rotation
+    /// bringing its up axis to the world's), at the stance's height above the ground point: a trunk leaning with a
+    /// slope stands over its contacts to walk, not beside them. It is the stance's offset itself when the trunk does
+    /// not lean, so the position is exactly <see cref="From"/>'s at 0 and <see cref="To"/>'s at the end of a walk
+    /// between such stances. Turns in place are in <see cref="PoseAt"/>.
     /// </summary>
     public RootPose PoseAtDistance(float distance)
     {
         distance = Math.Clamp(distance, 0f, Length);
         float u = Length > 0f ? distance / Length : 1f;
-        Vector3 position = distance <= 0f ? From.Pose.Position
-            : distance >= Length ? To.Pose.Position
-            : PointAt(distance) + Vector3.Lerp(StartOffset, EndOffset, Smooth(u));
+        Vector3 position = PointAt(distance) + Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
         Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance));
         return new RootPose(position, rotation);
     }
 
     /// <summary>
     /// The trunk's pose <paramref name="time"/> seconds after the walk starts (clamped to the walk): turning in place
-    /// at <see cref="From"/>'s position during <see cref="StartTurn"/>, then <see cref="PoseAtDistance"/> at
-    /// <see cref="DistanceAt"/>, then turning in place at <see cref="To"/>'s position. Exactly <see cref="From"/>'s
-    /// pose at 0 and <see cref="To"/>'s at <see cref="Duration"/>.
+    /// during <see cref="StartTurn"/> from <see cref="From"/>'s pose to <see cref="PoseAtDistance"/> at 0 (standing
+    /// up over the contacts as it turns), then <see cref="PoseAtDistance"/> at <see cref="DistanceAt"/>, then turning
+    /// in place to <see cref="To"/>'s pose. Exactly <see cref="From"/>'s pose at 0 and <see cref="To"/>'s at
+    /// <see cref="Duration"/>.
     /// </summary>
     public RootPose PoseAt(float time)
     {
@@ -283,17 +295,32 @@ public sealed record Walk : Move
 
         if (time < StartTurn)
         {
-            return new RootPose(From.Pose.Position, Quaternion.Normalize(Quaternion.Slerp(From.Pose.Rotation, _startHeading, Smooth(time / StartTurn))));
+            float s = Smooth(time / StartTurn);
+            return new RootPose(Vector3.Lerp(From.Pose.Position, _path[0] + _startUpright, s), Quaternion.Normalize(Quaternion.Slerp(From.Pose.Rotation, _startHeading, s)));
         }
 
         float end = StartTurn + WalkTime;
         if (time > end && EndTurn > 0f)
         {
-            return new RootPose(To.Pose.Position, Quaternion.Normalize(Quaternion.Slerp(_endHeading, To.Pose.Rotation, Smooth((time - end) / EndTurn))));
+            float s = Smooth((time - end) / EndTurn);
+            return new RootPose(Vector3.Lerp(_path[^1] + _endUpright, To.Pose.Position, s), Quaternion.Normalize(Quaternion.Slerp(_endHeading, To.Pose.Rotation, s)));
         }
 
         return PoseAtDistance(DistanceAt(time));
     }
+
+    /// <summary>
+    /// The offset <paramref name="offset"/> (world metres) of a trunk turned <paramref name="rotation"/> from the
+    /// ground point under its contacts, once the trunk stands up: turned by the shortest rotation that brings the
+    /// trunk's up axis to the world's, at the same height. The offset itself for a trunk that does not lean.
+    /// </summary>
+    private static Vector3 StoodUp(Vector3 offset, Quaternion rotation)
+    {
+        Vector3 v = Vector3.Transform(offset, Quaternion.Conjugate(Rotations.AlignUp(Vector3.Transform(Vector3.UnitY, rotation))));
+        return new Vector3(v.X, offset.Y, v.Z);
+    }
+
+    private static Vector3 Horizontal(Vector3 v) => new(v.X, 0f, v.Z);
 
     /// <summary>Upright rotation facing the horizontal direction <paramref name="heading"/>.</summary>
     private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));

@@ -234,7 +234,7 @@ public sealed class WalkSteering
     public bool TrunkIsFree(Walk walk)
     {
         float spacing = MathF.Min(_trunkHalfExtents.X, MathF.Min(_trunkHalfExtents.Y, _trunkHalfExtents.Z));
-        float travel = walk.Length + ((walk.StartTurn + walk.EndTurn) * walk.TurnRate * _trunkHalfExtents.Length());
+        float travel = walk.Length + walk.TurnTravel + ((walk.StartTurn + walk.EndTurn) * walk.TurnRate * _trunkHalfExtents.Length());
         int steps = Math.Max(1, (int)MathF.Ceiling(travel / spacing));
         for (int i = 0; i < steps; i++)
         {

@@ -94,12 +94,13 @@ public sealed class DebugLines
     }
 
     /// <summary>
-    /// A walk as the path of its trunk centre (<see cref="Walk.PoseAtDistance"/>, from the first stance's trunk centre
-    /// to the last's), dashed: the path cut into an odd number of equal lengths of about
-    /// <see cref="DebugDrawSettings.WalkDashLength"/>, every other one drawn as a straight segment between its ends,
-    /// the first and the last included (at most <see cref="DebugDrawSettings.MaxSegmentsPerWalk"/> dashes). With a
-    /// dash length of 0, a solid polyline of about <see cref="DebugDrawSettings.SegmentLength"/> segments. Every vertex
-    /// lies exactly on the trunk's path.
+    /// A walk as the path of its trunk centre, from the first stance's trunk centre to the last's: where the trunk
+    /// moves as it turns in place at either end (standing up over its contacts from a stance leaning with a slope), a
+    /// straight segment; along the ground path (<see cref="Walk.PoseAtDistance"/>), dashed: the path cut into an odd
+    /// number of equal lengths of about <see cref="DebugDrawSettings.WalkDashLength"/>, every other one drawn as a
+    /// straight segment between its ends, the first and the last included (at most
+    /// <see cref="DebugDrawSettings.MaxSegmentsPerWalk"/> dashes). With a dash length of 0, a solid polyline of about
+    /// <see cref="DebugDrawSettings.SegmentLength"/> segments. Every vertex lies exactly on the trunk's path.
     /// </summary>
     public DebugLineRange AddWalk(Walk walk, DebugColor color, DebugDrawSettings? settings = null)
     {
@@ -107,10 +108,17 @@ public sealed class DebugLines
         settings = Checked(settings);
         int first = _segments;
         float length = walk.Length;
+        Vector3 walking = walk.PoseAtDistance(0f).Position;
+        Vector3 stopped = walk.PoseAtDistance(length).Position;
+        if (walk.From.Pose.Position != walking)
+        {
+            AddSegment(walk.From.Pose.Position, walking, color);
+        }
+
         if (settings.WalkDashLength <= 0f)
         {
             int n = Pieces(length, settings.SegmentLength, settings.MaxSegmentsPerWalk);
-            Vector3 previous = walk.PoseAtDistance(0f).Position;
+            Vector3 previous = walking;
             for (int k = 1; k <= n; k++)
             {
                 Vector3 next = walk.PoseAtDistance(k == n ? length : length * k / n).Position;
@@ -126,6 +134,11 @@ public sealed class DebugLines
             {
                 AddSegment(walk.PoseAtDistance(length * k / pieces).Position, walk.PoseAtDistance(k + 1 == pieces ? length : length * (k + 1) / pieces).Position, color);
             }
+        }
+
+        if (stopped != walk.To.Pose.Position)
+        {
+            AddSegment(stopped, walk.To.Pose.Position, color);
         }
 
         return new DebugLineRange(first, _segments - first);

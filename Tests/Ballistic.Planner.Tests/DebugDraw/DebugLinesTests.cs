@@ -181,9 +181,12 @@ public sealed class DebugLinesTests
         DebugLineRange dashes = lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings);
         ReadOnlySpan<Vector3> v = lines.VerticesOf(dashes);
 
-        // An odd number of equal pieces of about 0.1 m, every other one drawn, the first and the last included.
+        // Where the trunk moves as it turns in place at either end (standing up over the contacts), a segment; along
+        // the ground path, an odd number of equal pieces of about 0.1 m, every other one drawn, the first and the last included.
+        int head = walk.From.Pose.Position != walk.PoseAtDistance(0f).Position ? 1 : 0;
+        int tail = walk.To.Pose.Position != walk.PoseAtDistance(walk.Length).Position ? 1 : 0;
         int pieces = (int)MathF.Ceiling(walk.Length / 0.1f) | 1;
-        Assert.That(dashes.Count, Is.EqualTo((pieces + 1) / 2));
+        Assert.That(dashes.Count, Is.EqualTo(((pieces + 1) / 2) + head + tail));
         Assert.That(v[0], Is.EqualTo(walk.From.Pose.Position), "starts on the first stance's trunk centre");
         Assert.That(v[^1], Is.EqualTo(walk.To.Pose.Position), "ends on the last stance's trunk centre");
         float drawn = 0f;
@@ -192,12 +195,12 @@ public sealed class DebugLinesTests
             Assert.That(DistanceToWalk(walk, v[i]), Is.LessThan(1e-4f), $"vertex {i} on the trunk's path");
         }
 
-        for (int k = 0; k < dashes.Count; k++)
+        for (int k = head; k < dashes.Count - tail; k++)
         {
             float dash = Vector3.Distance(v[2 * k], v[(2 * k) + 1]);
             Assert.That(dash, Is.LessThanOrEqualTo((walk.Length / pieces) + 1e-4f), $"dash {k}");
             drawn += dash;
-            if (k > 0)
+            if (k > head)
             {
                 Assert.That(Vector3.Distance(v[(2 * k) - 1], v[2 * k]), Is.GreaterThan(0.5f * walk.Length / pieces), $"a gap before dash {k}");
             }
@@ -209,10 +212,10 @@ public sealed class DebugLinesTests
         lines.Clear();
         DebugLineRange solid = lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings with { WalkDashLength = 0f, SegmentLength = 0.2f });
         v = lines.VerticesOf(solid);
-        Assert.That(solid.Count, Is.EqualTo((int)MathF.Ceiling(walk.Length / 0.2f)));
+        Assert.That(solid.Count, Is.EqualTo((int)MathF.Ceiling(walk.Length / 0.2f) + head + tail));
         for (int k = 0; k < solid.Count; k++)
         {
-            Assert.That(Vector3.Distance(v[2 * k], v[(2 * k) + 1]), Is.LessThanOrEqualTo(0.2f + 1e-4f));
+            Assert.That(Vector3.Distance(v[2 * k], v[(2 * k) + 1]), Is.LessThanOrEqualTo(k < head || k >= solid.Count - tail ? walk.TurnTravel + 1e-4f : 0.2f + 1e-4f));
             Assert.That(DistanceToWalk(walk, v[(2 * k) + 1]), Is.LessThan(1e-4f));
             if (k > 0)
             {
@@ -222,7 +225,7 @@ public sealed class DebugLinesTests
 
         // The cap: a long walk keeps at most MaxSegmentsPerWalk dashes.
         lines.Clear();
-        Assert.That(lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings with { WalkDashLength = 0.001f, MaxSegmentsPerWalk = 7 }).Count, Is.EqualTo(7));
+        Assert.That(lines.AddWalk(walk, DebugPalette.GodotDefaults.Path, settings with { WalkDashLength = 0.001f, MaxSegmentsPerWalk = 7 }).Count, Is.EqualTo(7 + head + tail));
         Assert.That(new DebugDrawSettings { WalkDashLength = -1f }.Problem(), Does.Contain("dash"));
         Assert.That(new DebugDrawSettings { MaxSegmentsPerWalk = 0 }.Problem(), Does.Contain("per walk"));
     }
@@ -325,12 +328,14 @@ public sealed class DebugLinesTests
     private static float DistanceToWalk(Walk walk, Vector3 p)
     {
         int n = Math.Max(1, (int)MathF.Ceiling(walk.Length / 1e-3f));
-        var points = new Vector3[n + 1];
+        var points = new Vector3[n + 3];
+        points[0] = walk.From.Pose.Position;
         for (int k = 0; k <= n; k++)
         {
-            points[k] = walk.PoseAtDistance(walk.Length * k / n).Position;
+            points[k + 1] = walk.PoseAtDistance(walk.Length * k / n).Position;
         }
 
+        points[^1] = walk.To.Pose.Position;
         return WalkingPaths.DistanceToPolyline(p, points);
     }
 

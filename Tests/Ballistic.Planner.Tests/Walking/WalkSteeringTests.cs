@@ -96,13 +96,48 @@ public sealed class WalkSteeringTests
         });
     }
 
-    [Test]
-    public void TheTrunkTurnsInPlaceThenSpeedsUpFromRestAndSlowsDownToRest()
+    /// <summary>Two upright stances 3.7 m apart on the gap course's first platform and the walk steered between them.</summary>
+    private static (PlanningScene Scene, RoadmapNode A, RoadmapNode B, Walk Walk) TwoStancesOnTheGapCourse()
     {
         var scene = PlanningScene.Create(GapCourse.Build(), Skeleton);
         RoadmapNode a = Stance(scene, new Vector3(-7f, 0f, -1f), 0);
         RoadmapNode b = Stance(scene, new Vector3(-3.6f, 0f, 1.2f), 1);
-        Walk walk = scene.Walking.Steer(a, b).Walk!;
+        return (scene, a, b, scene.Walking.Steer(a, b).Walk!);
+    }
+
+    [Test]
+    public void AStanceLeaningWithASlopeStandsUpOverItsContactsAsItTurnsToWalk()
+    {
+        // A stance whose trunk leans 20° sideways (as stances on a dune face are sampled): its trunk centre stands
+        // about 0.4 m to the side of its contacts. The walking trunk is upright over them, not beside them (its feet
+        // would cross under it), and it gets there while it turns in place, without a jump in its path.
+        (_, RoadmapNode a, RoadmapNode b, Walk upright) = TwoStancesOnTheGapCourse();
+        Vector3 centre = upright.Path[0];
+        Quaternion lean = Quaternion.CreateFromAxisAngle(a.Pose.Forward, 20f * MathF.PI / 180f);
+        RoadmapNode leaning = a with { Pose = new RootPose(centre + Vector3.Transform(a.Pose.Position - centre, lean), Quaternion.Normalize(lean * a.Pose.Rotation)) };
+        var walk = new Walk(leaning, b, upright.Path, upright.Speed, turnRate: upright.TurnRate);
+        static float Across(Vector3 v) => new Vector2(v.X, v.Z).Length();
+        RootPose set = walk.PoseAt(walk.StartTurn);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Across(leaning.Pose.Position - centre), Is.GreaterThan(0.3f), "the leaning trunk stands beside its contacts");
+            Assert.That(walk.PoseAt(0f), Is.EqualTo(leaning.Pose));
+            Assert.That(set.Up.Y, Is.GreaterThan(0.9999f), "upright when it sets off");
+            Assert.That(Across(set.Position - centre), Is.LessThanOrEqualTo(Across(a.Pose.Position - centre) + 1e-3f), "over its contacts as the upright stance is");
+            Assert.That(set.Position.Y, Is.EqualTo(leaning.Pose.Position.Y).Within(1e-4f), "at the stance's height");
+            Assert.That(walk.TurnTravel, Is.GreaterThanOrEqualTo(Across(leaning.Pose.Position - set.Position) - 1e-4f), "the trunk-collision check allows for the move");
+            for (int k = 1; k <= 100; k++)
+            {
+                float t = walk.StartTurn * k / 100f;
+                Assert.That(Vector3.Distance(walk.PoseAt(t).Position, walk.PoseAt(t - (walk.StartTurn / 100f)).Position), Is.LessThan(0.02f), $"no jump in the trunk's path at {t:0.00} s");
+            }
+        });
+    }
+
+    [Test]
+    public void TheTrunkTurnsInPlaceThenSpeedsUpFromRestAndSlowsDownToRest()
+    {
+        (PlanningScene scene, RoadmapNode a, _, Walk walk) = TwoStancesOnTheGapCourse();
         Vector3 h = Vector3.Normalize(new Vector3(walk.Path[^1].X - walk.Path[0].X, 0f, walk.Path[^1].Z - walk.Path[0].Z));
         float turn = 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a.Pose.Rotation, Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(h.X, h.Z)))), 0f, 1f));
         float speed = Skeleton.Walking.Speed;
