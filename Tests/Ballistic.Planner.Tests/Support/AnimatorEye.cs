@@ -863,7 +863,7 @@ internal sealed class AnimatorEye
     /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes; <see cref="LevelFooting"/>: the feet then held level with each other), the median
     /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L; the hips (in
     /// the world) rising and falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about the
-    /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade); a biped (two feet) at most <see cref="MostCadence"/> foot placements
+    /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade; read where the level ground spans at least a stride); a biped (two feet) at most <see cref="MostCadence"/> foot placements
     /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back), read where the
@@ -987,9 +987,15 @@ internal sealed class AnimatorEye
                     residual[k] = heights[k] - ((sy - (slope * st)) / n);
                 }
 
+                // Read, like the arms' swing, over a whole stride of the first leg (a step of each foot): level ground
+                // that spans less sees only part of the rise and fall (the desert skeleton's first walk read 0.010 L
+                // over 0.32 s, less than its 0.46 s step; the demo's first 0.019 L over 0.33 s, under its stride).
                 Array.Sort(residual);
                 float bob = residual[(int)(0.95f * (residual.Length - 1))] - residual[(int)(0.05f * (residual.Length - 1))];
-                look.Bob.Add(MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f)), $"{name}'s hips rise and fall {bob:0.000} L");
+                if (times[^1] - times[0] >= Stride(animation, m, 0))
+                {
+                    look.Bob.Add(MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f)), $"{name}'s hips rise and fall {bob:0.000} L ({times[^1] - times[0]:0.00} s of level ground)");
+                }
                 for (int a = 0; a < _arms.Length; a++)
                 {
                     // An arm's swing is read over a whole stride of its leg (from one placement of the foot to its
