@@ -171,7 +171,7 @@ internal sealed class WalkGait
     private readonly CharacterModel _model;
     private readonly ContactGenerator _contacts;
     private readonly SoleHold _sole;
-    private readonly Func<Vector3, bool> _onGround;
+    private readonly Func<Vector3, Vector3?> _groundUnder;
     private readonly LimbIk _swingIk;
     private readonly BodyCollision _collision;
     private readonly FreeBones _free;
@@ -213,7 +213,7 @@ internal sealed class WalkGait
         _model = model;
         _contacts = contacts;
         _sole = new SoleHold(model.Rig);
-        _onGround = OnGround;
+        _groundUnder = GroundUnder;
         _swingIk = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = SwingTolerance, NormalTolerance = MathF.PI / 6f });
         _collision = contacts.Collision;
         _free = new FreeBones(model, _collision);
@@ -483,11 +483,11 @@ internal sealed class WalkGait
     }
 
     /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>, or rolled onto its ball where it cannot lie flat (<see cref="SoleHold"/>).</summary>
-    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null) => _sole.Hold(root, q, limb, point, normal, _onGround, ball);
+    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null) => _sole.Hold(root, q, limb, point, normal, _groundUnder, ball);
 
-    /// <summary>True when a point (world metres) lies on the level's surface, within <see cref="Touch"/> (a rolling foot's ball never rests on air).</summary>
-    private bool OnGround(Vector3 point) =>
-        _scene.Bvh.Raycast(point + (Vector3.UnitY * Touch), -Vector3.UnitY, 2f * Touch, out RayHit hit) && _scene.Surfaces.SurfaceOf(hit.Triangle) >= 0;
+    /// <summary>The level's surface under a point (world metres) within <see cref="Touch"/> of it, straight down; <c>null</c> where there is none there (a rolling foot's ball never rests on air).</summary>
+    private Vector3? GroundUnder(Vector3 point) =>
+        _scene.Bvh.Raycast(point + (Vector3.UnitY * Touch), -Vector3.UnitY, 2f * Touch, out RayHit hit) && _scene.Surfaces.SurfaceOf(hit.Triangle) >= 0 ? hit.Point : null;
 
     private static float Smooth(float x) => Easing.Smooth(x);
 
@@ -751,6 +751,7 @@ internal sealed class WalkGait
             _gait._free.Clear(seconds, i => _roots[i], _angles);
             var frames = new AnimationFrame[_steps + 1];
             bool trunkReported = false;
+            var held = new List<Vector3>();
             for (int i = 0; i <= _steps; i++)
             {
                 frames[i] = new AnimationFrame(Time(i), _roots[i], _angles[i]);
@@ -764,6 +765,29 @@ internal sealed class WalkGait
                     {
                         trunkReported = true;
                         _problems.Add(new JumpProblem(_move, $"bone '{_rig.Joints[bone].Name}' passes through the level {Time(i):0.000} s into the walk", _walk.DistanceAt(Time(i))));
+                    }
+                }
+
+                // Each limb's sole (its effector joint to its contact point) clear of the level but near a contact held
+                // then, as an importer sees the frame: the limbs' own checks allow for their IK's tolerance at their
+                // own contact, this one for no more than a centimetre at any.
+                float t = Time(i);
+                held.Clear();
+                foreach (ContactPhase phase in _phases)
+                {
+                    if (t >= phase.From - 1e-4f && t <= phase.To + 1e-4f)
+                    {
+                        held.Add(phase.Position);
+                    }
+                }
+
+                for (int l = 0; l < _limbs; l++)
+                {
+                    RigLimb limb = _model.Limbs[l];
+                    if (SoleThrough(_positions[limb.EffectorJoint], limb.EffectorPosition(_positions, _rotations), held))
+                    {
+                        _colliding[i] = true;
+                        Fail(l, "sole passes through the level", i);
                     }
                 }
             }
@@ -891,22 +915,37 @@ internal sealed class WalkGait
 
                 float want = target - ((hips / feet) - (heldY / held));
                 raw[i] = Math.Clamp(MathF.Min(want, lift), 0f, target) * w;
-                height[i] = (hips / feet) - (heldY / held) + raw[i];
+                height[i] = _roots[i].Position.Y + raw[i];
                 measured[i] = true;
             }
 
             // The hips rise and fall at most MostBob of the leg within a step either way (a walker's pelvis bobs 4–5
-            // cm): the peaks over each foot are kept within that of the dips between the steps.
+            // cm): the peaks over each foot are kept within that of the dips between the steps, as the eye sees them,
+            // in the world about the walk's own grade there (not over the held feet, whose mean jumps as a foot lands
+            // higher up a dune: the desert skeleton's hips popped 0.1 L where a step up let them).
             int window = Math.Max(1, (int)MathF.Round(_step / _walk.Speed / _h));
             float bob = MostBob * _gait._restLeg;
+            float[] capped = (float[])raw.Clone();
             for (int i = 0; i <= _steps; i++)
             {
                 if (measured[i])
                 {
-                    float floor = Within(height, measured, i, window).Low;
-                    raw[i] = MathF.Max(0f, raw[i] - MathF.Max(0f, height[i] - (floor + bob)));
+                    float slope = Grade(measured, i, window);
+                    float above = height[i];
+                    float floor = above;
+                    for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+                    {
+                        if (measured[j])
+                        {
+                            floor = MathF.Min(floor, height[j] - (slope * (j - i)));
+                        }
+                    }
+
+                    capped[i] = MathF.Max(0f, raw[i] - MathF.Max(0f, above - (floor + bob)));
                 }
             }
+
+            raw = capped;
 
             // The hips dip at least LeastBob of the leg as the feet change over (both groups down, legs apart) below
             // their height mid-step (one group down, under the hips), as far as the walk is at speed: a walker vaults
@@ -989,17 +1028,17 @@ internal sealed class WalkGait
                 return float.NegativeInfinity;
             }
 
-            Vector3 ball = ankle + Vector3.Transform(offset, rotation);
-            Vector3 toBall = ball - point;
+            Vector3 flat = ankle + Vector3.Transform(offset, rotation);
+            Vector3 toBall = flat - point;
             toBall.Y = 0f;
-            if (toBall.LengthSquared() < 1e-8f || !_gait._onGround(ball))
+            if (toBall.LengthSquared() < 1e-8f || _gait._groundUnder(flat) is not Vector3 ball)
             {
                 return float.NegativeInfinity;
             }
 
             // The heel rises about the ball's side axis: of the two senses of turning, the one that lifts the ankle.
             Vector3 side = Vector3.Normalize(Vector3.Cross(Vector3.UnitY, toBall));
-            Vector3 back = ankle - ball;
+            Vector3 back = ankle - flat;
             float best = float.NegativeInfinity;
             for (int k = 1; k <= RollTries; k++)
             {
@@ -1010,6 +1049,24 @@ internal sealed class WalkGait
             }
 
             return best;
+        }
+
+        /// <summary>The walk's own grade at fine step <paramref name="i"/>: the slope (metres per fine step) of the straight line fitted through the unlifted roots' heights at the measured steps within <paramref name="window"/> of it.</summary>
+        private float Grade(bool[] measured, int i, int window)
+        {
+            (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
+            for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
+            {
+                if (measured[j])
+                {
+                    float x = j - i;
+                    float y = _roots[j].Position.Y;
+                    (n, sx, sy, sxx, sxy) = (n + 1f, sx + x, sy + y, sxx + (x * x), sxy + (x * y));
+                }
+            }
+
+            float spread = (n * sxx) - (sx * sx);
+            return spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
         }
 
         /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>
@@ -1112,6 +1169,33 @@ internal sealed class WalkGait
             _troubles.Add(Time(step));
             float distance = _walk.DistanceAt(Time(step));
             _failures[(limb, kind)] = _failures.TryGetValue((limb, kind), out (float Distance, int Count) f) ? (MathF.Min(f.Distance, distance), f.Count + 1) : (distance, 1);
+        }
+
+        /// <summary>
+        /// True when the segment from <paramref name="a"/> to <paramref name="b"/> (a sole) meets the level farther
+        /// than a centimetre (and a sixteenth of its length) from every point of <paramref name="held"/>.
+        /// </summary>
+        private bool SoleThrough(Vector3 a, Vector3 b, List<Vector3> held)
+        {
+            const int pieces = 16;
+            TriangleBvh bvh = _gait._scene.Bvh;
+            if (!bvh.Raycast(a, b - a, 1f, out _))
+            {
+                return false;
+            }
+
+            float near = 0.01f + (Vector3.Distance(a, b) / pieces);
+            for (int k = 0; k < pieces; k++)
+            {
+                Vector3 p = Vector3.Lerp(a, b, k / (float)pieces);
+                Vector3 q = Vector3.Lerp(a, b, (k + 1) / (float)pieces);
+                if (bvh.Raycast(p, q - p, 1f, out RayHit hit) && !held.Any(c => Vector3.Distance(hit.Point, c) <= near))
+                {
+                    return true;
+                }
+            }
+
+            return false;
         }
 
         private static Vector3 Forward(RootPose root)

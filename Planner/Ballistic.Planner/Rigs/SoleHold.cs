@@ -8,15 +8,15 @@ namespace Ballistic.Planner.Rigs;
 /// against the surface, as flat as <see cref="FlatTolerance"/> when it can, else within the IK's default 15°; joints
 /// at their limits are released so the others make up for them (<see cref="IkSettings.ReleaseLimits"/>). One rule
 /// for the gait that holds the feet and for <see cref="ReducedModelBuilder.WalkableSlope"/>, which asks where it
-/// can. A walking foot may also roll onto its ball (<see cref="Hold"/> with <c>rollOnto</c>). Thread-safe.
+/// can. A walking foot may also roll onto its ball (<see cref="Hold"/> with <c>groundUnder</c>). Thread-safe.
 /// </summary>
 internal sealed class SoleHold
 {
     /// <summary>How far a held sole may tilt from the ground when it can lie flat, radians (5°).</summary>
     public const float FlatTolerance = 5f * MathF.PI / 180f;
 
-    /// <summary>Most a rolling foot's heel rises, radians (36°): a walker's trailing foot peels off its heel before it swings.</summary>
-    public const float MostRoll = 36f * MathF.PI / 180f;
+    /// <summary>Most a rolling foot's heel rises, radians (30°): a walker's trailing foot peels off its heel before it swings.</summary>
+    public const float MostRoll = 30f * MathF.PI / 180f;
 
     /// <summary>The heel's rise is tried in steps of this (radians, 6°), least first: it rises no more than the hold needs.</summary>
     private const float RollStep = 6f * MathF.PI / 180f;
@@ -48,21 +48,21 @@ internal sealed class SoleHold
     /// Moves <paramref name="limb"/>'s angles in <paramref name="q"/> (updated only on success) so that its contact point
     /// lies on <paramref name="point"/> (world metres) with its contact face against ground of normal
     /// <paramref name="groundNormal"/> (world, unit, pointing out of the ground); true when it does. With
-    /// <paramref name="rollOnto"/>, where the sole cannot lie flat the foot may instead keep its ball where it is when the
-    /// sole lies flat on <paramref name="point"/> (facing as the foot faces in <paramref name="q"/>; only where
-    /// <paramref name="rollOnto"/> accepts that point as ground; at <paramref name="ball"/> when given: where a hold
-    /// that has rolled first put it, so the foot does not swivel off it, and then the foot stays on its ball, its heel
-    /// lowering as far as the hold allows, rather than dropping flat at once), the heel raised
+    /// <paramref name="groundUnder"/>, where the sole cannot lie flat the foot may instead put its ball on the ground
+    /// where it is when the sole lies flat on <paramref name="point"/> (facing as the foot faces in <paramref name="q"/>;
+    /// on the level point <paramref name="groundUnder"/> gives under it, none: no roll; at <paramref name="ball"/> when
+    /// given: where a hold that has rolled first put it, so the foot does not swivel off it, and then the foot stays on
+    /// its ball, its heel lowering as far as the hold allows, rather than dropping flat at once), the heel raised
     /// up to <see cref="MostRoll"/> (<see cref="RigLimb.Ball"/>; a foot without a toe bone does not roll).
     /// </summary>
-    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, bool>? rollOnto = null, Vector3? ball = null) =>
-        (ball is not null && rollOnto is not null && Roll(root, q, limb, point, groundNormal, rollOnto, ball))
+    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?>? groundUnder = null, Vector3? ball = null) =>
+        (ball is not null && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
         || Flat.Solve(root, q, limb, point, -groundNormal).Success
-        || (rollOnto is not null && Roll(root, q, limb, point, groundNormal, rollOnto, ball))
+        || (groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
         || Loose.Solve(root, q, limb, point, -groundNormal).Success;
 
     /// <summary>The heel raised, the ball held (<see cref="Hold"/>).</summary>
-    private bool Roll(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, bool> rollOnto, Vector3? ball0)
+    private bool Roll(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?> groundUnder, Vector3? ball0)
     {
         if (limb.Ball is not RigLimb ball)
         {
@@ -82,7 +82,13 @@ internal sealed class SoleHold
             return false;
         }
 
-        Vector3 target = ball0 ?? point + (Vector3.Normalize(along) * toBall.Length());
+        // The ball on the level itself, not on the ground's tangent plane at the held point (on a dune's hollow that
+        // left the skeleton's ball 6 mm above the sand).
+        if ((ball0 ?? groundUnder(point + (Vector3.Normalize(along) * toBall.Length()))) is not Vector3 target)
+        {
+            return false;
+        }
+
         Vector3 forward = target - point;
         forward -= Vector3.Dot(forward, up) * up;
         if (forward.LengthSquared() < 1e-8f)
@@ -91,10 +97,6 @@ internal sealed class SoleHold
         }
 
         forward = Vector3.Normalize(forward);
-        if (!rollOnto(target))
-        {
-            return false;
-        }
 
         // The sole's normal (out of the sole, into the ground when flat) tilted back, the heel raised by as few
         // RollSteps as hold it (each within half a step either way), up to MostRoll.

@@ -48,7 +48,15 @@ public sealed class RollingFootTests
         float[] flat = (float[])q.Clone();
         float[] rolled = (float[])q.Clone();
         Assert.That(hold.Hold(past, flat, foot, point, Vector3.UnitY), Is.False, $"the sole lies flat only up to {ahead:0.00} m");
-        Assert.That(hold.Hold(past, rolled, foot, point, Vector3.UnitY, _ => true), Is.True, "rolled onto its ball");
+        Assert.That(hold.Hold(past, rolled, foot, point, Vector3.UnitY, p => p with { Y = point.Y }), Is.True, "rolled onto its ball");
+
+        // In a hollow (the level 6 mm below the ground's plane at the held point where the ball comes down, as on a
+        // dune), the ball goes down onto the level, not onto the plane: without that the skeleton's sole floated.
+        float[] hollow = (float[])q.Clone();
+        Assert.That(hold.Hold(past, hollow, foot, point, Vector3.UnitY, p => p with { Y = point.Y - 0.006f }), Is.True, "rolled onto its ball in a hollow");
+        rig.Solve(past, hollow, positions, rotations);
+        float ballY = (positions[foot.EffectorJoint] + Vector3.Transform(ballLocal, rotations[foot.EffectorJoint])).Y;
+        Assert.That(ballY - (point.Y - 0.006f), Is.EqualTo(0f).Within(0.0015f), "the ball rests on the level in the hollow");
 
         rig.Solve(past, rolled, positions, rotations);
         Vector3 ball = positions[foot.EffectorJoint] + Vector3.Transform(ballLocal, rotations[foot.EffectorJoint]);
