@@ -732,7 +732,7 @@ internal sealed class AnimatorEye
                     if (depth > worst)
                     {
                         worst = depth;
-                        seen = $"a vertex of '{_owners[v]}' is {depth * 100f:0.0} cm inside the level at {time:0.00} s";
+                        seen = $"a vertex of '{_owners[v]}' is {depth * 100f:0.0} cm inside the level at {time:0.00} s{During(animation, time)}";
                     }
                 }
             }
@@ -827,6 +827,23 @@ internal sealed class AnimatorEye
 
         float[] gaps = [.. Enumerable.Range(1, placed.Length - 1).Select(k => placed[k] - placed[k - 1]).Where(g => g > 1e-4f).Order()];
         return gaps.Length == 0 ? float.PositiveInfinity : gaps[gaps.Length / 2];
+    }
+
+    /// <summary>Where <paramref name="time"/> falls among the animation's moves, for a message: " (move 2, a jump, 0.31 s into it)".</summary>
+    private static string During(JumpAnimation animation, float time)
+    {
+        for (int m = animation.Moves.Count - 1; m >= 0; m--)
+        {
+            if (time >= animation.MoveStart(m) - 1e-4f)
+            {
+                string kind = animation.Moves[m] is Jump ? "a jump" : "a walk";
+                return time <= animation.MoveEnd(m) + 1e-4f
+                    ? $" (move {m}, {kind}, {time - animation.MoveStart(m):0.00} s into it)"
+                    : $" ({time - animation.MoveEnd(m):0.00} s after move {m}, {kind})";
+            }
+        }
+
+        return " (before the first move)";
     }
 
     /// <summary>
