@@ -14,7 +14,8 @@ namespace Ballistic.Planner.Animation;
 /// <see cref="ContactClearance"/> of a held contact point a bone may touch. Helper bones of a loaded rig that are no
 /// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. A loaded rig's limbs are also checked by
 /// points of their skinned mesh (<see cref="CharacterSource.SkinProbes"/>: toes and heels reach beyond the segments
-/// between joints), and a character built in code by the corners of its bone boxes (<see cref="BoneBoxes"/>, the body
+/// between joints; <see cref="CharacterSource.BlendProbes"/>: skin weighted to several of the limb's bones, posed by
+/// linear blend skinning), and a character built in code by the corners of its bone boxes (<see cref="BoneBoxes"/>, the body
 /// its GLB draws): none may be more than <see cref="SkinDepth"/> inside the level, when the level's triangles are
 /// given. Thread-safe.
 /// </summary>
@@ -50,9 +51,9 @@ public sealed class BodyCollision
     private readonly int[] _otherBones;
     private readonly float[] _otherThickness;
     private readonly IReadOnlyList<Triangle>? _triangles;
-    private readonly (int Joint, Vector3 Point)[][] _probes;
+    private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _probes;
     private readonly float[] _probeReach;
-    private readonly (int Joint, (int Joint, Vector3 Point)[] Probes)[] _freeSkins;
+    private readonly (int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes)[] _freeSkins;
 
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
     [ThreadStatic]
@@ -127,20 +128,43 @@ public sealed class BodyCollision
         // segments between joints; a shin's box is as wide as its radius).
         _triangles = triangles;
         IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source is CharacterSource source ? source.SkinProbes : BoneBoxes.Of(model).InJointFrames();
-        _probes = new (int, Vector3)[model.Limbs.Count][];
+        // A loaded rig's blended skin (a knee's back, carried by thigh and shin) where linear blend skinning puts it,
+        // for the blended points whose bones all belong to the limb: the limb's bones bound where they can lie.
+        IReadOnlyList<SkinBlend[][]> blends = triangles is null ? [] : model.Source?.BlendProbes ?? [];
+        _probes = new (int, Vector3, SkinBlend[]?)[model.Limbs.Count][];
+        var reach = new float[model.Limbs.Count];
         for (int l = 0; l < model.Limbs.Count; l++)
         {
             RigLimb limb = model.Limbs[l];
-            IEnumerable<int> joints = limb.Chain.Concat(_limbBones[l]).Distinct().Where(j => IsBody(j) || j == limb.Chain[0]);
-            _probes[l] = skin.Count == rig.Joints.Count ? [.. joints.SelectMany(j => skin[j].Select(p => (j, p)))] : [];
+            int[] joints = [.. limb.Chain.Concat(_limbBones[l]).Distinct().Where(j => IsBody(j) || j == limb.Chain[0])];
+            var probes = new List<(int, Vector3, SkinBlend[]?)>();
+            if (skin.Count == rig.Joints.Count)
+            {
+                probes.AddRange(joints.SelectMany(j => skin[j].Select(p => (j, p, (SkinBlend[]?)null))));
+                reach[l] = joints.SelectMany(j => skin[j]).Select(p => p.Length()).DefaultIfEmpty(0f).Max();
+            }
+
+            if (blends.Count == rig.Joints.Count)
+            {
+                foreach (int j in joints)
+                {
+                    foreach (SkinBlend[] blend in blends[j].Where(b => b.All(part => joints.Contains(part.Joint))))
+                    {
+                        probes.Add((j, Vector3.Zero, blend));
+                        reach[l] = MathF.Max(reach[l], blend.Max(part => part.Point.Length()));
+                    }
+                }
+            }
+
+            _probes[l] = [.. probes];
         }
 
-        _probeReach = [.. _probes.Select(probes => probes.Length == 0 ? 0f : probes.Max(p => p.Point.Length()))];
+        _probeReach = reach;
 
         // The skin of bones that carry no limb and hang from none (a tail, a head): a tail's tip reaches past its last joint.
         _freeSkins = skin.Count != rig.Joints.Count ? [] :
             [.. others.Where(j => skin[j].Length > 0 && !model.Limbs.Any(l => rig.IsAncestor(j, l.RootJoint)))
-                .Select(j => (j, skin[j].Select(p => (j, p)).ToArray()))];
+                .Select(j => (j, skin[j].Select(p => (j, p, (SkinBlend[]?)null)).ToArray()))];
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>
@@ -195,7 +219,7 @@ public sealed class BodyCollision
     /// into another surface (a block beside it, a stair's riser). A loaded rig's skinned sole is held to
     /// <see cref="SkinDepth"/> everywhere.
     /// </summary>
-    private bool SkinInside((int Joint, Vector3 Point)[] probes, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, (Vector3 Contact, int Effector)? sole = null)
+    private bool SkinInside((int Joint, Vector3 Point, SkinBlend[]? Blend)[] probes, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, (Vector3 Contact, int Effector)? sole = null)
     {
         if (probes.Length == 0 || _triangles is null)
         {
@@ -206,7 +230,7 @@ public sealed class BodyCollision
         Aabb box = Aabb.Empty;
         for (int i = 0; i < probes.Length; i++)
         {
-            world[i] = positions[probes[i].Joint] + Vector3.Transform(probes[i].Point, rotations[probes[i].Joint]);
+            world[i] = Posed(probes[i], positions, rotations);
             box = Aabb.Union(box, new Aabb(world[i], world[i]));
         }
 
@@ -245,6 +269,23 @@ public sealed class BodyCollision
         }
 
         return false;
+    }
+
+    /// <summary>Where a skin probe lies posed (world metres): on its bone, or for a blended one, where linear blend skinning puts it.</summary>
+    private static Vector3 Posed((int Joint, Vector3 Point, SkinBlend[]? Blend) probe, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    {
+        if (probe.Blend is not SkinBlend[] blend)
+        {
+            return positions[probe.Joint] + Vector3.Transform(probe.Point, rotations[probe.Joint]);
+        }
+
+        Vector3 sum = Vector3.Zero;
+        foreach (SkinBlend part in blend)
+        {
+            sum += part.Weight * (positions[part.Joint] + Vector3.Transform(part.Point, rotations[part.Joint]));
+        }
+
+        return sum;
     }
 
     /// <summary>
@@ -305,7 +346,7 @@ public sealed class BodyCollision
             return bone;
         }
 
-        foreach ((int joint, (int Joint, Vector3 Point)[] probes) in _freeSkins)
+        foreach ((int joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] probes) in _freeSkins)
         {
             if (SkinInside(probes, positions, rotations))
             {

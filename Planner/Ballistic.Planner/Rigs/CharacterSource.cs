@@ -66,6 +66,15 @@ public sealed class CharacterSource
     /// </summary>
     internal IReadOnlyList<Vector3[]> SkinProbes { get; init; } = [];
 
+    /// <summary>
+    /// For each joint, points of the skinned mesh weighted to it and to other bones (a knee's back, carried partly by
+    /// the thigh), with each bone's share (<see cref="SkinBlend"/>): of the vertices skinned mostly to it with at most
+    /// <see cref="GltfSkeleton.BlendedShare"/> of their weight, the farthest along the 14 directions of
+    /// <see cref="SkinProbes"/>. Posed, they lie where linear blend skinning puts them, not where the bone alone would
+    /// (a deep knee bend folds them several centimetres off either bone). Empty: none.
+    /// </summary>
+    internal IReadOnlyList<SkinBlend[][]> BlendProbes { get; init; } = [];
+
     /// <summary>For each joint, whether its radius was derived from the skinned mesh (so a saved spec leaves it out and derives it again).</summary>
     internal IReadOnlyList<bool> DerivedRadii { get; init; } = [];
 }

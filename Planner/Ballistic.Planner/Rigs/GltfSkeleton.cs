@@ -17,8 +17,9 @@ internal sealed class GltfSkeleton
     /// <summary>How far from the origin, in metres along each axis, a bone or skinned vertex may lie.</summary>
     public const float MaxCoordinate = 1e6f;
 
-    private GltfSkeleton(int[] nodes, string[] names, int[] parents, Vector3[] offsets, Quaternion[] restRotations, Vector3[] restPositions, Quaternion[] restWorldRotations, List<Vector3>[] points)
+    private GltfSkeleton(int[] nodes, string[] names, int[] parents, Vector3[] offsets, Quaternion[] restRotations, Vector3[] restPositions, Quaternion[] restWorldRotations, List<Vector3>[] points, List<SkinBlend[]>[] blends)
     {
+        Blends = blends;
         Nodes = nodes;
         Names = names;
         Parents = parents;
@@ -52,6 +53,15 @@ internal sealed class GltfSkeleton
 
     /// <summary>For each joint, the skinned vertices whose largest weight is on it, in its rest frame, metres.</summary>
     public List<Vector3>[] Points { get; }
+
+    /// <summary>
+    /// For each joint, the vertices among <see cref="Points"/> (same order) weighted to several bones, at most
+    /// <see cref="BlendedShare"/> of their weight on it (a knee's skin, carried partly by the thigh): each bone's share.
+    /// </summary>
+    public List<SkinBlend[]>[] Blends { get; }
+
+    /// <summary>Largest share of its weight a vertex's own bone may carry for the vertex to count as blended.</summary>
+    public const float BlendedShare = 0.95f;
 
     /// <summary>Reads skin 0 of <paramref name="document"/>.</summary>
     /// <param name="document">The rigged glTF.</param>
@@ -201,8 +211,8 @@ internal sealed class GltfSkeleton
             rests[i] = Quaternion.Normalize(inverse * rotations[i]);
         }
 
-        List<Vector3>[] points = SkinnedPoints(document, world, index, axes, positions, rotations);
-        return new GltfSkeleton([.. order], [.. order.Select(NodeName)], parents, offsets, rests, positions, rotations, points);
+        (List<Vector3>[] points, List<SkinBlend[]>[] blends) = SkinnedPoints(document, world, index, axes, positions, rotations);
+        return new GltfSkeleton([.. order], [.. order.Select(NodeName)], parents, offsets, rests, positions, rotations, points, blends);
     }
 
     /// <summary>The skin's joint nodes.</summary>
@@ -306,15 +316,17 @@ internal sealed class GltfSkeleton
         }
     }
 
-    /// <summary>Every skinned vertex in the rest pose, assigned to its dominant bone and expressed in that bone's rest frame.</summary>
+    /// <summary>Every skinned vertex in the rest pose, assigned to its dominant bone and expressed in that bone's rest frame; and those weighted to several bones, with each bone's share (<see cref="Blends"/>).</summary>
     /// <exception cref="GltfException">A skinned mesh, its skin or its accessors are malformed, or the vertices read exceed <see cref="GltfLoadOptions.MaxVertices"/>.</exception>
     /// <exception cref="RigException">A skinned vertex is not finite or lies beyond <see cref="MaxCoordinate"/>.</exception>
-    private static List<Vector3>[] SkinnedPoints(GltfDocument document, Matrix4x4[] world, Dictionary<int, int> jointIndex, Quaternion axes, Vector3[] positions, Quaternion[] rotations)
+    private static (List<Vector3>[] Points, List<SkinBlend[]>[] Blends) SkinnedPoints(GltfDocument document, Matrix4x4[] world, Dictionary<int, int> jointIndex, Quaternion axes, Vector3[] positions, Quaternion[] rotations)
     {
         var points = new List<Vector3>[positions.Length];
+        var blends = new List<SkinBlend[]>[positions.Length];
         for (int j = 0; j < points.Length; j++)
         {
             points[j] = [];
+            blends[j] = [];
         }
 
         string file = document.Name;
@@ -457,11 +469,36 @@ internal sealed class GltfSkeleton
                     if (jointIndex.TryGetValue(dominant, out int bone))
                     {
                         points[bone].Add(Vector3.Transform(inFrame - positions[bone], Quaternion.Conjugate(rotations[bone])));
+
+                        // Weighted to several of the rig's bones: each one's share, the vertex in its rest frame.
+                        float onRig = 0f;
+                        foreach ((int joint, float w) in weightOfJoint)
+                        {
+                            onRig += jointIndex.ContainsKey(joints[joint]) ? w : 0f;
+                        }
+
+                        if (onRig > 0f && best / onRig <= BlendedShare)
+                        {
+                            var parts = new List<SkinBlend>();
+                            foreach ((int joint, float w) in weightOfJoint.OrderBy(e => e.Key))
+                            {
+                                if (jointIndex.TryGetValue(joints[joint], out int j))
+                                {
+                                    parts.Add(new SkinBlend(j, w / onRig, Vector3.Transform(inFrame - positions[j], Quaternion.Conjugate(rotations[j]))));
+                                }
+                            }
+
+                            blends[bone].Add([.. parts]);
+                        }
+                        else
+                        {
+                            blends[bone].Add([]);
+                        }
                     }
                 }
             }
         }
 
-        return points;
+        return (points, blends);
     }
 }

@@ -101,6 +101,28 @@ internal static class MeshDefaults
         return [.. found];
     }
 
+    /// <summary>
+    /// Of the vertices of <paramref name="points"/> weighted to several bones (those whose <paramref name="blends"/>
+    /// entry, same order, is not empty), the farthest along each of the 14 directions of <see cref="Extremes"/>: the
+    /// blended skin around a joint (a knee's back, folded by both bones), each with its bones' shares.
+    /// </summary>
+    public static SkinBlend[][] BlendedExtremes(IReadOnlyList<Vector3> points, IReadOnlyList<SkinBlend[]> blends)
+    {
+        ArgumentNullException.ThrowIfNull(points);
+        ArgumentNullException.ThrowIfNull(blends);
+        var blended = new List<Vector3>();
+        var of = new Dictionary<Vector3, SkinBlend[]>();
+        for (int i = 0; i < points.Count && i < blends.Count; i++)
+        {
+            if (blends[i].Length > 0 && of.TryAdd(points[i], blends[i]))
+            {
+                blended.Add(points[i]);
+            }
+        }
+
+        return [.. Extremes(blended).Select(p => of[p])];
+    }
+
     private static readonly Vector3[] Directions =
     [
         Vector3.UnitX, -Vector3.UnitX, Vector3.UnitY, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ,

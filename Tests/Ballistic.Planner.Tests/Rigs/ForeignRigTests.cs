@@ -103,6 +103,54 @@ public sealed class ForeignRigTests
     }
 
     [Test]
+    public void SkinBlendedBetweenThighAndShinIsKeptOutOfTheLevelWhereSkinningPutsIt()
+    {
+        // The human's shin box is skinned 0.7 to the shin and 0.3 to the thigh. With the knee bent, linear blend
+        // skinning (as an importer draws it) puts that skin centimetres away from where the shin alone carries it:
+        // the body check probes it there (on stairs its back went 3.3 cm into a step while every rigid probe was clear).
+        ForeignCharacter character = ForeignCharacters.Human(zUpScene: false);
+        (CharacterModel model, _, _, _) = LoadAtRest(character);
+        Rig rig = model.Rig;
+        int shin = rig.IndexOf("mixamorig:LeftLeg");
+        SkinBlend[][] blends = model.Source!.BlendProbes[shin];
+        float[] q = new float[rig.DofCount];
+        JointAxis knee = rig.Dofs[rig.FirstDof(shin)];
+        q[rig.FirstDof(shin)] = 0.8f * (MathF.Abs(knee.Max) > MathF.Abs(knee.Min) ? knee.Max : knee.Min);
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(new Vector3(0f, 1f, 0f), Quaternion.Identity), q, positions, rotations);
+        Vector3 Blended(SkinBlend[] blend) => blend.Aggregate(Vector3.Zero, (sum, part) => sum + (part.Weight * (positions[part.Joint] + Vector3.Transform(part.Point, rotations[part.Joint]))));
+        Vector3 Rigid(SkinBlend[] blend) => blend.Where(part => part.Joint == shin).Select(part => positions[shin] + Vector3.Transform(part.Point, rotations[shin])).Single();
+        SkinBlend[] moved = blends.MaxBy(b => Vector3.Distance(Blended(b), Rigid(b)))!;
+        Vector3 at = Blended(moved);
+
+        // A 5 cm block around that skin point, clear of the limb's bones and of every rigid skin probe.
+        var block = new Ballistic.Authoring.Levels.MeshBuilder();
+        block.Box(at - new Vector3(0.025f), at + new Vector3(0.025f));
+        Triangle[] triangles = [.. Enumerable.Range(0, block.TriangleCount).Select(t => new Triangle(block.Positions[block.Indices[3 * t]], block.Positions[block.Indices[(3 * t) + 1]], block.Positions[block.Indices[(3 * t) + 2]]))];
+        RigLimb foot = model.Limbs.Single(l => l.Name == "left_foot");
+        var rigidProbes = foot.Chain.SelectMany(j => model.Source.SkinProbes[j].Select(p => positions[j] + Vector3.Transform(p, rotations[j]))).ToArray();
+        Assert.Multiple(() =>
+        {
+            Assert.That(blends, Is.Not.Empty, "the shin's blended skin is probed");
+            Assert.That(blends.Select(b => b.Sum(part => part.Weight)), Has.All.EqualTo(1f).Within(1e-5f), "each probe's shares sum to 1");
+            Assert.That(blends.SelectMany(b => b.Select(part => rig.Joints[part.Joint].Name)).Distinct(), Is.EquivalentTo(new[] { "mixamorig:LeftLeg", "mixamorig:LeftUpLeg" }));
+            Assert.That(Vector3.Distance(at, Rigid(moved)), Is.GreaterThan(0.05f), "skinning moves it off the shin");
+            Assert.That(rigidProbes.Min(p => Vector3.Distance(p, at)), Is.GreaterThan(0.045f), "no rigid probe is in the block");
+            Assert.That(foot.Chain.Skip(1).Min(j => SegmentDistance(at, positions[rig.Joints[j].Parent], positions[j])), Is.GreaterThan(0.045f), "no bone crosses the block");
+            var collision = new BodyCollision(new Ballistic.Planner.Collision.TriangleBvh(triangles), model, triangles);
+            Assert.That(collision.LimbCollides(foot, positions, rotations, null), Is.True, "the blended skin is seen inside the block");
+        });
+    }
+
+    private static float SegmentDistance(Vector3 p, Vector3 a, Vector3 b)
+    {
+        Vector3 ab = b - a;
+        float t = Math.Clamp(Vector3.Dot(p - a, ab) / MathF.Max(ab.LengthSquared(), 1e-12f), 0f, 1f);
+        return Vector3.Distance(p, a + (t * ab));
+    }
+
+    [Test]
     public void BoneRadiiComeFromTheMeshAndHandsAcceptAnySurface()
     {
         ForeignCharacter character = ForeignCharacters.Human(zUpScene: false);
