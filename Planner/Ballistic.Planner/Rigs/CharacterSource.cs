@@ -70,7 +70,7 @@ public sealed class CharacterSource
     /// For each joint, points of the skinned mesh weighted to it and to other bones (a knee's back, carried partly by
     /// the thigh), with each bone's share (<see cref="SkinBlend"/>): of the vertices skinned mostly to it with at most
     /// <see cref="GltfSkeleton.BlendedShare"/> of their weight, the farthest along the 14 directions of
-    /// <see cref="SkinProbes"/>. Posed, they lie where linear blend skinning puts them, not where the bone alone would
+    /// <see cref="SkinProbes"/> in each of <see cref="MeshDefaults.BlendSlices"/> slices along the bone. Posed, they lie where linear blend skinning puts them, not where the bone alone would
     /// (a deep knee bend folds them several centimetres off either bone). Empty: none.
     /// </summary>
     internal IReadOnlyList<SkinBlend[][]> BlendProbes { get; init; } = [];

@@ -101,10 +101,15 @@ internal static class MeshDefaults
         return [.. found];
     }
 
+    /// <summary>Slices along a bone over which <see cref="BlendedExtremes"/> looks for blended skin's extremes.</summary>
+    public const int BlendSlices = 3;
+
     /// <summary>
     /// Of the vertices of <paramref name="points"/> weighted to several bones (those whose <paramref name="blends"/>
-    /// entry, same order, is not empty), the farthest along each of the 14 directions of <see cref="Extremes"/>: the
-    /// blended skin around a joint (a knee's back, folded by both bones), each with its bones' shares.
+    /// entry, same order, is not empty), in each of <see cref="BlendSlices"/> equal slices along the axis (X, Y or Z
+    /// of the bone's frame) over which they spread farthest, the farthest along each of the 14 directions of
+    /// <see cref="Extremes"/>: the blended skin around a joint and along the bone (a shin skinned partly to the thigh
+    /// folds at its middle too, not only at its ends), each with its bones' shares.
     /// </summary>
     public static SkinBlend[][] BlendedExtremes(IReadOnlyList<Vector3> points, IReadOnlyList<SkinBlend[]> blends)
     {
@@ -120,7 +125,30 @@ internal static class MeshDefaults
             }
         }
 
-        return [.. Extremes(blended).Select(p => of[p])];
+        if (blended.Count == 0)
+        {
+            return [];
+        }
+
+        Vector3 low = blended[0];
+        Vector3 high = blended[0];
+        foreach (Vector3 p in blended)
+        {
+            (low, high) = (Vector3.Min(low, p), Vector3.Max(high, p));
+        }
+
+        Vector3 spread = high - low;
+        Vector3 axis = spread.X >= spread.Y && spread.X >= spread.Z ? Vector3.UnitX : spread.Y >= spread.Z ? Vector3.UnitY : Vector3.UnitZ;
+        float from = Vector3.Dot(low, axis);
+        float length = Vector3.Dot(spread, axis);
+        var found = new List<Vector3>();
+        for (int slice = 0; slice < BlendSlices; slice++)
+        {
+            List<Vector3> inSlice = [.. blended.Where(p => (length > 0f ? Math.Min(BlendSlices - 1, (int)((Vector3.Dot(p, axis) - from) / length * BlendSlices)) : 0) == slice)];
+            found.AddRange(Extremes(inSlice).Where(p => !found.Contains(p)));
+        }
+
+        return [.. found.Select(p => of[p])];
     }
 
     private static readonly Vector3[] Directions =
