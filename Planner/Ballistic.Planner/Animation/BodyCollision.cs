@@ -132,7 +132,6 @@ public sealed class BodyCollision
         // for the blended points whose bones all belong to the limb: the limb's bones bound where they can lie.
         IReadOnlyList<SkinBlend[][]> blends = triangles is null ? [] : model.Source?.BlendProbes ?? [];
         _probes = new (int, Vector3, SkinBlend[]?)[model.Limbs.Count][];
-        var reach = new float[model.Limbs.Count];
         for (int l = 0; l < model.Limbs.Count; l++)
         {
             RigLimb limb = model.Limbs[l];
@@ -141,25 +140,18 @@ public sealed class BodyCollision
             if (skin.Count == rig.Joints.Count)
             {
                 probes.AddRange(joints.SelectMany(j => skin[j].Select(p => (j, p, (SkinBlend[]?)null))));
-                reach[l] = joints.SelectMany(j => skin[j]).Select(p => p.Length()).DefaultIfEmpty(0f).Max();
             }
 
             if (blends.Count == rig.Joints.Count)
             {
-                foreach (int j in joints)
-                {
-                    foreach (SkinBlend[] blend in blends[j].Where(b => b.All(part => joints.Contains(part.Joint))))
-                    {
-                        probes.Add((j, Vector3.Zero, blend));
-                        reach[l] = MathF.Max(reach[l], blend.Max(part => part.Point.Length()));
-                    }
-                }
+                probes.AddRange(joints.SelectMany(j => blends[j].Where(b => b.All(part => joints.Contains(part.Joint))).Select(b => (j, Vector3.Zero, (SkinBlend[]?)b))));
             }
 
             _probes[l] = [.. probes];
         }
 
-        _probeReach = reach;
+        // How far a limb's skin reaches from the joints carrying it: a blended point lies within its parts' reach of theirs.
+        _probeReach = [.. _probes.Select(probes => probes.Select(p => p.Blend is SkinBlend[] b ? b.Max(part => part.Point.Length()) : p.Point.Length()).DefaultIfEmpty(0f).Max())];
 
         // The skin of bones that carry no limb and hang from none (a tail, a head): a tail's tip reaches past its last joint.
         _freeSkins = skin.Count != rig.Joints.Count ? [] :
