@@ -236,11 +236,7 @@ public sealed class AnimatorsEyeTests
     [Test]
     public void AnArmsSwingIsReadOverAWholeStride()
     {
-        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
-        JumpAnimation animation = world.AcrossFirstPlatform();
-        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
-        AnimatorEye.Look level = eye.Measure(animation, world.Scene);
-        AnimatorEye.Look ridged = eye.Measure(animation, PlanningScene.Create(RidgedFloor(-5.6f, -5.2f), world.Scene.Character));
+        (AnimatorEye.Look level, AnimatorEye.Look ridged) = AcrossFirstPlatformOn(RidgedFloor((-5.6f, -5.2f)));
         Assert.Multiple(() =>
         {
             Assert.That(level.ArmSwing.Seen, Is.Not.Empty, "on the level platform the arms are judged");
@@ -251,10 +247,43 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
-    /// A floor at y = 0 from x = −9 to −2 m and z = −2 to 2 m, ridged every centimetre (facets at 39°: no level ground
-    /// under the trunk, though level over half a metre) except a flat strip from <paramref name="x0"/> to <paramref name="x1"/>.
+    /// A walk's bob and arm swing are read over an unbroken stride of level ground: the same walk, judged on a floor
+    /// level under two strips of 0.4 m 1.8 m apart (each a fifth of a stride, together spanning more than one), is
+    /// judged upright there but on neither its bob nor its swing (before, the two strips were read as one stride: the
+    /// desert skeleton's hips, rising 0.06 m over each foot, read 0.006 L of bob over two such stretches).
     /// </summary>
-    private static Level RidgedFloor(float x0, float x1)
+    [Test]
+    public void TwoShortStretchesOfLevelGroundAreNotAStride()
+    {
+        (AnimatorEye.Look level, AnimatorEye.Look strips) = AcrossFirstPlatformOn(RidgedFloor((-6.5f, -6.1f), (-4.7f, -4.3f)));
+        Assert.Multiple(() =>
+        {
+            Assert.That(level.Bob.Seen, Is.Not.Empty, "on the level platform the bob is judged");
+            Assert.That(level.Bob.Passes, Is.True, level.Bob.ToString());
+            Assert.That(strips.Upright.Seen, Is.Not.Empty, "the strips are long enough to judge the hips");
+            Assert.That(strips.Bob.Seen, Is.Empty, strips.Bob.ToString());
+            Assert.That(strips.ArmSwing.Seen, Is.Empty, strips.ArmSwing.ToString());
+        });
+    }
+
+    /// <summary>
+    /// The skeleton's walk across the gap course's first platform, as the eye sees it judged on the level platform and
+    /// judged on <paramref name="floor"/> (the same walk, the floor under it read differently).
+    /// </summary>
+    private static (AnimatorEye.Look Level, AnimatorEye.Look On) AcrossFirstPlatformOn(Level floor)
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        JumpAnimation animation = world.AcrossFirstPlatform();
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), animation.Model);
+        return (eye.Measure(animation, world.Scene), eye.Measure(animation, PlanningScene.Create(floor, world.Scene.Character)));
+    }
+
+    /// <summary>
+    /// A floor at y = 0 from x = −9 to −2 m and z = −2 to 2 m, ridged every centimetre (facets at 39°: no level ground
+    /// under the trunk, though level over half a metre) except flat strips from each <c>From</c> to its <c>To</c>
+    /// (metres along x, in order).
+    /// </summary>
+    private static Level RidgedFloor(params (float From, float To)[] flats)
     {
         var b = new LevelBuilder("ridged floor");
         var material = new LevelMaterial("floor", null);
@@ -268,8 +297,17 @@ public sealed class AnimatorsEyeTests
             b.AddTriangle(new Triangle(p00, p11, p10), material);
         }
 
-        Quad(new Vector3(x0, 0f, -2f), new Vector3(x1, 0f, 2f), 0f, 0f);
-        foreach ((float from, float to) in new[] { (-9f, x0), (x1, -2f) })
+        var ridged = new List<(float From, float To)>();
+        float x = -9f;
+        foreach ((float x0, float x1) in flats)
+        {
+            Quad(new Vector3(x0, 0f, -2f), new Vector3(x1, 0f, 2f), 0f, 0f);
+            ridged.Add((x, x0));
+            x = x1;
+        }
+
+        ridged.Add((x, -2f));
+        foreach ((float from, float to) in ridged)
         {
             int n = (int)MathF.Round((to - from) / 0.01f);
             for (int i = 0; i < n; i++)

@@ -908,6 +908,7 @@ internal sealed class AnimatorEye
             var heights = new List<float>();
             var times = new List<float>();
             var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
+            var armTimes = new List<float>();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
             {
                 if (!LevelGroundAt(level, t))
@@ -968,6 +969,7 @@ internal sealed class AnimatorEye
                 }
 
                 Vector3 heading = HeadingAt(t);
+                armTimes.Add(t);
                 for (int a = 0; a < _arms.Length; a++)
                 {
                     (_, Node shoulder, Node wrist, int partner) = _arms[a];
@@ -985,48 +987,63 @@ internal sealed class AnimatorEye
                 look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet (each hip in its own leg's length)");
                 // The bob: the hips' height in the world (as the eye sees the trunk rise and fall, whichever foot holds
                 // it on a gentle slope) about the straight line fitted through the second around each sample (the
-                // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th percentile.
-                float[] residual = new float[heights.Count];
-                for (int k = 0; k < heights.Count; k++)
+                // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th
+                // percentile. Read, like the arms' swing, over a whole stride of the first leg (a step of each foot) of
+                // unbroken level ground, each such stretch on its own: level ground that spans less sees only part of
+                // the rise and fall (the desert skeleton's first walk read 0.010 L over 0.32 s, less than its 0.46 s
+                // step), and two short stretches a second apart read 0.006 L where the hips rose 0.06 m over each
+                // foot between them.
+                float stride = Stride(animation, m, 0);
+                (float Bob, float From, float To)? worstBob = null;
+                foreach ((int first, int last) in Stretches(times))
                 {
-                    (float n, float st, float sy, float stt, float sty) = (0f, 0f, 0f, 0f, 0f);
-                    for (int j = 0; j < heights.Count; j++)
-                    {
-                        float dt = times[j] - times[k];
-                        if (MathF.Abs(dt) <= 0.5f)
-                        {
-                            (n, st, sy, stt, sty) = (n + 1f, st + dt, sy + heights[j], stt + (dt * dt), sty + (dt * heights[j]));
-                        }
-                    }
-
-                    float spread = (n * stt) - (st * st);
-                    float slope = spread > 1e-9f ? ((n * sty) - (st * sy)) / spread : 0f;
-                    residual[k] = heights[k] - ((sy - (slope * st)) / n);
-                }
-
-                // Read, like the arms' swing, over a whole stride of the first leg (a step of each foot): level ground
-                // that spans less sees only part of the rise and fall (the desert skeleton's first walk read 0.010 L
-                // over 0.32 s, less than its 0.46 s step; the demo's first 0.019 L over 0.33 s, under its stride).
-                Array.Sort(residual);
-                float bob = residual[(int)(0.95f * (residual.Length - 1))] - residual[(int)(0.05f * (residual.Length - 1))];
-                if (times[^1] - times[0] >= Stride(animation, m, 0))
-                {
-                    look.Bob.Add(MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f)), $"{name}'s hips rise and fall {bob:0.000} L ({times[^1] - times[0]:0.00} s of level ground)");
-                }
-                for (int a = 0; a < _arms.Length; a++)
-                {
-                    // An arm's swing is read over a whole stride of its leg (from one placement of the foot to its
-                    // next): level ground that spans less sees only part of the swing (a third of a stride on the
-                    // curved terrain read 7°; the same arms swing 30–39° on the plan's other walks).
-                    List<(float Arm, float Leg)> samples = arms[a];
-                    if (!(times[^1] - times[0] >= Stride(animation, m, _arms[a].Leg)))
+                    if (!(times[last] - times[first] >= stride))
                     {
                         continue;
                     }
 
-                    float swing = samples.Max(s => s.Arm) - samples.Min(s => s.Arm);
-                    float against = _arms[a].Leg < 0 ? -1f : Correlation(samples);
-                    look.ArmSwing.Add(against < 0f ? swing / LeastArmSwing : 0f, $"{name}'s {_arms[a].Name} swings {swing:0}° {(against < 0f ? "against" : "with")} its leg");
+                    float bob = Bob(times, heights, first, last);
+                    float score = MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f));
+                    if (worstBob is not { } seen || score < MathF.Min(seen.Bob / LeastBob, MostBob / MathF.Max(seen.Bob, 1e-6f)))
+                    {
+                        worstBob = (bob, times[first], times[last]);
+                    }
+                }
+
+                if (worstBob is { } b)
+                {
+                    look.Bob.Add(MathF.Min(b.Bob / LeastBob, MostBob / MathF.Max(b.Bob, 1e-6f)), $"{name}'s hips rise and fall {b.Bob:0.000} L ({b.To - b.From:0.00} s of level ground from {b.From:0.00} s)");
+                }
+
+                for (int a = 0; a < _arms.Length; a++)
+                {
+                    // An arm's swing is read over a whole stride of its leg (from one placement of the foot to its
+                    // next) of unbroken level ground, each such stretch on its own: level ground that spans less sees
+                    // only part of the swing (a third of a stride on the curved terrain read 7°; the same arms swing
+                    // 30–39° on the plan's other walks), and so do two short stretches a second apart.
+                    float armStride = Stride(animation, m, _arms[a].Leg);
+                    (float Score, string Seen)? worstSwing = null;
+                    foreach ((int first, int last) in Stretches(armTimes))
+                    {
+                        if (!(armTimes[last] - armTimes[first] >= armStride))
+                        {
+                            continue;
+                        }
+
+                        List<(float Arm, float Leg)> samples = arms[a].GetRange(first, last - first + 1);
+                        float swing = samples.Max(s => s.Arm) - samples.Min(s => s.Arm);
+                        float against = _arms[a].Leg < 0 ? -1f : Correlation(samples);
+                        float score = against < 0f ? swing / LeastArmSwing : 0f;
+                        if (worstSwing is not { } seen || score < seen.Score)
+                        {
+                            worstSwing = (score, $"{name}'s {_arms[a].Name} swings {swing:0}° {(against < 0f ? "against" : "with")} its leg");
+                        }
+                    }
+
+                    if (worstSwing is { } w)
+                    {
+                        look.ArmSwing.Add(w.Score, w.Seen);
+                    }
                 }
             }
 
@@ -1054,6 +1071,49 @@ internal sealed class AnimatorEye
                 look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.0} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
             }
         }
+    }
+
+    /// <summary>The unbroken stretches (first and last index) of sample times <paramref name="times"/> taken every 1/60 s: a gap of more than two samples ends a stretch.</summary>
+    private static IEnumerable<(int First, int Last)> Stretches(List<float> times)
+    {
+        int first = 0;
+        for (int k = 1; k <= times.Count; k++)
+        {
+            if (k == times.Count || times[k] - times[k - 1] > 2.5f / 60f)
+            {
+                yield return (first, k - 1);
+                first = k;
+            }
+        }
+    }
+
+    /// <summary>
+    /// The rise and fall (leg lengths, 5th to 95th percentile) of <paramref name="heights"/> from sample
+    /// <paramref name="first"/> to <paramref name="last"/> about the straight line fitted through the samples of that
+    /// stretch within half a second of each.
+    /// </summary>
+    private static float Bob(List<float> times, List<float> heights, int first, int last)
+    {
+        float[] residual = new float[last - first + 1];
+        for (int k = first; k <= last; k++)
+        {
+            (float n, float st, float sy, float stt, float sty) = (0f, 0f, 0f, 0f, 0f);
+            for (int j = first; j <= last; j++)
+            {
+                float dt = times[j] - times[k];
+                if (MathF.Abs(dt) <= 0.5f)
+                {
+                    (n, st, sy, stt, sty) = (n + 1f, st + dt, sy + heights[j], stt + (dt * dt), sty + (dt * heights[j]));
+                }
+            }
+
+            float spread = (n * stt) - (st * st);
+            float slope = spread > 1e-9f ? ((n * sty) - (st * sy)) / spread : 0f;
+            residual[k - first] = heights[k] - ((sy - (slope * st)) / n);
+        }
+
+        Array.Sort(residual);
+        return residual[(int)(0.95f * (residual.Length - 1))] - residual[(int)(0.05f * (residual.Length - 1))];
     }
 
     /// <summary>Pearson correlation of the pairs' two values (0 when either does not vary).</summary>
