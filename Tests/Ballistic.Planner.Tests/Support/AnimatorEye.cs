@@ -994,7 +994,7 @@ internal sealed class AnimatorEye
                 // step), and two short stretches a second apart read 0.006 L where the hips rose 0.06 m over each
                 // foot between them.
                 float stride = Stride(animation, m, 0);
-                (float Bob, float From, float To)? worstBob = null;
+                (float Bob, float Score, float From, float To)? worstBob = null;
                 foreach ((int first, int last) in Stretches(times))
                 {
                     if (!(times[last] - times[first] >= stride))
@@ -1004,15 +1004,15 @@ internal sealed class AnimatorEye
 
                     float bob = Bob(times, heights, first, last);
                     float score = MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f));
-                    if (worstBob is not { } seen || score < MathF.Min(seen.Bob / LeastBob, MostBob / MathF.Max(seen.Bob, 1e-6f)))
+                    if (worstBob is not { } seen || score < seen.Score)
                     {
-                        worstBob = (bob, times[first], times[last]);
+                        worstBob = (bob, score, times[first], times[last]);
                     }
                 }
 
                 if (worstBob is { } b)
                 {
-                    look.Bob.Add(MathF.Min(b.Bob / LeastBob, MostBob / MathF.Max(b.Bob, 1e-6f)), $"{name}'s hips rise and fall {b.Bob:0.000} L ({b.To - b.From:0.00} s of level ground from {b.From:0.00} s)");
+                    look.Bob.Add(b.Score, $"{name}'s hips rise and fall {b.Bob:0.000} L ({b.To - b.From:0.00} s of level ground from {b.From:0.00} s)");
                 }
 
                 for (int a = 0; a < _arms.Length; a++)
