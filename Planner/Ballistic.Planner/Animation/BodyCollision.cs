@@ -42,6 +42,12 @@ public sealed class BodyCollision
     /// <summary>How far (metres) around a skin point the level's surface is looked for: deeper points are not seen.</summary>
     private const float SkinReach = 0.1f;
 
+    /// <summary>
+    /// Metres within which two triangles count as equally near a point (an edge or corner they share): well above the
+    /// rounding of single-precision coordinates tens of metres from the origin, well below any depth that matters.
+    /// </summary>
+    private const float EdgeTie = 1e-4f;
+
     /// <summary>Half-thickness of a limb bone's box, metres.</summary>
     private const float Thickness = 0.002f;
 
@@ -58,6 +64,10 @@ public sealed class BodyCollision
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
     [ThreadStatic]
     private static List<int>? s_near;
+
+    /// <summary>Each thread's triangles nearly as near a skin point as the nearest (<see cref="Inside"/>).</summary>
+    [ThreadStatic]
+    private static List<(int Triangle, float Distance, float Front)>? s_candidates;
 
     /// <summary>Creates a checker of <paramref name="model"/>'s bones against a level.</summary>
     public BodyCollision(TriangleBvh bvh, CharacterModel model)
@@ -144,7 +154,10 @@ public sealed class BodyCollision
 
             if (blends.Count == rig.Joints.Count)
             {
-                probes.AddRange(joints.SelectMany(j => blends[j].Where(b => b.All(part => joints.Contains(part.Joint))).Select(b => (j, Vector3.Zero, (SkinBlend[]?)b))));
+                // Skin blended between the limb's bones and the trunk bone it hangs from (a thigh's top, carried partly by
+                // the pelvis) goes where the hip takes it too: a sinking hip beside a crate put it 9 cm into the crate.
+                int trunk = rig.Joints[limb.Chain[0]].Parent;
+                probes.AddRange(joints.SelectMany(j => blends[j].Where(b => b.All(part => joints.Contains(part.Joint) || part.Joint == trunk)).Select(b => (j, Vector3.Zero, (SkinBlend[]?)b))));
             }
 
             _probes[l] = [.. probes];
@@ -153,9 +166,12 @@ public sealed class BodyCollision
         // How far a limb's skin reaches from the joints carrying it: a blended point lies within its parts' reach of theirs.
         _probeReach = [.. _probes.Select(probes => probes.Select(p => p.Blend is SkinBlend[] b ? b.Max(part => part.Point.Length()) : p.Point.Length()).DefaultIfEmpty(0f).Max())];
 
-        // The skin of bones that carry no limb and hang from none (a tail, a head): a tail's tip reaches past its last joint.
+        // The skin of bones that belong to no limb: those that carry none and hang from none (a tail's tip reaches past
+        // its last joint, a head) and the trunk's (a pelvis, a spine, the root bone too: the desert skeleton's pelvis
+        // sank 3.3 cm into a dune as it crouched to jump).
+        int[] hips = [.. model.Limbs.Select(l => l.Chain[0])];
         _freeSkins = skin.Count != rig.Joints.Count ? [] :
-            [.. others.Where(j => skin[j].Length > 0 && !model.Limbs.Any(l => rig.IsAncestor(j, l.RootJoint)))
+            [.. Enumerable.Range(0, rig.Joints.Count).Where(j => skin[j].Length > 0 && (j == 0 || others.Contains(j)) && !hips.Contains(j))
                 .Select(j => (j, skin[j].Select(p => (j, p, (SkinBlend[]?)null)).ToArray()))];
     }
 
@@ -184,6 +200,13 @@ public sealed class BodyCollision
         {
             min = Vector3.Min(min, Vector3.Min(positions[j], positions[rig.Joints[j].Parent]));
             max = Vector3.Max(max, Vector3.Max(positions[j], positions[rig.Joints[j].Parent]));
+        }
+
+        // The trunk joint the limb hangs from carries some of its blended skin (a thigh's top).
+        if (rig.Joints[limb.Chain[0]].Parent is int trunk and >= 0)
+        {
+            min = Vector3.Min(min, positions[trunk]);
+            max = Vector3.Max(max, positions[trunk]);
         }
 
         if (!_bvh.Overlaps(new OrientedBox((min + max) * 0.5f, ((max - min) * 0.5f) + new Vector3(Thickness + _probeReach[l]), Quaternion.Identity)))
@@ -281,39 +304,46 @@ public sealed class BodyCollision
     }
 
     /// <summary>
-    /// True when <paramref name="p"/> lies behind the nearest of the triangles <paramref name="near"/> (at an edge shared
-    /// by several, the one it is most in front of) by more than <see cref="SkinDepth"/>; <paramref name="by"/> is that
-    /// triangle (−1 when none is within reach), <paramref name="depth"/> how far behind it (metres, 0 in front).
+    /// True when <paramref name="p"/> lies behind the nearest of the triangles <paramref name="near"/> by more than
+    /// <see cref="SkinDepth"/>; <paramref name="by"/> is that triangle (−1 when none is within reach),
+    /// <paramref name="depth"/> how far behind it (metres, 0 in front). Where several are nearest within
+    /// <see cref="EdgeTie"/> (the point is nearest an edge or corner they share), the one it is most in front of
+    /// decides: a point beside a crate, below its top's plane, is nearest the top's edge and in front of the side.
     /// </summary>
     private bool Inside(Vector3 p, List<int> near, out int by, out float depth)
     {
-        float nearest = SkinReach * SkinReach;
-        float side = 1f;
-        by = -1;
+        List<(int Triangle, float Distance, float Front)> candidates = s_candidates ??= [];
+        candidates.Clear();
+        float nearest = SkinReach;
         foreach (int t in near)
         {
             Triangle triangle = _triangles![t];
             Aabb bounds = triangle.Bounds;
             Vector3 outside = Vector3.Max(Vector3.Max(bounds.Min - p, p - bounds.Max), Vector3.Zero);
-            if (outside.LengthSquared() > nearest + 1e-9f)
+            if (outside.Length() > nearest + EdgeTie)
             {
                 continue; // its box is already farther than the nearest triangle
             }
 
             Vector3 closest = triangle.ClosestPoint(p);
-            float d2 = Vector3.DistanceSquared(closest, p);
-            float front = Vector3.Dot(p - closest, triangle.Normal);
-            if (d2 < nearest - 1e-9f)
+            float distance = Vector3.Distance(closest, p);
+            if (distance <= nearest + EdgeTie)
             {
-                (nearest, side, by) = (d2, front, t);
-            }
-            else if (d2 <= nearest + 1e-9f && front > side)
-            {
-                (side, by) = (front, t);
+                candidates.Add((t, distance, Vector3.Dot(p - closest, triangle.Normal)));
+                nearest = MathF.Min(nearest, distance);
             }
         }
 
-        depth = side < 0f ? MathF.Sqrt(nearest) : 0f;
+        (by, float side) = (-1, 1f);
+        foreach ((int t, float distance, float front) in candidates)
+        {
+            if (distance <= nearest + EdgeTie && (by < 0 || front > side))
+            {
+                (by, side) = (t, front);
+            }
+        }
+
+        depth = by >= 0 && side < 0f ? nearest : 0f;
         return depth > SkinDepth;
     }
 

@@ -155,6 +155,39 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// A vertex beside a crate's edge, in the plane of the crate's side and 5 cm out from its back, is outside the
+    /// crate on every heading 30 m from the origin, where the two faces' distances differ only by rounding (the eye
+    /// read a quadruped's thigh 9 cm inside a crate it walked past when the face nearer by a rounding error decided);
+    /// 2 cm into the crate, it is 2 cm inside.
+    /// </summary>
+    [Test]
+    public void AVertexPastACratesEdgeIsOutsideIt()
+    {
+        var wrong = new List<string>();
+        for (int k = 0; k < 72; k++)
+        {
+            float heading = k * MathF.Tau / 72f;
+            var p = new Vector3(30.3f + (0.01f * k), 0.4f, -29.7f);
+            Matrix4x4 place = Matrix4x4.CreateFromQuaternion(Quaternion.CreateFromAxisAngle(Vector3.UnitY, heading)) * Matrix4x4.CreateTranslation(p);
+            foreach ((Vector3 min, Vector3 max, float depth) in ((Vector3, Vector3, float)[])[
+                (new Vector3(-0.3f, -0.2f, -0.35f), new Vector3(0f, 0.2f, -0.05f), 0f),
+                (new Vector3(-0.3f, -0.2f, -0.28f), new Vector3(0.03f, 0.2f, 0.02f), 0.02f)])
+            {
+                var b = new LevelBuilder("crate");
+                ForeignLevels.AddSoupBox(b, "crate", min, max, place);
+                Triangle[] triangles = [.. b.Build().Triangles];
+                float seen = AnimatorEye.DepthInside(p, triangles, [.. Enumerable.Range(0, triangles.Length)]);
+                if (MathF.Abs(seen - depth) > 1e-3f)
+                {
+                    wrong.Add($"{heading * 180f / MathF.PI:0}°: {seen * 100f:0.0} cm inside, not {depth * 100f:0.0}");
+                }
+            }
+        }
+
+        Assert.That(wrong, Is.Empty);
+    }
+
+    /// <summary>
     /// The eye reads a walk's hip height from the clip: a walk across the gap course's first platform with its trunk
     /// 0.15 L lower (the limbs' angles as animated) cruises exactly 0.15 L lower above the held feet, its cadence
     /// unchanged. (A walk built by hand: which walks a planned path holds changes with the planner.)
@@ -263,6 +296,29 @@ public sealed class AnimatorsEyeTests
             Assert.That(strips.Upright.Seen, Is.Not.Empty, "the strips are long enough to judge the hips");
             Assert.That(strips.Bob.Seen, Is.Empty, strips.Bob.ToString());
             Assert.That(strips.ArmSwing.Seen, Is.Empty, strips.ArmSwing.ToString());
+        });
+    }
+
+    /// <summary>
+    /// Level ground within half a stride of a step in the ground under the trunk is not read for the bob: the hips
+    /// rightly rise or sink with the ground there (stepping onto a 10 cm crate on the holes-debris floor read as 0.086 L
+    /// of bob). The same walk judged over a floor with 3 cm slats every 35 cm has no bob read, its hips still judged.
+    /// </summary>
+    [Test]
+    public void LevelGroundBesideAStepIsNotReadForBob()
+    {
+        var b = new LevelBuilder("slatted floor").AddFloor(-9f, -2f, -2f, 2f, 0f);
+        for (float x = -9f; x < -2f; x += 0.35f)
+        {
+            b.AddBox(new Vector3(x, -0.01f, -2f), new Vector3(x + 0.1f, 0.03f, 2f));
+        }
+
+        (AnimatorEye.Look level, AnimatorEye.Look slats) = AcrossFirstPlatformOn(b.Build());
+        Assert.Multiple(() =>
+        {
+            Assert.That(level.Bob.Seen, Is.Not.Empty, "on the level platform the bob is judged");
+            Assert.That(slats.Upright.Seen, Is.Not.Empty, "over the slats the hips are judged");
+            Assert.That(slats.Bob.Seen, Is.Empty, slats.Bob.ToString());
         });
     }
 

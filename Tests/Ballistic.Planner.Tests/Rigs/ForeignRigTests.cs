@@ -143,7 +143,8 @@ public sealed class ForeignRigTests
         });
     }
 
-    private static float SegmentDistance(Vector3 p, Vector3 a, Vector3 b)
+    /// <summary>Distance (metres) from <paramref name="p"/> to the segment from <paramref name="a"/> to <paramref name="b"/>.</summary>
+    internal static float SegmentDistance(Vector3 p, Vector3 a, Vector3 b)
     {
         Vector3 ab = b - a;
         float t = Math.Clamp(Vector3.Dot(p - a, ab) / MathF.Max(ab.LengthSquared(), 1e-12f), 0f, 1f);

@@ -94,10 +94,19 @@ internal sealed class AnimatorEye
     /// <summary>Half the span (metres, along the heading) over which the ground's grade under a walk is judged.</summary>
     private const float GradeSpan = 0.5f;
 
+    /// <summary>Least rise or drop (metres) of the ground under the trunk between two samples 1/60 s apart that is a step in it, not a slope.</summary>
+    private const float GroundStep = 0.02f;
+
     /// <summary>How far (metres) from a vertex the level's surface is looked for: depths up to this are measured.</summary>
     private const float InsideProbe = 0.1f;
 
+    /// <summary>Metres within which two triangles are equally near a vertex (an edge or corner they share), above single-precision rounding.</summary>
+    private const float EdgeTie = 1e-4f;
+
     private const float Step = 1f / 120f;
+
+    [ThreadStatic]
+    private static List<(float Distance, float Front)>? s_ties;
 
     private readonly GltfAnimation _clip;
     private readonly Node _trunk;
@@ -710,25 +719,7 @@ internal sealed class AnimatorEye
                 level.TrianglesNear(box.Inflate(InsideProbe), near);
                 foreach (int v in near.Count == 0 ? [] : group)
                 {
-                    float nearest = InsideProbe * InsideProbe;
-                    float side = 1f;
-                    foreach (int i in near)
-                    {
-                        Triangle triangle = triangles[i];
-                        Vector3 closest = triangle.ClosestPoint(points[v]);
-                        float d2 = Vector3.DistanceSquared(closest, points[v]);
-                        float front = Vector3.Dot(points[v] - closest, triangle.Normal);
-                        if (d2 < nearest - 1e-9f)
-                        {
-                            (nearest, side) = (d2, front);
-                        }
-                        else if (d2 <= nearest + 1e-9f)
-                        {
-                            side = MathF.Max(side, front);
-                        }
-                    }
-
-                    float depth = side < 0f ? MathF.Sqrt(nearest) : 0f;
+                    float depth = DepthInside(points[v], triangles, near);
                     if (depth > worst)
                     {
                         worst = depth;
@@ -739,6 +730,42 @@ internal sealed class AnimatorEye
         }
 
         look.Inside.Add(InsideTolerance / MathF.Max(worst, 1e-6f), seen.Length > 0 ? seen : "no vertex inside the level");
+    }
+
+    /// <summary>
+    /// How far (metres) <paramref name="p"/> lies inside the level, judged on the triangles <paramref name="near"/> (indices
+    /// into <paramref name="triangles"/>) within <see cref="InsideProbe"/>: behind the nearest, 0 in front of it or with
+    /// none that near. Where several are nearest within <see cref="EdgeTie"/> (an edge or corner they share), the one
+    /// the point is most in front of decides (a point beside a crate, below its top's plane, is nearest the top's edge
+    /// and in front of the side).
+    /// </summary>
+    internal static float DepthInside(Vector3 p, IReadOnlyList<Triangle> triangles, List<int> near)
+    {
+        List<(float Distance, float Front)> ties = s_ties ??= [];
+        ties.Clear();
+        float nearest = InsideProbe;
+        foreach (int i in near)
+        {
+            Triangle triangle = triangles[i];
+            Vector3 closest = triangle.ClosestPoint(p);
+            float d = Vector3.Distance(closest, p);
+            if (d <= nearest + EdgeTie)
+            {
+                ties.Add((d, Vector3.Dot(p - closest, triangle.Normal)));
+                nearest = MathF.Min(nearest, d);
+            }
+        }
+
+        (bool any, float side) = (false, 0f);
+        foreach ((float distance, float front) in ties)
+        {
+            if (distance <= nearest + EdgeTie)
+            {
+                (any, side) = (true, any ? MathF.Max(side, front) : front);
+            }
+        }
+
+        return any && side < 0f ? nearest : 0f;
     }
 
     /// <summary>
@@ -992,21 +1019,27 @@ internal sealed class AnimatorEye
                 // unbroken level ground, each such stretch on its own: level ground that spans less sees only part of
                 // the rise and fall (the desert skeleton's first walk read 0.010 L over 0.32 s, less than its 0.46 s
                 // step), and two short stretches a second apart read 0.006 L where the hips rose 0.06 m over each
-                // foot between them.
+                // foot between them. Nor is level ground within a step (half a stride) of a step in the ground under
+                // the trunk (a crate's edge, a stair): the hips rightly rise or sink with the ground there (stepping onto
+                // a 10 cm crate on the holes-debris floor read as 0.086 L of bob).
                 float stride = Stride(animation, m, 0);
+                float[] steps = GroundSteps(level, from, to);
+                int[] kept = [.. Enumerable.Range(0, times.Count).Where(k => !steps.Any(s => MathF.Abs(times[k] - s) <= 0.5f * stride))];
+                List<float> bobTimes = [.. kept.Select(k => times[k])];
+                List<float> bobHeights = [.. kept.Select(k => heights[k])];
                 (float Bob, float Score, float From, float To)? worstBob = null;
-                foreach ((int first, int last) in Stretches(times))
+                foreach ((int first, int last) in Stretches(bobTimes))
                 {
-                    if (!(times[last] - times[first] >= stride))
+                    if (!(bobTimes[last] - bobTimes[first] >= stride))
                     {
                         continue;
                     }
 
-                    float bob = Bob(times, heights, first, last);
+                    float bob = Bob(bobTimes, bobHeights, first, last);
                     float score = MathF.Min(bob / LeastBob, MostBob / MathF.Max(bob, 1e-6f));
                     if (worstBob is not { } seen || score < seen.Score)
                     {
-                        worstBob = (bob, score, times[first], times[last]);
+                        worstBob = (bob, score, bobTimes[first], bobTimes[last]);
                     }
                 }
 
@@ -1071,6 +1104,29 @@ internal sealed class AnimatorEye
                 look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.0} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
             }
         }
+    }
+
+    /// <summary>
+    /// The times (seconds, from <paramref name="from"/> to <paramref name="to"/>, every 1/60 s) at which the ground under
+    /// the trunk steps up or down by more than <see cref="GroundStep"/> from one sample to the next: a crate's edge, a
+    /// stair, not a slope (10° rises 0.4 cm between samples at a walk).
+    /// </summary>
+    private float[] GroundSteps(TriangleBvh level, float from, float to)
+    {
+        var steps = new List<float>();
+        float? last = null;
+        for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
+        {
+            float? ground = level.Raycast(TrunkAt(t), -Vector3.UnitY, 4f * Leg, out RayHit hit) ? hit.Point.Y : null;
+            if (ground is float g && last is float l && MathF.Abs(g - l) > GroundStep)
+            {
+                steps.Add(t);
+            }
+
+            last = ground;
+        }
+
+        return [.. steps];
     }
 
     /// <summary>The unbroken stretches (first and last index) of sample times <paramref name="times"/> taken every 1/60 s: a gap of more than two samples ends a stretch.</summary>

@@ -204,7 +204,7 @@ internal static class ForeignLevels
     }
 
     /// <summary>A closed box as a triangle soup (outward faces), optionally placed by a transform.</summary>
-    private static void AddSoupBox(LevelBuilder b, string name, Vector3 min, Vector3 max, Matrix4x4? place = null)
+    internal static void AddSoupBox(LevelBuilder b, string name, Vector3 min, Vector3 max, Matrix4x4? place = null)
     {
         var corners = new Vector3[]
         {

@@ -1,0 +1,140 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Collision;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Tests.Rigs;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Animation;
+
+/// <summary>
+/// What the body check sees of a loaded rig's skin: skin beside a crate's edge is outside it, however the rounding of
+/// coordinates far from the origin falls; the trunk's own skin (a pelvis) is probed; and skin blended between a leg
+/// and the trunk bone it hangs from (a thigh's top) goes where the hip takes it.
+/// </summary>
+public sealed class BodySkinTests
+{
+    private static readonly Lazy<CharacterModel> Tailed = new(() => ForeignCharacters.Named("tailed").Load().Model);
+
+    private static (Vector3[] Positions, Quaternion[] Rotations) Solve(CharacterModel model, RootPose root)
+    {
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(root, model.ContactPose, positions, rotations);
+        return (positions, rotations);
+    }
+
+    private static Triangle[] Box(Vector3 min, Vector3 max, Matrix4x4 place)
+    {
+        var b = new LevelBuilder("box");
+        ForeignLevels.AddSoupBox(b, "crate", min, max, place);
+        return [.. b.Build().Triangles];
+    }
+
+    /// <summary>
+    /// The tail's hindmost skin point lies in the plane of a crate's side, 5 cm past the edge where that side meets the
+    /// crate's back: equally near both faces, in front of the back. Tried at 36 headings 30 m from the origin, where
+    /// the two faces' distances differ only by rounding, it is never inside (it was, by 5 cm, on some headings, when
+    /// the face nearer by a rounding error decided: a quadruped's thigh read 7 cm inside a crate it walked past).
+    /// </summary>
+    [Test]
+    public void SkinPastACratesEdgeIsOutsideItOnEveryHeading()
+    {
+        CharacterModel model = Tailed.Value;
+        Rig rig = model.Rig;
+        int tip = rig.IndexOf("tail_2");
+        var outside = new List<string>();
+        var inside = new List<string>();
+        for (int k = 0; k < 36; k++)
+        {
+            float heading = k * MathF.Tau / 36f;
+            var root = new RootPose(new Vector3(30.3f, 0.4f, -29.7f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, heading));
+            (Vector3[] positions, Quaternion[] rotations) = Solve(model, root);
+            Vector3 p = model.Source!.SkinProbes[tip].Select(s => positions[tip] + Vector3.Transform(s, rotations[tip])).MinBy(s => Vector3.Dot(s - positions[tip], Vector3.Transform(Vector3.UnitZ, root.Rotation)));
+
+            // The crate's frame: its back faces the body (+w, toward the trunk), its side lies in the plane through p.
+            Quaternion turn = Quaternion.CreateFromAxisAngle(Vector3.UnitY, heading + 0.3f);
+            Matrix4x4 place = Matrix4x4.CreateFromQuaternion(turn) * Matrix4x4.CreateTranslation(p);
+            Triangle[] nearTriangles = Box(new Vector3(-0.3f, -0.2f, -0.35f), new Vector3(0f, 0.2f, -0.05f), place);
+            if (new BodyCollision(new TriangleBvh(nearTriangles), model, nearTriangles).OtherBoneColliding(positions, rotations) is int seen and >= 0)
+            {
+                outside.Add($"{heading * 180f / MathF.PI:0}° ({rig.Joints[seen].Name})");
+            }
+
+            // The same crate 7 cm nearer and 3 cm wider: the point is 2 cm inside it.
+            Triangle[] intoTriangles = Box(new Vector3(-0.3f, -0.2f, -0.28f), new Vector3(0.03f, 0.2f, 0.02f), place);
+            if (new BodyCollision(new TriangleBvh(intoTriangles), model, intoTriangles).OtherBoneColliding(positions, rotations) < 0)
+            {
+                inside.Add($"{heading * 180f / MathF.PI:0}°");
+            }
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(outside, Is.Empty, "headings on which skin 5 cm past the crate's edge was seen inside it");
+            Assert.That(inside, Is.Empty, "headings on which skin 2 cm inside the crate was not seen");
+        });
+    }
+
+    /// <summary>
+    /// The trunk's own skin is probed: a skin point of the hips 2 cm into a post under it is seen, though no bone's
+    /// segment reaches the post (the desert skeleton's pelvis sank 3.3 cm into a dune as it crouched to jump).
+    /// </summary>
+    [Test]
+    public void TheTrunksSkinIsProbed()
+    {
+        CharacterModel model = Tailed.Value;
+        Rig rig = model.Rig;
+        int hips = rig.IndexOf("hips");
+        Assume.That(model.Limbs.Any(l => rig.IsAncestor(hips, l.RootJoint)), Is.True, "the legs hang from the hips");
+        (Vector3[] positions, Quaternion[] rotations) = Solve(model, new RootPose(new Vector3(0f, 1f, 0f), Quaternion.Identity));
+        // The lowest of the hips' skin points at least 8 cm from every bone (no bone's box reaches a slab around it).
+        Vector3[] clear = [.. model.Source!.SkinProbes[hips].Select(s => positions[hips] + Vector3.Transform(s, rotations[hips]))
+            .Where(p => Enumerable.Range(1, rig.Joints.Count - 1).All(j => ForeignRigTests.SegmentDistance(p, positions[rig.Joints[j].Parent], positions[j]) > 0.08f))];
+        Assume.That(clear, Is.Not.Empty, "the hips' skin reaches 8 cm from their bones");
+        Vector3 lowest = clear.MinBy(p => p.Y);
+
+        // A post under it, 4 cm square, its top 3 cm above it: the point is 2 cm inside.
+        Level slab = new LevelBuilder("post").AddBox(lowest - new Vector3(0.02f, 0.5f, 0.02f), lowest + new Vector3(0.02f, 0.03f, 0.02f)).Build();
+        var collision = new BodyCollision(new TriangleBvh(slab.Triangles), model, slab.Triangles);
+        Assert.Multiple(() =>
+        {
+            Assert.That(collision.OtherBoneColliding(positions), Is.EqualTo(-1), "no bone's segment reaches the post");
+            Assert.That(collision.OtherBoneColliding(positions, rotations), Is.EqualTo(hips), "the hips' skin does");
+        });
+    }
+
+    /// <summary>
+    /// Skin blended between a leg's first bone and the trunk bone it hangs from (a thigh's top, 0.2 to the hips) is
+    /// checked with the leg, where linear blend skinning puts it: a block around it, clear of every bone and rigid
+    /// probe, is seen.
+    /// </summary>
+    [Test]
+    public void SkinBlendedWithTheTrunkIsCheckedWithTheLeg()
+    {
+        CharacterModel model = Tailed.Value;
+        Rig rig = model.Rig;
+        RigLimb leg = model.Limbs.Single(l => l.Name == "left_hind");
+        int trunk = rig.Joints[leg.Chain[0]].Parent;
+        (Vector3[] positions, Quaternion[] rotations) = Solve(model, new RootPose(new Vector3(0f, 1f, 0f), Quaternion.Identity));
+        SkinBlend[][] blended = [.. model.Source!.BlendProbes.SelectMany(b => b).Where(b => b.Any(part => part.Joint == trunk) && b.Any(part => leg.Chain.Contains(part.Joint)))];
+        Assume.That(blended, Is.Not.Empty, "the thigh's top is skinned partly to the hips");
+        Vector3 Blended(SkinBlend[] blend) => blend.Aggregate(Vector3.Zero, (sum, part) => sum + (part.Weight * (positions[part.Joint] + Vector3.Transform(part.Point, rotations[part.Joint]))));
+        // Everything else the leg's check sees: its rigid skin and its blended skin not carried by the trunk, its bones.
+        Vector3[] others = [
+            .. Enumerable.Range(0, rig.Joints.Count).SelectMany(j => model.Source.SkinProbes[j].Select(s => positions[j] + Vector3.Transform(s, rotations[j]))),
+            .. model.Source.BlendProbes.SelectMany(b => b).Where(b => !b.Any(part => part.Joint == trunk)).Select(Blended)];
+        float Clear(Vector3 p) => MathF.Min(others.Min(o => Vector3.Distance(o, p)), Enumerable.Range(1, rig.Joints.Count - 1).Min(j => ForeignRigTests.SegmentDistance(p, positions[rig.Joints[j].Parent], positions[j])));
+        SkinBlend[] loneliest = blended.MaxBy(b => Clear(Blended(b)))!;
+        Vector3 at = Blended(loneliest);
+        float clear = Clear(at);
+        Assume.That(clear, Is.GreaterThan(0.035f), "a blended point with no other probe or bone near it");
+
+        float half = 0.8f * clear / MathF.Sqrt(3f);
+        Level block = new LevelBuilder("block").AddBox(at - new Vector3(half), at + new Vector3(half)).Build();
+        var collision = new BodyCollision(new TriangleBvh(block.Triangles), model, block.Triangles);
+        Assert.That(collision.LimbCollides(leg, positions, rotations, null), Is.True, $"the thigh's top, blended with the trunk, {half * 100f:0.0} cm inside a block");
+    }
+}
