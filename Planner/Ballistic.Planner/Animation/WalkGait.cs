@@ -100,8 +100,15 @@ internal sealed class WalkGait
     /// <summary>Least the hips dip (in rest leg lengths) as the feet change over, below their height mid-step: the bob of a walker who does not glide.</summary>
     public const float LeastBob = 0.05f;
 
-    /// <summary>Time (seconds) over which the hips' lift is smoothed: no faster rise or fall than a walker's.</summary>
+    /// <summary>Time (seconds) over which the hips' lift is smoothed: no abrupt rise or fall.</summary>
     private const float LiftSmoothing = 0.03f;
+
+    /// <summary>
+    /// Least share of a half-cycle over which the hips' lift rises or falls by <see cref="MostBob"/>: a walker's hips
+    /// rise and fall with its steps (about 0.3 m/s at most for a person: a 5 cm bob at two steps a second), never
+    /// faster.
+    /// </summary>
+    private const float LiftRise = 0.25f;
 
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
@@ -490,6 +497,35 @@ internal sealed class WalkGait
         _scene.Bvh.Raycast(point + (Vector3.UnitY * Touch), -Vector3.UnitY, 2f * Touch, out RayHit hit) && _scene.Surfaces.SurfaceOf(hit.Triangle) >= 0 ? hit.Point : null;
 
     private static float Smooth(float x) => Easing.Smooth(x);
+
+    /// <summary>
+    /// Lowers <paramref name="values"/> (metres, one per fine step) where they rise or fall faster than
+    /// <paramref name="rate"/> per step, never raising any: each becomes the least of every measured value plus
+    /// <paramref name="rate"/> times the steps between them (a forward and a backward pass). Steps not
+    /// <paramref name="measured"/> are left as they are and bound none.
+    /// </summary>
+    internal static void LimitRate(float[] values, bool[] measured, float rate)
+    {
+        for (int pass = 0; pass < 2; pass++)
+        {
+            int previous = -1;
+            for (int n = 0; n < values.Length; n++)
+            {
+                int i = pass == 0 ? n : values.Length - 1 - n;
+                if (!measured[i])
+                {
+                    continue;
+                }
+
+                if (previous >= 0)
+                {
+                    values[i] = MathF.Min(values[i], values[previous] + (rate * Math.Abs(i - previous)));
+                }
+
+                previous = i;
+            }
+        }
+    }
 
     /// <summary>What a contact pose lets one foot do: where it stands in the trunk's frame, how far the trunk may move either way along a direction with the foot held.</summary>
     private readonly record struct Footing(Vector3 Local, float Ahead, float Behind);
@@ -947,17 +983,29 @@ internal sealed class WalkGait
 
             raw = capped;
 
+            // No faster rise or fall than a walker's (LiftRise): where the feet's reach lets the hips up less from one
+            // moment to the next (a foot landing farther off, the other leaving), they are lowered ahead of it instead
+            // of dropping (the desert skeleton's hips fell 9 cm in 0.07 s from a lift its next step did not allow). Only
+            // ever lowered, so the feet stay within reach: the lift at each step is the least of every step's lift plus
+            // the rate times the time between them (a forward and a backward pass). The dip each step is given below keeps
+            // its own pace: it is the bob, drawn over the step.
+            float halfCycle = (_times[^1] - _times[0]) / Math.Max(1, _times.Length - 1);
+            LimitRate(raw, measured, MostBob * _gait._restLeg / MathF.Max(LiftRise * halfCycle, 1e-3f) * _h);
+
             // The hips dip at least LeastBob of the leg as the feet change over (both groups down, legs apart) below
             // their height mid-step (one group down, under the hips), as far as the walk is at speed: a walker vaults
             // over its stance legs instead of gliding, even where its legs would let the hips ride level (sprawled
             // legs, a crouched gait); below the walk's own path where the hips are not lifted at all. Where the legs'
-            // reach already makes the hips rise and fall that much, they are left as they are.
+            // reach already makes the hips rise and fall that much about their steady rise or sink (Swing), they are
+            // left as they are.
             float dip = LeastBob * _gait._restLeg;
             int half = 0;
             var lifted = new (float Low, float High)[_steps + 1];
+            float[] swings = new float[_steps + 1];
             for (int i = 0; i <= _steps; i++)
             {
                 lifted[i] = measured[i] ? Within(raw, measured, i, window) : default;
+                swings[i] = measured[i] ? Swing(raw, measured, i, window) : 0f;
             }
 
             for (int i = 0; i <= _steps; i++)
@@ -976,7 +1024,7 @@ internal sealed class WalkGait
 
                 float u = Math.Clamp((t - _times[half]) / span, 0f, 1f);
                 float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
-                float deficit = MathF.Max(0f, dip - (lifted[i].High - lifted[i].Low));
+                float deficit = MathF.Max(0f, dip - swings[i]);
                 raw[i] = MathF.Min(raw[i], lifted[i].High - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
             }
 
@@ -1067,6 +1115,43 @@ internal sealed class WalkGait
 
             float spread = (n * sxx) - (sx * sx);
             return spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
+        }
+
+        /// <summary>
+        /// How far (metres) the hips rise and fall within <paramref name="window"/> fine steps of step
+        /// <paramref name="i"/> (itself measured), lifted by <paramref name="lift"/>, about the straight line fitted
+        /// through their heights there, as the eye sees a bob: a steady rise or sink (a lift ramping up, the walk's own
+        /// grade) is no bob.
+        /// </summary>
+        private float Swing(float[] lift, bool[] measured, int i, int window)
+        {
+            (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
+            int from = Math.Max(0, i - window);
+            int to = Math.Min(_steps, i + window);
+            for (int j = from; j <= to; j++)
+            {
+                if (measured[j])
+                {
+                    float x = j - i;
+                    float y = _roots[j].Position.Y + lift[j];
+                    (n, sx, sy, sxx, sxy) = (n + 1f, sx + x, sy + y, sxx + (x * x), sxy + (x * y));
+                }
+            }
+
+            float spread = (n * sxx) - (sx * sx);
+            float slope = spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
+            float at = (sy - (slope * sx)) / n;
+            (float low, float high) = (float.PositiveInfinity, float.NegativeInfinity);
+            for (int j = from; j <= to; j++)
+            {
+                if (measured[j])
+                {
+                    float off = _roots[j].Position.Y + lift[j] - (at + (slope * (j - i)));
+                    (low, high) = (MathF.Min(low, off), MathF.Max(high, off));
+                }
+            }
+
+            return high - low;
         }
 
         /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>
