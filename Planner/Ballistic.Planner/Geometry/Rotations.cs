@@ -23,8 +23,16 @@ public static class Rotations
         return Quaternion.CreateFromAxisAngle(axis, MathF.Acos(dot));
     }
 
-    /// <summary>The angle (radians, 0 to π) of the rotation taking <paramref name="a"/> to <paramref name="b"/> (unit quaternions; q and −q alike).</summary>
-    internal static float AngleBetween(Quaternion a, Quaternion b) => 2f * MathF.Acos(Math.Clamp(MathF.Abs(Quaternion.Dot(a, b)), 0f, 1f));
+    /// <summary>
+    /// The angle (radians, 0 to π) of the rotation taking <paramref name="a"/> to <paramref name="b"/> (unit
+    /// quaternions; q and −q alike): from the relative rotation's sine and cosine, exact near 0, where the cosine of
+    /// the two's dot product alone rounds (two headings 10⁻⁷ apart read 3·10⁻⁴ rad, a 0.4 s turn in place).
+    /// </summary>
+    internal static float AngleBetween(Quaternion a, Quaternion b)
+    {
+        Quaternion r = Quaternion.Conjugate(a) * b;
+        return 2f * MathF.Atan2(new Vector3(r.X, r.Y, r.Z).Length(), MathF.Abs(r.W));
+    }
 
     /// <summary>
     /// Splits a transform into a uniform scale and a rotation (row-vector matrix); false when it is sheared,

@@ -18,6 +18,9 @@ public sealed record Walk : Move
     /// <summary>Least time (seconds) of a turn in place: even a small turn takes two steps' time, one for each group of feet.</summary>
     public const float MinTurnTime = 0.4f;
 
+    /// <summary>Largest difference (radians, 0.06°) between a stance's heading and the walk's that is no turn in place: rounding, not a turn.</summary>
+    private const float NoTurn = 1e-3f;
+
     /// <summary>Time (seconds) the trunk takes to speed up from rest to the walking speed, and to slow down to rest.</summary>
     public const float RampTime = 0.5f;
 
@@ -325,8 +328,8 @@ public sealed record Walk : Move
     /// <summary>Upright rotation facing the horizontal direction <paramref name="heading"/>.</summary>
     private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));
 
-    /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn).</summary>
-    private float TurnTime(float angle) => angle > 1e-4f ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
+    /// <summary>Seconds to turn in place by <paramref name="angle"/> radians: at <see cref="TurnRate"/>, at least <see cref="MinTurnTime"/> (none for no turn: <see cref="NoTurn"/> or less).</summary>
+    private float TurnTime(float angle) => angle > NoTurn ? MathF.Max(angle / TurnRate, MinTurnTime) : 0f;
 
     private static float Smooth(float x) => Easing.Smooth(x);
 }
