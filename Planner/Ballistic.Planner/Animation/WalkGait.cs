@@ -499,6 +499,43 @@ internal sealed class WalkGait
     private static float Smooth(float x) => Easing.Smooth(x);
 
     /// <summary>
+    /// How far (metres) <paramref name="heights"/> (the hips' world height at each fine step) rise and fall within
+    /// <paramref name="window"/> steps of step <paramref name="i"/> (itself measured), about the straight line fitted
+    /// through the measured ones there, as the eye sees a bob: a steady rise or sink (a lift ramping up, the walk's
+    /// own grade) is no bob. Steps not <paramref name="measured"/> are left out.
+    /// </summary>
+    internal static float HipSwing(float[] heights, bool[] measured, int i, int window)
+    {
+        (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
+        int from = Math.Max(0, i - window);
+        int to = Math.Min(heights.Length - 1, i + window);
+        for (int j = from; j <= to; j++)
+        {
+            if (measured[j])
+            {
+                float x = j - i;
+                float y = heights[j];
+                (n, sx, sy, sxx, sxy) = (n + 1f, sx + x, sy + y, sxx + (x * x), sxy + (x * y));
+            }
+        }
+
+        float spread = (n * sxx) - (sx * sx);
+        float slope = spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
+        float at = (sy - (slope * sx)) / n;
+        (float low, float high) = (float.PositiveInfinity, float.NegativeInfinity);
+        for (int j = from; j <= to; j++)
+        {
+            if (measured[j])
+            {
+                float off = heights[j] - (at + (slope * (j - i)));
+                (low, high) = (MathF.Min(low, off), MathF.Max(high, off));
+            }
+        }
+
+        return high - low;
+    }
+
+    /// <summary>
     /// Lowers <paramref name="values"/> (metres, one per fine step) where they rise or fall faster than
     /// <paramref name="rate"/> per step, never raising any: each becomes the least of every measured value plus
     /// <paramref name="rate"/> times the steps between them (a forward and a backward pass). Steps not
@@ -1002,10 +1039,16 @@ internal sealed class WalkGait
             int half = 0;
             var lifted = new (float Low, float High)[_steps + 1];
             float[] swings = new float[_steps + 1];
+            float[] heights = new float[_steps + 1];
+            for (int i = 0; i <= _steps; i++)
+            {
+                heights[i] = _roots[i].Position.Y + raw[i];
+            }
+
             for (int i = 0; i <= _steps; i++)
             {
                 lifted[i] = measured[i] ? Within(raw, measured, i, window) : default;
-                swings[i] = measured[i] ? Swing(raw, measured, i, window) : 0f;
+                swings[i] = measured[i] ? HipSwing(heights, measured, i, window) : 0f;
             }
 
             for (int i = 0; i <= _steps; i++)
@@ -1115,43 +1158,6 @@ internal sealed class WalkGait
 
             float spread = (n * sxx) - (sx * sx);
             return spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
-        }
-
-        /// <summary>
-        /// How far (metres) the hips rise and fall within <paramref name="window"/> fine steps of step
-        /// <paramref name="i"/> (itself measured), lifted by <paramref name="lift"/>, about the straight line fitted
-        /// through their heights there, as the eye sees a bob: a steady rise or sink (a lift ramping up, the walk's own
-        /// grade) is no bob.
-        /// </summary>
-        private float Swing(float[] lift, bool[] measured, int i, int window)
-        {
-            (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
-            int from = Math.Max(0, i - window);
-            int to = Math.Min(_steps, i + window);
-            for (int j = from; j <= to; j++)
-            {
-                if (measured[j])
-                {
-                    float x = j - i;
-                    float y = _roots[j].Position.Y + lift[j];
-                    (n, sx, sy, sxx, sxy) = (n + 1f, sx + x, sy + y, sxx + (x * x), sxy + (x * y));
-                }
-            }
-
-            float spread = (n * sxx) - (sx * sx);
-            float slope = spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
-            float at = (sy - (slope * sx)) / n;
-            (float low, float high) = (float.PositiveInfinity, float.NegativeInfinity);
-            for (int j = from; j <= to; j++)
-            {
-                if (measured[j])
-                {
-                    float off = _roots[j].Position.Y + lift[j] - (at + (slope * (j - i)));
-                    (low, high) = (MathF.Min(low, off), MathF.Max(high, off));
-                }
-            }
-
-            return high - low;
         }
 
         /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>

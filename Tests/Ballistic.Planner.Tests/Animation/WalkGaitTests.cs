@@ -258,6 +258,34 @@ public sealed class WalkGaitTests
         }
     }
 
+    /// <summary>
+    /// The least dip is added where the hips' swing falls short, and the swing is read about the walk's own grade: hips
+    /// rising steadily up a 1 in 10 slope (2.4 cm over the window's 24 steps of 1 cm) swing nothing; a 1.5 cm rise and
+    /// fall over each step on that slope swings 3 cm, however the slope runs; steps where no foot is held are left out.
+    /// </summary>
+    [Test]
+    public void TheHipsSwingIsTheirRiseAndFallAboutTheGrade()
+    {
+        const int Window = 12;
+        bool[] all = [.. Enumerable.Repeat(true, 61)];
+        float[] Heights(float grade, float bob) => [.. Enumerable.Range(0, 61).Select(j => (grade * 0.01f * j) + (bob * MathF.Cos(MathF.PI * j / Window)))];
+        bool[] gaps = [.. Enumerable.Range(0, 61).Select(j => j % 5 != 2)];
+        float[] spiked = Heights(0.1f, 0.015f);
+        foreach (int j in Enumerable.Range(0, 61).Where(j => !gaps[j]))
+        {
+            spiked[j] = 5f;
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(WalkGait.HipSwing(Heights(0.1f, 0f), all, 24, Window), Is.LessThan(1e-4f), "a steady rise is no swing");
+            Assert.That(WalkGait.HipSwing(Heights(-0.1f, 0f), all, 24, Window), Is.LessThan(1e-4f), "nor a steady sink");
+            Assert.That(WalkGait.HipSwing(Heights(0f, 0.015f), all, 24, Window), Is.EqualTo(0.03f).Within(0.004f), "a 1.5 cm bob on the level");
+            Assert.That(WalkGait.HipSwing(Heights(0.1f, 0.015f), all, 24, Window), Is.EqualTo(0.03f).Within(0.004f), "the same bob up the slope");
+            Assert.That(WalkGait.HipSwing(spiked, gaps, 24, Window), Is.EqualTo(0.03f).Within(0.006f), "steps not held are left out");
+        });
+    }
+
     [Test]
     public void AVeryShortWalkStepsWithoutSliding()
     {
