@@ -320,7 +320,7 @@ public sealed class BodyCollision
             Triangle triangle = _triangles![t];
             Aabb bounds = triangle.Bounds;
             Vector3 outside = Vector3.Max(Vector3.Max(bounds.Min - p, p - bounds.Max), Vector3.Zero);
-            if (outside.Length() > nearest + EdgeTie)
+            if (outside.LengthSquared() > (nearest + EdgeTie) * (nearest + EdgeTie))
             {
                 continue; // its box is already farther than the nearest triangle
             }

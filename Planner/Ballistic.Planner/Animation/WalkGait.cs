@@ -506,10 +506,29 @@ internal sealed class WalkGait
     /// </summary>
     internal static float HipSwing(float[] heights, bool[] measured, int i, int window)
     {
+        (float at, float slope) = FitLine(heights, measured, i, window);
+        (float low, float high) = (float.PositiveInfinity, float.NegativeInfinity);
+        for (int j = Math.Max(0, i - window); j <= Math.Min(heights.Length - 1, i + window); j++)
+        {
+            if (measured[j])
+            {
+                float off = heights[j] - (at + (slope * (j - i)));
+                (low, high) = (MathF.Min(low, off), MathF.Max(high, off));
+            }
+        }
+
+        return high - low;
+    }
+
+    /// <summary>
+    /// The least-squares line through the <paramref name="measured"/> <paramref name="heights"/> (metres, one per fine
+    /// step) within <paramref name="window"/> steps of step <paramref name="i"/> (itself measured): its height at
+    /// <paramref name="i"/> and its slope (metres per step; 0 where the steps span no length).
+    /// </summary>
+    private static (float At, float Slope) FitLine(float[] heights, bool[] measured, int i, int window)
+    {
         (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
-        int from = Math.Max(0, i - window);
-        int to = Math.Min(heights.Length - 1, i + window);
-        for (int j = from; j <= to; j++)
+        for (int j = Math.Max(0, i - window); j <= Math.Min(heights.Length - 1, i + window); j++)
         {
             if (measured[j])
             {
@@ -521,18 +540,7 @@ internal sealed class WalkGait
 
         float spread = (n * sxx) - (sx * sx);
         float slope = spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
-        float at = (sy - (slope * sx)) / n;
-        (float low, float high) = (float.PositiveInfinity, float.NegativeInfinity);
-        for (int j = from; j <= to; j++)
-        {
-            if (measured[j])
-            {
-                float off = heights[j] - (at + (slope * (j - i)));
-                (low, high) = (MathF.Min(low, off), MathF.Max(high, off));
-            }
-        }
-
-        return high - low;
+        return ((sy - (slope * sx)) / n, slope);
     }
 
     /// <summary>
@@ -999,11 +1007,13 @@ internal sealed class WalkGait
             int window = Math.Max(1, (int)MathF.Round(_step / _walk.Speed / _h));
             float bob = MostBob * _gait._restLeg;
             float[] capped = (float[])raw.Clone();
+            float[] path = [.. _roots.Select(r => r.Position.Y)];
             for (int i = 0; i <= _steps; i++)
             {
                 if (measured[i])
                 {
-                    float slope = Grade(measured, i, window);
+                    // The walk's own grade: the slope (metres per fine step) of the line through the unlifted roots.
+                    float slope = FitLine(path, measured, i, window).Slope;
                     float above = height[i];
                     float floor = above;
                     for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
@@ -1039,11 +1049,7 @@ internal sealed class WalkGait
             int half = 0;
             var lifted = new (float Low, float High)[_steps + 1];
             float[] swings = new float[_steps + 1];
-            float[] heights = new float[_steps + 1];
-            for (int i = 0; i <= _steps; i++)
-            {
-                heights[i] = _roots[i].Position.Y + raw[i];
-            }
+            float[] heights = [.. path.Select((y, i) => y + raw[i])];
 
             for (int i = 0; i <= _steps; i++)
             {
@@ -1140,24 +1146,6 @@ internal sealed class WalkGait
             }
 
             return best;
-        }
-
-        /// <summary>The walk's own grade at fine step <paramref name="i"/>: the slope (metres per fine step) of the straight line fitted through the unlifted roots' heights at the measured steps within <paramref name="window"/> of it.</summary>
-        private float Grade(bool[] measured, int i, int window)
-        {
-            (float n, float sx, float sy, float sxx, float sxy) = (0f, 0f, 0f, 0f, 0f);
-            for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
-            {
-                if (measured[j])
-                {
-                    float x = j - i;
-                    float y = _roots[j].Position.Y;
-                    (n, sx, sy, sxx, sxy) = (n + 1f, sx + x, sy + y, sxx + (x * x), sxy + (x * y));
-                }
-            }
-
-            float spread = (n * sxx) - (sx * sx);
-            return spread > 1e-6f ? ((n * sxy) - (sx * sy)) / spread : 0f;
         }
 
         /// <summary>The least and greatest of the measured <paramref name="values"/> within <paramref name="window"/> fine steps of step <paramref name="i"/> (itself measured).</summary>
