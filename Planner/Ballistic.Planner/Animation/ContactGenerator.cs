@@ -481,8 +481,9 @@ public sealed class ContactGenerator
     /// </summary>
     private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
-        IkResult result = Ik.Solve(root, trial, limb, point, -normal, seed: 1);
-        if (!result.Success && !PositionFirst(root, trial, limb, point, normal, result, positions, rotations))
+        float[] stalled = new float[trial.Length];
+        IkResult result = Ik.Solve(root, trial, limb, point, -normal, 1, stalled);
+        if (!result.Success && !PositionFirst(root, trial, limb, point, normal, result, stalled, positions, rotations))
         {
             return false;
         }
@@ -512,16 +513,18 @@ public sealed class ContactGenerator
     /// The second try of a solve that stalled a few millimetres short with its contact face already within the IK's
     /// normal tolerance of the surface: the damped solve weighs the last degrees of face alignment against the last
     /// millimetre of position and can settle between them (a sprawled insect leg near full stretch on a slope). The
-    /// point is solved alone, from the same start, and kept when the face still lies within the tolerance.
+    /// point is solved alone from where the solve stalled (<paramref name="stalled"/>, its face already turned onto
+    /// the surface: started from the contact pose instead, a foot held level on a 15° slope would keep its toe in
+    /// the rising ground) and kept when the face still lies within the tolerance.
     /// </summary>
-    private bool PositionFirst(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, IkResult failed, Vector3[] positions, Quaternion[] rotations)
+    private bool PositionFirst(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, IkResult failed, float[] stalled, Vector3[] positions, Quaternion[] rotations)
     {
         if (!(failed.PositionError < StallDistance) || !(failed.NormalError <= Ik.Settings.NormalTolerance))
         {
             return false;
         }
 
-        float[] position = (float[])trial.Clone();
+        float[] position = (float[])stalled.Clone();
         if (!Ik.Solve(root, position, limb, point, null, seed: 1).Success)
         {
             return false;

@@ -18,4 +18,12 @@ public sealed record Limb(string Name, LimbKind Kind, Vector3 WorkspaceCenter, V
     /// <summary>The workspace Wk in world space for the root pose <paramref name="root"/>.</summary>
     public OrientedBox WorkspaceAt(in RootPose root) =>
         new(root.ToWorld(WorkspaceCenter), WorkspaceHalfExtents, root.Rotation * WorkspaceRotation);
+
+    /// <summary>
+    /// Where the character's contact pose holds the limb's contact point, in the trunk frame (metres); <c>null</c> for
+    /// a limb given only by its box. The contact estimate on a surface is the point of it nearest here, so that the
+    /// planned stance stands the limb where the animated body puts it (legs under the hips); without it, the centre of
+    /// Wk's intersection with the surface (the paper's estimate).
+    /// </summary>
+    public Vector3? Home { get; init; }
 }

@@ -183,6 +183,10 @@ public sealed class ReducedCharacter
             Vector3 h = limb.WorkspaceHalfExtents;
             Quaternion q = limb.WorkspaceRotation;
             Append(hash, (int)limb.Kind, c.X, c.Y, c.Z, h.X, h.Y, h.Z, q.X, q.Y, q.Z, q.W, limb.Filter.Direction.X, limb.Filter.Direction.Y, limb.Filter.Direction.Z, limb.Filter.MinCosine);
+            if (limb.Home is { } home)
+            {
+                Append(hash, home.X, home.Y, home.Z);
+            }
         }
 
         // Walking changes the roadmap (its walks); a character that only jumps keeps the fingerprint it always had.

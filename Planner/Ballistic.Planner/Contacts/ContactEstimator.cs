@@ -10,7 +10,8 @@ namespace Ballistic.Planner.Contacts;
 /// <summary>
 /// FINDCONTACTS and COMPUTECONE of the paper: for a root pose, each limb whose workspace Wk touches an acceptable
 /// surface gets an estimated contact on the largest such surface, at the point of the mesh nearest the centre of Wk's
-/// intersection with it, with the normal of the triangle that point lies on. A surface is acceptable when the limb's
+/// intersection with it (or, for a limb derived from a rig, nearest its <see cref="Limb.Home"/>: where the contact
+/// pose holds it), with the normal of the triangle that point lies on. A surface is acceptable when the limb's
 /// filter accepts it, its face is turned toward the trunk (the underside of a slab the workspace pierces is not) and
 /// the contact point can be seen from the trunk centre (not the floor under a crate the workspace reaches into).
 /// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. A pose that
@@ -185,7 +186,8 @@ public sealed class ContactEstimator
                 break;
             }
 
-            (Vector3 Position, Vector3 Normal) onMesh = PointOn(parts[p], workspace, pieces);
+            Vector3 aim = limb.Home is { } home ? pose.ToWorld(home) : parts[p].Moment / parts[p].Area;
+            (Vector3 Position, Vector3 Normal) onMesh = PointOn(parts[p].Surface, aim, workspace, pieces);
 
             // A surface hidden from the trunk (the floor under a crate the workspace reaches into) cannot be reached.
             Vector3 seen = onMesh.Position + (onMesh.Normal * 0.01f);
@@ -206,18 +208,19 @@ public sealed class ContactEstimator
     private static bool Before(in SurfacePart a, in SurfacePart b) => a.Area > b.Area || (a.Area == b.Area && a.Surface < b.Surface);
 
     /// <summary>
-    /// The patch's centre lies off a curved surface: the contact is the point of the patch's own mesh nearest to it,
-    /// or when that point leaves Wk the centre of the triangle's piece inside Wk (on the triangle and inside Wk, the
-    /// piece being convex), with that triangle's normal.
+    /// The contact on surface <paramref name="surface"/>: the point of its mesh inside Wk nearest <paramref name="aim"/>
+    /// (the limb's home, or the patch's centre, which lies off a curved surface), or when that point leaves Wk the
+    /// centre of the triangle's piece inside Wk (on the triangle and inside Wk, the piece being convex), with that
+    /// triangle's normal.
     /// </summary>
-    private (Vector3 Position, Vector3 Normal) PointOn(in SurfacePart part, in OrientedBox workspace, List<Piece> pieces)
+    private (Vector3 Position, Vector3 Normal) PointOn(int surface, Vector3 aim, in OrientedBox workspace, List<Piece> pieces)
     {
-        Vector3 centre = part.Moment / part.Area;
+        Vector3 centre = aim;
         (Vector3 Position, Vector3 Normal) best = default;
         float nearest = float.PositiveInfinity;
         foreach (Piece piece in pieces)
         {
-            if (piece.Surface != part.Surface)
+            if (piece.Surface != surface)
             {
                 continue;
             }

@@ -45,7 +45,15 @@ public sealed class LimbIk
     /// <param name="target">Target contact point, world metres.</param>
     /// <param name="targetNormal">Target contact normal (unit, world), or <c>null</c> for position only.</param>
     /// <param name="seed">Seed of the restarts' starting configurations.</param>
-    public IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed = 0)
+    public IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed = 0) =>
+        Solve(root, q, limb, target, targetNormal, seed, []);
+
+    /// <summary>
+    /// As <see cref="Solve(in RootPose, Span{float}, RigLimb, Vector3, Vector3?, int)"/>; on failure, when
+    /// <paramref name="nearest"/> is as long as <paramref name="q"/>, it receives the configuration of the attempt that
+    /// ended nearest its target (where a stalled solve stopped, its face already turned toward the normal).
+    /// </summary>
+    internal IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed, Span<float> nearest)
     {
         ArgumentNullException.ThrowIfNull(limb);
         float[] trial = q.ToArray();
@@ -76,6 +84,10 @@ public sealed class LimbIk
             if (result.PositionError < best.PositionError)
             {
                 best = result;
+                if (nearest.Length == trial.Length)
+                {
+                    trial.CopyTo(nearest);
+                }
             }
         }
 

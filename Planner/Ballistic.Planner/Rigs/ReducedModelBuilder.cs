@@ -124,7 +124,9 @@ public static class ReducedModelBuilder
             int hi = xs.Count - 1 - lo;
             var min = new Vector3(xs[lo], ys[lo], zs[lo]);
             var max = new Vector3(xs[hi], ys[hi], zs[hi]);
-            limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter));
+            rig.Solve(identity, model.ContactPose, positions, rotations);
+            Vector3 home = limb.EffectorPosition(positions, rotations);
+            limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter) { Home = home });
         }
 
         return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction)

@@ -3,6 +3,7 @@ using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
@@ -107,6 +108,37 @@ public sealed class ContactPoseTests
         {
             Assert.That(feet, Is.EqualTo(6 * stances), "every foot stands");
             Assert.That(wide, Is.Empty, $"{wide.Count} of {feet} feet on {stances} tilted stances stand wide of their contact pose");
+        });
+    }
+
+    /// <summary>
+    /// On a dune flank rising 14° ahead of its left foot (the demo's landing before its long walk), the skeleton
+    /// stands on both contacts the plan reports. The IK stalled 1.4 mm short there with the sole turned onto the
+    /// slope, and its position-only retry started again from the contact pose, holding the foot level with its toe
+    /// 1.6 cm in the rising sand; that foothold refused, the foot went to a database sample's 0.38 m ahead (the eye
+    /// read the landing 0.28 m off the plan). The retry now starts where the stalled solve stopped.
+    /// </summary>
+    [Test]
+    public void AFootOnASlopeRisingAheadStandsOnItsEstimatedContact()
+    {
+        WalkWorld world = WalkWorld.Create(SharedLevels.Bundled("desert"), "skeleton");
+        var root = new RootPose(new Vector3(-3.024684f, 1.8278866f, 0.20208552f), new Quaternion(-0.045546934f, 0.61703116f, 0.10435913f, 0.7786573f));
+        int left = Enumerable.Range(0, world.Model.Limbs.Count).Single(l => world.Model.Limbs[l].Name == "left_foot");
+        int right = Enumerable.Range(0, world.Model.Limbs.Count).Single(l => world.Model.Limbs[l].Name == "right_foot");
+        Contact[] estimated =
+        [
+            new(left, new Vector3(-2.7335448f, 0.8851596f, 0.058966897f), new Vector3(-0.24856646f, 0.96768636f, 0.04240317f), 0.5f, 0),
+            new(right, new Vector3(-2.7644143f, 0.86966735f, 0.25002122f), new Vector3(-0.19086087f, 0.98119986f, 0.028617602f), 0.5f, 0),
+        ];
+        ContactConfiguration pose = world.Animator.Contacts.Generate(root, estimated, new Vector3(-0.2198154f, 0.97489434f, 0.035526827f), 0f, onEstimates: true);
+        Assert.Multiple(() =>
+        {
+            foreach (Contact c in estimated)
+            {
+                LimbContact? made = pose.ContactOf(c.Limb);
+                Assert.That(made, Is.Not.Null, $"{world.Model.Limbs[c.Limb].Name} stands");
+                Assert.That(Vector3.Distance(made!.Value.Position, c.Position), Is.LessThan(0.01f), $"{world.Model.Limbs[c.Limb].Name} stands on {made.Value.Position}, its estimate {c.Position}");
+            }
         });
     }
 

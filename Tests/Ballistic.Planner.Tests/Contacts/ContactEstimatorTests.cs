@@ -5,6 +5,7 @@ using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Surfaces;
 using Ballistic.Planner.Tests.Support;
 
@@ -13,7 +14,7 @@ namespace Ballistic.Planner.Tests.Contacts;
 public sealed class ContactEstimatorTests
 {
     [Test]
-    public void SkeletonStandingOnAFloorTouchesWithBothFeetAtTheWorkspaceFootprint()
+    public void SkeletonStandingOnAFloorTouchesWithBothFeetUnderTheirHomes()
     {
         Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, 0f).Build();
         ContactEstimator estimator = Estimator(level, CharacterPresets.Skeleton());
@@ -25,9 +26,12 @@ public sealed class ContactEstimatorTests
         Assert.That(evaluation.Contacts.Select(c => skeleton.Limbs[c.Limb].Name), Is.EquivalentTo(new[] { "left_foot", "right_foot" }));
         foreach (Contact c in evaluation.Contacts)
         {
-            // On the floor, inside the workspace, under its centre, with the floor's normal and the default μ.
+            // On the floor, inside the workspace, under the foot's home (where the contact pose holds it), with the
+            // floor's normal and the default μ.
             OrientedBox workspace = skeleton.Limbs[c.Limb].WorkspaceAt(pose);
-            Vector3 under = workspace.Center with { Y = 0f };
+            Assert.That(skeleton.Limbs[c.Limb].Home, Is.Not.Null);
+            Vector3 under = pose.ToWorld(skeleton.Limbs[c.Limb].Home!.Value) with { Y = 0f };
+            Assert.That(workspace.Contains(under), Is.True);
             Assert.That(c.Position.Y, Is.EqualTo(0f).Within(1e-5f));
             Assert.That(Vector3.Distance(c.Position, under), Is.LessThan(1e-3f));
             Assert.That(Vector3.Distance(c.Normal, Vector3.UnitY), Is.LessThan(1e-5f));
@@ -131,6 +135,74 @@ public sealed class ContactEstimatorTests
             Assert.That(evaluation.Cone.Axis.Z, Is.LessThan(-0.1f), "the wall pushes back");
             Assert.That(evaluation.Cone.Mu, Is.EqualTo(0.1f));
         });
+    }
+
+    /// <summary>
+    /// A limb with a home (where its contact pose holds it) touches the floor under its home, not under its
+    /// workspace's centre; a home beyond the workspace's reach over the floor is not aimed at (the floor's piece
+    /// inside the workspace is, at its centre).
+    /// </summary>
+    [Test]
+    public void AContactIsEstimatedUnderTheLimbsHome()
+    {
+        Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, 0f).Build();
+        var pose = new RootPose(new Vector3(1f, 1f, -2f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.5f));
+        Vector3 Touch(Vector3? home)
+        {
+            var limb = new Limb("foot", LimbKind.Foot, new Vector3(0f, -0.8f, 0f), new Vector3(0.3f), Quaternion.Identity, NormalFilter.None) { Home = home };
+            var character = new ReducedCharacter("one-legged", new Vector3(0.2f), [limb], 1, 5f, 5f, 1f);
+            Assert.That(Estimator(level, character).TryEstimate(0, pose, [], out Contact contact), Is.True);
+            return contact.Position;
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(Vector3.Distance(Touch(null), pose.ToWorld(new Vector3(0f, -1f, 0f))), Is.LessThan(1e-3f), "no home: under the workspace's centre");
+            Assert.That(Vector3.Distance(Touch(new Vector3(0.2f, -1.05f, 0.15f)), pose.ToWorld(new Vector3(0.2f, -1f, 0.15f))), Is.LessThan(1e-3f), "under the home");
+            Assert.That(Vector3.Distance(Touch(new Vector3(0.5f, -1f, 0f)), pose.ToWorld(new Vector3(0f, -1f, 0f))), Is.LessThan(1e-3f), "a home beyond the workspace: under its centre");
+        });
+    }
+
+    /// <summary>
+    /// A rig's derived limbs have their homes where its contact pose holds each contact point (the human rig whose
+    /// pelvis and legs carry 90° rest rotations, as assimp and FBX converters write them): over a floor at the height
+    /// of its feet's workspaces' centres, each foot's contact is estimated within 1 cm of straight above where the
+    /// contact pose puts it.
+    /// </summary>
+    [Test]
+    public void ADerivedFootTouchesTheFloorWhereItsContactPoseStands()
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-home-{Guid.NewGuid():N}");
+        try
+        {
+            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(folder);
+            var positions = new Vector3[model.Rig.Joints.Count];
+            var rotations = new Quaternion[model.Rig.Joints.Count];
+            var root = new RootPose(new Vector3(0.4f, 2f, -0.7f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 2f));
+            model.Rig.Solve(root, model.ContactPose, positions, rotations);
+            RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
+            float floor = reduced.Limbs.Where(l => l.Kind == LimbKind.Foot).Max(l => root.ToWorld(l.WorkspaceCenter).Y);
+            Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, floor).Build();
+            ContactEstimator estimator = Estimator(level, reduced);
+            Assert.Multiple(() =>
+            {
+                foreach (RigLimb foot in feet)
+                {
+                    int index = reduced.Limbs.ToList().FindIndex(l => l.Name == foot.Name);
+                    Vector3 standing = foot.EffectorPosition(positions, rotations);
+                    Assert.That(reduced.Limbs[index].Home, Is.Not.Null, foot.Name);
+                    Assert.That(estimator.TryEstimate(index, root, [], out Contact contact), Is.True, foot.Name);
+                    Assert.That(Vector3.Distance(contact.Position, standing with { Y = floor }), Is.LessThan(0.01f), $"{foot.Name} touches the floor where its contact pose stands");
+                }
+            });
+        }
+        finally
+        {
+            if (Directory.Exists(folder))
+            {
+                Directory.Delete(folder, recursive: true);
+            }
+        }
     }
 
     [Test]

@@ -107,7 +107,7 @@ public sealed class SweepTests
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
     internal static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>
-        look.All.Where(c => c.Name is "crouch" or "absorb" or "ground time" or "soles" or "flight pose" or "crossing" or "inside" or "bob" or "arm swing");
+        look.All.Where(c => c.Name is "crouch" or "absorb" or "ground time" or "soles" or "flight pose" or "crossing" or "footholds" or "inside" or "bob" or "arm swing");
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, and at most one request

@@ -86,7 +86,8 @@ public sealed class JumpFacingTests
             // The path is continuous from the request's own start to its own goal stance.
             Assert.That(faced.Moves[0].From, Is.EqualTo(faced.Start));
             Assert.That(faced.Moves[^1].To, Is.EqualTo(faced.Goal));
-            Assert.That(faced.Goal, Is.EqualTo(searched.Goal));
+            // The goal, or placed again where it stands turned toward a last jump landing off its way.
+            Assert.That(Vector3.Distance(faced.Goal!.Pose.Position, searched.Goal!.Pose.Position), Is.LessThan(1e-3f), "the faced path ends where the searched one does");
             for (int i = 1; i < faced.Moves.Count; i++)
             {
                 Assert.That(faced.Moves[i].From, Is.EqualTo(faced.Moves[i - 1].To), $"move {i} starts where move {i - 1} ends");
@@ -226,14 +227,15 @@ public sealed class JumpFacingTests
     }
 
     /// <summary>
-    /// Where a jump takes off from a stance on a slope the dog can neither walk nor hop round on (its turned takeoffs
-    /// link by no hop: the cones there hold none), the jump before it lands turned toward it instead, as far as that
-    /// landing may be off its own way: both face their way within the eye's limits (the takeoff 98° off before).
+    /// Where a jump takes off from a stance the body can neither walk nor hop round on (its turned takeoffs link by no
+    /// turn: the tailed quadruped between two holes), the jump before it lands turned toward it instead, as far as that
+    /// landing may be off its own way: both face their way within the eye's limits (first seen on the curved level's
+    /// dog, the takeoff 98° off before).
     /// </summary>
     [Test]
     public void AJumpTakingOffWhereTheBodyCannotTurnIsLandedOnTurnedTowardIt()
     {
-        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = CurvedDog(2);
+        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = Foreign("holes-debris", "tailed", 0);
         (float off, float on) = Worst(plan.Result);
         Jump[] jumps = [.. plan.Result.Jumps];
         TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {jumps.Length} jumps");
@@ -244,21 +246,24 @@ public sealed class JumpFacingTests
             Assert.That(Enumerable.Range(1, jumps.Length - 1).Any(i => Far(jumps[i - 1]) && Far(jumps[i]) && jumps[i].From == jumps[i - 1].To && Off(jumps[i].From, jumps[i - 1]) > JumpFacer.LandingTurn * 180f / MathF.PI),
                 Is.True, "some far jump lands turned toward the far jump it takes off for");
         });
-        AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
+        AuditReport audit = PlanAudit.Check("holes-debris tailed", setup.Scene, from, to, plan.Result, plan.Animation);
         Assert.That(plan.Animation, Is.Not.Null, "the path animates");
         Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
     }
 
     /// <summary>The dog's animated plan of the curved terrain's request <paramref name="request"/>, as the sweep makes it.</summary>
-    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) CurvedDog(int request)
+    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) CurvedDog(int request) => Foreign("curved", "dog", request);
+
+    /// <summary>The animated plan of a foreign rig on a foreign level's request <paramref name="request"/>, as the sweep makes it.</summary>
+    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) Foreign(string levelName, string rig, int request)
     {
-        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
-        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-dog-{Guid.NewGuid():N}");
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{rig}-{Guid.NewGuid():N}");
         Sweep.Setup setup;
         try
         {
-            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("dog").Load(folder);
-            setup = Sweep.Prepare("curved", level, model, reduced);
+            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(rig).Load(folder);
+            setup = Sweep.Prepare(levelName, level, model, reduced);
         }
         finally
         {
@@ -285,10 +290,12 @@ public sealed class JumpFacingTests
         PlanResult again = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, settings with { UncutJumps = walked });
         Assert.That(again.Status, Is.EqualTo(PlannerStatus.Exact), again.Reason);
         (float off, float on) = Worst(again);
+        (int From, int To)[] used = [.. again.Moves.SelectMany(m => m.CutFrom).Where(walked.Contains).Distinct()];
         Assert.Multiple(() =>
         {
             Assert.That(again.Walks.Where(w => w.CutFrom.Any(walked.Contains)), Is.Empty, "no walk stands in for a jump given back");
-            Assert.That(again.Jumps.Count(j => j.CutFrom.Any(walked.Contains)), Is.GreaterThan(walked.Count), "each given-back jump turns by hops");
+            Assert.That(used, Is.Not.Empty, "the path searched again still takes a given-back jump");
+            Assert.That(used.Where(p => again.Jumps.Count(j => j.CutFrom.Contains(p)) < 2), Is.Empty, "each given-back jump the path takes turns by a hop (two jumps or more stand for it)");
             Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing));
             Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing));
         });

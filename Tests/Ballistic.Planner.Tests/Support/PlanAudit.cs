@@ -378,16 +378,18 @@ internal static class PlanAudit
 
         // No bone through the level at any frame: every bone segment (parent → joint, effector → contact point) of
         // the body (a loaded rig's helper bones such as IK targets are no body part), less its part within 1 cm of a
-        // contact held at that time.
+        // contact held at that time or released less than one sample (1/120 s) before: a sole lifting off its point
+        // (a heel rolling up onto its ball) leaves it at a finite speed, still touching it just after the phase's end.
         int boneHits = 0;
-        for (float t = 0f; t <= animation.Duration + 1e-6f && boneHits == 0; t += 1f / 120f)
+        const float step = 1f / 120f;
+        for (float t = 0f; t <= animation.Duration + 1e-6f && boneHits == 0; t += step)
         {
             float time = MathF.Min(t, animation.Duration);
             animation.Joints(time, positions, rotations);
             var held = new List<Vector3>();
             foreach (ContactPhase p in animation.ContactPhases)
             {
-                if (time >= p.From - 1e-4f && time <= p.To + 1e-4f)
+                if (time >= p.From - 1e-4f && time <= p.To + step)
                 {
                     held.Add(p.Position);
                 }
