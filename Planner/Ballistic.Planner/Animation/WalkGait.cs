@@ -467,6 +467,26 @@ internal sealed class WalkGait
             }
         }
 
+        // Where shorter steps do not clear a trouble either, the hips come down to the stances' height there only (a
+        // step either side of it, Lowered), the rest of the walk upright: one hollow does not crouch the whole walk.
+        float[] lowAt = shortAt;
+        for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && lowAt.Length > 0; again++)
+        {
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, lowAt).Animate();
+            float[] more = [.. lowAt, .. clip.Troubles];
+            bool news = Run.Places(more) > Run.Places(lowAt);
+            lowAt = more;
+            if (clip.Problems.Count < best.Problems.Count)
+            {
+                best = clip;
+            }
+
+            if (!news)
+            {
+                break;
+            }
+        }
+
         if (best.Problems.Count == 0 || !(_restLeg > 0f))
         {
             return best;
@@ -597,6 +617,7 @@ internal sealed class WalkGait
         private readonly List<ContactPhase> _phases = [];
         private readonly List<float> _troubles = [];
         private readonly float[] _shortAt;
+        private readonly float[] _lowAt;
 
         /// <summary>How many places (times on the walk's clock, to the nearest 0.05 s) <paramref name="times"/> names.</summary>
         public static int Places(float[] times) => Rounded(times).Length;
@@ -624,10 +645,11 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null)
         {
             _roll = roll;
             _shortAt = Rounded(shortAt ?? []);
+            _lowAt = Rounded(lowAt ?? []);
             _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
             _lift = lift && _arms;
@@ -1332,7 +1354,23 @@ internal sealed class WalkGait
                 level += LevelShare(distance + (k * LevelWindow / LevelSamples));
             }
 
-            return w * level / ((2 * LevelSamples) + 1);
+            return w * level / ((2 * LevelSamples) + 1) * Lowered(t);
+        }
+
+        /// <summary>
+        /// 0 within a step's time of a trouble that shorter steps did not clear (the hips at the stances' height there,
+        /// the steps measured at that height), rising smoothly to 1 a step beyond; 1 where there is none.
+        /// </summary>
+        private float Lowered(float time)
+        {
+            float share = 1f;
+            float span = _step / MathF.Max(_walk.Speed, 1e-3f);
+            foreach (float at in _lowAt)
+            {
+                share = MathF.Min(share, Smooth(Math.Clamp((MathF.Abs(time - at) - span) / MathF.Max(span, 1e-4f), 0f, 1f)));
+            }
+
+            return share;
         }
 
         /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/>, fading to 0 by <see cref="SteepGrade"/>.</summary>
