@@ -1,7 +1,4 @@
 using System.Numerics;
-using Ballistic.Planner.Characters;
-using Ballistic.Planner.Levels;
-using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Animation;
@@ -18,20 +15,18 @@ public sealed class UprightWalkTests
     [Test]
     public void AWalkLowersItsHipsOnlyWhereItMeetsTrouble()
     {
-        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("holes-debris");
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-tailed-{Guid.NewGuid():N}");
-        Sweep.Setup setup;
+        AuditReport report;
         try
         {
-            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("tailed").Load(folder);
-            setup = Sweep.Prepare("holes-debris", level, model, reduced);
+            (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("holes-debris", "tailed", folder);
+            report = Sweep.Run(setup, requests[0].From, requests[0].To);
         }
         finally
         {
             Directory.Delete(folder, recursive: true);
         }
 
-        AuditReport report = Sweep.Run(setup, requests[0].From, requests[0].To);
         Assert.That(report.Look, Is.Not.Null, report.ToString());
         AnimatorEye.Criterion upright = report.Look!.Upright;
         Assert.That(upright.Worst, Is.Not.Null, "a walk cruises over level ground");

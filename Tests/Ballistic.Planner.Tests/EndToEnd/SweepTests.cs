@@ -1,9 +1,7 @@
 using System.Collections.Concurrent;
 using System.Globalization;
 using System.Numerics;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
-using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -162,7 +160,6 @@ public sealed class SweepTests
         }
 
         // The rig's files stay until the sweep ends: the animated GLB is written from them (a .gltf's .png included).
-        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(character).Load(Path.Combine(RigFolder, $"{levelName}-{character}"));
-        return (Sweep.Prepare(levelName, level, model, reduced), requests);
+        return Sweep.PrepareForeign(levelName, character, Path.Combine(RigFolder, $"{levelName}-{character}"));
     }
 }

@@ -1,13 +1,10 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
-using Ballistic.Planner.Levels;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
-using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
@@ -257,23 +254,19 @@ public sealed class JumpFacingTests
     /// <summary>The animated plan of a foreign rig on a foreign level's request <paramref name="request"/>, as the sweep makes it.</summary>
     private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) Foreign(string levelName, string rig, int request)
     {
-        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{rig}-{Guid.NewGuid():N}");
-        Sweep.Setup setup;
         try
         {
-            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(rig).Load(folder);
-            setup = Sweep.Prepare(levelName, level, model, reduced);
+            (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign(levelName, rig, folder);
+            (Vector3 from, Vector3 to) = requests[request];
+            (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            return (setup, from, to, plan);
         }
         finally
         {
             Directory.Delete(folder, recursive: true);
         }
-
-        (Vector3 from, Vector3 to) = requests[request];
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
-        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
-        return (setup, from, to, plan);
     }
 
     [Test]

@@ -24,6 +24,18 @@ internal static class Sweep
     public static Setup Prepare(string levelName, Level level, string character) =>
         Prepare(levelName, level, CharacterPresets.Model(character), CharacterPresets.Get(character));
 
+    /// <summary>
+    /// A setup for a rig in another tool's shape (<see cref="ForeignCharacters"/>) on a level in another tool's shape
+    /// (<see cref="ForeignLevels"/>), with that level's requests. The rig's files are written to and read from
+    /// <paramref name="folder"/>, which must stay until the setup's animated GLBs are written (a .gltf's .png).
+    /// </summary>
+    public static (Setup Setup, (Vector3 From, Vector3 To)[] Requests) PrepareForeign(string levelName, string rig, string folder)
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
+        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(rig).Load(folder);
+        return (Prepare(levelName, level, model, reduced), requests);
+    }
+
     /// <summary>A setup on a bundled level with a preset character, its scene from the suite's cache.</summary>
     public static Setup PrepareBundled(string levelName, string character) =>
         Prepare(levelName, SharedLevels.Scene(levelName, character), CharacterPresets.Model(character));
