@@ -25,6 +25,14 @@ public sealed class ContactGenerator
     /// <summary>How far (share of the stretched limb) to the side of where the contact pose holds a limb's effector its contact is taken, the planner's estimate brought in from farther.</summary>
     private const float EstimateSideways = 0.1f;
 
+    /// <summary>
+    /// How far (share of the standing leg, the highest limb root above its contact point in the contact pose) to the
+    /// side of where the contact pose holds a limb's effector its contact is taken at most: a sprawled limb reaches far
+    /// but stands low (the ant's 0.37 m legs hold its hips 0.13 m up), and a tenth of its reach put its feet 0.29 L
+    /// to the side before its landings even sank.
+    /// </summary>
+    private const float EstimateSidewaysLeg = 0.2f;
+
     /// <summary>A contact solve that ends farther than this (metres) from its point missed it; nearer, it stalled and is solved again for the point alone.</summary>
     private const float StallDistance = 0.01f;
 
@@ -35,6 +43,7 @@ public sealed class ContactGenerator
     private readonly LimbSampleDatabase[] _databases;
     private readonly BodyCollision _collision;
     private readonly float[] _reach;
+    private readonly float _standing;
 
     /// <summary>Creates a generator for a character model on a scene baked for its reduced model.</summary>
     /// <exception cref="RigException">The model's limbs do not match the scene character's limbs by name and order.</exception>
@@ -52,6 +61,14 @@ public sealed class ContactGenerator
         Ik = new LimbIk(model.Rig, ik ?? new IkSettings { Restarts = 0, MaxIterations = 30 });
         _databases = [.. model.Limbs.Select(l => new LimbSampleDatabase(model, l))];
         _reach = [.. model.Limbs.Select(l => l.Chain.Skip(1).Sum(j => model.Rig.Joints[j].Offset.Length()) + l.EffectorOffset.Length())];
+        var standing = new Vector3[model.Rig.Joints.Count];
+        var turned = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, standing, turned);
+        _standing = model.Limbs.Count == 0 ? 0f : model.Limbs.Max(l => standing[l.RootJoint].Y - l.EffectorPosition(standing, turned).Y);
+        if (!(_standing > 0f))
+        {
+            _standing = float.PositiveInfinity; // no limb stands below its root: the reach alone bounds the sideways shift
+        }
         _collision = new BodyCollision(scene.Bvh, model, scene.Level.Triangles);
     }
 
@@ -85,7 +102,8 @@ public sealed class ContactGenerator
     /// <param name="crouch">How much lower (metres) the root must be able to dip with every contact held.</param>
     /// <param name="onEstimates">
     /// True for a jump's takeoff or landing: each limb stands on its estimated contact first (the one the plan reports
-    /// and its no-slip test used), brought sideways to within <see cref="EstimateSideways"/> of the limb from where the
+    /// and its no-slip test used), brought sideways to within <see cref="EstimateSideways"/> of the limb (and
+    /// <see cref="EstimateSidewaysLeg"/> of the standing leg) from where the
     /// contact pose holds it; otherwise on the surface nearest the contact pose first.
     /// </param>
     internal ContactConfiguration Generate(in RootPose root, IReadOnlyList<Contact> estimated, Vector3 velocity, float crouch, bool onEstimates = false)
@@ -313,7 +331,7 @@ public sealed class ContactGenerator
         // splayed nor crossed) and onto the surface: from the contact pose itself, then from the database sample
         // nearest it.
         Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
-        float most = EstimateSideways * _reach[l];
+        float most = MathF.Min(EstimateSideways * _reach[l], EstimateSidewaysLeg * _standing);
         var near = new List<int>();
         foreach (Contact c in onEstimates ? estimated : [])
         {

@@ -53,6 +53,41 @@ public sealed class ContactPoseTests
     }
 
     /// <summary>
+    /// A sprawled leg reaches far but stands low: the ant's 0.37 m legs hold its hips 0.13 m up. An estimate 10 cm out
+    /// to the side of where its contact pose holds a foot is stood on no farther out than 0.2 of that standing leg
+    /// (before: a tenth of the reach, 0.29 L, and its landings sank the trunk a little more, 0.39 L to the side).
+    /// </summary>
+    [Test]
+    public void ASprawledFootIsBroughtUnderItsHipByItsStandingHeightNotItsReach()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "ant");
+        RoadmapNode node = world.Stance(new Vector3(-5.5f, 0f, 0f), 0, Vector3.UnitX);
+        CharacterModel model = world.Model;
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        float standing = model.Limbs.Max(l => positions[l.RootJoint].Y - l.EffectorPosition(positions, rotations).Y);
+        model.Rig.Solve(node.Pose, model.ContactPose, positions, rotations);
+        Vector3 left = Vector3.Transform(Vector3.UnitX, node.Pose.Rotation);
+        Assert.Multiple(() =>
+        {
+            foreach (Contact original in node.Contacts)
+            {
+                RigLimb limb = model.Limbs[original.Limb];
+                Vector3 reference = limb.EffectorPosition(positions, rotations);
+                float outward = MathF.Sign(Vector3.Dot(reference - node.Pose.Position, left));
+                Vector3 aside = world.Ground(reference.X + (0.1f * outward * left.X), reference.Z + (0.1f * outward * left.Z), reference.Y + 0.5f) ?? throw new AssertionException("no ground");
+                Contact[] contacts = [.. node.Contacts.Select(c => c.Limb == original.Limb ? original with { Position = aside, Normal = Vector3.UnitY } : c)];
+                ContactConfiguration pose = world.Animator.Contacts.Generate(node.Pose, contacts, node.Cone.Axis, 0f, onEstimates: true);
+                LimbContact? made = pose.ContactOf(original.Limb);
+                Assert.That(made, Is.Not.Null, $"{limb.Name} stands");
+                float side = MathF.Abs(Vector3.Dot(made!.Value.Position - reference, left)) / standing;
+                Assert.That(side, Is.LessThanOrEqualTo(0.2f + 0.01f), $"{limb.Name} stands {side:0.00} L to the side of its contact pose");
+            }
+        });
+    }
+
+    /// <summary>
     /// On curved ground, where the stances tilt with the slope, the ant's sprawled legs stand on their estimated
     /// contacts brought to within 0.1 of the limb sideways of where its contact pose holds each foot. The damped IK
     /// weighs the last degrees of the foot's face against the last millimetre of position and stalled 1–3 mm short

@@ -815,7 +815,7 @@ internal sealed class AnimatorEye
                 if (off > sideWorst)
                 {
                     sideWorst = off;
-                    sideSeen = $"{name} is {off:0.00} L sideways of where its contact pose holds it at {t:0.00} s";
+                    sideSeen = $"{name} is {off:0.00} L sideways of where its contact pose holds it at {t:0.00} s{During(animation, t)}";
                 }
             }
         }
