@@ -26,7 +26,7 @@ public sealed class ContactGenerator
     private const float EstimateSideways = 0.1f;
 
     /// <summary>
-    /// How far (share of the standing leg, the highest limb root above its contact point in the contact pose) to the
+    /// How far (share of the standing leg, <see cref="StanceDip.RestLegLength"/>) to the
     /// side of where the contact pose holds a limb's effector its contact is taken at most: a sprawled limb reaches far
     /// but stands low (the ant's 0.37 m legs hold its hips 0.13 m up), and a tenth of its reach put its feet 0.29 L
     /// to the side before its landings even sank.
@@ -61,14 +61,8 @@ public sealed class ContactGenerator
         Ik = new LimbIk(model.Rig, ik ?? new IkSettings { Restarts = 0, MaxIterations = 30 });
         _databases = [.. model.Limbs.Select(l => new LimbSampleDatabase(model, l))];
         _reach = [.. model.Limbs.Select(l => l.Chain.Skip(1).Sum(j => model.Rig.Joints[j].Offset.Length()) + l.EffectorOffset.Length())];
-        var standing = new Vector3[model.Rig.Joints.Count];
-        var turned = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, standing, turned);
-        _standing = model.Limbs.Count == 0 ? 0f : model.Limbs.Max(l => standing[l.RootJoint].Y - l.EffectorPosition(standing, turned).Y);
-        if (!(_standing > 0f))
-        {
-            _standing = float.PositiveInfinity; // no limb stands below its root: the reach alone bounds the sideways shift
-        }
+        float standing = StanceDip.RestLegLength(model);
+        _standing = standing > 0f ? standing : float.PositiveInfinity; // no feet: the reach alone bounds the sideways shift
         _collision = new BodyCollision(scene.Bvh, model, scene.Level.Triangles);
     }
 
@@ -499,7 +493,7 @@ public sealed class ContactGenerator
     /// </summary>
     private bool TrySolve(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
     {
-        float[] stalled = new float[trial.Length];
+        Span<float> stalled = trial.Length <= 256 ? stackalloc float[trial.Length] : new float[trial.Length];
         IkResult result = Ik.Solve(root, trial, limb, point, -normal, 1, stalled);
         if (!result.Success && !PositionFirst(root, trial, limb, point, normal, result, stalled, positions, rotations))
         {
@@ -535,14 +529,14 @@ public sealed class ContactGenerator
     /// the surface: started from the contact pose instead, a foot held level on a 15° slope would keep its toe in
     /// the rising ground) and kept when the face still lies within the tolerance.
     /// </summary>
-    private bool PositionFirst(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, IkResult failed, float[] stalled, Vector3[] positions, Quaternion[] rotations)
+    private bool PositionFirst(in RootPose root, float[] trial, RigLimb limb, Vector3 point, Vector3 normal, IkResult failed, ReadOnlySpan<float> stalled, Vector3[] positions, Quaternion[] rotations)
     {
         if (!(failed.PositionError < StallDistance) || !(failed.NormalError <= Ik.Settings.NormalTolerance))
         {
             return false;
         }
 
-        float[] position = (float[])stalled.Clone();
+        float[] position = stalled.ToArray();
         if (!Ik.Solve(root, position, limb, point, null, seed: 1).Success)
         {
             return false;

@@ -1363,14 +1363,23 @@ internal sealed class WalkGait
         /// </summary>
         private float Lowered(float time)
         {
-            float share = 1f;
             float span = _step / MathF.Max(_walk.Speed, 1e-3f);
-            foreach (float at in _lowAt)
+            return Clear(time, _lowAt, span, span);
+        }
+
+        /// <summary>
+        /// 0 within <paramref name="span"/> seconds of the nearest of <paramref name="places"/> (times on the walk's
+        /// clock), rising smoothly to 1 over <paramref name="fade"/> seconds beyond; 1 where there is none.
+        /// </summary>
+        private static float Clear(float time, float[] places, float span, float fade)
+        {
+            float clear = 1f;
+            foreach (float at in places)
             {
-                share = MathF.Min(share, Smooth(Math.Clamp((MathF.Abs(time - at) - span) / MathF.Max(span, 1e-4f), 0f, 1f)));
+                clear = MathF.Min(clear, Smooth((MathF.Abs(time - at) - span) / MathF.Max(fade, 1e-4f)));
             }
 
-            return share;
+            return clear;
         }
 
         /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/>, fading to 0 by <see cref="SteepGrade"/>.</summary>
@@ -1664,15 +1673,8 @@ internal sealed class WalkGait
         /// </summary>
         private float Shortened(float time)
         {
-            float share = 1f;
             float span = ShortSpan * _step / MathF.Max(_walk.Speed, 1e-3f);
-            foreach (float at in _shortAt)
-            {
-                float x = (MathF.Abs(time - at) - span) / MathF.Max(span / ShortSpan, 1e-4f);
-                share = MathF.Min(share, float.Lerp(ShortStep, 1f, Smooth(x)));
-            }
-
-            return share;
+            return _shortAt.Length == 0 ? 1f : float.Lerp(ShortStep, 1f, Clear(time, _shortAt, span, span / ShortSpan));
         }
 
         /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>

@@ -215,7 +215,6 @@ public sealed class ContactEstimator
     /// </summary>
     private (Vector3 Position, Vector3 Normal) PointOn(int surface, Vector3 aim, in OrientedBox workspace, List<Piece> pieces)
     {
-        Vector3 centre = aim;
         (Vector3 Position, Vector3 Normal) best = default;
         float nearest = float.PositiveInfinity;
         foreach (Piece piece in pieces)
@@ -226,8 +225,8 @@ public sealed class ContactEstimator
             }
 
             Triangle triangle = _level.Triangles[piece.Triangle];
-            Vector3 closest = triangle.ClosestPoint(centre);
-            float distance = Vector3.DistanceSquared(closest, centre);
+            Vector3 closest = triangle.ClosestPoint(aim);
+            float distance = Vector3.DistanceSquared(closest, aim);
             if (distance < nearest)
             {
                 nearest = distance;

@@ -82,6 +82,10 @@ public static class ReducedModelBuilder
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         var limbs = new List<Limb>();
+
+        // Each limb's home: where the contact pose holds its contact point, in the trunk frame.
+        rig.Solve(identity, model.ContactPose, positions, rotations);
+        Vector3[] homes = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))];
         for (int l = 0; l < model.Limbs.Count; l++)
         {
             RigLimb limb = model.Limbs[l];
@@ -124,9 +128,7 @@ public static class ReducedModelBuilder
             int hi = xs.Count - 1 - lo;
             var min = new Vector3(xs[lo], ys[lo], zs[lo]);
             var max = new Vector3(xs[hi], ys[hi], zs[hi]);
-            rig.Solve(identity, model.ContactPose, positions, rotations);
-            Vector3 home = limb.EffectorPosition(positions, rotations);
-            limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter) { Home = home });
+            limbs.Add(new Limb(limb.Name, limb.Kind, (min + max) * 0.5f, Vector3.Max((max - min) * 0.5f, new Vector3(0.01f)), Quaternion.Identity, limb.Filter) { Home = homes[l] });
         }
 
         return new ReducedCharacter(model.Name, trunkHalf, limbs, requiredContacts, takeoffSpeedMax, landingSpeedMax, friction)
