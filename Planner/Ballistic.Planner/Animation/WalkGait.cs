@@ -56,6 +56,13 @@ internal sealed class WalkGait
     public const float CruiseHips = 0.88f;
 
     /// <summary>
+    /// Share of the rest leg the hips stand at above the ground a two-footed walk crosses between its stances, before
+    /// the bob lifts them over each foot: a little over <see cref="CruiseHips"/>, so that over whole steps, the dips
+    /// as the feet change over included, the hips stand at least that high.
+    /// </summary>
+    public const float GroundHips = 0.89f;
+
+    /// <summary>
     /// Share of the leg the hips of a rig with more than two feet keep at the ends of every foot's range: some foot is
     /// always near the end of its range, so the steps are no longer than the legs reach holding the hips this high.
     /// </summary>
@@ -633,6 +640,9 @@ internal sealed class WalkGait
         private float[] _cost = [0f, 1f];
         private float _cruiseStart;
         private float _cruiseEnd;
+        private Vector3 _hipsStart;
+        private Vector3 _hipsEnd;
+        private bool _cruised;
         private int[] _swingStart = [];
         private int[] _swingEnd = [];
         private Vector3[] _startLocal = [];
@@ -695,9 +705,11 @@ internal sealed class WalkGait
             if (_lift && _longSteps && _cruise)
             {
                 // Upright: at full speed the trunk cruises with its hips CruiseHips of the leg above the held feet
-                // (as far as the stances' feet hold there), and the step is measured there.
-                (_cruiseStart, raisedStart) = Cruise(_start);
-                (_cruiseEnd, raisedEnd) = Cruise(_end);
+                // (at the stances as far as their feet hold there, between them above the ground walked: RootAt), and
+                // the step is measured there.
+                (_cruiseStart, raisedStart, _hipsStart) = Cruise(_start);
+                (_cruiseEnd, raisedEnd, _hipsEnd) = Cruise(_end);
+                _cruised = true;
             }
 
             TrunkAndRoots();
@@ -1327,8 +1339,45 @@ internal sealed class WalkGait
         private RootPose RootAt(float t)
         {
             RootPose pose = _walk.PoseAt(t);
-            float cruise = float.Lerp(_cruiseStart, _cruiseEnd, Smooth(t / _walk.Duration)) * Weight(t);
+            float s = Smooth(t / _walk.Duration);
+            float cruise = float.Lerp(_cruiseStart, _cruiseEnd, s);
+            if (_cruised && !float.IsFinite(_gait._manyFeetReach))
+            {
+                // Two feet: between the stances the hips stand GroundHips of the leg above the ground the walk
+                // crosses; near each stance as high as that stance's own feet hold them. (More feet keep the stances'
+                // height: ManyFeetHips and their shorter steps hold them up.)
+                float want = Between(pose, _walk.PointAt(_walk.DistanceAt(t)).Y, Vector3.Lerp(_hipsStart, _hipsEnd, s));
+                cruise = float.Lerp(CruiseFrom(_cruiseStart, want, t - _walk.StartTurn - Walk.RampTime), CruiseFrom(_cruiseEnd, want, _walk.StartTurn + _walk.WalkTime - Walk.RampTime - t), s);
+            }
+
+            cruise *= Weight(t);
             return cruise > 0f ? new RootPose(pose.Position + (Vector3.UnitY * cruise), pose.Rotation) : pose;
+        }
+
+        /// <summary>
+        /// The cruise lift (metres) a stance's end of the walk asks for <paramref name="away"/> seconds from where the
+        /// walk reaches or leaves full speed: <paramref name="held"/> (what the stance's own feet hold) until then,
+        /// rising smoothly over a step's time to <paramref name="want"/> (hips <see cref="GroundHips"/> of the rest
+        /// leg over the ground): between the stances the feet stand on the gait's footholds, not the stance's, and a
+        /// stance cramped by its ground does not hold the whole walk down.
+        /// </summary>
+        private float CruiseFrom(float held, float want, float away)
+        {
+            float span = _step / MathF.Max(_walk.Speed, 1e-3f);
+            return float.Lerp(held, want, Smooth(away / MathF.Max(span, 1e-3f)));
+        }
+
+        /// <summary>
+        /// How far (metres, world up) the walking <paramref name="pose"/> rises for the hips (at <paramref name="hips"/>
+        /// in the trunk's frame) to stand <see cref="GroundHips"/> of the rest leg above <paramref name="ground"/> (the
+        /// height of the path's ground point under the trunk): between the stances the feet step on the ground the walk
+        /// crosses, not on a stance's contacts, which a dune or a rock may hold higher or lower.
+        /// </summary>
+        private float Between(RootPose pose, float ground, Vector3 hips)
+        {
+            float hip = pose.Position.Y + Vector3.Transform(hips, pose.Rotation).Y;
+            float want = (GroundHips * _gait._restLeg) - (hip - ground);
+            return float.IsFinite(want) ? Math.Clamp(want, 0f, _leg) : 0f;
         }
 
         /// <summary>
@@ -1414,22 +1463,32 @@ internal sealed class WalkGait
         /// of the rest leg above the lowest held foot, every held foot holding its contact by IK with no bone in the
         /// level, probed in small increments; and the angles that hold them there.
         /// </summary>
-        private (float Lift, float[] Angles) Cruise(ContactConfiguration config)
+        private (float Lift, float[] Angles, Vector3 Hips) Cruise(ContactConfiguration config)
         {
             _rig.Solve(config.Root, config.Angles, _positions, _rotations);
             float low = float.NegativeInfinity;
+            Vector3 hipSum = Vector3.Zero;
+            int feet = 0;
             for (int l = 0; l < _limbs; l++)
             {
-                if (IsFoot(l) && config.ContactOf(l) is LimbContact c)
+                if (IsFoot(l))
                 {
-                    low = MathF.Max(low, _positions[_model.Limbs[l].RootJoint].Y - c.Position.Y);
+                    hipSum += _positions[_model.Limbs[l].RootJoint];
+                    feet++;
+                    if (config.ContactOf(l) is LimbContact c)
+                    {
+                        low = MathF.Max(low, _positions[_model.Limbs[l].RootJoint].Y - c.Position.Y);
+                    }
                 }
             }
 
+            // Where the hips sit in the trunk's frame: between the stances they are lifted to stand GroundHips of the
+            // leg above the ground the walk crosses (RootAt), not above this stance's feet.
+            Vector3 between = feet > 0 ? ToLocal(config.Root, hipSum / feet) : Vector3.Zero;
             float want = MathF.Min((CruiseHips * _gait._restLeg) - low, _leg);
             if (!(want > 0f) || !float.IsFinite(want))
             {
-                return (0f, config.Angles);
+                return (0f, config.Angles, between);
             }
 
             int steps = Math.Clamp((int)MathF.Ceiling(want / (_leg / ProbeSteps)), 1, ProbeSteps);
@@ -1446,7 +1505,7 @@ internal sealed class WalkGait
                 (q, lo) = (trial, want * k / steps);
             }
 
-            return (lo, q);
+            return (lo, q, between);
         }
 
         /// <summary>True when every held foot of <paramref name="config"/> holds its contact by IK from <paramref name="q"/> (updated) with the root lifted <paramref name="lift"/> metres, no bone in the level.</summary>

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Animation;
@@ -26,6 +27,25 @@ public sealed class UprightWalkTests
         {
             Directory.Delete(folder, recursive: true);
         }
+
+        Assert.That(report.Look, Is.Not.Null, report.ToString());
+        AnimatorEye.Criterion upright = report.Look!.Upright;
+        Assert.That(upright.Worst, Is.Not.Null, "a walk cruises over level ground");
+        Assert.That(upright.Passes, Is.True, upright.ToString());
+    }
+
+    /// <summary>
+    /// On the curved terrain the skeleton's first walk starts from a stance whose own feet, on the curve, hold its
+    /// hips at their height; between the stances the feet step on the ground the walk crosses and the hips stand
+    /// upright above it (at least 0.88 L), not at the height the start stance's footing allowed (before: 0.87 L all
+    /// the way, the cruise interpolated between what each stance's feet held).
+    /// </summary>
+    [Test]
+    public void AWalkCruisesUprightAboveTheGroundItCrossesNotItsStancesHeight()
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
+        Sweep.Setup setup = Sweep.Prepare("curved", level, "skeleton");
+        AuditReport report = Sweep.Run(setup, requests[1].From, requests[1].To);
 
         Assert.That(report.Look, Is.Not.Null, report.ToString());
         AnimatorEye.Criterion upright = report.Look!.Upright;
