@@ -1461,7 +1461,8 @@ internal sealed class WalkGait
         /// <summary>
         /// How far (metres, world up) the root of <paramref name="config"/> rises toward its hips <see cref="CruiseHips"/>
         /// of the rest leg above the lowest held foot, every held foot holding its contact by IK with no bone in the
-        /// level, probed in small increments; and the angles that hold them there.
+        /// level, probed in small increments; the angles that hold them there; and where the hips sit in the trunk's
+        /// frame (the mean of the feet's root joints, metres), for the lift between the stances (<see cref="Between"/>).
         /// </summary>
         private (float Lift, float[] Angles, Vector3 Hips) Cruise(ContactConfiguration config)
         {
