@@ -1340,7 +1340,7 @@ internal sealed class WalkGait
         {
             RootPose pose = _walk.PoseAt(t);
             float s = Smooth(t / _walk.Duration);
-            float cruise = float.Lerp(_cruiseStart, _cruiseEnd, s);
+            float cruise;
             if (_cruised && !float.IsFinite(_gait._manyFeetReach))
             {
                 // Two feet: between the stances the hips stand GroundHips of the leg above the ground the walk
@@ -1348,6 +1348,10 @@ internal sealed class WalkGait
                 // height: ManyFeetHips and their shorter steps hold them up.)
                 float want = Between(pose, _walk.PointAt(_walk.DistanceAt(t)).Y, Vector3.Lerp(_hipsStart, _hipsEnd, s));
                 cruise = float.Lerp(CruiseFrom(_cruiseStart, want, t - _walk.StartTurn - Walk.RampTime), CruiseFrom(_cruiseEnd, want, _walk.StartTurn + _walk.WalkTime - Walk.RampTime - t), s);
+            }
+            else
+            {
+                cruise = float.Lerp(_cruiseStart, _cruiseEnd, s);
             }
 
             cruise *= Weight(t);
@@ -1361,11 +1365,10 @@ internal sealed class WalkGait
         /// leg over the ground): between the stances the feet stand on the gait's footholds, not the stance's, and a
         /// stance cramped by its ground does not hold the whole walk down.
         /// </summary>
-        private float CruiseFrom(float held, float want, float away)
-        {
-            float span = _step / MathF.Max(_walk.Speed, 1e-3f);
-            return float.Lerp(held, want, Smooth(away / MathF.Max(span, 1e-3f)));
-        }
+        private float CruiseFrom(float held, float want, float away) => float.Lerp(held, want, Smooth(away / MathF.Max(StepTime, 1e-3f)));
+
+        /// <summary>Seconds a full step takes at the walk's speed.</summary>
+        private float StepTime => _step / MathF.Max(_walk.Speed, 1e-3f);
 
         /// <summary>
         /// How far (metres, world up) the walking <paramref name="pose"/> rises for the hips (at <paramref name="hips"/>
@@ -1410,11 +1413,7 @@ internal sealed class WalkGait
         /// 0 within a step's time of a trouble that shorter steps did not clear (the hips at the stances' height there,
         /// the steps measured at that height), rising smoothly to 1 a step beyond; 1 where there is none.
         /// </summary>
-        private float Lowered(float time)
-        {
-            float span = _step / MathF.Max(_walk.Speed, 1e-3f);
-            return Clear(time, _lowAt, span, span);
-        }
+        private float Lowered(float time) => Clear(time, _lowAt, StepTime, StepTime);
 
         /// <summary>
         /// 0 within <paramref name="span"/> seconds of the nearest of <paramref name="places"/> (times on the walk's
@@ -1731,11 +1730,8 @@ internal sealed class WalkGait
         /// <see cref="ShortSpan"/> steps' time of a trouble the previous run met (on a hollow, a bump or a stance's
         /// cramped ground the legs reach less far), rising smoothly to 1 a step beyond.
         /// </summary>
-        private float Shortened(float time)
-        {
-            float span = ShortSpan * _step / MathF.Max(_walk.Speed, 1e-3f);
-            return _shortAt.Length == 0 ? 1f : float.Lerp(ShortStep, 1f, Clear(time, _shortAt, span, span / ShortSpan));
-        }
+        private float Shortened(float time) =>
+            _shortAt.Length == 0 ? 1f : float.Lerp(ShortStep, 1f, Clear(time, _shortAt, ShortSpan * StepTime, StepTime));
 
         /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>
         private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);

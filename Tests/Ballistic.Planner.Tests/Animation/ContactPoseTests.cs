@@ -25,12 +25,8 @@ public sealed class ContactPoseTests
     [Test]
     public void AContactPoseStandsOnTheEstimatedContactsWithTheLegsUnderTheHips()
     {
-        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
-        RoadmapNode node = world.Stance(new Vector3(-5.5f, 0f, 0f), 0, Vector3.UnitX);
+        (WalkWorld world, RoadmapNode node, Vector3[] positions, Quaternion[] rotations) = StanceOnTheGapCourse("skeleton");
         CharacterModel model = world.Model;
-        var positions = new Vector3[model.Rig.Joints.Count];
-        var rotations = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(node.Pose, model.ContactPose, positions, rotations);
         Vector3 forward = node.Pose.Forward;
         Vector3 left = Vector3.Transform(Vector3.UnitX, node.Pose.Rotation);
         int foot = Enumerable.Range(0, model.Limbs.Count).First(l => model.Limbs[l].Kind == LimbKind.Foot && node.Contacts.Any(c => c.Limb == l));
@@ -60,14 +56,12 @@ public sealed class ContactPoseTests
     [Test]
     public void ASprawledFootIsBroughtUnderItsHipByItsStandingHeightNotItsReach()
     {
-        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "ant");
-        RoadmapNode node = world.Stance(new Vector3(-5.5f, 0f, 0f), 0, Vector3.UnitX);
+        (WalkWorld world, RoadmapNode node, Vector3[] positions, Quaternion[] rotations) = StanceOnTheGapCourse("ant");
         CharacterModel model = world.Model;
-        var positions = new Vector3[model.Rig.Joints.Count];
-        var rotations = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        float standing = model.Limbs.Max(l => positions[l.RootJoint].Y - l.EffectorPosition(positions, rotations).Y);
-        model.Rig.Solve(node.Pose, model.ContactPose, positions, rotations);
+        var restPositions = new Vector3[model.Rig.Joints.Count];
+        var restRotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, restPositions, restRotations);
+        float standing = model.Limbs.Max(l => restPositions[l.RootJoint].Y - l.EffectorPosition(restPositions, restRotations).Y);
         Vector3 left = Vector3.Transform(Vector3.UnitX, node.Pose.Rotation);
         Assert.Multiple(() =>
         {
@@ -205,5 +199,17 @@ public sealed class ContactPoseTests
                 Assert.That(MathF.Abs(ahead), Is.LessThan(0.15f), $"{model.Limbs[foot].Name} stands {ahead:0.00} m ahead of its hip");
             }
         });
+    }
+
+    /// <summary>A stance of <paramref name="character"/> on the flat gap course, and its contact pose solved there (joint positions and rotations, world).</summary>
+    private static (WalkWorld World, RoadmapNode Node, Vector3[] Positions, Quaternion[] Rotations) StanceOnTheGapCourse(string character)
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), character);
+        RoadmapNode node = world.Stance(new Vector3(-5.5f, 0f, 0f), 0, Vector3.UnitX);
+        CharacterModel model = world.Model;
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(node.Pose, model.ContactPose, positions, rotations);
+        return (world, node, positions, rotations);
     }
 }
