@@ -123,6 +123,9 @@ internal sealed class WalkGait
     /// <summary>Share of the upright step taken near where a first run met trouble (<see cref="Animate"/>).</summary>
     private const float ShortStep = 0.85f;
 
+    /// <summary>Least share of the upright step that repeated shortening at the same troubles goes down to.</summary>
+    private const float LeastShortStep = 0.45f;
+
     /// <summary>Most times an upright walk that met trouble is walked again with its steps shortened there (<see cref="Animate"/>).</summary>
     private const int ShortenRounds = 4;
 
@@ -364,7 +367,7 @@ internal sealed class WalkGait
     /// <see cref="UprightReachMargin"/> of the held legs' reach, the trunk lifted toward <see cref="UprightHips"/> as
     /// far as the held feet allow (<see cref="KneeMargin"/>), the hands down beside the thighs swinging
     /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: walked again with steps shortened to
-    /// <see cref="ShortStep"/> only around them (twice at most), then lifted with the classic steps, then at the
+    /// <see cref="ShortStep"/> only around them (further where the same troubles come back), then lifted with the classic steps, then at the
     /// stances' own height; the first clean one is kept, else the one with the fewest problems.
     /// </summary>
     /// <param name="move">Index of the walk in the path, for problems.</param>
@@ -451,17 +454,22 @@ internal sealed class WalkGait
         // Where the upright walk met trouble, it is walked again with shorter steps there (ShortenRounds times at
         // most), the rest of it unchanged: one hollow or a cramped end stance does not shorten every step. Shortening
         // steps moves the footholds after them, so a walk may meet a new trouble further on: it is shortened there
-        // too, the earlier places kept, until a walk does worse than the best yet or meets no new trouble.
+        // too, the earlier places kept, until a walk does worse than the best yet. A walk that meets only the same
+        // troubles again is shortened further there (ShortStep again each time, down to LeastShortStep: a foot
+        // going down two stair treads at once takes one), and stops when that no longer helps.
         float[] shortAt = best.Troubles;
+        float share = ShortStep;
+        float bestShare = ShortStep;
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, shortShare: share).Animate();
             float[] more = [.. shortAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(shortAt);
             shortAt = more;
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
+                bestShare = share;
             }
             else if (again > 0 && clip.Problems.Count > best.Problems.Count)
             {
@@ -470,7 +478,13 @@ internal sealed class WalkGait
 
             if (!news)
             {
-                break;
+                if (share * ShortStep < LeastShortStep)
+                {
+                    break;
+                }
+
+                // The same troubles again: shorter steps still around them.
+                share *= ShortStep;
             }
         }
 
@@ -479,7 +493,7 @@ internal sealed class WalkGait
         float[] lowAt = shortAt;
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && lowAt.Length > 0; again++)
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, lowAt).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, lowAt, bestShare).Animate();
             float[] more = [.. lowAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(lowAt);
             lowAt = more;
@@ -625,6 +639,7 @@ internal sealed class WalkGait
         private readonly List<float> _troubles = [];
         private readonly float[] _shortAt;
         private readonly float[] _lowAt;
+        private readonly float _shortShare;
 
         /// <summary>How many places (times on the walk's clock, to the nearest 0.05 s) <paramref name="times"/> names.</summary>
         public static int Places(float[] times) => Rounded(times).Length;
@@ -655,8 +670,9 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep)
         {
+            _shortShare = shortShare;
             _roll = roll;
             _shortAt = Rounded(shortAt ?? []);
             _lowAt = Rounded(lowAt ?? []);
@@ -821,7 +837,7 @@ internal sealed class WalkGait
                     Perform(l, HandPlan(l, n));
                     if (_arms && n > 2)
                     {
-                        SwingArm(l, _swingEnd[0], _swingStart[n - 1]);
+                        SwingArm(l, _swingStart[0], _swingEnd[n - 1]);
                     }
                 }
             }
@@ -1199,7 +1215,8 @@ internal sealed class WalkGait
 
         /// <summary>
         /// Swings hand <paramref name="l"/> fore and aft about its shoulder from fine step <paramref name="from"/> to
-        /// <paramref name="to"/> (while it hangs): by IK, its effector brought down beside the thigh over
+        /// <paramref name="to"/> (the first swing's start to the last swing's end: a short walk's arms swing fully while
+        /// it cruises): by IK, its effector brought down beside the thigh over
         /// <see cref="ArmDrop"/> (a rig hanging its arms out in a T stays so no longer) and turned about the trunk's left axis by up to
         /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed;
         /// where the arm cannot reach or would touch the level it keeps its last swing.
@@ -1726,12 +1743,13 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// The share of the step taken at <paramref name="time"/>: <see cref="ShortStep"/> within
+        /// The share of the step taken at <paramref name="time"/>: this run's shortened share (<see cref="ShortStep"/>,
+        /// or less where the same troubles came back) within
         /// <see cref="ShortSpan"/> steps' time of a trouble the previous run met (on a hollow, a bump or a stance's
         /// cramped ground the legs reach less far), rising smoothly to 1 a step beyond.
         /// </summary>
         private float Shortened(float time) =>
-            _shortAt.Length == 0 ? 1f : float.Lerp(ShortStep, 1f, Clear(time, _shortAt, ShortSpan * StepTime, StepTime));
+            _shortAt.Length == 0 ? 1f : float.Lerp(_shortShare, 1f, Clear(time, _shortAt, ShortSpan * StepTime, StepTime));
 
         /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>
         private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);

@@ -16,19 +16,7 @@ public sealed class UprightWalkTests
     [Test]
     public void AWalkLowersItsHipsOnlyWhereItMeetsTrouble()
     {
-        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-tailed-{Guid.NewGuid():N}");
-        AuditReport report;
-        try
-        {
-            (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("holes-debris", "tailed", folder);
-            report = Sweep.Run(setup, requests[0].From, requests[0].To);
-        }
-        finally
-        {
-            Directory.Delete(folder, recursive: true);
-        }
-
-        AssertUpright(report);
+        AssertUpright(RunForeignRig("holes-debris", "tailed", 0));
     }
 
     /// <summary>
@@ -45,6 +33,55 @@ public sealed class UprightWalkTests
         AuditReport report = Sweep.Run(setup, requests[1].From, requests[1].To);
 
         AssertUpright(report);
+    }
+
+    /// <summary>
+    /// The user's human rig walking down the foreign staircase meets the same trouble again with its steps shortened
+    /// once (a foot cannot swing down two treads clear of the nosing): the steps there shorten further, down to
+    /// 0.45 of the upright step, and the walk stays upright at its natural cadence on the level ground before and
+    /// after the stairs (before: the whole walk fell back to short steps, 3.2 steps a second at 0.52 L).
+    /// </summary>
+    [Test]
+    public void StepsShortenFurtherWhereTheSameTroubleComesBack()
+    {
+        AuditReport report = RunForeignRig("stairs", "human", 2);
+        Assert.That(report.Look, Is.Not.Null, report.ToString());
+        AnimatorEye.Criterion cadence = report.Look!.Cadence;
+        Assert.That(cadence.Worst, Is.Not.Null, "a walk cruises over level ground");
+        Assert.That(cadence.Passes, Is.True, cadence.ToString());
+    }
+
+    /// <summary>
+    /// A short walk on the staircase's landing (1.6 m, a long turn in place first) swings the skeleton's arms fully
+    /// while it cruises: the swing fades in and out over the whole stepping, not only between its first and last
+    /// steps (before: 18° of swing, the arms still fading in when the walk slowed).
+    /// </summary>
+    [Test]
+    public void AShortWalkSwingsItsArmsWhileItCruises()
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("stairs");
+        Sweep.Setup setup = Sweep.Prepare("stairs", level, "skeleton");
+        AuditReport report = Sweep.Run(setup, requests[2].From, requests[2].To);
+
+        Assert.That(report.Look, Is.Not.Null, report.ToString());
+        AnimatorEye.Criterion swing = report.Look!.ArmSwing;
+        Assert.That(swing.Worst, Is.Not.Null, "an arm swings where the walk cruises over level ground");
+        Assert.That(swing.Passes, Is.True, swing.ToString());
+    }
+
+    /// <summary>The audited plan of foreign level <paramref name="level"/>'s request <paramref name="request"/> (0-based) for foreign rig <paramref name="rig"/>, its files written to a folder removed afterwards.</summary>
+    private static AuditReport RunForeignRig(string level, string rig, int request)
+    {
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{rig}-{Guid.NewGuid():N}");
+        try
+        {
+            (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign(level, rig, folder);
+            return Sweep.Run(setup, requests[request].From, requests[request].To);
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
     }
 
     /// <summary>The plan animates, some walk cruises over level ground, and every such walk's hips stand upright.</summary>

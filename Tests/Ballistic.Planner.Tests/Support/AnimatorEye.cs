@@ -1011,7 +1011,7 @@ internal sealed class AnimatorEye
             {
                 float[] sorted = [.. hips.Order()];
                 float median = sorted[sorted.Length / 2];
-                look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.00} L above its held feet (each hip in its own leg's length)");
+                look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.000} L above its held feet (each hip in its own leg's length)");
                 // The bob: the hips' height in the world (as the eye sees the trunk rise and fall, whichever foot holds
                 // it on a gentle slope) about the straight line fitted through the second around each sample (the
                 // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th
