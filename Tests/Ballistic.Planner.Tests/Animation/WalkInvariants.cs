@@ -83,7 +83,7 @@ internal static class WalkInvariants
                     if (t >= phase.From - Tolerance && t <= phase.To + Tolerance)
                     {
                         float slip = Vector3.Distance(phase.Touching(model.Limbs[phase.Limb], positions, rotations), phase.Position);
-                        Assert.That(slip, Is.LessThanOrEqualTo(Slip), $"{model.Limbs[phase.Limb].Name} slides {slip * 100f:0.0} cm at {t:0.000} s");
+                        Assert.That(slip, Is.LessThanOrEqualTo(Slip), $"{model.Limbs[phase.Limb].Name} slides {slip * 100f:0.0} cm at {t:0.000} s (held {phase.From:0.000}–{phase.To:0.000} s{(phase.OnBall ? ", on its ball" : "")})");
                         // Where a foot's phase on its sole ends as one on its ball begins (both within the tolerance),
                         // it stands on its sole: that point is the one its bones may touch the ground at.
                         holding += model.Limbs[phase.Limb].Kind == LimbKind.Foot && held[phase.Limb] is null ? 1 : 0;

@@ -101,7 +101,52 @@ public sealed class SweepTests
 
         Assert.That(report.WrongAnswer, Is.False, $"a plan reported as exact breaks an invariant: {report}");
         Assert.That(report.Look is null || Animated(report.Look).All(c => c.Criterion.Passes), Is.True, $"the animation does not read as jumps to an animator: {report.Look}");
+        if (report.Look is not null)
+        {
+            AssertNotYetEveryPlan(report.Look, $"{kind}/{levelName}/{character}/{request}");
+        }
     }
+
+    /// <summary>The criteria of <see cref="NotYetEveryPlan"/> on plan <paramref name="key"/>: passed, or failed where the list says so.</summary>
+    private static void AssertNotYetEveryPlan(AnimatorEye.Look look, string key) => Assert.Multiple(() =>
+    {
+        foreach ((string name, AnimatorEye.Criterion criterion) in look.All.Where(c => NotYetEveryPlan.ContainsKey(c.Name)))
+        {
+            if (NotYetEveryPlan[name].Contains(key))
+            {
+                Assert.That(criterion.Passes, Is.False, $"{name} now passes on {key}: take it off {nameof(NotYetEveryPlan)} ({criterion})");
+            }
+            else
+            {
+                Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+            }
+        }
+    });
+
+    /// <summary>
+    /// The animator's criteria that some plans of the sweep do not pass yet, each with those plans (kind/level/
+    /// character/request index): every other plan must pass them, and one of these passing fails its case too, so the
+    /// list only shrinks. Why each fails:
+    /// <list type="bullet">
+    /// <item>facing: the tailed quadruped's turns in place on the stairs put its front leg's upper bone through a
+    /// riser and its hind feet off the treads' edges, and its turn hops do not steer; the jumps fly as searched.</item>
+    /// <item>under hips: the tailed quadruped's last front foot lands on its end contact while the trunk still turns
+    /// in place (17° in the last 0.2 s): 0.37 L sideways of its hip.</item>
+    /// <item>cadence: the skeleton's walk onto the stairs ends on a stance straddling two treads that no upright step
+    /// reaches cleanly, and the whole walk falls back to the short steps (4.4 a second); three short walks toward a
+    /// dune or the stairs take 2.62–2.64 steps a second over their three or four steps on level ground (the one read
+    /// closely shortens its last level steps for the stairs ahead: 0.42, 0.39, then 0.33 s).</item>
+    /// <item>upright: the desert skeleton's walk 3 crosses 0.7 s of level sand just before a steep dune face; its
+    /// steps shorten for the face over the metre around the steepening, and its hips stand 0.879 L there.</item>
+    /// </list>
+    /// </summary>
+    private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
+    {
+        ["facing"] = ["foreign rig/stairs/tailed/1", "foreign rig/stairs/tailed/3"],
+        ["under hips"] = ["foreign rig/holes-debris/tailed/2"],
+        ["upright"] = ["bundled/desert/skeleton/0"],
+        ["cadence"] = ["foreign level/stairs/skeleton/1", "foreign level/stairs/skeleton/3", "foreign rig/stairs/human/3", "bundled/desert/skeleton/5"],
+    };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
     internal static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>

@@ -1101,7 +1101,7 @@ internal sealed class AnimatorEye
             {
                 float cadence = intervals / spanned;
                 float step = walk.Speed / MathF.Max(cadence, 1e-3f) / Leg;
-                look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.0} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
+                look.Cadence.Add(MathF.Min(MostCadence / MathF.Max(cadence, 1e-3f), step / LeastStep), $"{name} takes {cadence:0.00} steps per second at {walk.Speed:0.00} m/s, {step:0.00} L each");
             }
         }
     }
