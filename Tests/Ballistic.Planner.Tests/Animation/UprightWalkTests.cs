@@ -16,7 +16,7 @@ public sealed class UprightWalkTests
     [Test]
     public void AWalkLowersItsHipsOnlyWhereItMeetsTrouble()
     {
-        AssertUpright(RunForeignRig("holes-debris", "tailed", 0));
+        AssertPasses(RunForeignRig("holes-debris", "tailed", 0), look => look.Upright, "a walk cruises over level ground");
     }
 
     /// <summary>
@@ -28,11 +28,7 @@ public sealed class UprightWalkTests
     [Test]
     public void AWalkCruisesUprightAboveTheGroundItCrossesNotItsStancesHeight()
     {
-        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
-        Sweep.Setup setup = Sweep.Prepare("curved", level, "skeleton");
-        AuditReport report = Sweep.Run(setup, requests[1].From, requests[1].To);
-
-        AssertUpright(report);
+        AssertPasses(RunForeignLevel("curved", "skeleton", 1), look => look.Upright, "a walk cruises over level ground");
     }
 
     /// <summary>
@@ -44,11 +40,7 @@ public sealed class UprightWalkTests
     [Test]
     public void StepsShortenFurtherWhereTheSameTroubleComesBack()
     {
-        AuditReport report = RunForeignRig("stairs", "human", 2);
-        Assert.That(report.Look, Is.Not.Null, report.ToString());
-        AnimatorEye.Criterion cadence = report.Look!.Cadence;
-        Assert.That(cadence.Worst, Is.Not.Null, "a walk cruises over level ground");
-        Assert.That(cadence.Passes, Is.True, cadence.ToString());
+        AssertPasses(RunForeignRig("stairs", "human", 2), look => look.Cadence, "a walk cruises over level ground");
     }
 
     /// <summary>
@@ -59,14 +51,7 @@ public sealed class UprightWalkTests
     [Test]
     public void AShortWalkSwingsItsArmsWhileItCruises()
     {
-        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("stairs");
-        Sweep.Setup setup = Sweep.Prepare("stairs", level, "skeleton");
-        AuditReport report = Sweep.Run(setup, requests[2].From, requests[2].To);
-
-        Assert.That(report.Look, Is.Not.Null, report.ToString());
-        AnimatorEye.Criterion swing = report.Look!.ArmSwing;
-        Assert.That(swing.Worst, Is.Not.Null, "an arm swings where the walk cruises over level ground");
-        Assert.That(swing.Passes, Is.True, swing.ToString());
+        AssertPasses(RunForeignLevel("stairs", "skeleton", 2), look => look.ArmSwing, "an arm swings where the walk cruises over level ground");
     }
 
     /// <summary>The audited plan of foreign level <paramref name="level"/>'s request <paramref name="request"/> (0-based) for foreign rig <paramref name="rig"/>, its files written to a folder removed afterwards.</summary>
@@ -84,12 +69,19 @@ public sealed class UprightWalkTests
         }
     }
 
-    /// <summary>The plan animates, some walk cruises over level ground, and every such walk's hips stand upright.</summary>
-    private static void AssertUpright(AuditReport report)
+    /// <summary>The audited plan of foreign level <paramref name="level"/>'s request <paramref name="request"/> (0-based) for our <paramref name="character"/>.</summary>
+    private static AuditReport RunForeignLevel(string level, string character, int request)
+    {
+        (Level built, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(level);
+        return Sweep.Run(Sweep.Prepare(level, built, character), requests[request].From, requests[request].To);
+    }
+
+    /// <summary>The plan animates, the criterion <paramref name="criterion"/> picks saw something to measure (<paramref name="measured"/>), and it passes.</summary>
+    private static void AssertPasses(AuditReport report, Func<AnimatorEye.Look, AnimatorEye.Criterion> criterion, string measured)
     {
         Assert.That(report.Look, Is.Not.Null, report.ToString());
-        AnimatorEye.Criterion upright = report.Look!.Upright;
-        Assert.That(upright.Worst, Is.Not.Null, "a walk cruises over level ground");
-        Assert.That(upright.Passes, Is.True, upright.ToString());
+        AnimatorEye.Criterion seen = criterion(report.Look!);
+        Assert.That(seen.Worst, Is.Not.Null, measured);
+        Assert.That(seen.Passes, Is.True, seen.ToString());
     }
 }
