@@ -18,7 +18,10 @@ internal sealed class SoleHold
     /// <summary>Most a rolling foot's heel rises, radians (30°): a walker's trailing foot peels off its heel before it swings.</summary>
     public const float MostRoll = 30f * MathF.PI / 180f;
 
-    /// <summary>The heel's rise is tried in steps of this (radians, 6°), least first: it rises no more than the hold needs.</summary>
+    /// <summary>
+    /// The heel's rise is tried in steps of this (radians, 6°), least first: it rises no more than the hold needs. A
+    /// foot already on its ball moves its heel half a step at a time from where it is (<see cref="Hold"/>).
+    /// </summary>
     private const float RollStep = 6f * MathF.PI / 180f;
 
     /// <summary>Iterations of each solve: few, since a held foot is tracked from where it was.</summary>
@@ -99,13 +102,32 @@ internal sealed class SoleHold
         forward = Vector3.Normalize(forward);
 
         // The sole's normal (out of the sole, into the ground when flat) tilted back, the heel raised by as few
-        // RollSteps as hold it (each within half a step either way), up to MostRoll.
+        // RollSteps as hold it (each within half a step either way), up to MostRoll. A foot already on its ball
+        // starts from its own heel's rise: lowered by half a step, kept, then raised half a step at a time, so that
+        // from one moment to the next the heel moves by half a step at most where it can (tried from the least rise
+        // on, the rise jumped a whole step between bands and the straight leg's hip swivelled 19° to follow:
+        // interpolated, the ball slid a centimetre).
         Vector3 side = Vector3.Normalize(Vector3.Cross(up, forward));
         float sign = Vector3.Dot(Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, RollStep)), forward) > 0f ? -1f : 1f;
-        for (float tilt = 0.5f * RollStep; tilt <= MostRoll; tilt += RollStep)
+        float least = 0.5f * RollStep;
+        if (ball0 is not null)
         {
-            Vector3 sole = Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, sign * tilt));
-            if (Rolling.Solve(root, q, ball, target, sole).Success)
+            Vector3 normal = ball.EffectorNormal(rotations);
+            float now = sign * MathF.Atan2(-Vector3.Dot(normal, forward), -Vector3.Dot(normal, up));
+            for (float tilt = MathF.Max(now - least, least); tilt <= MostRoll; tilt += least)
+            {
+                if (Tilted(root, q, ball, target, up, side, sign * tilt))
+                {
+                    return true;
+                }
+            }
+
+            return false;
+        }
+
+        for (float tilt = least; tilt <= MostRoll; tilt += RollStep)
+        {
+            if (Tilted(root, q, ball, target, up, side, sign * tilt))
             {
                 return true;
             }
@@ -113,4 +135,8 @@ internal sealed class SoleHold
 
         return false;
     }
+
+    /// <summary>The ball on <paramref name="target"/>, the sole's normal turned <paramref name="angle"/> radians about <paramref name="side"/> from straight down.</summary>
+    private bool Tilted(in RootPose root, float[] q, RigLimb ball, Vector3 target, Vector3 up, Vector3 side, float angle) =>
+        Rolling.Solve(root, q, ball, target, Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, angle))).Success;
 }
