@@ -80,7 +80,15 @@ internal sealed class WalkGait
     /// <summary>Distance (metres) along the path either way over which the ground's grade is measured.</summary>
     private const float LevelWindow = 0.5f;
 
-    /// <summary>Samples either side over which the cruise's level share is averaged (<see cref="LevelWindow"/> of travel).</summary>
+    /// <summary>
+    /// Distance (metres) along the path either way over which the level share that lengthens the steps is averaged:
+    /// half the hips' (<see cref="LevelWindow"/>), so the steps shorten for a dune face or a stair within about half
+    /// a metre of it, not a metre (measured: the desert skeleton's hips then stand at least 0.88 L on the level sand
+    /// before a dune face, where they stood 0.879 L; its cadence there is unchanged).
+    /// </summary>
+    public const float StepAveraging = 0.5f * LevelWindow;
+
+    /// <summary>Samples either side over which the cruise's level share is averaged (<see cref="LevelWindow"/> of travel, <see cref="StepAveraging"/> for the step).</summary>
     private const int LevelSamples = 4;
 
     /// <summary>Share of a leg's full length (hip to ankle along its bones) the hips rise to at most over a held foot: the knee stays a little bent.</summary>
@@ -1404,9 +1412,9 @@ internal sealed class WalkGait
         /// How far into its cruise the walk is at <paramref name="t"/> seconds, 0 to 1: its speed over the walking
         /// speed, times the share of the path within <see cref="LevelWindow"/> either way that is level
         /// (<see cref="LevelShare"/>: on stairs and slopes a straight leg reaches less far down and up: the steps and
-        /// the hips stay as at the stances).
+        /// the hips stay as at the stances), averaged over <paramref name="averaging"/> metres of travel either way.
         /// </summary>
-        private float Weight(float t)
+        private float Weight(float t, float averaging = LevelWindow)
         {
             float w = Cruising(t);
             if (!(w > 0f))
@@ -1420,7 +1428,7 @@ internal sealed class WalkGait
             float level = 0f;
             for (int k = -LevelSamples; k <= LevelSamples; k++)
             {
-                level += LevelShare(distance + (k * LevelWindow / LevelSamples));
+                level += LevelShare(distance + (k * averaging / LevelSamples));
             }
 
             return w * level / ((2 * LevelSamples) + 1) * Lowered(t);
@@ -1690,7 +1698,7 @@ internal sealed class WalkGait
                 RootPose pose = _walk.PoseAt(duration * i / samples);
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
-                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples)) * Shortened(duration * (i - 0.5f) / samples);
+                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples);
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / MinHalfCycle);
                 previous = pose;

@@ -32,6 +32,20 @@ public sealed class UprightWalkTests
     }
 
     /// <summary>
+    /// The desert skeleton's fourth walk of the sweep's first request crosses 0.7 s of level sand just before a steep
+    /// dune face: its steps shorten for the face only within half a metre of it (<see cref="Ballistic.Planner.Animation.WalkGait.StepAveraging"/>),
+    /// and its hips stand upright there (at least 0.88 L; before: 0.879 L, the steps shortening over the metre around
+    /// the steepening).
+    /// </summary>
+    [Test]
+    public void AWalkStaysUprightOnLevelSandUpToADuneFace()
+    {
+        Sweep.Setup setup = Sweep.PrepareBundled("desert", "skeleton");
+        (Vector3 From, Vector3 To)[] requests = Sweep.RandomPairs(setup.Scene, 6, seed: 42, 25f);
+        AssertPasses(Sweep.Run(setup, requests[0].From, requests[0].To), look => look.Upright, "a walk cruises over level ground");
+    }
+
+    /// <summary>
     /// The user's human rig walking down the foreign staircase meets the same trouble again with its steps shortened
     /// once (a foot cannot swing down two treads clear of the nosing): the steps there shorten further, down to
     /// 0.45 of the upright step, and the walk stays upright at its natural cadence on the level ground before and
