@@ -6,6 +6,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
 using BenchmarkDotNet.Attributes;
 

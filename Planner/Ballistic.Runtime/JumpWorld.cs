@@ -5,6 +5,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
@@ -421,7 +422,7 @@ public sealed class JumpWorld : IDisposable
         _agents.Root[slot] = from.Pose;
         angles.CopyTo(_agents.Angles[slot], 0);
         _agents.PoseDirty[slot] = true;
-        _agents.Target[slot] = Hosting.Stances.ContactCentre(moves[^1].To);
+        _agents.Target[slot] = moves[^1].To.ContactCentre;
         _agents.HasTarget[slot] = true;
         _agents.State[slot] = AgentState.Stance;
         _requests.Request(slot, [.. moves]);

@@ -24,10 +24,10 @@ public sealed record PlaytestSettings
     /// <summary>Threads solving animations in the background (the results do not depend on it).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
-    /// <summary>Which moves paths may use (<see cref="Runtime.WorldSettings.Locomotion"/>): walks and jumps by default.</summary>
+    /// <summary>Which moves paths may use (<see cref="Runtime.Core.WorldSettings.Locomotion"/>): walks and jumps by default.</summary>
     public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
-    /// <summary>What a jump costs beyond its flight time, in seconds of walking (<see cref="Runtime.WorldSettings.JumpEffort"/>).</summary>
+    /// <summary>What a jump costs beyond its flight time, in seconds of walking (<see cref="Runtime.Core.WorldSettings.JumpEffort"/>).</summary>
     public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
 
     /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>

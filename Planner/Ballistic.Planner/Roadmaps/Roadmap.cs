@@ -1,7 +1,6 @@
 using System.Collections.ObjectModel;
 using System.Numerics;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Sampling;
 
@@ -310,15 +309,5 @@ public sealed class Roadmap
     internal ref readonly RoadmapEdge Edge(int edge) => ref _edges[edge];
 
     /// <summary>The centre of a node's contacts, as <see cref="TrunkSampler.ContactCentre"/> computes it.</summary>
-    internal static Vector3 CentreOf(RoadmapNode node)
-    {
-        IReadOnlyList<Contact> contacts = node.Contacts;
-        Vector3 sum = Vector3.Zero;
-        for (int i = 0; i < contacts.Count; i++)
-        {
-            sum += contacts[i].Position;
-        }
-
-        return contacts.Count > 0 ? sum / contacts.Count : node.Pose.Position;
-    }
+    internal static Vector3 CentreOf(RoadmapNode node) => node.ContactCentre;
 }

@@ -1,3 +1,4 @@
+using System.Numerics;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 
@@ -8,4 +9,23 @@ namespace Ballistic.Planner.Roadmaps;
 /// <param name="Pose">Root pose (trunk centre and orientation, world space).</param>
 /// <param name="Cone">Centroidal friction cone at the pose.</param>
 /// <param name="Contacts">Estimated limb contacts.</param>
-public sealed record RoadmapNode(int Id, RootPose Pose, FrictionCone Cone, IReadOnlyList<Contact> Contacts);
+public sealed record RoadmapNode(int Id, RootPose Pose, FrictionCone Cone, IReadOnlyList<Contact> Contacts)
+{
+    /// <summary>
+    /// The mean of the stance's contact positions (its trunk centre when it has none), world metres: the point a
+    /// game reads as where the character stands (<see cref="Roadmap.ContactCentres"/> for a roadmap's nodes).
+    /// </summary>
+    public Vector3 ContactCentre
+    {
+        get
+        {
+            Vector3 sum = Vector3.Zero;
+            for (int i = 0; i < Contacts.Count; i++)
+            {
+                sum += Contacts[i].Position;
+            }
+
+            return Contacts.Count > 0 ? sum / Contacts.Count : Pose.Position;
+        }
+    }
+}

@@ -1,3 +1,5 @@
+using Ballistic.Runtime.Core;
+
 namespace Ballistic.Runtime.Agents;
 
 /// <summary>The outcome of <see cref="JumpWorld.AddAgent"/>: the new agent's handle, or why none was added.</summary>

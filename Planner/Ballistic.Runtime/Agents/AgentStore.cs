@@ -2,7 +2,6 @@ using System.Numerics;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Paths;
-using Ballistic.Runtime.Systems;
 
 namespace Ballistic.Runtime.Agents;
 

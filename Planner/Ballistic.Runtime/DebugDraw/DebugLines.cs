@@ -291,19 +291,7 @@ public sealed class DebugLines
     public static Vector3 ContactCentre(RoadmapNode node)
     {
         ArgumentNullException.ThrowIfNull(node);
-        IReadOnlyList<Contact> contacts = node.Contacts;
-        if (contacts.Count == 0)
-        {
-            return node.Pose.Position;
-        }
-
-        Vector3 sum = Vector3.Zero;
-        for (int i = 0; i < contacts.Count; i++)
-        {
-            sum += contacts[i].Position;
-        }
-
-        return sum / contacts.Count;
+        return node.ContactCentre;
     }
 
     /// <summary>

@@ -1,3 +1,5 @@
+using Ballistic.Runtime.Core;
+
 namespace Ballistic.Runtime.Hosting;
 
 /// <summary>

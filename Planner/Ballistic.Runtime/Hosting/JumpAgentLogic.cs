@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Geometry;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Paths;
 

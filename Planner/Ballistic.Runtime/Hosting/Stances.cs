@@ -1,5 +1,4 @@
 using System.Numerics;
-using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
 using Ballistic.Runtime.Agents;
@@ -19,17 +18,7 @@ namespace Ballistic.Runtime.Hosting;
 internal static class Stances
 {
     /// <summary>The mean of a stance's contact positions (the trunk centre without contacts), world metres: <see cref="Roadmap.ContactCentres"/> for roadmap nodes.</summary>
-    public static Vector3 ContactCentre(RoadmapNode node)
-    {
-        IReadOnlyList<Contact> contacts = node.Contacts;
-        Vector3 sum = Vector3.Zero;
-        for (int i = 0; i < contacts.Count; i++)
-        {
-            sum += contacts[i].Position;
-        }
-
-        return contacts.Count > 0 ? sum / contacts.Count : node.Pose.Position;
-    }
+    public static Vector3 ContactCentre(RoadmapNode node) => node.ContactCentre;
 
     /// <summary>
     /// The stance the agent stands on, or, following a path, the one it stands on next: the end of the move it is in

@@ -1,3 +1,5 @@
+using Ballistic.Runtime.Core;
+
 namespace Ballistic.Runtime.Kinds;
 
 /// <summary>The outcome of <see cref="JumpWorld.AddKind"/>: the kind's handle, or why it was refused.</summary>

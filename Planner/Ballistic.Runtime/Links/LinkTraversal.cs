@@ -1,3 +1,4 @@
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 

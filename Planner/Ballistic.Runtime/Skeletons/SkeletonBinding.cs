@@ -2,6 +2,7 @@ using System.Numerics;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Runtime.Skeletons;
 

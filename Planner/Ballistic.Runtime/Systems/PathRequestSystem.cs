@@ -3,6 +3,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;

@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Systems;

@@ -5,25 +5,30 @@ using Ballistic.Cli;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Tests.Support;
+using Ballistic.Runtime;
 
 namespace Ballistic.Planner.Tests.Architecture;
 
 /// <summary>
-/// The libraries' layering, checked on the compiled assemblies (and their project files): the planner's namespaces
-/// form no cycle, the shipped planner uses neither the authoring library nor the engine, and the authoring library
-/// does not use the command-line tool.
+/// The libraries' layering, checked on the compiled assemblies (and their project files): the planner's, the
+/// authoring library's and the runtime's namespaces form no cycle, the shipped planner uses neither the authoring
+/// library nor the engine, and the authoring library does not use the command-line tool.
 /// </summary>
 public sealed class LayeringTests
 {
     private static readonly Assembly PlannerAssembly = typeof(Aabb).Assembly;
     private static readonly Assembly AuthoringAssembly = typeof(PlanReportWriter).Assembly;
     private static readonly Assembly CliAssembly = typeof(BallisticCli).Assembly;
+    private static readonly Assembly RuntimeAssembly = typeof(JumpWorld).Assembly;
 
     [Test]
     public void PlannerNamespacesFormNoCycle() => AssertAcyclic(PlannerAssembly);
 
     [Test]
     public void AuthoringNamespacesFormNoCycle() => AssertAcyclic(AuthoringAssembly);
+
+    [Test]
+    public void RuntimeNamespacesFormNoCycle() => AssertAcyclic(RuntimeAssembly);
 
     [Test]
     public void PlannerUsesNeitherAuthoringNorGodot()

@@ -6,7 +6,7 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
-using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 

@@ -1,7 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
-using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 
 namespace Ballistic.Planner.Tests.Hosting;

@@ -2,7 +2,7 @@ using System.Numerics;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
-using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Links;
 using Ballistic.Runtime.Paths;

@@ -3,6 +3,7 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Hosting;
 

@@ -4,6 +4,7 @@ using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;

@@ -3,6 +3,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 
 namespace Ballistic.Planner.Tests.Hosting;

@@ -7,6 +7,7 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 

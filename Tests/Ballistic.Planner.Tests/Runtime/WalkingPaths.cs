@@ -3,6 +3,7 @@ using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Runtime;

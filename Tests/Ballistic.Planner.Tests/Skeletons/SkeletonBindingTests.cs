@@ -6,6 +6,7 @@ using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Skeletons;
 
 namespace Ballistic.Planner.Tests.Skeletons;

@@ -1,6 +1,6 @@
 #nullable enable
 using System.Linq;
-using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Links;

@@ -1,6 +1,7 @@
 #nullable enable
 using System;
 using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Skeletons;
 using Godot;

@@ -1,4 +1,4 @@
-namespace Ballistic.Runtime;
+namespace Ballistic.Runtime.Core;
 
 /// <summary>The outcome of a call on a <see cref="JumpWorld"/>: calls never throw for bad handles or bad input.</summary>
 public enum RuntimeStatus

@@ -1,4 +1,4 @@
-namespace Ballistic.Runtime;
+namespace Ballistic.Runtime.Core;
 
 /// <summary>The outcome of a call on a <see cref="JumpWorld"/>: a status and, unless it is <see cref="RuntimeStatus.Ok"/>, one sentence saying why.</summary>
 /// <param name="Status">What happened.</param>

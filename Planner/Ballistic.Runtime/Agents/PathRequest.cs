@@ -2,9 +2,8 @@ using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
-using Ballistic.Runtime.Agents;
 
-namespace Ballistic.Runtime.Systems;
+namespace Ballistic.Runtime.Agents;
 
 /// <summary>One agent's request for a path: searched on a tick within the budget, animated in the background, delivered on a fixed later tick.</summary>
 internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequence)

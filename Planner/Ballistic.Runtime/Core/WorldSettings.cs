@@ -2,7 +2,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Sampling;
 
-namespace Ballistic.Runtime;
+namespace Ballistic.Runtime.Core;
 
 /// <summary>How a <see cref="JumpWorld"/> steps: tick rate, path-request budgets, background animation, replanning and the moves paths may use.</summary>
 public sealed record WorldSettings
