@@ -403,7 +403,7 @@ internal sealed class JumpFacer
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Placements(RoadmapNode old, float facing, float side, Func<RoadmapNode, List<Move>?> link)
     {
-        Vector3 centre = Roadmap.CentreOf(old);
+        Vector3 centre = old.ContactCentre;
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
         foreach (Vector3 point in _hops ? [centre + ahead, centre + (2f * ahead), centre, centre - ahead, centre - (2f * ahead)] : (Vector3[])[centre, centre + ahead, centre + (2f * ahead), centre - ahead, centre - (2f * ahead)])
         {
@@ -447,7 +447,7 @@ internal sealed class JumpFacer
         float toward = MathF.IEEERemainder(Way(before.Arc) - facing, 2f * MathF.PI);
         float sign = toward >= 0f ? 1f : -1f;
         float[] yaws = [.. RelandYaws.Select(y => y * sign)];
-        EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(Roadmap.CentreOf(current), Placement, facing, yaws, _canStand, Height(current));
+        EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(current.ContactCentre, Placement, facing, yaws, _canStand, Height(current));
         if (placed.Pose is not { } pose || Refused(pose.Pose))
         {
             yield break;
@@ -474,7 +474,7 @@ internal sealed class JumpFacer
     internal static readonly float[] WideYaws = [20f * MathF.PI / 180f, -20f * MathF.PI / 180f];
 
     /// <summary>The trunk's height (metres) above the contacts' centre of <paramref name="node"/>: a stance replacing it stands as high (a cave's ceiling, a doorway).</summary>
-    internal static float Height(RoadmapNode node) => node.Pose.Position.Y - Roadmap.CentreOf(node).Y;
+    internal static float Height(RoadmapNode node) => node.Pose.Position.Y - node.ContactCentre.Y;
 
     /// <summary>How far (metres) from a stance a stance turned by a hop is placed, along the jump: a hop in place needs some ground to cover to stay long enough in the air.</summary>
     public const float HopShift = 0.15f;

@@ -105,8 +105,8 @@ internal sealed class JumpTightener
     /// <summary>Walk, shorter jump, walk (either walk may be absent) replacing <paramref name="jump"/>, or <c>null</c>.</summary>
     private List<Move>? TightenOne(Jump jump, float minWalk, IReadOnlySet<(int From, int To)>? rejected, Func<PoseEvaluation, bool>? canStand)
     {
-        Vector3 a = Roadmap.CentreOf(jump.From);
-        Vector3 b = Roadmap.CentreOf(jump.To);
+        Vector3 a = jump.From.ContactCentre;
+        Vector3 b = jump.To.ContactCentre;
         var across = new Vector2(b.X - a.X, b.Z - a.Z);
         float distance = across.Length();
         if (distance < MinJumpDistance)

@@ -56,7 +56,7 @@ public sealed class Roadmap
             Vector3 p = nodes[i].Pose.Position;
             _positions[i] = p;
             _horizontal[i] = new Vector2(p.X, p.Z);
-            _centres[i] = CentreOf(nodes[i]);
+            _centres[i] = nodes[i].ContactCentre;
         }
 
         // Compressed rows: each node's outgoing edges, in insertion order.
@@ -307,7 +307,4 @@ public sealed class Roadmap
 
     /// <summary>The edge of index <paramref name="edge"/> without the read-only wrapper.</summary>
     internal ref readonly RoadmapEdge Edge(int edge) => ref _edges[edge];
-
-    /// <summary>The centre of a node's contacts, as <see cref="TrunkSampler.ContactCentre"/> computes it.</summary>
-    internal static Vector3 CentreOf(RoadmapNode node) => node.ContactCentre;
 }

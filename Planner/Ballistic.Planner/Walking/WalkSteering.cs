@@ -78,8 +78,8 @@ public sealed class WalkSteering
             return new WalkResult(null, WalkFailure.NotWalking);
         }
 
-        Vector3 a = Roadmap.CentreOf(from);
-        Vector3 b = Roadmap.CentreOf(to);
+        Vector3 a = from.ContactCentre;
+        Vector3 b = to.ContactCentre;
         float across = new Vector2(b.X - a.X, b.Z - a.Z).Length();
         if (!(across <= maxDistance))
         {
@@ -110,8 +110,8 @@ public sealed class WalkSteering
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
-        Vector3 a = Roadmap.CentreOf(from);
-        Vector3 b = Roadmap.CentreOf(to);
+        Vector3 a = from.ContactCentre;
+        Vector3 b = to.ContactCentre;
         if (!Limits.CanWalk || !(new Vector2(b.X - a.X, b.Z - a.Z).Length() <= maxDistance))
         {
             return null;

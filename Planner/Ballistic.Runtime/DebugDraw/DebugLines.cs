@@ -254,7 +254,7 @@ public sealed class DebugLines
     /// <summary>
     /// The takeoff and landing friction cones of an agent's path from move <paramref name="firstMove"/> on: for each
     /// jump its takeoff stance's cone, then its landing stance's, each at the stance's contact centre
-    /// (<see cref="ContactCentre"/>), in the palette's cone colour. Walks have none.
+    /// (<see cref="RoadmapNode.ContactCentre"/>), in the palette's cone colour. Walks have none.
     /// </summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="firstMove"/> is negative.</exception>
     public DebugLineRange AddPathCones(AgentPath path, int firstMove = 0, DebugDrawSettings? settings = null)
@@ -272,8 +272,8 @@ public sealed class DebugLines
                 continue;
             }
 
-            AddFrictionCone(ContactCentre(move.From), move.From.Cone, settings.Colors.Cones, settings);
-            AddFrictionCone(ContactCentre(move.To), move.To.Cone, settings.Colors.Cones, settings);
+            AddFrictionCone(move.From.ContactCentre, move.From.Cone, settings.Colors.Cones, settings);
+            AddFrictionCone(move.To.ContactCentre, move.To.Cone, settings.Colors.Cones, settings);
         }
 
         return new DebugLineRange(first, _segments - first);
@@ -284,14 +284,7 @@ public sealed class DebugLines
     {
         ArgumentNullException.ThrowIfNull(node);
         settings = Checked(settings);
-        return AddFrictionCone(ContactCentre(node), node.Cone, settings.Colors.Cones, settings);
-    }
-
-    /// <summary>The mean of a stance's contact points (its trunk centre when it has none), world metres: as <see cref="Roadmap.ContactCentres"/>.</summary>
-    public static Vector3 ContactCentre(RoadmapNode node)
-    {
-        ArgumentNullException.ThrowIfNull(node);
-        return node.ContactCentre;
+        return AddFrictionCone(node.ContactCentre, node.Cone, settings.Colors.Cones, settings);
     }
 
     /// <summary>

@@ -485,17 +485,17 @@ public sealed class JumpAgentLogic
                 break;
             case JumpEventKind.JumpStarted when e.Path is { } path:
                 PathMove move = path.Moves[j.Jump];
-                _signals.Add(new JumpStartedSignal(j.Time, Stances.ContactCentre(move.From), Stances.ContactCentre(move.To), Stances.BodyVelocity(move), move.Arc.FlightTime));
+                _signals.Add(new JumpStartedSignal(j.Time, move.From.ContactCentre, move.To.ContactCentre, Stances.BodyVelocity(move), move.Arc.FlightTime));
                 break;
             case JumpEventKind.Landed when e.Path is { } path:
-                _signals.Add(new LandedSignal(j.Time, Stances.ContactCentre(path.Moves[j.Jump].To)));
+                _signals.Add(new LandedSignal(j.Time, path.Moves[j.Jump].To.ContactCentre));
                 break;
             case JumpEventKind.WalkStarted when e.Path is { } path:
                 PathMove walk = path.Moves[j.Jump];
-                _signals.Add(new WalkStartedSignal(j.Time, Stances.ContactCentre(walk.From), Stances.ContactCentre(walk.To), walk.Walk!.Duration, walk.Walk.Speed, j.Jump));
+                _signals.Add(new WalkStartedSignal(j.Time, walk.From.ContactCentre, walk.To.ContactCentre, walk.Walk!.Duration, walk.Walk.Speed, j.Jump));
                 break;
             case JumpEventKind.WalkFinished when e.Path is { } path:
-                _signals.Add(new WalkFinishedSignal(j.Time, Stances.ContactCentre(path.Moves[j.Jump].To), j.Jump));
+                _signals.Add(new WalkFinishedSignal(j.Time, path.Moves[j.Jump].To.ContactCentre, j.Jump));
                 break;
             case JumpEventKind.TargetReached:
                 if (_navigating)
@@ -564,7 +564,7 @@ public sealed class JumpAgentLogic
         }
         else if (Stances.Standing(world, agent) is { } stance)
         {
-            BodyPosition = Stances.ContactCentre(stance);
+            BodyPosition = stance.ContactCentre;
             BodyVelocity = Vector3.Zero;
         }
 
@@ -576,19 +576,19 @@ public sealed class JumpAgentLogic
     }
 
     private static JumpPreview Preview(in PathMove move, in JumpInfo info) =>
-        new(info.Index, Stances.ContactCentre(move.From), Stances.ContactCentre(move.To), Stances.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
+        new(info.Index, move.From.ContactCentre, move.To.ContactCentre, Stances.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
 
     /// <summary>Samples the body point along the path, at most <see cref="PathSampleStep"/> apart.</summary>
     private void Sample(AgentPath path)
     {
         _points.Clear();
-        _points.Add(Stances.ContactCentre(path.Moves[0].From));
+        _points.Add(path.Moves[0].From.ContactCentre);
         foreach (PathMove move in path.Moves)
         {
             if (move.Walk is { } walk)
             {
                 // Uniform in distance: a step of the ground path plus the offset's share is at most a step apart.
-                Vector3 shift = (Stances.ContactCentre(move.To) - walk.Path[^1]) - (Stances.ContactCentre(move.From) - walk.Path[0]);
+                Vector3 shift = (move.To.ContactCentre - walk.Path[^1]) - (move.From.ContactCentre - walk.Path[0]);
                 int n = Math.Max(1, (int)MathF.Ceiling((walk.Length + shift.Length()) / _step));
                 for (int k = 1; k < n; k++)
                 {
@@ -612,7 +612,7 @@ public sealed class JumpAgentLogic
             }
 
             // The end point itself (the arc meets it within millimetres): bridged if ever farther than a step.
-            Vector3 end = Stances.ContactCentre(move.To);
+            Vector3 end = move.To.ContactCentre;
             Vector3 last = _points[^1];
             int bridge = (int)MathF.Ceiling(Vector3.Distance(last, end) / _step);
             for (int k = 1; k < bridge; k++)

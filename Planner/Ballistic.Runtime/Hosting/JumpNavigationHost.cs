@@ -386,7 +386,7 @@ public sealed class JumpNavigationHost : IDisposable
         }
 
         AgentRecord a = _agents[agent.Index];
-        return a.State == HostAgentState.Active && Stances.Standing(_world!, a.World) is { } stance ? Stances.ContactCentre(stance) : a.Point;
+        return a.State == HostAgentState.Active && Stances.Standing(_world!, a.World) is { } stance ? stance.ContactCentre : a.Point;
     }
 
     /// <summary>
@@ -763,7 +763,7 @@ public sealed class JumpNavigationHost : IDisposable
             lifted++;
             if (Stances.Standing(_world!, a.World) is { } stance)
             {
-                a.Point = Stances.ContactCentre(stance);
+                a.Point = stance.ContactCentre;
             }
 
             Unmap(a);

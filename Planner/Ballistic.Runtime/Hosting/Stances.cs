@@ -17,9 +17,6 @@ namespace Ballistic.Runtime.Hosting;
 /// </summary>
 internal static class Stances
 {
-    /// <summary>The mean of a stance's contact positions (the trunk centre without contacts), world metres: <see cref="Roadmap.ContactCentres"/> for roadmap nodes.</summary>
-    public static Vector3 ContactCentre(RoadmapNode node) => node.ContactCentre;
-
     /// <summary>
     /// The stance the agent stands on, or, following a path, the one it stands on next: the end of the move it is in
     /// (a jump's landing, a walk's last stance), or the first stance of the next move between two moves. <c>null</c>
@@ -65,7 +62,7 @@ internal static class Stances
     /// <summary>The body point's takeoff velocity for a jump from <paramref name="from"/> to <paramref name="to"/> on <paramref name="arc"/>, m/s.</summary>
     public static Vector3 BodyVelocity(RoadmapNode from, RoadmapNode to, in BallisticArc arc)
     {
-        Vector3 drift = (arc.End - ContactCentre(to)) - (arc.Start - ContactCentre(from));
+        Vector3 drift = (arc.End - to.ContactCentre) - (arc.Start - from.ContactCentre);
         return arc.TakeoffVelocity - (drift / arc.FlightTime);
     }
 
@@ -78,7 +75,7 @@ internal static class Stances
     {
         Vector3 v = BodyVelocity(move);
         var g = new Vector3(0f, -move.Arc.Gravity, 0f);
-        return (ContactCentre(move.From) + (v * t) + (0.5f * t * t * g), v + (g * t));
+        return (move.From.ContactCentre + (v * t) + (0.5f * t * t * g), v + (g * t));
     }
 
     /// <summary>
@@ -94,12 +91,12 @@ internal static class Stances
     {
         Walk walk = move.Walk ?? throw new ArgumentException($"Move {move.Index} is a jump, not a walk.", nameof(move));
         IReadOnlyList<Vector3> path = walk.Path;
-        Vector3 startShift = ContactCentre(move.From) - path[0];
-        Vector3 endShift = ContactCentre(move.To) - path[^1];
+        Vector3 startShift = move.From.ContactCentre - path[0];
+        Vector3 endShift = move.To.ContactCentre - path[^1];
         float length = walk.Length;
         float d = walk.DistanceAt(t);
-        Vector3 position = d <= 0f ? ContactCentre(move.From)
-            : d >= length ? ContactCentre(move.To)
+        Vector3 position = d <= 0f ? move.From.ContactCentre
+            : d >= length ? move.To.ContactCentre
             : walk.PointAt(d) + Vector3.Lerp(startShift, endShift, d / length);
         if (!(t >= 0f && t <= walk.Duration) || length <= 0f)
         {

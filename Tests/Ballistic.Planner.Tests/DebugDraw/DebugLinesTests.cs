@@ -85,7 +85,7 @@ public sealed class DebugLinesTests
             }
         }
 
-        Assert.That(DebugLines.ContactCentre(Roadmap.Nodes[7]), Is.EqualTo(Roadmap.ContactCentres[7]));
+        Assert.That(Roadmap.Nodes[7].ContactCentre, Is.EqualTo(Roadmap.ContactCentres[7]));
     }
 
     [TestCase(0.5f)]
@@ -159,8 +159,8 @@ public sealed class DebugLinesTests
         int verticesPerCone = 2 * (1 + (2 * settings.ConeRays));
         for (int m = 0; m < jumps.Count; m++)
         {
-            Assert.That(c[2 * m * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(jumps[m].From)), $"jump {m} takeoff cone");
-            Assert.That(c[((2 * m) + 1) * verticesPerCone], Is.EqualTo(DebugLines.ContactCentre(jumps[m].To)), $"jump {m} landing cone");
+            Assert.That(c[2 * m * verticesPerCone], Is.EqualTo(jumps[m].From.ContactCentre), $"jump {m} takeoff cone");
+            Assert.That(c[((2 * m) + 1) * verticesPerCone], Is.EqualTo(jumps[m].To.ContactCentre), $"jump {m} landing cone");
             Vector3 axis = c[(((2 * m) + 1) * verticesPerCone) + 1] - c[((2 * m) + 1) * verticesPerCone];
             Assert.That(Vector3.Distance(axis, jumps[m].To.Cone.Axis * settings.ConeLength), Is.LessThan(1e-5f), "along the landing stance's cone axis");
         }
@@ -250,7 +250,7 @@ public sealed class DebugLinesTests
 
         lines.Clear();
         Assert.That(lines.AddPathCones(path, 0, settings).Count, Is.EqualTo(2 * (1 + (2 * settings.ConeRays))), "the jump's two cones only");
-        Assert.That(lines.Vertices[0], Is.EqualTo(DebugLines.ContactCentre(moves[1].From)));
+        Assert.That(lines.Vertices[0], Is.EqualTo(moves[1].From.ContactCentre));
         lines.Clear();
         Assert.That(lines.AddPath(path, 1, settings).Count, Is.EqualTo(arc + last), "from the jump on");
     }

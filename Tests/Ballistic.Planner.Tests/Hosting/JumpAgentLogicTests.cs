@@ -137,8 +137,8 @@ public sealed class JumpAgentLogicTests
                 var moves = host.World!.GetPath(host.GetWorldAgent(logic.Agent))!.Moves;
                 foreach (var move in moves)
                 {
-                    Assert.That(path, Does.Contain(Stances.ContactCentre(move.From)), $"takeoff of jump {move.Index}");
-                    Assert.That(path, Does.Contain(Stances.ContactCentre(move.To)), $"landing of jump {move.Index}");
+                    Assert.That(path, Does.Contain(move.From.ContactCentre), $"takeoff of jump {move.Index}");
+                    Assert.That(path, Does.Contain(move.To.ContactCentre), $"landing of jump {move.Index}");
                 }
 
                 float length = path.Zip(path.Skip(1)).Sum(p => Vector3.Distance(p.First, p.Second));

@@ -60,7 +60,7 @@ public sealed class JumpNavigationHostTests
             HostingWorlds.Run(host, [idle, moving], MaxTicks, _ => host.World!.GetState(host.GetWorldAgent(moving)) == AgentState.Flight);
             Assume.That(host.World!.GetState(host.GetWorldAgent(moving)), Is.EqualTo(AgentState.Flight));
             Assert.That(host.World.TryGetCurrentJump(host.GetWorldAgent(moving), out var jump), Is.True);
-            Vector3 landing = Stances.ContactCentre(host.World.GetPath(host.GetWorldAgent(moving))!.Moves[jump.Index].To);
+            Vector3 landing = (host.World.GetPath(host.GetWorldAgent(moving))!.Moves[jump.Index].To).ContactCentre;
             Vector3 idleAt = host.GetStandingPoint(idle)!.Value;
             AgentHandle oldWorldAgent = host.GetWorldAgent(idle);
             JumpWorld world = host.World;
@@ -87,7 +87,7 @@ public sealed class JumpNavigationHostTests
             List<AgentEvent> events = HostingWorlds.Run(host, [idle, moving], MaxTicks, seen => seen[moving].Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[moving];
             Assert.That(events.Select(e => e.Event.Kind), Does.Not.Contain(JumpEventKind.Removed), "a rebake is not a removal");
             AgentEvent found = events.First(e => e.Event.Kind == JumpEventKind.PathFound);
-            Assert.That(Vector3.Distance(Stances.ContactCentre(found.Path!.Start), restart), Is.LessThan(1e-4f), "the new path starts where the agent was put");
+            Assert.That(Vector3.Distance(found.Path!.Start.ContactCentre, restart), Is.LessThan(1e-4f), "the new path starts where the agent was put");
             // Each landing but the last is a node of the new roadmap, or a stance the query placed (facing a jump): ids n + 2 on.
             int placedFrom = HostingWorlds.DesertRebaked.Roadmap.Nodes.Count + 2;
             foreach (var move in found.Path.Moves.SkipLast(1))

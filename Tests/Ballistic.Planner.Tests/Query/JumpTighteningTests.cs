@@ -29,7 +29,7 @@ public sealed class JumpTighteningTests
 
     private static float Across(Vector3 a, Vector3 b) => new Vector2(b.X - a.X, b.Z - a.Z).Length();
 
-    private static float Flown(PlanResult plan) => plan.Jumps.Sum(j => Across(Roadmap.CentreOf(j.From), Roadmap.CentreOf(j.To)));
+    private static float Flown(PlanResult plan) => plan.Jumps.Sum(j => Across(j.From.ContactCentre, j.To.ContactCentre));
 
     private static float Walked(PlanResult plan) => plan.Walks.Sum(w => w.Length);
 
@@ -64,9 +64,9 @@ public sealed class JumpTighteningTests
             {
                 Assert.That(jump.CutFrom, Has.Count.EqualTo(1));
                 Assert.That(searched.TryGetValue(jump.CutFrom[0], out Jump? original), Is.True, "cut from a jump of the searched path");
-                Vector3 a = Roadmap.CentreOf(original!.From);
-                Vector3 b = Roadmap.CentreOf(original.To);
-                Assert.That(Across(Roadmap.CentreOf(jump.From), Roadmap.CentreOf(jump.To)), Is.LessThan(Across(a, b) - 0.5f));
+                Vector3 a = original!.From.ContactCentre;
+                Vector3 b = original.To.ContactCentre;
+                Assert.That(Across(jump.From.ContactCentre, jump.To.ContactCentre), Is.LessThan(Across(a, b) - 0.5f));
                 var line = Vector2.Normalize(new Vector2(b.X - a.X, b.Z - a.Z));
                 Vector3 hop = jump.Arc.End - jump.Arc.Start;
                 Assert.That(Vector2.Dot(new Vector2(hop.X, hop.Z), line), Is.GreaterThan(0f), "the cut jump goes the original's way");

@@ -57,7 +57,7 @@ public sealed class WalkHopTests
     {
         PlanResult walked = Plan(null);
         Assume.That(walked.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "the floor is walked in one walk");
-        var spot = new Vector3(0f, 0f, (Roadmap.CentreOf(walked.Moves[0].From).Z + Roadmap.CentreOf(walked.Moves[0].To).Z) / 2f);
+        var spot = new Vector3(0f, 0f, (walked.Moves[0].From.ContactCentre.Z + walked.Moves[0].To.ContactCentre.Z) / 2f);
         PlanResult hopped = Plan([spot]);
         (PlanningScene scene, Roadmap roadmap, _) = Floor.Value;
         int n = roadmap.Nodes.Count;
@@ -67,9 +67,9 @@ public sealed class WalkHopTests
             Assert.That(hopped.Moves.Select(m => m.GetType().Name), Is.EqualTo(new[] { "Walk", "Jump", "Walk" }));
             AssertContinuous(hopped);
             Jump hop = hopped.Jumps.Single();
-            Assert.That(Roadmap.CentreOf(hop.From).X, Is.LessThan(spot.X - JumpTightener.SpotRadius), "takes off before the spot");
-            Assert.That(Roadmap.CentreOf(hop.To).X, Is.GreaterThan(spot.X + JumpTightener.SpotRadius), "lands after it");
-            Assert.That(Across(Roadmap.CentreOf(hop.From), Roadmap.CentreOf(hop.To)), Is.InRange(JumpTightener.MinHop - 0.45f, 3f), "a hop, not a leap over the floor");
+            Assert.That(hop.From.ContactCentre.X, Is.LessThan(spot.X - JumpTightener.SpotRadius), "takes off before the spot");
+            Assert.That(hop.To.ContactCentre.X, Is.GreaterThan(spot.X + JumpTightener.SpotRadius), "lands after it");
+            Assert.That(Across(hop.From.ContactCentre, hop.To.ContactCentre), Is.InRange(JumpTightener.MinHop - 0.45f, 3f), "a hop, not a leap over the floor");
             Assert.That(hopped.Walks.SelectMany(w => w.Path).Select(p => Across(p, spot)), Has.All.GreaterThan(JumpTightener.SpotRadius), "no walk steps on the spot");
             Assert.That(hopped.Walks.Sum(w => w.Length), Is.GreaterThan(6f), "the rest is walked");
             Assert.That(hopped.Moves.Select(m => m.HoppedFrom), Has.All.EqualTo(searched), "each move stands in for the searched walk");
@@ -86,7 +86,7 @@ public sealed class WalkHopTests
     public void SpotsCloseTogetherAreHoppedAtOnceAndSpotsApartEachOnce()
     {
         PlanResult walked = Plan(null);
-        float z = Roadmap.CentreOf(walked.Moves[0].From).Z;
+        float z = walked.Moves[0].From.ContactCentre.Z;
         PlanResult close = Plan([new Vector3(-0.3f, 0f, z), new Vector3(0.3f, 0f, z)]);
         PlanResult apart = Plan([new Vector3(-2f, 0f, z), new Vector3(2f, 0f, z)]);
         PlanResult beside = Plan([new Vector3(0f, 0f, 1.9f * MathF.Sign(0.5f - z))]);
@@ -94,8 +94,8 @@ public sealed class WalkHopTests
         {
             Assert.That(close.Jumps, Has.Count.EqualTo(1), "one hop over both");
             Jump hop = close.Jumps.Single();
-            Assert.That(Roadmap.CentreOf(hop.From).X, Is.LessThan(-0.3f - JumpTightener.SpotRadius));
-            Assert.That(Roadmap.CentreOf(hop.To).X, Is.GreaterThan(0.3f + JumpTightener.SpotRadius));
+            Assert.That(hop.From.ContactCentre.X, Is.LessThan(-0.3f - JumpTightener.SpotRadius));
+            Assert.That(hop.To.ContactCentre.X, Is.GreaterThan(0.3f + JumpTightener.SpotRadius));
             Assert.That(apart.Jumps, Has.Count.EqualTo(2), "one hop each");
             Assert.That(apart.Walks.Count(), Is.EqualTo(3));
             AssertContinuous(apart);

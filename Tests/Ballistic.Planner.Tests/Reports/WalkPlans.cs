@@ -38,9 +38,9 @@ internal static class WalkPlans
         RoadmapNode start = Shifted(takeoff, 1000, new Vector3(-1f, 0f, 0.3f));
         RoadmapNode via = Shifted(landing, 1001, new Vector3(0.5f, 0f, 0.5f));
         RoadmapNode goal = Shifted(landing, 1002, new Vector3(0.9f, 0f, -0.2f));
-        Vector3 s = ContactCentre(start);
-        var first = new Walk(start, takeoff, [s, s + new Vector3(0.4f, 0f, -0.6f), ContactCentre(takeoff)], Speed);
-        var last = new Walk(landing, goal, [ContactCentre(landing), ContactCentre(via), ContactCentre(goal)], Speed, [via]);
+        Vector3 s = start.ContactCentre;
+        var first = new Walk(start, takeoff, [s, s + new Vector3(0.4f, 0f, -0.6f), takeoff.ContactCentre], Speed);
+        var last = new Walk(landing, goal, [landing.ContactCentre, via.ContactCentre, goal.ContactCentre], Speed, [via]);
         return new PlanResult(PlannerStatus.Exact, "a hand-made walk and jump plan", start, goal, [first, .. jumps.Moves, last], TimeSpan.Zero);
     });
 
@@ -64,8 +64,6 @@ internal static class WalkPlans
         {
             Animation = animation is null ? null : new AnimationReport("models/skeleton.glb", "jumps", animation),
         };
-
-    public static Vector3 ContactCentre(RoadmapNode node) => node.Contacts.Aggregate(Vector3.Zero, (sum, c) => sum + c.Position) / node.Contacts.Count;
 
     /// <summary>The node moved by <paramref name="by"/> (trunk and contacts), with a new id.</summary>
     public static RoadmapNode Shifted(RoadmapNode node, int id, Vector3 by) =>
