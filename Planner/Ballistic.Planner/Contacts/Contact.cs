@@ -8,4 +8,17 @@ namespace Ballistic.Planner.Contacts;
 /// <param name="Normal">Unit surface normal at the contact, world space, pointing out of the surface.</param>
 /// <param name="Mu">Coulomb friction coefficient of the surface.</param>
 /// <param name="Surface">Id of the contact surface touched.</param>
-public readonly record struct Contact(int Limb, Vector3 Position, Vector3 Normal, float Mu, int Surface);
+public readonly record struct Contact(int Limb, Vector3 Position, Vector3 Normal, float Mu, int Surface)
+{
+    /// <summary>The mean of <paramref name="contacts"/>' positions, world metres; <paramref name="none"/> when there are none (a stance's and a sampled pose's contact centre).</summary>
+    internal static Vector3 Centre(IReadOnlyList<Contact> contacts, Vector3 none)
+    {
+        Vector3 sum = Vector3.Zero;
+        for (int i = 0; i < contacts.Count; i++)
+        {
+            sum += contacts[i].Position;
+        }
+
+        return contacts.Count > 0 ? sum / contacts.Count : none;
+    }
+}

@@ -110,24 +110,12 @@ internal sealed class SoleHold
         Vector3 side = Vector3.Normalize(Vector3.Cross(up, forward));
         float sign = Vector3.Dot(Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, RollStep)), forward) > 0f ? -1f : 1f;
         float least = 0.5f * RollStep;
-        if (ball0 is not null)
+        Vector3 normal = ball.EffectorNormal(rotations);
+        float now = sign * MathF.Atan2(-Vector3.Dot(normal, forward), -Vector3.Dot(normal, up));
+        (float from, float by) = ball0 is null ? (least, RollStep) : (MathF.Max(now - least, least), least);
+        for (float tilt = from; tilt <= MostRoll; tilt += by)
         {
-            Vector3 normal = ball.EffectorNormal(rotations);
-            float now = sign * MathF.Atan2(-Vector3.Dot(normal, forward), -Vector3.Dot(normal, up));
-            for (float tilt = MathF.Max(now - least, least); tilt <= MostRoll; tilt += least)
-            {
-                if (Tilted(root, q, ball, target, up, side, sign * tilt))
-                {
-                    return true;
-                }
-            }
-
-            return false;
-        }
-
-        for (float tilt = least; tilt <= MostRoll; tilt += RollStep)
-        {
-            if (Tilted(root, q, ball, target, up, side, sign * tilt))
+            if (Rolling.Solve(root, q, ball, target, Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, sign * tilt))).Success)
             {
                 return true;
             }
@@ -135,8 +123,4 @@ internal sealed class SoleHold
 
         return false;
     }
-
-    /// <summary>The ball on <paramref name="target"/>, the sole's normal turned <paramref name="angle"/> radians about <paramref name="side"/> from straight down.</summary>
-    private bool Tilted(in RootPose root, float[] q, RigLimb ball, Vector3 target, Vector3 up, Vector3 side, float angle) =>
-        Rolling.Solve(root, q, ball, target, Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, angle))).Success;
 }

@@ -15,17 +15,5 @@ public sealed record RoadmapNode(int Id, RootPose Pose, FrictionCone Cone, IRead
     /// The mean of the stance's contact positions (its trunk centre when it has none), world metres: the point a
     /// game reads as where the character stands (<see cref="Roadmap.ContactCentres"/> for a roadmap's nodes).
     /// </summary>
-    public Vector3 ContactCentre
-    {
-        get
-        {
-            Vector3 sum = Vector3.Zero;
-            for (int i = 0; i < Contacts.Count; i++)
-            {
-                sum += Contacts[i].Position;
-            }
-
-            return Contacts.Count > 0 ? sum / Contacts.Count : Pose.Position;
-        }
-    }
+    public Vector3 ContactCentre => Contact.Centre(Contacts, Pose.Position);
 }

@@ -286,13 +286,7 @@ public sealed class TrunkSampler
     public static Vector3 ContactCentre(PoseEvaluation pose)
     {
         ArgumentNullException.ThrowIfNull(pose);
-        Vector3 sum = Vector3.Zero;
-        foreach (Contact c in pose.Contacts)
-        {
-            sum += c.Position;
-        }
-
-        return pose.Contacts.Count > 0 ? sum / pose.Contacts.Count : pose.Pose.Position;
+        return Contact.Centre(pose.Contacts, pose.Pose.Position);
     }
 
     /// <summary>Every triangle met by the vertical segment at (x, z) of <paramref name="column"/> from <paramref name="top"/> down to <paramref name="bottom"/>, top first.</summary>
