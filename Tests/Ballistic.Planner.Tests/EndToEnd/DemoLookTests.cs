@@ -5,11 +5,19 @@ namespace Ballistic.Planner.Tests.EndToEnd;
 /// <summary>
 /// The README's main job, the skeleton crossing the bundled desert (`ballistic demo`: the same level, character,
 /// request, seed and node budget), is what a user sees first: its plan passes the independent audit and its animated
-/// GLB, read back as an importer reads it, every criterion of the animator's eye that the sweep enforces.
+/// GLB, read back as an importer reads it, every criterion of the animator's eye but those listed in <see cref="NotYet"/>.
 /// </summary>
 [Category("EndToEnd")]
 public sealed class DemoLookTests
 {
+    /// <summary>
+    /// The criteria the demo does not pass yet (every other one must, and one of these passing fails the test, so the
+    /// list only shrinks): upright, its four walks cruise with the hips 0.860–0.878 L above their held feet (0.88
+    /// asked) over the dunes' gentle slopes, 5–10°, which the eye reads as level and the gait lifts the hips fully on
+    /// only below 5°.
+    /// </summary>
+    private static readonly string[] NotYet = ["upright"];
+
     [Test]
     public void TheDemoIsFullyRightAndReadsAsJumpsAndWalks()
     {
@@ -26,9 +34,16 @@ public sealed class DemoLookTests
         Assert.That(report.Look!.Upright.Seen, Is.Not.Empty, "the demo's walks cruise on level ground");
         Assert.Multiple(() =>
         {
-            foreach ((string name, AnimatorEye.Criterion criterion) in SweepTests.Animated(report.Look))
+            foreach ((string name, AnimatorEye.Criterion criterion) in report.Look.All)
             {
-                Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+                if (NotYet.Contains(name))
+                {
+                    Assert.That(criterion.Passes, Is.False, $"{name} now passes on the demo: take it off {nameof(NotYet)} ({criterion})");
+                }
+                else
+                {
+                    Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+                }
             }
         });
     }

@@ -107,12 +107,15 @@ public sealed class SweepTests
         }
     }
 
-    /// <summary>The criteria of <see cref="NotYetEveryPlan"/> on plan <paramref name="key"/>: passed, or failed where the list says so.</summary>
+    /// <summary>
+    /// Every criterion on plan <paramref name="key"/>: passed, or failed where <see cref="NotYetEveryPlan"/> says so (a
+    /// criterion no longer listed there is still asserted on every plan).
+    /// </summary>
     private static void AssertNotYetEveryPlan(AnimatorEye.Look look, string key) => Assert.Multiple(() =>
     {
-        foreach ((string name, AnimatorEye.Criterion criterion) in look.All.Where(c => NotYetEveryPlan.ContainsKey(c.Name)))
+        foreach ((string name, AnimatorEye.Criterion criterion) in look.All)
         {
-            if (NotYetEveryPlan[name].Contains(key))
+            if (NotYetEveryPlan.TryGetValue(name, out string[]? plans) && plans.Contains(key))
             {
                 Assert.That(criterion.Passes, Is.False, $"{name} now passes on {key}: take it off {nameof(NotYetEveryPlan)} ({criterion})");
             }
