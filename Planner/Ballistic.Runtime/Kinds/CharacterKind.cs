@@ -24,7 +24,7 @@ public sealed class CharacterKind
         Scene = scene;
         Roadmap = roadmap;
         Animator = animator;
-        PathAnimator = animator;
+        PathAnimator = new PathAnimationCache(animator, animator.Model);
     }
 
     /// <summary>
@@ -35,7 +35,7 @@ public sealed class CharacterKind
         : this(scene, roadmap, animator)
     {
         ArgumentNullException.ThrowIfNull(pathAnimator);
-        PathAnimator = pathAnimator;
+        PathAnimator = new PathAnimationCache(pathAnimator, animator.Model);
     }
 
     /// <summary>The character's name.</summary>
@@ -50,8 +50,11 @@ public sealed class CharacterKind
     /// <summary>The whole-body animator.</summary>
     public JumpAnimator Animator { get; }
 
-    /// <summary>What animates the paths agents of this kind follow: <see cref="Animator"/>, unless made otherwise.</summary>
-    internal IJumpAnimator PathAnimator { get; }
+    /// <summary>
+    /// What animates the paths agents of this kind follow: <see cref="Animator"/>, unless made otherwise, each distinct
+    /// path solved once for every agent and world of the kind (<see cref="PathAnimationCache"/>).
+    /// </summary>
+    internal PathAnimationCache PathAnimator { get; }
 
     /// <summary>The rigged character.</summary>
     public CharacterModel Model => Animator.Model;

@@ -1,0 +1,92 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Planner.Tests.Runtime;
+
+/// <summary>
+/// Each distinct path of a kind is animated once: agents sent between the same stances share the motion, which is
+/// exactly what animating their moves again gives; a path differing in any input is animated anew.
+/// </summary>
+public sealed class PathAnimationCacheTests
+{
+    [Test]
+    public void AgentsSentTheSameWayShareOneAnimationAndMoveAlike()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var counting = new SimpleMoveAnimator(desert.Animator);
+        var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, counting);
+        var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly);
+        KindHandle handle = world.AddKind(kind).Kind;
+        (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, 11)[0];
+        AgentHandle[] agents = [.. Enumerable.Range(0, 3).Select(_ => world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent)];
+        foreach (AgentHandle agent in agents)
+        {
+            Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
+        }
+
+        bool following = false;
+        for (int tick = 0; tick < 240; tick++)
+        {
+            world.Step();
+            following |= world.GetState(agents[0]) is AgentState.Flight or AgentState.Walking;
+            RootPose first = world.GetRootPose(agents[0]);
+            foreach (AgentHandle other in agents.Skip(1))
+            {
+                Assert.That(world.GetRootPose(other), Is.EqualTo(first), $"tick {tick}: agents sent the same way move alike");
+            }
+        }
+
+        Assert.That(following, Is.True, "the agents set off");
+        Assert.That(counting.Calls, Is.EqualTo(1), "three agents, one path animated");
+        Assert.That(kind.PathAnimator.Solved, Is.EqualTo(1));
+        world.Dispose();
+    }
+
+    [Test]
+    public void ARememberedPathIsTheAnimationOfItsMovesAndAnyChangeIsAnimatedAnew()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var cache = new PathAnimationCache(desert.Animator, desert.Model);
+        RoadmapEdge edge = desert.Roadmap.Edges.First(e => e.Arc.FlightTime > 0.3f);
+        Move[] moves = [new Jump(desert.Roadmap.Nodes[edge.From], desert.Roadmap.Nodes[edge.To], edge.Arc)];
+        JumpAnimation fresh = desert.Animator.Animate(moves, 60f);
+        JumpAnimation solved = cache.Animate(moves, 60f);
+
+        // The same moves again, as new objects equal to the bit (a second agent's search): remembered.
+        Move[] again = [new Jump(desert.Roadmap.Nodes[edge.From] with { }, desert.Roadmap.Nodes[edge.To] with { }, edge.Arc)];
+        JumpAnimation remembered = cache.Animate(again, 60f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(cache.Solved, Is.EqualTo(1), "the same moves are solved once");
+            Assert.That(remembered.Moves[0], Is.SameAs(again[0]), "the caller's own moves");
+            foreach (JumpAnimation animation in (JumpAnimation[])[solved, remembered])
+            {
+                Assert.That(animation.Frames.Select(f => (f.Time, f.Root)), Is.EqualTo(fresh.Frames.Select(f => (f.Time, f.Root))));
+                Assert.That(animation.Frames.SelectMany(f => f.Angles), Is.EqualTo(fresh.Frames.SelectMany(f => f.Angles)));
+                Assert.That(animation.ContactPhases, Is.EqualTo(fresh.ContactPhases));
+                Assert.That(animation.Problems, Is.EqualTo(fresh.Problems));
+                Assert.That(animation.Duration, Is.EqualTo(fresh.Duration));
+            }
+        });
+
+        // A takeoff stance moved by the least float step, or another frame rate, is another path.
+        RoadmapNode takeoff = desert.Roadmap.Nodes[edge.From];
+        Vector3Nudge(takeoff, out RoadmapNode nudged);
+        cache.Animate([new Jump(nudged, desert.Roadmap.Nodes[edge.To], edge.Arc)], 60f);
+        Assert.That(cache.Solved, Is.EqualTo(2), "a stance one float step away is animated anew");
+        cache.Animate(moves, 30f);
+        Assert.That(cache.Solved, Is.EqualTo(3), "another frame rate is animated anew");
+        cache.Animate(moves, 60f);
+        Assert.That(cache.Solved, Is.EqualTo(3), "and the first is still remembered");
+    }
+
+    private static void Vector3Nudge(RoadmapNode node, out RoadmapNode nudged)
+    {
+        System.Numerics.Vector3 p = node.Pose.Position;
+        nudged = node with { Pose = node.Pose with { Position = p with { X = MathF.BitIncrement(p.X) } } };
+    }
+}
