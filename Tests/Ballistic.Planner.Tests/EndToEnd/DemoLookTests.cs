@@ -32,19 +32,6 @@ public sealed class DemoLookTests
         Assert.That(report.FullyRight, Is.True, report.ToString());
         Assert.That(report.Look, Is.Not.Null);
         Assert.That(report.Look!.Upright.Seen, Is.Not.Empty, "the demo's walks cruise on level ground");
-        Assert.Multiple(() =>
-        {
-            foreach ((string name, AnimatorEye.Criterion criterion) in report.Look.All)
-            {
-                if (NotYet.Contains(name))
-                {
-                    Assert.That(criterion.Passes, Is.False, $"{name} now passes on the demo: take it off {nameof(NotYet)} ({criterion})");
-                }
-                else
-                {
-                    Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
-                }
-            }
-        });
+        SweepTests.AssertEveryCriterion(report.Look, "the demo", NotYet.Contains, nameof(NotYet));
     }
 }

@@ -19,7 +19,7 @@ public sealed class PathAnimationCacheTests
         CharacterKind desert = RuntimeWorlds.DesertSkeleton;
         var counting = new SimpleMoveAnimator(desert.Animator);
         var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, counting);
-        var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly);
+        using var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly);
         KindHandle handle = world.AddKind(kind).Kind;
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, 11)[0];
         AgentHandle[] agents = [.. Enumerable.Range(0, 3).Select(_ => world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent)];
@@ -43,7 +43,6 @@ public sealed class PathAnimationCacheTests
         Assert.That(following, Is.True, "the agents set off");
         Assert.That(counting.Calls, Is.EqualTo(1), "three agents, one path animated");
         Assert.That(kind.PathAnimator.Solved, Is.EqualTo(1));
-        world.Dispose();
     }
 
     [Test]
@@ -75,18 +74,12 @@ public sealed class PathAnimationCacheTests
 
         // A takeoff stance moved by the least float step, or another frame rate, is another path.
         RoadmapNode takeoff = desert.Roadmap.Nodes[edge.From];
-        Vector3Nudge(takeoff, out RoadmapNode nudged);
+        RoadmapNode nudged = takeoff with { Pose = takeoff.Pose with { Position = takeoff.Pose.Position with { X = MathF.BitIncrement(takeoff.Pose.Position.X) } } };
         cache.Animate([new Jump(nudged, desert.Roadmap.Nodes[edge.To], edge.Arc)], 60f);
         Assert.That(cache.Solved, Is.EqualTo(2), "a stance one float step away is animated anew");
         cache.Animate(moves, 30f);
         Assert.That(cache.Solved, Is.EqualTo(3), "another frame rate is animated anew");
         cache.Animate(moves, 60f);
         Assert.That(cache.Solved, Is.EqualTo(3), "and the first is still remembered");
-    }
-
-    private static void Vector3Nudge(RoadmapNode node, out RoadmapNode nudged)
-    {
-        System.Numerics.Vector3 p = node.Pose.Position;
-        nudged = node with { Pose = node.Pose with { Position = p with { X = MathF.BitIncrement(p.X) } } };
     }
 }
