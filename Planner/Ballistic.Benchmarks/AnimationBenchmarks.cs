@@ -1,6 +1,5 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
-using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -21,15 +20,8 @@ public class AnimationBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var scene = PlanningScene.Create(LevelGenerator.BuildLevel("desert"), CharacterPresets.Skeleton());
-        Vector3 Ground(float x, float z)
-        {
-            scene.Bvh.Raycast(new Vector3(x, 10f, z), new Vector3(0f, -20f, 0f), 1f, out var hit);
-            return hit.Point;
-        }
-
-        Vector3 from = Ground(-9.5f, -7.5f);
-        Vector3 to = Ground(9.5f, 7.5f);
+        PlanningScene scene = DesertCrossing.Scene();
+        (Vector3 from, Vector3 to) = DesertCrossing.Ends(scene);
         BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, MaxNodes = 600, Start = from, Goal = to, StopWhenConnected = true });
         _jumps = [.. new PathQuery(scene, bake.Roadmap).Plan(from, to).Jumps];
         _animator = new JumpAnimator(scene, CharacterPresets.Model("skeleton"));

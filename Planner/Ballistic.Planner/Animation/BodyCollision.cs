@@ -57,6 +57,9 @@ public sealed class BodyCollision
     private readonly int[] _otherBones;
     private readonly float[] _otherThickness;
     private readonly IReadOnlyList<Triangle>? _triangles;
+
+    /// <summary>Each level triangle's bounds and unit normal (<see cref="Inside"/> reads them for every skin point), computed once.</summary>
+    private readonly (Aabb Bounds, Vector3 Normal)[] _shapes = [];
     private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _probes;
     private readonly float[] _probeReach;
     private readonly (int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes)[] _freeSkins;
@@ -137,6 +140,15 @@ public sealed class BodyCollision
         // chain's bones and those below its effector (a foot's toes and heel, a hand's fingers reach beyond the
         // segments between joints; a shin's box is as wide as its radius).
         _triangles = triangles;
+        if (triangles is not null)
+        {
+            _shapes = new (Aabb, Vector3)[triangles.Count];
+            for (int t = 0; t < _shapes.Length; t++)
+            {
+                _shapes[t] = (triangles[t].Bounds, triangles[t].Normal);
+            }
+        }
+
         IReadOnlyList<Vector3[]> skin = triangles is null ? [] : model.Source is CharacterSource source ? source.SkinProbes : BoneBoxes.Of(model).InJointFrames();
         // A loaded rig's blended skin (a knee's back, carried by thigh and shin) where linear blend skinning puts it,
         // for the blended points whose bones all belong to the limb: the limb's bones bound where they can lie.
@@ -242,20 +254,12 @@ public sealed class BodyCollision
         }
 
         Span<Vector3> world = probes.Length <= 256 ? stackalloc Vector3[probes.Length] : new Vector3[probes.Length];
-        Aabb box = Aabb.Empty;
         for (int i = 0; i < probes.Length; i++)
         {
             world[i] = Posed(probes[i], positions, rotations);
-            box = Aabb.Union(box, new Aabb(world[i], world[i]));
         }
 
         List<int> near = s_near ??= [];
-        near.Clear();
-        _bvh.TrianglesNear(box.Inflate(SkinReach), near);
-        if (near.Count == 0)
-        {
-            return false;
-        }
 
         // Bone by bone (the probes come grouped by joint): each bone's points against the triangles near that bone only.
         for (int start = 0; start < probes.Length;)
@@ -317,19 +321,26 @@ public sealed class BodyCollision
         float nearest = SkinReach;
         foreach (int t in near)
         {
-            Triangle triangle = _triangles![t];
-            Aabb bounds = triangle.Bounds;
+            (Aabb bounds, Vector3 normal) = _shapes[t];
+            float bound = (nearest + EdgeTie) * (nearest + EdgeTie);
             Vector3 outside = Vector3.Max(Vector3.Max(bounds.Min - p, p - bounds.Max), Vector3.Zero);
-            if (outside.LengthSquared() > (nearest + EdgeTie) * (nearest + EdgeTie))
+            if (outside.LengthSquared() > bound)
             {
                 continue; // its box is already farther than the nearest triangle
+            }
+
+            Triangle triangle = _triangles![t];
+            float plane = Vector3.Dot(p - triangle.A, normal);
+            if (plane * plane > bound)
+            {
+                continue; // its plane is already farther: so is every point of it
             }
 
             Vector3 closest = triangle.ClosestPoint(p);
             float distance = Vector3.Distance(closest, p);
             if (distance <= nearest + EdgeTie)
             {
-                candidates.Add((t, distance, Vector3.Dot(p - closest, triangle.Normal)));
+                candidates.Add((t, distance, Vector3.Dot(p - closest, normal)));
                 nearest = MathF.Min(nearest, distance);
             }
         }

@@ -641,6 +641,9 @@ internal sealed class WalkGait
         private readonly bool[] _colliding;
         private readonly Vector3[] _positions;
         private readonly Quaternion[] _rotations;
+
+        /// <summary>The angles halfway between two fine steps (<see cref="MidwayCollides"/>), reused.</summary>
+        private readonly float[] _midway;
         private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
         private readonly List<JumpProblem> _problems = [];
         private readonly List<ContactPhase> _phases = [];
@@ -704,6 +707,7 @@ internal sealed class WalkGait
             _colliding = new bool[_steps + 1];
             _positions = new Vector3[_rig.Joints.Count];
             _rotations = new Quaternion[_rig.Joints.Count];
+            _midway = new float[_rig.DofCount];
         }
 
         private float Time(int i) => i >= _steps ? _walk.Duration : i * _h;
@@ -1254,6 +1258,7 @@ internal sealed class WalkGait
             int ramp = Math.Max(1, (int)MathF.Round(ArmDrop / _h));
             float side = MathF.Sign(shoulderLocal.X);
             float[]? last = null;
+            float[][] buffers = [new float[_rig.DofCount], new float[_rig.DofCount]];
             for (int i = from; i <= to; i++)
             {
                 _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
@@ -1273,7 +1278,9 @@ internal sealed class WalkGait
                 Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * (0.08f * reach)) + (left * (side * 0.06f * reach));
                 Vector3 hand = Vector3.Lerp(hanging, down, Smooth(fade));
                 Vector3 target = shoulder + Vector3.Transform(hand - shoulder, Quaternion.CreateFromAxisAngle(left, -angle));
-                float[] trial = (float[])_angles[i].Clone();
+                // Into whichever buffer the last kept angles are not in (no array per fine step).
+                float[] trial = ReferenceEquals(last, buffers[0]) ? buffers[1] : buffers[0];
+                _angles[i].CopyTo(trial, 0);
                 if (last is not null)
                 {
                     foreach (int d in limb.ChainDofs)
@@ -2320,7 +2327,8 @@ internal sealed class WalkGait
         /// </summary>
         private bool MidwayCollides(RigLimb limb, int i, float[] before, float[] after, Vector3? contact)
         {
-            float[] mid = (float[])after.Clone();
+            float[] mid = _midway;
+            after.CopyTo(mid, 0);
             foreach (int d in limb.ChainDofs)
             {
                 mid[d] = float.Lerp(before[d], after[d], 0.5f);

@@ -101,13 +101,14 @@ public sealed class LimbIk
         Span<Quaternion> rotations = joints <= 128 ? stackalloc Quaternion[joints] : new Quaternion[joints];
         int n = limb.ChainDofs.Count;
         int rows = targetNormal is null ? 3 : 5;
-        Span<double> jacobian = stackalloc double[MaxRows * 64];
-        Span<double> error = stackalloc double[MaxRows];
-        Span<double> step = stackalloc double[64];
         if (n > 64)
         {
             throw new RigException($"Limb '{limb.Name}' has {n} degrees of freedom; the IK handles at most 64.");
         }
+
+        Span<double> jacobian = stackalloc double[rows * n];
+        Span<double> error = stackalloc double[rows];
+        Span<double> step = stackalloc double[n];
 
         Vector3 goalNormal = targetNormal is Vector3 tn ? Vector3.Normalize(tn) : Vector3.UnitY;
         float positionError = float.PositiveInfinity;
