@@ -313,6 +313,8 @@ public sealed class BodyCollision
     /// <paramref name="depth"/> how far behind it (metres, 0 in front). Where several are nearest within
     /// <see cref="EdgeTie"/> (the point is nearest an edge or corner they share), the one it is most in front of
     /// decides: a point beside a crate, below its top's plane, is nearest the top's edge and in front of the side.
+    /// The search stops at the first triangle within <see cref="SkinDepth"/> of the point (false; <paramref name="by"/>
+    /// that triangle, <paramref name="depth"/> 0): no nearer one can make the point deeper than that.
     /// </summary>
     private bool Inside(Vector3 p, List<int> near, out int by, out float depth)
     {
@@ -338,6 +340,13 @@ public sealed class BodyCollision
 
             Vector3 closest = triangle.ClosestPoint(p);
             float distance = Vector3.Distance(closest, p);
+            if (distance <= SkinDepth)
+            {
+                // A surface this near: the point is not that deep, whichever side of it it lies.
+                (by, depth) = (t, 0f);
+                return false;
+            }
+
             if (distance <= nearest + EdgeTie)
             {
                 candidates.Add((t, distance, Vector3.Dot(p - closest, normal)));

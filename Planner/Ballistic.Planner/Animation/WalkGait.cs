@@ -644,6 +644,12 @@ internal sealed class WalkGait
 
         /// <summary>The angles halfway between two fine steps (<see cref="MidwayCollides"/>), reused.</summary>
         private readonly float[] _midway;
+
+        /// <summary>A touching-down foot's angles solved from the step before's (<see cref="Swing"/>), reused.</summary>
+        private readonly float[] _along;
+
+        /// <summary>Two pools of angle arrays, one per fine step of a swing (<see cref="SwingPool"/>), reused by every swing.</summary>
+        private readonly float[][][] _swingPools = [[], []];
         private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
         private readonly List<JumpProblem> _problems = [];
         private readonly List<ContactPhase> _phases = [];
@@ -708,6 +714,26 @@ internal sealed class WalkGait
             _positions = new Vector3[_rig.Joints.Count];
             _rotations = new Quaternion[_rig.Joints.Count];
             _midway = new float[_rig.DofCount];
+            _along = new float[_rig.DofCount];
+        }
+
+        /// <summary>Pool <paramref name="pool"/> (0 or 1) of angle arrays, at least <paramref name="count"/> of them, grown as needed.</summary>
+        private float[][] SwingPool(int pool, int count)
+        {
+            float[][] keys = _swingPools[pool];
+            if (keys.Length < count)
+            {
+                int had = keys.Length;
+                Array.Resize(ref keys, count);
+                for (int k = had; k < count; k++)
+                {
+                    keys[k] = new float[_rig.DofCount];
+                }
+
+                _swingPools[pool] = keys;
+            }
+
+            return keys;
         }
 
         private float Time(int i) => i >= _steps ? _walk.Duration : i * _h;
@@ -2394,11 +2420,13 @@ internal sealed class WalkGait
             float h0 = Vector3.Dot(p0, up);
             float h1 = Vector3.Dot(p1, up);
 
-            var keys = new float[b - a + 1][];
             float[][]? best = null;
             int bestFailures = int.MaxValue;
+            int pool = 0;
             foreach (float share in Lifts)
             {
+                // Each try's angles go into one of two reused pools, the best try's kept in the other.
+                float[][] keys = SwingPool(pool, b - a + 1);
                 float top = MathF.Max(h0, h1) + (share * _stepHeight);
                 float c0 = (top - h0) * 4f / 3f;
                 float c1 = (top - h1) * 4f / 3f;
@@ -2415,13 +2443,14 @@ internal sealed class WalkGait
                 {
                     slow += 0.03f;
                 }
-                float[] q = (float[])startAngles.Clone();
+                float[] q = startAngles;
                 int failures = 0;
                 bool onCurve = true;
                 for (int i = a; i <= b; i++)
                 {
                     float s = Warp((i - a) / (float)(b - a), slow);
-                    float[] trial = (float[])_angles[i].Clone();
+                    float[] trial = keys[i - a];
+                    _angles[i].CopyTo(trial, 0);
                     float w = Pull(i - a, b - a);
                     foreach (int d in limb.ChainDofs)
                     {
@@ -2433,7 +2462,8 @@ internal sealed class WalkGait
                         // Touch-down exactly on the foothold: from the angles of the step before when the leg can (no
                         // jump to another IK solution between the two), else from the foothold's.
                         Vector3 n = Vector3.Normalize(n1);
-                        float[] along = (float[])trial.Clone();
+                        float[] along = _along;
+                        trial.CopyTo(along, 0);
                         foreach (int d in limb.ChainDofs)
                         {
                             along[d] = q[d];
@@ -2442,7 +2472,7 @@ internal sealed class WalkGait
                         bool solved = _gait.Hold(_roots[i], along, limb, p1, -n);
                         if (solved)
                         {
-                            trial = along;
+                            along.CopyTo(trial, 0);
                         }
                         else
                         {
@@ -2473,14 +2503,14 @@ internal sealed class WalkGait
                         failures++;
                     }
 
-                    keys[i - a] = trial;
                     q = trial;
                 }
 
                 if (failures < bestFailures)
                 {
                     bestFailures = failures;
-                    best = [.. keys];
+                    best = keys;
+                    pool = 1 - pool;
                 }
 
                 if (failures == 0)

@@ -113,9 +113,15 @@ public sealed class LimbIk
         Vector3 goalNormal = targetNormal is Vector3 tn ? Vector3.Normalize(tn) : Vector3.UnitY;
         float positionError = float.PositiveInfinity;
         float normalError = 0f;
+        Rig.Solve(root, q, positions, rotations);
         for (int iteration = 0; iteration < Settings.MaxIterations; iteration++)
         {
-            Rig.Solve(root, q, positions, rotations);
+            // Only the limb's own angles change from one iteration to the next: only its joints move.
+            if (iteration > 0)
+            {
+                Rig.SolveChain(root, limb.Chain, q, positions, rotations);
+            }
+
             Vector3 p = limb.EffectorPosition(positions, rotations);
             Vector3 e = target - p;
             positionError = e.Length();
@@ -195,7 +201,7 @@ public sealed class LimbIk
             }
         }
 
-        Rig.Solve(root, q, positions, rotations);
+        Rig.SolveChain(root, limb.Chain, q, positions, rotations);
         positionError = Vector3.Distance(target, limb.EffectorPosition(positions, rotations));
         normalError = targetNormal is null ? 0f : MathF.Acos(Math.Clamp(Vector3.Dot(limb.EffectorNormal(rotations), goalNormal), -1f, 1f));
         bool success = positionError <= Settings.PositionTolerance && normalError <= Settings.NormalTolerance;

@@ -166,18 +166,37 @@ public sealed class Rig
 
         for (int j = 0; j < _joints.Length; j++)
         {
-            Joint joint = _joints[j];
-            Quaternion local = LocalRotation(j, q);
-            if (j == 0)
-            {
-                positions[0] = root.ToWorld(RootOffset + joint.Offset);
-                rotations[0] = Quaternion.Normalize(root.Rotation * local);
-            }
-            else
-            {
-                positions[j] = positions[joint.Parent] + Vector3.Transform(joint.Offset, rotations[joint.Parent]);
-                rotations[j] = Quaternion.Normalize(rotations[joint.Parent] * local);
-            }
+            SolveJoint(j, root, q, positions, rotations);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="Solve"/> for the joints of <paramref name="chain"/> only (in order, each after its parent), the others'
+    /// entries left as they are: after a full solve, when only the chain's own angles changed, the same numbers a full
+    /// solve gives, bit for bit (the IK moves one limb many times over).
+    /// </summary>
+    internal void SolveChain(in RootPose root, IReadOnlyList<int> chain, ReadOnlySpan<float> q, Span<Vector3> positions, Span<Quaternion> rotations)
+    {
+        for (int i = 0; i < chain.Count; i++)
+        {
+            SolveJoint(chain[i], root, q, positions, rotations);
+        }
+    }
+
+    /// <summary>Joint <paramref name="j"/>'s world position and rotation from its parent's (the root pose for joint 0).</summary>
+    private void SolveJoint(int j, in RootPose root, ReadOnlySpan<float> q, Span<Vector3> positions, Span<Quaternion> rotations)
+    {
+        Joint joint = _joints[j];
+        Quaternion local = LocalRotation(j, q);
+        if (j == 0)
+        {
+            positions[0] = root.ToWorld(RootOffset + joint.Offset);
+            rotations[0] = Quaternion.Normalize(root.Rotation * local);
+        }
+        else
+        {
+            positions[j] = positions[joint.Parent] + Vector3.Transform(joint.Offset, rotations[joint.Parent]);
+            rotations[j] = Quaternion.Normalize(rotations[joint.Parent] * local);
         }
     }
 

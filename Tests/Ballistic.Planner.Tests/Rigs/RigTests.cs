@@ -212,6 +212,42 @@ public sealed class RigTests
     }
 
     [Test]
+    public void SolvingOneLimbsChainGivesItsJointsWhatAFullSolveGivesBitForBit()
+    {
+        CharacterModel model = Humanoid.Value;
+        Rig rig = model.Rig;
+        var random = new Random(11);
+        var root = new RootPose(new Vector3(-2f, 0.9f, 4f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 2.1f));
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        var full = new Vector3[rig.Joints.Count];
+        var fullRotations = new Quaternion[rig.Joints.Count];
+        foreach (RigLimb limb in model.Limbs)
+        {
+            float[] before = RandomPose(rig, limb, random, model.ContactPose);
+            float[] after = RandomPose(rig, limb, random, before);
+            rig.Solve(root, before, positions, rotations);
+            rig.SolveChain(root, limb.Chain, after, positions, rotations);
+            rig.Solve(root, after, full, fullRotations);
+            Assert.Multiple(() =>
+            {
+                for (int j = 0; j < rig.Joints.Count; j++)
+                {
+                    if (j != limb.EffectorJoint && rig.IsAncestor(limb.EffectorJoint, j))
+                    {
+                        continue; // below the effector (toes): not the chain's, left as they were
+                    }
+
+                    Assert.That(positions[j], Is.EqualTo(full[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s position");
+                    Assert.That(rotations[j], Is.EqualTo(fullRotations[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s rotation");
+                }
+
+                Assert.That(positions[limb.EffectorJoint], Is.Not.EqualTo(RigPositions(rig, root, before)[limb.EffectorJoint]), $"{limb.Name}: the chain moved");
+            });
+        }
+    }
+
+    [Test]
     public void LimbsNamingMissingBonesAreRejectedByName()
     {
         Rig rig = Humanoid.Value.Rig;
@@ -224,6 +260,13 @@ public sealed class RigTests
             Assert.That(() => new RigLimb(rig, "stiff", LimbKind.Foot, "pelvis", "pelvis", Vector3.Zero, -Vector3.UnitY, NormalFilter.None),
                 Throws.TypeOf<RigException>().With.Message.Contains("no joints that move"));
         });
+    }
+
+    private static Vector3[] RigPositions(Rig rig, RootPose root, float[] q)
+    {
+        var positions = new Vector3[rig.Joints.Count];
+        rig.Solve(root, q, positions, new Quaternion[rig.Joints.Count]);
+        return positions;
     }
 
     private static float[] RandomPose(Rig rig, RigLimb limb, Random random, float[] basis)
