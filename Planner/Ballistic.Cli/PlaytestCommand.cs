@@ -91,7 +91,8 @@ internal static class PlaytestCommand
 
             // Written even when cancelled: what was simulated is kept (the report says it was cut short).
             string folder = parse.GetValue(output)!;
-            string stem = Path.Combine(folder, $"{Path.GetFileNameWithoutExtension(levelPath)}-{reduced.Name}-playtest");
+            // The character's name comes from its spec (a mod's file): a slug, never a path.
+            string stem = Path.Combine(folder, $"{OutputName.Slug(Path.GetFileNameWithoutExtension(levelPath), "level")}-{OutputName.Slug(reduced.Name, "character")}-playtest");
             OutputFile.Write(stem + ".json", PlaytestReportWriter.ToJson(result, levelPath.Replace('\\', '/')));
             OutputFile.Write(stem + ".svg", System.Text.Encoding.UTF8.GetBytes(PlaytestMapRenderer.Svg(result)));
             OutputFile.Write(stem + ".png", PlaytestMapRenderer.Png(result));
