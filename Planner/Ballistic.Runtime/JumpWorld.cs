@@ -25,7 +25,8 @@ namespace Ballistic.Runtime;
 /// whatever <see cref="WorldSettings.AnimationThreads"/> (with <see cref="WorldSettings.WaitForAnimation"/>, the
 /// default). Calls and <see cref="Step"/> belong on one thread (the game loop); animations are solved on others.
 /// No call throws for a bad handle or bad input: each returns a <see cref="RuntimeResult"/> with the reason, and
-/// no exception escapes a tick. Positions are the trunk centre in world metres, Y up; times are seconds.
+/// no exception escapes a tick. After <see cref="Dispose"/> every call that changes the world does nothing and
+/// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step"/> throws. Positions are the trunk centre in world metres, Y up; times are seconds.
 /// </remarks>
 public sealed class JumpWorld : IDisposable
 {
@@ -95,6 +96,11 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)
     {
+        if (Gone() is { } gone)
+        {
+            return new AddKindResult(gone, default);
+        }
+
         if (Check(kind) is { } refused)
         {
             return new AddKindResult(refused, default);
@@ -114,6 +120,11 @@ public sealed class JumpWorld : IDisposable
     /// <param name="replacement">The new scene, roadmap and animator.</param>
     public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind replacement)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
         {
             return new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)");
@@ -178,6 +189,11 @@ public sealed class JumpWorld : IDisposable
     /// <param name="position">Where it stands, world metres.</param>
     public AddAgentResult AddAgent(KindHandle kind, Vector3 position)
     {
+        if (Gone() is { } gone)
+        {
+            return new AddAgentResult(gone, default);
+        }
+
         if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
         {
             return new AddAgentResult(new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)"), default);
@@ -204,6 +220,11 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult RemoveAgent(AgentHandle agent)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -230,6 +251,11 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult SetTarget(AgentHandle agent, Vector3 target)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -271,6 +297,11 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Forgets the agent's target: it stops on the next stance of its path (or at once when standing).</summary>
     public RuntimeResult ClearTarget(AgentHandle agent)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -297,6 +328,11 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult Warp(AgentHandle agent, Vector3 position)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -347,6 +383,11 @@ public sealed class JumpWorld : IDisposable
     /// <param name="edge">Index of the jump in the agent's kind's roadmap edges.</param>
     public RuntimeResult PerformJump(AgentHandle agent, int edge)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -393,6 +434,11 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     internal RuntimeResult PerformMoves(AgentHandle agent, IReadOnlyList<Move> moves)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -432,6 +478,11 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
     public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!_agents.IsValid(agent))
         {
             return Unknown(agent);
@@ -688,6 +739,9 @@ public sealed class JumpWorld : IDisposable
         float[] angles = kind.Animator.Contacts.Generate(node.Pose, node.Contacts, node.Cone.Axis).Angles;
         return (node, (float[])angles.Clone());
     }
+
+    /// <summary>The refusal of every call after <see cref="Dispose"/> (but <see cref="Step"/>, which throws), or <c>null</c> before.</summary>
+    private RuntimeResult? Gone() => _disposed ? new RuntimeResult(RuntimeStatus.Disposed, "the world was disposed: nothing was done") : null;
 
     private static RuntimeResult Unknown(AgentHandle agent) => new(RuntimeStatus.UnknownAgent, $"{agent} is not an agent of this world (never added, or removed)");
 

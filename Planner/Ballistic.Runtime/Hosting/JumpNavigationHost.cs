@@ -34,7 +34,8 @@ namespace Ballistic.Runtime.Hosting;
 /// </para>
 /// <para>
 /// Like the world: calls and <see cref="Step"/> belong on one thread (the game loop); no call throws for a bad handle
-/// or bad input (a <see cref="RuntimeResult"/> says why). Positions are world metres, Y up: an agent's position and
+/// or bad input (a <see cref="RuntimeResult"/> says why), nor after <see cref="Dispose"/>: then every call but
+/// <see cref="Step"/> does nothing and says so (<see cref="RuntimeStatus.Disposed"/>, false or no value). Positions are world metres, Y up: an agent's position and
 /// target are points on or near a surface (its body's ground point), as <see cref="JumpWorld.AddAgent"/> takes them.
 /// Stepping allocates nothing once the queues have grown to their working size: the node of each agent must drain its
 /// queue every physics tick (<see cref="TryDequeueEvent"/>).
@@ -144,7 +145,11 @@ public sealed class JumpNavigationHost : IDisposable
     /// <param name="kind">Its character kind: scene, baked roadmap and animator; <c>null</c> to clear the roadmap.</param>
     public RuntimeResult SetRegionKind(RegionHandle region, CharacterKind? kind)
     {
-        ObjectDisposedException.ThrowIf(_disposed, this);
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!IsValid(region))
         {
             return UnknownRegion(region);
@@ -238,7 +243,11 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public RuntimeResult FreeRegion(RegionHandle region)
     {
-        ObjectDisposedException.ThrowIf(_disposed, this);
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!IsValid(region))
         {
             return UnknownRegion(region);
@@ -275,7 +284,11 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public HostAgentResult RegisterAgent(RegionHandle region, Vector3 position)
     {
-        ObjectDisposedException.ThrowIf(_disposed, this);
+        if (Gone() is { } gone)
+        {
+            return new HostAgentResult(gone, default);
+        }
+
         if (!IsValid(region))
         {
             return new HostAgentResult(UnknownRegion(region), default);
@@ -325,6 +338,11 @@ public sealed class JumpNavigationHost : IDisposable
     /// <summary>Unregisters an agent in any state (taking it out of the world; its queue is dropped); its handle becomes invalid.</summary>
     public RuntimeResult UnregisterAgent(HostAgentHandle agent)
     {
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!IsValid(agent))
         {
             return UnknownAgent(agent);
@@ -386,7 +404,7 @@ public sealed class JumpNavigationHost : IDisposable
         }
 
         AgentRecord a = _agents[agent.Index];
-        return a.State == HostAgentState.Active && Stances.Standing(_world!, a.World) is { } stance ? stance.ContactCentre : a.Point;
+        return a.State == HostAgentState.Active && _world is { } world && Stances.Standing(world, a.World) is { } stance ? stance.ContactCentre : a.Point;
     }
 
     /// <summary>
@@ -536,7 +554,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public bool IsTargetReachable(HostAgentHandle agent, Vector3 target)
     {
-        if (!IsValid(agent) || !Finite(target) || _agents[agent.Index].State != HostAgentState.Active)
+        if (_disposed || !IsValid(agent) || !Finite(target) || _agents[agent.Index].State != HostAgentState.Active)
         {
             return false;
         }
@@ -826,6 +844,11 @@ public sealed class JumpNavigationHost : IDisposable
     private RuntimeResult? Usable(HostAgentHandle agent, out AgentRecord? record)
     {
         record = null;
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
         if (!IsValid(agent))
         {
             return UnknownAgent(agent);
@@ -834,6 +857,9 @@ public sealed class JumpNavigationHost : IDisposable
         record = _agents[agent.Index];
         return record.State == HostAgentState.Detached ? new RuntimeResult(RuntimeStatus.UnknownAgent, $"{agent} is detached: {record.Reason}") : null;
     }
+
+    /// <summary>The refusal of every call after <see cref="Dispose"/>, or <c>null</c> before.</summary>
+    private RuntimeResult? Gone() => _disposed ? new RuntimeResult(RuntimeStatus.Disposed, "the jump navigation host was disposed: nothing was done") : null;
 
     private static RuntimeResult UnknownRegion(RegionHandle region) => new(RuntimeStatus.InvalidArgument, $"{region} is not a region of this host (never created, or freed)");
 
