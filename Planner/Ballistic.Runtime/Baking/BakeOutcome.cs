@@ -1,5 +1,6 @@
 using System.Globalization;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Runtime.Baking;
 

@@ -1,6 +1,7 @@
 using System.Globalization;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Rigs;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Runtime.Baking;
 

@@ -3,6 +3,7 @@ using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Runtime.Baking;
 

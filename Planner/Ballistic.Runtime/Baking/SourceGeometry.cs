@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Numerics;
 using Ballistic.Planner.Levels;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Runtime.Baking;
 

@@ -5,6 +5,9 @@ namespace Ballistic.Runtime.Core;
 /// <param name="Reason">Why the call failed, or a note on what it did; <c>null</c> when there is nothing to say.</param>
 public readonly record struct RuntimeResult(RuntimeStatus Status, string? Reason)
 {
+    /// <summary>Why the call failed, or a note on what it did; <c>null</c> when there is nothing to say. One line: control characters in it (from a name in a file) are escaped.</summary>
+    public string? Reason { get; init; } = Reason is null ? null : OneLine.Of(Reason);
+
     /// <summary>The plain success.</summary>
     public static RuntimeResult Success { get; } = new(RuntimeStatus.Ok, null);
 

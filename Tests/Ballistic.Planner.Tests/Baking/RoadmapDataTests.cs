@@ -5,6 +5,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Baking;
+using Ballistic.Runtime.Core;
 
 namespace Ballistic.Planner.Tests.Baking;
 
@@ -112,6 +113,24 @@ public sealed class RoadmapDataTests
             Assert.That(level, Does.StartWith($"Roadmap file {ResourcePath} was baked on another level (level fingerprint {Baked.LevelFingerprint[..12]}…, this level is {moved.Fingerprint[..12]}…)"));
             Assert.That(frog, Is.EqualTo($"Roadmap file {ResourcePath} was baked for the character 'skeleton', not 'frog'."));
             Assert.That(version, Is.EqualTo($"Roadmap file {ResourcePath} was baked for a different version of the character 'skeleton'; bake it again."));
+        });
+    }
+
+    [Test]
+    public void ANameWithLineBreaksOrTerminalEscapesIsRefusedInOneLineAndEscaped()
+    {
+        // A modder's character whose name fakes an error line and a stack frame, and clears the terminal.
+        ReducedCharacter frog = CharacterPresets.Frog();
+        ReducedCharacter hostile = new("frog\nerror: fake\n   at Evil.Frame()\u001b[2J", frog.TrunkHalfExtents, frog.Limbs, frog.RequiredContacts, frog.TakeoffSpeedMax, frog.LandingSpeedMax, frog.Friction)
+        {
+            StanceLift = frog.StanceLift,
+        };
+        string message = Assert.Throws<RoadmapFileException>(() => Baked.Load(Level, hostile, ResourcePath))!.Message;
+        Assert.Multiple(() =>
+        {
+            Assert.That(message, Does.Not.Contain('\n').And.Not.Contain('\u001b'));
+            Assert.That(message, Is.EqualTo($"Roadmap file {ResourcePath} was baked for the character 'skeleton', not 'frog\\u000aerror: fake\\u000a   at Evil.Frame()\\u001b[2J'."));
+            Assert.That(new RuntimeResult(RuntimeStatus.Mismatch, "kind 'a\r\nerror: b'").Reason, Is.EqualTo("kind 'a\\u000d\\u000aerror: b'"), "the runtime's results too");
         });
     }
 

@@ -1,6 +1,6 @@
 using System.Text;
 
-namespace Ballistic.Runtime.Baking;
+namespace Ballistic.Runtime.Core;
 
 /// <summary>Text made safe for a one-line message: control characters (line breaks, tabs) escaped.</summary>
 internal static class OneLine
