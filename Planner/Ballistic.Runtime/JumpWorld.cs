@@ -26,7 +26,8 @@ namespace Ballistic.Runtime;
 /// default). Calls and <see cref="Step"/> belong on one thread (the game loop); animations are solved on others.
 /// No call throws for a bad handle or bad input: each returns a <see cref="RuntimeResult"/> with the reason, and
 /// no exception escapes a tick. After <see cref="Dispose"/> every call that changes the world does nothing and
-/// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step"/> throws. Positions are the trunk centre in world metres, Y up; times are seconds.
+/// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step"/> throws. Positions are the trunk centre in world
+/// metres, Y up; times are seconds.
 /// </remarks>
 public sealed class JumpWorld : IDisposable
 {

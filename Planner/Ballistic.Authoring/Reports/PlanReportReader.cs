@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Numerics;
-using System.Text;
 using System.Text.Json;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Planning;
 
 namespace Ballistic.Authoring.Reports;
@@ -54,26 +54,9 @@ public static class PlanReportReader
         }
     }
 
-    private static string Printable(string text)
-    {
-        if (text.Length > 80)
-        {
-            text = string.Concat(text.AsSpan(0, 77), "...");
-        }
-
-        if (!text.Any(char.IsControl))
-        {
-            return text;
-        }
-
-        var builder = new StringBuilder(text.Length + 8);
-        foreach (char c in text)
-        {
-            builder.Append(char.IsControl(c) ? $"\\u{(int)c:x4}" : c);
-        }
-
-        return builder.ToString();
-    }
+    /// <summary>The text cut to 80 characters, control characters escaped, for messages.</summary>
+    private static string Printable(string text) =>
+        MessageText.Printable(text.Length > 80 ? string.Concat(text.AsSpan(0, 77), "...") : text);
 
     private sealed class Reader(string file)
     {
