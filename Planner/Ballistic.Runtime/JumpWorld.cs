@@ -9,16 +9,22 @@ using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
-using Ballistic.Runtime.Systems;
+using LocomotionRunner = Ballistic.Runtime.Systems.LocomotionSystem;
+using PathRequestRunner = Ballistic.Runtime.Systems.PathRequestSystem;
+using PoseRunner = Ballistic.Runtime.Systems.PoseSystem;
+using RoadmapSearch = Ballistic.Runtime.Systems.RoadmapSearch;
 
 namespace Ballistic.Runtime;
 
 /// <summary>
 /// Many agents navigating one level by jumps and walks, stepped per tick: the ECS core under the Godot nodes. The world holds
 /// one frozen roadmap per character kind (like a navigation map with one region per agent size), agents as
-/// components in arrays (<see cref="AgentHandle"/>s name them), and three systems run by <see cref="Step"/> in a
-/// fixed order: path requests (a budgeted queue), locomotion (exactly on the arcs and along the walks), pose (joint buffers from the
-/// whole-body animation). What happened comes out as <see cref="Events"/>.
+/// entities whose components live in arrays (<see cref="AgentHandle"/>s name them; a game adds its own components
+/// with <see cref="AddComponentColumn{T}"/> and iterates agents with <see cref="Query"/>), and an ordered list of
+/// systems run by <see cref="Step"/> (<see cref="Systems"/>): by default path requests (a budgeted queue), locomotion
+/// (exactly on the arcs and along the walks), pose (joint buffers from the whole-body animation), and the game's own
+/// inserted between them. Changes recorded in <see cref="Commands"/> are played back at the start of each tick. What
+/// happened comes out as <see cref="Events"/>.
 /// </summary>
 /// <remarks>
 /// Deterministic: the same kinds, settings and calls between the same ticks give the same trajectories and events,
@@ -36,9 +42,12 @@ public sealed class JumpWorld : IDisposable
     private readonly AgentStore _agents = new();
     private readonly EventBuffer _events = new();
     private readonly EventBuffer _pending = new();
-    private readonly PathRequestSystem _requests;
-    private readonly LocomotionSystem _locomotion;
-    private readonly PoseSystem _pose;
+    private readonly PathQueue _queue;
+    private readonly PathRequestRunner _requests;
+    private readonly PoseRunner _pose;
+    private readonly List<IComponentColumn> _columns = [];
+    private readonly Action<IJumpSystem, Exception> _systemFailed;
+    private readonly Action<AgentHandle, string> _commandRefused;
     private bool _disposed;
 
     /// <summary>Creates an empty world on a level.</summary>
@@ -56,10 +65,77 @@ public sealed class JumpWorld : IDisposable
 
         Settings.Tolerance.Validate();
         Level = level;
-        _requests = new PathRequestSystem(Settings, _agents, _events, _kinds, _searches);
-        _locomotion = new LocomotionSystem(_agents, _events, _requests);
-        _pose = new PoseSystem(_agents, _kinds);
+        _queue = new PathQueue(_agents);
+        _requests = new PathRequestRunner(Settings, _agents, _queue, _events, _kinds, _searches);
+        var locomotion = new LocomotionRunner(_agents, _events, _queue);
+        _pose = new PoseRunner(_agents, _kinds);
+        PathRequestSystem = new BuiltInSystem(this, "path-request system", _requests.Update);
+        LocomotionSystem = new BuiltInSystem(this, "locomotion system", locomotion.Update);
+        PoseSystem = new BuiltInSystem(this, "pose system", (_, time) => _pose.Update(time));
+        Systems = new JumpSystemList(this, [PathRequestSystem, LocomotionSystem, PoseSystem]);
+        Commands = new JumpCommandBuffer();
+        _systemFailed = (system, e) => _events.Add(new JumpEvent(JumpEventKind.SystemFailed, default, Tick, Time, -1, default, default, default, 0f, Planner.Planning.PlannerStatus.Exact,
+            OneLine.Of($"{JumpSystemList.Describe(system)} threw {e.GetType().Name}: {e.Message} (the tick went on with the next system)")));
+        _commandRefused = (agent, reason) => _pending.Add(new JumpEvent(JumpEventKind.CommandRefused, agent, Tick, Time, -1, default, default, default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
     }
+
+    /// <summary>
+    /// The systems <see cref="Step"/> runs, in order: by default <see cref="PathRequestSystem"/>,
+    /// <see cref="LocomotionSystem"/>, <see cref="PoseSystem"/>. Insert the game's own between them; remove the pose
+    /// system when nobody reads poses.
+    /// </summary>
+    public JumpSystemList Systems { get; }
+
+    /// <summary>
+    /// The path-request system: searches queued requests within the tick's budget
+    /// (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>) and starts each
+    /// found path on its agent <see cref="WorldSettings.PathLatencyTicks"/> later, animated
+    /// (<see cref="JumpEventKind.PathFound"/>, <see cref="JumpEventKind.PathFailed"/>).
+    /// </summary>
+    public IJumpSystem PathRequestSystem { get; }
+
+    /// <summary>
+    /// The locomotion system: moves each agent along its path (root poses exactly on the arcs and walks, states), emits
+    /// the takeoff, landing, walk and arrival events, and queues a new request for an agent stopping with a target.
+    /// </summary>
+    public IJumpSystem LocomotionSystem { get; }
+
+    /// <summary>The pose system: fills each agent's joint angles and rotations from its animation (<see cref="GetJointRotations"/>), for agents with poses enabled.</summary>
+    public IJumpSystem PoseSystem { get; }
+
+    /// <summary>
+    /// The world's command buffer: changes recorded from any thread, played back in order at the start of the next
+    /// <see cref="Step"/>, before the systems run.
+    /// </summary>
+    public JumpCommandBuffer Commands { get; }
+
+    /// <summary>True from <see cref="Dispose"/> on.</summary>
+    internal bool IsDisposed => _disposed;
+
+    /// <summary>True while <see cref="Step"/> runs.</summary>
+    internal bool IsStepping { get; private set; }
+
+    /// <summary>
+    /// Adds a column for a component of the game's own (stamina, a look-at point, a team): one value of
+    /// <typeparamref name="T"/> per agent that has one (<see cref="ComponentColumn{T}.Set"/>), forgotten when the agent
+    /// is removed. Systems select agents that have it with <see cref="AgentQuery.With{T}"/>.
+    /// </summary>
+    /// <param name="name">The component's name, for messages.</param>
+    /// <exception cref="ObjectDisposedException">The world was disposed.</exception>
+    public ComponentColumn<T> AddComponentColumn<T>(string name)
+        where T : struct
+    {
+        ObjectDisposedException.ThrowIf(_disposed, this);
+        var column = new ComponentColumn<T>(this, _agents, string.IsNullOrWhiteSpace(name) ? typeof(T).Name : name);
+        _columns.Add(column);
+        return column;
+    }
+
+    /// <summary>
+    /// The live agents <paramref name="query"/> selects, for <c>foreach</c>, in slot order; allocates nothing. A
+    /// query naming another world's column selects nobody.
+    /// </summary>
+    public AgentQueryResult Query(in AgentQuery query) => new(_agents, query, _disposed || !query.IsOf(this));
 
     /// <summary>The level.</summary>
     public Level Level { get; }
@@ -83,7 +159,7 @@ public sealed class JumpWorld : IDisposable
     public ReadOnlySpan<JumpEvent> Events => _events.Events;
 
     /// <summary>Path requests waiting for a search.</summary>
-    public int QueuedRequests => _requests.Queued;
+    public int QueuedRequests => _queue.Count;
 
     /// <summary>Paths searched and being animated.</summary>
     public int AnimatingRequests => _requests.Animating;
@@ -237,6 +313,11 @@ public sealed class JumpWorld : IDisposable
             ? $"removed in mid-{(state == AgentState.Flight ? "flight" : state.ToString().ToLowerInvariant())} of jump {(_agents.Cursor[slot] >> 1) + 1} of {path.Count}"
             : $"removed while {state.ToString().ToLowerInvariant()}";
         _pending.Add(new JumpEvent(JumpEventKind.Removed, agent, Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        foreach (IComponentColumn column in _columns)
+        {
+            column.Clear(slot);
+        }
+
         _agents.Remove(slot);
         return new RuntimeResult(RuntimeStatus.Ok, reason);
     }
@@ -291,7 +372,7 @@ public sealed class JumpWorld : IDisposable
         }
 
         _agents.State[slot] = AgentState.Stance;
-        _requests.Request(slot);
+        _queue.Request(slot);
         return RuntimeResult.Success;
     }
 
@@ -310,7 +391,7 @@ public sealed class JumpWorld : IDisposable
 
         int slot = agent.Index;
         _agents.HasTarget[slot] = false;
-        _requests.Cancel(slot);
+        _queue.Cancel(slot);
         if (_agents.Path[slot] is not null)
         {
             _agents.StopAtStance[slot] = true;
@@ -350,7 +431,7 @@ public sealed class JumpWorld : IDisposable
             return failure;
         }
 
-        _requests.Cancel(slot);
+        _queue.Cancel(slot);
         _agents.Path[slot] = null;
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = stance.Node;
@@ -361,7 +442,7 @@ public sealed class JumpWorld : IDisposable
         if (_agents.HasTarget[slot])
         {
             _agents.State[slot] = AgentState.Stance;
-            _requests.Request(slot);
+            _queue.Request(slot);
         }
 
         return RuntimeResult.Success;
@@ -410,7 +491,7 @@ public sealed class JumpWorld : IDisposable
         }
 
         float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
-        _requests.Cancel(slot);
+        _queue.Cancel(slot);
         _agents.Path[slot] = null;
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = from;
@@ -420,7 +501,7 @@ public sealed class JumpWorld : IDisposable
         _agents.Target[slot] = roadmap.ContactCentres[jump.To];
         _agents.HasTarget[slot] = true;
         _agents.State[slot] = AgentState.Stance;
-        _requests.Request(slot, edge);
+        _queue.Request(slot, edge);
         return RuntimeResult.Success;
     }
 
@@ -462,7 +543,7 @@ public sealed class JumpWorld : IDisposable
         CharacterKind kind = _kinds[_agents.Kind[slot]];
         RoadmapNode from = moves[0].From;
         float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
-        _requests.Cancel(slot);
+        _queue.Cancel(slot);
         _agents.Path[slot] = null;
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = from;
@@ -472,7 +553,7 @@ public sealed class JumpWorld : IDisposable
         _agents.Target[slot] = moves[^1].To.ContactCentre;
         _agents.HasTarget[slot] = true;
         _agents.State[slot] = AgentState.Stance;
-        _requests.Request(slot, [.. moves]);
+        _queue.Request(slot, [.. moves]);
         return RuntimeResult.Success;
     }
 
@@ -495,25 +576,39 @@ public sealed class JumpWorld : IDisposable
     }
 
     /// <summary>
-    /// One tick: the events of the tick before are cleared; path requests are searched within the budget and paths
-    /// due are delivered; agents move along their paths; poses are filled. Never throws.
+    /// One tick: the events of the tick before are cleared; the commands recorded in <see cref="Commands"/> are
+    /// played back; then each system of <see cref="Systems"/> runs in order (by default: path requests are searched
+    /// within the budget and paths due are delivered; agents move along their paths; poses are filled). Never throws
+    /// but for the cases below: a game system's exception becomes a <see cref="JumpEventKind.SystemFailed"/> event.
     /// </summary>
     /// <exception cref="ObjectDisposedException">The world was disposed.</exception>
+    /// <exception cref="InvalidOperationException">Called from inside a system of this world's tick.</exception>
     public void Step()
     {
         ObjectDisposedException.ThrowIf(_disposed, this);
-        Tick++;
-        double time = Time;
-        _events.Clear();
-        foreach (ref readonly JumpEvent e in _pending.Events)
+        if (IsStepping)
         {
-            _events.Add(e);
+            throw new InvalidOperationException("JumpWorld.Step was called from inside a system of the world's own tick");
         }
 
-        _pending.Clear();
-        _requests.Update(Tick, time);
-        _locomotion.Update(Tick, time);
-        _pose.Update(time);
+        IsStepping = true;
+        try
+        {
+            Tick++;
+            _events.Clear();
+            Commands.Play(this, _commandRefused);
+            foreach (ref readonly JumpEvent e in _pending.Events)
+            {
+                _events.Add(e);
+            }
+
+            _pending.Clear();
+            Systems.Run(new TickContext(Tick, Time, Settings.TickSeconds), _systemFailed);
+        }
+        finally
+        {
+            IsStepping = false;
+        }
     }
 
     /// <summary>Runs the pose system alone at the current time (benchmarks).</summary>

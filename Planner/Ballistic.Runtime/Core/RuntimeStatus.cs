@@ -23,4 +23,7 @@ public enum RuntimeStatus
 
     /// <summary>The world (or the host) was disposed: the call did nothing.</summary>
     Disposed,
+
+    /// <summary>The world is stepping: the call is refused from inside a system (record it in <see cref="JumpWorld.Commands"/> instead).</summary>
+    Busy,
 }

@@ -1,6 +1,6 @@
 namespace Ballistic.Runtime.Events;
 
-/// <summary>What happened to an agent. Within a tick, events come in system order (path requests, then locomotion) and, within a system, in agent slot order.</summary>
+/// <summary>What happened to an agent. Within a tick, events come in order: those of the calls and commands made before it (removals, refused commands), then in system order (path requests, then locomotion, by default) and, within a system, in agent slot order.</summary>
 public enum JumpEventKind
 {
     /// <summary>A path to the target was found and animated; the agent starts following it this tick.</summary>
@@ -26,4 +26,17 @@ public enum JumpEventKind
 
     /// <summary>A walk ended on its last stance.</summary>
     WalkFinished,
+
+    /// <summary>
+    /// A command recorded in <see cref="JumpWorld.Commands"/> was refused when played back at the start of this tick
+    /// (its agent removed meanwhile, a point nobody stands on…): <see cref="JumpEvent.Reason"/> names the command and
+    /// why; <see cref="JumpEvent.Agent"/> is the command's agent.
+    /// </summary>
+    CommandRefused,
+
+    /// <summary>
+    /// A game system of <see cref="JumpWorld.Systems"/> threw during this tick: <see cref="JumpEvent.Reason"/> names the
+    /// system and the exception; <see cref="JumpEvent.Agent"/> is the default handle. The tick went on with the next system.
+    /// </summary>
+    SystemFailed,
 }

@@ -16,9 +16,10 @@ namespace Ballistic.Runtime.Systems;
 /// <see cref="JumpEventKind.Landed"/> for a jump, <see cref="JumpEventKind.WalkStarted"/> and
 /// <see cref="JumpEventKind.WalkFinished"/> for a walk), then the arrival. An agent asked to stop (a new target, a
 /// cleared one) stops on the next stance of its path: the end of the move it is in (a landing, or a walk's last
-/// stance), or, when standing between two moves, before the next one starts. Allocates nothing.
+/// stance), or, when standing between two moves, before the next one starts; with a target waiting it queues a path
+/// request (<see cref="PathQueue"/>) for the path-request system. Allocates nothing.
 /// </summary>
-internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, PathRequestSystem requests)
+internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, PathQueue requests)
 {
     public void Update(long tick, double time)
     {

@@ -15,7 +15,8 @@ namespace Ballistic.Runtime.Systems;
 /// as the budget allows (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>);
 /// a found path is animated in the background and delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
 /// later. A path whose animation shows a move (jump or walk) the body cannot perform is searched again without it
-/// (lazy repair, up to <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed.
+/// (lazy repair, up to <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed. Requests
+/// come from the world's <see cref="PathQueue"/>, which the world's calls and the locomotion system fill.
 /// </summary>
 internal sealed class PathRequestSystem : IDisposable
 {
@@ -24,14 +25,14 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly EventBuffer _events;
     private readonly List<CharacterKind> _kinds;
     private readonly List<RoadmapSearch> _searches;
-    private readonly LinkedList<PathRequest> _queue = new();
+    private readonly PathQueue _queue;
     private readonly List<PathRequest> _inFlight = [];
     private readonly TaskScheduler? _scheduler;
     private readonly CancellationTokenSource _shutdown = new();
-    private long _sequence;
 
-    public PathRequestSystem(WorldSettings settings, AgentStore agents, EventBuffer events, List<CharacterKind> kinds, List<RoadmapSearch> searches)
+    public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind> kinds, List<RoadmapSearch> searches)
     {
+        _queue = queue;
         _settings = settings;
         _agents = agents;
         _events = events;
@@ -55,33 +56,6 @@ internal sealed class PathRequestSystem : IDisposable
     /// <summary>Work (expansions and placement costs) spent during the last tick.</summary>
     public int LastTickWork { get; private set; }
 
-    /// <summary>Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one.</summary>
-    public void Request(int slot) => Request(slot, -1);
-
-    /// <summary>
-    /// Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one, whose
-    /// whole path is <paramref name="moves"/> (the agent stands on the first one's stance): no search.
-    /// </summary>
-    public void Request(int slot, IReadOnlyList<Move> moves)
-    {
-        Request(slot, -1);
-        _agents.Request[slot]!.ForcedMoves = moves;
-    }
-
-    /// <summary>
-    /// Queues a request for the agent in <paramref name="slot"/> toward its target, replacing any pending one: with
-    /// <paramref name="forcedEdge"/> ≥ 0, that roadmap edge is the whole path (the agent stands on its takeoff node).
-    /// </summary>
-    public void Request(int slot, int forcedEdge)
-    {
-        var request = new PathRequest(_agents.HandleOf(slot), _agents.Target[slot], _sequence++) { ForcedEdge = forcedEdge };
-        _agents.Request[slot] = request;
-        _queue.AddLast(request);
-    }
-
-    /// <summary>Forgets the pending request of the agent in <paramref name="slot"/> (its result, if any, is dropped on delivery).</summary>
-    public void Cancel(int slot) => _agents.Request[slot] = null;
-
     public void Update(long tick, double time)
     {
         Search(tick, time);
@@ -92,10 +66,8 @@ internal sealed class PathRequestSystem : IDisposable
     {
         int searches = 0;
         int work = 0;
-        while (_queue.First is { } first && searches < _settings.MaxSearchesPerTick && work < _settings.MaxExpansionsPerTick)
+        while (searches < _settings.MaxSearchesPerTick && work < _settings.MaxExpansionsPerTick && _queue.TryTake(out PathRequest? request))
         {
-            PathRequest request = first.Value;
-            _queue.RemoveFirst();
             int slot = request.Agent.Index;
             if (!Current(request))
             {
@@ -253,7 +225,7 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
-        _queue.AddFirst(request); // searched again first, on the next tick
+        _queue.Retry(request); // searched again first, on the next tick
     }
 
     private void Fail(int slot, PathRequest request, PlannerStatus status, string reason, long tick, double time)

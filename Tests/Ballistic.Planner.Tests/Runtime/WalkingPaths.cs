@@ -3,6 +3,7 @@ using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
 
@@ -37,6 +38,25 @@ internal static class WalkingPaths
         AddKindResult added = world.AddKind(Kind);
         Assert.That(added.Ok, Is.True, added.Result.ToString());
         return (world, added.Kind);
+    }
+
+    /// <summary>
+    /// Adds <paramref name="count"/> agents, the i-th performing <see cref="WalkJumpWalk"/>(i), each walk's code used
+    /// once (so that a measure after it sees none of its first-use costs).
+    /// </summary>
+    public static List<AgentHandle> SetOff(JumpWorld world, KindHandle kind, int count)
+    {
+        var agents = new List<AgentHandle>();
+        for (int i = 0; i < count; i++)
+        {
+            IReadOnlyList<Move> moves = WalkJumpWalk(i);
+            AgentHandle agent = world.AddAgent(kind, Centre(moves[0].To)).Agent;
+            Assert.That(world.PerformMoves(agent, moves).Ok, Is.True);
+            agents.Add(agent);
+            ((Walk)moves[0]).PoseAt(0.3f);
+        }
+
+        return agents;
     }
 
     /// <summary>

@@ -216,15 +216,7 @@ public sealed class WalkingRuntimeTests
         (JumpWorld world, KindHandle kind) = WalkingPaths.World();
         using (world)
         {
-            var agents = new List<AgentHandle>();
-            for (int i = 0; i < 3; i++)
-            {
-                IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk(i);
-                AgentHandle agent = world.AddAgent(kind, WalkingPaths.Centre(moves[0].To)).Agent;
-                Assert.That(world.PerformMoves(agent, moves).Ok, Is.True);
-                agents.Add(agent);
-                ((Walk)moves[0]).PoseAt(0.3f); // first use of the walk's code outside the measure
-            }
+            List<AgentHandle> agents = WalkingPaths.SetOff(world, kind, 3);
 
             // Until every path is delivered (animations and path objects allocate, by design).
             RuntimeWorlds.Run(world, 60, (w, _) => w.QueuedRequests == 0 && w.AnimatingRequests == 0);
