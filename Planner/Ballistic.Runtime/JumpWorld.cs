@@ -9,6 +9,7 @@ using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
+using BodyPointRunner = Ballistic.Runtime.Systems.BodyPointSystem;
 using LocomotionRunner = Ballistic.Runtime.Systems.LocomotionSystem;
 using PathRequestRunner = Ballistic.Runtime.Systems.PathRequestSystem;
 using PoseRunner = Ballistic.Runtime.Systems.PoseSystem;
@@ -69,10 +70,12 @@ public sealed class JumpWorld : IDisposable
         _requests = new PathRequestRunner(Settings, _agents, _queue, _events, _kinds, _searches);
         var locomotion = new LocomotionRunner(_agents, _events, _queue);
         _pose = new PoseRunner(_agents, _kinds);
+        var body = new BodyPointRunner(_agents);
         PathRequestSystem = new BuiltInSystem(this, "path-request system", _requests.Update);
         LocomotionSystem = new BuiltInSystem(this, "locomotion system", locomotion.Update);
+        BodyPointSystem = new BuiltInSystem(this, "body-point system", (_, time) => body.Update(time));
         PoseSystem = new BuiltInSystem(this, "pose system", (_, time) => _pose.Update(time));
-        Systems = new JumpSystemList(this, [PathRequestSystem, LocomotionSystem, PoseSystem]);
+        Systems = new JumpSystemList(this, [PathRequestSystem, LocomotionSystem, BodyPointSystem, PoseSystem]);
         Commands = new JumpCommandBuffer();
         _systemFailed = (system, e) => _events.Add(new JumpEvent(JumpEventKind.SystemFailed, default, Tick, Time, -1, default, default, default, 0f, Planner.Planning.PlannerStatus.Exact,
             OneLine.Of($"{JumpSystemList.Describe(system)} threw {e.GetType().Name}: {e.Message} (the tick went on with the next system)")));
@@ -81,8 +84,9 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>
     /// The systems <see cref="Step"/> runs, in order: by default <see cref="PathRequestSystem"/>,
-    /// <see cref="LocomotionSystem"/>, <see cref="PoseSystem"/>. Insert the game's own between them; remove the pose
-    /// system when nobody reads poses.
+    /// <see cref="LocomotionSystem"/>, <see cref="BodyPointSystem"/>, <see cref="PoseSystem"/>. Insert the game's own
+    /// between them; remove the pose system when nobody reads poses (the body-point system when nobody reads body
+    /// points: the Godot nodes do).
     /// </summary>
     public JumpSystemList Systems { get; }
 
@@ -99,6 +103,12 @@ public sealed class JumpWorld : IDisposable
     /// the takeoff, landing, walk and arrival events, and queues a new request for an agent stopping with a target.
     /// </summary>
     public IJumpSystem LocomotionSystem { get; }
+
+    /// <summary>
+    /// The body-point system: writes each agent's body point (<see cref="GetBodyPoint"/>: where a game puts its body
+    /// node, with velocity and heading) from its path at this tick.
+    /// </summary>
+    public IJumpSystem BodyPointSystem { get; }
 
     /// <summary>The pose system: fills each agent's joint angles and rotations from its animation (<see cref="GetJointRotations"/>), for agents with poses enabled.</summary>
     public IJumpSystem PoseSystem { get; }
@@ -288,6 +298,7 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = _agents.Add(kind.Index, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[k.JointCount]);
+        PlaceBody(slot);
         return new AddAgentResult(RuntimeResult.Success, _agents.HandleOf(slot));
     }
 
@@ -436,6 +447,7 @@ public sealed class JumpWorld : IDisposable
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = stance.Node;
         _agents.Root[slot] = stance.Node.Pose;
+        PlaceBody(slot);
         stance.Angles.CopyTo(_agents.Angles[slot], 0);
         _agents.PoseDirty[slot] = true;
         _agents.State[slot] = AgentState.Idle;
@@ -496,6 +508,7 @@ public sealed class JumpWorld : IDisposable
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = from;
         _agents.Root[slot] = from.Pose;
+        PlaceBody(slot);
         angles.CopyTo(_agents.Angles[slot], 0);
         _agents.PoseDirty[slot] = true;
         _agents.Target[slot] = roadmap.ContactCentres[jump.To];
@@ -548,6 +561,7 @@ public sealed class JumpWorld : IDisposable
         _agents.StopAtStance[slot] = false;
         _agents.Stance[slot] = from;
         _agents.Root[slot] = from.Pose;
+        PlaceBody(slot);
         angles.CopyTo(_agents.Angles[slot], 0);
         _agents.PoseDirty[slot] = true;
         _agents.Target[slot] = moves[^1].To.ContactCentre;
@@ -622,6 +636,13 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight and on the walk's <see cref="Walk.PoseAt"/> while walking.</summary>
     public RootPose GetRootPose(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Root[agent.Index] : default;
+
+    /// <summary>
+    /// The agent's body point this tick (<see cref="BodyPoint"/>: the ground reference where a game puts its body node,
+    /// its velocity and heading), as the body-point system wrote it (and as <see cref="AddAgent"/>, <see cref="Warp"/> and
+    /// <see cref="PerformJump"/> place it at once); default for an unknown agent.
+    /// </summary>
+    public BodyPoint GetBodyPoint(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Body[agent.Index] : default;
 
     /// <summary>The stance the agent stands on, or <c>null</c> while it follows a path (or for an unknown agent).</summary>
     public RoadmapNode? GetStance(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Stance[agent.Index] : null;
@@ -835,6 +856,10 @@ public sealed class JumpWorld : IDisposable
         float[] angles = kind.Animator.Contacts.Generate(node.Pose, node.Contacts, node.Cone.Axis).Angles;
         return (node, (float[])angles.Clone());
     }
+
+    /// <summary>The body point of the agent in <paramref name="slot"/> standing on its stance, at once (not waiting for the body-point system).</summary>
+    private void PlaceBody(int slot) =>
+        _agents.Body[slot] = BodyPointRunner.Standing(_agents.Stance[slot]!.ContactCentre, _agents.Root[slot], _agents.Body[slot].Heading);
 
     /// <summary>The refusal of every call after <see cref="Dispose"/> (but <see cref="Step"/>, which throws), or <c>null</c> before.</summary>
     private RuntimeResult? Gone() => _disposed ? new RuntimeResult(RuntimeStatus.Disposed, "the world was disposed: nothing was done") : null;

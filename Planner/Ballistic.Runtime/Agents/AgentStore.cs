@@ -18,6 +18,9 @@ internal sealed class AgentStore
     public bool[] Alive = [];
     public int[] Kind = [];
     public RootPose[] Root = [];
+
+    /// <summary>The body point (ground reference, velocity, heading), written by the body-point system.</summary>
+    public BodyPoint[] Body = [];
     public AgentState[] State = [];
 
     /// <summary>The stance the agent stands on (null while it follows a path).</summary>
@@ -73,6 +76,7 @@ internal sealed class AgentStore
         Alive[slot] = true;
         Kind[slot] = kind;
         Root[slot] = root;
+        Body[slot] = new BodyPoint(default, default, Quaternion.Identity);
         State[slot] = AgentState.Idle;
         Stance[slot] = stance;
         Target[slot] = default;
@@ -108,6 +112,7 @@ internal sealed class AgentStore
         Array.Resize(ref Alive, capacity);
         Array.Resize(ref Kind, capacity);
         Array.Resize(ref Root, capacity);
+        Array.Resize(ref Body, capacity);
         Array.Resize(ref State, capacity);
         Array.Resize(ref Stance, capacity);
         Array.Resize(ref Target, capacity);

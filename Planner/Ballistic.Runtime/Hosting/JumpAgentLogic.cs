@@ -485,7 +485,7 @@ public sealed class JumpAgentLogic
                 break;
             case JumpEventKind.JumpStarted when e.Path is { } path:
                 PathMove move = path.Moves[j.Jump];
-                _signals.Add(new JumpStartedSignal(j.Time, move.From.ContactCentre, move.To.ContactCentre, Stances.BodyVelocity(move), move.Arc.FlightTime));
+                _signals.Add(new JumpStartedSignal(j.Time, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), move.Arc.FlightTime));
                 break;
             case JumpEventKind.Landed when e.Path is { } path:
                 _signals.Add(new LandedSignal(j.Time, path.Moves[j.Jump].To.ContactCentre));
@@ -537,7 +537,7 @@ public sealed class JumpAgentLogic
         }
     }
 
-    /// <summary>Reads this tick's root pose and body point from the world.</summary>
+    /// <summary>Reads this tick's root pose and body point from the world (its body-point system wrote them).</summary>
     private void Refresh()
     {
         JumpWorld? world = _host.World;
@@ -550,33 +550,14 @@ public sealed class JumpAgentLogic
         }
 
         RootPose = world.GetRootPose(agent);
-        if (world.TryGetCurrentJump(agent, out JumpInfo jump) && world.GetPath(agent) is { } path)
-        {
-            (Vector3 position, Vector3 velocity) = Stances.InJump(path.Moves[jump.Index], (float)(world.Time - jump.TakeoffTime));
-            BodyPosition = position;
-            BodyVelocity = velocity;
-        }
-        else if (world.TryGetCurrentWalk(agent, out WalkInfo walk) && world.GetPath(agent) is { } walking)
-        {
-            (Vector3 position, Vector3 velocity) = Stances.InWalk(walking.Moves[walk.Index], (float)(world.Time - walk.StartTime));
-            BodyPosition = position;
-            BodyVelocity = velocity;
-        }
-        else if (Stances.Standing(world, agent) is { } stance)
-        {
-            BodyPosition = stance.ContactCentre;
-            BodyVelocity = Vector3.Zero;
-        }
-
-        Vector3 forward = RootPose.Forward;
-        if ((forward.X * forward.X) + (forward.Z * forward.Z) > 1e-8f)
-        {
-            BodyRotation = Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(forward.X, forward.Z));
-        }
+        BodyPoint body = world.GetBodyPoint(agent);
+        BodyPosition = body.Position;
+        BodyVelocity = body.Velocity;
+        BodyRotation = body.Heading;
     }
 
     private static JumpPreview Preview(in PathMove move, in JumpInfo info) =>
-        new(info.Index, move.From.ContactCentre, move.To.ContactCentre, Stances.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
+        new(info.Index, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
 
     /// <summary>Samples the body point along the path, at most <see cref="PathSampleStep"/> apart.</summary>
     private void Sample(AgentPath path)
@@ -592,13 +573,13 @@ public sealed class JumpAgentLogic
                 int n = Math.Max(1, (int)MathF.Ceiling((walk.Length + shift.Length()) / _step));
                 for (int k = 1; k < n; k++)
                 {
-                    _points.Add(Stances.InWalk(move, walk.TimeAtDistance(walk.Length * k / n)).Position);
+                    _points.Add(BodyMotion.InWalk(move, walk.TimeAtDistance(walk.Length * k / n)).Position);
                 }
             }
             else
             {
                 float flight = move.Arc.FlightTime;
-                Vector3 v0 = Stances.BodyVelocity(move);
+                Vector3 v0 = BodyMotion.BodyVelocity(move);
                 Vector3 v1 = v0 - new Vector3(0f, move.Arc.Gravity * flight, 0f);
 
                 // The body point's speed is greatest at an end of the flight (|v0 − g·t| is convex in t): n samples
@@ -607,7 +588,7 @@ public sealed class JumpAgentLogic
                 int n = Math.Max(1, (int)MathF.Ceiling(travel / _step));
                 for (int k = 1; k < n; k++)
                 {
-                    _points.Add(Stances.InJump(move, flight * k / n).Position);
+                    _points.Add(BodyMotion.InJump(move, flight * k / n).Position);
                 }
             }
 

@@ -49,7 +49,7 @@ public sealed partial class ReadmeEcsExampleTests
             {
                 AgentHandle npc = RuntimeWorlds.SendAcross(world, kind, seed: 11).Agent;
                 example.GetType("Game")!.GetMethod("Setup")!.Invoke(null, [world, npc, 0.5f]);
-                Assert.That(world.Systems.Select(s => s.GetType().Name), Is.EqualTo(new[] { "BuiltInSystem", "BuiltInSystem", "TireSystem", "BuiltInSystem" }));
+                Assert.That(world.Systems.Select(s => s.GetType().Name), Is.EqualTo(new[] { "BuiltInSystem", "BuiltInSystem", "TireSystem", "BuiltInSystem", "BuiltInSystem" }));
                 Assert.That(world.Systems[1], Is.SameAs(world.LocomotionSystem));
 
                 int jumpingTicks = 0;

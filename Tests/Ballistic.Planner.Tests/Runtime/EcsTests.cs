@@ -7,6 +7,7 @@ using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Planner.Tests.Runtime;
 
@@ -31,7 +32,7 @@ public sealed class EcsTests
             Assert.That(world.Systems.InsertBefore(world.PathRequestSystem, first).Ok, Is.True);
             Assert.That(world.Systems.InsertAfter(world.LocomotionSystem, middle).Ok, Is.True);
             Assert.That(world.Systems.Add(last).Ok, Is.True);
-            Assert.That(world.Systems, Is.EqualTo(new IJumpSystem[] { first, world.PathRequestSystem, world.LocomotionSystem, middle, world.PoseSystem, last }));
+            Assert.That(world.Systems, Is.EqualTo(new IJumpSystem[] { first, world.PathRequestSystem, world.LocomotionSystem, middle, world.BodyPointSystem, world.PoseSystem, last }));
 
             int posesFilledAfterMiddle = 0;
             int onPath = 0;
@@ -82,6 +83,56 @@ public sealed class EcsTests
             Assert.That(world.Systems.InsertAfter(world.LocomotionSystem, pose).Ok, Is.True);
             world.Step();
             Assert.That(world.GetJointRotations(agent).ToArray(), Is.Not.EqualTo(frozen));
+        }
+    }
+
+    [Test]
+    public void TheBodyPointIsAComponentOnTheParabolaAlongTheWalkAndOnTheStanceWithNoHost()
+    {
+        (JumpWorld world, KindHandle kind) = WalkingPaths.World();
+        using (world)
+        {
+            IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
+            AgentHandle agent = world.AddAgent(kind, WalkingPaths.Centre(moves[0].To)).Agent;
+            Assert.That(world.GetBodyPoint(agent).Position, Is.EqualTo(world.GetStance(agent)!.ContactCentre), "placed at once");
+            Assert.That(world.PerformMoves(agent, moves).Ok, Is.True);
+            Assert.That(world.GetBodyPoint(agent).Position, Is.EqualTo(moves[0].From.ContactCentre), "moved onto the first stance at once");
+
+            double dt = world.Settings.TickSeconds;
+            BodyPoint? previous = null;
+            int flying = 0, walking = 0, landed = 0;
+            for (int tick = 0; tick < 3600 && world.GetTarget(agent) is not null; tick++)
+            {
+                world.Step();
+                BodyPoint body = world.GetBodyPoint(agent);
+                AgentState state = world.GetState(agent);
+                bool inJump = world.TryGetCurrentJump(agent, out JumpInfo jump);
+                if (inJump && previous is { } p && jump.TakeoffTime < world.Time - dt)
+                {
+                    // A parabola under gravity: velocity falls by g·dt, position moves by the mean velocity.
+                    Assert.That(body.Velocity.Y - p.Velocity.Y, Is.EqualTo(-9.81 * dt).Within(1e-3), $"tick {world.Tick}");
+                    Assert.That(Vector3.Distance(body.Position - p.Position, (body.Velocity + p.Velocity) * (float)(0.5 * dt)), Is.LessThan(1e-4f), $"tick {world.Tick}");
+                    flying++;
+                }
+                else if (state == AgentState.Walking)
+                {
+                    Assert.That(body.Velocity.Length(), Is.LessThanOrEqualTo(world.TryGetCurrentWalk(agent, out WalkInfo walk) ? walk.Walk.Speed * 1.01f : 0f));
+                    walking++;
+                }
+                else if (!inJump && state is AgentState.Stance or AgentState.Idle && previous is { } before && before.Velocity.Y < -1f)
+                {
+                    Assert.That(body.Position, Is.EqualTo(moves[1].To.ContactCentre), "landed on the landing stance's contact centre");
+                    landed++;
+                }
+
+                Assert.That(body.Heading.Length(), Is.EqualTo(1f).Within(1e-5f));
+                previous = body;
+            }
+
+            Assert.That(flying, Is.GreaterThan(10), "ticks checked in flight");
+            Assert.That(landed, Is.EqualTo(1), "the landing was met once");
+            Assert.That(walking, Is.GreaterThan(30));
+            Assert.That(world.GetBodyPoint(agent).Position, Is.EqualTo(moves[^1].To.ContactCentre), $"arrived on the last stance's contact centre: tick {world.Tick} {world.GetState(agent)} stance {world.GetStance(agent)?.ContactCentre} path {world.GetPath(agent)} target {world.GetTarget(agent)} walking {walking}");
         }
     }
 
