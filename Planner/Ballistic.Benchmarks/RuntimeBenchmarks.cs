@@ -53,7 +53,7 @@ public class RuntimeBenchmarks
 
     private JumpWorld Moving(int count, bool poses)
     {
-        var world = new JumpWorld(_kind.Scene.Level, new WorldSettings { TickRate = 10_000, MaxSearchesPerTick = 1_000, MaxExpansionsPerTick = int.MaxValue, AnimationThreads = 2 });
+        var world = new JumpWorld(_kind.Scene.Level, new WorldSettings { TickRate = 10_000, MaxSearchesPerTick = 1_000, AnimationThreads = 2 });
         KindHandle kind = world.AddKind(_kind).Kind;
         for (int i = 0; i < count; i++)
         {

@@ -91,10 +91,10 @@ public sealed class JumpWorld : IDisposable
     public JumpSystemList Systems { get; }
 
     /// <summary>
-    /// The path-request system: searches queued requests within the tick's budget
-    /// (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>) and starts each
-    /// found path on its agent <see cref="WorldSettings.PathLatencyTicks"/> later, animated
-    /// (<see cref="JumpEventKind.PathFound"/>, <see cref="JumpEventKind.PathFailed"/>).
+    /// The path-request system: starts queued requests within the tick's budget
+    /// (<see cref="WorldSettings.MaxSearchesPerTick"/>), each searched and animated in the background, and delivers each
+    /// outcome <see cref="WorldSettings.PathLatencyTicks"/> after its start (<see cref="JumpEventKind.PathFound"/>,
+    /// <see cref="JumpEventKind.PathFailed"/>): the tick itself never searches.
     /// </summary>
     public IJumpSystem PathRequestSystem { get; }
 
@@ -171,14 +171,12 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Path requests waiting for a search.</summary>
     public int QueuedRequests => _queue.Count;
 
-    /// <summary>Paths searched and being animated.</summary>
+    /// <summary>Requests started and not delivered yet: being searched or animated, or waiting for their due tick.</summary>
     public int AnimatingRequests => _requests.Animating;
 
-    /// <summary>Searches made during the last tick.</summary>
+    /// <summary>Requests started (searches) during the last tick.</summary>
     public int LastTickSearches => _requests.LastTickSearches;
 
-    /// <summary>Search work (A* expansions plus placement costs) spent during the last tick.</summary>
-    public int LastTickSearchWork => _requests.LastTickWork;
 
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)

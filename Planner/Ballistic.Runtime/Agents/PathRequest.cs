@@ -1,11 +1,10 @@
 using System.Numerics;
-using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 
 namespace Ballistic.Runtime.Agents;
 
-/// <summary>One agent's request for a path: searched on a tick within the budget, animated in the background, delivered on a fixed later tick.</summary>
+/// <summary>One agent's request for a path: started on a tick within the budget, searched and animated in the background, delivered on a fixed later tick.</summary>
 internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequence)
 {
     public AgentHandle Agent { get; } = agent;
@@ -39,9 +38,9 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target, long sequen
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }
 
-    /// <summary>The animation being solved in the background (null when solved on the tick).</summary>
-    public Task<JumpAnimation>? Job { get; set; }
+    /// <summary>The request's search and animation running in the background (null when run on the tick).</summary>
+    public Task<RequestOutcome>? Job { get; set; }
 
-    /// <summary>The animation solved on the tick.</summary>
-    public JumpAnimation? Solved { get; set; }
+    /// <summary>The outcome of the search and animation run on the tick.</summary>
+    public RequestOutcome? Outcome { get; set; }
 }

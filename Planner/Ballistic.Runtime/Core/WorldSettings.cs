@@ -10,22 +10,17 @@ public sealed record WorldSettings
     /// <summary>Ticks per second (Godot's physics rate is 60 by default).</summary>
     public int TickRate { get; init; } = 60;
 
-    /// <summary>Path searches started at most per tick; requests beyond wait in the queue, first come first served.</summary>
+    /// <summary>
+    /// Path requests started at most per tick; requests beyond wait in the queue, first come first served. A started
+    /// request is searched and animated in the background (<see cref="AnimationThreads"/>), never on the tick.
+    /// </summary>
     public int MaxSearchesPerTick { get; init; } = 16;
 
     /// <summary>
-    /// Search work allowed per tick, in A* node expansions (plus <see cref="PlacementCost"/> for each target that is
-    /// not a roadmap node). A search that starts always finishes; none starts once the tick's work reaches this.
-    /// </summary>
-    public int MaxExpansionsPerTick { get; init; } = 20_000;
-
-    /// <summary>Work charged to the tick's budget for placing a target that no roadmap node stands near (a few hundred pose evaluations), in expansions.</summary>
-    public int PlacementCost { get; init; } = 2_000;
-
-    /// <summary>
-    /// Ticks from a path's search to the tick its agent starts following it. Meanwhile the whole-body animation is
-    /// solved in the background; with <see cref="WaitForAnimation"/> the tick at the end waits for it if need be, so
-    /// that trajectories and events do not depend on thread count or machine speed.
+    /// Ticks from a request's start to the tick its outcome reaches its agent (the path it starts following, or why
+    /// there is none). Meanwhile the search and the whole-body animation run in the background; with
+    /// <see cref="WaitForAnimation"/> the tick at the end waits for them if need be, so that trajectories and events do
+    /// not depend on thread count or machine speed.
     /// </summary>
     public int PathLatencyTicks { get; init; } = 6;
 
@@ -36,7 +31,7 @@ public sealed record WorldSettings
     /// </summary>
     public bool WaitForAnimation { get; init; } = true;
 
-    /// <summary>Threads solving animations in the background; 0 solves them on the tick (tests, single-threaded hosts).</summary>
+    /// <summary>Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded hosts).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
     /// <summary>Searches per request at most: a jump the body cannot perform is set aside and the search runs again (<see cref="AnimatedPlanner"/>).</summary>
@@ -75,9 +70,9 @@ public sealed record WorldSettings
             return $"TickRate must be 1–10000 ticks per second, not {TickRate}";
         }
 
-        if (MaxSearchesPerTick < 1 || MaxExpansionsPerTick < 1 || PlacementCost < 0)
+        if (MaxSearchesPerTick < 1)
         {
-            return "MaxSearchesPerTick and MaxExpansionsPerTick must be positive and PlacementCost not negative";
+            return "MaxSearchesPerTick must be positive";
         }
 
         if (PathLatencyTicks < 0 || AnimationThreads < 0 || RepairRounds < 1)

@@ -1,7 +1,5 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
-using Ballistic.Planner.Query;
-using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
@@ -11,21 +9,23 @@ using Ballistic.Runtime.Paths;
 namespace Ballistic.Runtime.Systems;
 
 /// <summary>
-/// Serves path requests after Detour's path queue: a request waits in a first-come queue; each tick searches as many
-/// as the budget allows (<see cref="WorldSettings.MaxSearchesPerTick"/>, <see cref="WorldSettings.MaxExpansionsPerTick"/>);
-/// a found path is animated in the background and delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
-/// later. A path whose animation shows a move (jump or walk) the body cannot perform is searched again without it
-/// (lazy repair, up to <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed. Requests
-/// come from the world's <see cref="PathQueue"/>, which the world's calls and the locomotion system fill.
+/// Serves path requests after Detour's path queue: a request waits in a first-come queue; each tick starts at most
+/// <see cref="WorldSettings.MaxSearchesPerTick"/> of them. A started request is one job, searched then animated in
+/// the background (<see cref="WorldSettings.AnimationThreads"/>; on the tick with none), whose outcome (a path, a
+/// failure, or the target reached already) is delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
+/// later: the tick thread never searches, so no search, however long, makes a tick long. A path whose animation shows
+/// a move (jump or walk) the body cannot perform is searched again without it (lazy repair, up to
+/// <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed. Requests come from the world's
+/// <see cref="PathQueue"/>, which the world's calls and the locomotion system fill.
 /// </summary>
 internal sealed class PathRequestSystem : IDisposable
 {
     private readonly WorldSettings _settings;
     private readonly AgentStore _agents;
+    private readonly PathQueue _queue;
     private readonly EventBuffer _events;
     private readonly List<CharacterKind> _kinds;
     private readonly List<RoadmapSearch> _searches;
-    private readonly PathQueue _queue;
     private readonly List<PathRequest> _inFlight = [];
     private readonly TaskScheduler? _scheduler;
     private readonly CancellationTokenSource _shutdown = new();
@@ -44,29 +44,22 @@ internal sealed class PathRequestSystem : IDisposable
         }
     }
 
-    /// <summary>Requests waiting for a search.</summary>
-    public int Queued => _queue.Count;
-
-    /// <summary>Requests searched and being animated.</summary>
+    /// <summary>Requests started and not delivered yet (searching or animating).</summary>
     public int Animating => _inFlight.Count;
 
-    /// <summary>Searches made during the last tick.</summary>
+    /// <summary>Requests started during the last tick.</summary>
     public int LastTickSearches { get; private set; }
-
-    /// <summary>Work (expansions and placement costs) spent during the last tick.</summary>
-    public int LastTickWork { get; private set; }
 
     public void Update(long tick, double time)
     {
-        Search(tick, time);
+        Start(tick);
         Deliver(tick, time);
     }
 
-    private void Search(long tick, double time)
+    private void Start(long tick)
     {
-        int searches = 0;
-        int work = 0;
-        while (searches < _settings.MaxSearchesPerTick && work < _settings.MaxExpansionsPerTick && _queue.TryTake(out PathRequest? request))
+        int started = 0;
+        while (started < _settings.MaxSearchesPerTick && _queue.TryTake(out PathRequest? request))
         {
             int slot = request.Agent.Index;
             if (!Current(request))
@@ -74,89 +67,27 @@ internal sealed class PathRequestSystem : IDisposable
                 continue;
             }
 
-            searches++;
-            try
+            started++;
+            request.Start = _agents.Stance[slot]!;
+            request.Rounds++;
+            request.DueTick = tick + _settings.PathLatencyTicks;
+            var job = new RequestJob(_kinds[_agents.Kind[slot]], _searches[_agents.Kind[slot]], request, _settings.AnimationFrameRate);
+            if (_scheduler is null)
             {
-                work += SearchOne(slot, request, tick, time);
-            }
-            catch (Exception e) when (e is not OutOfMemoryException)
-            {
-                Fail(slot, request, PlannerStatus.NoPath, $"internal error while searching: {e.Message}", tick, time);
-            }
-        }
-
-        LastTickSearches = searches;
-        LastTickWork = work;
-    }
-
-    private int SearchOne(int slot, PathRequest request, long tick, double time)
-    {
-        CharacterKind kind = _kinds[_agents.Kind[slot]];
-        request.Start = _agents.Stance[slot]!;
-        request.Rounds++;
-        int work = 0;
-        if (request.ForcedEdge >= 0)
-        {
-            // One given jump of the roadmap: no search.
-            Roadmap roadmap = kind.Roadmap;
-            RoadmapEdge edge = roadmap.Edges[request.ForcedEdge];
-            request.Moves = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
-        }
-        else if (request.ForcedMoves is { } forced)
-        {
-            // The given moves: no search.
-            request.Moves = forced;
-        }
-        else
-        {
-            PlanResult result = _searches[_agents.Kind[slot]].Search(request.Start, request.Target, request.Repair, _settings.PlacementCost, out work);
-            if (result.Status != PlannerStatus.Exact)
-            {
-                string? repaired = request.Repair.SearchFailed(result.Reason);
-                Fail(slot, request, repaired is null ? result.Status : PlannerStatus.AnimationFailed, repaired ?? result.Reason, tick, time);
-                return work;
-            }
-
-            if (result.Moves.Count == 0)
-            {
-                _agents.Request[slot] = null;
-                _agents.State[slot] = AgentState.Idle;
-                _agents.HasTarget[slot] = false;
-                _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
-                return work;
-            }
-
-            request.Moves = result.Moves;
-        }
-
-        request.DueTick = tick + _settings.PathLatencyTicks;
-        IReadOnlyList<Move> moves = request.Moves;
-        IJumpAnimator animator = kind.PathAnimator;
-        float frameRate = _settings.AnimationFrameRate;
-        if (_scheduler is null)
-        {
-            // On the tick; an animator that throws fails the request on its due tick, as a background job's would, so
-            // that events do not depend on the thread count.
-            try
-            {
-                request.Solved = animator.Animate(moves, frameRate);
+                request.Outcome = job.Run();
                 request.Job = null;
             }
-            catch (Exception e) when (e is not OutOfMemoryException)
+            else
             {
-                request.Solved = null;
-                request.Job = Task.FromException<JumpAnimation>(e);
+                request.Outcome = null;
+                request.Job = Task.Factory.StartNew(job.Run, _shutdown.Token, TaskCreationOptions.None, _scheduler);
             }
-        }
-        else
-        {
-            request.Solved = null;
-            request.Job = Task.Factory.StartNew(() => animator.Animate(moves, frameRate), _shutdown.Token, TaskCreationOptions.None, _scheduler);
+
+            _inFlight.Add(request);
+            _agents.State[slot] = AgentState.Stance;
         }
 
-        _inFlight.Add(request);
-        _agents.State[slot] = AgentState.Stance;
-        return work;
+        LastTickSearches = started;
     }
 
     private void Deliver(long tick, double time)
@@ -185,18 +116,50 @@ internal sealed class PathRequestSystem : IDisposable
             }
 
             int slot = request.Agent.Index;
+            RequestOutcome outcome;
             try
             {
-                JumpAnimation animation = request.Solved ?? request.Job!.GetAwaiter().GetResult();
-                Complete(slot, request, animation, tick, time);
+                outcome = request.Outcome ?? request.Job!.GetAwaiter().GetResult();
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
-                Fail(slot, request, PlannerStatus.AnimationFailed, $"internal error while animating: {e.Message}", tick, time);
+                outcome = new RequestOutcome(null, [], null, e, Searching: false);
             }
+
+            Conclude(slot, request, outcome, tick, time);
         }
 
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
+    }
+
+    /// <summary>Delivers a request's outcome on its due tick: a path to follow, a failure, the target reached already, or a repair.</summary>
+    private void Conclude(int slot, PathRequest request, RequestOutcome outcome, long tick, double time)
+    {
+        if (outcome.Error is { } error)
+        {
+            Fail(slot, request, outcome.Searching ? PlannerStatus.NoPath : PlannerStatus.AnimationFailed, $"internal error while {(outcome.Searching ? "searching" : "animating")}: {error.Message}", tick, time);
+            return;
+        }
+
+        if (outcome.Search is { Status: not PlannerStatus.Exact } failed)
+        {
+            string? repaired = request.Repair.SearchFailed(failed.Reason);
+            Fail(slot, request, repaired is null ? failed.Status : PlannerStatus.AnimationFailed, repaired ?? failed.Reason, tick, time);
+            return;
+        }
+
+        if (outcome.Animation is not { } animation)
+        {
+            // The search found the agent on its target already.
+            _agents.Request[slot] = null;
+            _agents.State[slot] = AgentState.Idle;
+            _agents.HasTarget[slot] = false;
+            _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
+            return;
+        }
+
+        request.Moves = outcome.Moves;
+        Complete(slot, request, animation, tick, time);
     }
 
     private void Complete(int slot, PathRequest request, JumpAnimation animation, long tick, double time)

@@ -6,17 +6,20 @@ using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Systems;
 
-/// <summary>The searches of one character kind, on the tick thread: a path query over the kind's roadmap with reusable scratch.</summary>
+/// <summary>
+/// The searches of one character kind, on any thread: path queries over the kind's roadmap, each search renting one
+/// (with its reusable scratch) from a pool, so that searches run at once on several threads. A query's scratch does
+/// not change its results: the same request gives the same path whichever query serves it.
+/// </summary>
 internal sealed class RoadmapSearch
 {
     private readonly CharacterKind _kind;
-    private readonly PathQuery _query;
+    private readonly System.Collections.Concurrent.ConcurrentBag<PathQuery> _queries = [];
     private readonly QuerySettings _settings;
 
     public RoadmapSearch(CharacterKind kind, WorldSettings world)
     {
         _kind = kind;
-        _query = new PathQuery(kind.Scene, kind.Roadmap);
         _settings = new QuerySettings
         {
             Tolerance = world.Tolerance,
@@ -29,27 +32,22 @@ internal sealed class RoadmapSearch
     /// <summary>The query settings of every search: the world's tolerance, locomotion and jump effort, the kind's standing check.</summary>
     public QuerySettings Settings => _settings;
 
-    /// <summary>
-    /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/>; <paramref name="work"/> is the search's
-    /// cost in expansions (plus the placement cost when the target is not a roadmap node).
-    /// </summary>
-    /// <remarks>The request's repair record gives the moves to avoid and, once its walks failed, jumps only.</remarks>
-    public PlanResult Search(RoadmapNode start, Vector3 target, JumpRepair repair, int placementCost, out int work)
+    /// <summary>Searches from the stance <paramref name="start"/> to the point <paramref name="target"/> (to its roadmap node, when one stands there); thread-safe.</summary>
+    /// <remarks>The request's repair record gives the moves to avoid and, once its walks failed, jumps only; it must not change during the search.</remarks>
+    public PlanResult Search(RoadmapNode start, Vector3 target, JumpRepair repair)
     {
-        PlanResult result;
         QuerySettings settings = repair.Adjust(_settings);
         IReadOnlySet<(int From, int To)> rejected = repair.Excluded;
-        if (_kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal)
+        PathQuery query = _queries.TryTake(out PathQuery? pooled) ? pooled : new PathQuery(_kind.Scene, _kind.Roadmap);
+        try
         {
-            result = _query.Plan(start, _kind.Roadmap.Nodes[goal], settings, rejected);
-            work = result.Expansions;
+            return _kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal
+                ? query.Plan(start, _kind.Roadmap.Nodes[goal], settings, rejected)
+                : query.Plan(start, target, settings, rejected);
         }
-        else
+        finally
         {
-            result = _query.Plan(start, target, settings, rejected);
-            work = result.Expansions + placementCost;
+            _queries.Add(query);
         }
-
-        return result;
     }
 }
