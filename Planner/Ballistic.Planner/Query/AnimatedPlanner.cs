@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
@@ -94,70 +93,11 @@ public sealed class AnimatedPlanner
     public AnimatedPlan Plan(Roadmap roadmap, Vector3 from, Vector3 to, QuerySettings? settings = null, int rounds = DefaultRounds, float frameRate = 60f, TerminationCondition? termination = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
-        var clock = Stopwatch.StartNew();
         var query = new PathQuery(_scene, roadmap);
         settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
         var repair = new JumpRepair(roadmap.Nodes.Count + 2);
-
-        // The condition sees the time since this request began, not since each search began.
-        TerminationCondition? stop = termination is null ? null : new Elapsed(termination, clock);
-        PlanResult result = query.Plan(from, to, repair.Adjust(settings), repair.Excluded, stop);
-        for (int round = 1; ; round++)
-        {
-            if (result.Status is PlannerStatus.Cancelled or PlannerStatus.Timeout)
-            {
-                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
-            }
-
-            if (result.Status != PlannerStatus.Exact)
-            {
-                PlanResult failed = repair.SearchFailed(result.Reason) is string repaired
-                    ? result with { Status = PlannerStatus.AnimationFailed, Reason = repaired }
-                    : result;
-                return new AnimatedPlan(failed with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
-            }
-
-            if (result.Moves.Count == 0)
-            {
-                return new AnimatedPlan(result with { Elapsed = clock.Elapsed }, null, repair.SetAside, round);
-            }
-
-            if (stop is not null && stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
-            {
-                return new AnimatedPlan(result with { Status = status, Reason = reason, Moves = [], Elapsed = clock.Elapsed }, null, repair.SetAside, round);
-            }
-
-            JumpAnimation animation = Animator.Animate(result.Moves, frameRate);
-            if (animation.IsClean)
-            {
-                return new AnimatedPlan(result with { Reason = result.Reason + repair.SuccessNote(), Elapsed = clock.Elapsed }, animation, repair.SetAside, round);
-            }
-
-            repair.Reject(result.Moves, animation);
-
-            if (repair.IsExhausted(round, rounds))
-            {
-                PlanResult failed = result with
-                {
-                    Status = PlannerStatus.AnimationFailed,
-                    Reason = repair.RoundsExhausted(rounds),
-                    Moves = [],
-                    Elapsed = clock.Elapsed,
-                };
-                return new AnimatedPlan(failed, null, repair.SetAside, round);
-            }
-
-            result = query.Plan(from, to, repair.Adjust(settings), repair.Excluded, stop);
-        }
-    }
-
-    /// <summary>A condition polled with the time since a whole request began, whatever the time its caller passes.</summary>
-    private sealed class Elapsed(TerminationCondition inner, Stopwatch clock) : TerminationCondition
-    {
-        public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
-            inner.ShouldStop(state with { Elapsed = clock.Elapsed }, out status, out reason);
-
-        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason) =>
-            inner.ShouldStopNow(clock.Elapsed, out status, out reason);
+        var job = new PlanJob((r, stop) => query.Plan(from, to, r.Adjust(settings), r.Excluded, stop), Animator, repair, rounds, frameRate) { Termination = termination };
+        (PlanResult result, JumpAnimation? animation, int round) = job.Run();
+        return new AnimatedPlan(result, animation, repair.SetAside, round);
     }
 }

@@ -41,9 +41,6 @@ internal sealed class PathQueue(AgentStore agents)
     /// <summary>Forgets the pending request of the agent in <paramref name="slot"/> (its result, if any, is dropped on delivery).</summary>
     public void Cancel(int slot) => agents.Request[slot] = null;
 
-    /// <summary>Puts <paramref name="request"/> back at the head of the queue (searched again first: a repair).</summary>
-    public void Retry(PathRequest request) => _queue.AddFirst(request);
-
     /// <summary>Takes the request at the head of the queue, if any.</summary>
     public bool TryTake([System.Diagnostics.CodeAnalysis.NotNullWhen(true)] out PathRequest? request)
     {

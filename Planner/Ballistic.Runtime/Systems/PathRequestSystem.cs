@@ -1,4 +1,3 @@
-using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
@@ -13,9 +12,10 @@ namespace Ballistic.Runtime.Systems;
 /// <see cref="WorldSettings.MaxSearchesPerTick"/> of them. A started request is one job, searched then animated in
 /// the background (<see cref="WorldSettings.AnimationThreads"/>; on the tick with none), whose outcome (a path, a
 /// failure, or the target reached already) is delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
-/// later: the tick thread never searches, so no search, however long, makes a tick long. A path whose animation shows
-/// a move (jump or walk) the body cannot perform is searched again without it (lazy repair, up to
-/// <see cref="WorldSettings.RepairRounds"/> searches) before it is reported as failed. Requests come from the world's
+/// later: the tick thread never searches, so no search, however long, makes a tick long. Within the job, a path whose
+/// animation shows a move (jump or walk) the body cannot perform is searched again without it (lazy repair, up to
+/// <see cref="WorldSettings.RepairRounds"/> searches: the planner's <see cref="Planner.Query.PlanJob"/>, as
+/// <see cref="Planner.Query.AnimatedPlanner"/> runs it) before it is reported as failed. Requests come from the world's
 /// <see cref="PathQueue"/>, which the world's calls and the locomotion system fill.
 /// </summary>
 internal sealed class PathRequestSystem : IDisposable
@@ -71,7 +71,7 @@ internal sealed class PathRequestSystem : IDisposable
             request.Start = _agents.Stance[slot]!;
             request.Rounds++;
             request.DueTick = tick + _settings.PathLatencyTicks;
-            var job = new RequestJob(_kinds[_agents.Kind[slot]], _searches[_agents.Kind[slot]], request, _settings.AnimationFrameRate);
+            var job = new RequestJob(_kinds[_agents.Kind[slot]], _searches[_agents.Kind[slot]], request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
             {
                 request.Outcome = job.Run();
@@ -132,7 +132,7 @@ internal sealed class PathRequestSystem : IDisposable
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
     }
 
-    /// <summary>Delivers a request's outcome on its due tick: a path to follow, a failure, the target reached already, or a repair.</summary>
+    /// <summary>Delivers a request's outcome on its due tick: a clean path to follow, a failure (the search's, or no path animating cleanly), or the target reached already.</summary>
     private void Conclude(int slot, PathRequest request, RequestOutcome outcome, long tick, double time)
     {
         if (outcome.Error is { } error)
@@ -143,8 +143,7 @@ internal sealed class PathRequestSystem : IDisposable
 
         if (outcome.Search is { Status: not PlannerStatus.Exact } failed)
         {
-            string? repaired = request.Repair.SearchFailed(failed.Reason);
-            Fail(slot, request, repaired is null ? failed.Status : PlannerStatus.AnimationFailed, repaired ?? failed.Reason, tick, time);
+            Fail(slot, request, failed.Status, failed.Reason, tick, time);
             return;
         }
 
@@ -159,36 +158,14 @@ internal sealed class PathRequestSystem : IDisposable
         }
 
         request.Moves = outcome.Moves;
-        Complete(slot, request, animation, tick, time);
-    }
-
-    private void Complete(int slot, PathRequest request, JumpAnimation animation, long tick, double time)
-    {
-        if (animation.IsClean)
-        {
-            var path = new AgentPath(request.Target, request.Moves, animation);
-            _agents.Request[slot] = null;
-            _agents.Stance[slot] = null;
-            _agents.Path[slot] = path;
-            _agents.PathStart[slot] = time;
-            _agents.Cursor[slot] = 0;
-            _agents.StopAtStance[slot] = false;
-            _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null));
-            return;
-        }
-
-        // A given jump or given moves the body cannot perform are set aside like any other: the request becomes a
-        // search to the same stance.
-        request.ForcedEdge = -1;
-        request.ForcedMoves = null;
-        request.Repair.Reject(request.Moves, animation);
-        if (request.Repair.IsExhausted(request.Rounds, _settings.RepairRounds))
-        {
-            Fail(slot, request, PlannerStatus.AnimationFailed, request.Repair.RoundsExhausted(request.Rounds), tick, time);
-            return;
-        }
-
-        _queue.Retry(request); // searched again first, on the next tick
+        var path = new AgentPath(request.Target, request.Moves, animation);
+        _agents.Request[slot] = null;
+        _agents.Stance[slot] = null;
+        _agents.Path[slot] = path;
+        _agents.PathStart[slot] = time;
+        _agents.Cursor[slot] = 0;
+        _agents.StopAtStance[slot] = false;
+        _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null));
     }
 
     private void Fail(int slot, PathRequest request, PlannerStatus status, string reason, long tick, double time)

@@ -1,5 +1,5 @@
 using System.Numerics;
-using Ballistic.Planner.Planning;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
@@ -8,11 +8,13 @@ using Ballistic.Runtime.Kinds;
 namespace Ballistic.Runtime.Systems;
 
 /// <summary>
-/// One started path request as a job for any thread: its search (or its given moves), then the moves' whole-body
-/// animation. Its inputs are read from the request when it starts, on the tick; the request does not change until its
-/// outcome is delivered, so the job gives the same outcome on whichever thread and at whatever time it runs.
+/// One started path request as a job for any thread: the planner's plan-and-repair loop (<see cref="PlanJob"/>, the
+/// one <see cref="AnimatedPlanner"/> runs) on the kind's roadmap, from the request's stance to its target, starting
+/// with its given moves if any: search, animate, set aside what the body cannot perform and search again, up to
+/// <c>rounds</c> searches. Its inputs are read from the request when it starts, on the tick; the request does not change
+/// until its outcome is delivered, so the job gives the same outcome on whichever thread and at whatever time it runs.
 /// </summary>
-internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathRequest request, float frameRate)
+internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathRequest request, int rounds, float frameRate)
 {
     private readonly RoadmapNode _start = request.Start!;
     private readonly Vector3 _target = request.Target;
@@ -22,44 +24,19 @@ internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathR
 
     public RequestOutcome Run()
     {
-        PlanResult? result = null;
-        IReadOnlyList<Move> moves;
+        Roadmap roadmap = kind.Roadmap;
+        IReadOnlyList<Move>? given = _forcedEdge >= 0
+            ? [new Jump(roadmap.Nodes[roadmap.Edges[_forcedEdge].From], roadmap.Nodes[roadmap.Edges[_forcedEdge].To], roadmap.Edges[_forcedEdge].Arc)]
+            : _forcedMoves;
+        var job = new PlanJob((repair, _) => search.Search(_start, _target, repair), kind.PathAnimator, _repair, rounds, frameRate) { Given = given };
         try
         {
-            if (_forcedEdge >= 0)
-            {
-                // One given jump of the roadmap: no search.
-                Roadmap roadmap = kind.Roadmap;
-                RoadmapEdge edge = roadmap.Edges[_forcedEdge];
-                moves = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
-            }
-            else if (_forcedMoves is { } forced)
-            {
-                moves = forced; // the given moves: no search
-            }
-            else
-            {
-                result = search.Search(_start, _target, _repair);
-                if (result.Status != PlannerStatus.Exact || result.Moves.Count == 0)
-                {
-                    return new RequestOutcome(result, [], null, null, Searching: true);
-                }
-
-                moves = result.Moves;
-            }
+            (PlanResult result, JumpAnimation? animation, _) = job.Run();
+            return new RequestOutcome(result, animation is null ? [] : result.Moves, animation, null, Searching: false);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            return new RequestOutcome(result, [], null, e, Searching: true);
-        }
-
-        try
-        {
-            return new RequestOutcome(result, moves, kind.PathAnimator.Animate(moves, frameRate), null, Searching: false);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            return new RequestOutcome(result, moves, null, e, Searching: false);
+            return new RequestOutcome(null, [], null, e, Searching: job.Phase == "searching");
         }
     }
 }
