@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
@@ -88,6 +89,60 @@ public sealed class BackgroundSearchTests
 
         Assert.That(told.Select(t => t.Told - t.Started), Is.All.EqualTo(5));
         Assert.That(told.Select(t => t.Reason).Distinct().Count(), Is.EqualTo(1), string.Join(" | ", told.Select(t => t.Reason)));
+    }
+
+    [Test]
+    public void ARequestWhosePathsNeverAnimateIsRepairedInItsJobAndFailsOnItsOneDueTickWhateverTheThreads()
+    {
+        var told = new List<(long Latency, string Reason, int Animated)>();
+        foreach (int threads in new[] { 0, 2 })
+        {
+            // Every path's first move is refused by the body: each round sets it aside and searches again.
+            CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+            var refusing = new RefusingAnimator(new SimpleMoveAnimator(desert.Animator));
+            var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, refusing);
+            using var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = threads, RepairRounds = 3 });
+            KindHandle handle = world.AddKind(kind).Kind;
+            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, seed: 4, minDistance: 8f)[0];
+            AgentHandle agent = world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent;
+            Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
+            long started = 0;
+            JumpEvent? failed = null;
+            for (int tick = 0; tick < 60 && failed is null; tick++)
+            {
+                world.Step();
+                Assert.That(world.Events.ToArray().Select(e => e.Kind), Has.No.Member(JumpEventKind.PathFound));
+                started = started == 0 && world.LastTickSearches > 0 ? world.Tick : started;
+                Assert.That(world.LastTickSearches == 0 || world.Tick == started, Is.True, "one start: the repairs run inside the job");
+                failed = world.Events.ToArray().Cast<JumpEvent?>().FirstOrDefault(e => e!.Value.Kind == JumpEventKind.PathFailed);
+            }
+
+            Assert.That(failed, Is.Not.Null, $"{threads} threads");
+            told.Add((failed!.Value.Tick - started, failed.Value.Reason!, refusing.Calls));
+        }
+
+        Assert.That(told.Select(t => t.Latency), Is.All.EqualTo(RuntimeWorlds.JumpOnly.PathLatencyTicks));
+        int searches = int.Parse(System.Text.RegularExpressions.Regex.Match(told[0].Reason, @"^no path animated cleanly in (\d+) searches: \1 jumps? set aside").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
+        Assert.That(searches, Is.GreaterThanOrEqualTo(3), $"at least RepairRounds searches, each setting one jump aside (rounds whose cut or hop failed come on top): {told[0].Reason}");
+        Assert.That(told[0].Animated, Is.InRange(2, searches), "the rounds animated inside the one job (a path met again comes from the kind's cache)");
+        Assert.That(told[1], Is.EqualTo(told[0]), "the same outcome at 0 and 2 threads");
+    }
+
+    /// <summary>Animates as <paramref name="inner"/> does, with a problem on the first move of every path.</summary>
+    private sealed class RefusingAnimator(SimpleMoveAnimator inner) : IJumpAnimator
+    {
+        private int _calls;
+
+        public int Calls => Volatile.Read(ref _calls);
+
+        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
+        {
+            Interlocked.Increment(ref _calls);
+            JumpAnimation a = inner.Animate(moves, frameRate);
+            return new JumpAnimation(a.Model, a.Moves, a.Stances, a.Frames, a.ContactPhases, [new JumpProblem(0, "test: the body refuses this move")], 1, 0, a.LeadIn, a.LeadOut);
+        }
+
+        public bool CanStand(PoseEvaluation pose) => inner.CanStand(pose);
     }
 
     /// <summary>Accepts every pose and arc, counting the calls and those made on the tick thread.</summary>
