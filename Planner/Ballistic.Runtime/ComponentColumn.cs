@@ -36,8 +36,9 @@ public sealed class ComponentColumn<T> : IComponentColumn
     /// <summary>The agent's value, when it has one.</summary>
     public bool TryGet(AgentHandle agent, out T value)
     {
-        value = Has(agent) ? _values[agent.Index] : default;
-        return Has(agent);
+        bool has = Has(agent);
+        value = has ? _values[agent.Index] : default;
+        return has;
     }
 
     /// <summary>Gives <paramref name="agent"/> the value <paramref name="value"/>, adding the component or replacing its value.</summary>

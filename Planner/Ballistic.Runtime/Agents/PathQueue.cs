@@ -9,7 +9,6 @@ namespace Ballistic.Runtime.Agents;
 internal sealed class PathQueue(AgentStore agents)
 {
     private readonly LinkedList<PathRequest> _queue = new();
-    private long _sequence;
 
     /// <summary>Requests waiting for a search (including replaced ones not reached yet).</summary>
     public int Count => _queue.Count;
@@ -33,7 +32,7 @@ internal sealed class PathQueue(AgentStore agents)
     /// </summary>
     public void Request(int slot, int forcedEdge)
     {
-        var request = new PathRequest(agents.HandleOf(slot), agents.Target[slot], _sequence++) { ForcedEdge = forcedEdge };
+        var request = new PathRequest(agents.HandleOf(slot), agents.Target[slot]) { ForcedEdge = forcedEdge };
         agents.Request[slot] = request;
         _queue.AddLast(request);
     }

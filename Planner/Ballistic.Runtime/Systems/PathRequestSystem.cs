@@ -69,7 +69,6 @@ internal sealed class PathRequestSystem : IDisposable
 
             started++;
             request.Start = _agents.Stance[slot]!;
-            request.Rounds++;
             request.DueTick = tick + _settings.PathLatencyTicks;
             var job = new RequestJob(_kinds[_agents.Kind[slot]], _searches[_agents.Kind[slot]], request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
@@ -157,8 +156,7 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
-        request.Moves = outcome.Moves;
-        var path = new AgentPath(request.Target, request.Moves, animation);
+        var path = new AgentPath(request.Target, outcome.Moves, animation);
         _agents.Request[slot] = null;
         _agents.Stance[slot] = null;
         _agents.Path[slot] = path;

@@ -24,10 +24,14 @@ internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathR
 
     public RequestOutcome Run()
     {
-        Roadmap roadmap = kind.Roadmap;
-        IReadOnlyList<Move>? given = _forcedEdge >= 0
-            ? [new Jump(roadmap.Nodes[roadmap.Edges[_forcedEdge].From], roadmap.Nodes[roadmap.Edges[_forcedEdge].To], roadmap.Edges[_forcedEdge].Arc)]
-            : _forcedMoves;
+        IReadOnlyList<Move>? given = _forcedMoves;
+        if (_forcedEdge >= 0)
+        {
+            Roadmap roadmap = kind.Roadmap;
+            RoadmapEdge edge = roadmap.Edges[_forcedEdge];
+            given = [new Jump(roadmap.Nodes[edge.From], roadmap.Nodes[edge.To], edge.Arc)];
+        }
+
         var job = new PlanJob((repair, _) => search.Search(_start, _target, repair), kind.PathAnimator, _repair, rounds, frameRate) { Given = given };
         try
         {
