@@ -51,6 +51,9 @@ public sealed class JumpWorld : IDisposable
     private readonly Action<AgentHandle, string> _commandRefused;
     private bool _disposed;
 
+    /// <summary>Agents flagged <see cref="AgentStore.Rehome"/>: the tick looks for those that stopped only while there are some.</summary>
+    private int _rehoming;
+
     /// <summary>Creates an empty world on a level.</summary>
     /// <param name="level">The level every kind's scene must be built on.</param>
     /// <param name="settings">Tick rate, budgets and threads; defaults when <c>null</c>.</param>
@@ -69,7 +72,7 @@ public sealed class JumpWorld : IDisposable
         _queue = new PathQueue(_agents);
         _requests = new PathRequestRunner(Settings, _agents, _queue, _events, _kinds, _searches);
         var locomotion = new LocomotionRunner(_agents, _events, _queue);
-        _pose = new PoseRunner(_agents, _kinds);
+        _pose = new PoseRunner(_agents);
         var body = new BodyPointRunner(_agents);
         PathRequestSystem = new BuiltInSystem(this, "path-request system", _requests.Update);
         LocomotionSystem = new BuiltInSystem(this, "locomotion system", locomotion.Update);
@@ -197,9 +200,24 @@ public sealed class JumpWorld : IDisposable
     }
 
     /// <summary>
-    /// Replaces a kind's scene, roadmap and animator in place (a rebake), keeping its handle. The replacement must
-    /// pass the checks of <see cref="AddKind"/>, and the kind must have no live agent: remove them first and add them
-    /// again on the new roadmap (where they stood). A refused replacement leaves the kind as it was.
+    /// Replaces a kind's scene, roadmap and animator in place (a rebake), keeping its handle and its agents, each
+    /// under its own handle and never moved by the swap:
+    /// <list type="bullet">
+    /// <item>An agent standing (idle, or waiting for its path) moves over at once: its pending request is dropped and
+    /// its target asked again on the new roadmap.</item>
+    /// <item>An agent in a move (a jump, or a walk) finishes that move as it was animated and stops on the stance it
+    /// ends on, as when its target changes; there it moves over and plans anew toward its target. Between two moves,
+    /// it stops before the next one starts.</item>
+    /// </list>
+    /// Moving over, an agent of an unchanged character keeps the very stance it stands on (the new roadmap's node of
+    /// that pose, or a stance off the roadmap, from which searches steer into it as from any stance placed by
+    /// <see cref="AddAgent"/>). For a changed character it stands on the new roadmap's node whose contacts stand there
+    /// (within <see cref="WorldSettings.Tolerance"/>) or on a stance placed there, its pose buffers sized for the new
+    /// rig; where the new character cannot stand, it is removed with a <see cref="JumpEventKind.Removed"/> event
+    /// saying why.
+    /// The replacement must pass the checks of <see cref="AddKind"/>; a refused replacement leaves the kind and its
+    /// agents as they were. The result's reason counts the agents put on the new roadmap, those finishing a move first
+    /// and those removed.
     /// </summary>
     /// <param name="kind">The kind to replace.</param>
     /// <param name="replacement">The new scene, roadmap and animator.</param>
@@ -220,23 +238,150 @@ public sealed class JumpWorld : IDisposable
             return refused;
         }
 
-        int agents = 0;
+        _kinds[kind.Index] = replacement;
+        _searches[kind.Index] = new RoadmapSearch(replacement, Settings);
+        int placed = 0;
+        int finishing = 0;
+        int removed = 0;
+        string? why = null;
         for (int slot = 0; slot < _agents.HighWater; slot++)
         {
-            if (_agents.Alive[slot] && _agents.Kind[slot] == kind.Index)
+            if (!_agents.Alive[slot] || _agents.Kind[slot] != kind.Index)
             {
-                agents++;
+                continue;
+            }
+
+            if (_agents.Path[slot] is not null)
+            {
+                // In a move: it ends it on the roadmap it was planned on, then stops and moves over (Rehome).
+                _agents.StopAtStance[slot] = true;
+                _queue.Cancel(slot);
+                if (!_agents.Rehome[slot])
+                {
+                    _agents.Rehome[slot] = true;
+                    _rehoming++;
+                }
+
+                finishing++;
+            }
+            else if (Rehome(slot) is { } failure)
+            {
+                removed++;
+                why ??= failure;
+            }
+            else
+            {
+                placed++;
             }
         }
 
-        if (agents > 0)
+        return new RuntimeResult(RuntimeStatus.Ok,
+            $"kind '{replacement.Name}' replaced: {Count(placed)} put on its new roadmap, {Count(finishing)} finishing a move first, {Count(removed)} removed" + (why is null ? "" : $" ({why})"));
+
+        static string Count(int n) => n == 1 ? "1 agent" : $"{n} agents";
+    }
+
+    /// <summary>
+    /// Puts the standing agent in <paramref name="slot"/> on its kind's roadmap (after a rebake) where it stands, its
+    /// target asked again; returns why it was removed instead (a changed character that cannot stand there), or
+    /// <c>null</c>.
+    /// </summary>
+    private string? Rehome(int slot)
+    {
+        if (_agents.Rehome[slot])
         {
-            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"{kind} ('{_kinds[kind.Index].Name}') still has {agents} live agent{(agents == 1 ? "" : "s")}: remove them before replacing it");
+            _agents.Rehome[slot] = false;
+            _rehoming--;
         }
 
-        _kinds[kind.Index] = replacement;
-        _searches[kind.Index] = new RoadmapSearch(replacement, Settings);
-        return RuntimeResult.Success;
+        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        RoadmapNode standing = _agents.Stance[slot]!;
+        _queue.Cancel(slot);
+        if (_agents.Character[slot]!.Scene.Character.Fingerprint == kind.Scene.Character.Fingerprint)
+        {
+            // The same body on the same level: the stance it stands on is still one. It stays exactly there, on the
+            // new roadmap's node of that very pose, or as a stance off the roadmap (searches steer from it).
+            RoadmapNode kept = kind.Roadmap.FindPose(standing.Pose) is int id ? kind.Roadmap.Nodes[id] : standing.Id < 0 ? standing : standing with { Id = -1 };
+            Settle(slot, kind, kept, _agents.Angles[slot]);
+        }
+        else if (Stand(kind, standing.ContactCentre, out RuntimeResult failure) is { } stance)
+        {
+            // Another body: it stands on the new roadmap's node there, or on a stance placed there.
+            Settle(slot, kind, stance.Node, stance.Angles);
+        }
+        else
+        {
+            string reason = $"removed: kind '{kind.Name}' was rebaked for another character, which cannot stand where the agent stood: {failure.Reason}";
+            _pending.Add(new JumpEvent(JumpEventKind.Removed, _agents.HandleOf(slot), Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+            Forget(slot);
+            return reason;
+        }
+
+        if (_agents.HasTarget[slot])
+        {
+            _agents.State[slot] = AgentState.Stance;
+            _queue.Request(slot);
+        }
+
+        return null;
+    }
+
+    /// <summary>Frees the slot of a removed agent: its game components, its rebake and its store entry go.</summary>
+    private void Forget(int slot)
+    {
+        foreach (IComponentColumn column in _columns)
+        {
+            column.Clear(slot);
+        }
+
+        if (_agents.Rehome[slot])
+        {
+            _agents.Rehome[slot] = false;
+            _rehoming--;
+        }
+
+        _agents.Remove(slot);
+    }
+
+    /// <summary>
+    /// Stands the agent in <paramref name="slot"/> on <paramref name="stance"/> of <paramref name="kind"/> with the
+    /// pose <paramref name="angles"/>, idle and pathless: its pose buffers sized for the kind's rig (a rebake may have
+    /// changed it), its rebake settled.
+    /// </summary>
+    private void Settle(int slot, CharacterKind kind, RoadmapNode stance, float[] angles)
+    {
+        if (_agents.Rehome[slot])
+        {
+            _agents.Rehome[slot] = false;
+            _rehoming--;
+        }
+
+        if (!ReferenceEquals(_agents.Character[slot], kind))
+        {
+            _agents.Character[slot] = kind;
+            if (_agents.Angles[slot].Length != angles.Length)
+            {
+                _agents.Angles[slot] = new float[angles.Length];
+            }
+
+            if (_agents.Rotations[slot].Length != kind.JointCount)
+            {
+                _agents.Rotations[slot] = new Quaternion[kind.JointCount];
+            }
+        }
+
+        _agents.Path[slot] = null;
+        _agents.StopAtStance[slot] = false;
+        _agents.Stance[slot] = stance;
+        _agents.Root[slot] = stance.Pose;
+        PlaceBody(slot);
+        if (!ReferenceEquals(angles, _agents.Angles[slot]))
+        {
+            angles.CopyTo(_agents.Angles[slot], 0);
+        }
+
+        _agents.PoseDirty[slot] = true;
+        _agents.State[slot] = AgentState.Idle;
     }
 
     /// <summary>Why <paramref name="kind"/> cannot join this world, or <c>null</c> when it can.</summary>
@@ -295,7 +440,7 @@ public sealed class JumpWorld : IDisposable
             return new AddAgentResult(failure, default);
         }
 
-        int slot = _agents.Add(kind.Index, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[k.JointCount]);
+        int slot = _agents.Add(kind.Index, k, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[k.JointCount]);
         PlaceBody(slot);
         return new AddAgentResult(RuntimeResult.Success, _agents.HandleOf(slot));
     }
@@ -322,12 +467,7 @@ public sealed class JumpWorld : IDisposable
             ? $"removed in mid-{(state == AgentState.Flight ? "flight" : state.ToString().ToLowerInvariant())} of jump {(_agents.Cursor[slot] >> 1) + 1} of {path.Count}"
             : $"removed while {state.ToString().ToLowerInvariant()}";
         _pending.Add(new JumpEvent(JumpEventKind.Removed, agent, Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
-        foreach (IComponentColumn column in _columns)
-        {
-            column.Clear(slot);
-        }
-
-        _agents.Remove(slot);
+        Forget(slot);
         return new RuntimeResult(RuntimeStatus.Ok, reason);
     }
 
@@ -364,7 +504,8 @@ public sealed class JumpWorld : IDisposable
         _agents.HasTarget[slot] = true;
         if (_agents.Path[slot] is { } path)
         {
-            bool near = Vector3.Distance(path.Target, target) <= Settings.ReplanDistance;
+            // (An agent finishing its move before moving onto its kind's new roadmap plans anew from there in any case.)
+            bool near = !_agents.Rehome[slot] && Vector3.Distance(path.Target, target) <= Settings.ReplanDistance;
             _agents.StopAtStance[slot] = !near;
             if (near)
             {
@@ -435,20 +576,14 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
-        if (Stand(_kinds[_agents.Kind[slot]], position, out RuntimeResult failure) is not { } stance)
+        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        if (Stand(kind, position, out RuntimeResult failure) is not { } stance)
         {
             return failure;
         }
 
         _queue.Cancel(slot);
-        _agents.Path[slot] = null;
-        _agents.StopAtStance[slot] = false;
-        _agents.Stance[slot] = stance.Node;
-        _agents.Root[slot] = stance.Node.Pose;
-        PlaceBody(slot);
-        stance.Angles.CopyTo(_agents.Angles[slot], 0);
-        _agents.PoseDirty[slot] = true;
-        _agents.State[slot] = AgentState.Idle;
+        Settle(slot, kind, stance.Node, stance.Angles);
         if (_agents.HasTarget[slot])
         {
             _agents.State[slot] = AgentState.Stance;
@@ -502,13 +637,7 @@ public sealed class JumpWorld : IDisposable
 
         float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
         _queue.Cancel(slot);
-        _agents.Path[slot] = null;
-        _agents.StopAtStance[slot] = false;
-        _agents.Stance[slot] = from;
-        _agents.Root[slot] = from.Pose;
-        PlaceBody(slot);
-        angles.CopyTo(_agents.Angles[slot], 0);
-        _agents.PoseDirty[slot] = true;
+        Settle(slot, kind, from, angles);
         _agents.Target[slot] = roadmap.ContactCentres[jump.To];
         _agents.HasTarget[slot] = true;
         _agents.State[slot] = AgentState.Stance;
@@ -555,13 +684,7 @@ public sealed class JumpWorld : IDisposable
         RoadmapNode from = moves[0].From;
         float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
         _queue.Cancel(slot);
-        _agents.Path[slot] = null;
-        _agents.StopAtStance[slot] = false;
-        _agents.Stance[slot] = from;
-        _agents.Root[slot] = from.Pose;
-        PlaceBody(slot);
-        angles.CopyTo(_agents.Angles[slot], 0);
-        _agents.PoseDirty[slot] = true;
+        Settle(slot, kind, from, angles);
         _agents.Target[slot] = moves[^1].To.ContactCentre;
         _agents.HasTarget[slot] = true;
         _agents.State[slot] = AgentState.Stance;
@@ -609,6 +732,18 @@ public sealed class JumpWorld : IDisposable
             Tick++;
             _events.Clear();
             Commands.Play(this, _commandRefused);
+            if (_rehoming > 0)
+            {
+                // Agents that ended the move they were in when their kind was rebaked: onto the new roadmap.
+                for (int slot = 0; slot < _agents.HighWater && _rehoming > 0; slot++)
+                {
+                    if (_agents.Alive[slot] && _agents.Rehome[slot] && _agents.Path[slot] is null)
+                    {
+                        Rehome(slot);
+                    }
+                }
+            }
+
             foreach (ref readonly JumpEvent e in _pending.Events)
             {
                 _events.Add(e);

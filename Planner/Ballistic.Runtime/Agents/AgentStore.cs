@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Runtime.Agents;
@@ -17,6 +18,15 @@ internal sealed class AgentStore
     public int[] Generation = [];
     public bool[] Alive = [];
     public int[] Kind = [];
+
+    /// <summary>
+    /// The character kind the agent's stance, path and pose buffers belong to: its kind's, but for an agent still
+    /// finishing a move on the roadmap its kind had before a rebake (<see cref="Rehome"/>).
+    /// </summary>
+    public CharacterKind?[] Character = [];
+
+    /// <summary>Put on its kind's new roadmap where it stops (a rebake came while it was in a move).</summary>
+    public bool[] Rehome = [];
     public RootPose[] Root = [];
 
     /// <summary>The body point (ground reference, velocity, heading), written by the body-point system.</summary>
@@ -56,7 +66,7 @@ internal sealed class AgentStore
 
     public AgentHandle HandleOf(int slot) => new(slot, Generation[slot]);
 
-    public int Add(int kind, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
+    public int Add(int kind, CharacterKind character, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
     {
         int slot;
         if (_free.Count > 0)
@@ -75,6 +85,8 @@ internal sealed class AgentStore
         Generation[slot]++;
         Alive[slot] = true;
         Kind[slot] = kind;
+        Character[slot] = character;
+        Rehome[slot] = false;
         Root[slot] = root;
         Body[slot] = new BodyPoint(default, default, Quaternion.Identity);
         State[slot] = AgentState.Idle;
@@ -97,6 +109,8 @@ internal sealed class AgentStore
     public void Remove(int slot)
     {
         Alive[slot] = false;
+        Character[slot] = null;
+        Rehome[slot] = false;
         Path[slot] = null;
         Stance[slot] = null;
         Request[slot] = null;
@@ -111,6 +125,8 @@ internal sealed class AgentStore
         Array.Resize(ref Generation, capacity);
         Array.Resize(ref Alive, capacity);
         Array.Resize(ref Kind, capacity);
+        Array.Resize(ref Character, capacity);
+        Array.Resize(ref Rehome, capacity);
         Array.Resize(ref Root, capacity);
         Array.Resize(ref Body, capacity);
         Array.Resize(ref State, capacity);

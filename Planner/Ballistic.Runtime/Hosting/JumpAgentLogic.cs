@@ -452,7 +452,7 @@ public sealed class JumpAgentLogic
         AgentHandle worldAgent = _host.GetWorldAgent(Agent);
         if (worldAgent != _worldAgent)
         {
-            // Added to the world again (a new roadmap for the region): the old path is gone.
+            // Added to the world again (its region cleared and given a roadmap again, or a roadmap of another level): the old path is gone.
             _worldAgent = worldAgent;
             _path = null;
         }

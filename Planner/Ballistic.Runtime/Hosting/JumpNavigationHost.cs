@@ -21,9 +21,10 @@ namespace Ballistic.Runtime.Hosting;
 /// Order does not matter, as in Godot's <c>_Ready</c> (children before parents, siblings in order): a region handle
 /// exists from <see cref="CreateRegion"/>, before the region has a roadmap; an agent registered on it waits
 /// (<see cref="HostAgentState.Waiting"/>, its target kept) and joins the world where it stands when
-/// <see cref="SetRegionKind"/> gives the region its roadmap. Giving a region a new roadmap (a rebake) keeps its
-/// agents: each is taken out of the world and added again on the new roadmap where it stands (the landing stance of
-/// a jump in progress), its target asked again. Clearing a region's roadmap sends its agents back to waiting; freeing
+/// <see cref="SetRegionKind"/> gives the region its roadmap. Giving a region a new roadmap of the same level (a
+/// rebake) keeps its agents in the world under the same handles, and moves none of them: each is put on the new
+/// roadmap where it stands, or, in a jump or a walk, where that move ends (<see cref="JumpWorld.ReplaceKind"/>), its
+/// target asked again. Clearing a region's roadmap sends its agents back to waiting; freeing
 /// the region detaches them for good; both with a <see cref="JumpEventKind.Removed"/> event saying why.
 /// </para>
 /// <para>
@@ -134,7 +135,8 @@ public sealed class JumpNavigationHost : IDisposable
 
     /// <summary>
     /// Gives the region its roadmap, or a new one (a rebake), or none (<paramref name="kind"/> <c>null</c>: cleared).
-    /// Given one, the region's agents join the world where they stand (their targets asked again); an agent that
+    /// Given one, the region's agents join the world where they stand (their targets asked again; those already on
+    /// its previous roadmap keep their world handles and join where the move they are in ends); an agent that
     /// cannot stand there on the new roadmap becomes <see cref="HostAgentState.Unplaced"/> with a
     /// <see cref="JumpEventKind.Removed"/> event saying why. Cleared, the agents leave the world and wait, also with
     /// a <see cref="JumpEventKind.Removed"/> event. Refused, leaving everything as it was, when the region is
@@ -185,7 +187,26 @@ public sealed class JumpNavigationHost : IDisposable
                 $"region '{r.Name}': its level ({kind.Scene.Level.Source}) is not the level of the other regions ({_world.Level.Source}); one level at a time: free or clear those regions first");
         }
 
-        Lift(r, HostAgentState.Waiting, reason: null);
+        // A rebake on the same level: the world keeps the agents under their handles and moves them onto the new
+        // roadmap itself, each where it stands or, in a move, where that move ends (remembered here in case the new
+        // character cannot stand there and the world lets it go).
+        bool rebake = r.Kind is not null && _world is not null && _world.Level.Fingerprint == kind.Scene.Level.Fingerprint;
+        if (rebake)
+        {
+            foreach (int index in r.Agents)
+            {
+                AgentRecord a = _agents[index];
+                if (a.State == HostAgentState.Active && Stances.Standing(_world!, a.World) is { } standing)
+                {
+                    a.Point = standing.ContactCentre;
+                }
+            }
+        }
+        else
+        {
+            Lift(r, HostAgentState.Waiting, reason: null);
+        }
+
         if (_world is null || (!others && _world.Level.Fingerprint != kind.Scene.Level.Fingerprint))
         {
             // No other region holds a roadmap: (re)start the world on this level.
@@ -221,6 +242,25 @@ public sealed class JumpNavigationHost : IDisposable
         foreach (int index in r.Agents)
         {
             AgentRecord a = _agents[index];
+            if (a.State == HostAgentState.Active)
+            {
+                if (_world.IsValid(a.World))
+                {
+                    placed++;
+                    continue;
+                }
+
+                // Rebaked for another character that cannot stand where the agent stood: the world let it go.
+                _bySlot[a.World.Index] = -1;
+                a.World = default;
+                a.Path = null;
+                a.State = HostAgentState.Unplaced;
+                a.Reason = $"cannot stand at {a.Point} on the new roadmap of region '{r.Name}' (rebaked for another character)";
+                Tell(a, a.Reason);
+                firstFailure ??= a.Reason;
+                continue;
+            }
+
             RuntimeResult result = Place(index, a, r, notify: true);
             if (result.Ok)
             {
@@ -383,8 +423,9 @@ public sealed class JumpNavigationHost : IDisposable
 
     /// <summary>
     /// The agent's handle in <see cref="World"/> while it is <see cref="HostAgentState.Active"/>, for the world's
-    /// queries (root pose, joint buffers, path, next jump); the default handle otherwise. It changes when the agent is
-    /// moved onto a new roadmap: ask again each tick rather than keep it.
+    /// queries (root pose, joint buffers, path, next jump); the default handle otherwise. A rebake of its region on the
+    /// same level keeps it; it changes when the agent leaves the world and joins again (its region cleared or freed, a
+    /// roadmap of another level, a warp of an unplaced agent).
     /// </summary>
     public AgentHandle GetWorldAgent(HostAgentHandle agent) =>
         IsValid(agent) && _agents[agent.Index].State == HostAgentState.Active ? _agents[agent.Index].World : default;
@@ -699,6 +740,15 @@ public sealed class JumpNavigationHost : IDisposable
 
         switch (e.Kind)
         {
+            case JumpEventKind.Removed:
+                // The world let the agent go itself (its region was rebaked for another character, which cannot stand
+                // where the agent stopped): it waits, unplaced, where it stood (remembered at the rebake).
+                _bySlot[slot] = -1;
+                a.World = default;
+                a.Path = null;
+                a.State = HostAgentState.Unplaced;
+                a.Reason = e.Reason;
+                break;
             case JumpEventKind.PathFound:
                 a.Path = _world!.GetPath(e.Agent);
                 break;

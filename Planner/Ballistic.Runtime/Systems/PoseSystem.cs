@@ -1,6 +1,5 @@
 using Ballistic.Planner.Rigs;
 using Ballistic.Runtime.Agents;
-using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Systems;
 
@@ -10,7 +9,7 @@ namespace Ballistic.Runtime.Systems;
 /// standing agent keeps the pose it stopped in and costs nothing. Allocates nothing: the animation was solved when
 /// the path was found.
 /// </summary>
-internal sealed class PoseSystem(AgentStore agents, List<CharacterKind> kinds)
+internal sealed class PoseSystem(AgentStore agents)
 {
     public void Update(double time)
     {
@@ -32,7 +31,7 @@ internal sealed class PoseSystem(AgentStore agents, List<CharacterKind> kinds)
                 continue;
             }
 
-            Rig rig = kinds[agents.Kind[slot]].Model.Rig;
+            Rig rig = agents.Character[slot]!.Model.Rig;
             Span<System.Numerics.Quaternion> rotations = agents.Rotations[slot];
             for (int j = 0; j < rotations.Length; j++)
             {

@@ -341,7 +341,7 @@ public sealed class JumpAgentLogicTests
     }
 
     [Test]
-    public void ARebakeUnderWayDropsThePathAndTheAgentCarriesOnFromWhereItWasPut()
+    public void ARebakeUnderWayLetsTheAgentFinishItsJumpAndCarryOnFromItsLanding()
     {
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 48, minDistance: 6f)[0];
         (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
@@ -351,19 +351,32 @@ public sealed class JumpAgentLogicTests
             logic.Register(region, RuntimeWorlds.Point(from));
             logic.TargetPosition = RuntimeWorlds.Point(to);
             HostingWorlds.Run(logic, MaxTicks, seen => seen.OfType<JumpStartedSignal>().Any());
-            Assert.That(logic.GetCurrentPath(), Is.Not.Empty);
+            Vector3[] oldPath = [.. logic.GetCurrentPath()];
+            Assert.That(oldPath, Is.Not.Empty);
+            Vector3 before = logic.BodyPosition;
 
             Assert.That(host.SetRegionKind(region, HostingWorlds.DesertRebaked).Ok, Is.True);
             host.Step();
             Assert.That(logic.Update().OfType<PathFailedSignal>(), Is.Empty, "a rebake is no failure");
-            Assert.That(logic.GetCurrentPath(), Is.Empty, "the old roadmap's path is gone");
+            Assert.That(logic.GetCurrentPath(), Is.EqualTo(oldPath), "the jump under way is finished on the path it was planned on");
+            Assert.That(Vector3.Distance(logic.BodyPosition, before), Is.LessThan(0.5f), "the body is not moved by the rebake (one tick of flight)");
             Assert.That(logic.IsNavigationFinished(), Is.False, "still heading for the target");
-            Vector3 put = logic.BodyPosition;
 
-            List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished);
-            Assert.That(signals[0], Is.TypeOf<PathChangedSignal>(), string.Join("; ", signals));
+            Vector3? put = null;
+            List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, seen =>
+            {
+                if (put is null && seen.Count > 0 && seen[^1] is PathChangedSignal)
+                {
+                    put = logic.BodyPosition;
+                }
+
+                return HostingWorlds.Finished(seen);
+            });
+            Assert.That(signals.OfType<LandedSignal>(), Is.Not.Empty, string.Join("; ", signals));
+            Assert.That(signals.OfType<PathChangedSignal>(), Is.Not.Empty, string.Join("; ", signals));
             Assert.That(signals[^2], Is.TypeOf<TargetReachedSignal>(), string.Join("; ", signals));
-            Assert.That(Vector3.Distance(logic.GetCurrentPath()[0], put), Is.LessThan(1e-5f), "the new path starts where the agent was put");
+            Assert.That(put, Is.Not.Null);
+            Assert.That(oldPath.Min(p => Vector3.Distance(p, put!.Value)), Is.LessThan(1e-4f), "the new path starts on a stance of the old one: where the jump landed");
             Assert.That(HostingWorlds.WithinTolerance(logic.BodyPosition, RuntimeWorlds.Point(to)), Is.True);
         }
     }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
@@ -6,6 +7,7 @@ using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Hosting;
+using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Planner.Tests.Hosting;
 
@@ -47,7 +49,7 @@ public sealed class JumpNavigationHostTests
     }
 
     [Test]
-    public void ARebakeKeepsTheAgentsWhereTheyStandAndTheirTargets()
+    public void ARebakeKeepsTheAgentsUnderTheirHandlesMovesNoneAndKeepsTheirTargets()
     {
         (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
         using (host)
@@ -59,10 +61,13 @@ public sealed class JumpNavigationHostTests
             Assert.That(host.SetTarget(moving, RuntimeWorlds.Point(pairs[1].To)).Ok, Is.True);
             HostingWorlds.Run(host, [idle, moving], MaxTicks, _ => host.World!.GetState(host.GetWorldAgent(moving)) == AgentState.Flight);
             Assume.That(host.World!.GetState(host.GetWorldAgent(moving)), Is.EqualTo(AgentState.Flight));
-            Assert.That(host.World.TryGetCurrentJump(host.GetWorldAgent(moving), out var jump), Is.True);
-            Vector3 landing = (host.World.GetPath(host.GetWorldAgent(moving))!.Moves[jump.Index].To).ContactCentre;
+            AgentHandle flying = host.GetWorldAgent(moving);
+            Assert.That(host.World.TryGetCurrentJump(flying, out var jump), Is.True);
+            AgentPath oldPath = host.World.GetPath(flying)!;
+            Vector3 landing = oldPath.Moves[jump.Index].To.ContactCentre;
             Vector3 idleAt = host.GetStandingPoint(idle)!.Value;
-            AgentHandle oldWorldAgent = host.GetWorldAgent(idle);
+            AgentHandle standing = host.GetWorldAgent(idle);
+            RootPose idleRoot = host.World.GetRootPose(standing);
             JumpWorld world = host.World;
 
             RuntimeResult rebaked = host.SetRegionKind(region, HostingWorlds.DesertRebaked);
@@ -70,23 +75,41 @@ public sealed class JumpNavigationHostTests
             Assert.That(host.World, Is.SameAs(world), "same level: same world");
             Assert.That(world.Kinds, Has.Count.EqualTo(1), "the kind was replaced, not added");
             Assert.That(world.Kinds[0], Is.SameAs(HostingWorlds.DesertRebaked));
-            Assert.That(world.IsValid(oldWorldAgent), Is.False, "the agents were taken out and added again");
+            Assert.That(host.GetWorldAgent(idle), Is.EqualTo(standing), "the world handles did not change");
+            Assert.That(host.GetWorldAgent(moving), Is.EqualTo(flying));
             foreach (HostAgentHandle agent in new[] { idle, moving })
             {
-                Assert.That(host.IsValid(agent), Is.True, "the host handles did not change");
                 Assert.That(host.GetAgentState(agent), Is.EqualTo(HostAgentState.Active), host.GetAgentReason(agent));
-                Assert.That(host.World.GetKind(host.GetWorldAgent(agent)), Is.EqualTo(host.GetRegionWorldKind(region)));
+                Assert.That(world.IsValid(host.GetWorldAgent(agent)), Is.True);
             }
 
-            Assert.That(HostingWorlds.WithinTolerance(host.GetStandingPoint(idle)!.Value, idleAt), Is.True, "the idle agent stays where it stood");
-            Assert.That(HostingWorlds.WithinTolerance(host.GetStandingPoint(moving)!.Value, landing), Is.True, "the agent in flight is put on its landing stance");
+            Assert.That(host.GetStandingPoint(idle), Is.EqualTo(idleAt), "the idle agent stays exactly where it stood");
+            Assert.That(world.GetRootPose(standing), Is.EqualTo(idleRoot));
+            Assert.That(world.GetStance(standing) is { } now && (Stances.IsNodeOf(HostingWorlds.DesertRebaked.Roadmap, now) || now.Id < 0), Is.True, "a node of the new roadmap, or a stance off it (no id of the old one)");
+            Assert.That(world.GetPath(flying), Is.SameAs(oldPath), "the agent in flight finishes its jump");
+            Assert.That(world.GetState(flying), Is.EqualTo(AgentState.Flight));
+
+            // It flies on, lands on its landing stance and stops there, moved by no more than its own motion.
+            float fastest = oldPath.Moves.Where(m => m.Walk is null).Max(m => MathF.Max(m.Arc.TakeoffVelocity.Length(), (m.Arc.TakeoffVelocity - (9.81f * m.Arc.FlightTime * Vector3.UnitY)).Length()));
+            Vector3 last = world.GetRootPose(flying).Position;
+            float worstStep = 0f;
+            List<AgentEvent> events = HostingWorlds.Run(host, [idle, moving], MaxTicks, _ =>
+            {
+                Vector3 root = world.GetRootPose(flying).Position;
+                worstStep = MathF.Max(worstStep, Vector3.Distance(root, last));
+                last = root;
+                return world.GetPath(flying) is null;
+            })[moving];
+            Assert.That(worstStep, Is.LessThanOrEqualTo(fastest * world.Settings.TickSeconds * 1.01f), "no tick moves the body further than its flight does");
+            Assert.That(events.Select(e => e.Event.Kind), Does.Contain(JumpEventKind.Landed));
+            Assert.That(host.GetStandingPoint(moving), Is.EqualTo(landing), "it stands on its landing stance");
             Assert.That(host.GetTarget(moving), Is.EqualTo(RuntimeWorlds.Point(pairs[1].To)), "its target is kept");
-            Assert.That(host.World.GetTarget(host.GetWorldAgent(moving)), Is.EqualTo(RuntimeWorlds.Point(pairs[1].To)), "and asked again");
+            Assert.That(world.GetTarget(flying), Is.EqualTo(RuntimeWorlds.Point(pairs[1].To)), "and asked again");
 
             Vector3 restart = host.GetStandingPoint(moving)!.Value;
-            List<AgentEvent> events = HostingWorlds.Run(host, [idle, moving], MaxTicks, seen => seen[moving].Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[moving];
+            events.AddRange(HostingWorlds.Run(host, [idle, moving], MaxTicks, seen => seen[moving].Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[moving]);
             Assert.That(events.Select(e => e.Event.Kind), Does.Not.Contain(JumpEventKind.Removed), "a rebake is not a removal");
-            AgentEvent found = events.First(e => e.Event.Kind == JumpEventKind.PathFound);
+            AgentEvent found = events.Last(e => e.Event.Kind == JumpEventKind.PathFound);
             Assert.That(Vector3.Distance(found.Path!.Start.ContactCentre, restart), Is.LessThan(1e-4f), "the new path starts where the agent was put");
             // Each landing but the last is a node of the new roadmap, or a stance the query placed (facing a jump): ids n + 2 on.
             int placedFrom = HostingWorlds.DesertRebaked.Roadmap.Nodes.Count + 2;
