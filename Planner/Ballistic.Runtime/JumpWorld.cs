@@ -31,6 +31,9 @@ namespace Ballistic.Runtime;
 /// Deterministic: the same kinds, settings and calls between the same ticks give the same trajectories and events,
 /// whatever <see cref="WorldSettings.AnimationThreads"/> (with <see cref="WorldSettings.WaitForAnimation"/>, the
 /// default). Calls and <see cref="Step"/> belong on one thread (the game loop); animations are solved on others.
+/// A change called from another thread while the world steps or changes is refused with
+/// <see cref="RuntimeStatus.Busy"/> (<see cref="Step"/> and <see cref="Dispose"/> wait for a call in progress), so a
+/// breach never corrupts the world; changes from other threads go through <see cref="Commands"/>.
 /// No call throws for a bad handle or bad input: each returns a <see cref="RuntimeResult"/> with the reason, and
 /// no exception escapes a tick. After <see cref="Dispose"/> every call that changes the world does nothing and
 /// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step"/> throws. Positions are the trunk centre in world
@@ -50,6 +53,9 @@ public sealed class JumpWorld : IDisposable
     private readonly Action<IJumpSystem, Exception> _systemFailed;
     private readonly Action<AgentHandle, string> _commandRefused;
     private bool _disposed;
+
+    /// <summary>Held by the thread stepping or changing the world (<see cref="Enter"/>).</summary>
+    private readonly object _gate = new();
 
     /// <summary>Agents flagged <see cref="AgentStore.Rehome"/>: the tick looks for those that stopped only while there are some.</summary>
     private int _rehoming;
@@ -138,6 +144,7 @@ public sealed class JumpWorld : IDisposable
     public ComponentColumn<T> AddComponentColumn<T>(string name)
         where T : struct
     {
+        using Gate gate = Wait();
         ObjectDisposedException.ThrowIf(_disposed, this);
         var column = new ComponentColumn<T>(this, _agents, string.IsNullOrWhiteSpace(name) ? typeof(T).Name : name);
         _columns.Add(column);
@@ -184,6 +191,12 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return new AddKindResult(crowded, default);
+        }
+
         if (Gone() is { } gone)
         {
             return new AddKindResult(gone, default);
@@ -223,6 +236,12 @@ public sealed class JumpWorld : IDisposable
     /// <param name="replacement">The new scene, roadmap and animator.</param>
     public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind replacement)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -419,6 +438,12 @@ public sealed class JumpWorld : IDisposable
     /// <param name="position">Where it stands, world metres.</param>
     public AddAgentResult AddAgent(KindHandle kind, Vector3 position)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return new AddAgentResult(crowded, default);
+        }
+
         if (Gone() is { } gone)
         {
             return new AddAgentResult(gone, default);
@@ -451,6 +476,12 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult RemoveAgent(AgentHandle agent)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -482,6 +513,12 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult SetTarget(AgentHandle agent, Vector3 target)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -529,6 +566,12 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Forgets the agent's target: it stops on the next stance of its path (or at once when standing).</summary>
     public RuntimeResult ClearTarget(AgentHandle agent)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -560,6 +603,12 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult Warp(AgentHandle agent, Vector3 position)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -610,6 +659,12 @@ public sealed class JumpWorld : IDisposable
     /// <param name="edge">Index of the jump in the agent's kind's roadmap edges.</param>
     public RuntimeResult PerformJump(AgentHandle agent, int edge)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -656,6 +711,12 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     internal RuntimeResult PerformMoves(AgentHandle agent, IReadOnlyList<Move> moves)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -695,6 +756,12 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
     public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
     {
+        using Gate gate = Enter(out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -720,6 +787,7 @@ public sealed class JumpWorld : IDisposable
     /// <exception cref="InvalidOperationException">Called from inside a system of this world's tick.</exception>
     public void Step()
     {
+        using Gate gate = Wait();
         ObjectDisposedException.ThrowIf(_disposed, this);
         if (IsStepping)
         {
@@ -957,10 +1025,48 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Waits for background animations to end and stops the world.</summary>
     public void Dispose()
     {
+        using Gate gate = Wait();
         if (!_disposed)
         {
             _disposed = true;
             _requests.Dispose();
+        }
+    }
+
+    /// <summary>
+    /// Enters the world for a change from this thread; refused (<paramref name="busy"/> says why, nothing entered)
+    /// while another thread steps or changes it: a world belongs to one thread, and a racing call would corrupt it.
+    /// The thread that holds the world may enter again (a system's call during the tick).
+    /// </summary>
+    private Gate Enter(out RuntimeResult? busy)
+    {
+        if (Monitor.TryEnter(_gate))
+        {
+            busy = null;
+            return new Gate(_gate);
+        }
+
+        busy = new RuntimeResult(RuntimeStatus.Busy,
+            $"refused: another thread is stepping or changing the world right now (this call came from thread {Environment.CurrentManagedThreadId}); a world belongs to one thread: record changes from others in world.Commands");
+        return default;
+    }
+
+    /// <summary>Enters the world, waiting for another thread's call or tick to end (<see cref="Step"/>, <see cref="Dispose"/>, setup).</summary>
+    private Gate Wait()
+    {
+        Monitor.Enter(_gate);
+        return new Gate(_gate);
+    }
+
+    /// <summary>The world entered by this thread until disposed (nothing held for a refused entry).</summary>
+    private readonly ref struct Gate(object? held)
+    {
+        public void Dispose()
+        {
+            if (held is not null)
+            {
+                Monitor.Exit(held);
+            }
         }
     }
 

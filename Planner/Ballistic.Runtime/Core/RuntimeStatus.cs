@@ -24,6 +24,9 @@ public enum RuntimeStatus
     /// <summary>The world (or the host) was disposed: the call did nothing.</summary>
     Disposed,
 
-    /// <summary>The world is stepping: the call is refused from inside a system (record it in <see cref="JumpWorld.Commands"/> instead).</summary>
+    /// <summary>
+    /// The world is stepping or changing: the call is refused from inside a system, or from another thread while the
+    /// world's own thread steps or changes it (record it in <see cref="JumpWorld.Commands"/> instead).
+    /// </summary>
     Busy,
 }

@@ -1,0 +1,108 @@
+using System.Collections.Concurrent;
+using System.Numerics;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Planner.Tests.Runtime;
+
+/// <summary>
+/// A world belongs to one thread; game code on others (jobs, <c>async</c> continuations) breaches that easily. A
+/// racing call is refused with <see cref="RuntimeStatus.Busy"/> and never corrupts the world.
+/// </summary>
+public sealed class ThreadMisuseTests
+{
+    [Test]
+    public void CallsFromEightThreadsWhileANinthStepsAreRefusedOrDoneAndNeverBreakTheWorld()
+    {
+        (JumpWorld world, KindHandle kind) = RuntimeWorlds.Desert();
+        using (world)
+        {
+            Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
+            AgentHandle[] agents = [.. Enumerable.Range(0, 16).Select(i => world.AddAgent(kind, RuntimeWorlds.Point(roadmap.Nodes[i * 7])).Agent)];
+            var statuses = new ConcurrentDictionary<RuntimeStatus, int>();
+            var thrown = new ConcurrentQueue<Exception>();
+            int stop = 0;
+            Thread[] threads = [.. Enumerable.Range(0, 8).Select(t => new Thread(() =>
+            {
+                var random = new Random(100 + t);
+                while (Volatile.Read(ref stop) == 0)
+                {
+                    try
+                    {
+                        AgentHandle agent = agents[random.Next(agents.Length)];
+                        Vector3 point = RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
+                        _ = world.GetRootPose(agent); // reads race the tick too, harmlessly
+                        RuntimeResult result = random.Next(5) switch
+                        {
+                            0 => world.Warp(agent, point),
+                            1 => world.ClearTarget(agent),
+                            2 => world.SetPoseEnabled(agent, random.Next(2) == 0),
+                            3 => world.AddAgent(kind, point) is { Ok: true } added ? Remove(world, added.Agent) : RuntimeResult.Success,
+                            _ => random.Next(20) == 0 ? world.SetTarget(agent, point) : world.ClearTarget(agent),
+                        };
+                        statuses.AddOrUpdate(result.Status, 1, (_, n) => n + 1);
+                    }
+                    catch (Exception e)
+                    {
+                        thrown.Enqueue(e);
+                    }
+                }
+            })).ToArray()];
+            foreach (Thread thread in threads)
+            {
+                thread.Start();
+            }
+
+            try
+            {
+                for (int tick = 0; tick < 240; tick++)
+                {
+                    world.Step();
+                }
+            }
+            catch (Exception e)
+            {
+                thrown.Enqueue(e);
+            }
+            finally
+            {
+                Volatile.Write(ref stop, 1);
+                foreach (Thread thread in threads)
+                {
+                    thread.Join();
+                }
+            }
+
+            Assert.That(thrown, Is.Empty, string.Join("; ", thrown.Take(3).Select(e => $"{e.GetType().Name}: {e.Message}")));
+            Assert.That(statuses.GetValueOrDefault(RuntimeStatus.Busy), Is.Positive, "calls met the ticks and were refused");
+            Assert.That(statuses.GetValueOrDefault(RuntimeStatus.Ok), Is.Positive, "calls between the ticks were done");
+            Assert.That(statuses.Keys, Is.SubsetOf(new[] { RuntimeStatus.Ok, RuntimeStatus.Busy, RuntimeStatus.InvalidPosition }), "no other failure");
+
+            // Whole: every agent is where the world says, and the world still plans, moves and arrives.
+            Span<AgentHandle> live = new AgentHandle[world.AgentCount + 1];
+            Assert.That(world.CopyAgents(live), Is.EqualTo(agents.Length), "the spawned-and-removed agents are gone, the others all there");
+            Assert.That(agents.All(world.IsValid), Is.True);
+            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(roadmap, 1, seed: 61)[0];
+            Assert.That(world.Warp(agents[0], RuntimeWorlds.Point(from)).Ok, Is.True);
+            Assert.That(world.SetTarget(agents[0], RuntimeWorlds.Point(to)).Ok, Is.True);
+            var events = RuntimeWorlds.Run(world, 3600, (w, seen) => seen.Any(e => e.Agent == agents[0] && e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed));
+            Assert.That(events.Last(e => e.Agent == agents[0]).Kind, Is.EqualTo(JumpEventKind.TargetReached));
+        }
+    }
+
+    /// <summary>Removes <paramref name="agent"/>, asking again while the world's thread is busy (a refused call did nothing).</summary>
+    private static RuntimeResult Remove(JumpWorld world, AgentHandle agent)
+    {
+        RuntimeResult result;
+        while ((result = world.RemoveAgent(agent)).Status == RuntimeStatus.Busy)
+        {
+            Thread.Yield();
+        }
+
+        return result;
+    }
+}
