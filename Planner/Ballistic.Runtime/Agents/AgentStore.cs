@@ -31,6 +31,9 @@ internal sealed class AgentStore
 
     /// <summary>The body point (ground reference, velocity, heading), written by the body-point system.</summary>
     public BodyPoint[] Body = [];
+
+    /// <summary>The agent stopped on a stance since its body point was written: the body-point system writes it again.</summary>
+    public bool[] BodyStale = [];
     public AgentState[] State = [];
 
     /// <summary>The stance the agent stands on (null while it follows a path).</summary>
@@ -89,6 +92,7 @@ internal sealed class AgentStore
         Rehome[slot] = false;
         Root[slot] = root;
         Body[slot] = new BodyPoint(default, default, Quaternion.Identity);
+        BodyStale[slot] = false;
         State[slot] = AgentState.Idle;
         Stance[slot] = stance;
         Target[slot] = default;
@@ -129,6 +133,7 @@ internal sealed class AgentStore
         Array.Resize(ref Rehome, capacity);
         Array.Resize(ref Root, capacity);
         Array.Resize(ref Body, capacity);
+        Array.Resize(ref BodyStale, capacity);
         Array.Resize(ref State, capacity);
         Array.Resize(ref Stance, capacity);
         Array.Resize(ref Target, capacity);

@@ -13,6 +13,12 @@ public sealed class AgentPath
 {
     private readonly PathMove[] _moves;
 
+    /// <summary>Each move's takeoff stance's contact centre, and the goal's last (world metres): read every tick by the body-point system.</summary>
+    private readonly Vector3[] _centres;
+
+    /// <summary>Each jump's body-point takeoff velocity (<see cref="BodyMotion.BodyVelocity(in PathMove)"/>), m/s; zero for walks.</summary>
+    private readonly Vector3[] _bodyVelocities;
+
     /// <summary>Builds the path of <paramref name="moves"/> (a <see cref="Planner.Query.PlanResult.Moves"/>) animated by <paramref name="animation"/>.</summary>
     /// <param name="target">The point asked for, world metres.</param>
     /// <param name="moves">The moves, jumps and walks, in order (at least one).</param>
@@ -74,6 +80,15 @@ public sealed class AgentPath
         }
 
         Duration = animation.Duration;
+        _centres = new Vector3[_moves.Length + 1];
+        _bodyVelocities = new Vector3[_moves.Length];
+        for (int i = 0; i < _moves.Length; i++)
+        {
+            _centres[i] = _moves[i].From.ContactCentre;
+            _bodyVelocities[i] = _moves[i].Walk is null ? BodyMotion.BodyVelocity(_moves[i]) : Vector3.Zero;
+        }
+
+        _centres[^1] = _moves[^1].To.ContactCentre;
     }
 
     /// <summary>The point the path was planned to, world metres.</summary>
@@ -96,6 +111,20 @@ public sealed class AgentPath
 
     /// <summary>The move at <paramref name="index"/> without copying the list (for systems).</summary>
     internal ref readonly PathMove Move(int index) => ref _moves[index];
+
+    /// <summary>The contact centre of the stance move <paramref name="index"/> leaves (<see cref="Count"/>: of the goal), world metres.</summary>
+    internal Vector3 StanceCentre(int index) => _centres[index];
+
+    /// <summary>
+    /// The body point and its velocity <paramref name="t"/> seconds after the takeoff of jump move
+    /// <paramref name="index"/>: <see cref="BodyMotion.InJump"/> to the bit, from the values computed once.
+    /// </summary>
+    internal (Vector3 Position, Vector3 Velocity) BodyInJump(int index, float t)
+    {
+        Vector3 v = _bodyVelocities[index];
+        var g = new Vector3(0f, -_moves[index].Arc.Gravity, 0f);
+        return (_centres[index] + (v * t) + (0.5f * t * t * g), v + (g * t));
+    }
 
     /// <summary>Number of moves.</summary>
     public int Count => _moves.Length;

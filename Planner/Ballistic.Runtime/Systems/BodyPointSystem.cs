@@ -25,9 +25,11 @@ internal sealed class BodyPointSystem(AgentStore agents)
 
             if (agents.Path[slot] is not { } path)
             {
-                if (agents.Stance[slot] is { } stance)
+                // Standing still: the point changes only when the agent stops on a stance (placed at once otherwise).
+                if (agents.BodyStale[slot] && agents.Stance[slot] is { } stance)
                 {
                     agents.Body[slot] = Standing(stance.ContactCentre, agents.Root[slot], agents.Body[slot].Heading);
+                    agents.BodyStale[slot] = false;
                 }
 
                 continue;
@@ -39,17 +41,17 @@ internal sealed class BodyPointSystem(AgentStore agents)
             Vector3 velocity = Vector3.Zero;
             if (cursor >= 2 * path.Count)
             {
-                position = path.Move(path.Count - 1).To.ContactCentre;
+                position = path.StanceCentre(path.Count);
             }
             else if ((cursor & 1) == 0)
             {
-                position = path.Move(cursor >> 1).From.ContactCentre;
+                position = path.StanceCentre(cursor >> 1);
             }
             else
             {
                 ref readonly PathMove move = ref path.Move(cursor >> 1);
                 (position, velocity) = move.Walk is null
-                    ? BodyMotion.InJump(move, LocomotionSystem.FlightTime(time, start, move))
+                    ? path.BodyInJump(cursor >> 1, LocomotionSystem.FlightTime(time, start, move))
                     : BodyMotion.InWalk(move, LocomotionSystem.MoveTime(time, start, move));
             }
 
@@ -60,12 +62,24 @@ internal sealed class BodyPointSystem(AgentStore agents)
     /// <summary>The body point standing at <paramref name="centre"/> (a stance's contact centre) with the trunk at <paramref name="root"/>.</summary>
     public static BodyPoint Standing(Vector3 centre, in RootPose root, Quaternion heading) => new(centre, Vector3.Zero, Heading(root, heading));
 
-    /// <summary>The heading of a trunk at <paramref name="root"/>: about +Y, +Z turned toward its forward axis on the ground; <paramref name="previous"/> when it faces straight up or down.</summary>
+    /// <summary>
+    /// The heading of a trunk at <paramref name="root"/>: about +Y, +Z turned toward its forward axis on the ground;
+    /// <paramref name="previous"/> when it faces straight up or down. From the half-angle identities (no trigonometric
+    /// call): it runs for every moving agent every tick.
+    /// </summary>
     private static Quaternion Heading(in RootPose root, Quaternion previous)
     {
-        Vector3 forward = root.Forward;
-        return (forward.X * forward.X) + (forward.Z * forward.Z) > 1e-8f
-            ? Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(forward.X, forward.Z))
-            : previous;
+        // The trunk's forward (+Z turned by the rotation), on the ground plane.
+        Quaternion q = root.Rotation;
+        float x = 2f * ((q.X * q.Z) + (q.W * q.Y));
+        float z = 1f - (2f * ((q.X * q.X) + (q.Y * q.Y)));
+        float across = (x * x) + (z * z);
+        if (!(across > 1e-8f))
+        {
+            return previous;
+        }
+
+        float cos = Math.Clamp(z / MathF.Sqrt(across), -1f, 1f);
+        return new Quaternion(0f, MathF.CopySign(MathF.Sqrt(0.5f * (1f - cos)), x), 0f, MathF.Sqrt(0.5f * (1f + cos)));
     }
 }

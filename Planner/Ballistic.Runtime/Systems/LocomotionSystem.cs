@@ -159,6 +159,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         agents.Path[slot] = null;
         agents.Stance[slot] = stance;
         agents.Root[slot] = root;
+        agents.BodyStale[slot] = true;
         agents.StopAtStance[slot] = false;
         path.Animation.Sample(at, agents.Angles[slot]);
         agents.PoseDirty[slot] = true;
