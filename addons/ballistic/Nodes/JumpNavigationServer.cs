@@ -1,5 +1,4 @@
 #nullable enable
-using System;
 using System.Collections.Generic;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
@@ -24,16 +23,13 @@ public partial class JumpNavigationServer : Node
     /// <summary>Project setting: draw each agent's current path and its jumps' cones at runtime.</summary>
     public const string DrawPathsSetting = "ballistic/debug/draw_paths";
 
-    /// <summary>Ticks run at most per physics frame, so a long hitch does not freeze the game catching up.</summary>
-    private const int MaxTicksPerFrame = 4;
-
     private readonly DebugLines _lines = new(1024);
     private readonly List<JumpRoadmap3D> _roadmaps = [];
     private readonly List<JumpAgent3D> _agents = [];
     private ImmediateMesh? _debugMesh;
     private MeshInstance3D? _debugInstance;
     private StandardMaterial3D? _debugMaterial;
-    private double _accumulated;
+    private FixedTickClock? _clock;
     private DebugPalette _palette = DebugPalette.GodotDefaults;
 
     /// <summary>The server in the tree; created on first use when the autoload is missing.</summary>
@@ -90,12 +86,11 @@ public partial class JumpNavigationServer : Node
     /// <summary>Steps the runtime at its fixed tick and redraws the debug view.</summary>
     public override void _PhysicsProcess(double delta)
     {
-        double tick = Host.Settings.TickSeconds;
-        _accumulated = Math.Min(_accumulated + delta, MaxTicksPerFrame * tick);
-        while (_accumulated >= tick * 0.999)
+        // At most four ticks a frame (a long hitch does not freeze the game catching up); a bad delta adds nothing.
+        _clock ??= new FixedTickClock(Host.Settings.TickSeconds, maxTicksPerFrame: 4);
+        for (int ticks = _clock.Advance(delta); ticks > 0; ticks--)
         {
             Host.Step();
-            _accumulated -= tick;
         }
 
         DrawDebug();
