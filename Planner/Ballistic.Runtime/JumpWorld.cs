@@ -54,7 +54,7 @@ public sealed class JumpWorld : IDisposable
     private readonly Action<AgentHandle, string> _commandRefused;
     private bool _disposed;
 
-    /// <summary>Held by the thread stepping or changing the world (<see cref="Enter"/>).</summary>
+    /// <summary>Held by the thread stepping or changing the world (<see cref="Gate"/>).</summary>
     private readonly object _gate = new();
 
     /// <summary>Agents flagged <see cref="AgentStore.Rehome"/>: the tick looks for those that stopped only while there are some.</summary>
@@ -144,7 +144,7 @@ public sealed class JumpWorld : IDisposable
     public ComponentColumn<T> AddComponentColumn<T>(string name)
         where T : struct
     {
-        using Gate gate = Wait();
+        using Gate gate = Gate.Wait(_gate);
         ObjectDisposedException.ThrowIf(_disposed, this);
         var column = new ComponentColumn<T>(this, _agents, string.IsNullOrWhiteSpace(name) ? typeof(T).Name : name);
         _columns.Add(column);
@@ -191,7 +191,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return new AddKindResult(crowded, default);
@@ -236,7 +236,7 @@ public sealed class JumpWorld : IDisposable
     /// <param name="replacement">The new scene, roadmap and animator.</param>
     public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind replacement)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -438,7 +438,7 @@ public sealed class JumpWorld : IDisposable
     /// <param name="position">Where it stands, world metres.</param>
     public AddAgentResult AddAgent(KindHandle kind, Vector3 position)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return new AddAgentResult(crowded, default);
@@ -476,7 +476,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult RemoveAgent(AgentHandle agent)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -513,7 +513,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult SetTarget(AgentHandle agent, Vector3 target)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -566,7 +566,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Forgets the agent's target: it stops on the next stance of its path (or at once when standing).</summary>
     public RuntimeResult ClearTarget(AgentHandle agent)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -603,7 +603,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult Warp(AgentHandle agent, Vector3 position)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -659,7 +659,7 @@ public sealed class JumpWorld : IDisposable
     /// <param name="edge">Index of the jump in the agent's kind's roadmap edges.</param>
     public RuntimeResult PerformJump(AgentHandle agent, int edge)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -711,7 +711,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     internal RuntimeResult PerformMoves(AgentHandle agent, IReadOnlyList<Move> moves)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -756,7 +756,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
     public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
     {
-        using Gate gate = Enter(out RuntimeResult? busy);
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
         {
             return crowded;
@@ -787,7 +787,7 @@ public sealed class JumpWorld : IDisposable
     /// <exception cref="InvalidOperationException">Called from inside a system of this world's tick.</exception>
     public void Step()
     {
-        using Gate gate = Wait();
+        using Gate gate = Gate.Wait(_gate);
         ObjectDisposedException.ThrowIf(_disposed, this);
         if (IsStepping)
         {
@@ -1025,48 +1025,11 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Waits for background animations to end and stops the world.</summary>
     public void Dispose()
     {
-        using Gate gate = Wait();
+        using Gate gate = Gate.Wait(_gate);
         if (!_disposed)
         {
             _disposed = true;
             _requests.Dispose();
-        }
-    }
-
-    /// <summary>
-    /// Enters the world for a change from this thread; refused (<paramref name="busy"/> says why, nothing entered)
-    /// while another thread steps or changes it: a world belongs to one thread, and a racing call would corrupt it.
-    /// The thread that holds the world may enter again (a system's call during the tick).
-    /// </summary>
-    private Gate Enter(out RuntimeResult? busy)
-    {
-        if (Monitor.TryEnter(_gate))
-        {
-            busy = null;
-            return new Gate(_gate);
-        }
-
-        busy = new RuntimeResult(RuntimeStatus.Busy,
-            $"refused: another thread is stepping or changing the world right now (this call came from thread {Environment.CurrentManagedThreadId}); a world belongs to one thread: record changes from others in world.Commands");
-        return default;
-    }
-
-    /// <summary>Enters the world, waiting for another thread's call or tick to end (<see cref="Step"/>, <see cref="Dispose"/>, setup).</summary>
-    private Gate Wait()
-    {
-        Monitor.Enter(_gate);
-        return new Gate(_gate);
-    }
-
-    /// <summary>The world entered by this thread until disposed (nothing held for a refused entry).</summary>
-    private readonly ref struct Gate(object? held)
-    {
-        public void Dispose()
-        {
-            if (held is not null)
-            {
-                Monitor.Exit(held);
-            }
         }
     }
 

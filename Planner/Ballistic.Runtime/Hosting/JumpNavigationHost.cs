@@ -34,7 +34,10 @@ namespace Ballistic.Runtime.Hosting;
 /// world (holding its roadmap) until another region reuses its slot or the world ends.
 /// </para>
 /// <para>
-/// Like the world: calls and <see cref="Step"/> belong on one thread (the game loop); no call throws for a bad handle
+/// Like the world: calls and <see cref="Step"/> belong on one thread (the game loop); a change called from another
+/// thread while that thread steps or changes the host is refused with <see cref="RuntimeStatus.Busy"/>
+/// (<see cref="Step"/>, draining, <see cref="CreateRegion"/> and the reachability test wait for it instead), so a
+/// breach never corrupts the host. No call throws for a bad handle
 /// or bad input (a <see cref="RuntimeResult"/> says why), nor after <see cref="Dispose"/>: then every call but
 /// <see cref="Step"/> does nothing and says so (<see cref="RuntimeStatus.Disposed"/>, false or no value). Positions are world metres, Y up: an agent's position and
 /// target are points on or near a surface (its body's ground point), as <see cref="JumpWorld.AddAgent"/> takes them.
@@ -60,6 +63,9 @@ public sealed class JumpNavigationHost : IDisposable
     private int _stamp;
     private JumpWorld? _world;
     private bool _disposed;
+
+    /// <summary>Held by the thread stepping or changing the host (<see cref="Gate"/>).</summary>
+    private readonly object _gate = new();
 
     /// <summary>Creates a host with no world yet.</summary>
     /// <param name="settings">The settings of the worlds it creates; defaults when <c>null</c>.</param>
@@ -94,6 +100,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// <param name="name">A name for messages (the node's path); "region N" when empty.</param>
     public RegionHandle CreateRegion(string name)
     {
+        using Gate gate = Gate.Wait(_gate);
         int index;
         RegionRecord region;
         if (_freeRegions.Count > 0)
@@ -147,6 +154,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// <param name="kind">Its character kind: scene, baked roadmap and animator; <c>null</c> to clear the roadmap.</param>
     public RuntimeResult SetRegionKind(RegionHandle region, CharacterKind? kind)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -283,6 +296,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public RuntimeResult FreeRegion(RegionHandle region)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -324,6 +343,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public HostAgentResult RegisterAgent(RegionHandle region, Vector3 position)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return new HostAgentResult(crowded, default);
+        }
+
         if (Gone() is { } gone)
         {
             return new HostAgentResult(gone, default);
@@ -378,6 +403,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// <summary>Unregisters an agent in any state (taking it out of the world; its queue is dropped); its handle becomes invalid.</summary>
     public RuntimeResult UnregisterAgent(HostAgentHandle agent)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Gone() is { } gone)
         {
             return gone;
@@ -455,6 +486,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public RuntimeResult SetTarget(HostAgentHandle agent, Vector3 target)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Usable(agent, out AgentRecord? a) is { } refused)
         {
             return refused;
@@ -475,6 +512,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// <summary>Forgets the agent's target, as <see cref="JumpWorld.ClearTarget"/>.</summary>
     public RuntimeResult ClearTarget(HostAgentHandle agent)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Usable(agent, out AgentRecord? a) is { } refused)
         {
             return refused;
@@ -491,6 +534,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public RuntimeResult Warp(HostAgentHandle agent, Vector3 position)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Usable(agent, out AgentRecord? a) is { } refused)
         {
             return refused;
@@ -527,6 +576,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public RuntimeResult PerformJump(HostAgentHandle agent, int edge)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Usable(agent, out AgentRecord? a) is { } refused)
         {
             return refused;
@@ -555,6 +610,12 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     internal RuntimeResult PerformMoves(HostAgentHandle agent, IReadOnlyList<Move> moves)
     {
+        using Gate gate = Gate.Enter(_gate, "host", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
         if (Usable(agent, out AgentRecord? a) is { } refused)
         {
             return refused;
@@ -578,6 +639,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// <summary>Takes the oldest undelivered event of the agent; false when its queue is empty (or the agent unknown). Allocates nothing.</summary>
     public bool TryDequeueEvent(HostAgentHandle agent, out AgentEvent e)
     {
+        using Gate gate = Gate.Wait(_gate);
         e = default;
         return IsValid(agent) && _agents[agent.Index].Queue.TryDequeue(out e);
     }
@@ -595,6 +657,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// </summary>
     public bool IsTargetReachable(HostAgentHandle agent, Vector3 target)
     {
+        using Gate gate = Gate.Wait(_gate);
         if (_disposed || !IsValid(agent) || !Finite(target) || _agents[agent.Index].State != HostAgentState.Active)
         {
             return false;
@@ -700,6 +763,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// <exception cref="ObjectDisposedException">The host was disposed.</exception>
     public void Step()
     {
+        using Gate gate = Gate.Wait(_gate);
         ObjectDisposedException.ThrowIf(_disposed, this);
         if (_world is null)
         {
@@ -716,6 +780,7 @@ public sealed class JumpNavigationHost : IDisposable
     /// <summary>Stops the world (waiting for its background animations).</summary>
     public void Dispose()
     {
+        using Gate gate = Gate.Wait(_gate);
         if (!_disposed)
         {
             _disposed = true;

@@ -1,10 +1,12 @@
 using System.Collections.Concurrent;
 using System.Numerics;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Hosting;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Runtime;
@@ -23,59 +25,20 @@ public sealed class ThreadMisuseTests
         {
             Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
             AgentHandle[] agents = [.. Enumerable.Range(0, 16).Select(i => world.AddAgent(kind, RuntimeWorlds.Point(roadmap.Nodes[i * 7])).Agent)];
-            var statuses = new ConcurrentDictionary<RuntimeStatus, int>();
-            var thrown = new ConcurrentQueue<Exception>();
-            int stop = 0;
-            Thread[] threads = [.. Enumerable.Range(0, 8).Select(t => new Thread(() =>
+            (ConcurrentDictionary<RuntimeStatus, int> statuses, ConcurrentQueue<Exception> thrown) = Race(seed: 100, world.Step, random =>
             {
-                var random = new Random(100 + t);
-                while (Volatile.Read(ref stop) == 0)
+                AgentHandle agent = agents[random.Next(agents.Length)];
+                Vector3 point = RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
+                _ = world.GetRootPose(agent); // reads race the tick too, harmlessly
+                return random.Next(5) switch
                 {
-                    try
-                    {
-                        AgentHandle agent = agents[random.Next(agents.Length)];
-                        Vector3 point = RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
-                        _ = world.GetRootPose(agent); // reads race the tick too, harmlessly
-                        RuntimeResult result = random.Next(5) switch
-                        {
-                            0 => world.Warp(agent, point),
-                            1 => world.ClearTarget(agent),
-                            2 => world.SetPoseEnabled(agent, random.Next(2) == 0),
-                            3 => world.AddAgent(kind, point) is { Ok: true } added ? Remove(world, added.Agent) : RuntimeResult.Success,
-                            _ => random.Next(20) == 0 ? world.SetTarget(agent, point) : world.ClearTarget(agent),
-                        };
-                        statuses.AddOrUpdate(result.Status, 1, (_, n) => n + 1);
-                    }
-                    catch (Exception e)
-                    {
-                        thrown.Enqueue(e);
-                    }
-                }
-            })).ToArray()];
-            foreach (Thread thread in threads)
-            {
-                thread.Start();
-            }
-
-            try
-            {
-                for (int tick = 0; tick < 240; tick++)
-                {
-                    world.Step();
-                }
-            }
-            catch (Exception e)
-            {
-                thrown.Enqueue(e);
-            }
-            finally
-            {
-                Volatile.Write(ref stop, 1);
-                foreach (Thread thread in threads)
-                {
-                    thread.Join();
-                }
-            }
+                    0 => world.Warp(agent, point),
+                    1 => world.ClearTarget(agent),
+                    2 => world.SetPoseEnabled(agent, random.Next(2) == 0),
+                    3 => world.AddAgent(kind, point) is { Ok: true } added ? Remove(world, added.Agent) : RuntimeResult.Success,
+                    _ => random.Next(20) == 0 ? world.SetTarget(agent, point) : world.ClearTarget(agent),
+                };
+            });
 
             Assert.That(thrown, Is.Empty, string.Join("; ", thrown.Take(3).Select(e => $"{e.GetType().Name}: {e.Message}")));
             Assert.That(statuses.GetValueOrDefault(RuntimeStatus.Busy), Is.Positive, "calls met the ticks and were refused");
@@ -94,11 +57,114 @@ public sealed class ThreadMisuseTests
         }
     }
 
+    [Test]
+    public void CallsToTheGodotServersHostFromEightThreadsWhileANinthStepsItAreRefusedOrDoneAndNeverBreakIt()
+    {
+        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        using (host)
+        {
+            Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
+            HostAgentHandle[] agents = [.. Enumerable.Range(0, 16).Select(i => host.RegisterAgent(region, RuntimeWorlds.Point(roadmap.Nodes[i * 7])).Agent)];
+            (ConcurrentDictionary<RuntimeStatus, int> statuses, ConcurrentQueue<Exception> thrown) = Race(seed: 200, host.Step, random =>
+            {
+                HostAgentHandle agent = agents[random.Next(agents.Length)];
+                Vector3 point = RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
+                return random.Next(5) switch
+                {
+                    0 => host.Warp(agent, point),
+                    1 => host.ClearTarget(agent),
+                    2 => host.RegisterAgent(region, point) is { Result.Ok: true } added ? Unregister(host, added.Agent) : RuntimeResult.Success,
+                    3 => Read(host, agent, point),
+                    _ => random.Next(20) == 0 ? host.SetTarget(agent, point) : host.ClearTarget(agent),
+                };
+            });
+
+            Assert.That(thrown, Is.Empty, string.Join("; ", thrown.Take(3).Select(e => $"{e.GetType().Name}: {e.Message}")));
+            Assert.That(statuses.GetValueOrDefault(RuntimeStatus.Busy), Is.Positive, "calls met the ticks and were refused");
+            Assert.That(statuses.Keys, Is.SubsetOf(new[] { RuntimeStatus.Ok, RuntimeStatus.Busy, RuntimeStatus.InvalidPosition }), "no other failure");
+            Assert.That(host.AgentCount, Is.EqualTo(agents.Length), "the registered-and-unregistered agents are gone, the others all there");
+            Assert.That(agents.All(a => host.GetAgentState(a) == HostAgentState.Active), Is.True);
+            Assert.That(host.World!.AgentCount, Is.EqualTo(agents.Length), "and the world holds exactly them");
+        }
+    }
+
+    /// <summary>
+    /// Eight threads make calls (<paramref name="call"/>, each with its own seeded random) while this one steps 240
+    /// ticks; returns how often each status came back and every exception thrown, on either side.
+    /// </summary>
+    private static (ConcurrentDictionary<RuntimeStatus, int> Statuses, ConcurrentQueue<Exception> Thrown) Race(int seed, Action step, Func<Random, RuntimeResult> call)
+    {
+        var statuses = new ConcurrentDictionary<RuntimeStatus, int>();
+        var thrown = new ConcurrentQueue<Exception>();
+        int stop = 0;
+        Thread[] threads = [.. Enumerable.Range(0, 8).Select(t => new Thread(() =>
+        {
+            var random = new Random(seed + t);
+            while (Volatile.Read(ref stop) == 0)
+            {
+                try
+                {
+                    statuses.AddOrUpdate(call(random).Status, 1, (_, n) => n + 1);
+                }
+                catch (Exception e)
+                {
+                    thrown.Enqueue(e);
+                }
+            }
+        }))];
+        foreach (Thread thread in threads)
+        {
+            thread.Start();
+        }
+
+        try
+        {
+            for (int tick = 0; tick < 240; tick++)
+            {
+                step();
+            }
+        }
+        catch (Exception e)
+        {
+            thrown.Enqueue(e);
+        }
+        finally
+        {
+            Volatile.Write(ref stop, 1);
+            foreach (Thread thread in threads)
+            {
+                thread.Join();
+            }
+        }
+
+        return (statuses, thrown);
+    }
+
     /// <summary>Removes <paramref name="agent"/>, asking again while the world's thread is busy (a refused call did nothing).</summary>
     private static RuntimeResult Remove(JumpWorld world, AgentHandle agent)
     {
         RuntimeResult result;
         while ((result = world.RemoveAgent(agent)).Status == RuntimeStatus.Busy)
+        {
+            Thread.Yield();
+        }
+
+        return result;
+    }
+
+    /// <summary>Drains one event and asks about reachability: calls that wait for the host's thread rather than being refused.</summary>
+    private static RuntimeResult Read(JumpNavigationHost host, HostAgentHandle agent, Vector3 point)
+    {
+        host.TryDequeueEvent(agent, out _);
+        host.IsTargetReachable(agent, point);
+        return RuntimeResult.Success;
+    }
+
+    /// <summary>Unregisters <paramref name="agent"/>, asking again while the host's thread is busy.</summary>
+    private static RuntimeResult Unregister(JumpNavigationHost host, HostAgentHandle agent)
+    {
+        RuntimeResult result;
+        while ((result = host.UnregisterAgent(agent)).Status == RuntimeStatus.Busy)
         {
             Thread.Yield();
         }
