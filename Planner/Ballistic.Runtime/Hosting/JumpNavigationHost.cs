@@ -42,11 +42,16 @@ namespace Ballistic.Runtime.Hosting;
 /// <see cref="Step"/> does nothing and says so (<see cref="RuntimeStatus.Disposed"/>, false or no value). Positions are world metres, Y up: an agent's position and
 /// target are points on or near a surface (its body's ground point), as <see cref="JumpWorld.AddAgent"/> takes them.
 /// Stepping allocates nothing once the queues have grown to their working size: the node of each agent must drain its
-/// queue every physics tick (<see cref="TryDequeueEvent"/>).
+/// queue every physics tick (<see cref="TryDequeueEvent"/>). A queue nobody drains keeps only its newest
+/// <see cref="MaxQueuedEvents"/> events (each move event carries its path, so a node that drains again picks up the
+/// path it is on), so that an agent whose node stopped draining does not hold every path it was ever given.
 /// </para>
 /// </remarks>
 public sealed class JumpNavigationHost : IDisposable
 {
+    /// <summary>Most events an agent's queue holds: past that, the oldest goes as each new one comes.</summary>
+    public const int MaxQueuedEvents = 256;
+
     /// <summary>Nodes near a stance or target that a reachability test starts from or aims at when it is no roadmap node.</summary>
     private const int NearbyNodes = 32;
 
@@ -829,7 +834,7 @@ public sealed class JumpNavigationHost : IDisposable
 
         bool onPath = e.Kind is JumpEventKind.PathFound or JumpEventKind.JumpStarted or JumpEventKind.Landed or JumpEventKind.WalkStarted or JumpEventKind.WalkFinished
             || (e.Kind == JumpEventKind.TargetReached && e.Jump >= 0);
-        a.Queue.Enqueue(new AgentEvent(e, onPath ? a.Path : null));
+        Enqueue(a, new AgentEvent(e, onPath ? a.Path : null));
         if (e.Kind == JumpEventKind.TargetReached)
         {
             a.Path = null;
@@ -921,7 +926,18 @@ public sealed class JumpNavigationHost : IDisposable
 
     /// <summary>Queues a removal event for an agent the host took out of the world (or that could not join it).</summary>
     private void Tell(AgentRecord a, string reason) =>
-        a.Queue.Enqueue(new AgentEvent(new JumpEvent(JumpEventKind.Removed, a.World, _world?.Tick ?? 0, _world?.Time ?? 0, -1, a.Point, a.Target, default, 0f, PlannerStatus.Exact, reason), null));
+        Enqueue(a, new AgentEvent(new JumpEvent(JumpEventKind.Removed, a.World, _world?.Tick ?? 0, _world?.Time ?? 0, -1, a.Point, a.Target, default, 0f, PlannerStatus.Exact, reason), null));
+
+    /// <summary>Queues <paramref name="e"/> for the agent's node, dropping the oldest past <see cref="MaxQueuedEvents"/>.</summary>
+    private static void Enqueue(AgentRecord a, in AgentEvent e)
+    {
+        if (a.Queue.Count >= MaxQueuedEvents)
+        {
+            a.Queue.Dequeue();
+        }
+
+        a.Queue.Enqueue(e);
+    }
 
     /// <summary>Removes the agent from the world and forgets its world handle.</summary>
     private void Unmap(AgentRecord a)

@@ -123,6 +123,46 @@ public sealed class JumpNavigationHostTests
     }
 
     [Test]
+    public void AQueueNobodyDrainsKeepsOnlyItsNewestEventsInOrder()
+    {
+        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        using (host)
+        {
+            Roadmap roadmap = HostingWorlds.Desert.Roadmap;
+            int edge = Enumerable.Range(0, roadmap.Edges.Count).First(e => Vector3.Distance(roadmap.Positions[roadmap.Edges[e].From], roadmap.Positions[roadmap.Edges[e].To]) > 2f);
+            HostAgentHandle agent = host.RegisterAgent(region, RuntimeWorlds.Point(roadmap.Nodes[roadmap.Edges[edge].From])).Agent;
+            int jumps = 0;
+            int ticks = 0;
+            while (jumps * 4 <= JumpNavigationHost.MaxQueuedEvents + 20)
+            {
+                // The same jump again and again (four events each: path, takeoff, landing, arrival), never drained.
+                Assert.That(host.PerformJump(agent, edge).Ok, Is.True);
+                jumps++;
+                for (int i = 0; i < MaxTicks && host.GetTarget(agent) is not null; i++)
+                {
+                    host.Step();
+                    ticks++;
+                }
+
+                Assert.That(host.GetTarget(agent), Is.Null, $"jump {jumps} arrived");
+            }
+
+            Assert.That(host.GetPendingEventCount(agent), Is.EqualTo(JumpNavigationHost.MaxQueuedEvents), $"{jumps * 4} events, the queue holds the newest {JumpNavigationHost.MaxQueuedEvents}");
+            var drained = new List<AgentEvent>();
+            while (host.TryDequeueEvent(agent, out AgentEvent e))
+            {
+                drained.Add(e);
+            }
+
+            Assert.That(drained, Has.Count.EqualTo(JumpNavigationHost.MaxQueuedEvents));
+            Assert.That(drained.Select(e => e.Event.Tick), Is.Ordered, "oldest first");
+            Assert.That(drained[^1].Event.Kind, Is.EqualTo(JumpEventKind.TargetReached), "the newest kept");
+            Assert.That(drained.Count(e => e.Event.Kind == JumpEventKind.TargetReached), Is.LessThan(jumps), "the oldest dropped");
+            Assert.That(drained.Where(e => e.Event.Kind is JumpEventKind.JumpStarted or JumpEventKind.Landed).All(e => e.Path is not null), Is.True, "each move event still carries its path");
+        }
+    }
+
+    [Test]
     public void ARegionOnAnotherLevelIsRefusedWithTheReasonUntilTheOtherLevelIsGone()
     {
         (JumpNavigationHost host, RegionHandle desert) = HostingWorlds.DesertHost();
