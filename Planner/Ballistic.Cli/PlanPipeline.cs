@@ -1,9 +1,11 @@
 using System.Diagnostics;
 using System.Numerics;
+using System.Text;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -100,28 +102,35 @@ internal sealed class PlanPipeline
     /// <summary>Writes the report (and SVG) and prints a summary.</summary>
     public void Write(PlanReport report, Roadmap roadmap, string reportPath, string? svgPath, TextWriter output, string? glbPath = null)
     {
+        // Every file is rendered first and then written as one set, the report last (OutputFile.WriteAll): a failure
+        // replaces none of them, and a kill cannot leave a new animation beside an old report.
+        var files = new List<(string Path, byte[] Bytes)>();
         string? animationLine = null;
         if (glbPath is not null && Animation is { } animation)
         {
             var clock = Stopwatch.StartNew();
-            AnimatedGlbWriter.Save(animation, glbPath, "jumps");
+            files.Add((glbPath, AnimatedGlbWriter.ToBytes(animation, "jumps")));
             var timings = new Dictionary<string, double>(report.Timings) { ["writeGlb"] = clock.Elapsed.TotalSeconds };
             string relative = Path.GetRelativePath(Path.GetDirectoryName(Path.GetFullPath(reportPath))!, Path.GetFullPath(glbPath));
             report = report with { Timings = timings, Animation = new AnimationReport(relative, "jumps", animation) };
             animationLine = $"animation: {animation.Duration:0.00} s ({animation.Stances.Sum():0.00} s of stances between moves), {animation.Frames.Count} frames, {animation.ContactPhases.Count} contact phases; {glbPath}";
         }
 
-        PlanReportWriter.Save(report, reportPath);
         string? phasesPath = null;
         if (svgPath is not null)
         {
-            SvgPlanRenderer.Save(report, roadmap, svgPath);
-            if (Animation is { } animated)
+            var utf8 = new UTF8Encoding(false);
+            files.Add((svgPath, utf8.GetBytes(SvgPlanRenderer.Render(report, roadmap))));
+            if (Animation is { } animated && PhaseStripRenderer.Render(animated) is { } strip)
             {
                 string stem = svgPath.EndsWith(".svg", StringComparison.OrdinalIgnoreCase) ? svgPath[..^4] : svgPath;
-                phasesPath = PhaseStripRenderer.Save(animated, stem + "-phases.svg") ? stem + "-phases.svg" : null;
+                phasesPath = stem + "-phases.svg";
+                files.Add((phasesPath, utf8.GetBytes(strip)));
             }
         }
+
+        files.Add((reportPath, new UTF8Encoding(false).GetBytes(PlanReportWriter.ToJsonString(report))));
+        OutputFile.WriteAll(files);
 
         PlanResult r = report.Result;
         output.WriteLine($"status: {PlanReportWriter.StatusName(r.Status)} ({r.Reason})");

@@ -19,6 +19,56 @@ public static class OutputFile
     public static void Write(string path, ReadOnlySpan<byte> bytes)
     {
         ArgumentNullException.ThrowIfNull(path);
+        Staged staged = Stage(path, bytes);
+        try
+        {
+            staged.Replace();
+        }
+        finally
+        {
+            TryDelete(staged.Temporary);
+        }
+    }
+
+    /// <summary>
+    /// Writes several files that belong together (a report and the files it names), in order: every file is written
+    /// whole to its temporary file first, and only when all of them are on disk do they replace their targets, one
+    /// rename after another, the last named last. A failure writing any of them replaces none (the previous files all
+    /// stay), and an interrupted run leaves at most the span of a few renames in which some are new and some old.
+    /// </summary>
+    /// <exception cref="OutputFileException">A target is not a regular file, or it cannot be written; the message names it.</exception>
+    public static void WriteAll(IReadOnlyList<(string Path, byte[] Bytes)> files)
+    {
+        ArgumentNullException.ThrowIfNull(files);
+        var staged = new List<Staged>(files.Count);
+        try
+        {
+            foreach ((string path, byte[] bytes) in files)
+            {
+                ArgumentNullException.ThrowIfNull(path);
+                staged.Add(Stage(path, bytes));
+            }
+
+            foreach (Staged file in staged)
+            {
+                file.Replace();
+            }
+        }
+        finally
+        {
+            foreach (Staged file in staged)
+            {
+                TryDelete(file.Temporary);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Writes <paramref name="bytes"/> to a new temporary file beside <paramref name="path"/>'s target, flushed to
+    /// disk; the caller replaces the target with it (<see cref="Staged.Replace"/>) and deletes it on every exit path.
+    /// </summary>
+    private static Staged Stage(string path, ReadOnlySpan<byte> bytes)
+    {
         string target = Target(path);
         string directory = Path.GetDirectoryName(target) ?? ".";
         string name = Path.GetFileName(target);
@@ -32,21 +82,33 @@ public static class OutputFile
         {
             Directory.CreateDirectory(directory);
             RemoveStale(directory, name);
-            using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None))
-            {
-                stream.Write(bytes);
-                stream.Flush(flushToDisk: true);
-            }
-
-            File.Move(temporary, target, overwrite: true);
+            using var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None);
+            stream.Write(bytes);
+            stream.Flush(flushToDisk: true);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
+            TryDelete(temporary);
             throw new OutputFileException($"Cannot write {path}: {Reason(e)}", e);
         }
-        finally
+
+        return new Staged(path, target, temporary);
+    }
+
+    /// <summary>A file written whole to <see cref="Temporary"/>, waiting to replace <see cref="Target"/>.</summary>
+    private sealed record Staged(string Path, string Target, string Temporary)
+    {
+        /// <summary>Replaces the target with the temporary file in one rename.</summary>
+        public void Replace()
         {
-            TryDelete(temporary);
+            try
+            {
+                File.Move(Temporary, Target, overwrite: true);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
+            {
+                throw new OutputFileException($"Cannot write {Path}: {Reason(e)}", e);
+            }
         }
     }
 

@@ -147,6 +147,19 @@ public sealed class CliJobTests
             Assert.That(phase.GetProperty("to").GetSingle(), Is.GreaterThanOrEqualTo(phase.GetProperty("from").GetSingle()));
         }
 
+        // Another plan whose picture cannot be written (its path is a folder) replaces neither the animation nor the
+        // report: the files of one plan are written as one set, the report last.
+        byte[] oldReport = File.ReadAllBytes(report);
+        byte[] oldGlb = File.ReadAllBytes(glb);
+        string folder = Path.Combine(_folder, "a-folder.svg");
+        Directory.CreateDirectory(folder);
+        (int failed, _, string failure) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton",
+            "--from", "-6,0,0", "--to", "4,0,0", "--report", report, "--animate", "--glb", glb, "--svg", folder);
+        Assert.That(failed, Is.EqualTo(ExitCode.Output), failure);
+        Assert.That(failure, Does.Contain("a-folder.svg"));
+        Assert.That(File.ReadAllBytes(report), Is.EqualTo(oldReport), "the old report stays");
+        Assert.That(File.ReadAllBytes(glb), Is.EqualTo(oldGlb), "the old animation stays");
+        Assert.That(Directory.GetFiles(Path.GetDirectoryName(glb)!, "*.tmp").Concat(Directory.GetFiles(_folder, "*.tmp")), Is.Empty, "no temporary file is left");
     }
 
     [Test]
