@@ -245,6 +245,10 @@ public static class CharacterSpecFile
         {
             _ = IndexOf(limb.EffectorBone) is int e && e >= 0 ? e : throw Error($"limb '{limb.Name}'", $"names the effector bone '{limb.EffectorBone}', which is not a bone of {file}.");
             _ = IndexOf(limb.RootBone) is int r && r >= 0 ? r : throw Error($"limb '{limb.Name}'", $"names the root bone '{limb.RootBone}', which is not a bone of {file}.");
+            if (string.Equals(limb.RootBone, limb.EffectorBone, StringComparison.Ordinal))
+            {
+                throw Error($"limb '{limb.Name}'", $"names '{limb.EffectorBone}' as both its rootBone and its effectorBone; the chain runs from the bone the limb starts at (a hip or shoulder) down to its effector: give that bone as rootBone.");
+            }
         }
 
         foreach (string bone in spec.Joints.Keys)

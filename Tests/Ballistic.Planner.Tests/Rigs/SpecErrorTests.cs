@@ -74,6 +74,7 @@ public sealed class SpecErrorTests
         yield return Case("not JSON", "{\"schema\": ", "is not valid JSON");
         yield return Case("JSON but not an object", "[1, 2]", "is not a Ballistic limb spec");
         yield return Case("unknown effector", Spec("\"tail\":{\"rootBone\":\"pelvis\",\"effectorBone\":\"tail_tip\"}"), "limb 'tail'", "'tail_tip'", "skeleton.glb");
+        yield return Case("root bone the effector itself", Spec("\"left_foot\":{\"rootBone\":\"left_ankle\",\"effectorBone\":\"left_ankle\"}"), "limb 'left_foot'", "'left_ankle' as both its rootBone and its effectorBone", "rootBone");
         yield return Case("root bone not above the effector", Spec("\"left_foot\":{\"rootBone\":\"right_hip\",\"effectorBone\":\"left_ankle\"}"), "left_foot", "'right_hip' is not an ancestor of 'left_ankle'");
         yield return Case("effector without vertices", Spec("\"nod\":{\"rootBone\":\"neck\",\"effectorBone\":\"head\"}"), "limb 'nod'", "no effectorOffset", "effector bone 'head'", "give effectorOffset");
     }
