@@ -57,6 +57,15 @@ internal static class PlaytestCommand
             int nodes = parse.GetValue(maxNodes) is int n and >= 1 and <= 1_000_000 ? n : throw new CliException($"--max-nodes takes 1 to 1,000,000 nodes, not {parse.GetValue(maxNodes)}.");
             Level lvl = CliInputs.LoadLevel(levelPath);
             (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!);
+            // The character's name comes from its spec (a mod's file): a slug, never a path. The outputs are checked
+            // before the bake and the simulation, which may take minutes.
+            string folder = parse.GetValue(output)!;
+            string stem = Path.Combine(folder, $"{OutputName.Slug(Path.GetFileNameWithoutExtension(levelPath), "level")}-{OutputName.Slug(reduced.Name, "character")}-playtest");
+            foreach (string extension in (string[])[".json", ".svg", ".png"])
+            {
+                OutputFile.Check(stem + extension);
+            }
+
             var scene = PlanningScene.Create(lvl, reduced);
             Roadmap map;
             if (parse.GetValue(roadmap) is { } roadmapPath)
@@ -89,13 +98,13 @@ internal static class PlaytestCommand
             PlaytestResult result = PlaytestRunner.Run(kind, settings, progress, cancellation);
             progress?.Finish();
 
-            // Written even when cancelled: what was simulated is kept (the report says it was cut short).
-            string folder = parse.GetValue(output)!;
-            // The character's name comes from its spec (a mod's file): a slug, never a path.
-            string stem = Path.Combine(folder, $"{OutputName.Slug(Path.GetFileNameWithoutExtension(levelPath), "level")}-{OutputName.Slug(reduced.Name, "character")}-playtest");
-            OutputFile.Write(stem + ".json", PlaytestReportWriter.ToJson(result, levelPath.Replace('\\', '/')));
-            OutputFile.Write(stem + ".svg", System.Text.Encoding.UTF8.GetBytes(PlaytestMapRenderer.Svg(result)));
-            OutputFile.Write(stem + ".png", PlaytestMapRenderer.Png(result));
+            // Written even when cancelled (what was simulated is kept; the report says it was cut short), as one set.
+            OutputFile.WriteAll(
+            [
+                (stem + ".svg", System.Text.Encoding.UTF8.GetBytes(PlaytestMapRenderer.Svg(result))),
+                (stem + ".png", PlaytestMapRenderer.Png(result)),
+                (stem + ".json", PlaytestReportWriter.ToJson(result, levelPath.Replace('\\', '/'))),
+            ]);
             IReadOnlyList<double> times = result.TimesToReach;
             stdout.WriteLine($"agents: {result.Agents.Count} for {result.Ticks / (double)settings.TickRate:0.#} s ({result.Ticks} ticks) in {result.WallSeconds:0.##} s wall time{(result.Cancelled ? ", cancelled" : "")}");
             stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps and {result.WalksTaken} walks ({result.WalkedMetres:0.#} m) taken");

@@ -31,6 +31,18 @@ public static class OutputFile
     }
 
     /// <summary>
+    /// Checks, before long work, that <paramref name="path"/> can be written: it is (or will be) a regular file whose
+    /// folder exists or can be made and takes a new file. Nothing is replaced (an empty temporary file is written
+    /// and removed); the folder is created.
+    /// </summary>
+    /// <exception cref="OutputFileException">It could not be written; the message names <paramref name="path"/>.</exception>
+    public static void Check(string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        TryDelete(Stage(path, []).Temporary);
+    }
+
+    /// <summary>
     /// Writes several files that belong together (a report and the files it names), in order: every file is written
     /// whole to its temporary file first, and only when all of them are on disk do they replace their targets, one
     /// rename after another, the last named last. A failure writing any of them replaces none (the previous files all

@@ -74,4 +74,34 @@ public sealed class OutputNameTests
             Directory.Delete(root, recursive: true);
         }
     }
+
+    [Test]
+    public void APlaytestThatCannotWriteItsOutputsSaysSoBeforeBakingOrSimulating()
+    {
+        string root = Path.Combine(Path.GetTempPath(), "ballistic-outcheck-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(root);
+        try
+        {
+            // --out names a file: no folder can be made there.
+            string notAFolder = Path.Combine(root, "out");
+            File.WriteAllText(notAFolder, "a file, not a folder");
+            using var stdout = new StringWriter();
+            using var stderr = new StringWriter();
+            int code = BallisticCli.Run(
+                ["playtest", "--level", RepositoryFiles.Level("pond"), "--character", "frog", "--agents", "1", "--seconds", "0.5",
+                 "--max-nodes", "20", "--threads", "1", "--out", notAFolder], stdout, stderr);
+            Assert.Multiple(() =>
+            {
+                Assert.That(code, Is.EqualTo(ExitCode.Output), stderr.ToString());
+                Assert.That(stderr.ToString(), Does.Contain("pond-frog-playtest.json"));
+                Assert.That(stderr.ToString().TrimEnd().Split('\n'), Has.Length.EqualTo(1), "one line");
+                Assert.That(stdout.ToString(), Does.Not.Contain("roadmap:"), "refused before the bake");
+                Assert.That(File.ReadAllText(notAFolder), Is.EqualTo("a file, not a folder"));
+            });
+        }
+        finally
+        {
+            Directory.Delete(root, recursive: true);
+        }
+    }
 }

@@ -100,4 +100,24 @@ public sealed class OutputFileTests
         Assert.That(() => OutputFile.Write(Path.Combine(blocked, "out.json"), "y"u8), Throws.TypeOf<OutputFileException>().With.Message.Contains(Path.Combine(blocked, "out.json")));
         Assert.That(Leftovers(), Is.Empty);
     }
+
+    [Test]
+    public void ACheckWritesNothingButSaysWhatCannotBeWritten()
+    {
+        string path = Path.Combine(_folder, "new", "report.json");
+        OutputFile.Check(path);
+        Assert.That(Directory.Exists(Path.Combine(_folder, "new")), Is.True, "its folder is made");
+        Assert.That(Directory.GetFileSystemEntries(Path.Combine(_folder, "new")), Is.Empty, "and nothing written in it");
+
+        string existing = Path.Combine(_folder, "kept.json");
+        File.WriteAllText(existing, "kept");
+        OutputFile.Check(existing);
+        Assert.That(File.ReadAllText(existing), Is.EqualTo("kept"), "an existing file is not touched");
+
+        string blocked = Path.Combine(_folder, "blocked");
+        File.WriteAllText(blocked, "x");
+        Assert.That(() => OutputFile.Check(Path.Combine(blocked, "out.json")), Throws.TypeOf<OutputFileException>().With.Message.Contains(Path.Combine(blocked, "out.json")));
+        Assert.That(() => OutputFile.Check(_folder), Throws.TypeOf<OutputFileException>().With.Message.Contains("folder"));
+        Assert.That(Leftovers(), Is.Empty);
+    }
 }
