@@ -275,11 +275,7 @@ public sealed class JumpWorld : IDisposable
                 // In a move: it ends it on the roadmap it was planned on, then stops and moves over (Rehome).
                 _agents.StopAtStance[slot] = true;
                 _queue.Cancel(slot);
-                if (!_agents.Rehome[slot])
-                {
-                    _agents.Rehome[slot] = true;
-                    _rehoming++;
-                }
+                SetRehome(slot, true);
 
                 finishing++;
             }
@@ -307,12 +303,6 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     private string? Rehome(int slot)
     {
-        if (_agents.Rehome[slot])
-        {
-            _agents.Rehome[slot] = false;
-            _rehoming--;
-        }
-
         CharacterKind kind = _kinds[_agents.Kind[slot]];
         RoadmapNode standing = _agents.Stance[slot]!;
         _queue.Cancel(slot);
@@ -345,6 +335,16 @@ public sealed class JumpWorld : IDisposable
         return null;
     }
 
+    /// <summary>Flags or unflags the agent in <paramref name="slot"/> to move onto its kind's new roadmap where it stops, keeping <see cref="_rehoming"/> its count.</summary>
+    private void SetRehome(int slot, bool on)
+    {
+        if (_agents.Rehome[slot] != on)
+        {
+            _agents.Rehome[slot] = on;
+            _rehoming += on ? 1 : -1;
+        }
+    }
+
     /// <summary>Frees the slot of a removed agent: its game components, its rebake and its store entry go.</summary>
     private void Forget(int slot)
     {
@@ -353,12 +353,7 @@ public sealed class JumpWorld : IDisposable
             column.Clear(slot);
         }
 
-        if (_agents.Rehome[slot])
-        {
-            _agents.Rehome[slot] = false;
-            _rehoming--;
-        }
-
+        SetRehome(slot, false);
         _agents.Remove(slot);
     }
 
@@ -369,12 +364,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     private void Settle(int slot, CharacterKind kind, RoadmapNode stance, float[] angles)
     {
-        if (_agents.Rehome[slot])
-        {
-            _agents.Rehome[slot] = false;
-            _rehoming--;
-        }
-
+        SetRehome(slot, false);
         if (!ReferenceEquals(_agents.Character[slot], kind))
         {
             _agents.Character[slot] = kind;

@@ -269,12 +269,8 @@ public sealed class JumpNavigationHost : IDisposable
                 }
 
                 // Rebaked for another character that cannot stand where the agent stood: the world let it go.
-                _bySlot[a.World.Index] = -1;
-                a.World = default;
-                a.Path = null;
-                a.State = HostAgentState.Unplaced;
-                a.Reason = $"cannot stand at {a.Point} on the new roadmap of region '{r.Name}' (rebaked for another character)";
-                Tell(a, a.Reason);
+                Unplace(a, $"cannot stand at {a.Point} on the new roadmap of region '{r.Name}' (rebaked for another character)");
+                Tell(a, a.Reason!);
                 firstFailure ??= a.Reason;
                 continue;
             }
@@ -813,11 +809,7 @@ public sealed class JumpNavigationHost : IDisposable
             case JumpEventKind.Removed:
                 // The world let the agent go itself (its region was rebaked for another character, which cannot stand
                 // where the agent stopped): it waits, unplaced, where it stood (remembered at the rebake).
-                _bySlot[slot] = -1;
-                a.World = default;
-                a.Path = null;
-                a.State = HostAgentState.Unplaced;
-                a.Reason = e.Reason;
+                Unplace(a, e.Reason ?? "the world removed the agent");
                 break;
             case JumpEventKind.PathFound:
                 a.Path = _world!.GetPath(e.Agent);
@@ -943,9 +935,23 @@ public sealed class JumpNavigationHost : IDisposable
     private void Unmap(AgentRecord a)
     {
         _world!.RemoveAgent(a.World);
+        Forget(a);
+    }
+
+    /// <summary>Forgets the agent's world handle and path (the world no longer holds it).</summary>
+    private void Forget(AgentRecord a)
+    {
         _bySlot[a.World.Index] = -1;
         a.World = default;
         a.Path = null;
+    }
+
+    /// <summary>The world let the agent go (a rebake for a body that cannot stand where it is): it waits, unplaced, for <paramref name="reason"/>.</summary>
+    private void Unplace(AgentRecord a, string reason)
+    {
+        Forget(a);
+        a.State = HostAgentState.Unplaced;
+        a.Reason = reason;
     }
 
     /// <summary>Leaves the region without a roadmap: its world kind is kept for reuse; the world ends when no region holds a roadmap.</summary>

@@ -117,14 +117,10 @@ public sealed class AgentPath
 
     /// <summary>
     /// The body point and its velocity <paramref name="t"/> seconds after the takeoff of jump move
-    /// <paramref name="index"/>: <see cref="BodyMotion.InJump"/> to the bit, from the values computed once.
+    /// <paramref name="index"/>: <see cref="BodyMotion.InJump(in PathMove, float)"/> to the bit, from the values computed once.
     /// </summary>
-    internal (Vector3 Position, Vector3 Velocity) BodyInJump(int index, float t)
-    {
-        Vector3 v = _bodyVelocities[index];
-        var g = new Vector3(0f, -_moves[index].Arc.Gravity, 0f);
-        return (_centres[index] + (v * t) + (0.5f * t * t * g), v + (g * t));
-    }
+    internal (Vector3 Position, Vector3 Velocity) BodyInJump(int index, float t) =>
+        BodyMotion.InJump(_centres[index], _bodyVelocities[index], _moves[index].Arc.Gravity, t);
 
     /// <summary>Number of moves.</summary>
     public int Count => _moves.Length;

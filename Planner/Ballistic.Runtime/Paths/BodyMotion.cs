@@ -30,11 +30,18 @@ internal static class BodyMotion
     /// parabola from the takeoff stance's contact centre at <see cref="BodyVelocity(in PathMove)"/> under the arc's
     /// gravity (the trunk's arc minus the offset interpolated linearly in time, written so as to be exact at takeoff).
     /// </summary>
-    public static (Vector3 Position, Vector3 Velocity) InJump(in PathMove move, float t)
+    public static (Vector3 Position, Vector3 Velocity) InJump(in PathMove move, float t) =>
+        InJump(move.From.ContactCentre, BodyVelocity(move), move.Arc.Gravity, t);
+
+    /// <summary>
+    /// The body point and its velocity <paramref name="t"/> seconds after leaving <paramref name="takeoff"/> (a
+    /// contact centre) at <paramref name="velocity"/> under <paramref name="gravity"/> (m/s², down): the one formula
+    /// of <see cref="InJump(in PathMove, float)"/> and of the paths' cached values (<see cref="AgentPath.BodyInJump"/>).
+    /// </summary>
+    public static (Vector3 Position, Vector3 Velocity) InJump(Vector3 takeoff, Vector3 velocity, float gravity, float t)
     {
-        Vector3 v = BodyVelocity(move);
-        var g = new Vector3(0f, -move.Arc.Gravity, 0f);
-        return (move.From.ContactCentre + (v * t) + (0.5f * t * t * g), v + (g * t));
+        var g = new Vector3(0f, -gravity, 0f);
+        return (takeoff + (velocity * t) + (0.5f * t * t * g), velocity + (g * t));
     }
 
     /// <summary>

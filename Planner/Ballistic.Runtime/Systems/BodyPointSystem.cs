@@ -7,7 +7,7 @@ namespace Ballistic.Runtime.Systems;
 
 /// <summary>
 /// Writes each agent's body point (<see cref="BodyPoint"/>) from its path at this tick, after locomotion: in a jump,
-/// on the body point's parabola (<see cref="BodyMotion.InJump"/>); in a walk, along the ground path
+/// on the body point's parabola (<see cref="BodyMotion.InJump(in PathMove, float)"/>); in a walk, along the ground path
 /// (<see cref="BodyMotion.InWalk"/>); on a stance (standing, or between two moves of the path), its contact centre.
 /// The clocks are locomotion's (<see cref="LocomotionSystem.FlightTime"/>, <see cref="LocomotionSystem.MoveTime"/>),
 /// so the point is exact to the bit with the arc and walk the agent is on. Allocates nothing.
