@@ -137,8 +137,15 @@ internal sealed class WalkGait
     /// <summary>Most times an upright walk that met trouble is walked again with its steps shortened there (<see cref="Animate"/>).</summary>
     private const int ShortenRounds = 4;
 
-    /// <summary>Steps either side of a trouble over which the upright step is shortened.</summary>
+    /// <summary>Steps either side of a trouble over which the upright step is shortened (after <see cref="NarrowSpan"/> did not clear the walk).</summary>
     private const float ShortSpan = 1f;
+
+    /// <summary>
+    /// Steps either side of a trouble over which the upright step is shortened first: a stair or a dune face ahead
+    /// shortens only the level steps just before it, not a window of them, and a biped's cadence on the level stays
+    /// natural. Kept only where it clears the walk; else the walk is shortened over <see cref="ShortSpan"/>.
+    /// </summary>
+    private const float NarrowSpan = 0.5f;
 
     /// <summary>Least duration of a swing, seconds: a foot never steps to a new foothold faster (a contact that moves within a tenth of a second reads as a slide).</summary>
     public const float MinSwing = 0.16f;
@@ -375,7 +382,8 @@ internal sealed class WalkGait
     /// <see cref="UprightReachMargin"/> of the held legs' reach, the trunk lifted toward <see cref="UprightHips"/> as
     /// far as the held feet allow (<see cref="KneeMargin"/>), the hands down beside the thighs swinging
     /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: walked again with steps shortened to
-    /// <see cref="ShortStep"/> only around them (further where the same troubles come back), then lifted with the classic steps, then at the
+    /// <see cref="ShortStep"/> only around them (first within <see cref="NarrowSpan"/> of them, kept where that clears the walk; then within
+    /// <see cref="ShortSpan"/>, further where the same troubles come back), then lifted with the classic steps, then at the
     /// stances' own height; the first clean one is kept, else the one with the fewest problems.
     /// </summary>
     /// <param name="move">Index of the walk in the path, for problems.</param>
@@ -465,6 +473,25 @@ internal sealed class WalkGait
         // too, the earlier places kept, until a walk does worse than the best yet. A walk that meets only the same
         // troubles again is shortened further there (ShortStep again each time, down to LeastShortStep: a foot
         // going down two stair treads at once takes one), and stops when that no longer helps.
+        // First over NarrowSpan, ShortStep only, shortened too where new troubles come up: kept if that clears the walk.
+        float[] narrowAt = best.Troubles;
+        for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && narrowAt.Length > 0; again++)
+        {
+            Clip narrow = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, narrowAt, shortSpan: NarrowSpan).Animate();
+            if (narrow.Problems.Count == 0)
+            {
+                return narrow;
+            }
+
+            float[] more = [.. narrowAt, .. narrow.Troubles];
+            if (Run.Places(more) == Run.Places(narrowAt))
+            {
+                break;
+            }
+
+            narrowAt = more;
+        }
+
         float[] shortAt = best.Troubles;
         float share = ShortStep;
         float bestShare = ShortStep;
@@ -657,6 +684,7 @@ internal sealed class WalkGait
         private readonly float[] _shortAt;
         private readonly float[] _lowAt;
         private readonly float _shortShare;
+        private readonly float _shortSpan;
 
         /// <summary>How many places (times on the walk's clock, to the nearest 0.05 s) <paramref name="times"/> names.</summary>
         public static int Places(float[] times) => Rounded(times).Length;
@@ -687,9 +715,10 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan)
         {
             _shortShare = shortShare;
+            _shortSpan = shortSpan;
             _roll = roll;
             _shortAt = Rounded(shortAt ?? []);
             _lowAt = Rounded(lowAt ?? []);
@@ -1785,12 +1814,12 @@ internal sealed class WalkGait
 
         /// <summary>
         /// The share of the step taken at <paramref name="time"/>: this run's shortened share (<see cref="ShortStep"/>,
-        /// or less where the same troubles came back) within
-        /// <see cref="ShortSpan"/> steps' time of a trouble the previous run met (on a hollow, a bump or a stance's
+        /// or less where the same troubles came back) within this run's span (<see cref="NarrowSpan"/> or
+        /// <see cref="ShortSpan"/> steps' time) of a trouble the previous run met (on a hollow, a bump or a stance's
         /// cramped ground the legs reach less far), rising smoothly to 1 a step beyond.
         /// </summary>
         private float Shortened(float time) =>
-            _shortAt.Length == 0 ? 1f : float.Lerp(_shortShare, 1f, Clear(time, _shortAt, ShortSpan * StepTime, StepTime));
+            _shortAt.Length == 0 ? 1f : float.Lerp(_shortShare, 1f, Clear(time, _shortAt, _shortSpan * StepTime, StepTime));
 
         /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>
         private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
