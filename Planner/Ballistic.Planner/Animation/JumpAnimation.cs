@@ -57,7 +57,10 @@ public sealed class JumpAnimation
         _jumpMoves = [.. Enumerable.Range(0, _moves.Length).Where(i => _moves[i] is Jump)];
         Arcs = [.. _jumpMoves.Select(i => ((Jump)_moves[i]).Arc)];
         Stances = [.. stances];
-        Frames = [.. frames];
+        _frames = [.. frames];
+        Frames = Array.AsReadOnly(_frames);
+        _frameTimes = [.. _frames.Select(f => f.Time)];
+        _frameLookup = new SortedLookup(_frameTimes);
         ContactPhases = [.. contactPhases];
         Problems = [.. problems];
         FailedContactPoses = failedContactPoses;
@@ -82,9 +85,22 @@ public sealed class JumpAnimation
             {
                 float lift = Frames[f].Root.Position.Y - walk.PoseAt(t).Position.Y;
                 _lifts[f] = MathF.Abs(lift) >= 1e-4f ? lift : 0f;
+                _lifted |= _lifts[f] != 0f;
             }
         }
     }
+
+    /// <summary>The frames, in time order (<see cref="Frames"/>), read by the per-tick samplers without an interface call.</summary>
+    private readonly AnimationFrame[] _frames;
+
+    /// <summary>Each frame's time (seconds), contiguous: the per-tick samplers search it for the frames around a time.</summary>
+    private readonly float[] _frameTimes;
+
+    /// <summary>Finds the frames around a time in <see cref="_frameTimes"/> (<see cref="FrameAtOrAfter"/>).</summary>
+    private readonly SortedLookup _frameLookup;
+
+    /// <summary>Whether any frame's root is lifted above its walk's path (else <see cref="WalkLift"/> is 0 everywhere).</summary>
+    private readonly bool _lifted;
 
     /// <summary>Per frame: how far (metres, world up) its root is above its walk's path; 0 outside walks.</summary>
     private readonly float[] _lifts;
@@ -150,7 +166,7 @@ public sealed class JumpAnimation
     {
         int m = MoveIndex(time);
         float t = time - _moveStarts[m];
-        if (!(t >= 0f && t <= _moves[m].Duration) && Frames.Count > 0)
+        if (!(t >= 0f && t <= _moves[m].Duration) && _frames.Length > 0)
         {
             return FrameRoot(time);
         }
@@ -171,15 +187,15 @@ public sealed class JumpAnimation
     /// </summary>
     public float WalkLift(float time)
     {
-        if (_lifts.Length == 0)
+        if (!_lifted)
         {
             return 0f;
         }
 
         int hi = FrameAtOrAfter(time);
         int lo = Math.Max(0, hi - 1);
-        float span = Frames[hi].Time - Frames[lo].Time;
-        float w = span > 0f ? Math.Clamp((time - Frames[lo].Time) / span, 0f, 1f) : 1f;
+        float span = _frameTimes[hi] - _frameTimes[lo];
+        float w = span > 0f ? Math.Clamp((time - _frameTimes[lo]) / span, 0f, 1f) : 1f;
         return _lifts[lo] == 0f && _lifts[hi] == 0f ? 0f : float.Lerp(_lifts[lo], _lifts[hi], w);
     }
 
@@ -191,33 +207,15 @@ public sealed class JumpAnimation
     private RootPose FrameRoot(float time)
     {
         int hi = FrameAtOrAfter(time);
-        AnimationFrame after = Frames[hi];
-        AnimationFrame before = Frames[Math.Max(0, hi - 1)];
+        AnimationFrame after = _frames[hi];
+        AnimationFrame before = _frames[Math.Max(0, hi - 1)];
         float span = after.Time - before.Time;
         float w = span > 0f ? Math.Clamp((time - before.Time) / span, 0f, 1f) : 1f;
         return new RootPose(Vector3.Lerp(before.Root.Position, after.Root.Position, w), Quaternion.Slerp(before.Root.Rotation, after.Root.Rotation, w));
     }
 
     /// <summary>Index of the first frame at or after <paramref name="time"/> (the last frame when none is).</summary>
-    private int FrameAtOrAfter(float time)
-    {
-        int hi = 0;
-        int lo = Frames.Count - 1;
-        while (hi < lo)
-        {
-            int mid = (hi + lo) / 2;
-            if (Frames[mid].Time < time)
-            {
-                hi = mid + 1;
-            }
-            else
-            {
-                lo = mid;
-            }
-        }
-
-        return hi;
-    }
+    private int FrameAtOrAfter(float time) => _frameLookup.FirstAtOrAbove(time);
 
     /// <summary>The full pose at clip time <paramref name="time"/>: the root on the parabola, the angles interpolated between frames.</summary>
     public (RootPose Root, float[] Angles) Sample(float time)
@@ -240,10 +238,11 @@ public sealed class JumpAnimation
         }
 
         int hi = FrameAtOrAfter(time);
-        float[] after = Frames[hi].Angles;
-        float[] before = Frames[Math.Max(0, hi - 1)].Angles;
-        float span = Frames[hi].Time - Frames[Math.Max(0, hi - 1)].Time;
-        float w = span > 0f ? Math.Clamp((time - Frames[Math.Max(0, hi - 1)].Time) / span, 0f, 1f) : 1f;
+        int lo = Math.Max(0, hi - 1);
+        float[] after = _frames[hi].Angles;
+        float[] before = _frames[lo].Angles;
+        float span = _frameTimes[hi] - _frameTimes[lo];
+        float w = span > 0f ? Math.Clamp((time - _frameTimes[lo]) / span, 0f, 1f) : 1f;
         for (int i = 0; i < after.Length; i++)
         {
             angles[i] = float.Lerp(before[i], after[i], w);

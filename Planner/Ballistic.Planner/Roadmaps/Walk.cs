@@ -26,6 +26,10 @@ public sealed record Walk : Move
 
     private readonly Vector3[] _path;
     private readonly float[] _distances;
+
+    /// <summary>Finds the segment under a distance in <see cref="_distances"/> (<see cref="PointAt"/>).</summary>
+    private readonly SortedLookup _lookup;
+
     private readonly Quaternion _startHeading;
     private readonly Quaternion _endHeading;
     private readonly Vector3 _startUpright;
@@ -84,6 +88,7 @@ public sealed record Walk : Move
         Speed = speed;
         TurnRate = turnRate;
         Length = _distances[^1];
+        _lookup = new SortedLookup(_distances);
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
         _startHeading = Upright(HeadingAt(0f));
@@ -219,16 +224,10 @@ public sealed record Walk : Move
     public Vector3 PointAt(float distance)
     {
         distance = Math.Clamp(distance, 0f, Length);
-        int i = Array.BinarySearch(_distances, distance);
-        if (i >= 0)
+        int i = _lookup.FirstAtOrAbove(distance);
+        if (_distances[i] == distance)
         {
             return _path[i];
-        }
-
-        i = ~i;
-        if (i >= _path.Length)
-        {
-            return _path[^1];
         }
 
         float span = _distances[i] - _distances[i - 1];
