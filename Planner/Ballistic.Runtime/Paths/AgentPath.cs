@@ -19,6 +19,9 @@ public sealed class AgentPath
     /// <summary>Each jump's body-point takeoff velocity (<see cref="BodyMotion.BodyVelocity(in PathMove)"/>), m/s; zero for walks.</summary>
     private readonly Vector3[] _bodyVelocities;
 
+    /// <summary>Each walk's ends (<see cref="WalkEnds"/>): read every tick by the body-point system; default for jumps.</summary>
+    private readonly WalkEnds[] _walkEnds;
+
     /// <summary>Builds the path of <paramref name="moves"/> (a <see cref="Planner.Query.PlanResult.Moves"/>) animated by <paramref name="animation"/>.</summary>
     /// <param name="target">The point asked for, world metres.</param>
     /// <param name="moves">The moves, jumps and walks, in order (at least one).</param>
@@ -82,10 +85,12 @@ public sealed class AgentPath
         Duration = animation.Duration;
         _centres = new Vector3[_moves.Length + 1];
         _bodyVelocities = new Vector3[_moves.Length];
+        _walkEnds = new WalkEnds[_moves.Length];
         for (int i = 0; i < _moves.Length; i++)
         {
             _centres[i] = _moves[i].From.ContactCentre;
             _bodyVelocities[i] = _moves[i].Walk is null ? BodyMotion.BodyVelocity(_moves[i]) : Vector3.Zero;
+            _walkEnds[i] = _moves[i].Walk is { } walk ? WalkEnds.Of(_moves[i].From.ContactCentre, _moves[i].To.ContactCentre, walk) : default;
         }
 
         _centres[^1] = _moves[^1].To.ContactCentre;
@@ -121,6 +126,13 @@ public sealed class AgentPath
     /// </summary>
     internal (Vector3 Position, Vector3 Velocity) BodyInJump(int index, float t) =>
         BodyMotion.InJump(_centres[index], _bodyVelocities[index], _moves[index].Arc.Gravity, t);
+
+    /// <summary>
+    /// The body point and its velocity <paramref name="t"/> seconds after the start of walk move
+    /// <paramref name="index"/>: <see cref="BodyMotion.InWalk(in PathMove, float)"/> to the bit, from the ends computed once.
+    /// </summary>
+    internal (Vector3 Position, Vector3 Velocity) BodyInWalk(int index, float t) =>
+        BodyMotion.InWalk(_moves[index].Walk!, _walkEnds[index], t);
 
     /// <summary>Number of moves.</summary>
     public int Count => _moves.Length;

@@ -56,13 +56,20 @@ internal static class BodyMotion
     public static (Vector3 Position, Vector3 Velocity) InWalk(in PathMove move, float t)
     {
         Walk walk = move.Walk ?? throw new ArgumentException($"Move {move.Index} is a jump, not a walk.", nameof(move));
-        IReadOnlyList<Vector3> path = walk.Path;
-        Vector3 startShift = move.From.ContactCentre - path[0];
-        Vector3 endShift = move.To.ContactCentre - path[^1];
+        return InWalk(walk, WalkEnds.Of(move.From.ContactCentre, move.To.ContactCentre, walk), t);
+    }
+
+    /// <summary>
+    /// <see cref="InWalk(in PathMove, float)"/> on <paramref name="walk"/> between the contact centres and offsets of
+    /// <paramref name="ends"/> (computed once per path: <see cref="AgentPath.BodyInWalk"/>): the one formula.
+    /// </summary>
+    internal static (Vector3 Position, Vector3 Velocity) InWalk(Walk walk, in WalkEnds ends, float t)
+    {
+        (Vector3 fromCentre, Vector3 toCentre, Vector3 startShift, Vector3 endShift) = ends;
         float length = walk.Length;
         float d = walk.DistanceAt(t);
-        Vector3 position = d <= 0f ? move.From.ContactCentre
-            : d >= length ? move.To.ContactCentre
+        Vector3 position = d <= 0f ? fromCentre
+            : d >= length ? toCentre
             : walk.PointAt(d) + Vector3.Lerp(startShift, endShift, d / length);
         if (!(t >= 0f && t <= walk.Duration) || length <= 0f)
         {

@@ -8,7 +8,7 @@ namespace Ballistic.Runtime.Systems;
 /// <summary>
 /// Writes each agent's body point (<see cref="BodyPoint"/>) from its path at this tick, after locomotion: in a jump,
 /// on the body point's parabola (<see cref="BodyMotion.InJump(in PathMove, float)"/>); in a walk, along the ground path
-/// (<see cref="BodyMotion.InWalk"/>); on a stance (standing, or between two moves of the path), its contact centre.
+/// (<see cref="BodyMotion.InWalk(in PathMove, float)"/>); on a stance (standing, or between two moves of the path), its contact centre.
 /// The clocks are locomotion's (<see cref="LocomotionSystem.FlightTime"/>, <see cref="LocomotionSystem.MoveTime"/>),
 /// so the point is exact to the bit with the arc and walk the agent is on. Allocates nothing.
 /// </summary>
@@ -52,7 +52,7 @@ internal sealed class BodyPointSystem(AgentStore agents)
                 ref readonly PathMove move = ref path.Move(cursor >> 1);
                 (position, velocity) = move.Walk is null
                     ? path.BodyInJump(cursor >> 1, LocomotionSystem.FlightTime(time, start, move))
-                    : BodyMotion.InWalk(move, LocomotionSystem.MoveTime(time, start, move));
+                    : path.BodyInWalk(cursor >> 1, LocomotionSystem.MoveTime(time, start, move));
             }
 
             agents.Body[slot] = new BodyPoint(position, velocity, Heading(agents.Root[slot], agents.Body[slot].Heading));

@@ -117,6 +117,10 @@ public sealed class EcsTests
                 else if (state == AgentState.Walking)
                 {
                     Assert.That(body.Velocity.Length(), Is.LessThanOrEqualTo(world.TryGetCurrentWalk(agent, out WalkInfo walk) ? walk.Walk.Speed * 1.01f : 0f));
+
+                    // The body-point system's values, cached on the path, are the one formula's to the bit.
+                    PathMove move = world.GetPath(agent)!.Moves[walk.Index];
+                    Assert.That(body.Position, Is.EqualTo(BodyMotion.InWalk(move, (float)(world.Time - walk.StartTime)).Position), $"tick {world.Tick}");
                     walking++;
                 }
                 else if (!inJump && state is AgentState.Stance or AgentState.Idle && previous is { } before && before.Velocity.Y < -1f)
