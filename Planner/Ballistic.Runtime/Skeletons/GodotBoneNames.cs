@@ -8,7 +8,7 @@ namespace Ballistic.Runtime.Skeletons;
 /// and '/' with '_' (<c>SkinTool::_sanitize_bone_name</c>), naming an unnamed bone "bone", and making repeated names
 /// unique with "_2", "_3"… (<c>SkinTool::_gen_unique_bone_name</c>): "mixamorig:Hips" becomes "mixamorig_Hips".
 /// </summary>
-public static class GodotBoneNames
+internal static class GodotBoneNames
 {
     /// <summary>The bone name Godot's importer gives a node called <paramref name="name"/> (before making it unique): ':' and '/' become '_', an empty name "bone".</summary>
     public static string Sanitize(string name)
