@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using System.Runtime.InteropServices;
 using System.Text.Json.Nodes;
 using Ballistic.Authoring.Gltf;
 using Ballistic.Planner.Gltf;
@@ -105,6 +106,43 @@ public sealed class HostileCharacterTests
             Assert.That(Broken(j => j["nodes"]![first]!["scale"] = new JsonArray(1e30f, 1e30f, 1e30f)), Does.Contain("bone 'pelvis' has a scale or translation beyond ±1e6"));
             Assert.That(Broken(j => j["accessors"]![0]!["count"] = 150_000_000), Does.Contain("dog.gltf: accessor 0 reads past the end of buffer view"));
             Assert.That(Broken(j => j["nodes"]![first]!["children"]!.AsArray().Add(first)), Does.Contain("lists itself as a child"));
+        });
+    }
+
+    [Test]
+    public void SingularInverseBindMatricesAndBadSkinWeightsAreNamed()
+    {
+        // Before, an all-zero inverse bind matrix folded the skinned mesh onto a point and NaN or negative weights
+        // were skipped: both loaded and were written back into the animated GLB.
+        var dog = new BrokenDog(_folder);
+        JsonObject pristine = dog.Pristine;
+        int inverseBind = pristine["skins"]![0]!["inverseBindMatrices"]!.GetValue<int>();
+        int joint = pristine["skins"]![0]!["joints"]![1]!.GetValue<int>();
+        int weights = pristine["meshes"]![0]!["primitives"]![0]!["attributes"]!["WEIGHTS_0"]!.GetValue<int>();
+
+        // Matrix 1 (glTF's column-major floats 16 to 31) changed by change(floats).
+        string Matrix(Action<float[]> change) => dog.LoadPatched((json, bin) =>
+        {
+            Span<float> floats = MemoryMarshal.Cast<byte, float>(BrokenDog.Bytes(json, bin, inverseBind).Bytes.Span)[16..32];
+            float[] matrix = floats.ToArray();
+            change(matrix);
+            matrix.CopyTo(floats);
+        });
+
+        string Weight(float w) => dog.LoadPatched((json, bin) =>
+        {
+            (Memory<byte> bytes, int type) = BrokenDog.Bytes(json, bin, weights);
+            Assert.That(type, Is.EqualTo(5126), "the dog's weights are floats");
+            MemoryMarshal.Cast<byte, float>(bytes.Span)[0] = w;
+        });
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(Matrix(m => Array.Clear(m)), Does.Contain($"dog.gltf: skin 0's inverse bind matrix 1 (of joint node {joint}) is not affine (its fourth row must be 0, 0, 0, 1)"));
+            Assert.That(Matrix(m => Array.Clear(m, 0, 11)), Does.Contain($"skin 0's inverse bind matrix 1 (of joint node {joint}) does not invert"));
+            Assert.That(Matrix(m => m[5] = float.NaN), Does.Contain($"skin 0's inverse bind matrix 1 (of joint node {joint}) has a number that is not finite"));
+            Assert.That(Weight(float.NaN), Does.Contain("dog.gltf: primitive 0 of mesh 0, vertex 0 has a skin weight of NaN: weights must be finite and not negative"));
+            Assert.That(Weight(-0.5f), Does.Contain("vertex 0 has a skin weight of -0.5"));
         });
     }
 }

@@ -32,4 +32,36 @@ internal sealed class BrokenDog
         TestContext.Out.WriteLine(message);
         return message;
     }
+
+    /// <summary>
+    /// As <see cref="Load"/>, <paramref name="change"/> also given the bytes of the glTF's buffer to change (read
+    /// and written through <see cref="Bytes"/>); the buffer is put back as it was afterwards.
+    /// </summary>
+    public string LoadPatched(Action<JsonObject, byte[]> change)
+    {
+        string bin = Path.Combine(Path.GetDirectoryName(_gltf)!, _pristine["buffers"]![0]!["uri"]!.GetValue<string>());
+        byte[] original = File.ReadAllBytes(bin);
+        try
+        {
+            return Load(json =>
+            {
+                byte[] bytes = (byte[])original.Clone();
+                change(json, bytes);
+                File.WriteAllBytes(bin, bytes);
+            });
+        }
+        finally
+        {
+            File.WriteAllBytes(bin, original);
+        }
+    }
+
+    /// <summary>The bytes of accessor <paramref name="accessor"/>'s first element on in <paramref name="bin"/> (the buffer of <paramref name="json"/>), and its component type.</summary>
+    public static (Memory<byte> Bytes, int ComponentType) Bytes(JsonObject json, byte[] bin, int accessor)
+    {
+        JsonNode a = json["accessors"]![accessor]!;
+        JsonNode view = json["bufferViews"]![a["bufferView"]!.GetValue<int>()]!;
+        int offset = (view["byteOffset"]?.GetValue<int>() ?? 0) + (a["byteOffset"]?.GetValue<int>() ?? 0);
+        return (bin.AsMemory(offset), a["componentType"]!.GetValue<int>());
+    }
 }
