@@ -371,7 +371,7 @@ internal sealed class GltfSkeleton
                 {
                     ReadOnlySpan<float> v = inverseBind.AsSpan(16 * i, 16);
                     ibm = new Matrix4x4(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15]);
-                    if (InverseBindProblem(ibm) is { } problem)
+                    if (InverseBindProblem(v, ibm) is { } problem)
                     {
                         throw new GltfException($"{file}: skin {skin}'s inverse bind matrix {i} (of joint node {joints[i]}) {problem}.");
                     }
@@ -513,14 +513,14 @@ internal sealed class GltfSkeleton
     }
 
     /// <summary>
-    /// Why <paramref name="ibm"/> (an inverse bind matrix, row-vector convention) cannot be one, or <c>null</c>: a
-    /// number that is not finite, a last column other than (0, 0, 0, 1) (glTF's are affine), or a transform that does
-    /// not invert (an all-zero matrix among them), which would fold the skinned mesh onto a point or a plane.
+    /// Why <paramref name="ibm"/> (an inverse bind matrix read from the floats <paramref name="read"/>, row-vector
+    /// convention) cannot be one, or <c>null</c>: a number that is not finite, a fourth row other than (0, 0, 0, 1)
+    /// (glTF's are affine), or a transform that does not invert (an all-zero matrix among them), which would fold the
+    /// skinned mesh onto a point or a plane.
     /// </summary>
-    private static string? InverseBindProblem(in Matrix4x4 ibm)
+    private static string? InverseBindProblem(ReadOnlySpan<float> read, in Matrix4x4 ibm)
     {
-        ReadOnlySpan<float> m = [ibm.M11, ibm.M12, ibm.M13, ibm.M14, ibm.M21, ibm.M22, ibm.M23, ibm.M24, ibm.M31, ibm.M32, ibm.M33, ibm.M34, ibm.M41, ibm.M42, ibm.M43, ibm.M44];
-        foreach (float x in m)
+        foreach (float x in read)
         {
             if (!float.IsFinite(x))
             {
@@ -534,8 +534,8 @@ internal sealed class GltfSkeleton
             return "is not affine (its fourth row must be 0, 0, 0, 1)";
         }
 
+        // Affine: the determinant is its 3×3 part's, judged against the cube of its largest row (its scale).
         float scale = MathF.Max(MathF.Max(new Vector3(ibm.M11, ibm.M12, ibm.M13).Length(), new Vector3(ibm.M21, ibm.M22, ibm.M23).Length()), new Vector3(ibm.M31, ibm.M32, ibm.M33).Length());
-        float determinant = new Matrix4x4(ibm.M11, ibm.M12, ibm.M13, 0f, ibm.M21, ibm.M22, ibm.M23, 0f, ibm.M31, ibm.M32, ibm.M33, 0f, 0f, 0f, 0f, 1f).GetDeterminant();
-        return scale > 0f && MathF.Abs(determinant) > 1e-9f * scale * scale * scale ? null : "does not invert (its rotation and scale part is singular)";
+        return scale > 0f && MathF.Abs(ibm.GetDeterminant()) > 1e-9f * scale * scale * scale ? null : "does not invert (its rotation and scale part is singular)";
     }
 }
