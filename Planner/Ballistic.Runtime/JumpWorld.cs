@@ -974,7 +974,7 @@ public sealed class JumpWorld : IDisposable
     {
         ref readonly PathMove move = ref path.Move(index);
         double start = _agents.PathStart[slot];
-        return new JumpInfo(index, move.Arc, start + move.Start, start + move.End, inProgress);
+        return new JumpInfo(index, move.Arc, start + move.Start, start + move.End, inProgress, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move));
     }
 
     private WalkInfo DescribeWalk(int slot, AgentPath path, int index, bool inProgress)

@@ -75,7 +75,7 @@ public sealed class JumpAgentLogic
     /// node may set it every frame to a moving point); further away, the agent replans from its next stance (the
     /// runtime keeps the path when the new target is within <see cref="WorldSettings.ReplanDistance"/> of the
     /// path's). A target within <see cref="TargetDesiredDistance"/> of where the agent stands is reached at once.
-    /// A target that is not finite is refused with a <see cref="PathFailedSignal"/>. Zero until set.
+    /// A target that is not finite is refused with a <see cref="AgentSignalKind.PathFailed"/>. Zero until set.
     /// </summary>
     public Vector3 TargetPosition
     {
@@ -228,14 +228,14 @@ public sealed class JumpAgentLogic
     /// <summary>
     /// Sets <see cref="TargetPosition"/> and says what came of it: <see cref="RuntimeStatus.Ok"/> with a note when the
     /// target was kept (within the threshold), reached at once or stored until the agent is on a roadmap; otherwise
-    /// the host's refusal (also raised as a <see cref="PathFailedSignal"/> on the next <see cref="Update"/>).
+    /// the host's refusal (also raised as a <see cref="AgentSignalKind.PathFailed"/> on the next <see cref="Update"/>).
     /// </summary>
     public RuntimeResult SetTarget(Vector3 target)
     {
         if (!float.IsFinite(target.X) || !float.IsFinite(target.Y) || !float.IsFinite(target.Z))
         {
             string reason = $"the target position {target} is not finite";
-            _pending.Add(new PathFailedSignal(Now, reason));
+            _pending.Add(AgentSignal.Failed(Now, reason));
             return new RuntimeResult(RuntimeStatus.InvalidArgument, reason);
         }
 
@@ -263,8 +263,8 @@ public sealed class JumpAgentLogic
             _host.ClearTarget(Agent);
             _navigating = false;
             _reached = true;
-            _pending.Add(new TargetReachedSignal(Now));
-            _pending.Add(new NavigationFinishedSignal(Now));
+            _pending.Add(AgentSignal.Of(AgentSignalKind.TargetReached, Now));
+            _pending.Add(AgentSignal.Of(AgentSignalKind.NavigationFinished, Now));
             return new RuntimeResult(RuntimeStatus.Ok, $"already within {_desiredDistance} m of the target");
         }
 
@@ -291,11 +291,11 @@ public sealed class JumpAgentLogic
     /// <summary>True when the agent is not heading anywhere: no target, target reached, path failed or target cleared (like <c>NavigationAgent3D.is_navigation_finished</c>).</summary>
     public bool IsNavigationFinished() => !_navigating;
 
-    /// <summary>True once the agent reached its current target (a <see cref="TargetReachedSignal"/> was raised for it).</summary>
+    /// <summary>True once the agent reached its current target (a <see cref="AgentSignalKind.TargetReached"/> was raised for it).</summary>
     public bool IsTargetReached() => _hasTarget && _reached;
 
     /// <summary>
-    /// False without a target and after a <see cref="PathFailedSignal"/> for the current target; true once reached;
+    /// False without a target and after a <see cref="AgentSignalKind.PathFailed"/> for the current target; true once reached;
     /// otherwise whether the roadmap connects the agent's stance to a node near the target
     /// (<see cref="JumpNavigationHost.IsTargetReachable"/>; false while the agent is off its roadmap).
     /// </summary>
@@ -334,33 +334,25 @@ public sealed class JumpAgentLogic
     }
 
     /// <summary>The jump the agent will take off for next (after the one it is in, if any), known before it happens; false when none remains on its path.</summary>
-    public bool TryGetNextJump(out JumpPreview jump) => TryPreview(current: false, out jump);
+    public bool TryGetNextJump(out JumpInfo jump) => TryJump(current: false, out jump);
 
     /// <summary>The jump the agent is in now; false when it stands.</summary>
-    public bool TryGetCurrentJump(out JumpPreview jump) => TryPreview(current: true, out jump);
+    public bool TryGetCurrentJump(out JumpInfo jump) => TryJump(current: true, out jump);
 
-    /// <summary>The jump in progress (<paramref name="current"/>) or the next one, described for the node.</summary>
-    private bool TryPreview(bool current, out JumpPreview jump)
+    /// <summary>The jump in progress (<paramref name="current"/>) or the next one, as the world describes it.</summary>
+    private bool TryJump(bool current, out JumpInfo jump)
     {
         jump = default;
         JumpWorld? world = _host.World;
         AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is null
-            || !(current ? world.TryGetCurrentJump(agent, out JumpInfo info) : world.TryGetNextJump(agent, out info))
-            || world.GetPath(agent) is not { } path)
-        {
-            return false;
-        }
-
-        jump = Preview(path.Moves[info.Index], info);
-        return true;
+        return world is not null && (current ? world.TryGetCurrentJump(agent, out jump) : world.TryGetNextJump(agent, out jump));
     }
 
     /// <summary>
     /// Performs exactly one jump of the region's roadmap (edge index), as <see cref="JumpNavigationHost.PerformJump"/>:
     /// the agent stands on its takeoff at once; the landing's contact centre becomes the target, so the usual signals
-    /// follow (<see cref="PathChangedSignal"/>, <see cref="JumpStartedSignal"/>, <see cref="LandedSignal"/>,
-    /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>).
+    /// follow (<see cref="AgentSignalKind.PathChanged"/>, <see cref="AgentSignalKind.JumpStarted"/>, <see cref="AgentSignalKind.Landed"/>,
+    /// <see cref="AgentSignalKind.TargetReached"/>, <see cref="AgentSignalKind.NavigationFinished"/>).
     /// </summary>
     public RuntimeResult PerformJump(int edge) => Performed(_host.PerformJump(Agent, edge));
 
@@ -438,10 +430,10 @@ public sealed class JumpAgentLogic
 
     /// <summary>
     /// Call once per physics tick after the server stepped: drains the agent's events into signals, in order
-    /// (<see cref="PathChangedSignal"/>, then per move <see cref="JumpStartedSignal"/> and <see cref="LandedSignal"/>
-    /// or <see cref="WalkStartedSignal"/> and <see cref="WalkFinishedSignal"/>, …,
-    /// <see cref="TargetReachedSignal"/>, <see cref="NavigationFinishedSignal"/>; <see cref="PathFailedSignal"/> then
-    /// <see cref="NavigationFinishedSignal"/> on failure) and updates <see cref="RootPose"/>, <see cref="BodyPosition"/>,
+    /// (<see cref="AgentSignalKind.PathChanged"/>, then per move <see cref="AgentSignalKind.JumpStarted"/> and <see cref="AgentSignalKind.Landed"/>
+    /// or <see cref="AgentSignalKind.WalkStarted"/> and <see cref="AgentSignalKind.WalkFinished"/>, …,
+    /// <see cref="AgentSignalKind.TargetReached"/>, <see cref="AgentSignalKind.NavigationFinished"/>; <see cref="AgentSignalKind.PathFailed"/> then
+    /// <see cref="AgentSignalKind.NavigationFinished"/> on failure) and updates <see cref="RootPose"/>, <see cref="BodyPosition"/>,
     /// <see cref="BodyVelocity"/> and <see cref="BodyRotation"/>. The list is reused: valid until the next call.
     /// </summary>
     public IReadOnlyList<AgentSignal> Update()
@@ -478,32 +470,34 @@ public sealed class JumpAgentLogic
                 _navigating = true;
                 _failed = false;
                 LastFailure = null;
-                _signals.Add(new PathChangedSignal(j.Time));
+                _signals.Add(AgentSignal.Of(AgentSignalKind.PathChanged, j.Time));
                 break;
             case JumpEventKind.PathFailed:
                 Fail(_signals, j.Time, j.Reason ?? j.Status.ToString());
                 break;
             case JumpEventKind.JumpStarted when e.Path is { } path:
                 PathMove move = path.Moves[j.Jump];
-                _signals.Add(new JumpStartedSignal(j.Time, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), move.Arc.FlightTime));
+                _signals.Add(new AgentSignal(AgentSignalKind.JumpStarted, j.Time, j.Jump, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), move.Arc.FlightTime, 0f, null));
                 break;
             case JumpEventKind.Landed when e.Path is { } path:
-                _signals.Add(new LandedSignal(j.Time, path.Moves[j.Jump].To.ContactCentre));
+                PathMove landed = path.Moves[j.Jump];
+                _signals.Add(new AgentSignal(AgentSignalKind.Landed, j.Time, j.Jump, landed.From.ContactCentre, landed.To.ContactCentre, default, landed.Arc.FlightTime, 0f, null));
                 break;
             case JumpEventKind.WalkStarted when e.Path is { } path:
                 PathMove walk = path.Moves[j.Jump];
-                _signals.Add(new WalkStartedSignal(j.Time, walk.From.ContactCentre, walk.To.ContactCentre, walk.Walk!.Duration, walk.Walk.Speed, j.Jump));
+                _signals.Add(new AgentSignal(AgentSignalKind.WalkStarted, j.Time, j.Jump, walk.From.ContactCentre, walk.To.ContactCentre, default, walk.Walk!.Duration, walk.Walk.Speed, null));
                 break;
             case JumpEventKind.WalkFinished when e.Path is { } path:
-                _signals.Add(new WalkFinishedSignal(j.Time, path.Moves[j.Jump].To.ContactCentre, j.Jump));
+                PathMove walked = path.Moves[j.Jump];
+                _signals.Add(new AgentSignal(AgentSignalKind.WalkFinished, j.Time, j.Jump, walked.From.ContactCentre, walked.To.ContactCentre, default, walked.Walk!.Duration, walked.Walk.Speed, null));
                 break;
             case JumpEventKind.TargetReached:
                 if (_navigating)
                 {
                     _navigating = false;
                     _reached = true;
-                    _signals.Add(new TargetReachedSignal(j.Time));
-                    _signals.Add(new NavigationFinishedSignal(j.Time));
+                    _signals.Add(AgentSignal.Of(AgentSignalKind.TargetReached, j.Time));
+                    _signals.Add(AgentSignal.Of(AgentSignalKind.NavigationFinished, j.Time));
                 }
 
                 break;
@@ -528,12 +522,12 @@ public sealed class JumpAgentLogic
         if (_navigating)
         {
             _navigating = false;
-            signals.Add(new PathFailedSignal(time, reason));
-            signals.Add(new NavigationFinishedSignal(time));
+            signals.Add(AgentSignal.Failed(time, reason));
+            signals.Add(AgentSignal.Of(AgentSignalKind.NavigationFinished, time));
         }
         else
         {
-            signals.Add(new PathFailedSignal(time, reason));
+            signals.Add(AgentSignal.Failed(time, reason));
         }
     }
 
@@ -555,9 +549,6 @@ public sealed class JumpAgentLogic
         BodyVelocity = body.Velocity;
         BodyRotation = body.Heading;
     }
-
-    private static JumpPreview Preview(in PathMove move, in JumpInfo info) =>
-        new(info.Index, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), info.FlightTime, info.TakeoffTime, info.LandingTime, info.InProgress, info.Arc);
 
     /// <summary>Samples the body point along the path, at most <see cref="PathSampleStep"/> apart.</summary>
     private void Sample(AgentPath path)

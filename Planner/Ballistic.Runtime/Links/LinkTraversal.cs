@@ -9,8 +9,8 @@ namespace Ballistic.Runtime.Links;
 /// (<c>link_reached</c>; the node finds k from the link's RID, or with <see cref="JumpLinkSet.FindLink"/> from its
 /// ends), the <see cref="JumpAgentLogic"/> beside it performs exactly that jump: it stands on the takeoff stance at
 /// once (warped there from wherever the navmesh agent was), jumps along the roadmap's edge and lands on the link's
-/// end; its signals say when (<see cref="LandedSignal"/>, then <see cref="TargetReachedSignal"/> and
-/// <see cref="NavigationFinishedSignal"/>), after which the navmesh agent walks on.
+/// end; its signals say when (<see cref="AgentSignalKind.Landed"/>, then <see cref="AgentSignalKind.TargetReached"/> and
+/// <see cref="AgentSignalKind.NavigationFinished"/>), after which the navmesh agent walks on.
 /// </summary>
 /// <param name="links">The links published, made from the agents' region's current roadmap.</param>
 public sealed class LinkTraversal(JumpLinkSet links)

@@ -13,7 +13,10 @@ namespace Ballistic.Runtime.Paths;
 /// <param name="TakeoffTime">World time of takeoff, seconds (in the past when the agent is already in the air).</param>
 /// <param name="LandingTime">World time of landing, seconds.</param>
 /// <param name="InProgress">True when the agent is already in this jump.</param>
-public readonly record struct JumpInfo(int Index, BallisticArc Arc, double TakeoffTime, double LandingTime, bool InProgress)
+/// <param name="TakeoffPoint">The body point at takeoff: the centre of the takeoff stance's contacts, world metres (the character's ground reference, where a <c>JumpAgent3D</c> puts its body).</param>
+/// <param name="LandingPoint">The body point at landing: the centre of the landing stance's contacts, world metres.</param>
+/// <param name="BodyVelocity">The body point's takeoff velocity, m/s: it flies a parabola under the arc's gravity from <paramref name="TakeoffPoint"/> to <paramref name="LandingPoint"/> in the flight time (the trunk's own is <see cref="Velocity"/>).</param>
+public readonly record struct JumpInfo(int Index, BallisticArc Arc, double TakeoffTime, double LandingTime, bool InProgress, Vector3 TakeoffPoint, Vector3 LandingPoint, Vector3 BodyVelocity)
 {
     /// <summary>Takeoff trunk centre, world metres.</summary>
     public Vector3 From => Arc.Start;

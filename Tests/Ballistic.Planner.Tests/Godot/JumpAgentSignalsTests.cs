@@ -4,8 +4,8 @@ using Ballistic.Runtime.Hosting;
 namespace Ballistic.Planner.Tests.Godot;
 
 /// <summary>
-/// The agent node re-emits every signal of its logic: each <see cref="AgentSignal"/> record has a <c>[Signal]</c> of the
-/// same name (without the suffix) on <c>JumpAgent3D</c>, and the node's emitter handles it.
+/// The agent node re-emits every signal of its logic: each <see cref="AgentSignalKind"/> has a <c>[Signal]</c> of the
+/// same name on <c>JumpAgent3D</c>, and the node's emitter emits it under that name.
 /// </summary>
 public sealed class JumpAgentSignalsTests
 {
@@ -17,15 +17,14 @@ public sealed class JumpAgentSignalsTests
         string text = System.IO.File.ReadAllText(Path.Combine(RepositoryFiles.Root, File));
         CSharpScriptClass node = CSharpScripts.Parse([(File, text)]).ClassInFile(File, "JumpAgent3D")
             ?? throw new AssertionException($"{File} declares no JumpAgent3D");
-        string[] records = [.. typeof(AgentSignal).Assembly.GetTypes()
-            .Where(t => t.IsSubclassOf(typeof(AgentSignal)) && !t.IsAbstract)
-            .Select(t => t.Name)
-            .Order(StringComparer.Ordinal)];
-        Assert.That(records, Does.Contain(nameof(WalkStartedSignal)).And.Contain(nameof(WalkFinishedSignal)));
-        Assert.That(node.Signals.Order(StringComparer.Ordinal), Is.EqualTo(records.Select(r => r[..^"Signal".Length])), "one [Signal] per signal record");
-        foreach (string record in records)
+        string[] kinds = [.. Enum.GetNames<AgentSignalKind>().Order(StringComparer.Ordinal)];
+        Assert.That(kinds, Does.Contain(nameof(AgentSignalKind.WalkStarted)).And.Contain(nameof(AgentSignalKind.WalkFinished)));
+        Assert.That(node.Signals.Order(StringComparer.Ordinal), Is.EqualTo(kinds), "one [Signal] per kind of signal");
+        foreach (string kind in kinds)
         {
-            Assert.That(text, Does.Contain($"case {record}"), $"the node emits {record}");
+            string[] emitted = [.. text.Split($"case AgentSignalKind.{kind}:").Skip(1).Select(rest => rest.Split("break;")[0])];
+            Assert.That(emitted, Has.Length.EqualTo(1), $"the node handles {kind} once");
+            Assert.That(emitted[0], Does.Contain($"EmitSignal(SignalName.{kind}"), $"the node emits {kind} as {kind}");
         }
     }
 }

@@ -104,7 +104,7 @@ internal static class HostingWorlds
     }
 
     /// <summary>True once the signals hold a navigation finish.</summary>
-    public static bool Finished(List<AgentSignal> seen) => seen.Any(s => s is NavigationFinishedSignal);
+    public static bool Finished(List<AgentSignal> seen) => seen.Any(s => s.Kind == AgentSignalKind.NavigationFinished);
 
     /// <summary>Seeded pairs of desert nodes whose planned path (on the roadmap alone) has exactly <paramref name="jumps"/> jumps.</summary>
     public static List<(RoadmapNode From, RoadmapNode To)> PairsWithJumps(int jumps, int count, int seed)

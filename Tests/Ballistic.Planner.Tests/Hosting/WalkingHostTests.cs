@@ -40,31 +40,31 @@ public sealed class WalkingHostTests
         using (host)
         {
             List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished);
-            Assert.That(signals.Select(s => s.GetType().Name), Is.EqualTo(new[]
+            Assert.That(signals.Select(s => s.Kind), Is.EqualTo(new[]
             {
-                nameof(PathChangedSignal), nameof(WalkStartedSignal), nameof(WalkFinishedSignal), nameof(JumpStartedSignal), nameof(LandedSignal),
-                nameof(WalkStartedSignal), nameof(WalkFinishedSignal), nameof(TargetReachedSignal), nameof(NavigationFinishedSignal),
+                AgentSignalKind.PathChanged, AgentSignalKind.WalkStarted, AgentSignalKind.WalkFinished, AgentSignalKind.JumpStarted, AgentSignalKind.Landed,
+                AgentSignalKind.WalkStarted, AgentSignalKind.WalkFinished, AgentSignalKind.TargetReached, AgentSignalKind.NavigationFinished,
             }), string.Join("; ", signals));
             Assert.That(signals.Zip(signals.Skip(1)).All(p => p.First.Time <= p.Second.Time + 1e-9), Is.True, "signal times never go back");
 
-            var starts = signals.OfType<WalkStartedSignal>().ToList();
-            var ends = signals.OfType<WalkFinishedSignal>().ToList();
+            var starts = signals.Where(s => s.Kind == AgentSignalKind.WalkStarted).ToList();
+            var ends = signals.Where(s => s.Kind == AgentSignalKind.WalkFinished).ToList();
             var walks = new[] { (Walk)moves[0], (Walk)moves[2] };
             for (int w = 0; w < 2; w++)
             {
-                Assert.That(starts[w].Index, Is.EqualTo(2 * w));
-                Assert.That(ends[w].Index, Is.EqualTo(2 * w));
+                Assert.That(starts[w].Move, Is.EqualTo(2 * w));
+                Assert.That(ends[w].Move, Is.EqualTo(2 * w));
                 Assert.That(starts[w].From, Is.EqualTo(WalkingPaths.Centre(walks[w].From)).Using<Vector3>(Near), "a walk starts at its first stance's contact centre");
                 Assert.That(starts[w].To, Is.EqualTo(WalkingPaths.Centre(walks[w].To)).Using<Vector3>(Near));
-                Assert.That(ends[w].Position, Is.EqualTo(starts[w].To), "it finishes where it said it would");
+                Assert.That(ends[w].To, Is.EqualTo(starts[w].To), "it finishes where it said it would");
                 Assert.That(starts[w].Duration, Is.EqualTo(walks[w].Duration).Within(1e-5f));
                 Assert.That(starts[w].Speed, Is.EqualTo(walks[w].Speed));
                 Assert.That(ends[w].Time - starts[w].Time, Is.EqualTo(starts[w].Duration).Within(1e-4));
             }
 
-            JumpStartedSignal takeoff = signals.OfType<JumpStartedSignal>().Single();
-            Assert.That(takeoff.From, Is.EqualTo(ends[0].Position), "the jump takes off where the first walk ended");
-            Assert.That(starts[1].From, Is.EqualTo(signals.OfType<LandedSignal>().Single().Position), "the last walk starts where the jump landed");
+            AgentSignal takeoff = signals.Where(s => s.Kind == AgentSignalKind.JumpStarted).Single();
+            Assert.That(takeoff.From, Is.EqualTo(ends[0].To), "the jump takes off where the first walk ended");
+            Assert.That(starts[1].From, Is.EqualTo(signals.Where(s => s.Kind == AgentSignalKind.Landed).Single().To), "the last walk starts where the jump landed");
             Assert.That(logic.IsTargetReached(), Is.True);
             Assert.That(logic.BodyPosition, Is.EqualTo(WalkingPaths.Centre(moves[2].To)).Using<Vector3>(Near));
             Assert.That(logic.BodyVelocity, Is.EqualTo(Vector3.Zero));
@@ -135,7 +135,7 @@ public sealed class WalkingHostTests
         (JumpNavigationHost host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(AgentMotionMode.MoveParent);
         using (host)
         {
-            HostingWorlds.Run(logic, MaxTicks, seen => seen.OfType<PathChangedSignal>().Any());
+            HostingWorlds.Run(logic, MaxTicks, seen => seen.Any(s => s.Kind == AgentSignalKind.PathChanged));
             var first = (Walk)moves[0];
             var last = (Walk)moves[2];
             foreach (float step in new[] { 0.25f, 0.1f })

@@ -4,6 +4,7 @@ using Ballistic.Runtime.Core;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Links;
+using Ballistic.Runtime.Paths;
 using Godot;
 
 namespace Ballistic.Addon;
@@ -199,7 +200,7 @@ public partial class JumpAgent3D : Node
     /// </summary>
     public Godot.Collections.Dictionary GetNextJump()
     {
-        if (_logic is null || !(_logic.TryGetCurrentJump(out JumpPreview jump) || _logic.TryGetNextJump(out jump)))
+        if (_logic is null || !(_logic.TryGetCurrentJump(out JumpInfo jump) || _logic.TryGetNextJump(out jump)))
         {
             return [];
         }
@@ -208,7 +209,7 @@ public partial class JumpAgent3D : Node
         {
             ["from"] = jump.TakeoffPoint.ToGodot(),
             ["to"] = jump.LandingPoint.ToGodot(),
-            ["velocity"] = jump.TakeoffVelocity.ToGodot(),
+            ["velocity"] = jump.BodyVelocity.ToGodot(),
             ["flight_time"] = jump.FlightTime,
             ["takeoff_time"] = jump.TakeoffTime,
             ["landing_time"] = jump.LandingTime,
@@ -244,35 +245,35 @@ public partial class JumpAgent3D : Node
         }
     }
 
-    private void Emit(AgentSignal signal)
+    private void Emit(in AgentSignal signal)
     {
-        switch (signal)
+        switch (signal.Kind)
         {
-            case PathChangedSignal:
+            case AgentSignalKind.PathChanged:
                 EmitSignal(SignalName.PathChanged);
                 break;
-            case JumpStartedSignal s:
-                EmitSignal(SignalName.JumpStarted, s.From.ToGodot(), s.To.ToGodot(), s.Velocity.ToGodot(), (double)s.FlightTime);
+            case AgentSignalKind.JumpStarted:
+                EmitSignal(SignalName.JumpStarted, signal.From.ToGodot(), signal.To.ToGodot(), signal.Velocity.ToGodot(), (double)signal.Duration);
                 break;
-            case LandedSignal s:
+            case AgentSignalKind.Landed:
                 _linkJump = false;
-                EmitSignal(SignalName.Landed, s.Position.ToGodot());
+                EmitSignal(SignalName.Landed, signal.To.ToGodot());
                 break;
-            case WalkStartedSignal s:
-                EmitSignal(SignalName.WalkStarted, s.From.ToGodot(), s.To.ToGodot(), (double)s.Duration);
+            case AgentSignalKind.WalkStarted:
+                EmitSignal(SignalName.WalkStarted, signal.From.ToGodot(), signal.To.ToGodot(), (double)signal.Duration);
                 break;
-            case WalkFinishedSignal s:
-                EmitSignal(SignalName.WalkFinished, s.Position.ToGodot());
+            case AgentSignalKind.WalkFinished:
+                EmitSignal(SignalName.WalkFinished, signal.To.ToGodot());
                 break;
-            case TargetReachedSignal:
+            case AgentSignalKind.TargetReached:
                 EmitSignal(SignalName.TargetReached);
                 break;
-            case NavigationFinishedSignal:
+            case AgentSignalKind.NavigationFinished:
                 EmitSignal(SignalName.NavigationFinished);
                 break;
-            case PathFailedSignal s:
+            case AgentSignalKind.PathFailed:
                 _linkJump = false;
-                EmitSignal(SignalName.PathFailed, s.Reason);
+                EmitSignal(SignalName.PathFailed, signal.Reason ?? string.Empty);
                 break;
         }
     }
