@@ -8,7 +8,12 @@ internal sealed class EventBuffer
 
     public ReadOnlySpan<JumpEvent> Events => _events.AsSpan(0, _count);
 
-    public void Clear() => _count = 0;
+    /// <summary>Empties the buffer, letting go of the paths the events held (a finished path is not kept alive by an old event).</summary>
+    public void Clear()
+    {
+        Array.Clear(_events, 0, _count);
+        _count = 0;
+    }
 
     public void Add(in JumpEvent e)
     {

@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Planning;
 using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Runtime.Events;
 
@@ -23,6 +24,12 @@ namespace Ballistic.Runtime.Events;
 /// <param name="FlightTime">Flight time of the jump (jump events) or duration of the walk (walk events), seconds; zero otherwise. Also <see cref="Duration"/>.</param>
 /// <param name="Status">For <see cref="JumpEventKind.PathFailed"/>, the planner's status; <see cref="PlannerStatus.Exact"/> otherwise.</param>
 /// <param name="Reason">For failures and removals, one sentence saying why; <c>null</c> otherwise.</param>
+/// <param name="Path">
+/// For <see cref="JumpEventKind.PathFound"/>, the path found; for jump and walk events and a
+/// <see cref="JumpEventKind.TargetReached"/> at the end of a path, the path they belong to (<see cref="Jump"/>
+/// indexes its moves), kept so that a reader draining late still knows the move's stances after the agent has moved
+/// on; <c>null</c> otherwise.
+/// </param>
 public readonly record struct JumpEvent(
     JumpEventKind Kind,
     AgentHandle Agent,
@@ -34,7 +41,8 @@ public readonly record struct JumpEvent(
     Vector3 Velocity,
     float FlightTime,
     PlannerStatus Status,
-    string? Reason)
+    string? Reason,
+    AgentPath? Path = null)
 {
     /// <summary>The move's index on the current path (the same as <see cref="Jump"/>); −1 for events that are not of a move.</summary>
     public int Move => Jump;

@@ -449,7 +449,7 @@ public sealed class JumpAgentLogic
             _path = null;
         }
 
-        while (_host.TryDequeueEvent(Agent, out AgentEvent e))
+        while (_host.TryDequeueEvent(Agent, out JumpEvent e))
         {
             Handle(e);
         }
@@ -460,13 +460,12 @@ public sealed class JumpAgentLogic
 
     private double Now => _host.World?.Time ?? 0.0;
 
-    private void Handle(in AgentEvent e)
+    private void Handle(in JumpEvent j)
     {
-        JumpEvent j = e.Event;
         switch (j.Kind)
         {
             case JumpEventKind.PathFound:
-                _path = e.Path;
+                _path = j.Path;
                 _navigating = true;
                 _failed = false;
                 LastFailure = null;
@@ -475,19 +474,19 @@ public sealed class JumpAgentLogic
             case JumpEventKind.PathFailed:
                 Fail(_signals, j.Time, j.Reason ?? j.Status.ToString());
                 break;
-            case JumpEventKind.JumpStarted when e.Path is { } path:
+            case JumpEventKind.JumpStarted when j.Path is { } path:
                 PathMove move = path.Moves[j.Jump];
                 _signals.Add(new AgentSignal(AgentSignalKind.JumpStarted, j.Time, j.Jump, move.From.ContactCentre, move.To.ContactCentre, BodyMotion.BodyVelocity(move), move.Arc.FlightTime, 0f, null));
                 break;
-            case JumpEventKind.Landed when e.Path is { } path:
+            case JumpEventKind.Landed when j.Path is { } path:
                 PathMove landed = path.Moves[j.Jump];
                 _signals.Add(new AgentSignal(AgentSignalKind.Landed, j.Time, j.Jump, landed.From.ContactCentre, landed.To.ContactCentre, default, landed.Arc.FlightTime, 0f, null));
                 break;
-            case JumpEventKind.WalkStarted when e.Path is { } path:
+            case JumpEventKind.WalkStarted when j.Path is { } path:
                 PathMove walk = path.Moves[j.Jump];
                 _signals.Add(new AgentSignal(AgentSignalKind.WalkStarted, j.Time, j.Jump, walk.From.ContactCentre, walk.To.ContactCentre, default, walk.Walk!.Duration, walk.Walk.Speed, null));
                 break;
-            case JumpEventKind.WalkFinished when e.Path is { } path:
+            case JumpEventKind.WalkFinished when j.Path is { } path:
                 PathMove walked = path.Moves[j.Jump];
                 _signals.Add(new AgentSignal(AgentSignalKind.WalkFinished, j.Time, j.Jump, walked.From.ContactCentre, walked.To.ContactCentre, default, walked.Walk!.Duration, walked.Walk.Speed, null));
                 break;

@@ -6,7 +6,6 @@ using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
-using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Runtime.Hosting;
 
@@ -386,7 +385,6 @@ public sealed class JumpNavigationHost : IDisposable
         a.World = default;
         a.HasTarget = false;
         a.Target = default;
-        a.Path = null;
         a.Queue.Clear();
         RegionRecord r = _regions[region.Index];
         r.Agents.Add(index);
@@ -433,7 +431,6 @@ public sealed class JumpNavigationHost : IDisposable
         }
 
         a.Alive = false;
-        a.Path = null;
         a.Queue.Clear();
         _freeAgents.Push(agent.Index);
         return new RuntimeResult(RuntimeStatus.Ok, $"unregistered while {state}");
@@ -638,7 +635,7 @@ public sealed class JumpNavigationHost : IDisposable
     }
 
     /// <summary>Takes the oldest undelivered event of the agent; false when its queue is empty (or the agent unknown). Allocates nothing.</summary>
-    public bool TryDequeueEvent(HostAgentHandle agent, out AgentEvent e)
+    public bool TryDequeueEvent(HostAgentHandle agent, out JumpEvent e)
     {
         using Gate gate = Gate.Wait(_gate);
         e = default;
@@ -811,26 +808,14 @@ public sealed class JumpNavigationHost : IDisposable
                 // where the agent stopped): it waits, unplaced, where it stood (remembered at the rebake).
                 Unplace(a, e.Reason ?? "the world removed the agent");
                 break;
-            case JumpEventKind.PathFound:
-                a.Path = _world!.GetPath(e.Agent);
-                break;
             case JumpEventKind.TargetReached:
                 a.HasTarget = false;
-                break;
-            case JumpEventKind.PathFailed:
-                a.Path = null;
                 break;
             default:
                 break;
         }
 
-        bool onPath = e.Kind is JumpEventKind.PathFound or JumpEventKind.JumpStarted or JumpEventKind.Landed or JumpEventKind.WalkStarted or JumpEventKind.WalkFinished
-            || (e.Kind == JumpEventKind.TargetReached && e.Jump >= 0);
-        Enqueue(a, new AgentEvent(e, onPath ? a.Path : null));
-        if (e.Kind == JumpEventKind.TargetReached)
-        {
-            a.Path = null;
-        }
+        Enqueue(a, e);
     }
 
     /// <summary>Adds the agent to the world on its region's kind, where it was; asks its target again.</summary>
@@ -852,7 +837,6 @@ public sealed class JumpNavigationHost : IDisposable
         a.State = HostAgentState.Active;
         a.Reason = null;
         a.World = added.Agent;
-        a.Path = null;
         if (_bySlot.Length <= added.Agent.Index)
         {
             int old = _bySlot.Length;
@@ -918,10 +902,10 @@ public sealed class JumpNavigationHost : IDisposable
 
     /// <summary>Queues a removal event for an agent the host took out of the world (or that could not join it).</summary>
     private void Tell(AgentRecord a, string reason) =>
-        Enqueue(a, new AgentEvent(new JumpEvent(JumpEventKind.Removed, a.World, _world?.Tick ?? 0, _world?.Time ?? 0, -1, a.Point, a.Target, default, 0f, PlannerStatus.Exact, reason), null));
+        Enqueue(a, new JumpEvent(JumpEventKind.Removed, a.World, _world?.Tick ?? 0, _world?.Time ?? 0, -1, a.Point, a.Target, default, 0f, PlannerStatus.Exact, reason));
 
     /// <summary>Queues <paramref name="e"/> for the agent's node, dropping the oldest past <see cref="MaxQueuedEvents"/>.</summary>
-    private static void Enqueue(AgentRecord a, in AgentEvent e)
+    private static void Enqueue(AgentRecord a, in JumpEvent e)
     {
         if (a.Queue.Count >= MaxQueuedEvents)
         {
@@ -943,7 +927,6 @@ public sealed class JumpNavigationHost : IDisposable
     {
         _bySlot[a.World.Index] = -1;
         a.World = default;
-        a.Path = null;
     }
 
     /// <summary>The world let the agent go (a rebake for a body that cannot stand where it is): it waits, unplaced, for <paramref name="reason"/>.</summary>
@@ -1029,7 +1012,6 @@ public sealed class JumpNavigationHost : IDisposable
         public AgentHandle World;
         public bool HasTarget;
         public Vector3 Target;
-        public AgentPath? Path;
-        public readonly Queue<AgentEvent> Queue = new();
+        public readonly Queue<JumpEvent> Queue = new();
     }
 }

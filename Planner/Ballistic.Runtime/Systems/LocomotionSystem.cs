@@ -68,7 +68,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
                 return;
             }
 
-            events.Add(MoveEvent(move, ending, handle, tick, start + when));
+            events.Add(MoveEvent(path, move, ending, handle, tick, start + when));
             cursor++;
             if (ending && agents.StopAtStance[slot] && cursor < boundaries)
             {
@@ -94,7 +94,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
             if (!agents.StopAtStance[slot])
             {
                 agents.HasTarget[slot] = false;
-                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + path.Duration, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null));
+                events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + path.Duration, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null, path));
                 Stop(slot, last.To, last.EndPose, path.Duration, path);
                 return;
             }
@@ -125,17 +125,17 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         }
     }
 
-    /// <summary>The event of <paramref name="move"/>'s start or end (<paramref name="ending"/>) at world time <paramref name="when"/>.</summary>
-    private static JumpEvent MoveEvent(in PathMove move, bool ending, AgentHandle handle, long tick, double when)
+    /// <summary>The event of <paramref name="move"/>'s (of <paramref name="path"/>) start or end (<paramref name="ending"/>) at world time <paramref name="when"/>.</summary>
+    private static JumpEvent MoveEvent(AgentPath path, in PathMove move, bool ending, AgentHandle handle, long tick, double when)
     {
         if (move.Walk is { } walk)
         {
             return new JumpEvent(ending ? JumpEventKind.WalkFinished : JumpEventKind.WalkStarted, handle, tick, when, move.Index,
-                move.From.Pose.Position, move.To.Pose.Position, default, walk.Duration, PlannerStatus.Exact, null);
+                move.From.Pose.Position, move.To.Pose.Position, default, walk.Duration, PlannerStatus.Exact, null, path);
         }
 
         return new JumpEvent(ending ? JumpEventKind.Landed : JumpEventKind.JumpStarted, handle, tick, when, move.Index,
-            move.Arc.Start, move.Arc.End, move.Arc.TakeoffVelocity, move.Arc.FlightTime, PlannerStatus.Exact, null);
+            move.Arc.Start, move.Arc.End, move.Arc.TakeoffVelocity, move.Arc.FlightTime, PlannerStatus.Exact, null, path);
     }
 
     /// <summary>

@@ -163,7 +163,7 @@ internal sealed class PathRequestSystem : IDisposable
         _agents.PathStart[slot] = time;
         _agents.Cursor[slot] = 0;
         _agents.StopAtStance[slot] = false;
-        _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null));
+        _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null, path));
     }
 
     private void Fail(int slot, PathRequest request, PlannerStatus status, string reason, long tick, double time)

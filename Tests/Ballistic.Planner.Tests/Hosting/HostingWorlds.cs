@@ -7,6 +7,7 @@ using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime.Core;
+using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 
@@ -62,15 +63,15 @@ internal static class HostingWorlds
     }
 
     /// <summary>Steps the host and drains the agents' queues each tick until <paramref name="done"/> or <paramref name="maxTicks"/>; returns each agent's events.</summary>
-    public static Dictionary<HostAgentHandle, List<AgentEvent>> Run(JumpNavigationHost host, IReadOnlyList<HostAgentHandle> agents, int maxTicks, Func<Dictionary<HostAgentHandle, List<AgentEvent>>, bool> done)
+    public static Dictionary<HostAgentHandle, List<JumpEvent>> Run(JumpNavigationHost host, IReadOnlyList<HostAgentHandle> agents, int maxTicks, Func<Dictionary<HostAgentHandle, List<JumpEvent>>, bool> done)
     {
-        var seen = agents.ToDictionary(a => a, _ => new List<AgentEvent>());
+        var seen = agents.ToDictionary(a => a, _ => new List<JumpEvent>());
         for (int i = 0; i < maxTicks; i++)
         {
             host.Step();
             foreach (HostAgentHandle agent in agents)
             {
-                while (host.TryDequeueEvent(agent, out AgentEvent e))
+                while (host.TryDequeueEvent(agent, out JumpEvent e))
                 {
                     seen[agent].Add(e);
                 }

@@ -41,9 +41,9 @@ public sealed class JumpNavigationHostTests
         Assert.That(host.World!.IsValid(host.GetWorldAgent(agent)), Is.True);
         Assert.That(Vector3.Distance(host.GetStandingPoint(agent)!.Value, RuntimeWorlds.Point(from)), Is.LessThan(1e-4f), "it joined where it was registered");
 
-        List<AgentEvent> events = HostingWorlds.Run(host, [agent], MaxTicks, seen => seen[agent].Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[agent];
-        Assert.That(events[0].Event.Kind, Is.EqualTo(JumpEventKind.PathFound), "the kept target was asked for");
-        Assert.That(events[^1].Event.Kind, Is.EqualTo(JumpEventKind.TargetReached), string.Join("; ", events.Select(e => e.Event.Reason)));
+        List<JumpEvent> events = HostingWorlds.Run(host, [agent], MaxTicks, seen => seen[agent].Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[agent];
+        Assert.That(events[0].Kind, Is.EqualTo(JumpEventKind.PathFound), "the kept target was asked for");
+        Assert.That(events[^1].Kind, Is.EqualTo(JumpEventKind.TargetReached), string.Join("; ", events.Select(e => e.Reason)));
         Assert.That(Vector3.Distance(host.GetStandingPoint(agent)!.Value, RuntimeWorlds.Point(to)), Is.LessThan(1e-4f));
         Assert.That(host.GetTarget(agent), Is.Null);
     }
@@ -93,7 +93,7 @@ public sealed class JumpNavigationHostTests
             float fastest = oldPath.Moves.Where(m => m.Walk is null).Max(m => MathF.Max(m.Arc.TakeoffVelocity.Length(), (m.Arc.TakeoffVelocity - (9.81f * m.Arc.FlightTime * Vector3.UnitY)).Length()));
             Vector3 last = world.GetRootPose(flying).Position;
             float worstStep = 0f;
-            List<AgentEvent> events = HostingWorlds.Run(host, [idle, moving], MaxTicks, _ =>
+            List<JumpEvent> events = HostingWorlds.Run(host, [idle, moving], MaxTicks, _ =>
             {
                 Vector3 root = world.GetRootPose(flying).Position;
                 worstStep = MathF.Max(worstStep, Vector3.Distance(root, last));
@@ -101,15 +101,15 @@ public sealed class JumpNavigationHostTests
                 return world.GetPath(flying) is null;
             })[moving];
             Assert.That(worstStep, Is.LessThanOrEqualTo(fastest * world.Settings.TickSeconds * 1.01f), "no tick moves the body further than its flight does");
-            Assert.That(events.Select(e => e.Event.Kind), Does.Contain(JumpEventKind.Landed));
+            Assert.That(events.Select(e => e.Kind), Does.Contain(JumpEventKind.Landed));
             Assert.That(host.GetStandingPoint(moving), Is.EqualTo(landing), "it stands on its landing stance");
             Assert.That(host.GetTarget(moving), Is.EqualTo(RuntimeWorlds.Point(pairs[1].To)), "its target is kept");
             Assert.That(world.GetTarget(flying), Is.EqualTo(RuntimeWorlds.Point(pairs[1].To)), "and asked again");
 
             Vector3 restart = host.GetStandingPoint(moving)!.Value;
-            events.AddRange(HostingWorlds.Run(host, [idle, moving], MaxTicks, seen => seen[moving].Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[moving]);
-            Assert.That(events.Select(e => e.Event.Kind), Does.Not.Contain(JumpEventKind.Removed), "a rebake is not a removal");
-            AgentEvent found = events.Last(e => e.Event.Kind == JumpEventKind.PathFound);
+            events.AddRange(HostingWorlds.Run(host, [idle, moving], MaxTicks, seen => seen[moving].Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed))[moving]);
+            Assert.That(events.Select(e => e.Kind), Does.Not.Contain(JumpEventKind.Removed), "a rebake is not a removal");
+            JumpEvent found = events.Last(e => e.Kind == JumpEventKind.PathFound);
             Assert.That(Vector3.Distance(found.Path!.Start.ContactCentre, restart), Is.LessThan(1e-4f), "the new path starts where the agent was put");
             // Each landing but the last is a node of the new roadmap, or a stance the query placed (facing a jump): ids n + 2 on.
             int placedFrom = HostingWorlds.DesertRebaked.Roadmap.Nodes.Count + 2;
@@ -148,17 +148,17 @@ public sealed class JumpNavigationHostTests
             }
 
             Assert.That(host.GetPendingEventCount(agent), Is.EqualTo(JumpNavigationHost.MaxQueuedEvents), $"{jumps * 4} events, the queue holds the newest {JumpNavigationHost.MaxQueuedEvents}");
-            var drained = new List<AgentEvent>();
-            while (host.TryDequeueEvent(agent, out AgentEvent e))
+            var drained = new List<JumpEvent>();
+            while (host.TryDequeueEvent(agent, out JumpEvent e))
             {
                 drained.Add(e);
             }
 
             Assert.That(drained, Has.Count.EqualTo(JumpNavigationHost.MaxQueuedEvents));
-            Assert.That(drained.Select(e => e.Event.Tick), Is.Ordered, "oldest first");
-            Assert.That(drained[^1].Event.Kind, Is.EqualTo(JumpEventKind.TargetReached), "the newest kept");
-            Assert.That(drained.Count(e => e.Event.Kind == JumpEventKind.TargetReached), Is.LessThan(jumps), "the oldest dropped");
-            Assert.That(drained.Where(e => e.Event.Kind is JumpEventKind.JumpStarted or JumpEventKind.Landed).All(e => e.Path is not null), Is.True, "each move event still carries its path");
+            Assert.That(drained.Select(e => e.Tick), Is.Ordered, "oldest first");
+            Assert.That(drained[^1].Kind, Is.EqualTo(JumpEventKind.TargetReached), "the newest kept");
+            Assert.That(drained.Count(e => e.Kind == JumpEventKind.TargetReached), Is.LessThan(jumps), "the oldest dropped");
+            Assert.That(drained.Where(e => e.Kind is JumpEventKind.JumpStarted or JumpEventKind.Landed).All(e => e.Path is not null), Is.True, "each move event still carries its path");
         }
     }
 
@@ -211,9 +211,9 @@ public sealed class JumpNavigationHostTests
             Assert.That(host.IsValid(region), Is.False);
             Assert.That(host.GetAgentState(agent), Is.EqualTo(HostAgentState.Detached));
             Assert.That(host.GetWorldAgent(agent), Is.EqualTo(default(AgentHandle)));
-            Assert.That(host.TryDequeueEvent(agent, out AgentEvent removed), Is.True);
-            Assert.That(removed.Event.Kind, Is.EqualTo(JumpEventKind.Removed));
-            Assert.That(removed.Event.Reason, Is.EqualTo("region 'desert' was unregistered"));
+            Assert.That(host.TryDequeueEvent(agent, out JumpEvent removed), Is.True);
+            Assert.That(removed.Kind, Is.EqualTo(JumpEventKind.Removed));
+            Assert.That(removed.Reason, Is.EqualTo("region 'desert' was unregistered"));
             Assert.That(host.TryDequeueEvent(agent, out _), Is.False, "exactly one removal");
             Assert.That(host.SetTarget(agent, RuntimeWorlds.Point(to)).Status, Is.EqualTo(RuntimeStatus.UnknownAgent));
             Assert.That(host.SetTarget(agent, RuntimeWorlds.Point(to)).Reason, Does.Contain("unregistered"));
@@ -238,8 +238,8 @@ public sealed class JumpNavigationHostTests
             Assert.That(host.SetRegionKind(region, null).Ok, Is.True);
             Assert.That(host.GetAgentState(agent), Is.EqualTo(HostAgentState.Waiting));
             Assert.That(host.World, Is.Null);
-            Assert.That(host.TryDequeueEvent(agent, out AgentEvent e) && e.Event.Kind == JumpEventKind.Removed, Is.True);
-            Assert.That(e.Event.Reason, Does.Contain("lost its roadmap"));
+            Assert.That(host.TryDequeueEvent(agent, out JumpEvent e) && e.Kind == JumpEventKind.Removed, Is.True);
+            Assert.That(e.Reason, Does.Contain("lost its roadmap"));
 
             Assert.That(host.SetRegionKind(region, HostingWorlds.Desert).Ok, Is.True);
             Assert.That(host.GetAgentState(agent), Is.EqualTo(HostAgentState.Active));
@@ -262,9 +262,9 @@ public sealed class JumpNavigationHostTests
 
             // What the world said, per world agent, against what each queue delivers (drained only every 7 ticks).
             var expected = agents.ToDictionary(a => a, _ => new List<JumpEvent>());
-            var delivered = agents.ToDictionary(a => a, _ => new List<AgentEvent>());
+            var delivered = agents.ToDictionary(a => a, _ => new List<JumpEvent>());
             var worldAgents = agents.ToDictionary(a => host.GetWorldAgent(a), a => a);
-            for (int tick = 0; tick < MaxTicks && delivered.Values.Any(d => !d.Any(e => e.Event.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed)); tick++)
+            for (int tick = 0; tick < MaxTicks && delivered.Values.Any(d => !d.Any(e => e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed)); tick++)
             {
                 host.Step();
                 foreach (JumpEvent e in host.World!.Events)
@@ -276,7 +276,7 @@ public sealed class JumpNavigationHostTests
                 {
                     foreach (HostAgentHandle agent in agents)
                     {
-                        while (host.TryDequeueEvent(agent, out AgentEvent e))
+                        while (host.TryDequeueEvent(agent, out JumpEvent e))
                         {
                             delivered[agent].Add(e);
                         }
@@ -286,18 +286,18 @@ public sealed class JumpNavigationHostTests
 
             foreach (HostAgentHandle agent in agents)
             {
-                while (host.TryDequeueEvent(agent, out AgentEvent e))
+                while (host.TryDequeueEvent(agent, out JumpEvent e))
                 {
                     delivered[agent].Add(e);
                 }
 
-                Assert.That(delivered[agent].Select(e => e.Event), Is.EqualTo(expected[agent]), $"{agent}");
+                Assert.That(delivered[agent], Is.EqualTo(expected[agent]), $"{agent}");
                 Assert.That(expected[agent], Has.Count.GreaterThanOrEqualTo(4));
-                Assert.That(delivered[agent][^1].Event.Kind, Is.EqualTo(JumpEventKind.TargetReached));
-                foreach (AgentEvent e in delivered[agent].Where(e => e.Event.Kind is JumpEventKind.JumpStarted or JumpEventKind.Landed))
+                Assert.That(delivered[agent][^1].Kind, Is.EqualTo(JumpEventKind.TargetReached));
+                foreach (JumpEvent e in delivered[agent].Where(e => e.Kind is JumpEventKind.JumpStarted or JumpEventKind.Landed))
                 {
                     Assert.That(e.Path, Is.Not.Null, "a jump event carries its path");
-                    Assert.That(e.Path!.Moves[e.Event.Jump].Arc.Start, Is.EqualTo(e.Event.From));
+                    Assert.That(e.Path!.Moves[e.Jump].Arc.Start, Is.EqualTo(e.From));
                 }
             }
         }

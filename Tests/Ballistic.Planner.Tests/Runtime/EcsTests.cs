@@ -357,7 +357,10 @@ public sealed class EcsTests
                 }
             }
 
-            Assert.That(seenBuffered, Is.EqualTo(seenDirect));
+            // Each world has its own path objects: the events are compared with their paths' shape (moves, duration) in place of the reference.
+            static IEnumerable<(JumpEvent Event, int? Moves, float? Duration)> Shape(List<JumpEvent> events) =>
+                events.Select(e => (e with { Path = null }, e.Path?.Moves.Count, e.Path?.Duration));
+            Assert.That(Shape(seenBuffered), Is.EqualTo(Shape(seenDirect)));
             Assert.That(seenDirect.Count(e => e.Kind == JumpEventKind.PathFound), Is.GreaterThanOrEqualTo(agents.Length), "the agents set off");
 
             // Refused on play: an agent removed meanwhile, a target that is not a point.

@@ -165,17 +165,17 @@ public sealed class RebakeTests
         HostAgentHandle under = host.RegisterAgent(region, new Vector3(3.5f, 0f, 0f)).Agent;
         HostAgentHandle going = host.RegisterAgent(region, new Vector3(-1f, 0f, -2f)).Agent;
         Assert.That(host.SetTarget(going, new Vector3(4f, 0f, -2f)).Ok, Is.True);
-        var goingEvents = new List<AgentEvent>();
+        var goingEvents = new List<JumpEvent>();
         for (int i = 0; i < 1200 && !InLastMove(host.World!, host.GetWorldAgent(going)); i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(going, out AgentEvent e))
+            while (host.TryDequeueEvent(going, out JumpEvent e))
             {
                 goingEvents.Add(e);
             }
         }
 
-        Assume.That(InLastMove(host.World!, host.GetWorldAgent(going)), Is.True, string.Join("; ", goingEvents.Select(e => $"{e.Event.Kind} {e.Event.Reason}")));
+        Assume.That(InLastMove(host.World!, host.GetWorldAgent(going)), Is.True, string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
         AgentHandle openInWorld = host.GetWorldAgent(open);
 
         RuntimeResult rebaked = host.SetRegionKind(region, skeleton);
@@ -188,17 +188,17 @@ public sealed class RebakeTests
         Assert.That(host.GetWorldAgent(under), Is.EqualTo(default(AgentHandle)));
         Assert.That(host.GetStandingPoint(under)!.Value.X, Is.EqualTo(3.5f).Within(0.5f), "remembered where it stood");
 
-        var events = new List<AgentEvent>();
+        var events = new List<JumpEvent>();
         for (int i = 0; i < 3; i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(under, out AgentEvent e))
+            while (host.TryDequeueEvent(under, out JumpEvent e))
             {
                 events.Add(e);
             }
         }
 
-        Assert.That(events.Select(e => e.Event.Kind), Is.EqualTo(new[] { JumpEventKind.Removed }), "told once");
+        Assert.That(events.Select(e => e.Kind), Is.EqualTo(new[] { JumpEventKind.Removed }), "told once");
         Assert.That(host.GetPendingEventCount(open), Is.Zero, "the other agent is told nothing");
 
         // The frog on its way under the table finishes its last move as a frog, then cannot stand there as a skeleton.
@@ -206,14 +206,14 @@ public sealed class RebakeTests
         for (int i = 0; i < 600 && host.GetAgentState(going) == HostAgentState.Active; i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(going, out AgentEvent e))
+            while (host.TryDequeueEvent(going, out JumpEvent e))
             {
                 goingEvents.Add(e);
             }
         }
 
-        Assert.That(host.GetAgentState(going), Is.EqualTo(HostAgentState.Unplaced), string.Join("; ", goingEvents.Select(e => $"{e.Event.Kind} {e.Event.Reason}")));
-        Assert.That(goingEvents[^1].Event.Kind, Is.EqualTo(JumpEventKind.Removed));
+        Assert.That(host.GetAgentState(going), Is.EqualTo(HostAgentState.Unplaced), string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
+        Assert.That(goingEvents[^1].Kind, Is.EqualTo(JumpEventKind.Removed));
         Assert.That(host.GetAgentReason(going), Does.Contain("another character"));
         Assert.That(host.GetStandingPoint(going)!.Value.X, Is.GreaterThan(1f), "it waits where its move ended, under the table");
         Assert.That(host.GetTarget(going), Is.Not.Null, "its target is kept");
