@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Security.Cryptography;
+using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;
 
@@ -12,6 +13,7 @@ namespace Ballistic.Planner.Levels;
 public sealed class Level
 {
     private string? _fingerprint;
+    private TriangleBvh? _bvh;
 
     internal Level(Triangle[] triangles, int[] materialIndices, LevelMaterial[] materials, int droppedDegenerate, string source)
     {
@@ -50,6 +52,12 @@ public sealed class Level
     /// same. Roadmap files record it so that a roadmap is never used on another level.
     /// </summary>
     public string Fingerprint => _fingerprint ??= ComputeFingerprint();
+
+    /// <summary>
+    /// The bounding-volume hierarchy of <see cref="Triangles"/>, built on first use and shared by every scene and check
+    /// on this level (the level never changes). Thread-safe: two threads asking at once may both build it; one is kept.
+    /// </summary>
+    internal TriangleBvh Bvh => LazyInitializer.EnsureInitialized(ref _bvh, () => new TriangleBvh(Triangles));
 
     /// <summary>The friction of triangle <paramref name="triangle"/>: its material's override, else <paramref name="defaultFriction"/>.</summary>
     public float FrictionOf(int triangle, float defaultFriction) =>

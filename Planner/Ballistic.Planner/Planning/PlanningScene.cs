@@ -80,7 +80,7 @@ public sealed class PlanningScene
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
-        var bvh = new TriangleBvh(level.Triangles);
+        TriangleBvh bvh = level.Bvh;
         SurfaceSet surfaceSet = SurfaceSet.Build(level, surfaces);
         var estimator = new ContactEstimator(level, bvh, surfaceSet, character, poseValidator);
         var trunkSampler = new TrunkSampler(level, bvh, surfaceSet, character, estimator, sampler);

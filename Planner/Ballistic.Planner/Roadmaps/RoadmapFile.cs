@@ -100,7 +100,8 @@ public static class RoadmapFile
     /// Reads a roadmap file and checks that it was baked for this level and character and that its content is
     /// sound: every value finite, rotations and normals unit, node and limb indices in range, gravity the
     /// character's, every jump under the character's speed limits and landing where its parabola ends, and every
-    /// node within reach of the level's bounds.
+    /// node within reach of the level's bounds, and every stance true of the level: each contact on its surface with that
+    /// surface's normal and friction, each stance with the contacts the character needs and the friction cone they give.
     /// </summary>
     /// <param name="path">The file.</param>
     /// <param name="level">The level it will be used on.</param>
@@ -110,7 +111,7 @@ public static class RoadmapFile
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
-        return Read(path, level.Fingerprint, character, level.Bounds.Inflate(character.Reach + 1f));
+        return Read(path, level.Fingerprint, character, level);
     }
 
     /// <summary>
@@ -124,19 +125,19 @@ public static class RoadmapFile
     /// <exception cref="RoadmapFileException">Missing, not a regular file, truncated, corrupt, unsound, unknown version, or baked for something else.</exception>
     public static Roadmap Load(string path, string levelFingerprint, ReducedCharacter character) => Read(path, levelFingerprint, character, null);
 
-    private static Roadmap Read(string path, string levelFingerprint, ReducedCharacter character, Geometry.Aabb? bounds)
+    private static Roadmap Read(string path, string levelFingerprint, ReducedCharacter character, Levels.Level? level)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(levelFingerprint);
         ArgumentNullException.ThrowIfNull(character);
         byte[] bytes = InputFile.Read(path, MaxFileBytes, "RoadmapFile.MaxFileBytes", (phrase, e) => new RoadmapFileException($"Roadmap file {path} {phrase}.", e!));
-        return Check(FromBytes(bytes, path), path, levelFingerprint, character, bounds);
+        return Check(FromBytes(bytes, path), path, levelFingerprint, character, level);
     }
 
     /// <summary>
     /// Parses roadmap bytes held in memory (e.g. by an engine resource) and checks them exactly as
     /// <see cref="Load(string, Levels.Level, ReducedCharacter)"/> checks a file: baked for this level and character,
-    /// every value sound, every node within reach of the level's bounds.
+    /// every value sound, every node within reach of the level's bounds, every stance true of the level.
     /// </summary>
     /// <param name="bytes">The roadmap's bytes, as <see cref="ToBytes"/> wrote them.</param>
     /// <param name="name">Names the bytes in messages (e.g. the resource's path).</param>
@@ -148,11 +149,11 @@ public static class RoadmapFile
         ArgumentNullException.ThrowIfNull(name);
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
-        return Check(FromBytes(bytes, name), name, level.Fingerprint, character, level.Bounds.Inflate(character.Reach + 1f));
+        return Check(FromBytes(bytes, name), name, level.Fingerprint, character, level);
     }
 
     /// <summary>The checks of a parsed roadmap against the level and character it is loaded for.</summary>
-    private static Roadmap Check(Roadmap roadmap, string path, string levelFingerprint, ReducedCharacter character, Geometry.Aabb? bounds)
+    private static Roadmap Check(Roadmap roadmap, string path, string levelFingerprint, ReducedCharacter character, Levels.Level? level)
     {
         if (!string.Equals(roadmap.LevelFingerprint, levelFingerprint, StringComparison.Ordinal))
         {
@@ -166,8 +167,9 @@ public static class RoadmapFile
                 : $"Roadmap file {path} was baked for the character '{roadmap.CharacterName}', not '{character.Name}'.");
         }
 
-        if (bounds is Geometry.Aabb box)
+        if (level is not null)
         {
+            Geometry.Aabb box = level.Bounds.Inflate(character.Reach + 1f);
             foreach (RoadmapNode node in roadmap.Nodes)
             {
                 if (!box.Contains(node.Pose.Position))
@@ -179,6 +181,11 @@ public static class RoadmapFile
 
         CheckForCharacter(roadmap, character, path);
         CheckWalks(roadmap, character, path);
+        if (level is not null && StanceCheck.FirstLie(roadmap, level, character) is { } lie)
+        {
+            throw Invalid(path, $"{lie}, not as the bake puts stances on this level (edited by hand?); bake it again");
+        }
+
         return roadmap;
     }
 

@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Security.Cryptography;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
@@ -68,6 +69,38 @@ public sealed class RoadmapValidationTests
         string path = Path.Combine(_folder, "desert.roadmap");
         RoadmapFile.Save(roadmap, path);
         Assert.That(RoadmapFile.Load(path, desert, CharacterPresets.Skeleton()).Edges, Has.Count.EqualTo(roadmap.Edges.Count));
+    }
+
+    /// <summary>
+    /// A stance edited to lie about the level, with the checksum recomputed, is refused in one line naming the node
+    /// and what is false (before: contacts lifted 0.35 m off the ground, or normals and cones turned to point down,
+    /// loaded and were planned on as "exact").
+    /// </summary>
+    [Test]
+    public void StancesThatLieAboutTheLevelAreRefused()
+    {
+        ReducedCharacter skeleton = CharacterPresets.Skeleton();
+        Level level = Scene.Value.Level;
+        Vector3 up = new(0f, 0.35f, 0f);
+        var cases = new (string Path, string Expected)[]
+        {
+            (Tampered(node: n => n with { Contacts = [.. n.Contacts.Select(c => c with { Position = c.Position + up })] }), "node 3's contact of limb 0 is 0.35 m off the level's surface"),
+            (Tampered(node: n => n with { Contacts = [.. n.Contacts.Select(c => c with { Normal = -c.Normal })], Cone = new FrictionCone(-n.Cone.Axis, n.Cone.Mu) }), "node 3's contact of limb 0 has a normal that is not its surface's"),
+            (Tampered(node: n => n with { Cone = new FrictionCone(-n.Cone.Axis, n.Cone.Mu) }), "node 3's friction cone points 180° away from its contacts' normals"),
+            (Tampered(node: n => n with { Cone = new FrictionCone(n.Cone.Axis, n.Cone.Mu + 0.5f) }), $"node 3's friction cone claims a friction of {Baked.Value.Nodes[3].Cone.Mu + 0.5f:G4}, its contacts' least is"),
+            (Tampered(node: n => n with { Contacts = [.. n.Contacts.Select(c => c with { Mu = c.Mu + 1f })], Cone = new FrictionCone(n.Cone.Axis, n.Cone.Mu + 1f) }), "node 3's contact of limb 0 claims a friction of"),
+            (Tampered(node: n => n with { Contacts = [.. n.Contacts.Take(skeleton.RequiredContacts - 1)] }), $"node 3 has {skeleton.RequiredContacts - 1} contact"),
+        };
+        Assume.That(Baked.Value.Nodes[3].Contacts[0].Limb, Is.Zero);
+        Assume.That(skeleton.RequiredContacts, Is.GreaterThan(1));
+        foreach ((string path, string expected) in cases)
+        {
+            Assert.That(() => RoadmapFile.Load(path, level, skeleton), Throws.TypeOf<RoadmapFileException>().With.Message.Contains(expected).And.Message.Contains(path).And.Message.Contains("bake it again").And.Message.Not.Contains("\n"), expected);
+        }
+
+        // The same stances in memory (an engine resource's bytes) are refused the same way.
+        byte[] bytes = File.ReadAllBytes(cases[0].Path);
+        Assert.That(() => RoadmapFile.FromBytes(bytes, "res://lifted.tres", level, skeleton), Throws.TypeOf<RoadmapFileException>().With.Message.Contains("0.35 m off the level's surface"));
     }
 
     [Test]
