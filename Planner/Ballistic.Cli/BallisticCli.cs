@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using System.Reflection;
 
 namespace Ballistic.Cli;
@@ -47,6 +48,31 @@ public static class BallisticCli
         return root;
     }
 
+    /// <summary>
+    /// One parse error as a phrase for the user: a value of the wrong form says what its option takes, in words
+    /// ("--max-nodes takes a whole number, not 'abc'"), never a .NET type name; other errors as the parser says them.
+    /// </summary>
+    private static string Describe(ParseError e)
+    {
+        string message = e.Message.TrimEnd('.');
+        if (!message.StartsWith("Cannot parse argument", StringComparison.Ordinal))
+        {
+            return message;
+        }
+
+        (string name, Type? type, IReadOnlyList<Token> tokens) = e.SymbolResult switch
+        {
+            OptionResult o => (o.Option.Name, o.Option.ValueType, o.Tokens),
+            ArgumentResult a => (a.Argument.Name, a.Argument.ValueType, a.Tokens),
+            _ => ("the value", null, []),
+        };
+        Type? plain = type is null ? null : Nullable.GetUnderlyingType(type) ?? type;
+        string wanted = plain == typeof(int) || plain == typeof(long) ? "a whole number"
+            : plain == typeof(double) || plain == typeof(float) ? "a number (a dot for decimals)"
+            : "another value";
+        return tokens.Count > 0 ? $"{name} takes {wanted}, not '{tokens[^1].Value}'" : $"{name} takes {wanted}";
+    }
+
     private static IEnumerable<string> CommandPath(Command command, RootCommand root)
     {
         var names = new List<string>();
@@ -81,7 +107,7 @@ public static class BallisticCli
             {
                 // One line, not the whole help: what is wrong and where the help is.
                 string command = string.Join(' ', CommandPath(parsed.CommandResult.Command, root));
-                error.WriteLine($"error: {string.Join("; ", parsed.Errors.Select(e => e.Message.TrimEnd('.')))} (see 'ballistic{(command.Length > 0 ? " " + command : "")} --help')");
+                error.WriteLine($"error: {string.Join("; ", parsed.Errors.Select(Describe))} (see 'ballistic{(command.Length > 0 ? " " + command : "")} --help')");
                 return ExitCode.Usage;
             }
 

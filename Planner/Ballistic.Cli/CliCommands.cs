@@ -1,5 +1,7 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using System.Diagnostics;
+using System.Globalization;
 using System.Numerics;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
@@ -36,7 +38,26 @@ internal static class CliCommands
         _ => throw new CliException($"--locomotion must be 'walk+jump' or 'jump', not '{value}'."),
     };
 
-    private static Option<double?> TimeLimitOption() => new("--time-limit") { Description = "Bake time budget in seconds." };
+    private static Option<double?> TimeLimitOption() => new("--time-limit") { Description = "Bake time budget in seconds.", CustomParser = r => Number(r, "--time-limit") };
+
+    /// <summary>
+    /// A number option's value read strictly: digits with a dot for decimals (and an exponent), invariant culture,
+    /// no thousands separators, so that "1,5" is refused instead of read as 15; a refusal says what the option takes.
+    /// </summary>
+    internal static double Number(ArgumentResult result, string option)
+    {
+        string text = result.Tokens.Count > 0 ? result.Tokens[^1].Value : "";
+        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) && double.IsFinite(value))
+        {
+            return value;
+        }
+
+        result.AddError($"{option} takes a number (a dot for decimals), not '{OneLineText(text)}'");
+        return 0;
+    }
+
+    /// <summary>Control characters of a value shown in a message, escaped: one line.</summary>
+    private static string OneLineText(string text) => string.Concat(text.Select(c => char.IsControl(c) ? $"\\u{(int)c:x4}" : c.ToString()));
 
     public static Command Bake(CancellationToken cancellation = default)
     {
@@ -282,14 +303,17 @@ internal static class CliCommands
     /// <summary>The largest time budget an option takes, seconds (a week).</summary>
     private const double MaxSeconds = 7 * 24 * 3600;
 
+    /// <summary>Least time budget (seconds) an option takes: a millisecond (a shorter one would round to no time at all).</summary>
+    private const double MinSeconds = 0.001;
+
     /// <summary>The largest node budget an option takes.</summary>
     private const int MaxNodeBudget = 10_000_000;
 
     private static TimeSpan? Seconds(double? value, string option) => value switch
     {
         null => null,
-        > 0 and <= MaxSeconds => TimeSpan.FromSeconds(value.Value),
-        _ => throw new CliException($"{option} takes a number of seconds above 0 and at most {MaxSeconds:0} (a week), not {value}."),
+        >= MinSeconds and <= MaxSeconds => TimeSpan.FromSeconds(value.Value),
+        _ => throw new CliException(string.Create(CultureInfo.InvariantCulture, $"{option} takes {MinSeconds} to {MaxSeconds:0} seconds (a millisecond to a week), not {value}.")),
     };
 
     private static int Threads(int value) =>

@@ -38,6 +38,10 @@ internal static class CliInputs
         }
     }
 
+    /// <summary>Why <paramref name="path"/>, which is no file, cannot be read: a folder, or nothing there.</summary>
+    private static string Missing(string path) =>
+        Directory.Exists(path) ? "is a folder, not a file" : "does not exist";
+
     /// <summary>Parses "ACROSS[,UPDOWN]" (metres, invariant culture) as an endpoint tolerance; UPDOWN defaults to 0.25 m.</summary>
     public static EndpointTolerance ParseTolerance(string text, string option)
     {
@@ -62,7 +66,7 @@ internal static class CliInputs
         CheckPath(path, "Level file");
         if (!File.Exists(path))
         {
-            throw new InputFileException($"Level file '{path}' does not exist.");
+            throw new InputFileException($"Level file '{path}' {Missing(path)}.");
         }
 
         string extension = Path.GetExtension(path).ToLowerInvariant();
@@ -109,7 +113,7 @@ internal static class CliInputs
         CheckPath(value, "Limb spec");
         if (!File.Exists(value))
         {
-            throw new InputFileException($"Limb spec '{value}' does not exist.");
+            throw new InputFileException($"Limb spec '{value}' {Missing(value)}.");
         }
 
         string stem = value.EndsWith(".limbs.json", StringComparison.OrdinalIgnoreCase) ? value[..^".limbs.json".Length] : value[..^".json".Length];

@@ -24,7 +24,7 @@ internal static class PlaytestCommand
         Option<string> level = new("--level") { Description = "Level file (.glb or .gltf), Y up, metres.", Required = true };
         Option<string> character = new("--character") { Description = $"Character preset ({string.Join(", ", CharacterPresets.Names)}), or a limb spec NAME.limbs.json with its rigged NAME.glb beside it.", Required = true };
         Option<int> agents = new("--agents") { Description = "Agents spawned on random stances.", DefaultValueFactory = _ => 8 };
-        Option<double> seconds = new("--seconds") { Description = "Simulated seconds.", DefaultValueFactory = _ => 60 };
+        Option<double> seconds = new("--seconds") { Description = "Simulated seconds.", DefaultValueFactory = _ => 60, CustomParser = r => CliCommands.Number(r, "--seconds") };
         Option<int> seed = new("--seed") { Description = "Seed of the spawns, the targets and (without --roadmap) the bake.", DefaultValueFactory = _ => 1 };
         Option<string?> roadmap = new("--roadmap") { Description = "Roadmap file from 'bake'; without it the tool bakes one first." };
         Option<int> maxNodes = new("--max-nodes") { Description = "Nodes of the roadmap baked without --roadmap.", DefaultValueFactory = _ => 600 };

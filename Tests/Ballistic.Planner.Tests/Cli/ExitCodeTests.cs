@@ -42,7 +42,13 @@ public sealed class ExitCodeTests
         var cases = new (string[] Args, int Code, string Expected)[]
         {
             (["fly"], ExitCode.Usage, "fly"),
-            (["bake", "--level", level, "--character", "skeleton", "--time-limit", "1e12", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--time-limit takes a number of seconds"),
+            (["bake", "--level", level, "--character", "skeleton", "--time-limit", "1e12", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--time-limit takes 0.001 to 604800 seconds"),
+            (["bake", "--level", level, "--character", "skeleton", "--time-limit", "1e-9", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--time-limit takes 0.001 to 604800 seconds (a millisecond to a week), not 1E-09"),
+            (["bake", "--level", level, "--character", "skeleton", "--time-limit", "1,5", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--time-limit takes a number (a dot for decimals), not '1,5'"),
+            (["playtest", "--level", level, "--character", "skeleton", "--seconds", "2,5", "--out", Path.Combine(_folder, "p")], ExitCode.Usage, "--seconds takes a number (a dot for decimals), not '2,5'"),
+            (["bake", "--level", level, "--character", "skeleton", "--max-nodes", "abc", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--max-nodes takes a whole number, not 'abc'"),
+            (["bake", "--level", level, "--character", "skeleton", "--seed", "1.5", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--seed takes a whole number, not '1.5'"),
+            (["bake", "--level", _folder, "--character", "skeleton", "--out", Path.Combine(_folder, "x")], ExitCode.Input, "is a folder, not a file"),
             (["bake", "--level", level, "--character", "skeleton", "--time-limit", "NaN", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--time-limit"),
             (["bake", "--level", level, "--character", "skeleton", "--max-nodes", "0", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--max-nodes takes 1 to"),
             (["bake", "--level", level, "--character", "skeleton", "--threads", "100000", "--out", Path.Combine(_folder, "x")], ExitCode.Usage, "--threads takes 1 to 1024"),
@@ -66,6 +72,7 @@ public sealed class ExitCodeTests
             {
                 Assert.That(error.TrimEnd().Split('\n'), Has.Length.EqualTo(1), $"{context}: one line, no stack trace: {error}");
                 Assert.That(error, Does.StartWith("error: ").And.Contain(expected), context);
+                Assert.That(error, Does.Not.Contain("System.").And.Not.Contain("TimeLimit").And.Not.Contain("`1"), $"{context}: no .NET names in a message for users");
             }
             else
             {
