@@ -187,6 +187,13 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Requests started (searches) during the last tick.</summary>
     public int LastTickSearches => _requests.LastTickSearches;
 
+    /// <summary>
+    /// Path requests a tick stopped waiting for, since the world began: their animation was late on their due tick and
+    /// <see cref="WorldSettings.MaxAnimationWait"/> was spent, so they were delivered at the first tick they were ready
+    /// (the run then depends on machine speed). Zero on a machine that keeps up, and always with no wait limit.
+    /// </summary>
+    public long LateRequests => _requests.LateRequests;
+
 
     /// <summary>Adds a character kind; its scene must be of this world's level and its roadmap baked for it.</summary>
     public AddKindResult AddKind(CharacterKind kind)

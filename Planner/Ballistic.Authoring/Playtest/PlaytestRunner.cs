@@ -45,6 +45,7 @@ public static class PlaytestRunner
         {
             TickRate = settings.TickRate,
             AnimationThreads = settings.AnimationThreads,
+            MaxAnimationWait = null, // a playtest is offline: the same at any thread count and machine speed
             Locomotion = settings.Locomotion,
             JumpEffort = settings.JumpEffort,
         });

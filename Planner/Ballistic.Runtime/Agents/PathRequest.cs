@@ -34,4 +34,7 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
 
     /// <summary>The outcome of the search and animation run on the tick.</summary>
     public RequestOutcome? Outcome { get; set; }
+
+    /// <summary>True once a tick stopped waiting for this request's animation (<see cref="Core.WorldSettings.MaxAnimationWait"/> spent): it is delivered at the first tick its animation is ready.</summary>
+    public bool Late { get; set; }
 }

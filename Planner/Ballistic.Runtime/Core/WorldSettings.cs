@@ -26,10 +26,20 @@ public sealed record WorldSettings
 
     /// <summary>
     /// True (deterministic, the default): a path starts exactly <see cref="PathLatencyTicks"/> after its search,
-    /// waiting for its animation if it is late. False: it starts at the first tick after that when its animation is
+    /// waiting for its animation if it is late (at most <see cref="MaxAnimationWait"/> a tick). False: it starts at the first tick after that when its animation is
     /// ready, never waiting (smoother on slow machines, not reproducible).
     /// </summary>
     public bool WaitForAnimation { get; init; } = true;
+
+    /// <summary>
+    /// With <see cref="WaitForAnimation"/>, the most wall-clock time one tick waits, in all, for animations that are
+    /// late on their due tick (a starved machine, hundreds of requests at once); <c>null</c> waits as long as it takes.
+    /// Past it the tick goes on, and each request still animating is delivered at the first tick its animation is
+    /// ready, as without <see cref="WaitForAnimation"/> (then trajectories depend on machine speed; each such request
+    /// is counted in <see cref="JumpWorld.LateRequests"/>). Default a quarter of a second: a game hitches, never
+    /// freezes. Offline tools that must reproduce a run bit for bit (playtests, tests) set <c>null</c>. Positive.
+    /// </summary>
+    public TimeSpan? MaxAnimationWait { get; init; } = TimeSpan.FromSeconds(0.25);
 
     /// <summary>Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded hosts).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
@@ -83,6 +93,11 @@ public sealed record WorldSettings
         if (!(ReplanDistance >= 0f) || !float.IsFinite(ReplanDistance) || !(AnimationFrameRate > 0f) || !float.IsFinite(AnimationFrameRate))
         {
             return "ReplanDistance must be finite and not negative, and AnimationFrameRate finite and positive";
+        }
+
+        if (MaxAnimationWait is { } wait && !(wait > TimeSpan.Zero))
+        {
+            return $"MaxAnimationWait must be positive (or null: no limit), not {wait.TotalSeconds} s";
         }
 
         if (!Enum.IsDefined(Locomotion) || !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort))

@@ -50,6 +50,9 @@ internal sealed class PathRequestSystem : IDisposable
     /// <summary>Requests started during the last tick.</summary>
     public int LastTickSearches { get; private set; }
 
+    /// <summary>Requests a tick stopped waiting for (<see cref="WorldSettings.MaxAnimationWait"/> spent), since the world began.</summary>
+    public long LateRequests { get; private set; }
+
     public void Update(long tick, double time)
     {
         Start(tick);
@@ -93,6 +96,7 @@ internal sealed class PathRequestSystem : IDisposable
     {
         // In request order; a request re-queued for repair leaves the list, so walk it with an index.
         int kept = 0;
+        long waitStart = 0;
         for (int i = 0; i < _inFlight.Count; i++)
         {
             PathRequest request = _inFlight[i];
@@ -108,7 +112,17 @@ internal sealed class PathRequestSystem : IDisposable
                 continue;
             }
 
-            if (!due || (!ready && !_settings.WaitForAnimation))
+            if (due && !ready && _settings.WaitForAnimation && !request.Late)
+            {
+                ready = Await(request.Job!, ref waitStart);
+                if (!ready)
+                {
+                    request.Late = true;
+                    LateRequests++;
+                }
+            }
+
+            if (!due || !ready)
             {
                 _inFlight[kept++] = request;
                 continue;
@@ -129,6 +143,28 @@ internal sealed class PathRequestSystem : IDisposable
         }
 
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
+    }
+
+    /// <summary>
+    /// Waits for <paramref name="job"/> within what is left of this tick's <see cref="WorldSettings.MaxAnimationWait"/>
+    /// (counted from the first wait of the tick, <paramref name="waitStart"/>; without a limit, until it ends); true
+    /// when it ended (a failed job too: its outcome says so).
+    /// </summary>
+    private bool Await(Task<RequestOutcome> job, ref long waitStart)
+    {
+        if (_settings.MaxAnimationWait is not { } limit)
+        {
+            ((IAsyncResult)job).AsyncWaitHandle.WaitOne();
+            return true;
+        }
+
+        if (waitStart == 0)
+        {
+            waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
+        }
+
+        TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
+        return left > TimeSpan.Zero && ((IAsyncResult)job).AsyncWaitHandle.WaitOne(left);
     }
 
     /// <summary>Delivers a request's outcome on its due tick: a clean path to follow, a failure (the search's, or no path animating cleanly), or the target reached already.</summary>

@@ -184,7 +184,7 @@ public sealed class WalkHopTests
         // The runtime's path requests share the repair: the same double, through a world's agent.
         (PlanningScene scene, Roadmap roadmap, JumpAnimator real) = Floor.Value;
         var kind = new CharacterKind(scene, roadmap, real, new SpotAnimator(new SimpleMoveAnimator(real), 0f, 0.15f));
-        using var world = new JumpWorld(scene.Level, new WorldSettings { AnimationThreads = threads });
+        using var world = new JumpWorld(scene.Level, new WorldSettings { AnimationThreads = threads, MaxAnimationWait = null });
         AgentHandle agent = world.AddAgent(world.AddKind(kind).Kind, From).Agent;
         Assert.That(world.SetTarget(agent, To).Ok, Is.True);
         List<JumpEvent> events = RuntimeWorlds.Run(world, 60 * 60, RuntimeWorlds.Concluded);

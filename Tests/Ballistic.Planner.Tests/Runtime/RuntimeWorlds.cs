@@ -31,7 +31,7 @@ internal static class RuntimeWorlds
     /// The settings of the jump tests' worlds: one thread, and jumps only, so that their paths are the jump sequences
     /// they check whatever the planner makes of walking (walks are tested with hand-made paths, <see cref="WalkingPaths"/>).
     /// </summary>
-    public static WorldSettings JumpOnly { get; } = new() { AnimationThreads = 0, Locomotion = Locomotion.Jump };
+    public static WorldSettings JumpOnly { get; } = new() { AnimationThreads = 0, Locomotion = Locomotion.Jump, MaxAnimationWait = null };
 
     /// <summary>A world on the desert with the skeleton kind added (<see cref="JumpOnly"/> settings unless given).</summary>
     public static (JumpWorld World, KindHandle Kind) Desert(WorldSettings? settings = null)

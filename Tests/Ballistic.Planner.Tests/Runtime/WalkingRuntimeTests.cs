@@ -435,7 +435,7 @@ public sealed class WalkingRuntimeTests
         var outcomes = new List<string>();
         foreach (int threads in new[] { 0, 2 })
         {
-            using var world = new JumpWorld(desert.Scene.Level, new WorldSettings { AnimationThreads = threads, PathLatencyTicks = 4 });
+            using var world = new JumpWorld(desert.Scene.Level, new WorldSettings { AnimationThreads = threads, PathLatencyTicks = 4, MaxAnimationWait = null });
             KindHandle kind = world.AddKind(failing).Kind;
             AgentHandle agent = world.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
             world.SetTarget(agent, RuntimeWorlds.Point(to));

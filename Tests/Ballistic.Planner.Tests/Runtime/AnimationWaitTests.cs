@@ -1,0 +1,100 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Core;
+using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
+
+namespace Ballistic.Planner.Tests.Runtime;
+
+/// <summary>
+/// A tick waits for late animations at most <see cref="WorldSettings.MaxAnimationWait"/>: on a starved machine the
+/// game hitches, it does not freeze (before: the default wait blocked one tick for 29 s with 200 requests at once).
+/// </summary>
+public sealed class AnimationWaitTests
+{
+    private const int Latency = 2;
+
+    /// <summary>An animator that animates nothing until the test lets it: an animation as late as the test wants.</summary>
+    private sealed class GatedAnimator(IJumpAnimator inner, ManualResetEventSlim gate) : IJumpAnimator
+    {
+        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
+        {
+            gate.Wait();
+            return inner.Animate(moves, frameRate);
+        }
+
+        public bool CanStand(PoseEvaluation pose) => inner.CanStand(pose);
+    }
+
+    private static (JumpWorld World, AgentHandle Agent) Start(ManualResetEventSlim gate, TimeSpan? wait)
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, new GatedAnimator(new SimpleMoveAnimator(desert.Animator), gate));
+        var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = 1, PathLatencyTicks = Latency, MaxAnimationWait = wait });
+        KindHandle handle = world.AddKind(kind).Kind;
+        (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, seed: 57)[0];
+        AgentHandle agent = world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent;
+        Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
+        return (world, agent);
+    }
+
+    [Test]
+    public void ALateAnimationStopsTheWaitAtTheLimitAndArrivesWhenReady()
+    {
+        using var gate = new ManualResetEventSlim(false);
+        (JumpWorld world, AgentHandle agent) = Start(gate, TimeSpan.FromMilliseconds(50));
+        using (world)
+        {
+            var found = new List<long>();
+            var longest = TimeSpan.Zero;
+            for (int tick = 0; tick <= Latency + 2; tick++)
+            {
+                long before = System.Diagnostics.Stopwatch.GetTimestamp();
+                world.Step();
+                longest = TimeSpan.FromTicks(Math.Max(longest.Ticks, System.Diagnostics.Stopwatch.GetElapsedTime(before).Ticks));
+                found.AddRange(world.Events.ToArray().Where(e => e.Kind == JumpEventKind.PathFound).Select(e => e.Tick));
+            }
+
+            Assert.That(found, Is.Empty, "no path while its animation is held back");
+            Assert.That(world.LateRequests, Is.EqualTo(1), "the request is counted late once");
+            Assert.That(world.IsPathPending(agent), Is.True, "still pending, not dropped");
+            Assert.That(longest, Is.LessThan(TimeSpan.FromSeconds(5)), "no tick waited for the held animation (the limit is 50 ms; the bound leaves room for a loaded machine)");
+
+            gate.Set();
+            for (int tick = 0; tick < 600 && found.Count == 0; tick++)
+            {
+                world.Step();
+                found.AddRange(world.Events.ToArray().Where(e => e.Kind == JumpEventKind.PathFound).Select(e => e.Tick));
+                Thread.Sleep(1);
+            }
+
+            Assert.That(found, Has.Count.EqualTo(1), "the late path arrives once its animation is ready");
+            Assert.That(world.GetPath(agent), Is.Not.Null);
+            Assert.That(world.LateRequests, Is.EqualTo(1));
+        }
+    }
+
+    [Test]
+    public void WithoutALimitTheDueTickWaitsAndThePathStartsExactlyOnTime()
+    {
+        using var gate = new ManualResetEventSlim(false);
+        (JumpWorld world, AgentHandle _) = Start(gate, wait: null);
+        using (world)
+        {
+            var found = new List<long>();
+            long started = world.Tick + 1;
+            using var release = new Timer(_ => gate.Set(), null, 300, Timeout.Infinite);
+            for (int tick = 0; tick <= Latency + 1; tick++)
+            {
+                world.Step();
+                found.AddRange(world.Events.ToArray().Where(e => e.Kind == JumpEventKind.PathFound).Select(e => e.Tick));
+            }
+
+            Assert.That(found, Is.EqualTo(new[] { started + Latency }), "delivered on its due tick, however late its animation");
+            Assert.That(world.LateRequests, Is.Zero);
+        }
+    }
+}
