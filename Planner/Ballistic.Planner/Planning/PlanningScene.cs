@@ -1,3 +1,5 @@
+using System.Globalization;
+using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;
@@ -80,6 +82,11 @@ public sealed class PlanningScene
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
+        if (TooBigFor(level, character) is { } problem)
+        {
+            throw new CharacterException(problem);
+        }
+
         TriangleBvh bvh = level.Bvh;
         SurfaceSet surfaceSet = SurfaceSet.Build(level, surfaces);
         var estimator = new ContactEstimator(level, bvh, surfaceSet, character, poseValidator);
@@ -90,5 +97,28 @@ public sealed class PlanningScene
         var sweep = new TrunkSweepValidator(bvh, character.TrunkHalfExtents, limits.CollisionTolerance);
         var steering = new ParabolaSteering(limits, character.TrunkHalfExtents, arcValidator is null ? sweep : new BothArcValidators(sweep, arcValidator));
         return new PlanningScene(level, character, bvh, surfaceSet, estimator, trunkSampler, steering, new WalkSteering(bvh, character, limits.CollisionTolerance));
+    }
+
+    /// <summary>
+    /// Why <paramref name="character"/> can stand nowhere on <paramref name="level"/> whatever the sampling, or
+    /// <c>null</c>: its trunk is larger in every direction than the whole level (a rig scaled ×10,000, bone radii of
+    /// hundreds of metres). Without this a bake of such a character spends its time pushing a trunk the size of the
+    /// level out of every triangle, finding nothing, for many minutes.
+    /// </summary>
+    internal static string? TooBigFor(Level level, ReducedCharacter character)
+    {
+        if (level.Triangles.Count == 0)
+        {
+            return null;
+        }
+
+        Vector3 size = level.Bounds.Max - level.Bounds.Min;
+        Vector3 trunk = 2f * character.TrunkHalfExtents;
+        float levelExtent = MathF.Max(size.X, MathF.Max(size.Y, size.Z));
+        float trunkLeast = MathF.Min(trunk.X, MathF.Min(trunk.Y, trunk.Z));
+        return trunkLeast > levelExtent
+            ? string.Create(CultureInfo.InvariantCulture,
+                $"Character '{IO.MessageText.Printable(character.Name)}' can stand nowhere on {IO.MessageText.Printable(level.Source)}: its trunk ({trunk.X:0.###} × {trunk.Y:0.###} × {trunk.Z:0.###} m) is larger than the whole level ({size.X:0.###} × {size.Y:0.###} × {size.Z:0.###} m); check the rig's scale and its bone radii.")
+            : null;
     }
 }

@@ -132,9 +132,9 @@ public sealed class RoadmapBaker
 
             if (emptyRounds >= MaxEmptyRounds)
             {
-                long attempts = (long)MaxEmptyRounds * settings.BatchSize * _scene.Sampler.Settings.MaxAttempts;
+                long drawn = (long)MaxEmptyRounds * settings.BatchSize;
                 return new BakeResult(roadmap.Freeze(), PlannerStatus.NoPath,
-                    $"no valid root pose found in the last {attempts} attempts: {_scene.Character.Name} can stand nowhere else on this level",
+                    $"no valid root pose found in the last {drawn} samples (up to {_scene.Sampler.Settings.MaxAttempts} attempts each): {_scene.Character.Name} can stand nowhere else on this level",
                     clock.Elapsed, startNode, goalNode, counters.Steering, nextSample)
                 { SteeringRejections = counters.Rejections, StartPlacement = startPlacement, GoalPlacement = goalPlacement };
             }
