@@ -35,13 +35,14 @@ internal static class FuzzHarness
     /// <param name="seeds">One case per seed.</param>
     /// <param name="folder">Where the cases write their files (a folder of their own each).</param>
     /// <param name="make">Writes a case's files from its mutator into its folder and returns the load to run.</param>
-    public static (List<string> Failures, int Loaded) Run(string format, IReadOnlyList<int> seeds, string folder, Func<Mutator, string, Action> make)
+    /// <param name="limit">The CPU time one case may take; <see cref="CaseTime"/> when <c>null</c>.</param>
+    public static (List<string> Failures, int Loaded) Run(string format, IReadOnlyList<int> seeds, string folder, Func<Mutator, string, Action> make, TimeSpan? limit = null)
     {
         var failures = new ConcurrentBag<(int Seed, string Text)>();
         int loaded = 0;
         Parallel.ForEach(seeds, new ParallelOptions { MaxDegreeOfParallelism = 2 }, seed =>
         {
-            if (RunOne(format, seed, folder, make, out bool succeeded) is string failure)
+            if (RunOne(format, seed, folder, make, out bool succeeded, limit) is string failure)
             {
                 failures.Add((seed, failure));
             }
@@ -59,8 +60,10 @@ internal static class FuzzHarness
     /// <param name="folder">Where the case makes its own folder.</param>
     /// <param name="make">Writes the case's files and returns the load to run.</param>
     /// <param name="loaded">Whether the load succeeded (the mutated input was still valid).</param>
-    public static string? RunOne(string format, int seed, string folder, Func<Mutator, string, Action> make, out bool loaded)
+    /// <param name="limit">The CPU time the case may take; <see cref="CaseTime"/> when <c>null</c>.</param>
+    public static string? RunOne(string format, int seed, string folder, Func<Mutator, string, Action> make, out bool loaded, TimeSpan? limit = null)
     {
+        TimeSpan most = limit ?? CaseTime;
         string caseFolder = Path.Combine(folder, $"{format}-{seed}");
         Directory.CreateDirectory(caseFolder);
         var mutator = new Mutator(seed);
@@ -88,10 +91,11 @@ internal static class FuzzHarness
             CancellationToken.None,
             TaskCreationOptions.LongRunning,
             TaskScheduler.Default);
-        string? problem = !run.Wait(Hang)
-            ? $"still running after {Hang.TotalSeconds} s"
-            : elapsed > CaseTime
-                ? $"took {elapsed.TotalSeconds:0.00} s of CPU time (limit {CaseTime.TotalSeconds} s)"
+        TimeSpan hang = most * 3 > Hang ? most * 3 : Hang;
+        string? problem = !run.Wait(hang)
+            ? $"still running after {hang.TotalSeconds} s"
+            : elapsed > most
+                ? $"took {elapsed.TotalSeconds:0.00} s of CPU time (limit {most.TotalSeconds} s)"
                 : allocated > CaseBytes
                     ? $"allocated {allocated >> 20} MiB (limit {CaseBytes >> 20} MiB)"
                     : thrown is null ? null : Problem(thrown);

@@ -69,6 +69,45 @@ public sealed class InputFuzzTests
     [Test]
     public void RoadmapMutationsWithRecomputedChecksums() => Fuzz("roadmap-rehashed", 200, FormatExceptionSeeds);
 
+    /// <summary>Master seed of the second lane when none is given: CI and a plain <c>dotnet test</c> try the same cases.</summary>
+    private const int DeepDefaultSeed = 2026;
+
+    /// <summary>Cases of each kind (level, limb spec, roadmap) the second lane runs per master seed.</summary>
+    private const int DeepCases = 30;
+
+    /// <summary>
+    /// The second lane, past the loaders (<see cref="DeepFuzz"/>): mutated levels, limb specs and roadmaps that still
+    /// load are baked and planned on, and every exact plan is audited. Its master seed is printed;
+    /// <c>BALLISTIC_FUZZ_DEEP_SEED=N</c> runs master seed N and <c>BALLISTIC_FUZZ_DEEP_SEED=random</c> draws a new one
+    /// each run (also printed, so any failure replays, as does the replay line of each failed case).
+    /// </summary>
+    [Test]
+    public void DeepLane()
+    {
+        string? given = Environment.GetEnvironmentVariable("BALLISTIC_FUZZ_DEEP_SEED");
+        int master = given is null ? DeepDefaultSeed
+            : given == "random" ? Random.Shared.Next(1, 20_000_000)
+            : int.Parse(given, System.Globalization.CultureInfo.InvariantCulture);
+        TestContext.Out.WriteLine($"deep lane: master seed {master} (BALLISTIC_FUZZ_DEEP_SEED={master} runs it again)");
+        var failures = new List<string>();
+        foreach (string format in new[] { "deep-level", "deep-spec", "deep-roadmap" })
+        {
+            int[] seeds = [.. Enumerable.Range(0, DeepCases).Select(i => (master * 100) + i)];
+            var clock = System.Diagnostics.Stopwatch.StartNew();
+            (List<string> failed, int loaded) = FuzzHarness.Run(format, seeds, _folder, Maker(format), DeepFuzz.CaseTime);
+            TestContext.Out.WriteLine($"{format}: {seeds.Length} cases in {clock.Elapsed.TotalSeconds:0.0} s: {loaded} loaded and planned, {seeds.Length - loaded - failed.Count} refused with an input error, {failed.Count} failed");
+            failures.AddRange(failed);
+        }
+
+        TestContext.Out.WriteLine("plans of the cases that loaded: " + string.Join(", ", DeepFuzz.Outcomes.OrderBy(o => o.Key, StringComparer.Ordinal).Select(o => $"{o.Value} {o.Key}")));
+        foreach (string failure in failures)
+        {
+            TestContext.Out.WriteLine(failure);
+        }
+
+        Assert.That(failures, Is.Empty, $"master seed {master}: {failures.Count} deep cases failed:\n{string.Join("\n", failures.Take(10))}");
+    }
+
     /// <summary>Runs the one case named by <c>BALLISTIC_FUZZ_REPLAY=format:seed</c>, printing its mutations.</summary>
     [Test]
     [Explicit("replays one fuzz case: set BALLISTIC_FUZZ_REPLAY=format:seed")]
@@ -78,7 +117,7 @@ public sealed class InputFuzzTests
         Assume.That(replay, Is.Not.Null.And.Contains(":"), "set BALLISTIC_FUZZ_REPLAY=format:seed");
         string[] parts = replay!.Split(':');
         int seed = int.Parse(parts[1], System.Globalization.CultureInfo.InvariantCulture);
-        string? failure = FuzzHarness.RunOne(parts[0], seed, _folder, Maker(parts[0]), out bool loaded);
+        string? failure = FuzzHarness.RunOne(parts[0], seed, _folder, Maker(parts[0]), out bool loaded, parts[0].StartsWith("deep-", StringComparison.Ordinal) ? DeepFuzz.CaseTime : null);
         TestContext.Out.WriteLine(failure ?? $"{replay}: passes ({(loaded ? "loads" : "refused with an input error")})");
         Assert.That(failure, Is.Null);
     }
@@ -106,7 +145,7 @@ public sealed class InputFuzzTests
         Assert.That(failures, Is.Empty, $"{failures.Count} of {seeds.Length} {format} cases failed:\n{string.Join("\n", failures.Take(20))}");
     }
 
-    private static Func<Mutator, string, Action> Maker(string format) => format switch
+    internal static Func<Mutator, string, Action> Maker(string format) => format switch
     {
         "glb" => GlbLevel,
         "gltf" => GltfLevel,
@@ -114,6 +153,9 @@ public sealed class InputFuzzTests
         "spec" => Spec,
         "roadmap" => (m, folder) => Roadmap(m, folder, rehash: false),
         "roadmap-rehashed" => (m, folder) => Roadmap(m, folder, rehash: true),
+        "deep-level" => (m, folder) => DeepFuzz.Level(m, folder, GlbLevel),
+        "deep-spec" => (m, folder) => DeepFuzz.Spec(m, folder, Spec),
+        "deep-roadmap" => (m, folder) => DeepFuzz.Roadmap(m, folder, (mm, f) => Roadmap(mm, f, rehash: true)),
         _ => throw new ArgumentException($"Unknown fuzz format '{format}'.", nameof(format)),
     };
 
