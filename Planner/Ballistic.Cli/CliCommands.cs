@@ -80,9 +80,9 @@ internal static class CliCommands
             int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
             var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit, Locomotion = ParseLocomotion(parse.GetValue(locomotion)!) };
             var scene = PlanningScene.Create(lvl, chr);
-            ConsoleProgress? progress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
+            ConsoleProgress progress = ConsoleProgress.For(stderr, nodes);
             BakeResult result = new RoadmapBaker(scene).Bake(settings, TerminationCondition.Cancellation(cancellation), progress);
-            progress?.Finish();
+            progress.Finish();
             // A bake has no "exact": it ends done (its reason says which budget stopped it), cancelled or failed.
             string ending = result.Status == PlannerStatus.Exact ? "done" : PlanReportWriter.StatusName(result.Status);
             stdout.WriteLine($"bake: {ending} ({result.Reason})");

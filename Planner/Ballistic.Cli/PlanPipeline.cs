@@ -81,9 +81,9 @@ internal sealed class PlanPipeline
         else
         {
             var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance, Locomotion = Locomotion };
-            ConsoleProgress? progress = ConsoleProgress.IsInteractive(error) ? new ConsoleProgress(error, MaxNodes) : null;
+            ConsoleProgress progress = ConsoleProgress.For(error, MaxNodes);
             (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress);
-            progress?.Finish();
+            progress.Finish();
             roadmap = bake.Roadmap;
             bakeSeconds = bake.Elapsed.TotalSeconds;
             Timings["bakeAndPlan"] = clock.Elapsed.TotalSeconds;

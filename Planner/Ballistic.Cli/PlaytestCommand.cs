@@ -75,9 +75,9 @@ internal static class PlaytestCommand
             }
             else
             {
-                ConsoleProgress? bakeProgress = ConsoleProgress.IsInteractive(stderr) ? new ConsoleProgress(stderr, nodes) : null;
+                ConsoleProgress bakeProgress = ConsoleProgress.For(stderr, nodes);
                 BakeResult bake = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = settings.Seed, MaxNodes = nodes, Threads = threadCount, Locomotion = settings.Locomotion }, TerminationCondition.Cancellation(cancellation), bakeProgress);
-                bakeProgress?.Finish();
+                bakeProgress.Finish();
                 if (bake.Status == PlannerStatus.Cancelled)
                 {
                     stderr.WriteLine("cancelled: nothing written.");
