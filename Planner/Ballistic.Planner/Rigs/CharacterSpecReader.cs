@@ -49,6 +49,9 @@ internal sealed class CharacterSpecReader
     /// <summary>The largest magnitude of a length (metres), speed (m/s), friction or vector component a spec may give.</summary>
     internal const float MaxMagnitude = 1e3f;
 
+    /// <summary>The most limbs a spec may name: a centipede's legs fit; a spec of thousands (a 3,000-limb one baked for 139 s) is refused.</summary>
+    internal const int MaxLimbs = 128;
+
     /// <summary>The widest joint limit a spec may give, degrees either way.</summary>
     internal const float MaxDegrees = 360f;
 
@@ -125,6 +128,11 @@ internal sealed class CharacterSpecReader
         if (limbsJson.Count == 0)
         {
             throw Error("key 'limbs'", "is empty: a character needs at least one limb.");
+        }
+
+        if (limbsJson.Count > MaxLimbs)
+        {
+            throw Error("key 'limbs'", $"names {limbsJson.Count} limbs, more than the {MaxLimbs} a character may have (every stance estimates a contact per limb: a bake's cost grows with them).");
         }
 
         var limbs = new List<LimbSpec>();

@@ -22,6 +22,7 @@ public sealed class SpecErrorTests
         yield return Case("number as a string", Spec(Foot + "}", "\"friction\":\"high\","), "key 'friction'", "must be a number", "\"high\"");
         yield return Case("limbs as a list", "{\"schema\":\"ballistic.character/1\",\"limbs\":[]}", "key 'limbs'", "must be an object");
         yield return Case("no limbs", "{\"schema\":\"ballistic.character/1\"}", "key 'limbs'", "missing");
+        yield return Case("too many limbs", Spec(string.Join(",", Enumerable.Range(0, 129).Select(i => $"\"leg{i}\":{{\"rootBone\":\"left_hip\",\"effectorBone\":\"left_ankle\"}}"))), "key 'limbs'", "names 129 limbs", "more than the 128");
         yield return Case("short vector", Spec(Foot + ",\"effectorOffset\":[0,1]}"), "limb 'left_foot'", "'effectorOffset'", "3 numbers");
         yield return Case("zero normal", Spec(Foot + ",\"contactNormal\":[0,0,0]}"), "limb 'left_foot'", "'contactNormal'", "zero vector");
         yield return Case("filter without minCosine", Spec(Foot + ",\"normalFilter\":{\"direction\":[0,1,0]}}"), "limb 'left_foot'", "normalFilter", "no minCosine");
