@@ -45,7 +45,7 @@ public static class PlanReportReader
         }
         catch (JsonException e)
         {
-            throw new PlanReportException($"{reader.File} is not valid JSON: {Printable(e.Message)}", e);
+            throw new PlanReportException($"{reader.File} is not valid JSON: {Planner.IO.MessageText.Json(e)}.", e);
         }
 
         using (document)

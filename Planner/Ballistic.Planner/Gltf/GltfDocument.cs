@@ -506,7 +506,7 @@ public sealed class GltfDocument
         }
         catch (JsonException e)
         {
-            throw new GltfException($"{name} is not a glTF file: {MessageText.Printable(e.Message.TrimEnd('.'))}.", e);
+            throw new GltfException($"{name} is not a glTF file: {MessageText.Json(e)}.", e);
         }
     }
 

@@ -88,7 +88,7 @@ internal sealed class CharacterSpecReader
         }
         catch (JsonException e)
         {
-            throw new RigException($"{file} is not valid JSON: {MessageText.Printable(e.Message)}", e);
+            throw new RigException($"{file} is not valid JSON: {MessageText.Json(e)}.", e);
         }
 
         return reader.Read(root);
