@@ -251,6 +251,8 @@ public static class CharacterSpecFile
             }
         }
 
+        CheckLimbChains(spec, skeleton.Parents, names, IndexOf, Error);
+
         foreach (string bone in spec.Joints.Keys)
         {
             Bone(bone, $"joints, bone '{bone}'");
@@ -454,6 +456,52 @@ public static class CharacterSpecFile
         var rotations = new Quaternion[rig.Joints.Count];
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), new float[rig.DofCount], positions, rotations);
         return Vector3.Normalize(Vector3.Transform(-Vector3.UnitY, Quaternion.Conjugate(rotations[joint])));
+    }
+
+    /// <summary>
+    /// The limbs' chains as the rig can move them: each limb's root bone an ancestor of its effector bone and below the
+    /// rig's root bone (a limb rooted at the root would move the whole body), no bone on two limbs' chains (one bone
+    /// cannot follow two feet), and no limb bone below a root bone among the spec's <c>trunkBones</c> (a trunk bone
+    /// does not move with a limb; a hip or shoulder, where the limb joins the trunk, may be listed). Each mistake is refused here, in one line naming the limbs and bone, instead of failing later in a bake.
+    /// </summary>
+    private static void CheckLimbChains(CharacterSpec spec, IReadOnlyList<int> parents, string[] names, Func<string, int> indexOf, Func<string, string, RigException> error)
+    {
+        var owner = new Dictionary<int, string>();
+        foreach (LimbSpec limb in spec.Limbs)
+        {
+            int root = indexOf(limb.RootBone);
+            int effector = indexOf(limb.EffectorBone);
+            if (parents[root] < 0)
+            {
+                throw error($"limb '{limb.Name}'", $"starts at '{limb.RootBone}', the rig's root bone, which carries the whole body: give the bone the limb hangs from (a hip or shoulder) as rootBone.");
+            }
+
+            var chain = new List<int>();
+            for (int j = effector; j != root; j = parents[j])
+            {
+                if (j < 0)
+                {
+                    throw error($"limb '{limb.Name}'", $"runs from '{limb.RootBone}' to '{limb.EffectorBone}', but '{limb.RootBone}' is not above '{limb.EffectorBone}' in the rig: the effector bone must hang below the root bone.");
+                }
+
+                chain.Add(j);
+            }
+
+            chain.Add(root);
+            foreach (int j in chain)
+            {
+                if (owner.TryGetValue(j, out string? other))
+                {
+                    throw error($"limbs '{other}' and '{limb.Name}'", $"both run through the bone '{names[j]}': each limb needs a chain of its own, from its root bone to its effector.");
+                }
+
+                owner[j] = limb.Name;
+                if (j != root && spec.TrunkBones?.Contains(names[j], StringComparer.Ordinal) == true)
+                {
+                    throw error("key 'trunkBones'", $"lists '{names[j]}', a bone of limb '{limb.Name}' below its root bone: a trunk bone does not move with a limb; leave it out of trunkBones.");
+                }
+            }
+        }
     }
 
     private static float[] PoseFrom(Rig rig, CharacterSpec spec, string poseName, string specPath)

@@ -73,11 +73,14 @@ public sealed class SpecErrorTests
         yield return Case("lone surrogate", Spec(Foot + "}", "\"name\":\"\\uD800\","), "object 'name'", "not valid Unicode");
         yield return Case("line break in a limb name", "{\"schema\":\"ballistic.character/1\",\"limbs\":{\"left\\nfoot\":{\"rootBone\":\"left_hip\",\"effectorBone\":\"ankle\"}}}", "limb 'left\\u000afoot'", "'ankle'");
         yield return Case("not JSON", "{\"schema\": ", "is not valid JSON");
+        yield return Case("limb rooted at the root bone", Spec("\"left_foot\":{\"rootBone\":\"pelvis\",\"effectorBone\":\"left_ankle\"}"), "limb 'left_foot'", "starts at 'pelvis', the rig's root bone");
+        yield return Case("overlapping chains", Spec(Foot + "},\"left_toes\":{\"rootBone\":\"left_knee\",\"effectorBone\":\"left_toe\"}"), "limbs 'left_foot' and 'left_toes'", "both run through the bone 'left_ankle'");
+        yield return Case("limb bone in trunkBones", Spec(Foot + "}", "\"trunkBones\":[\"pelvis\",\"left_hip\",\"left_knee\"],"), "key 'trunkBones'", "lists 'left_knee', a bone of limb 'left_foot' below its root bone");
         yield return Case("trailing comma", "{\n  \"schema\": \"ballistic.character/1\",\n  \"limbs\": {},\n}", "is not valid JSON: The JSON object contains a trailing comma at the end (line 4, column 1).");
         yield return Case("JSON but not an object", "[1, 2]", "is not a Ballistic limb spec");
         yield return Case("unknown effector", Spec("\"tail\":{\"rootBone\":\"pelvis\",\"effectorBone\":\"tail_tip\"}"), "limb 'tail'", "'tail_tip'", "skeleton.glb");
         yield return Case("root bone the effector itself", Spec("\"left_foot\":{\"rootBone\":\"left_ankle\",\"effectorBone\":\"left_ankle\"}"), "limb 'left_foot'", "'left_ankle' as both its rootBone and its effectorBone", "rootBone");
-        yield return Case("root bone not above the effector", Spec("\"left_foot\":{\"rootBone\":\"right_hip\",\"effectorBone\":\"left_ankle\"}"), "left_foot", "'right_hip' is not an ancestor of 'left_ankle'");
+        yield return Case("root bone not above the effector", Spec("\"left_foot\":{\"rootBone\":\"right_hip\",\"effectorBone\":\"left_ankle\"}"), "left_foot", "'right_hip' is not above 'left_ankle'");
         yield return Case("effector without vertices", Spec("\"nod\":{\"rootBone\":\"neck\",\"effectorBone\":\"head\"}"), "limb 'nod'", "no effectorOffset", "effector bone 'head'", "give effectorOffset");
     }
 
