@@ -101,7 +101,7 @@ internal static class CliInputs
 
     /// <summary>
     /// The character named on the command line: a preset name, or a limb spec file (<c>NAME.limbs.json</c>) whose
-    /// rigged glTF sits beside it as <c>NAME.glb</c> (or <c>NAME.gltf</c>).
+    /// rigged glTF its <c>rig</c> key names or sits beside it as <c>NAME.glb</c> (or <c>NAME.gltf</c>).
     /// </summary>
     public static (ReducedCharacter Reduced, CharacterModel Model) Character(string value)
     {
@@ -116,10 +116,7 @@ internal static class CliInputs
             throw new InputFileException($"Limb spec '{value}' {Missing(value)}.");
         }
 
-        string stem = value.EndsWith(".limbs.json", StringComparison.OrdinalIgnoreCase) ? value[..^".limbs.json".Length] : value[..^".json".Length];
-        string? gltf = new[] { stem + ".glb", stem + ".gltf" }.FirstOrDefault(File.Exists)
-            ?? throw new InputFileException($"Limb spec '{value}' needs its rigged character beside it as {Path.GetFileName(stem)}.glb or .gltf.");
-        (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(gltf, value);
+        (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(value);
         return (reduced, model);
     }
 

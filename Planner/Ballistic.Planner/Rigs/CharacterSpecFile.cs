@@ -30,6 +30,40 @@ public static class CharacterSpecFile
     public const float DefaultBoneRadius = 0.03f;
 
     /// <summary>
+    /// Loads a character from its limb spec alone: the rigged glTF is the one the spec's <c>rig</c> key names (relative to
+    /// the spec's folder, and never outside it), or, without that key, <c>NAME.glb</c> or <c>NAME.gltf</c> beside a spec
+    /// named <c>NAME.limbs.json</c> (or <c>NAME.json</c>). Otherwise as <see cref="Load(string, string, GltfLoadOptions?)"/>.
+    /// </summary>
+    /// <param name="specPath">The limb spec (<c>ballistic.character/1</c> JSON).</param>
+    /// <param name="options">Limits on the bytes and vertices read; <c>null</c> for <see cref="GltfLoadOptions.Default"/>.</param>
+    /// <exception cref="RigException">The spec or its rig is unusable or missing; the message names the file and the key.</exception>
+    public static (CharacterModel Model, ReducedCharacter Reduced) Load(string specPath, GltfLoadOptions? options = null)
+    {
+        ArgumentNullException.ThrowIfNull(specPath);
+        return Load(RigOf(specPath, options ?? GltfLoadOptions.Default), specPath, options);
+    }
+
+    /// <summary>The rigged glTF of the spec at <paramref name="specPath"/> (<see cref="Load(string, GltfLoadOptions?)"/>).</summary>
+    private static string RigOf(string specPath, GltfLoadOptions options)
+    {
+        string printable = MessageText.Printable(specPath);
+        byte[] bytes = InputFile.Read(specPath, options.MaxBytes, "GltfLoadOptions.MaxBytes", (phrase, e) => new RigException($"Limb spec {printable} {phrase}.", e!));
+        CharacterSpec spec = CharacterSpecReader.Read(bytes, printable);
+        string folder = Path.GetDirectoryName(Path.GetFullPath(specPath)) ?? ".";
+        if (spec.Rig is string rig)
+        {
+            string path = ReferencedFile.Resolve(folder, rig, phrase => new RigException(MessageText.Printable($"{specPath}: key 'rig': '{rig}' {phrase.Replace("the glTF's folder", "the spec's folder", StringComparison.Ordinal)}.")));
+            return File.Exists(path) ? path : throw new RigException(MessageText.Printable($"{specPath}: key 'rig' names '{rig}', which does not exist in the spec's folder."));
+        }
+
+        string name = Path.GetFileName(specPath);
+        string stem = name.EndsWith(".limbs.json", StringComparison.OrdinalIgnoreCase) ? name[..^".limbs.json".Length]
+            : name.EndsWith(".json", StringComparison.OrdinalIgnoreCase) ? name[..^".json".Length] : name;
+        return new[] { stem + ".glb", stem + ".gltf" }.Select(f => Path.Combine(folder, f)).FirstOrDefault(File.Exists)
+            ?? throw new RigException(MessageText.Printable($"{specPath} needs its rigged character: give its path as key 'rig', or put it beside the spec as {stem}.glb or {stem}.gltf."));
+    }
+
+    /// <summary>
     /// Loads a character from a rigged glTF file and its limb spec. The model's <see cref="CharacterModel.Source"/>
     /// is the glTF, so the animated GLB carries its meshes.
     /// </summary>

@@ -27,7 +27,8 @@ internal sealed record CharacterSpec(
     IReadOnlyDictionary<string, JointAxis[]> Joints,
     float? BoneRadius,
     IReadOnlyDictionary<string, float> BoneRadii,
-    IReadOnlyDictionary<string, IReadOnlyList<(string Bone, float[] Degrees)>> Poses);
+    IReadOnlyDictionary<string, IReadOnlyList<(string Bone, float[] Degrees)>> Poses,
+    string? Rig = null);
 
 /// <summary>
 /// Reads a <c>ballistic.character/1</c> limb spec strictly: unknown keys, wrong JSON types, unknown values and
@@ -55,7 +56,7 @@ internal sealed class CharacterSpecReader
     /// <summary>The widest joint limit a spec may give, degrees either way.</summary>
     internal const float MaxDegrees = 360f;
 
-    private static readonly string[] TopKeys = ["schema", "name", "upAxis", "forwardAxis", "requiredContacts", "takeoffSpeedMax", "landingSpeedMax", "friction", "walkSpeed", "maxSlope", "maxSlopeAlong", "stepHeight", "trunkBones", "limbs", "joints", "boneRadius", "boneRadii", "poses"];
+    private static readonly string[] TopKeys = ["schema", "name", "upAxis", "forwardAxis", "requiredContacts", "takeoffSpeedMax", "landingSpeedMax", "friction", "walkSpeed", "maxSlope", "maxSlopeAlong", "stepHeight", "trunkBones", "limbs", "joints", "boneRadius", "boneRadii", "poses", "rig"];
     private static readonly string[] LimbKeys = ["rootBone", "effectorBone", "effectorOffset", "contactNormal", "contact", "normalFilter"];
     private static readonly string[] FilterKeys = ["direction", "minCosine"];
     private static readonly string[] JointKeys = ["axes"];
@@ -164,7 +165,20 @@ internal sealed class CharacterSpecReader
             Joints(root["joints"]),
             Positive(root, "boneRadius", "key 'boneRadius'", "metres"),
             BoneRadii(root["boneRadii"]),
-            Poses(root["poses"]));
+            Poses(root["poses"]),
+            root["rig"] is JsonNode rig ? RigFile(Text(rig, "key 'rig'")) : null);
+    }
+
+    /// <summary>The spec's <c>rig</c>: a <c>.glb</c> or <c>.gltf</c> named relative to the spec's own folder (checked for escapes when it is opened).</summary>
+    private string RigFile(string rig)
+    {
+        string extension = Path.GetExtension(rig);
+        if (!extension.Equals(".glb", StringComparison.OrdinalIgnoreCase) && !extension.Equals(".gltf", StringComparison.OrdinalIgnoreCase))
+        {
+            throw Error("key 'rig'", $"names '{rig}', which is not a .glb or .gltf file: give the rigged glTF's path relative to the spec's folder, e.g. \"hero.glb\".");
+        }
+
+        return rig;
     }
 
     private LimbSpec Limb(string name, JsonNode? node)

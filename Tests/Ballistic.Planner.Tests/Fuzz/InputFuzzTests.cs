@@ -3,6 +3,7 @@ using System.Security.Cryptography;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
@@ -11,7 +12,7 @@ namespace Ballistic.Planner.Tests.Fuzz;
 
 /// <summary>
 /// Seeded mutations of valid level, character, limb spec and roadmap files (tracker issue 8): whatever the bytes,
-/// <see cref="GltfLevelLoader.Load"/>, <see cref="CharacterSpecFile.Load"/> and <see cref="RoadmapFile.Load(string, string, Ballistic.Planner.Characters.ReducedCharacter)"/> either
+/// <see cref="GltfLevelLoader.Load"/>, <see cref="CharacterSpecFile.Load(string, string, GltfLoadOptions?)"/> and <see cref="RoadmapFile.Load(string, string, Ballistic.Planner.Characters.ReducedCharacter)"/> either
 /// succeed or throw an input error with one plain sentence, within 2 s and 512 MiB a case (see
 /// <see cref="FuzzHarness"/>). The seeds are fixed, so every run tries the same cases; a failure prints its seed and
 /// mutations, and <c>BALLISTIC_FUZZ_REPLAY=format:seed</c> with <see cref="Replay"/> runs it alone.
