@@ -33,13 +33,18 @@ public sealed record WorldSettings
 
     /// <summary>
     /// With <see cref="WaitForAnimation"/>, the most wall-clock time one tick waits, in all, for animations that are
-    /// late on their due tick (a starved machine, hundreds of requests at once); <c>null</c> waits as long as it takes.
-    /// Past it the tick goes on, and each request still animating is delivered at the first tick its animation is
-    /// ready, as without <see cref="WaitForAnimation"/> (then trajectories depend on machine speed; each such request
-    /// is counted in <see cref="JumpWorld.LateRequests"/>). Default a quarter of a second: a game hitches, never
-    /// freezes. Offline tools that must reproduce a run bit for bit (playtests, tests) set <c>null</c>. Positive.
+    /// late on their due tick (a starved machine, hundreds of requests at once); <c>null</c> (the default) waits as long
+    /// as it takes, so that a world stepped as fast as a loop can go (tests, tools, offline simulations) gives the
+    /// same run on any machine. Past it the tick goes on, and each request still animating is delivered at the first
+    /// tick its animation is ready, as without <see cref="WaitForAnimation"/> (then trajectories depend on machine
+    /// speed; each such request is counted in <see cref="JumpWorld.LateRequests"/>). A world stepped in real time
+    /// should set one: the Godot server's host uses <see cref="RealTimeAnimationWait"/>, so a game hitches, never
+    /// freezes. Positive.
     /// </summary>
-    public TimeSpan? MaxAnimationWait { get; init; } = TimeSpan.FromSeconds(0.25);
+    public TimeSpan? MaxAnimationWait { get; init; }
+
+    /// <summary>The <see cref="MaxAnimationWait"/> of worlds stepped in real time (the Godot server's): a quarter of a second.</summary>
+    public static readonly TimeSpan RealTimeAnimationWait = TimeSpan.FromSeconds(0.25);
 
     /// <summary>Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded hosts).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);

@@ -72,11 +72,11 @@ public sealed class JumpNavigationHost : IDisposable
     private readonly object _gate = new();
 
     /// <summary>Creates a host with no world yet.</summary>
-    /// <param name="settings">The settings of the worlds it creates; defaults when <c>null</c>.</param>
+    /// <param name="settings">The settings of the worlds it creates; when <c>null</c>, the defaults with a real-time wait for late animations (<see cref="WorldSettings.RealTimeAnimationWait"/>): the host serves a game stepping at its physics rate.</param>
     /// <exception cref="ArgumentException">A setting is out of range.</exception>
     public JumpNavigationHost(WorldSettings? settings = null)
     {
-        Settings = settings ?? new WorldSettings();
+        Settings = settings ?? new WorldSettings { MaxAnimationWait = WorldSettings.RealTimeAnimationWait };
         if (Settings.Problem() is { } problem)
         {
             throw new ArgumentException($"World settings: {problem}.", nameof(settings));

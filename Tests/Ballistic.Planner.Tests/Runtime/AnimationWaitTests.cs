@@ -10,8 +10,9 @@ using Ballistic.Runtime.Kinds;
 namespace Ballistic.Planner.Tests.Runtime;
 
 /// <summary>
-/// A tick waits for late animations at most <see cref="WorldSettings.MaxAnimationWait"/>: on a starved machine the
-/// game hitches, it does not freeze (before: the default wait blocked one tick for 29 s with 200 requests at once).
+/// A tick waits for late animations at most <see cref="WorldSettings.MaxAnimationWait"/> where one is set (the Godot
+/// server's host sets one): on a starved machine the game hitches, it does not freeze (before: the wait blocked one
+/// tick for 29 s with 200 requests at once).
 /// </summary>
 public sealed class AnimationWaitTests
 {
@@ -39,6 +40,19 @@ public sealed class AnimationWaitTests
         AgentHandle agent = world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent;
         Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
         return (world, agent);
+    }
+
+    /// <summary>
+    /// A bare world waits as long as it takes (a loop stepping as fast as it can, like a test or the CI's game program,
+    /// must not outrun its animations); the Godot server's host, stepped in real time, bounds the wait.
+    /// </summary>
+    [Test]
+    public void ABareWorldWaitsWhileTheRealTimeHostBoundsTheWait()
+    {
+        Assert.That(new WorldSettings().MaxAnimationWait, Is.Null);
+        using var host = new Ballistic.Runtime.Hosting.JumpNavigationHost();
+        Assert.That(host.Settings.MaxAnimationWait, Is.EqualTo(WorldSettings.RealTimeAnimationWait));
+        Assert.That(new WorldSettings { MaxAnimationWait = TimeSpan.Zero }.Problem(), Does.Contain("MaxAnimationWait must be positive"));
     }
 
     [Test]

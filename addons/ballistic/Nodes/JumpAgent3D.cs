@@ -1,4 +1,5 @@
 #nullable enable
+using System.Collections.Generic;
 using System.Linq;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.DebugDraw;
@@ -169,9 +170,11 @@ public partial class JumpAgent3D : Node
             _logic.SyncBodyPosition(own.GlobalPosition.ToNumerics());
         }
 
-        foreach (AgentSignal signal in _logic.Update())
+        // By index: a foreach over the interface would allocate an enumerator every physics frame.
+        IReadOnlyList<AgentSignal> signals = _logic.Update();
+        for (int i = 0; i < signals.Count; i++)
         {
-            Emit(signal);
+            Emit(signals[i]);
         }
 
         if (_logic.Mode == AgentMotionMode.MoveParent && _logic.State == HostAgentState.Active && BodyNode() is { } body)
