@@ -152,19 +152,26 @@ internal sealed class PathRequestSystem : IDisposable
     /// </summary>
     private bool Await(Task<RequestOutcome> job, ref long waitStart)
     {
-        if (_settings.MaxAnimationWait is not { } limit)
+        try
         {
-            ((IAsyncResult)job).AsyncWaitHandle.WaitOne();
-            return true;
-        }
+            if (_settings.MaxAnimationWait is not { } limit)
+            {
+                job.Wait();
+                return true;
+            }
 
-        if (waitStart == 0)
+            if (waitStart == 0)
+            {
+                waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
+            }
+
+            TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
+            return left > TimeSpan.Zero && job.Wait(left);
+        }
+        catch (AggregateException)
         {
-            waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
+            return true; // the job failed: it ended, and reading its outcome next says how
         }
-
-        TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
-        return left > TimeSpan.Zero && ((IAsyncResult)job).AsyncWaitHandle.WaitOne(left);
     }
 
     /// <summary>Delivers a request's outcome on its due tick: a clean path to follow, a failure (the search's, or no path animating cleanly), or the target reached already.</summary>
