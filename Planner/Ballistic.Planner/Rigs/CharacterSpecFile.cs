@@ -408,7 +408,7 @@ public static class CharacterSpecFile
         CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, contact, flexion, extending) { Source = source });
         ReducedCharacter reduced = Named(() => ReducedModelBuilder.Derive(
             model,
-            spec.RequiredContacts ?? Math.Min(2, rigLimbs.Count),
+            spec.RequiredContacts ?? DefaultRequiredContacts(rigLimbs),
             spec.TakeoffSpeedMax ?? 8f,
             spec.LandingSpeedMax ?? 12f,
             spec.Friction ?? 0.5f));
@@ -536,6 +536,22 @@ public static class CharacterSpecFile
                 }
             }
         }
+    }
+
+    /// <summary>
+    /// How many limbs must touch when a spec does not say: half the feet, rounded up (2 for a biped or a quadruped, 3
+    /// for six legs, 4 for eight: a spider does not stand on two of its legs), all of them for one or two feet; 2 (or
+    /// 1 with one limb) for a rig without feet.
+    /// </summary>
+    internal static int DefaultRequiredContacts(IReadOnlyList<RigLimb> limbs)
+    {
+        int feet = limbs.Count(l => l.Kind == LimbKind.Foot);
+        return feet switch
+        {
+            0 => Math.Min(2, limbs.Count),
+            <= 2 => feet,
+            _ => (feet + 1) / 2,
+        };
     }
 
     private static float[] PoseFrom(Rig rig, CharacterSpec spec, string poseName, string specPath)
