@@ -178,6 +178,14 @@ public sealed class JumpWorld : IDisposable
     /// <summary>The events of the last <see cref="Step"/>, in order: path found or failed, then takeoffs, landings, walks started and finished, and arrivals.</summary>
     public ReadOnlySpan<JumpEvent> Events => _events.Events;
 
+    /// <summary>
+    /// The events of <paramref name="agent"/> during the last <see cref="Step"/>, in order (the same events as in
+    /// <see cref="Events"/>, one contiguous range per agent): what a game object of one agent reads each tick without
+    /// walking every agent's events. Empty for an agent with none, or unknown. Allocates nothing once the buffers have
+    /// grown; valid until the next <see cref="Step"/>.
+    /// </summary>
+    public ReadOnlySpan<JumpEvent> EventsOf(AgentHandle agent) => _disposed ? [] : _events.Of(agent, _agents.Generation.Length);
+
     /// <summary>Path requests waiting for a search.</summary>
     public int QueuedRequests => _queue.Count;
 
