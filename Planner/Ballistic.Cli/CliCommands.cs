@@ -52,12 +52,9 @@ internal static class CliCommands
             return value;
         }
 
-        result.AddError($"{option} takes a number (a dot for decimals), not '{OneLineText(text)}'");
+        result.AddError($"{option} takes a number (a dot for decimals), not '{MessageText.Printable(text)}'");
         return 0;
     }
-
-    /// <summary>Control characters of a value shown in a message, escaped: one line.</summary>
-    private static string OneLineText(string text) => string.Concat(text.Select(c => char.IsControl(c) ? $"\\u{(int)c:x4}" : c.ToString()));
 
     public static Command Bake(CancellationToken cancellation = default)
     {

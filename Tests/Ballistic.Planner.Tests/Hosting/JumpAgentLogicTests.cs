@@ -13,16 +13,23 @@ public sealed class JumpAgentLogicTests
     private const int MaxTicks = 60 * 60;
     private static readonly Vector3 Gravity = new(0f, -9.81f, 0f);
 
-    [Test]
-    public void ATwoJumpTripRaisesTheSignalsInOrderAndTheBodyFliesTheAnnouncedParabolas()
+    /// <summary>An agent registered on the desert host and sent across a trip of two jumps (seed 41), before any tick.</summary>
+    private static (JumpNavigationHost Host, JumpAgentLogic Logic, RoadmapNode From, RoadmapNode To) SentOnATwoJumpTrip()
     {
         (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 41).Single();
         (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        var logic = new JumpAgentLogic(host);
+        Assert.That(logic.Register(region, RuntimeWorlds.Point(from)).Ok, Is.True);
+        logic.TargetPosition = RuntimeWorlds.Point(to);
+        return (host, logic, from, to);
+    }
+
+    [Test]
+    public void ATwoJumpTripRaisesTheSignalsInOrderAndTheBodyFliesTheAnnouncedParabolas()
+    {
+        (JumpNavigationHost host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
         using (host)
         {
-            var logic = new JumpAgentLogic(host);
-            Assert.That(logic.Register(region, RuntimeWorlds.Point(from)).Ok, Is.True);
-            logic.TargetPosition = RuntimeWorlds.Point(to);
             int airborne = 0;
             List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished, () =>
             {
@@ -159,13 +166,9 @@ public sealed class JumpAgentLogicTests
     [Test]
     public void RaisingSignalsAllocatesNothing()
     {
-        (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 41).Single();
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpNavigationHost host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
         using (host)
         {
-            var logic = new JumpAgentLogic(host);
-            Assert.That(logic.Register(region, RuntimeWorlds.Point(from)).Ok, Is.True);
-            logic.TargetPosition = RuntimeWorlds.Point(to);
             HostingWorlds.Run(logic, MaxTicks, seen => seen.Any(s => s.Kind == AgentSignalKind.PathChanged));
             Assume.That(logic.CurrentPath, Is.Not.Null);
             var kinds = new AgentSignalKind[16];
