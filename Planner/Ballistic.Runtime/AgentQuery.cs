@@ -7,7 +7,8 @@ namespace Ballistic.Runtime;
 /// Which agents a system or game code iterates (<see cref="JumpWorld.Query"/>), like a DOTS <c>EntityQuery</c>: by
 /// what they do (<see cref="InStates"/>), their kind (<see cref="OfKind"/>), and the game components they have
 /// (<see cref="With{T}"/>) or lack (<see cref="Without{T}"/>). Build it once and keep it: building allocates,
-/// iterating does not. The default query selects every live agent.
+/// iterating does not. The default query selects every active agent (agents waiting for a roadmap, unplaced or
+/// detached are out of the simulation: <see cref="AgentLifecycle"/>).
 /// </summary>
 public readonly struct AgentQuery
 {

@@ -9,7 +9,7 @@ namespace Ballistic.Runtime;
 /// <see cref="JumpWorld.PoseSystem"/>; a game inserts its own between them (stamina, look-at, its own steering).
 /// </summary>
 /// <remarks>
-/// Runs on the thread that calls <see cref="JumpWorld.Step"/>. It may call the world's methods directly (their effects
+/// Runs on the thread that calls <see cref="JumpWorld.Step()"/>. It may call the world's methods directly (their effects
 /// are immediate, as between ticks) or record them in <see cref="JumpWorld.Commands"/> (played back at the start of
 /// the next tick). An exception it throws does not escape the tick: the tick goes on with the next system and a
 /// <see cref="Events.JumpEventKind.SystemFailed"/> event names the system and the exception.

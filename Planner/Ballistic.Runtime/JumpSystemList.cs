@@ -59,7 +59,7 @@ public sealed class JumpSystemList : IReadOnlyList<IJumpSystem>
         return RuntimeResult.Success;
     }
 
-    /// <summary>Runs every system once, in order (<see cref="JumpWorld.Step"/>); a game system's exception is reported, not thrown.</summary>
+    /// <summary>Runs every system once, in order (<see cref="JumpWorld.Step()"/>); a game system's exception is reported, not thrown.</summary>
     internal void Run(in TickContext tick, Action<IJumpSystem, Exception> failed)
     {
         foreach (IJumpSystem system in _systems)

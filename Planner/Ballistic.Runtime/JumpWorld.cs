@@ -1,7 +1,9 @@
 using System.Numerics;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Runtime.Agents;
@@ -22,27 +24,49 @@ namespace Ballistic.Runtime;
 /// one frozen roadmap per character kind (like a navigation map with one region per agent size), agents as
 /// entities whose components live in arrays (<see cref="AgentHandle"/>s name them; a game adds its own components
 /// with <see cref="AddComponentColumn{T}"/> and iterates agents with <see cref="Query"/>), and an ordered list of
-/// systems run by <see cref="Step"/> (<see cref="Systems"/>): by default path requests (a budgeted queue), locomotion
+/// systems run by <see cref="Step()"/> (<see cref="Systems"/>): by default path requests (a budgeted queue), locomotion
 /// (exactly on the arcs and along the walks), pose (joint buffers from the whole-body animation), and the game's own
 /// inserted between them. Changes recorded in <see cref="Commands"/> are played back at the start of each tick. What
 /// happened comes out as <see cref="Events"/>.
 /// </summary>
 /// <remarks>
+/// <para>
+/// One table for everything the Godot nodes register, in any order: a kind may exist before its roadmap
+/// (<see cref="CreateKind"/>; a rebake or a clear is <see cref="ReplaceKind"/>, a node leaving <see cref="RemoveKind"/>),
+/// and each agent is one entity whose handle never changes while it lives; its <see cref="AgentLifecycle"/> says
+/// whether it is simulated (on its kind's roadmap) or waits for a roadmap, for a place to stand, or was detached
+/// with its kind. A world made without a level takes its first roadmap's and moves to another only while no kind
+/// holds one.
+/// </para>
+/// <para>
 /// Deterministic: the same kinds, settings and calls between the same ticks give the same trajectories and events,
 /// whatever <see cref="WorldSettings.AnimationThreads"/> (with <see cref="WorldSettings.WaitForAnimation"/>, the
-/// default). Calls and <see cref="Step"/> belong on one thread (the game loop); animations are solved on others.
+/// default). Calls and <see cref="Step()"/> belong on one thread (the game loop); animations are solved on others.
 /// A change called from another thread while the world steps or changes is refused with
-/// <see cref="RuntimeStatus.Busy"/> (<see cref="Step"/> and <see cref="Dispose"/> wait for a call in progress), so a
+/// <see cref="RuntimeStatus.Busy"/> (<see cref="Step()"/> and <see cref="Dispose"/> wait for a call in progress), so a
 /// breach never corrupts the world; changes from other threads go through <see cref="Commands"/>.
 /// No call throws for a bad handle or bad input: each returns a <see cref="RuntimeResult"/> with the reason, and
 /// no exception escapes a tick. After <see cref="Dispose"/> every call that changes the world does nothing and
-/// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step"/> throws. Positions are the trunk centre in world
+/// returns <see cref="RuntimeStatus.Disposed"/>; <see cref="Step()"/> throws. Positions are the trunk centre in world
 /// metres, Y up; times are seconds.
+/// </para>
 /// </remarks>
 public sealed class JumpWorld : IDisposable
 {
-    private readonly List<CharacterKind> _kinds = [];
-    private readonly List<RoadmapSearch> _searches = [];
+    private readonly List<CharacterKind?> _kinds = [];
+    private readonly List<RoadmapSearch?> _searches = [];
+    private readonly List<string> _kindNames = [];
+    private readonly List<int> _kindGenerations = [];
+    private readonly List<bool> _kindAlive = [];
+    private readonly Stack<int> _freeKinds = new();
+    private readonly List<(float Distance, int Id)> _nearest = [];
+    private int[] _seen = [];
+    private int[] _goal = [];
+    private int[] _stack = [];
+    private int _stamp;
+
+    /// <summary>The level was given at construction: kinds of another level are refused even while no kind holds a roadmap.</summary>
+    private readonly bool _levelPinned;
     private readonly AgentStore _agents = new();
     private readonly EventBuffer _events = new();
     private readonly EventBuffer _pending = new();
@@ -60,13 +84,27 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Agents flagged <see cref="AgentStore.Rehome"/>: the tick looks for those that stopped only while there are some.</summary>
     private int _rehoming;
 
-    /// <summary>Creates an empty world on a level.</summary>
+    /// <summary>Creates an empty world on a level, which it keeps: a kind of another level is refused.</summary>
     /// <param name="level">The level every kind's scene must be built on.</param>
     /// <param name="settings">Tick rate, budgets and threads; defaults when <c>null</c>.</param>
     /// <exception cref="ArgumentException">A setting is out of range.</exception>
     public JumpWorld(Level level, WorldSettings? settings = null)
+        : this(settings)
     {
         ArgumentNullException.ThrowIfNull(level);
+        Level = level;
+        _levelPinned = true;
+    }
+
+    /// <summary>
+    /// Creates an empty world whose level follows its kinds, as a game's scenes change: the level of the first kind
+    /// given a roadmap; a kind of another level is refused while some kind holds a roadmap, and becomes the world's
+    /// level when none does (the scene was changed and the old kinds cleared or removed).
+    /// </summary>
+    /// <param name="settings">Tick rate, budgets and threads; defaults when <c>null</c>.</param>
+    /// <exception cref="ArgumentException">A setting is out of range.</exception>
+    public JumpWorld(WorldSettings? settings = null)
+    {
         Settings = settings ?? new WorldSettings();
         if (Settings.Problem() is { } problem)
         {
@@ -74,7 +112,6 @@ public sealed class JumpWorld : IDisposable
         }
 
         Settings.Tolerance.Validate();
-        Level = level;
         _queue = new PathQueue(_agents);
         _requests = new PathRequestRunner(Settings, _agents, _queue, _events, _kinds, _searches);
         var locomotion = new LocomotionRunner(_agents, _events, _queue);
@@ -92,7 +129,7 @@ public sealed class JumpWorld : IDisposable
     }
 
     /// <summary>
-    /// The systems <see cref="Step"/> runs, in order: by default <see cref="PathRequestSystem"/>,
+    /// The systems <see cref="Step()"/> runs, in order: by default <see cref="PathRequestSystem"/>,
     /// <see cref="LocomotionSystem"/>, <see cref="BodyPointSystem"/>, <see cref="PoseSystem"/>. Insert the game's own
     /// between them; remove the pose system when nobody reads poses (the body-point system when nobody reads body
     /// points: the Godot nodes do).
@@ -124,14 +161,14 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>
     /// The world's command buffer: changes recorded from any thread, played back in order at the start of the next
-    /// <see cref="Step"/>, before the systems run.
+    /// <see cref="Step()"/>, before the systems run.
     /// </summary>
     public JumpCommandBuffer Commands { get; }
 
     /// <summary>True from <see cref="Dispose"/> on.</summary>
     internal bool IsDisposed => _disposed;
 
-    /// <summary>True while <see cref="Step"/> runs.</summary>
+    /// <summary>True while <see cref="Step()"/> runs.</summary>
     internal bool IsStepping { get; private set; }
 
     /// <summary>
@@ -152,13 +189,14 @@ public sealed class JumpWorld : IDisposable
     }
 
     /// <summary>
-    /// The live agents <paramref name="query"/> selects, for <c>foreach</c>, in slot order; allocates nothing. A
-    /// query naming another world's column selects nobody.
+    /// The active agents (<see cref="AgentLifecycle.Active"/>: on their kind's roadmap) <paramref name="query"/>
+    /// selects, for <c>foreach</c>, in slot order; allocates nothing. A query naming another world's column selects
+    /// nobody.
     /// </summary>
     public AgentQueryResult Query(in AgentQuery query) => new(_agents, query, _disposed || !query.IsOf(this));
 
-    /// <summary>The level.</summary>
-    public Level Level { get; }
+    /// <summary>The level: the one given at construction, else that of the kinds holding roadmaps (the last one while none does); <c>null</c> before any.</summary>
+    public Level? Level { get; private set; }
 
     /// <summary>The settings.</summary>
     public WorldSettings Settings { get; }
@@ -169,22 +207,27 @@ public sealed class JumpWorld : IDisposable
     /// <summary>World time, seconds: <see cref="Tick"/> × <see cref="WorldSettings.TickSeconds"/>.</summary>
     public double Time => Tick * Settings.TickSeconds;
 
-    /// <summary>Live agents.</summary>
+    /// <summary>Agents added and not removed, in any <see cref="AgentLifecycle"/>.</summary>
     public int AgentCount => _agents.Count;
 
-    /// <summary>The character kinds, by <see cref="KindHandle.Index"/>.</summary>
-    public IReadOnlyList<CharacterKind> Kinds => _kinds;
+    /// <summary>The character kinds (scene, roadmap, animator), by <see cref="KindHandle.Index"/>; <c>null</c> for a kind without a roadmap (or removed).</summary>
+    public IReadOnlyList<CharacterKind?> Kinds => _kinds;
 
-    /// <summary>The events of the last <see cref="Step"/>, in order: path found or failed, then takeoffs, landings, walks started and finished, and arrivals.</summary>
+    /// <summary>The events of the last <see cref="Step()"/>, in order: path found or failed, then takeoffs, landings, walks started and finished, and arrivals.</summary>
     public ReadOnlySpan<JumpEvent> Events => _events.Events;
 
     /// <summary>
-    /// The events of <paramref name="agent"/> during the last <see cref="Step"/>, in order (the same events as in
+    /// The events of <paramref name="agent"/> during the last <see cref="Step()"/>, in order (the same events as in
     /// <see cref="Events"/>, one contiguous range per agent): what a game object of one agent reads each tick without
     /// walking every agent's events. Empty for an agent with none, or unknown. Allocates nothing once the buffers have
-    /// grown; valid until the next <see cref="Step"/>.
+    /// grown; valid until the next <see cref="Step()"/>.
     /// </summary>
-    public ReadOnlySpan<JumpEvent> EventsOf(AgentHandle agent) => _disposed ? [] : _events.Of(agent, _agents.Generation.Length);
+    public ReadOnlySpan<JumpEvent> EventsOf(AgentHandle agent)
+    {
+        // The first read after a change sorts the buffer: never while another thread steps.
+        using Gate gate = Gate.Wait(_gate);
+        return _disposed ? [] : _events.Of(agent, _agents.Generation.Length);
+    }
 
     /// <summary>Path requests waiting for a search.</summary>
     public int QueuedRequests => _queue.Count;
@@ -217,14 +260,158 @@ public sealed class JumpWorld : IDisposable
             return new AddKindResult(gone, default);
         }
 
-        if (Check(kind) is { } refused)
+        if (Check(kind, -1) is { } refused)
         {
             return new AddKindResult(refused, default);
         }
 
-        _kinds.Add(kind);
-        _searches.Add(new RoadmapSearch(kind, Settings));
-        return new AddKindResult(RuntimeResult.Success, new KindHandle(_kinds.Count - 1, true));
+        KindHandle handle = NewKind(kind.Name);
+        Level = kind.Scene.Level;
+        _kinds[handle.Index] = kind;
+        _searches[handle.Index] = new RoadmapSearch(kind, Settings);
+        return new AddKindResult(RuntimeResult.Success, handle);
+    }
+
+    /// <summary>
+    /// Creates a kind without a roadmap yet (a <c>JumpRoadmap3D</c> node gets its handle when first asked, so that
+    /// agents readied before it can name it): agents added to it wait (<see cref="AgentLifecycle.Waiting"/>) until
+    /// <see cref="ReplaceKind"/> gives it one. The default handle after <see cref="Dispose"/>, or while another
+    /// thread changes the world.
+    /// </summary>
+    /// <param name="name">A name for messages (the node's path); "kind N" when empty.</param>
+    public KindHandle CreateKind(string name)
+    {
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
+        return busy is null && !_disposed ? NewKind(name) : default;
+    }
+
+    /// <summary>A new kind without a roadmap, in a freed index when there is one.</summary>
+    private KindHandle NewKind(string? name)
+    {
+        int index;
+        if (_freeKinds.Count > 0)
+        {
+            index = _freeKinds.Pop();
+        }
+        else
+        {
+            index = _kinds.Count;
+            _kinds.Add(null);
+            _searches.Add(null);
+            _kindNames.Add("");
+            _kindGenerations.Add(0);
+            _kindAlive.Add(false);
+        }
+
+        _kindGenerations[index]++;
+        _kindAlive[index] = true;
+        _kindNames[index] = string.IsNullOrWhiteSpace(name) ? $"kind {index}" : name;
+        _kinds[index] = null;
+        _searches[index] = null;
+        return new KindHandle(index, _kindGenerations[index]);
+    }
+
+    /// <summary>True while <paramref name="kind"/> names a kind of this world (with or without a roadmap).</summary>
+    public bool IsValid(KindHandle kind) =>
+        kind.Assigned && (uint)kind.Index < (uint)_kinds.Count && _kindAlive[kind.Index] && _kindGenerations[kind.Index] == kind.Generation;
+
+    /// <summary>The kind's name (its character's, or the one given to <see cref="CreateKind"/>); <c>null</c> for an unknown kind.</summary>
+    public string? GetKindName(KindHandle kind) => IsValid(kind) ? _kindNames[kind.Index] : null;
+
+    /// <summary>The kind's scene, roadmap and animator; <c>null</c> while it has no roadmap (or is unknown).</summary>
+    public CharacterKind? GetKindCharacter(KindHandle kind) => IsValid(kind) ? _kinds[kind.Index] : null;
+
+    /// <summary>
+    /// Removes a kind: its agents leave the simulation for good (<see cref="AgentLifecycle.Detached"/>), each with a
+    /// <see cref="JumpEventKind.Removed"/> event saying so; their handles stay valid until they are removed.
+    /// </summary>
+    public RuntimeResult RemoveKind(KindHandle kind)
+    {
+        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
+        if (busy is { } crowded)
+        {
+            return crowded;
+        }
+
+        if (Gone() is { } gone)
+        {
+            return gone;
+        }
+
+        if (!IsValid(kind))
+        {
+            return UnknownKind(kind);
+        }
+
+        string reason = $"kind '{_kindNames[kind.Index]}' was removed";
+        int count = Lift(kind.Index, AgentLifecycle.Detached, reason, everyone: true);
+        _kinds[kind.Index] = null;
+        _searches[kind.Index] = null;
+        _kindAlive[kind.Index] = false;
+        _freeKinds.Push(kind.Index);
+        return new RuntimeResult(RuntimeStatus.Ok, $"{reason}: {Count(count)} detached");
+    }
+
+    /// <summary>
+    /// Takes the agents of kind <paramref name="kind"/> out of the simulation into <paramref name="lifecycle"/>, each
+    /// standing where it stands (or lands), told by a <see cref="JumpEventKind.Removed"/> event; with
+    /// <paramref name="everyone"/>, those already out too. Returns how many were told.
+    /// </summary>
+    private int Lift(int kind, AgentLifecycle lifecycle, string reason, bool everyone)
+    {
+        int count = 0;
+        for (int slot = 0; slot < _agents.HighWater; slot++)
+        {
+            if (!_agents.Registered[slot] || _agents.Kind[slot] != kind || !(_agents.Alive[slot] || everyone) || _agents.Lifecycle[slot] == AgentLifecycle.Detached)
+            {
+                continue;
+            }
+
+            count++;
+            Vector3 point = _agents.Alive[slot] && Standing(slot) is { } stance ? stance.ContactCentre : _agents.Point[slot];
+            if (_agents.Alive[slot])
+            {
+                _queue.Cancel(slot);
+                SetRehome(slot, false);
+            }
+
+            _agents.Deactivate(slot, lifecycle, reason, point);
+            _pending.Add(new JumpEvent(JumpEventKind.Removed, _agents.HandleOf(slot), Tick, Time, -1, point, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// Puts the agent in <paramref name="slot"/>, out of the simulation, on its kind's roadmap where it stands, its
+    /// target asked again; otherwise leaves it <see cref="AgentLifecycle.Unplaced"/>, told by a
+    /// <see cref="JumpEventKind.Removed"/> event when <paramref name="tell"/>. Returns why it could not stand, or <c>null</c>.
+    /// </summary>
+    private RuntimeResult? Place(int slot, bool tell)
+    {
+        CharacterKind kind = _kinds[_agents.Kind[slot]]!;
+        Vector3 point = _agents.Point[slot];
+        if (Stand(kind, point, out RuntimeResult failure) is not { } stance)
+        {
+            string reason = $"cannot stand at {point} on the roadmap of kind '{_kindNames[_agents.Kind[slot]]}': {failure.Reason}";
+            _agents.Deactivate(slot, AgentLifecycle.Unplaced, reason, point);
+            if (tell)
+            {
+                _pending.Add(new JumpEvent(JumpEventKind.Removed, _agents.HandleOf(slot), Tick, Time, -1, point, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+            }
+
+            return new RuntimeResult(failure.Status, reason);
+        }
+
+        _agents.Activate(slot, kind, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[kind.JointCount]);
+        PlaceBody(slot);
+        if (_agents.HasTarget[slot])
+        {
+            _agents.State[slot] = AgentState.Stance;
+            _queue.Request(slot);
+        }
+
+        return null;
     }
 
     /// <summary>
@@ -249,7 +436,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     /// <param name="kind">The kind to replace.</param>
     /// <param name="replacement">The new scene, roadmap and animator.</param>
-    public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind replacement)
+    public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind? replacement)
     {
         using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
         if (busy is { } crowded)
@@ -262,26 +449,61 @@ public sealed class JumpWorld : IDisposable
             return gone;
         }
 
-        if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
+        if (!IsValid(kind))
         {
-            return new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)");
+            return UnknownKind(kind);
         }
 
-        if (Check(replacement) is { } refused)
+        string name = _kindNames[kind.Index];
+        if (replacement is null)
+        {
+            // Cleared: its agents leave the simulation and wait for a roadmap.
+            int lifted = Lift(kind.Index, AgentLifecycle.Waiting, $"kind '{name}' lost its roadmap: the agent waits for a new one", everyone: false);
+            _kinds[kind.Index] = null;
+            _searches[kind.Index] = null;
+            return new RuntimeResult(RuntimeStatus.Ok, $"kind '{name}' cleared: {Count(lifted)} wait for a roadmap");
+        }
+
+        if (Check(replacement, kind.Index) is { } refused)
         {
             return refused;
         }
 
+        if (_kinds[kind.Index] is { } old && old.Scene.Level.Fingerprint != replacement.Scene.Level.Fingerprint)
+        {
+            // The only kind with a roadmap moves to another level: its agents start again from where they stand.
+            Lift(kind.Index, AgentLifecycle.Waiting, $"kind '{name}' moved to another level", everyone: false);
+            _kinds[kind.Index] = null;
+        }
+
+        Level = replacement.Scene.Level;
+        bool joining = _kinds[kind.Index] is null;
         _kinds[kind.Index] = replacement;
         _searches[kind.Index] = new RoadmapSearch(replacement, Settings);
+        if (joining)
+        {
+            return Join(kind.Index, replacement);
+        }
+
         int placed = 0;
         int finishing = 0;
         int removed = 0;
         string? why = null;
         for (int slot = 0; slot < _agents.HighWater; slot++)
         {
-            if (!_agents.Alive[slot] || _agents.Kind[slot] != kind.Index)
+            if (!_agents.Registered[slot] || _agents.Kind[slot] != kind.Index)
             {
+                continue;
+            }
+
+            if (!_agents.Alive[slot])
+            {
+                // Unplaced on the old roadmap: tried again on the new one.
+                if (_agents.Lifecycle[slot] == AgentLifecycle.Unplaced && Place(slot, tell: false) is null)
+                {
+                    placed++;
+                }
+
                 continue;
             }
 
@@ -306,10 +528,38 @@ public sealed class JumpWorld : IDisposable
         }
 
         return new RuntimeResult(RuntimeStatus.Ok,
-            $"kind '{replacement.Name}' replaced: {Count(placed)} put on its new roadmap, {Count(finishing)} finishing a move first, {Count(removed)} removed" + (why is null ? "" : $" ({why})"));
-
-        static string Count(int n) => n == 1 ? "1 agent" : $"{n} agents";
+            $"kind '{replacement.Name}' replaced: {Count(placed)} put on its new roadmap, {Count(finishing)} finishing a move first, {Count(removed)} unplaced" + (why is null ? "" : $" ({why})"));
     }
+
+    /// <summary>Puts the waiting and unplaced agents of a kind just given its roadmap on it, where each stands.</summary>
+    private RuntimeResult Join(int kind, CharacterKind character)
+    {
+        int placed = 0;
+        int unplaced = 0;
+        string? why = null;
+        for (int slot = 0; slot < _agents.HighWater; slot++)
+        {
+            if (!_agents.Registered[slot] || _agents.Alive[slot] || _agents.Kind[slot] != kind || _agents.Lifecycle[slot] == AgentLifecycle.Detached)
+            {
+                continue;
+            }
+
+            if (Place(slot, tell: true) is { } failure)
+            {
+                unplaced++;
+                why ??= failure.Reason;
+            }
+            else
+            {
+                placed++;
+            }
+        }
+
+        return new RuntimeResult(RuntimeStatus.Ok,
+            $"kind '{_kindNames[kind]}' has a roadmap of {character.Roadmap.Nodes.Count} nodes: {Count(placed)} on it" + (unplaced > 0 ? $", {unplaced} could not stand where they were ({why})" : ""));
+    }
+
+    private static string Count(int n) => n == 1 ? "1 agent" : $"{n} agents";
 
     /// <summary>
     /// Puts the standing agent in <paramref name="slot"/> on its kind's roadmap (after a rebake) where it stands, its
@@ -318,7 +568,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     private string? Rehome(int slot)
     {
-        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        CharacterKind kind = _kinds[_agents.Kind[slot]]!;
         RoadmapNode standing = _agents.Stance[slot]!;
         _queue.Cancel(slot);
         if (_agents.Character[slot]!.Scene.Character.Fingerprint == kind.Scene.Character.Fingerprint)
@@ -335,9 +585,10 @@ public sealed class JumpWorld : IDisposable
         }
         else
         {
-            string reason = $"removed: kind '{kind.Name}' was rebaked for another character, which cannot stand where the agent stood: {failure.Reason}";
-            _pending.Add(new JumpEvent(JumpEventKind.Removed, _agents.HandleOf(slot), Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
-            Forget(slot);
+            string reason = $"unplaced: kind '{kind.Name}' was rebaked for another character, which cannot stand where the agent stood: {failure.Reason}";
+            _pending.Add(new JumpEvent(JumpEventKind.Removed, _agents.HandleOf(slot), Tick, Time, -1, standing.ContactCentre, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+            SetRehome(slot, false);
+            _agents.Deactivate(slot, AgentLifecycle.Unplaced, reason, standing.ContactCentre);
             return reason;
         }
 
@@ -408,22 +659,33 @@ public sealed class JumpWorld : IDisposable
         _agents.State[slot] = AgentState.Idle;
     }
 
-    /// <summary>Why <paramref name="kind"/> cannot join this world, or <c>null</c> when it can.</summary>
-    private RuntimeResult? Check(CharacterKind? kind)
+    /// <summary>
+    /// Why <paramref name="kind"/> cannot join this world as the roadmap of kind index <paramref name="replacing"/>
+    /// (−1: a new kind), or <c>null</c> when it can.
+    /// </summary>
+    private RuntimeResult? Check(CharacterKind? kind, int replacing)
     {
         if (kind is null)
         {
             return new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null");
         }
 
-        if (kind.Scene.Level.Fingerprint != Level.Fingerprint)
+        if (kind.Roadmap.LevelFingerprint != kind.Scene.Level.Fingerprint)
         {
-            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its scene is of another level than this world's ({Level.Source})");
+            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level than its scene's ({kind.Scene.Level.Source})");
         }
 
-        if (kind.Roadmap.LevelFingerprint != Level.Fingerprint)
+        bool others = false;
+        for (int i = 0; i < _kinds.Count; i++)
         {
-            return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level");
+            others |= i != replacing && _kinds[i] is not null;
+        }
+
+        if ((others || _levelPinned) && Level is { } level && kind.Scene.Level.Fingerprint != level.Fingerprint)
+        {
+            return new RuntimeResult(RuntimeStatus.Mismatch, _levelPinned
+                ? $"kind '{kind.Name}': its scene is of another level ({kind.Scene.Level.Source}) than this world's ({level.Source})"
+                : $"kind '{kind.Name}': its level ({kind.Scene.Level.Source}) is not the level of the other kinds ({level.Source}); one level at a time: clear or remove those kinds first");
         }
 
         if (kind.Roadmap.CharacterFingerprint != kind.Scene.Character.Fingerprint)
@@ -437,7 +699,11 @@ public sealed class JumpWorld : IDisposable
     /// <summary>
     /// Adds an agent standing at <paramref name="position"/> (a point on or near a surface, world metres): on the
     /// roadmap node whose contacts stand within <see cref="WorldSettings.Tolerance"/> of it, otherwise on a stance
-    /// placed there. Fails with <see cref="RuntimeStatus.InvalidPosition"/> when the character can stand nowhere near.
+    /// placed there. On a kind without a roadmap the agent waits (<see cref="AgentLifecycle.Waiting"/>) and joins there
+    /// when the roadmap comes. Where the character can stand nowhere near, the agent is added
+    /// <see cref="AgentLifecycle.Unplaced"/> (a warp tries again) and the result fails with
+    /// <see cref="RuntimeStatus.InvalidPosition"/> and the reason, the handle given all the same. Refused, with no
+    /// handle, for an unknown kind or a position that is not finite.
     /// </summary>
     /// <param name="kind">The agent's character kind.</param>
     /// <param name="position">Where it stands, world metres.</param>
@@ -454,9 +720,9 @@ public sealed class JumpWorld : IDisposable
             return new AddAgentResult(gone, default);
         }
 
-        if (!kind.Assigned || (uint)kind.Index >= (uint)_kinds.Count)
+        if (!IsValid(kind))
         {
-            return new AddAgentResult(new RuntimeResult(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world ({_kinds.Count} kinds)"), default);
+            return new AddAgentResult(UnknownKind(kind), default);
         }
 
         if (!Finite(position))
@@ -464,15 +730,14 @@ public sealed class JumpWorld : IDisposable
             return new AddAgentResult(new RuntimeResult(RuntimeStatus.InvalidArgument, $"the position {position} is not finite"), default);
         }
 
-        CharacterKind k = _kinds[kind.Index];
-        if (Stand(k, position, out RuntimeResult failure) is not { } stance)
+        string waiting = $"waiting for kind '{_kindNames[kind.Index]}' to get a roadmap";
+        int slot = _agents.Register(kind.Index, position, AgentLifecycle.Waiting, waiting);
+        if (_kinds[kind.Index] is null)
         {
-            return new AddAgentResult(failure, default);
+            return new AddAgentResult(new RuntimeResult(RuntimeStatus.Ok, waiting), _agents.HandleOf(slot));
         }
 
-        int slot = _agents.Add(kind.Index, k, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[k.JointCount]);
-        PlaceBody(slot);
-        return new AddAgentResult(RuntimeResult.Success, _agents.HandleOf(slot));
+        return new AddAgentResult(Place(slot, tell: false) ?? RuntimeResult.Success, _agents.HandleOf(slot));
     }
 
     /// <summary>
@@ -499,10 +764,12 @@ public sealed class JumpWorld : IDisposable
 
         int slot = agent.Index;
         AgentState state = _agents.State[slot];
-        string reason = _agents.Path[slot] is { } path && state is AgentState.Takeoff or AgentState.Flight or AgentState.Landing
+        string reason = !_agents.Alive[slot] ? $"removed while {_agents.Lifecycle[slot].ToString().ToLowerInvariant()}"
+            : _agents.Path[slot] is { } path && state is AgentState.Takeoff or AgentState.Flight or AgentState.Landing
             ? $"removed in mid-{(state == AgentState.Flight ? "flight" : state.ToString().ToLowerInvariant())} of jump {(_agents.Cursor[slot] >> 1) + 1} of {path.Count}"
             : $"removed while {state.ToString().ToLowerInvariant()}";
-        _pending.Add(new JumpEvent(JumpEventKind.Removed, agent, Tick, Time, -1, _agents.Root[slot].Position, _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        _pending.Add(new JumpEvent(JumpEventKind.Removed, agent, Tick, Time, -1, _agents.Alive[slot] ? _agents.Root[slot].Position : _agents.Point[slot], _agents.Target[slot], default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        _queue.Cancel(slot);
         Forget(slot);
         return new RuntimeResult(RuntimeStatus.Ok, reason);
     }
@@ -540,10 +807,20 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
+        if (OutOf(slot) is { } refused)
+        {
+            return refused;
+        }
+
         bool had = _agents.HasTarget[slot];
         Vector3 previous = _agents.Target[slot];
         _agents.Target[slot] = target;
         _agents.HasTarget[slot] = true;
+        if (!_agents.Alive[slot])
+        {
+            return new RuntimeResult(RuntimeStatus.Ok, $"target kept: the agent is {_agents.Lifecycle[slot].ToString().ToLowerInvariant()} ({_agents.Reason[slot]})");
+        }
+
         if (_agents.Path[slot] is { } path)
         {
             // (An agent finishing its move before moving onto its kind's new roadmap plans anew from there in any case.)
@@ -588,7 +865,17 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
+        if (OutOf(slot) is { } refused)
+        {
+            return refused;
+        }
+
         _agents.HasTarget[slot] = false;
+        if (!_agents.Alive[slot])
+        {
+            return RuntimeResult.Success;
+        }
+
         _queue.Cancel(slot);
         if (_agents.Path[slot] is not null)
         {
@@ -605,6 +892,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>
     /// Moves the agent at once to stand at <paramref name="position"/> (pushed, teleported), dropping its path; with a
     /// target it plans anew from there. Fails with <see cref="RuntimeStatus.InvalidPosition"/>, leaving the agent as it was, when it cannot stand there.
+    /// A waiting agent will join there; an unplaced one tries to stand there now (staying unplaced, at the new point, when it cannot); a detached one is refused.
     /// </summary>
     public RuntimeResult Warp(AgentHandle agent, Vector3 position)
     {
@@ -630,7 +918,20 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
-        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        if (OutOf(slot) is { } refused)
+        {
+            return refused;
+        }
+
+        if (!_agents.Alive[slot])
+        {
+            _agents.Point[slot] = position;
+            return _agents.Lifecycle[slot] == AgentLifecycle.Unplaced
+                ? Place(slot, tell: false) ?? RuntimeResult.Success
+                : new RuntimeResult(RuntimeStatus.Ok, $"position kept: {_agents.Reason[slot]}");
+        }
+
+        CharacterKind kind = _kinds[_agents.Kind[slot]]!;
         if (Stand(kind, position, out RuntimeResult failure) is not { } stance)
         {
             return failure;
@@ -681,7 +982,12 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
-        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        if (NotActive(slot) is { } refused)
+        {
+            return refused;
+        }
+
+        CharacterKind kind = _kinds[_agents.Kind[slot]]!;
         Roadmap roadmap = kind.Roadmap;
         if ((uint)edge >= (uint)roadmap.Edges.Count)
         {
@@ -746,7 +1052,12 @@ public sealed class JumpWorld : IDisposable
         }
 
         int slot = agent.Index;
-        CharacterKind kind = _kinds[_agents.Kind[slot]];
+        if (NotActive(slot) is { } refused)
+        {
+            return refused;
+        }
+
+        CharacterKind kind = _kinds[_agents.Kind[slot]]!;
         RoadmapNode from = moves[0].From;
         float[] angles = kind.Animator.Contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis).Angles;
         _queue.Cancel(slot);
@@ -790,8 +1101,20 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     /// <exception cref="ObjectDisposedException">The world was disposed.</exception>
     /// <exception cref="InvalidOperationException">Called from inside a system of this world's tick.</exception>
-    public void Step()
+    public void Step() => Step(1);
+
+    /// <summary>
+    /// <paramref name="ticks"/> ticks in a row, as a game frame that catches up (a physics frame longer than a tick):
+    /// <see cref="Events"/> and <see cref="EventsOf"/> then hold the events of all of them, in order, so that a node
+    /// reading its agent's events once a frame misses none. Zero ticks clears the events and does nothing else.
+    /// </summary>
+    /// <param name="ticks">Ticks to run, zero or more.</param>
+    /// <exception cref="ObjectDisposedException">The world was disposed.</exception>
+    /// <exception cref="InvalidOperationException">Called from inside a system of this world's tick.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="ticks"/> is negative.</exception>
+    public void Step(int ticks)
     {
+        ArgumentOutOfRangeException.ThrowIfNegative(ticks);
         using Gate gate = Gate.Wait(_gate);
         ObjectDisposedException.ThrowIf(_disposed, this);
         if (IsStepping)
@@ -799,11 +1122,20 @@ public sealed class JumpWorld : IDisposable
             throw new InvalidOperationException("JumpWorld.Step was called from inside a system of the world's own tick");
         }
 
+        _events.Clear();
+        for (int i = 0; i < ticks; i++)
+        {
+            StepOnce();
+        }
+    }
+
+    /// <summary>One tick, its events added to those of the ticks before it in this <see cref="Step(int)"/>.</summary>
+    private void StepOnce()
+    {
         IsStepping = true;
         try
         {
             Tick++;
-            _events.Clear();
             Commands.Play(this, _commandRefused);
             if (_rehoming > 0)
             {
@@ -834,8 +1166,177 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Runs the pose system alone at the current time (benchmarks).</summary>
     internal void FillPoses() => _pose.Update(Time);
 
-    /// <summary>The agent's kind, or the default handle for an unknown agent.</summary>
-    public KindHandle GetKind(AgentHandle agent) => _agents.IsValid(agent) ? new KindHandle(_agents.Kind[agent.Index], true) : default;
+    /// <summary>The agent's kind, or the default handle for an unknown or detached agent (its kind was removed).</summary>
+    public KindHandle GetKind(AgentHandle agent) =>
+        _agents.IsValid(agent) && _agents.Lifecycle[agent.Index] != AgentLifecycle.Detached ? new KindHandle(_agents.Kind[agent.Index], _kindGenerations[_agents.Kind[agent.Index]]) : default;
+
+    /// <summary>Where the agent is in its life (<see cref="AgentLifecycle.Detached"/> for an unknown agent): only active agents move.</summary>
+    public AgentLifecycle GetLifecycle(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Lifecycle[agent.Index] : AgentLifecycle.Detached;
+
+    /// <summary>Why the agent waits, could not be placed or was detached; <c>null</c> while it is active (or unknown).</summary>
+    public string? GetAgentReason(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Reason[agent.Index] : null;
+
+    /// <summary>
+    /// Where the agent stands, world metres: active, the contact centre of the stance it stands on (or will stand on
+    /// at the end of the move it is in); otherwise the point it was added or warped at, or stood at when it left the
+    /// simulation. <c>null</c> for an unknown agent.
+    /// </summary>
+    public Vector3? GetStandingPoint(AgentHandle agent)
+    {
+        if (!_agents.IsValid(agent))
+        {
+            return null;
+        }
+
+        int slot = agent.Index;
+        return _agents.Alive[slot] && Standing(slot) is { } stance ? stance.ContactCentre : _agents.Point[slot];
+    }
+
+    /// <summary>
+    /// The stance the active agent in <paramref name="slot"/> stands on, or, following a path, the one it stands on
+    /// next: the end of the move it is in, or the first stance of the next move between two moves.
+    /// </summary>
+    private RoadmapNode? Standing(int slot)
+    {
+        if (_agents.Stance[slot] is { } stance)
+        {
+            return stance;
+        }
+
+        if (_agents.Path[slot] is not { } path)
+        {
+            return null;
+        }
+
+        float t = (float)(Time - _agents.PathStart[slot]);
+        for (int i = 0; i < path.Count; i++)
+        {
+            PathMove move = path.Moves[i];
+            if (t < move.Start)
+            {
+                return move.From;
+            }
+
+            if (t < move.End)
+            {
+                return move.To;
+            }
+        }
+
+        return path.Goal;
+    }
+
+    /// <summary>
+    /// Whether the agent's roadmap connects where it stands to <paramref name="target"/>: a path of jumps (and of the
+    /// roadmap's walks, unless <see cref="WorldSettings.Locomotion"/> is jumps only) leads from its stance (a roadmap
+    /// node, or for a stance off the roadmap any of the nearest nodes within jump reach) to the node standing at the
+    /// target (<see cref="Roadmap.FindNode"/>), or, when none stands there, to any of the nearest nodes within jump
+    /// reach of the target. An estimate for stances and targets off the roadmap (the planner must still steer to and
+    /// from them); false for an agent that is not active. Allocates nothing once its scratch has grown to the
+    /// roadmap's size.
+    /// </summary>
+    public bool IsTargetReachable(AgentHandle agent, Vector3 target)
+    {
+        using Gate gate = Gate.Wait(_gate);
+        if (_disposed || !_agents.IsActive(agent) || !Finite(target))
+        {
+            return false;
+        }
+
+        CharacterKind kind = _agents.Character[agent.Index]!;
+        Roadmap roadmap = kind.Roadmap;
+        if (Standing(agent.Index) is not { } stance || roadmap.Nodes.Count == 0)
+        {
+            return false;
+        }
+
+        int n = roadmap.Nodes.Count;
+        if (_seen.Length < n)
+        {
+            _seen = new int[n];
+            _goal = new int[n];
+            _stack = new int[n];
+        }
+
+        if (++_stamp == int.MaxValue)
+        {
+            Array.Clear(_seen);
+            Array.Clear(_goal);
+            _stamp = 1;
+        }
+
+        SteeringLimits limits = kind.Scene.Steering.Limits;
+        if (roadmap.FindNode(target, Settings.Tolerance) is int goal)
+        {
+            _goal[goal] = _stamp;
+        }
+        else
+        {
+            roadmap.Nearest(target, limits, NearbyNodes, _nearest);
+            foreach ((_, int id) in _nearest)
+            {
+                _goal[id] = _stamp;
+            }
+        }
+
+        int top = 0;
+        if ((uint)stance.Id < (uint)roadmap.Nodes.Count && roadmap.Nodes[stance.Id].Pose == stance.Pose)
+        {
+            _seen[stance.Id] = _stamp;
+            _stack[top++] = stance.Id;
+        }
+        else
+        {
+            roadmap.Nearest(stance.Pose.Position, limits, NearbyNodes, _nearest);
+            foreach ((_, int id) in _nearest)
+            {
+                _seen[id] = _stamp;
+                _stack[top++] = id;
+            }
+        }
+
+        ReadOnlySpan<int> offsets = roadmap.OutgoingOffsets;
+        ReadOnlySpan<int> targets = roadmap.OutgoingTargets;
+        bool walking = Settings.Locomotion != Locomotion.Jump && roadmap.Walks.Count > 0;
+        ReadOnlySpan<int> walkOffsets = walking ? roadmap.WalkOffsets : default;
+        ReadOnlySpan<int> walkTargets = walking ? roadmap.WalkTargets : default;
+        while (top > 0)
+        {
+            int node = _stack[--top];
+            if (_goal[node] == _stamp)
+            {
+                return true;
+            }
+
+            for (int i = offsets[node]; i < offsets[node + 1]; i++)
+            {
+                Push(targets[i], ref top);
+            }
+
+            if (walking)
+            {
+                for (int i = walkOffsets[node]; i < walkOffsets[node + 1]; i++)
+                {
+                    Push(walkTargets[i], ref top);
+                }
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Nodes near a stance or target that a reachability test starts from or aims at when it is no roadmap node.</summary>
+    private const int NearbyNodes = 32;
+
+    /// <summary>Puts <paramref name="node"/> on the reachability test's stack unless it was seen.</summary>
+    private void Push(int node, ref int top)
+    {
+        if (_seen[node] != _stamp)
+        {
+            _seen[node] = _stamp;
+            _stack[top++] = node;
+        }
+    }
 
     /// <summary>What the agent does this tick (<see cref="AgentState.Idle"/> for an unknown agent).</summary>
     public AgentState GetState(AgentHandle agent) => _agents.IsValid(agent) ? _agents.State[agent.Index] : AgentState.Idle;
@@ -1012,7 +1513,7 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public ReadOnlySpan<Quaternion> GetJointRotations(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Rotations[agent.Index] : [];
 
-    /// <summary>Copies the handles of the live agents, in slot order, into <paramref name="destination"/>; returns how many were written.</summary>
+    /// <summary>Copies the handles of the active agents (on their kind's roadmap), in slot order, into <paramref name="destination"/>; returns how many were written.</summary>
     public int CopyAgents(Span<AgentHandle> destination)
     {
         int n = 0;
@@ -1068,10 +1569,20 @@ public sealed class JumpWorld : IDisposable
     private void PlaceBody(int slot) =>
         _agents.Body[slot] = BodyPointRunner.Standing(_agents.Stance[slot]!.ContactCentre, _agents.Root[slot], _agents.Body[slot].Heading);
 
-    /// <summary>The refusal of every call after <see cref="Dispose"/> (but <see cref="Step"/>, which throws), or <c>null</c> before.</summary>
+    /// <summary>The refusal of every call after <see cref="Dispose"/> (but <see cref="Step()"/>, which throws), or <c>null</c> before.</summary>
     private RuntimeResult? Gone() => _disposed ? new RuntimeResult(RuntimeStatus.Disposed, "the world was disposed: nothing was done") : null;
 
     private static RuntimeResult Unknown(AgentHandle agent) => new(RuntimeStatus.UnknownAgent, $"{agent} is not an agent of this world (never added, or removed)");
+
+    private RuntimeResult UnknownKind(KindHandle kind) => new(RuntimeStatus.UnknownKind, $"{kind} is not a kind of this world (never added, or removed; {_kinds.Count - _freeKinds.Count} kinds)");
+
+    /// <summary>The refusal of a change to a detached agent, or <c>null</c>.</summary>
+    private RuntimeResult? OutOf(int slot) =>
+        _agents.Lifecycle[slot] == AgentLifecycle.Detached ? new RuntimeResult(RuntimeStatus.UnknownAgent, $"{_agents.HandleOf(slot)} is detached: {_agents.Reason[slot]}") : null;
+
+    /// <summary>The refusal of a move asked of an agent out of the simulation, or <c>null</c>.</summary>
+    private RuntimeResult? NotActive(int slot) =>
+        OutOf(slot) ?? (_agents.Alive[slot] ? null : new RuntimeResult(RuntimeStatus.InvalidPosition, $"{_agents.HandleOf(slot)} is not on a roadmap: {_agents.Reason[slot]}"));
 
     private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 }

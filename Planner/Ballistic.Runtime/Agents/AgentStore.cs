@@ -9,14 +9,28 @@ namespace Ballistic.Runtime.Agents;
 /// <summary>
 /// The agents' components, one array per component indexed by slot (struct of arrays). Slots of removed agents go
 /// on a free list and are reused last-freed first, with a new generation, so handles of removed agents stay invalid.
-/// Systems iterate slots 0..<see cref="HighWater"/> in order, which makes iteration order deterministic.
+/// Systems iterate slots 0..<see cref="HighWater"/> in order, which makes iteration order deterministic. A
+/// registered agent (<see cref="Registered"/>, its handle valid) is simulated only while <see cref="Alive"/> (its
+/// lifecycle <see cref="AgentLifecycle.Active"/>); the others keep their kind, target and <see cref="Point"/>.
 /// </summary>
 internal sealed class AgentStore
 {
     private readonly Stack<int> _free = new();
 
     public int[] Generation = [];
+
+    /// <summary>The slot holds an agent whose handle is valid, in any lifecycle.</summary>
+    public bool[] Registered = [];
+
+    /// <summary>The agent is simulated: on its kind's roadmap (<see cref="AgentLifecycle.Active"/>).</summary>
     public bool[] Alive = [];
+    public AgentLifecycle[] Lifecycle = [];
+
+    /// <summary>Why an agent out of the simulation is out (waiting, unplaced, detached); <c>null</c> while active.</summary>
+    public string?[] Reason = [];
+
+    /// <summary>Where an agent out of the simulation stands (its registered or warped point, or where it stood when lifted out), world metres.</summary>
+    public Vector3[] Point = [];
     public int[] Kind = [];
 
     /// <summary>
@@ -61,15 +75,19 @@ internal sealed class AgentStore
     /// <summary>One past the highest slot ever used.</summary>
     public int HighWater { get; private set; }
 
-    /// <summary>Live agents.</summary>
+    /// <summary>Registered agents, in any lifecycle.</summary>
     public int Count { get; private set; }
 
     public bool IsValid(AgentHandle handle) =>
-        handle.Generation > 0 && (uint)handle.Index < (uint)HighWater && Alive[handle.Index] && Generation[handle.Index] == handle.Generation;
+        handle.Generation > 0 && (uint)handle.Index < (uint)HighWater && Registered[handle.Index] && Generation[handle.Index] == handle.Generation;
+
+    /// <summary>True for a valid handle of an agent in the simulation.</summary>
+    public bool IsActive(AgentHandle handle) => IsValid(handle) && Alive[handle.Index];
 
     public AgentHandle HandleOf(int slot) => new(slot, Generation[slot]);
 
-    public int Add(int kind, CharacterKind character, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
+    /// <summary>Registers an agent of <paramref name="kind"/> out of the simulation, standing at <paramref name="point"/>, in <paramref name="lifecycle"/> for <paramref name="reason"/>; returns its slot.</summary>
+    public int Register(int kind, Vector3 point, AgentLifecycle lifecycle, string reason)
     {
         int slot;
         if (_free.Count > 0)
@@ -86,8 +104,21 @@ internal sealed class AgentStore
         }
 
         Generation[slot]++;
-        Alive[slot] = true;
+        Registered[slot] = true;
         Kind[slot] = kind;
+        Target[slot] = default;
+        HasTarget[slot] = false;
+        Count++;
+        Deactivate(slot, lifecycle, reason, point);
+        return slot;
+    }
+
+    /// <summary>Puts the registered agent in <paramref name="slot"/> in the simulation, standing idle on <paramref name="stance"/> of <paramref name="character"/>.</summary>
+    public void Activate(int slot, CharacterKind character, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
+    {
+        Alive[slot] = true;
+        Lifecycle[slot] = AgentLifecycle.Active;
+        Reason[slot] = null;
         Character[slot] = character;
         Rehome[slot] = false;
         Root[slot] = root;
@@ -95,8 +126,6 @@ internal sealed class AgentStore
         BodyStale[slot] = false;
         State[slot] = AgentState.Idle;
         Stance[slot] = stance;
-        Target[slot] = default;
-        HasTarget[slot] = false;
         Path[slot] = null;
         PathStart[slot] = 0;
         Cursor[slot] = 0;
@@ -106,20 +135,31 @@ internal sealed class AgentStore
         PoseDirty[slot] = true;
         Angles[slot] = angles;
         Rotations[slot] = rotations;
-        Count++;
-        return slot;
+    }
+
+    /// <summary>Takes the agent in <paramref name="slot"/> out of the simulation into <paramref name="lifecycle"/>, standing at <paramref name="point"/>; its kind and target stay.</summary>
+    public void Deactivate(int slot, AgentLifecycle lifecycle, string reason, Vector3 point)
+    {
+        Alive[slot] = false;
+        Lifecycle[slot] = lifecycle;
+        Reason[slot] = reason;
+        Point[slot] = point;
+        Character[slot] = null;
+        Rehome[slot] = false;
+        State[slot] = AgentState.Idle;
+        Path[slot] = null;
+        Stance[slot] = null;
+        StopAtStance[slot] = false;
+        Request[slot] = null;
+        Angles[slot] = [];
+        Rotations[slot] = [];
     }
 
     public void Remove(int slot)
     {
-        Alive[slot] = false;
-        Character[slot] = null;
-        Rehome[slot] = false;
-        Path[slot] = null;
-        Stance[slot] = null;
-        Request[slot] = null;
-        Angles[slot] = [];
-        Rotations[slot] = [];
+        Deactivate(slot, AgentLifecycle.Detached, "removed", default);
+        Registered[slot] = false;
+        Reason[slot] = null;
         _free.Push(slot);
         Count--;
     }
@@ -127,7 +167,11 @@ internal sealed class AgentStore
     private void Grow(int capacity)
     {
         Array.Resize(ref Generation, capacity);
+        Array.Resize(ref Registered, capacity);
         Array.Resize(ref Alive, capacity);
+        Array.Resize(ref Lifecycle, capacity);
+        Array.Resize(ref Reason, capacity);
+        Array.Resize(ref Point, capacity);
         Array.Resize(ref Kind, capacity);
         Array.Resize(ref Character, capacity);
         Array.Resize(ref Rehome, capacity);

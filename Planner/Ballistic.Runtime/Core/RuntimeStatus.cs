@@ -21,7 +21,7 @@ public enum RuntimeStatus
     /// <summary>The roadmap was baked for another character, or the scene is of another level than the world's.</summary>
     Mismatch,
 
-    /// <summary>The world (or the host) was disposed: the call did nothing.</summary>
+    /// <summary>The world was disposed: the call did nothing.</summary>
     Disposed,
 
     /// <summary>

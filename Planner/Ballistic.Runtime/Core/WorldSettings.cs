@@ -38,13 +38,16 @@ public sealed record WorldSettings
     /// same run on any machine. Past it the tick goes on, and each request still animating is delivered at the first
     /// tick its animation is ready, as without <see cref="WaitForAnimation"/> (then trajectories depend on machine
     /// speed; each such request is counted in <see cref="JumpWorld.LateRequests"/>). A world stepped in real time
-    /// should set one: the Godot server's host uses <see cref="RealTimeAnimationWait"/>, so a game hitches, never
+    /// should set one: the Godot server's world uses <see cref="RealTimeAnimationWait"/> (<see cref="RealTime"/>), so a game hitches, never
     /// freezes. Positive.
     /// </summary>
     public TimeSpan? MaxAnimationWait { get; init; }
 
     /// <summary>The <see cref="MaxAnimationWait"/> of worlds stepped in real time (the Godot server's): a quarter of a second.</summary>
     public static readonly TimeSpan RealTimeAnimationWait = TimeSpan.FromSeconds(0.25);
+
+    /// <summary>The defaults of a world stepped in real time, as the Godot server's: <see cref="MaxAnimationWait"/> is <see cref="RealTimeAnimationWait"/>.</summary>
+    public static WorldSettings RealTime => new() { MaxAnimationWait = RealTimeAnimationWait };
 
     /// <summary>Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded hosts).</summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);

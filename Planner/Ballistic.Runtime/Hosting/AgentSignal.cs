@@ -16,7 +16,7 @@ namespace Ballistic.Runtime.Hosting;
 /// <param name="Velocity">For <see cref="AgentSignalKind.JumpStarted"/>, the body point's takeoff velocity, m/s (the trunk's own is in <see cref="Paths.JumpInfo.Arc"/>); zero otherwise.</param>
 /// <param name="Duration">For jump signals the flight time, for walk signals the walk's duration, seconds; zero otherwise.</param>
 /// <param name="Speed">For walk signals, the walking speed along the ground path, m/s; zero otherwise.</param>
-/// <param name="Reason">For <see cref="AgentSignalKind.PathFailed"/>, why in one sentence: the planner's reason (target off the level, no sequence of jumps…) or the host's (region freed…); <c>null</c> otherwise.</param>
+/// <param name="Reason">For <see cref="AgentSignalKind.PathFailed"/>, why in one sentence: the planner's reason (target off the level, no sequence of jumps…) or the world's (the agent's kind removed or its roadmap cleared…); <c>null</c> otherwise.</param>
 public readonly record struct AgentSignal(
     AgentSignalKind Kind,
     double Time,

@@ -3,14 +3,16 @@ using Ballistic.Planner.Geometry;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
+using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Runtime.Hosting;
 
 /// <summary>
 /// The logic of a <c>JumpAgent3D</c> node, after Godot's <c>NavigationAgent3D</c>, testable without a scene: the node
-/// registers it on its region, forwards <see cref="TargetPosition"/> and the other members, calls <see cref="Update"/>
-/// every physics tick after the server stepped, re-emits the signals it returns and, in
+/// registers it on its region's kind in the server's <see cref="JumpWorld"/> (one entity, whose handle never changes
+/// while it is registered), forwards <see cref="TargetPosition"/> and the other members, calls <see cref="Update"/>
+/// every physics frame after the server stepped (<see cref="JumpWorld.Step(int)"/>), re-emits the signals it returns and, in
 /// <see cref="AgentMotionMode.MoveParent"/> mode, moves its parent to <see cref="BodyPosition"/> and
 /// <see cref="BodyRotation"/>.
 /// </summary>
@@ -23,7 +25,7 @@ namespace Ballistic.Runtime.Hosting;
 /// </remarks>
 public sealed class JumpAgentLogic
 {
-    private readonly JumpNavigationHost _host;
+    private readonly JumpWorld _world;
     private readonly List<AgentSignal> _signals = [];
     private readonly List<AgentSignal> _pending = [];
     private readonly List<Vector3> _points = [];
@@ -39,38 +41,40 @@ public sealed class JumpAgentLogic
     private float _desiredDistance = 0.5f;
     private float _step = 0.25f;
     private Vector3? _refusedSync;
-    private AgentHandle _worldAgent;
 
-    /// <summary>Creates the logic of one agent node; <see cref="Register"/> puts it on a region.</summary>
-    /// <param name="host">The server's host.</param>
+    /// <summary>The world's tick when the agent's events were last read: a frame the server stepped no tick in reads none again.</summary>
+    private long _readTick = -1;
+
+    /// <summary>Creates the logic of one agent node; <see cref="Register"/> puts it on a kind.</summary>
+    /// <param name="world">The server's world.</param>
     /// <param name="mode">Who moves the character.</param>
-    public JumpAgentLogic(JumpNavigationHost host, AgentMotionMode mode = AgentMotionMode.MoveParent)
+    public JumpAgentLogic(JumpWorld world, AgentMotionMode mode = AgentMotionMode.MoveParent)
     {
-        ArgumentNullException.ThrowIfNull(host);
-        _host = host;
+        ArgumentNullException.ThrowIfNull(world);
+        _world = world;
         Mode = mode;
     }
 
-    /// <summary>The host the agent is registered with.</summary>
-    public JumpNavigationHost Host => _host;
+    /// <summary>The world the agent is registered in.</summary>
+    public JumpWorld World => _world;
 
     /// <summary>Who moves the character: the node (its parent follows <see cref="BodyPosition"/>) or the user (reporting only).</summary>
     public AgentMotionMode Mode { get; set; }
 
-    /// <summary>The agent's handle in the host; the default handle before <see cref="Register"/>.</summary>
-    public HostAgentHandle Agent { get; private set; }
+    /// <summary>The agent's entity in the world; the default handle before <see cref="Register"/>.</summary>
+    public AgentHandle Agent { get; private set; }
 
     /// <summary>True between <see cref="Register"/> and <see cref="Unregister"/>.</summary>
-    public bool IsRegistered => _host.IsValid(Agent);
+    public bool IsRegistered => _world.IsValid(Agent);
 
-    /// <summary>Where the agent is for the host: waiting for its region's roadmap, on it, unplaced or detached.</summary>
-    public HostAgentState State => _host.GetAgentState(Agent);
+    /// <summary>Where the agent is in its life: waiting for its kind's roadmap, on it (active), unplaced or detached.</summary>
+    public AgentLifecycle Lifecycle => _world.GetLifecycle(Agent);
 
     /// <summary>Why the agent waits, could not be placed or was detached (for the node's configuration warning); <c>null</c> on the roadmap.</summary>
-    public string? StateReason => _host.GetAgentReason(Agent);
+    public string? StateReason => _world.GetAgentReason(Agent);
 
     /// <summary>
-    /// Where the agent is asked to go, world metres (a point on or near a surface). Setting it asks the host for a
+    /// Where the agent is asked to go, world metres (a point on or near a surface). Setting it asks the world for a
     /// path; setting it again within <see cref="TargetPositionThreshold"/> of the current target does nothing (the
     /// node may set it every frame to a moving point); further away, the agent replans from its next stance (the
     /// runtime keeps the path when the new target is within <see cref="WorldSettings.ReplanDistance"/> of the
@@ -120,23 +124,26 @@ public sealed class JumpAgentLogic
     /// Index on <see cref="CurrentPath"/> of the move in progress (a jump or a walk) or, standing between two moves, of
     /// the next one (<see cref="JumpWorld.GetMoveIndex"/>); 0 without a path.
     /// </summary>
-    public int CurrentMove => _host.World is { } world && _path is not null && ReferenceEquals(world.GetPath(_host.GetWorldAgent(Agent)), _path)
-        ? Math.Max(0, world.GetMoveIndex(_host.GetWorldAgent(Agent)))
-        : 0;
+    public int CurrentMove => _path is not null && ReferenceEquals(_world.GetPath(Agent), _path) ? Math.Max(0, _world.GetMoveIndex(Agent)) : 0;
 
     /// <summary>
-    /// A short state for a label: "waiting for a roadmap", "idle", "stance", "walking", "takeoff", "flight",
+    /// A short state for a label: "not registered", "waiting for a roadmap", "idle", "stance", "walking", "takeoff", "flight",
     /// "landing", "planning", "arrived", "unplaced: …" or "failed: …" (the last failure toward the current target).
     /// </summary>
     public string DescribeState()
     {
-        switch (State)
+        if (!IsRegistered)
         {
-            case HostAgentState.Waiting:
+            return "not registered";
+        }
+
+        switch (Lifecycle)
+        {
+            case AgentLifecycle.Waiting:
                 return "waiting for a roadmap";
-            case HostAgentState.Unplaced:
+            case AgentLifecycle.Unplaced:
                 return $"unplaced: {StateReason}";
-            case HostAgentState.Detached:
+            case AgentLifecycle.Detached:
                 return $"detached: {StateReason}";
         }
 
@@ -145,14 +152,7 @@ public sealed class JumpAgentLogic
             return $"failed: {failure}";
         }
 
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is null)
-        {
-            return "waiting for a roadmap";
-        }
-
-        return world.IsPathPending(agent) ? "planning" : world.GetState(agent) switch
+        return _world.IsPathPending(Agent) ? "planning" : _world.GetState(Agent) switch
         {
             AgentState.Idle => _hasTarget && _reached ? "arrived" : "idle",
             AgentState.Stance => "stance",
@@ -187,19 +187,21 @@ public sealed class JumpAgentLogic
     public Quaternion BodyRotation { get; private set; } = Quaternion.Identity;
 
     /// <summary>
-    /// Registers the agent on <paramref name="region"/> standing at <paramref name="position"/> (the parent's global
-    /// position, world metres), as <see cref="JumpNavigationHost.RegisterAgent"/>; a target set before is sent. An
-    /// agent already registered is unregistered first.
+    /// Registers the agent on <paramref name="kind"/> standing at <paramref name="position"/> (the parent's global
+    /// position, world metres), as <see cref="JumpWorld.AddAgent"/> (waiting when the kind has no roadmap yet,
+    /// unplaced where the character cannot stand); a target set before is sent. An agent already registered is
+    /// unregistered first.
     /// </summary>
-    public RuntimeResult Register(RegionHandle region, Vector3 position)
+    public RuntimeResult Register(KindHandle kind, Vector3 position)
     {
         if (IsRegistered)
         {
             Unregister();
         }
 
-        HostAgentResult registered = _host.RegisterAgent(region, position);
+        AddAgentResult registered = _world.AddAgent(kind, position);
         Agent = registered.Agent;
+        _readTick = _world.Tick;
         if (!registered.Agent.IsAssigned)
         {
             return registered.Result;
@@ -209,7 +211,7 @@ public sealed class JumpAgentLogic
         BodyVelocity = Vector3.Zero;
         if (_hasTarget && _navigating)
         {
-            _host.SetTarget(Agent, _target);
+            _world.SetTarget(Agent, _target);
         }
 
         Refresh();
@@ -219,7 +221,7 @@ public sealed class JumpAgentLogic
     /// <summary>Unregisters the agent (the node leaves the tree); its target is kept for a later <see cref="Register"/>.</summary>
     public RuntimeResult Unregister()
     {
-        RuntimeResult result = _host.UnregisterAgent(Agent);
+        RuntimeResult result = _world.RemoveAgent(Agent);
         Agent = default;
         _path = null;
         return result;
@@ -228,7 +230,7 @@ public sealed class JumpAgentLogic
     /// <summary>
     /// Sets <see cref="TargetPosition"/> and says what came of it: <see cref="RuntimeStatus.Ok"/> with a note when the
     /// target was kept (within the threshold), reached at once or stored until the agent is on a roadmap; otherwise
-    /// the host's refusal (also raised as a <see cref="AgentSignalKind.PathFailed"/> on the next <see cref="Update"/>).
+    /// the world's refusal (also raised as a <see cref="AgentSignalKind.PathFailed"/> on the next <see cref="Update"/>).
     /// </summary>
     public RuntimeResult SetTarget(Vector3 target)
     {
@@ -255,12 +257,10 @@ public sealed class JumpAgentLogic
             return new RuntimeResult(RuntimeStatus.Ok, "target kept until the agent is registered");
         }
 
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is not null && world.IsValid(agent) && world.GetPath(agent) is null && !world.IsPathPending(agent) &&
-            _host.GetStandingPoint(Agent) is { } here && Vector3.Distance(here, target) <= _desiredDistance)
+        if (Lifecycle == AgentLifecycle.Active && _world.GetPath(Agent) is null && !_world.IsPathPending(Agent) &&
+            _world.GetStandingPoint(Agent) is { } here && Vector3.Distance(here, target) <= _desiredDistance)
         {
-            _host.ClearTarget(Agent);
+            _world.ClearTarget(Agent);
             _navigating = false;
             _reached = true;
             _pending.Add(AgentSignal.Of(AgentSignalKind.TargetReached, Now));
@@ -268,7 +268,7 @@ public sealed class JumpAgentLogic
             return new RuntimeResult(RuntimeStatus.Ok, $"already within {_desiredDistance} m of the target");
         }
 
-        RuntimeResult result = _host.SetTarget(Agent, target);
+        RuntimeResult result = _world.SetTarget(Agent, target);
         if (!result.Ok)
         {
             Fail(_pending, Now, result.Reason ?? result.Status.ToString());
@@ -285,7 +285,7 @@ public sealed class JumpAgentLogic
         _reached = false;
         _failed = false;
         LastFailure = null;
-        return IsRegistered ? _host.ClearTarget(Agent) : RuntimeResult.Success;
+        return IsRegistered ? _world.ClearTarget(Agent) : RuntimeResult.Success;
     }
 
     /// <summary>True when the agent is not heading anywhere: no target, target reached, path failed or target cleared (like <c>NavigationAgent3D.is_navigation_finished</c>).</summary>
@@ -297,7 +297,7 @@ public sealed class JumpAgentLogic
     /// <summary>
     /// False without a target and after a <see cref="AgentSignalKind.PathFailed"/> for the current target; true once reached;
     /// otherwise whether the roadmap connects the agent's stance to a node near the target
-    /// (<see cref="JumpNavigationHost.IsTargetReachable"/>; false while the agent is off its roadmap).
+    /// (<see cref="JumpWorld.IsTargetReachable"/>; false while the agent is off its roadmap).
     /// </summary>
     public bool IsTargetReachable()
     {
@@ -306,7 +306,7 @@ public sealed class JumpAgentLogic
             return false;
         }
 
-        return _reached || _host.IsTargetReachable(Agent, _target);
+        return _reached || _world.IsTargetReachable(Agent, _target);
     }
 
     /// <summary>
@@ -342,33 +342,30 @@ public sealed class JumpAgentLogic
     /// <summary>The jump in progress (<paramref name="current"/>) or the next one, as the world describes it.</summary>
     private bool TryJump(bool current, out JumpInfo jump)
     {
-        jump = default;
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        return world is not null && (current ? world.TryGetCurrentJump(agent, out jump) : world.TryGetNextJump(agent, out jump));
+        return current ? _world.TryGetCurrentJump(Agent, out jump) : _world.TryGetNextJump(Agent, out jump);
     }
 
     /// <summary>
-    /// Performs exactly one jump of the region's roadmap (edge index), as <see cref="JumpNavigationHost.PerformJump"/>:
+    /// Performs exactly one jump of the kind's roadmap (edge index), as <see cref="JumpWorld.PerformJump"/>:
     /// the agent stands on its takeoff at once; the landing's contact centre becomes the target, so the usual signals
     /// follow (<see cref="AgentSignalKind.PathChanged"/>, <see cref="AgentSignalKind.JumpStarted"/>, <see cref="AgentSignalKind.Landed"/>,
     /// <see cref="AgentSignalKind.TargetReached"/>, <see cref="AgentSignalKind.NavigationFinished"/>).
     /// </summary>
-    public RuntimeResult PerformJump(int edge) => Performed(_host.PerformJump(Agent, edge));
+    public RuntimeResult PerformJump(int edge) => Performed(_world.PerformJump(Agent, edge));
 
     /// <summary>
     /// Performs exactly <paramref name="moves"/> (jumps and walks, with no search), as
-    /// <see cref="JumpNavigationHost.PerformMoves"/>: the agent stands on the first move's stance at once; the last
+    /// <see cref="JumpWorld.PerformMoves"/>: the agent stands on the first move's stance at once; the last
     /// stance's contact centre becomes the target and the usual signals follow. For tests and tools.
     /// </summary>
-    internal RuntimeResult PerformMoves(IReadOnlyList<Planner.Roadmaps.Move> moves) => Performed(_host.PerformMoves(Agent, moves));
+    internal RuntimeResult PerformMoves(IReadOnlyList<Planner.Roadmaps.Move> moves) => Performed(_world.PerformMoves(Agent, moves));
 
-    /// <summary>After the host performs given moves: the agent navigates toward their end.</summary>
+    /// <summary>After the world performs given moves: the agent navigates toward their end.</summary>
     private RuntimeResult Performed(RuntimeResult result)
     {
         if (result.Ok)
         {
-            _target = _host.GetTarget(Agent) ?? _target;
+            _target = _world.GetTarget(Agent) ?? _target;
             _hasTarget = true;
             _navigating = true;
             _reached = false;
@@ -381,10 +378,10 @@ public sealed class JumpAgentLogic
         return result;
     }
 
-    /// <summary>Moves the agent at once to stand at <paramref name="position"/> (world metres), as <see cref="JumpNavigationHost.Warp"/>; with a target it replans from there.</summary>
+    /// <summary>Moves the agent at once to stand at <paramref name="position"/> (world metres), as <see cref="JumpWorld.Warp"/>; with a target it replans from there.</summary>
     public RuntimeResult Warp(Vector3 position)
     {
-        RuntimeResult result = _host.Warp(Agent, position);
+        RuntimeResult result = _world.Warp(Agent, position);
         if (result.Ok)
         {
             _path = null;
@@ -408,12 +405,11 @@ public sealed class JumpAgentLogic
             return new RuntimeResult(RuntimeStatus.UnknownAgent, "the agent is not registered");
         }
 
-        float across = _host.Settings.Tolerance.Across;
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        bool standing = world is not null && world.IsValid(agent) && world.GetPath(agent) is null && !world.IsPathPending(agent);
-        bool waiting = State is HostAgentState.Waiting or HostAgentState.Unplaced;
-        if (!(standing || waiting) || _host.GetStandingPoint(Agent) is not { } here || Vector3.Distance(here, position) <= across ||
+        float across = _world.Settings.Tolerance.Across;
+        AgentLifecycle lifecycle = Lifecycle;
+        bool standing = lifecycle == AgentLifecycle.Active && _world.GetPath(Agent) is null && !_world.IsPathPending(Agent);
+        bool waiting = lifecycle is AgentLifecycle.Waiting or AgentLifecycle.Unplaced;
+        if (!(standing || waiting) || _world.GetStandingPoint(Agent) is not { } here || Vector3.Distance(here, position) <= across ||
             (_refusedSync is { } refused && Vector3.Distance(refused, position) <= across))
         {
             return RuntimeResult.Success;
@@ -429,7 +425,8 @@ public sealed class JumpAgentLogic
     }
 
     /// <summary>
-    /// Call once per physics tick after the server stepped: drains the agent's events into signals, in order
+    /// Call once per physics frame after the server stepped: turns the agent's events of the frame's ticks
+    /// (<see cref="JumpWorld.EventsOf"/>) into signals, in order
     /// (<see cref="AgentSignalKind.PathChanged"/>, then per move <see cref="AgentSignalKind.JumpStarted"/> and <see cref="AgentSignalKind.Landed"/>
     /// or <see cref="AgentSignalKind.WalkStarted"/> and <see cref="AgentSignalKind.WalkFinished"/>, …,
     /// <see cref="AgentSignalKind.TargetReached"/>, <see cref="AgentSignalKind.NavigationFinished"/>; <see cref="AgentSignalKind.PathFailed"/> then
@@ -441,24 +438,20 @@ public sealed class JumpAgentLogic
         _signals.Clear();
         _signals.AddRange(_pending);
         _pending.Clear();
-        AgentHandle worldAgent = _host.GetWorldAgent(Agent);
-        if (worldAgent != _worldAgent)
+        if (IsRegistered && _world.Tick != _readTick)
         {
-            // Added to the world again (its region cleared and given a roadmap again, or a roadmap of another level): the old path is gone.
-            _worldAgent = worldAgent;
-            _path = null;
-        }
-
-        while (_host.TryDequeueEvent(Agent, out JumpEvent e))
-        {
-            Handle(e);
+            _readTick = _world.Tick;
+            foreach (ref readonly JumpEvent e in _world.EventsOf(Agent))
+            {
+                Handle(e);
+            }
         }
 
         Refresh();
         return _signals;
     }
 
-    private double Now => _host.World?.Time ?? 0.0;
+    private double Now => _world.Time;
 
     private void Handle(in JumpEvent j)
     {
@@ -533,17 +526,15 @@ public sealed class JumpAgentLogic
     /// <summary>Reads this tick's root pose and body point from the world (its body-point system wrote them).</summary>
     private void Refresh()
     {
-        JumpWorld? world = _host.World;
-        AgentHandle agent = _host.GetWorldAgent(Agent);
-        if (world is null || !world.IsValid(agent))
+        if (Lifecycle != AgentLifecycle.Active)
         {
-            BodyPosition = _host.GetStandingPoint(Agent) ?? BodyPosition;
+            BodyPosition = _world.GetStandingPoint(Agent) ?? BodyPosition;
             BodyVelocity = Vector3.Zero;
             return;
         }
 
-        RootPose = world.GetRootPose(agent);
-        BodyPoint body = world.GetBodyPoint(agent);
+        RootPose = _world.GetRootPose(Agent);
+        BodyPoint body = _world.GetBodyPoint(Agent);
         BodyPosition = body.Position;
         BodyVelocity = body.Velocity;
         BodyRotation = body.Heading;

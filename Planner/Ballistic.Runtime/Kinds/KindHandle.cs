@@ -1,10 +1,17 @@
 namespace Ballistic.Runtime.Kinds;
 
-/// <summary>Names one character kind of a <see cref="JumpWorld"/> (returned by <see cref="JumpWorld.AddKind"/>); the default handle names none.</summary>
+/// <summary>
+/// Names one character kind of a <see cref="JumpWorld"/> (<see cref="JumpWorld.AddKind"/>,
+/// <see cref="JumpWorld.CreateKind"/>), with or without a roadmap, until <see cref="JumpWorld.RemoveKind"/>; a removed
+/// kind's handle stays invalid when its index is reused (the generation differs). The default handle names none.
+/// </summary>
 /// <param name="Index">Index of the kind in the world, from zero.</param>
-/// <param name="Assigned">True for a handle returned by <see cref="JumpWorld.AddKind"/>.</param>
-public readonly record struct KindHandle(int Index, bool Assigned)
+/// <param name="Generation">How many kinds used the index before, plus one; zero for the default handle.</param>
+public readonly record struct KindHandle(int Index, int Generation)
 {
+    /// <summary>True for a handle the world returned (not necessarily still valid).</summary>
+    public bool Assigned => Generation > 0;
+
     /// <inheritdoc />
-    public override string ToString() => Assigned ? $"kind {Index}" : "no kind";
+    public override string ToString() => Assigned ? $"kind {Index}#{Generation}" : "no kind";
 }

@@ -1,3 +1,4 @@
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
@@ -32,8 +33,8 @@ public sealed class LinkTraversal(JumpLinkSet links)
             return new RuntimeResult(RuntimeStatus.InvalidArgument, $"link {link} is not one of the {Links.Count} links");
         }
 
-        JumpNavigationHost host = agent.Host;
-        if (host.GetRegionKind(host.GetAgentRegion(agent.Agent)) is not CharacterKind kind || agent.State != HostAgentState.Active)
+        JumpWorld world = agent.World;
+        if (world.GetKindCharacter(world.GetKind(agent.Agent)) is not CharacterKind kind || agent.Lifecycle != AgentLifecycle.Active)
         {
             return new RuntimeResult(RuntimeStatus.InvalidPosition, $"the agent is not on a roadmap ({agent.StateReason ?? "not registered"})");
         }

@@ -398,9 +398,14 @@ public sealed class SkeletonBinding
             return new RuntimeResult(RuntimeStatus.UnknownAgent, $"{agent} is not an agent of this world");
         }
 
-        if (!ReferenceEquals(world.Kinds[world.GetKind(agent).Index].Model.Rig, _rig))
+        if (world.GetLifecycle(agent) != AgentLifecycle.Active || world.GetKindCharacter(world.GetKind(agent)) is not { } kind)
         {
-            return new RuntimeResult(RuntimeStatus.Mismatch, $"{agent} is a '{world.Kinds[world.GetKind(agent).Index].Name}'; this binding is for '{Model.Name}'");
+            return new RuntimeResult(RuntimeStatus.InvalidPosition, $"{agent} is not on a roadmap: {world.GetAgentReason(agent)}");
+        }
+
+        if (!ReferenceEquals(kind.Model.Rig, _rig))
+        {
+            return new RuntimeResult(RuntimeStatus.Mismatch, $"{agent} is a '{kind.Name}'; this binding is for '{Model.Name}'");
         }
 
         Convert(world.GetRootPose(agent), world.GetJointRotations(agent), skeletonGlobal, boneRotations, bonePositions);

@@ -24,13 +24,13 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly AgentStore _agents;
     private readonly PathQueue _queue;
     private readonly EventBuffer _events;
-    private readonly List<CharacterKind> _kinds;
-    private readonly List<RoadmapSearch> _searches;
+    private readonly List<CharacterKind?> _kinds;
+    private readonly List<RoadmapSearch?> _searches;
     private readonly List<PathRequest> _inFlight = [];
     private readonly TaskScheduler? _scheduler;
     private readonly CancellationTokenSource _shutdown = new();
 
-    public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind> kinds, List<RoadmapSearch> searches)
+    public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind?> kinds, List<RoadmapSearch?> searches)
     {
         _queue = queue;
         _settings = settings;
@@ -73,7 +73,7 @@ internal sealed class PathRequestSystem : IDisposable
             started++;
             request.Start = _agents.Stance[slot]!;
             request.DueTick = tick + _settings.PathLatencyTicks;
-            var job = new RequestJob(_kinds[_agents.Kind[slot]], _searches[_agents.Kind[slot]], request, _settings.RepairRounds, _settings.AnimationFrameRate);
+            var job = new RequestJob(_kinds[_agents.Kind[slot]]!, _searches[_agents.Kind[slot]]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
             {
                 request.Outcome = job.Run();

@@ -3,7 +3,6 @@ using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
-using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Hosting;
@@ -12,12 +11,12 @@ namespace Ballistic.Planner.Tests.Hosting;
 public sealed class DisposedRuntimeTests
 {
     [Test]
-    public void AHostDisposedUnderItsAgentsRefusesEveryCallWithoutThrowing()
+    public void AServerWorldDisposedUnderItsAgentsRefusesEveryCallWithoutThrowing()
     {
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 41)[0];
-        HostAgentHandle agent = host.RegisterAgent(region, RuntimeWorlds.Point(from)).Agent;
-        Assume.That(host.GetAgentState(agent), Is.EqualTo(HostAgentState.Active));
+        AgentHandle agent = host.AddAgent(region, RuntimeWorlds.Point(from)).Agent;
+        Assume.That(host.GetLifecycle(agent), Is.EqualTo(AgentLifecycle.Active));
         host.Dispose();
 
         // What a node leaving the tree after the server calls (JumpAgent3D._ExitTree unregisters its agent).
@@ -27,10 +26,11 @@ public sealed class DisposedRuntimeTests
             host.ClearTarget(agent),
             host.Warp(agent, RuntimeWorlds.Point(to)),
             host.PerformJump(agent, 0),
-            host.UnregisterAgent(agent),
-            host.RegisterAgent(region, RuntimeWorlds.Point(from)).Result,
-            host.SetRegionKind(region, HostingWorlds.Desert),
-            host.FreeRegion(region),
+            host.RemoveAgent(agent),
+            host.AddAgent(region, RuntimeWorlds.Point(from)).Result,
+            host.ReplaceKind(region, HostingWorlds.Desert),
+            host.RemoveKind(region),
+            host.AddKind(HostingWorlds.Desert).Result,
         ];
         Assert.Multiple(() =>
         {
@@ -42,7 +42,8 @@ public sealed class DisposedRuntimeTests
 
             Assert.That(host.IsTargetReachable(agent, RuntimeWorlds.Point(to)), Is.False);
             Assert.That(host.GetStandingPoint(agent), Is.Not.Null, "where it was known to stand");
-            Assert.That(host.World, Is.Null);
+            Assert.That(host.CreateKind("late"), Is.EqualTo(default(KindHandle)), "no kind is made after dispose");
+            Assert.That(host.EventsOf(agent).Length, Is.Zero);
             host.Dispose(); // twice: nothing happens
         });
     }

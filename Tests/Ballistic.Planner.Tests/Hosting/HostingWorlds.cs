@@ -6,6 +6,8 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Hosting;
@@ -13,7 +15,7 @@ using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Hosting;
 
-/// <summary>Kinds, hosts and drivers for the hosting tests: the runtime's desert skeleton, a rebake of it, and a kind on another level.</summary>
+/// <summary>Kinds, server-like worlds and drivers for the hosting tests: the runtime's desert skeleton, a rebake of it, and a kind on another level.</summary>
 internal static class HostingWorlds
 {
     private static readonly Lazy<CharacterKind> DesertRebakeKind = new(() =>
@@ -42,17 +44,20 @@ internal static class HostingWorlds
     /// <summary>The runtime's tolerance: how close a stance's contact centre comes to a point asked for.</summary>
     public static EndpointTolerance Tolerance => new WorldSettings().Tolerance;
 
-    /// <summary>A host ticking on one thread (deterministic, no background animation), its paths jumps only (<see cref="RuntimeWorlds.JumpOnly"/>).</summary>
-    public static JumpNavigationHost Host() => new(RuntimeWorlds.JumpOnly);
+    /// <summary>
+    /// A world as the Godot server makes it (no level until a kind gets a roadmap), ticking on one thread
+    /// (deterministic, no background animation), its paths jumps only (<see cref="RuntimeWorlds.JumpOnly"/>).
+    /// </summary>
+    public static JumpWorld Server() => new(RuntimeWorlds.JumpOnly);
 
-    /// <summary>A host with one desert region registered.</summary>
-    public static (JumpNavigationHost Host, RegionHandle Region) DesertHost()
+    /// <summary>A server-like world with one desert kind, created without a roadmap and then given it, as a <c>JumpRoadmap3D</c> node does.</summary>
+    public static (JumpWorld World, KindHandle Kind) DesertServer()
     {
-        JumpNavigationHost host = Host();
-        RegionHandle region = host.CreateRegion("desert");
-        RuntimeResult set = host.SetRegionKind(region, Desert);
+        JumpWorld world = Server();
+        KindHandle kind = world.CreateKind("desert");
+        RuntimeResult set = world.ReplaceKind(kind, Desert);
         Assert.That(set.Ok, Is.True, set.ToString());
-        return (host, region);
+        return (world, kind);
     }
 
     /// <summary>True when <paramref name="point"/> lies within the runtime's tolerance of <paramref name="target"/> (across and up/down).</summary>
@@ -62,19 +67,16 @@ internal static class HostingWorlds
         return new Vector2(point.X - target.X, point.Z - target.Z).Length() <= t.Across + 1e-4f && MathF.Abs(point.Y - target.Y) <= t.UpDown + 1e-4f;
     }
 
-    /// <summary>Steps the host and drains the agents' queues each tick until <paramref name="done"/> or <paramref name="maxTicks"/>; returns each agent's events.</summary>
-    public static Dictionary<HostAgentHandle, List<JumpEvent>> Run(JumpNavigationHost host, IReadOnlyList<HostAgentHandle> agents, int maxTicks, Func<Dictionary<HostAgentHandle, List<JumpEvent>>, bool> done)
+    /// <summary>Steps the world and reads the agents' events each tick until <paramref name="done"/> or <paramref name="maxTicks"/>; returns each agent's events.</summary>
+    public static Dictionary<AgentHandle, List<JumpEvent>> Run(JumpWorld world, IReadOnlyList<AgentHandle> agents, int maxTicks, Func<Dictionary<AgentHandle, List<JumpEvent>>, bool> done)
     {
         var seen = agents.ToDictionary(a => a, _ => new List<JumpEvent>());
         for (int i = 0; i < maxTicks; i++)
         {
-            host.Step();
-            foreach (HostAgentHandle agent in agents)
+            world.Step();
+            foreach (AgentHandle agent in agents)
             {
-                while (host.TryDequeueEvent(agent, out JumpEvent e))
-                {
-                    seen[agent].Add(e);
-                }
+                seen[agent].AddRange(world.EventsOf(agent).ToArray());
             }
 
             if (done(seen))
@@ -86,13 +88,13 @@ internal static class HostingWorlds
         return seen;
     }
 
-    /// <summary>Steps the host and updates the logics each tick until <paramref name="done"/> holds or <paramref name="maxTicks"/> pass; returns every signal of <paramref name="logic"/>.</summary>
+    /// <summary>Steps the world and updates the logics each tick until <paramref name="done"/> holds or <paramref name="maxTicks"/> pass; returns every signal of <paramref name="logic"/>.</summary>
     public static List<AgentSignal> Run(JumpAgentLogic logic, int maxTicks, Func<List<AgentSignal>, bool> done, Action? afterTick = null)
     {
         var seen = new List<AgentSignal>();
         for (int i = 0; i < maxTicks; i++)
         {
-            logic.Host.Step();
+            logic.World.Step();
             seen.AddRange(logic.Update());
             afterTick?.Invoke();
             if (done(seen))

@@ -2,6 +2,9 @@ using System.Numerics;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime.Core;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Paths;
 
@@ -14,10 +17,10 @@ public sealed class JumpAgentLogicTests
     private static readonly Vector3 Gravity = new(0f, -9.81f, 0f);
 
     /// <summary>An agent registered on the desert host and sent across a trip of two jumps (seed 41), before any tick.</summary>
-    private static (JumpNavigationHost Host, JumpAgentLogic Logic, RoadmapNode From, RoadmapNode To) SentOnATwoJumpTrip()
+    private static (JumpWorld Host, JumpAgentLogic Logic, RoadmapNode From, RoadmapNode To) SentOnATwoJumpTrip()
     {
         (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 41).Single();
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         var logic = new JumpAgentLogic(host);
         Assert.That(logic.Register(region, RuntimeWorlds.Point(from)).Ok, Is.True);
         logic.TargetPosition = RuntimeWorlds.Point(to);
@@ -27,7 +30,7 @@ public sealed class JumpAgentLogicTests
     [Test]
     public void ATwoJumpTripRaisesTheSignalsInOrderAndTheBodyFliesTheAnnouncedParabolas()
     {
-        (JumpNavigationHost host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
+        (JumpWorld host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
         using (host)
         {
             int airborne = 0;
@@ -36,7 +39,7 @@ public sealed class JumpAgentLogicTests
                 if (logic.TryGetCurrentJump(out JumpInfo jump))
                 {
                     // The body point is on the parabola of the takeoff signal: From + V·t + ½·g·t².
-                    float t = (float)(host.World!.Time - jump.TakeoffTime);
+                    float t = (float)(host.Time - jump.TakeoffTime);
                     Vector3 parabola = jump.TakeoffPoint + (jump.BodyVelocity * t) + (0.5f * t * t * Gravity);
                     Assert.That(Vector3.Distance(logic.BodyPosition, parabola), Is.LessThan(1e-3f), $"body off its parabola at t = {t:0.###} s");
                     Assert.That(Vector3.Distance(logic.BodyVelocity, jump.BodyVelocity + (t * Gravity)), Is.LessThan(1e-3f));
@@ -84,11 +87,11 @@ public sealed class JumpAgentLogicTests
     public void TheStateTextFollowsATripFromPlanningThroughFlightToArrival()
     {
         (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 41).Single();
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
-            Assert.That(logic.DescribeState(), Does.StartWith("detached"), "not registered yet");
+            Assert.That(logic.DescribeState(), Is.EqualTo("not registered"));
             logic.Register(region, RuntimeWorlds.Point(from));
             Assert.That(logic.DescribeState(), Is.EqualTo("idle"));
             logic.TargetPosition = RuntimeWorlds.Point(to);
@@ -121,7 +124,7 @@ public sealed class JumpAgentLogicTests
     public void TheCurrentPathStartsWhereTheAgentStandsEndsAtTheTargetAndIsSampledFinely()
     {
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 42, minDistance: 6f)[0];
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
@@ -143,7 +146,7 @@ public sealed class JumpAgentLogicTests
                     Assert.That(Vector3.Distance(path[i - 1], path[i]), Is.LessThanOrEqualTo(step + 1e-5f), $"points {i - 1} and {i} of {path.Count}");
                 }
 
-                var moves = host.World!.GetPath(host.GetWorldAgent(logic.Agent))!.Moves;
+                var moves = host.GetPath(logic.Agent)!.Moves;
                 foreach (var move in moves)
                 {
                     Assert.That(path, Does.Contain(move.From.ContactCentre), $"takeoff of jump {move.Index}");
@@ -166,7 +169,7 @@ public sealed class JumpAgentLogicTests
     [Test]
     public void RaisingSignalsAllocatesNothing()
     {
-        (JumpNavigationHost host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
+        (JumpWorld host, JumpAgentLogic logic, RoadmapNode from, RoadmapNode to) = SentOnATwoJumpTrip();
         using (host)
         {
             HostingWorlds.Run(logic, MaxTicks, seen => seen.Any(s => s.Kind == AgentSignalKind.PathChanged));
@@ -196,7 +199,7 @@ public sealed class JumpAgentLogicTests
     public void TheNextJumpIsKnownBeforeItsTakeoffAndMatchesItsSignal()
     {
         (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(2, 1, seed: 43).Single();
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host, AgentMotionMode.ReportOnly);
@@ -209,7 +212,7 @@ public sealed class JumpAgentLogicTests
                 if (logic.TryGetNextJump(out JumpInfo next))
                 {
                     Assert.That(next.InProgress, Is.False);
-                    Assert.That(next.TakeoffTime, Is.GreaterThan(host.World!.Time));
+                    Assert.That(next.TakeoffTime, Is.GreaterThan(host.Time));
                     Assert.That(next.LandingTime - next.TakeoffTime, Is.EqualTo(next.FlightTime).Within(1e-4));
                     announced.TryAdd(next.Index, next);
                 }
@@ -232,25 +235,25 @@ public sealed class JumpAgentLogicTests
     {
         Roadmap roadmap = HostingWorlds.Desert.Roadmap;
         List<(RoadmapNode From, RoadmapNode To)> pairs = RuntimeWorlds.ConnectedPairs(roadmap, 2, seed: 44, minDistance: 6f);
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
             logic.Register(region, RuntimeWorlds.Point(pairs[0].From));
             Vector3 first = RuntimeWorlds.Point(pairs[0].To);
             logic.TargetPosition = first;
-            Assert.That(host.World!.QueuedRequests, Is.EqualTo(1));
+            Assert.That(host.QueuedRequests, Is.EqualTo(1));
             Assert.That(logic.IsNavigationFinished(), Is.False);
 
             // A nudge within the threshold: nothing changes, no request.
             RuntimeResult nudged = logic.SetTarget(first + new Vector3(0.05f, 0f, 0f));
             Assert.That(nudged.Reason, Does.Contain("kept"));
             Assert.That(logic.TargetPosition, Is.EqualTo(first));
-            Assert.That(host.World.QueuedRequests, Is.EqualTo(1));
+            Assert.That(host.QueuedRequests, Is.EqualTo(1));
             HostingWorlds.Run(logic, MaxTicks, seen => seen.Any(s => s.Kind == AgentSignalKind.JumpStarted));
             logic.TargetPosition = first + new Vector3(0f, 0f, 0.08f);
             Assert.That(logic.TargetPosition, Is.EqualTo(first), "in flight too");
-            Assert.That(host.World.IsPathPending(host.GetWorldAgent(logic.Agent)), Is.False);
+            Assert.That(host.IsPathPending(logic.Agent), Is.False);
 
             // Far away (beyond the runtime's replan distance): the agent lands, replans and goes there.
             Vector3 second = RuntimeWorlds.Point(pairs[1].To);
@@ -268,7 +271,7 @@ public sealed class JumpAgentLogicTests
     public void FinishedAndReachableOnAReachableTarget()
     {
         (RoadmapNode from, RoadmapNode to) = HostingWorlds.PairsWithJumps(3, 1, seed: 45).Single();
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
@@ -307,7 +310,7 @@ public sealed class JumpAgentLogicTests
         }
 
         Assume.That(pair, Is.Not.Null, "the roadmap is strongly connected: no unreachable node");
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
@@ -330,14 +333,14 @@ public sealed class JumpAgentLogicTests
     [Test]
     public void ATargetWithinTheDesiredDistanceIsReachedAtOnce()
     {
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             Vector3 here = RuntimeWorlds.Point(HostingWorlds.Desert.Roadmap.Nodes[3]);
             var logic = new JumpAgentLogic(host) { TargetDesiredDistance = 0.4f };
             logic.Register(region, here);
             logic.TargetPosition = here + new Vector3(0.3f, 0f, 0f);
-            Assert.That(host.World!.QueuedRequests, Is.Zero, "no path asked for");
+            Assert.That(host.QueuedRequests, Is.Zero, "no path asked for");
             Assert.That(logic.IsNavigationFinished(), Is.True);
             Assert.That(logic.IsTargetReached(), Is.True);
             host.Step();
@@ -353,31 +356,33 @@ public sealed class JumpAgentLogicTests
     public void AnAgentWaitingForItsRegionGetsItsTargetWhenTheRoadmapComes()
     {
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 47)[0];
-        using JumpNavigationHost host = HostingWorlds.Host();
-        RegionHandle region = host.CreateRegion("desert");
+        using JumpWorld host = HostingWorlds.Server();
+        KindHandle region = host.CreateKind("desert");
         var logic = new JumpAgentLogic(host);
         logic.TargetPosition = RuntimeWorlds.Point(to); // before registering, even
         Assert.That(logic.Register(region, RuntimeWorlds.Point(from)).Ok, Is.True);
-        Assert.That(logic.State, Is.EqualTo(HostAgentState.Waiting));
+        Assert.That(logic.Lifecycle, Is.EqualTo(AgentLifecycle.Waiting));
         Assert.That(logic.StateReason, Does.Contain("waiting"));
         Assert.That(logic.BodyPosition, Is.EqualTo(RuntimeWorlds.Point(from)));
         Assert.That(logic.IsTargetReachable(), Is.False, "not on a roadmap yet");
         host.Step();
         Assert.That(logic.Update(), Is.Empty);
 
-        host.SetRegionKind(region, HostingWorlds.Desert);
+        host.ReplaceKind(region, HostingWorlds.Desert);
         List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished);
         Assert.That(signals[0], Has.Property(nameof(AgentSignal.Kind)).EqualTo(AgentSignalKind.PathChanged));
         Assert.That(signals[^2], Has.Property(nameof(AgentSignal.Kind)).EqualTo(AgentSignalKind.TargetReached), string.Join("; ", signals));
         Assert.That(Vector3.Distance(logic.BodyPosition, RuntimeWorlds.Point(to)), Is.LessThan(1e-4f));
 
-        // The region is freed while the agent heads somewhere: the path fails with the host's reason.
+        // The kind is removed while the agent heads somewhere: at the next tick the path fails with the world's reason.
         logic.TargetPosition = RuntimeWorlds.Point(from);
-        host.FreeRegion(region);
+        host.RemoveKind(region);
+        Assert.That(logic.Update(), Is.Empty, "no tick since: the last tick's events are not read twice");
+        host.Step();
         signals = [.. logic.Update()];
         Assert.That(signals.Select(s => s.Kind), Is.EqualTo(new[] { AgentSignalKind.PathFailed, AgentSignalKind.NavigationFinished }));
-        Assert.That(signals[0].Reason, Does.Contain("unregistered"));
-        Assert.That(logic.State, Is.EqualTo(HostAgentState.Detached));
+        Assert.That(signals[0].Reason, Does.Contain("kind 'desert' was removed"));
+        Assert.That(logic.Lifecycle, Is.EqualTo(AgentLifecycle.Detached));
         Assert.That(logic.Unregister().Ok, Is.True);
         Assert.That(logic.IsRegistered, Is.False);
     }
@@ -386,7 +391,7 @@ public sealed class JumpAgentLogicTests
     public void ARebakeUnderWayLetsTheAgentFinishItsJumpAndCarryOnFromItsLanding()
     {
         (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(HostingWorlds.Desert.Roadmap, 1, seed: 48, minDistance: 6f)[0];
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
@@ -397,7 +402,7 @@ public sealed class JumpAgentLogicTests
             Assert.That(oldPath, Is.Not.Empty);
             Vector3 before = logic.BodyPosition;
 
-            Assert.That(host.SetRegionKind(region, HostingWorlds.DesertRebaked).Ok, Is.True);
+            Assert.That(host.ReplaceKind(region, HostingWorlds.DesertRebaked).Ok, Is.True);
             host.Step();
             Assert.That(logic.Update().Where(s => s.Kind == AgentSignalKind.PathFailed), Is.Empty, "a rebake is no failure");
             Assert.That(logic.GetCurrentPath(), Is.EqualTo(oldPath), "the jump under way is finished on the path it was planned on");
@@ -429,7 +434,7 @@ public sealed class JumpAgentLogicTests
         Roadmap roadmap = HostingWorlds.Desert.Roadmap;
         RoadmapNode a = roadmap.Nodes[0];
         RoadmapNode b = roadmap.Nodes.First(n => Vector3.Distance(RuntimeWorlds.Point(n), RuntimeWorlds.Point(a)) > 2f && roadmap.FindNode(RuntimeWorlds.Point(n), HostingWorlds.Tolerance) == n.Id);
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host, AgentMotionMode.ReportOnly);

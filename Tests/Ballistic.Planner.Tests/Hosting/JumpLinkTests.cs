@@ -3,6 +3,8 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
 using Ballistic.Runtime.Core;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Links;
 using Ballistic.Runtime.Paths;
@@ -180,7 +182,7 @@ public sealed class JumpLinkTests
     {
         JumpLinkSet set = JumpLinkSet.Build(Roadmap, new JumpLinkSettings { MinHorizontalDistance = 1.5f, MergeRadius = 1f, MaxLinks = 60 }, HostingWorlds.Desert.Animator, threads: 2);
         var traversal = new LinkTraversal(set);
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             foreach (int index in new[] { 0, set.Count / 2, set.Count - 1 })
@@ -197,7 +199,7 @@ public sealed class JumpLinkTests
                 Assert.That(host.GetStandingPoint(logic.Agent), Is.EqualTo(link.Start), "warped onto the takeoff stance at once");
                 Assert.That(logic.TargetPosition, Is.EqualTo(link.End));
                 AgentPath? path = null;
-                List<AgentSignal> signals = HostingWorlds.Run(logic, 600, HostingWorlds.Finished, () => path ??= host.World!.GetPath(host.GetWorldAgent(logic.Agent)));
+                List<AgentSignal> signals = HostingWorlds.Run(logic, 600, HostingWorlds.Finished, () => path ??= host.GetPath(logic.Agent));
 
                 Assert.That(signals.Select(s => s.Kind), Is.EqualTo(new[]
                 {
@@ -232,14 +234,14 @@ public sealed class JumpLinkTests
             return !HostingWorlds.Desert.Animator.Animate([new Jump(Roadmap.Nodes[edge.From], Roadmap.Nodes[edge.To], edge.Arc)], 60f).IsClean;
         });
         JumpLink link = set.Links[index];
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
             logic.Register(region, RuntimeWorlds.Point(Roadmap.Nodes[link.From]));
             Assert.That(new LinkTraversal(set).Traverse(logic, index).Ok, Is.True);
             AgentPath? path = null;
-            List<AgentSignal> signals = HostingWorlds.Run(logic, 3600, HostingWorlds.Finished, () => path ??= host.World!.GetPath(host.GetWorldAgent(logic.Agent)));
+            List<AgentSignal> signals = HostingWorlds.Run(logic, 3600, HostingWorlds.Finished, () => path ??= host.GetPath(logic.Agent));
             Assert.That(signals.Where(s => s.Kind == AgentSignalKind.PathFailed), Is.Empty, string.Join("; ", signals));
             Assert.That(signals[0], Has.Property(nameof(AgentSignal.Kind)).EqualTo(AgentSignalKind.PathChanged));
             Assert.That(signals[^2], Has.Property(nameof(AgentSignal.Kind)).EqualTo(AgentSignalKind.TargetReached), string.Join("; ", signals));
@@ -257,7 +259,7 @@ public sealed class JumpLinkTests
     {
         JumpLinkSet set = JumpLinkSet.Build(Roadmap);
         var traversal = new LinkTraversal(set);
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             var logic = new JumpAgentLogic(host);
@@ -266,11 +268,11 @@ public sealed class JumpLinkTests
             Assert.That(traversal.Traverse(logic, -1).Status, Is.EqualTo(RuntimeStatus.InvalidArgument));
             Assert.That(traversal.Traverse(logic, set.Count).Status, Is.EqualTo(RuntimeStatus.InvalidArgument));
 
-            host.SetRegionKind(region, HostingWorlds.DesertRebaked);
+            host.ReplaceKind(region, HostingWorlds.DesertRebaked);
             RuntimeResult stale = traversal.Traverse(logic, 0);
             Assert.That(stale.Status, Is.EqualTo(RuntimeStatus.Mismatch));
             Assert.That(stale.Reason, Does.Contain("another roadmap"));
-            Assert.That(host.World!.IsPathPending(host.GetWorldAgent(logic.Agent)), Is.False, "nothing was asked");
+            Assert.That(host.IsPathPending(logic.Agent), Is.False, "nothing was asked");
         }
     }
 }

@@ -4,6 +4,8 @@ using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Core;
+using Ballistic.Runtime.Agents;
+using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Hosting;
 
 namespace Ballistic.Planner.Tests.Hosting;
@@ -18,11 +20,11 @@ public sealed class WalkingHostTests
     private const int MaxTicks = 60 * 30;
 
     /// <summary>A host with one desert region whose kind animates walks, and a registered agent performing <see cref="WalkingPaths.WalkJumpWalk"/>.</summary>
-    private static (JumpNavigationHost Host, JumpAgentLogic Logic, IReadOnlyList<Move> Moves) Performing(AgentMotionMode mode)
+    private static (JumpWorld Host, JumpAgentLogic Logic, IReadOnlyList<Move> Moves) Performing(AgentMotionMode mode)
     {
-        JumpNavigationHost host = HostingWorlds.Host();
-        RegionHandle region = host.CreateRegion("desert walking");
-        Assert.That(host.SetRegionKind(region, WalkingPaths.Kind).Ok, Is.True);
+        JumpWorld host = HostingWorlds.Server();
+        KindHandle region = host.CreateKind("desert walking");
+        Assert.That(host.ReplaceKind(region, WalkingPaths.Kind).Ok, Is.True);
         IReadOnlyList<Move> moves = WalkingPaths.WalkJumpWalk();
         var logic = new JumpAgentLogic(host, mode);
         Assert.That(logic.Register(region, WalkingPaths.Centre(moves[0].To)).Ok, Is.True);
@@ -36,7 +38,7 @@ public sealed class WalkingHostTests
     [TestCase(AgentMotionMode.ReportOnly)]
     public void TheSignalsOfAWalkJumpWalkTripComeInOrderWithTheirPayloads(AgentMotionMode mode)
     {
-        (JumpNavigationHost host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(mode);
+        (JumpWorld host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(mode);
         using (host)
         {
             List<AgentSignal> signals = HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished);
@@ -75,7 +77,7 @@ public sealed class WalkingHostTests
     [TestCase(AgentMotionMode.ReportOnly)]
     public void TheBodyWalksTheGroundPathAtTheWalkingSpeed(AgentMotionMode mode)
     {
-        (JumpNavigationHost host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(mode);
+        (JumpWorld host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(mode);
         using (host)
         {
             float dt = (float)host.Settings.TickSeconds;
@@ -84,14 +86,14 @@ public sealed class WalkingHostTests
             var states = new List<string>();
             HostingWorlds.Run(logic, MaxTicks, HostingWorlds.Finished, () =>
             {
-                JumpWorld world = host.World!;
+                JumpWorld world = host;
                 string state = logic.DescribeState();
                 if (states.Count == 0 || states[^1] != state)
                 {
                     states.Add(state);
                 }
 
-                if (!world.TryGetCurrentWalk(host.GetWorldAgent(logic.Agent), out Ballistic.Runtime.Paths.WalkInfo info))
+                if (!world.TryGetCurrentWalk(logic.Agent, out Ballistic.Runtime.Paths.WalkInfo info))
                 {
                     previous = null;
                     return;
@@ -132,7 +134,7 @@ public sealed class WalkingHostTests
     [Test]
     public void TheCurrentPathFollowsTheWalksAndTheArcFinely()
     {
-        (JumpNavigationHost host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(AgentMotionMode.MoveParent);
+        (JumpWorld host, JumpAgentLogic logic, IReadOnlyList<Move> moves) = Performing(AgentMotionMode.MoveParent);
         using (host)
         {
             HostingWorlds.Run(logic, MaxTicks, seen => seen.Any(s => s.Kind == AgentSignalKind.PathChanged));
@@ -201,11 +203,11 @@ public sealed class WalkingHostTests
         (RoadmapNode from, RoadmapNode to) = pair!.Value;
         foreach ((WorldSettings settings, bool reachable) in new[] { (new WorldSettings { AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump }, true), (RuntimeWorlds.JumpOnly, false) })
         {
-            using var host = new JumpNavigationHost(settings);
-            RegionHandle region = host.CreateRegion("desert without jumps");
-            Assert.That(host.SetRegionKind(region, kind).Ok, Is.True);
-            HostAgentHandle agent = host.RegisterAgent(region, RuntimeWorlds.Point(from)).Agent;
-            Assume.That(host.World!.GetStance(host.GetWorldAgent(agent)), Is.SameAs(from), "the agent stands on the node");
+            using var host = new JumpWorld(settings);
+            KindHandle region = host.CreateKind("desert without jumps");
+            Assert.That(host.ReplaceKind(region, kind).Ok, Is.True);
+            AgentHandle agent = host.AddAgent(region, RuntimeWorlds.Point(from)).Agent;
+            Assume.That(host.GetStance(agent), Is.SameAs(from), "the agent stands on the node");
             Assert.That(host.IsTargetReachable(agent, RuntimeWorlds.Point(to)), Is.EqualTo(reachable), $"locomotion {settings.Locomotion}");
         }
     }

@@ -44,14 +44,16 @@ public sealed class AnimationWaitTests
 
     /// <summary>
     /// A bare world waits as long as it takes (a loop stepping as fast as it can, like a test or the CI's game program,
-    /// must not outrun its animations); the Godot server's host, stepped in real time, bounds the wait.
+    /// must not outrun its animations); the Godot server's world, stepped in real time, bounds the wait.
     /// </summary>
     [Test]
-    public void ABareWorldWaitsWhileTheRealTimeHostBoundsTheWait()
+    public void ABareWorldWaitsWhileTheRealTimeServerBoundsTheWait()
     {
         Assert.That(new WorldSettings().MaxAnimationWait, Is.Null);
-        using var host = new Ballistic.Runtime.Hosting.JumpNavigationHost();
-        Assert.That(host.Settings.MaxAnimationWait, Is.EqualTo(WorldSettings.RealTimeAnimationWait));
+        Assert.That(WorldSettings.RealTime.MaxAnimationWait, Is.EqualTo(WorldSettings.RealTimeAnimationWait));
+        Assert.That(WorldSettings.RealTime with { MaxAnimationWait = null }, Is.EqualTo(new WorldSettings()), "otherwise the defaults");
+        string server = File.ReadAllText(Path.Combine(Support.RepositoryFiles.Root, "addons", "ballistic", "Nodes", "JumpNavigationServer.cs"));
+        Assert.That(server, Does.Contain("new(WorldSettings.RealTime)"), "the Godot server's world is made with them");
         Assert.That(new WorldSettings { MaxAnimationWait = TimeSpan.Zero }.Problem(), Does.Contain("MaxAnimationWait must be positive"));
     }
 

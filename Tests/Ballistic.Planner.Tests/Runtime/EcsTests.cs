@@ -267,7 +267,7 @@ public sealed class EcsTests
 
                 Assert.That(Handles(world.Query(new AgentQuery().With(team))), Is.EqualTo(new[] { agents[0], agents[3] }));
                 Assert.That(Handles(world.Query(new AgentQuery().With(stamina).Without(team))), Is.EqualTo(new[] { agents[2], agents[4], agents[5] }));
-                Assert.That(Handles(world.Query(new AgentQuery().OfKind(new KindHandle(kind.Index + 1, true)))), Is.Empty);
+                Assert.That(Handles(world.Query(new AgentQuery().OfKind(new KindHandle(kind.Index + 1, 1)))), Is.Empty);
             }
 
             Assert.That(seenStates, Is.SupersetOf(new[] { AgentState.Idle, AgentState.Stance, AgentState.Walking }), "the states queried were met");

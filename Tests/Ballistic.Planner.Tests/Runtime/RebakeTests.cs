@@ -12,7 +12,6 @@ using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
-using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
 
@@ -52,7 +51,7 @@ public sealed class RebakeTests
                 finishing += agents.Count(a => world.GetPath(a) is not null);
                 RuntimeResult swapped = world.ReplaceKind(kind, kinds[++swaps % 2]);
                 Assert.That(swapped.Ok, Is.True, swapped.ToString());
-                Assert.That(swapped.Reason, Does.Contain("0 agents removed"));
+                Assert.That(swapped.Reason, Does.Contain("0 agents unplaced"));
                 Assert.That(agents.All(world.IsValid), Is.True, "every agent keeps its handle");
                 Assert.That(agents.Select(world.GetRootPose), Is.EqualTo(before), "the swap moves nobody");
             }
@@ -127,7 +126,7 @@ public sealed class RebakeTests
     }
 
     [Test]
-    public void ARebakeForAnotherCharacterStandsEachAgentAsTheNewBodyOrRemovesItSayingWhy()
+    public void ARebakeForAnotherCharacterStandsEachAgentAsTheNewBodyOrUnplacesItSayingWhy()
     {
         (CharacterKind frog, CharacterKind skeleton) = Table.Value;
         using var world = new JumpWorld(frog.Scene.Level, RuntimeWorlds.JumpOnly);
@@ -139,12 +138,14 @@ public sealed class RebakeTests
 
         RuntimeResult swapped = world.ReplaceKind(kind, skeleton);
         Assert.That(swapped.Ok, Is.True, swapped.ToString());
-        Assert.That(swapped.Reason, Does.StartWith("kind 'skeleton' replaced: 1 agent put on its new roadmap, 0 agents finishing a move first, 1 agent removed ("));
+        Assert.That(swapped.Reason, Does.StartWith("kind 'skeleton' replaced: 1 agent put on its new roadmap, 0 agents finishing a move first, 1 agent unplaced ("));
         Assert.That(world.IsValid(open.Agent), Is.True, "the agent in the open stays, now a skeleton");
         RoadmapNode stance = world.GetStance(open.Agent)!;
         Assert.That(HostingWorlds.WithinTolerance(stance.ContactCentre, openAt), Is.True, "where it stood");
         Assert.That(world.GetJointAngles(open.Agent).ToArray(), Is.EqualTo(skeleton.Animator.Contacts.Generate(stance.Pose, stance.Contacts, stance.Cone.Axis).Angles).Within(1e-5f), "in the skeleton's pose on its stance");
-        Assert.That(world.IsValid(under.Agent), Is.False, "the agent under the table is let go");
+        Assert.That(world.GetLifecycle(under.Agent), Is.EqualTo(AgentLifecycle.Unplaced), "the agent under the table leaves the simulation");
+        Assert.That(world.IsValid(under.Agent), Is.True, "under its handle");
+        Assert.That(world.Query(new AgentQuery()).Count(), Is.EqualTo(1), "only the agent in the open is simulated");
 
         List<JumpEvent> events = RuntimeWorlds.Run(world, 2);
         Assert.That(world.GetJointRotations(open.Agent).Length, Is.EqualTo(skeleton.JointCount), "pose buffers sized for the skeleton");
@@ -155,64 +156,55 @@ public sealed class RebakeTests
     }
 
     [Test]
-    public void AHostAgentTheNewBodyCannotStandAsWaitsUnplacedWithTheReasonAndTheOthersKeepTheirWorldHandles()
+    public void AnAgentTheNewBodyCannotStandAsWaitsUnplacedWithTheReasonUnderItsHandle()
     {
         (CharacterKind frog, CharacterKind skeleton) = Table.Value;
-        using var host = new JumpNavigationHost(new WorldSettings { AnimationThreads = 0 });
-        RegionHandle region = host.CreateRegion("table");
-        Assert.That(host.SetRegionKind(region, frog).Ok, Is.True);
-        HostAgentHandle open = host.RegisterAgent(region, new Vector3(-3f, 0f, 0f)).Agent;
-        HostAgentHandle under = host.RegisterAgent(region, new Vector3(3.5f, 0f, 0f)).Agent;
-        HostAgentHandle going = host.RegisterAgent(region, new Vector3(-1f, 0f, -2f)).Agent;
+        using var host = new JumpWorld(new WorldSettings { AnimationThreads = 0 });
+        KindHandle region = host.CreateKind("table");
+        Assert.That(host.ReplaceKind(region, frog).Ok, Is.True);
+        AgentHandle open = host.AddAgent(region, new Vector3(-3f, 0f, 0f)).Agent;
+        AgentHandle under = host.AddAgent(region, new Vector3(3.5f, 0f, 0f)).Agent;
+        AgentHandle going = host.AddAgent(region, new Vector3(-1f, 0f, -2f)).Agent;
         Assert.That(host.SetTarget(going, new Vector3(4f, 0f, -2f)).Ok, Is.True);
         var goingEvents = new List<JumpEvent>();
-        for (int i = 0; i < 1200 && !InLastMove(host.World!, host.GetWorldAgent(going)); i++)
+        for (int i = 0; i < 1200 && !InLastMove(host, going); i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(going, out JumpEvent e))
-            {
-                goingEvents.Add(e);
-            }
+            goingEvents.AddRange(host.EventsOf(going).ToArray());
         }
 
-        Assume.That(InLastMove(host.World!, host.GetWorldAgent(going)), Is.True, string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
-        AgentHandle openInWorld = host.GetWorldAgent(open);
+        Assume.That(InLastMove(host, going), Is.True, string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
 
-        RuntimeResult rebaked = host.SetRegionKind(region, skeleton);
+        RuntimeResult rebaked = host.ReplaceKind(region, skeleton);
         Assert.That(rebaked.Ok, Is.True, rebaked.ToString());
-        Assert.That(rebaked.Reason, Does.Contain("2 agents on it, 1 could not stand where they were"));
-        Assert.That(host.GetAgentState(open), Is.EqualTo(HostAgentState.Active));
-        Assert.That(host.GetWorldAgent(open), Is.EqualTo(openInWorld), "same world handle");
-        Assert.That(host.GetAgentState(under), Is.EqualTo(HostAgentState.Unplaced));
+        Assert.That(rebaked.Reason, Does.Contain("1 agent put on its new roadmap, 1 agent finishing a move first, 1 agent unplaced"));
+        Assert.That(host.GetLifecycle(open), Is.EqualTo(AgentLifecycle.Active));
+        Assert.That(host.GetLifecycle(under), Is.EqualTo(AgentLifecycle.Unplaced));
+        Assert.That(host.IsValid(under), Is.True, "the same handle, out of the simulation");
         Assert.That(host.GetAgentReason(under), Does.Contain("another character"));
-        Assert.That(host.GetWorldAgent(under), Is.EqualTo(default(AgentHandle)));
         Assert.That(host.GetStandingPoint(under)!.Value.X, Is.EqualTo(3.5f).Within(0.5f), "remembered where it stood");
 
         var events = new List<JumpEvent>();
+        var openEvents = new List<JumpEvent>();
         for (int i = 0; i < 3; i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(under, out JumpEvent e))
-            {
-                events.Add(e);
-            }
+            events.AddRange(host.EventsOf(under).ToArray());
+            openEvents.AddRange(host.EventsOf(open).ToArray());
         }
 
         Assert.That(events.Select(e => e.Kind), Is.EqualTo(new[] { JumpEventKind.Removed }), "told once");
-        Assert.That(host.GetPendingEventCount(open), Is.Zero, "the other agent is told nothing");
+        Assert.That(openEvents, Is.Empty, "the other agent is told nothing");
 
         // The frog on its way under the table finishes its last move as a frog, then cannot stand there as a skeleton.
-        Assert.That(host.GetAgentState(going), Is.EqualTo(HostAgentState.Active), "in a move: it finishes it first");
-        for (int i = 0; i < 600 && host.GetAgentState(going) == HostAgentState.Active; i++)
+        Assert.That(host.GetLifecycle(going), Is.EqualTo(AgentLifecycle.Active), "in a move: it finishes it first");
+        for (int i = 0; i < 600 && host.GetLifecycle(going) == AgentLifecycle.Active; i++)
         {
             host.Step();
-            while (host.TryDequeueEvent(going, out JumpEvent e))
-            {
-                goingEvents.Add(e);
-            }
+            goingEvents.AddRange(host.EventsOf(going).ToArray());
         }
 
-        Assert.That(host.GetAgentState(going), Is.EqualTo(HostAgentState.Unplaced), string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
+        Assert.That(host.GetLifecycle(going), Is.EqualTo(AgentLifecycle.Unplaced), string.Join("; ", goingEvents.Select(e => $"{e.Kind} {e.Reason}")));
         Assert.That(goingEvents[^1].Kind, Is.EqualTo(JumpEventKind.Removed));
         Assert.That(host.GetAgentReason(going), Does.Contain("another character"));
         Assert.That(host.GetStandingPoint(going)!.Value.X, Is.GreaterThan(1f), "it waits where its move ended, under the table");
@@ -220,7 +212,7 @@ public sealed class RebakeTests
 
         // Warped into the open, the skeleton stands there and joins the world.
         Assert.That(host.Warp(under, new Vector3(-1f, 0f, 2f)).Ok, Is.True);
-        Assert.That(host.GetAgentState(under), Is.EqualTo(HostAgentState.Active));
+        Assert.That(host.GetLifecycle(under), Is.EqualTo(AgentLifecycle.Active));
     }
 
     /// <summary>True while <paramref name="agent"/> is in the last move of its path (a jump or a walk).</summary>

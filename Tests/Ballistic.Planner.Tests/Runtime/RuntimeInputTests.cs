@@ -41,7 +41,7 @@ public sealed class RuntimeInputTests
 
             Assert.That(world.IsValid(reused), Is.True, "the new agent in the slot is not confused with the removed one");
             Assert.That(world.AddAgent(default, RuntimeWorlds.Point(node)).Result.Status, Is.EqualTo(RuntimeStatus.UnknownKind));
-            Assert.That(world.AddAgent(new KindHandle(5, true), RuntimeWorlds.Point(node)).Result.Status, Is.EqualTo(RuntimeStatus.UnknownKind));
+            Assert.That(world.AddAgent(new KindHandle(5, 1), RuntimeWorlds.Point(node)).Result.Status, Is.EqualTo(RuntimeStatus.UnknownKind));
         }
     }
 

@@ -6,7 +6,6 @@ using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
-using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Planner.Tests.Runtime;
@@ -58,22 +57,22 @@ public sealed class ThreadMisuseTests
     }
 
     [Test]
-    public void CallsToTheGodotServersHostFromEightThreadsWhileANinthStepsItAreRefusedOrDoneAndNeverBreakIt()
+    public void CallsToAServerWorldsAgentsFromEightThreadsWhileANinthStepsItAreRefusedOrDoneAndNeverBreakIt()
     {
-        (JumpNavigationHost host, RegionHandle region) = HostingWorlds.DesertHost();
+        (JumpWorld host, KindHandle region) = HostingWorlds.DesertServer();
         using (host)
         {
             Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
-            HostAgentHandle[] agents = [.. Enumerable.Range(0, 16).Select(i => host.RegisterAgent(region, RuntimeWorlds.Point(roadmap.Nodes[i * 7])).Agent)];
+            AgentHandle[] agents = [.. Enumerable.Range(0, 16).Select(i => host.AddAgent(region, RuntimeWorlds.Point(roadmap.Nodes[i * 7])).Agent)];
             (ConcurrentDictionary<RuntimeStatus, int> statuses, ConcurrentQueue<Exception> thrown) = Race(seed: 200, host.Step, random =>
             {
-                HostAgentHandle agent = agents[random.Next(agents.Length)];
+                AgentHandle agent = agents[random.Next(agents.Length)];
                 Vector3 point = RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
                 return random.Next(5) switch
                 {
                     0 => host.Warp(agent, point),
                     1 => host.ClearTarget(agent),
-                    2 => host.RegisterAgent(region, point) is { Result.Ok: true } added ? Unregister(host, added.Agent) : RuntimeResult.Success,
+                    2 => host.AddAgent(region, point) is { Agent.IsAssigned: true } added ? Unregister(host, added.Agent) : RuntimeResult.Success,
                     3 => Read(host, agent, point),
                     _ => random.Next(20) == 0 ? host.SetTarget(agent, point) : host.ClearTarget(agent),
                 };
@@ -83,8 +82,8 @@ public sealed class ThreadMisuseTests
             Assert.That(statuses.GetValueOrDefault(RuntimeStatus.Busy), Is.Positive, "calls met the ticks and were refused");
             Assert.That(statuses.Keys, Is.SubsetOf(new[] { RuntimeStatus.Ok, RuntimeStatus.Busy, RuntimeStatus.InvalidPosition }), "no other failure");
             Assert.That(host.AgentCount, Is.EqualTo(agents.Length), "the registered-and-unregistered agents are gone, the others all there");
-            Assert.That(agents.All(a => host.GetAgentState(a) == HostAgentState.Active), Is.True);
-            Assert.That(host.World!.AgentCount, Is.EqualTo(agents.Length), "and the world holds exactly them");
+            Assert.That(agents.All(a => host.GetLifecycle(a) == AgentLifecycle.Active), Is.True);
+            Assert.That(host.Query(new AgentQuery()).Count(), Is.EqualTo(agents.Length), "and the simulation holds exactly them");
         }
     }
 
@@ -152,19 +151,19 @@ public sealed class ThreadMisuseTests
         return result;
     }
 
-    /// <summary>Drains one event and asks about reachability: calls that wait for the host's thread rather than being refused.</summary>
-    private static RuntimeResult Read(JumpNavigationHost host, HostAgentHandle agent, Vector3 point)
+    /// <summary>Reads the agent's events and asks about reachability: calls that wait for the world's thread rather than being refused.</summary>
+    private static RuntimeResult Read(JumpWorld host, AgentHandle agent, Vector3 point)
     {
-        host.TryDequeueEvent(agent, out _);
+        _ = host.EventsOf(agent).Length;
         host.IsTargetReachable(agent, point);
         return RuntimeResult.Success;
     }
 
-    /// <summary>Unregisters <paramref name="agent"/>, asking again while the host's thread is busy.</summary>
-    private static RuntimeResult Unregister(JumpNavigationHost host, HostAgentHandle agent)
+    /// <summary>Removes <paramref name="agent"/>, asking again while the world's thread is busy.</summary>
+    private static RuntimeResult Unregister(JumpWorld host, AgentHandle agent)
     {
         RuntimeResult result;
-        while ((result = host.UnregisterAgent(agent)).Status == RuntimeStatus.Busy)
+        while ((result = host.RemoveAgent(agent)).Status == RuntimeStatus.Busy)
         {
             Thread.Yield();
         }

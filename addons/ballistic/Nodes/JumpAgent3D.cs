@@ -1,6 +1,7 @@
 #nullable enable
 using System.Collections.Generic;
 using System.Linq;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
@@ -121,11 +122,11 @@ public partial class JumpAgent3D : Node
             return;
         }
 
-        _logic = new JumpAgentLogic(server.Host, MoveParent ? AgentMotionMode.MoveParent : AgentMotionMode.ReportOnly)
+        _logic = new JumpAgentLogic(server.World, MoveParent ? AgentMotionMode.MoveParent : AgentMotionMode.ReportOnly)
         {
             TargetDesiredDistance = TargetDesiredDistance,
         };
-        RuntimeResult registered = _logic.Register(_roadmap.GetRegion(), BodyNode()?.GlobalPosition.ToNumerics() ?? default);
+        RuntimeResult registered = _logic.Register(_roadmap.GetWorldKind(), BodyNode()?.GlobalPosition.ToNumerics() ?? default);
         if (!registered.Ok)
         {
             GD.PushError($"{GetPath()}: {registered.Reason}");
@@ -177,7 +178,7 @@ public partial class JumpAgent3D : Node
             Emit(signals[i]);
         }
 
-        if (_logic.Mode == AgentMotionMode.MoveParent && _logic.State == HostAgentState.Active && BodyNode() is { } body)
+        if (_logic.Mode == AgentMotionMode.MoveParent && _logic.Lifecycle == AgentLifecycle.Active && BodyNode() is { } body)
         {
             body.GlobalPosition = _logic.BodyPosition.ToGodot();
             body.GlobalBasis = new Basis(_logic.BodyRotation.ToGodot()) * Basis.FromScale(body.GlobalBasis.Scale);

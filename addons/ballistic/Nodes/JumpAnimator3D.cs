@@ -1,6 +1,6 @@
 #nullable enable
 using System;
-using Ballistic.Runtime;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Hosting;
 using Ballistic.Runtime.Skeletons;
@@ -113,12 +113,12 @@ public partial class JumpAnimator3D : Node
     public override void _Process(double delta)
     {
         if (!Active || _binding is null || _skeleton is null || _agent?.Logic is not JumpAgentLogic logic
-            || logic.State != HostAgentState.Active || logic.Host.World is not JumpWorld world)
+            || logic.Lifecycle != AgentLifecycle.Active)
         {
             return;
         }
 
-        RuntimeResult converted = _binding.Convert(world, logic.Host.GetWorldAgent(logic.Agent), SkeletonGlobal(_skeleton), _rotations, _positions);
+        RuntimeResult converted = _binding.Convert(logic.World, logic.Agent, SkeletonGlobal(_skeleton), _rotations, _positions);
         if (!converted.Ok)
         {
             return;

@@ -1,5 +1,7 @@
 #nullable enable
 using System.Collections.Generic;
+using Ballistic.Runtime;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.DebugDraw;
 using Ballistic.Runtime.Hosting;
 using Godot;
@@ -8,10 +10,11 @@ namespace Ballistic.Addon;
 
 /// <summary>
 /// The Ballistic runtime in the scene tree, registered as the autoload <c>JumpNavigationServer</c> when the plugin is
-/// enabled (like Godot's <c>NavigationServer3D</c>, it owns the maps the nodes register with). It owns a
-/// <see cref="JumpNavigationHost"/>: <see cref="JumpRoadmap3D"/> nodes register regions, <see cref="JumpAgent3D"/>
-/// nodes register agents, and every physics frame the host's systems step at their fixed tick and sort the events
-/// per agent for the agent nodes to drain. It also draws the debug view (roadmaps, current paths, cones) with an
+/// enabled (like Godot's <c>NavigationServer3D</c>, it owns the maps the nodes register with). It owns one
+/// <see cref="JumpWorld"/>: <see cref="JumpRoadmap3D"/> nodes add character kinds (with or without a roadmap yet),
+/// <see cref="JumpAgent3D"/> nodes add agents (entities), and every physics frame the world's systems step at their
+/// fixed tick (the ticks the frame owes, in one <see cref="JumpWorld.Step(int)"/>), before the agent nodes read their
+/// entities' components and events. It also draws the debug view (roadmaps, current paths, cones) with an
 /// <see cref="ImmediateMesh"/> when the project settings <c>ballistic/debug/draw_roadmaps</c> or
 /// <c>ballistic/debug/draw_paths</c> are on. No planning logic here.
 /// </summary>
@@ -35,8 +38,8 @@ public partial class JumpNavigationServer : Node
     /// <summary>The server in the tree; created on first use when the autoload is missing.</summary>
     public static JumpNavigationServer? Singleton { get; private set; }
 
-    /// <summary>The engine-free host: regions, agents, the world and its systems.</summary>
-    public JumpNavigationHost Host { get; } = new();
+    /// <summary>The engine-free world: kinds, agents, systems; with a real-time wait for late animations (<see cref="WorldSettings.RealTime"/>), as a game stepping at its physics rate needs.</summary>
+    public JumpWorld World { get; } = new(WorldSettings.RealTime);
 
     /// <summary>Draw the registered roadmaps (stances and jumps); starts from <see cref="DrawRoadmapsSetting"/>.</summary>
     public bool DrawRoadmaps { get; set; }
@@ -80,18 +83,15 @@ public partial class JumpNavigationServer : Node
             Singleton = null;
         }
 
-        Host.Dispose();
+        World.Dispose();
     }
 
     /// <summary>Steps the runtime at its fixed tick and redraws the debug view.</summary>
     public override void _PhysicsProcess(double delta)
     {
         // At most four ticks a frame (a long hitch does not freeze the game catching up); a bad delta adds nothing.
-        _clock ??= new FixedTickClock(Host.Settings.TickSeconds, maxTicksPerFrame: 4);
-        for (int ticks = _clock.Advance(delta); ticks > 0; ticks--)
-        {
-            Host.Step();
-        }
+        _clock ??= new FixedTickClock(World.Settings.TickSeconds, maxTicksPerFrame: 4);
+        World.Step(_clock.Advance(delta));
 
         DrawDebug();
     }

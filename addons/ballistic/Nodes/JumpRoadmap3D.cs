@@ -9,7 +9,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Baking;
-using Ballistic.Runtime.Hosting;
+using Ballistic.Runtime;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Links;
 using Godot;
@@ -24,7 +24,7 @@ namespace Ballistic.Addon;
 /// data. At runtime the node registers its region with the <see cref="JumpNavigationServer"/>, and optionally
 /// publishes its jumps as one-way links on the world's navigation map. The node only gathers Godot data and
 /// forwards it: <see cref="SourceGeometry"/>, <see cref="BakeJob"/>, <see cref="RoadmapData"/>,
-/// <see cref="JumpNavigationHost"/> and <see cref="JumpLinkSet"/> decide.
+/// <see cref="JumpWorld"/> and <see cref="JumpLinkSet"/> decide.
 /// </summary>
 [Tool]
 [GlobalClass]
@@ -63,7 +63,7 @@ public partial class JumpRoadmap3D : Node3D
     private BakeJob? _job;
     private string _lastBakeError = "";
     private string? _staleness;
-    private RegionHandle _region;
+    private KindHandle _worldKind;
     private Task<(CharacterKind Kind, JumpLinkSet? Links)>? _kindTask;
     private CharacterKind? _kind;
     private readonly List<Rid> _links = [];
@@ -179,13 +179,13 @@ public partial class JumpRoadmap3D : Node3D
         if (JumpNavigationServer.Singleton is { } server)
         {
             server.Untrack(this);
-            if (_region.IsAssigned)
+            if (_worldKind.Assigned)
             {
-                server.Host.FreeRegion(_region);
+                server.World.RemoveKind(_worldKind);
             }
         }
 
-        _region = default;
+        _worldKind = default;
     }
 
     /// <summary>Finishes a threaded bake or a runtime load when it is done.</summary>
@@ -267,15 +267,15 @@ public partial class JumpRoadmap3D : Node3D
     /// <summary>Why the last bake failed or was cancelled; empty after a success.</summary>
     public string GetLastBakeError() => _lastBakeError;
 
-    /// <summary>The region handle of this roadmap in the server (created on first use, so agents readied first can name it).</summary>
-    public RegionHandle GetRegion()
+    /// <summary>The kind of this roadmap in the server's world (created on first use, without a roadmap, so agents readied first can name it).</summary>
+    public KindHandle GetWorldKind()
     {
-        if (!_region.IsAssigned && !Engine.IsEditorHint())
+        if (!_worldKind.Assigned && !Engine.IsEditorHint())
         {
-            _region = JumpNavigationServer.Get(this).Host.CreateRegion(IsInsideTree() ? GetPath().ToString() : Name.ToString());
+            _worldKind = JumpNavigationServer.Get(this).World.CreateKind(IsInsideTree() ? GetPath().ToString() : Name.ToString());
         }
 
-        return _region;
+        return _worldKind;
     }
 
     /// <summary>Warns when there is no character, nothing is baked, or the level or character changed since the bake.</summary>
@@ -479,7 +479,7 @@ public partial class JumpRoadmap3D : Node3D
     {
         _kind = kind;
         LoadedRoadmap = kind.Roadmap;
-        var result = JumpNavigationServer.Get(this).Host.SetRegionKind(GetRegion(), kind);
+        var result = JumpNavigationServer.Get(this).World.ReplaceKind(GetWorldKind(), kind);
         if (!result.Ok)
         {
             GD.PushError($"{GetPath()}: {result.Reason}");
