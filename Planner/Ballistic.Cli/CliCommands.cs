@@ -3,6 +3,7 @@ using System.CommandLine.Parsing;
 using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
+using System.Runtime.ExceptionServices;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
@@ -13,6 +14,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Baking;
 
 namespace Ballistic.Cli;
 
@@ -76,33 +78,44 @@ internal static class CliCommands
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
             int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
             var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit, Locomotion = ParseLocomotion(parse.GetValue(locomotion)!) };
-            var scene = PlanningScene.Create(lvl, chr);
             ConsoleProgress progress = ConsoleProgress.For(stderr, nodes);
-            BakeResult result = new RoadmapBaker(scene).Bake(settings, TerminationCondition.Cancellation(cancellation), progress);
+            // The editor's bake job classifies the ending: done, cancelled, or failed with the reason.
+            BakeOutcome outcome = BakeJob.Run(lvl, chr, settings, cancellation, progress);
             progress.Finish();
-            // A bake has no "exact": it ends done (its reason says which budget stopped it), cancelled or failed.
-            string ending = result.Status == PlannerStatus.Exact ? "done" : PlanReportWriter.StatusName(result.Status);
-            stdout.WriteLine($"bake: {ending} ({result.Reason})");
-            stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps, {result.Roadmap.Walks.Count} walks in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
-            if (result.SteeringRejections.Count > 0)
+            if (outcome.Error is { } refused)
             {
-                stdout.WriteLine("jump candidates refused: " + string.Join("; ", result.SteeringRejections.OrderByDescending(r => r.Value).ThenBy(r => r.Key).Select(r => $"{r.Value:N0} {SteeringFailureText.Describe(r.Key)}")));
+                ExceptionDispatchInfo.Capture(refused).Throw(); // an input the baker refused: its own exit code (Guard)
+            }
+
+            if (outcome.Result is { } result)
+            {
+                // A bake has no "exact": it ends done (its reason says which budget stopped it), cancelled or failed.
+                string ending = result.Status == PlannerStatus.Exact ? "done" : PlanReportWriter.StatusName(result.Status);
+                stdout.WriteLine($"bake: {ending} ({result.Reason})");
+                stdout.WriteLine($"roadmap: {result.Roadmap.Nodes.Count} nodes, {result.Roadmap.Edges.Count} jumps, {result.Roadmap.Walks.Count} walks in {result.Elapsed.TotalSeconds:0.###} s ({result.SteeringCalls} steering calls, {settings.Threads} threads)");
+                if (result.SteeringRejections.Count > 0)
+                {
+                    stdout.WriteLine("jump candidates refused: " + string.Join("; ", result.SteeringRejections.OrderByDescending(r => r.Value).ThenBy(r => r.Key).Select(r => $"{r.Value:N0} {SteeringFailureText.Describe(r.Key)}")));
+                }
             }
 
             string path = parse.GetValue(output)!;
-            if (result.Status is PlannerStatus.Cancelled)
+            switch (outcome.Status)
             {
-                stderr.WriteLine($"cancelled: nothing written{(File.Exists(path) ? $"; {path} is unchanged" : "")}.");
-                return ExitCode.Cancelled;
+                case BakeJobStatus.Cancelled:
+                    if (outcome.Result is null)
+                    {
+                        stdout.WriteLine("bake: cancelled");
+                    }
+
+                    stderr.WriteLine($"cancelled: nothing written{(File.Exists(path) ? $"; {path} is unchanged" : "")}.");
+                    return ExitCode.Cancelled;
+                case BakeJobStatus.Failed:
+                    stderr.WriteLine($"error: nothing written: {outcome.Reason}.");
+                    return ExitCode.NotFound;
             }
 
-            if (result.Roadmap.Nodes.Count == 0)
-            {
-                stderr.WriteLine($"error: nothing written: {result.Reason}.");
-                return ExitCode.NotFound;
-            }
-
-            RoadmapFile.Save(result.Roadmap, path);
+            RoadmapFile.Save(outcome.Roadmap!, path);
             stdout.WriteLine($"written: {path}");
             return 0;
         }));

@@ -62,21 +62,22 @@ public sealed class BakeJob : IDisposable
     }
 
     /// <summary>
-    /// Bakes on the calling thread (a node's <c>BakeRoadmap(onThread: false)</c>), with the same outcome a
-    /// <see cref="BakeJob"/> would give.
+    /// Bakes on the calling thread (a node's <c>BakeRoadmap(onThread: false)</c>, the CLI's <c>bake</c>), with the
+    /// same outcome a <see cref="BakeJob"/> would give: the one place a bake's ending is classified.
     /// </summary>
     /// <param name="level">The level.</param>
     /// <param name="character">The character.</param>
     /// <param name="settings">Seed, node budget, time limit, threads.</param>
     /// <param name="cancellation">Cancels the bake; a cancellation seen before the outcome gives <see cref="BakeJobStatus.Cancelled"/>.</param>
-    public static BakeOutcome Run(Level level, ReducedCharacter character, BakeSettings settings, CancellationToken cancellation = default)
+    /// <param name="progress">Also told the baker's progress (a console line), or <c>null</c>.</param>
+    public static BakeOutcome Run(Level level, ReducedCharacter character, BakeSettings settings, CancellationToken cancellation = default, IProgress<BakeState>? progress = null)
     {
         ArgumentNullException.ThrowIfNull(level);
         ArgumentNullException.ThrowIfNull(character);
         ArgumentNullException.ThrowIfNull(settings);
         var clock = Stopwatch.StartNew();
-        BakeOutcome outcome = Execute(level, character, settings, cancellation, new ProgressTracker(settings.MaxNodes, settings.TimeLimit, clock), clock);
-        return cancellation.IsCancellationRequested && outcome.Status != BakeJobStatus.Cancelled ? BakeOutcome.Cancellation(outcome.ElapsedSeconds) : outcome;
+        BakeOutcome outcome = Execute(level, character, settings, cancellation, new ProgressTracker(settings.MaxNodes, settings.TimeLimit, clock, progress), clock);
+        return cancellation.IsCancellationRequested && outcome.Status != BakeJobStatus.Cancelled ? BakeOutcome.Cancellation(outcome.ElapsedSeconds, outcome.Result) : outcome;
     }
 
     /// <summary>
@@ -193,27 +194,27 @@ public sealed class BakeJob : IDisposable
             double elapsed = clock.Elapsed.TotalSeconds;
             if (result.Status == PlannerStatus.Cancelled || cancellation.IsCancellationRequested)
             {
-                return BakeOutcome.Cancellation(elapsed);
+                return BakeOutcome.Cancellation(elapsed, result);
             }
 
             if (result.Status is PlannerStatus.InvalidStart or PlannerStatus.InvalidGoal)
             {
-                return BakeOutcome.Failure(result.Reason, elapsed);
+                return BakeOutcome.Failure(result.Reason, elapsed, result);
             }
 
             if (result.Roadmap.Nodes.Count == 0)
             {
                 return BakeOutcome.Failure(result.Status == PlannerStatus.NoPath
                     ? $"{character.Name} can stand nowhere on the level {level.Source}: no valid pose in {result.SamplesDrawn} samples"
-                    : $"the bake placed no node before it stopped ({result.Reason})", elapsed);
+                    : $"the bake placed no node before it stopped ({result.Reason})", elapsed, result);
             }
 
-            return BakeOutcome.Success(RoadmapData.FromBake(result, settings), result.Roadmap, result.Reason, elapsed);
+            return BakeOutcome.Success(RoadmapData.FromBake(result, settings), result, elapsed);
         }
         catch (Exception e)
         {
             string reason = e is BallisticInputException or ArgumentException ? e.Message : $"{e.GetType().Name}: {e.Message}";
-            return BakeOutcome.Failure(reason, clock.Elapsed.TotalSeconds);
+            return BakeOutcome.Failure(reason, clock.Elapsed.TotalSeconds, error: e);
         }
     }
 }

@@ -1,4 +1,5 @@
 using System.Globalization;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Core;
 
@@ -10,8 +11,10 @@ namespace Ballistic.Runtime.Baking;
 /// </summary>
 public sealed class BakeOutcome
 {
-    private BakeOutcome(BakeJobStatus status, string reason, RoadmapData? data, Roadmap? roadmap, double elapsedSeconds)
+    private BakeOutcome(BakeJobStatus status, string reason, RoadmapData? data, Roadmap? roadmap, double elapsedSeconds, BakeResult? result = null, Exception? error = null)
     {
+        Result = result;
+        Error = error;
         Status = status;
         Reason = reason;
         Data = data;
@@ -48,12 +51,18 @@ public sealed class BakeOutcome
         _ => "bake cancelled",
     };
 
-    internal static BakeOutcome Success(RoadmapData data, Roadmap roadmap, string reason, double elapsedSeconds) =>
-        new(BakeJobStatus.Succeeded, reason, data, roadmap, elapsedSeconds);
+    /// <summary>The baker's own result (counts, steering statistics) when the bake ran; <c>null</c> when it failed before or was cancelled before it began.</summary>
+    internal BakeResult? Result { get; }
 
-    internal static BakeOutcome Failure(string reason, double elapsedSeconds) =>
-        new(BakeJobStatus.Failed, OneLine.Of(reason), null, null, elapsedSeconds);
+    /// <summary>The exception a failed bake ended on (an input the baker refused, or a defect), or <c>null</c>: the CLI maps it to its exit code.</summary>
+    internal Exception? Error { get; }
 
-    internal static BakeOutcome Cancellation(double elapsedSeconds) =>
-        new(BakeJobStatus.Cancelled, "cancelled", null, null, elapsedSeconds);
+    internal static BakeOutcome Success(RoadmapData data, BakeResult result, double elapsedSeconds) =>
+        new(BakeJobStatus.Succeeded, result.Reason, data, result.Roadmap, elapsedSeconds, result);
+
+    internal static BakeOutcome Failure(string reason, double elapsedSeconds, BakeResult? result = null, Exception? error = null) =>
+        new(BakeJobStatus.Failed, OneLine.Of(reason), null, null, elapsedSeconds, result, error);
+
+    internal static BakeOutcome Cancellation(double elapsedSeconds, BakeResult? result = null) =>
+        new(BakeJobStatus.Cancelled, "cancelled", null, null, elapsedSeconds, result);
 }

@@ -14,12 +14,14 @@ internal sealed class ProgressTracker : IProgress<BakeState>
     private readonly int _budget;
     private readonly double _limitSeconds;
     private readonly Stopwatch _clock;
+    private readonly IProgress<BakeState>? _also;
     private volatile BakeProgress _current;
     private volatile bool _finished;
 
-    /// <summary>Creates a tracker for a bake of at most <paramref name="maxNodes"/> nodes and <paramref name="timeLimit"/>, timed by <paramref name="clock"/>.</summary>
-    public ProgressTracker(int? maxNodes, TimeSpan? timeLimit, Stopwatch clock)
+    /// <summary>Creates a tracker for a bake of at most <paramref name="maxNodes"/> nodes and <paramref name="timeLimit"/>, timed by <paramref name="clock"/>, passing each report on to <paramref name="also"/> (a console line) when given.</summary>
+    public ProgressTracker(int? maxNodes, TimeSpan? timeLimit, Stopwatch clock, IProgress<BakeState>? also = null)
     {
+        _also = also;
         _budget = maxNodes is > 0 ? maxNodes.Value : 0;
         _limitSeconds = timeLimit is { } limit && limit > TimeSpan.Zero ? limit.TotalSeconds : 0d;
         _clock = clock;
@@ -43,6 +45,8 @@ internal sealed class ProgressTracker : IProgress<BakeState>
         {
             return;
         }
+
+        _also?.Report(value);
 
         BakeProgress previous = _current;
         double fraction = 0d;

@@ -1,6 +1,8 @@
 using System.Numerics;
 using System.Text.Json;
+using Ballistic.Authoring.Levels;
 using Ballistic.Cli;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Cli;
@@ -210,6 +212,26 @@ public sealed class CliJobTests
             Assert.That(wrong, Is.EqualTo(ExitCode.Input));
             Assert.That(wrongError.Trim(), Does.StartWith("error: ").And.Contain("'skeleton', not 'frog'"));
             Assert.That(wrongError.Trim().Split('\n'), Has.Length.EqualTo(1), "one line, no stack trace");
+        });
+    }
+
+    [Test]
+    public void ABakeThatPlacesNoNodeSaysWhyAsTheEditorsBakeJobDoes()
+    {
+        // Only a ceiling, facing down: no foot can stand on it. The CLI's bake and the editor's BakeJob classify the
+        // ending in one place (BakeJob.Run), so the CLI gives the job's reason, in one line, and writes nothing.
+        string level = Path.Combine(_folder, "ceiling.glb");
+        var ceiling = new LevelMesh("Ceiling", [new(-4f, 3f, -4f), new(4f, 3f, -4f), new(4f, 3f, 4f), new(-4f, 3f, 4f)], [0, 1, 2, 0, 2, 3], new LevelMaterial("rock", null), Vector4.One);
+        GltfLevelWriter.Save(level, [ceiling]);
+        string roadmap = Path.Combine(_folder, "ceiling.roadmap");
+        (int code, string output, string error) = Run("bake", "--level", level, "--character", "skeleton", "--max-nodes", "30", "--out", roadmap);
+        Assert.Multiple(() =>
+        {
+            Assert.That(code, Is.EqualTo(ExitCode.NotFound), error);
+            Assert.That(error.Trim(), Does.StartWith("error: nothing written: skeleton can stand nowhere on the level ").And.Contain("no valid pose in "));
+            Assert.That(error.Trim().Split('\n'), Has.Length.EqualTo(1), "one line");
+            Assert.That(output, Does.Contain("roadmap: 0 nodes"), "the bake's own counts are still printed");
+            Assert.That(File.Exists(roadmap), Is.False);
         });
     }
 
