@@ -100,6 +100,15 @@ public sealed class ComponentColumn<T> : IComponentColumn
     }
 
     /// <inheritdoc />
+    /// <summary>
+    /// The column's values as one span indexed by <see cref="AgentHandle.Index"/> (the agent's slot), read and written
+    /// in place as a DOTS system reads a component array: <c>column.Values[agent.Index]</c> for an agent a query
+    /// <see cref="AgentQuery.With{T}"/> this column selected. A slot without a value holds <c>default</c> (writing it
+    /// gives the agent no value: use <see cref="Set"/>); the span may be shorter than the world's slots and is valid
+    /// until the next <see cref="Set"/>.
+    /// </summary>
+    public Span<T> Values => _values;
+
     bool IComponentColumn.HasSlot(int slot) => HasSlot(slot);
 
     /// <inheritdoc />

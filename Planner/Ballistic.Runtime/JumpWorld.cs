@@ -76,6 +76,7 @@ public sealed class JumpWorld : IDisposable
     private readonly List<IComponentColumn> _columns = [];
     private readonly Action<IJumpSystem, Exception> _systemFailed;
     private readonly Action<AgentHandle, string> _commandRefused;
+    private readonly Action<AgentHandle, Vector3, string?> _commandAdded;
     private bool _disposed;
 
     /// <summary>Held by the thread stepping or changing the world (<see cref="Gate"/>).</summary>
@@ -126,6 +127,7 @@ public sealed class JumpWorld : IDisposable
         _systemFailed = (system, e) => _events.Add(new JumpEvent(JumpEventKind.SystemFailed, default, Tick, Time, -1, default, default, default, 0f, Planner.Planning.PlannerStatus.Exact,
             OneLine.Of($"{JumpSystemList.Describe(system)} threw {e.GetType().Name}: {e.Message} (the tick went on with the next system)")));
         _commandRefused = (agent, reason) => _pending.Add(new JumpEvent(JumpEventKind.CommandRefused, agent, Tick, Time, -1, default, default, default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
+        _commandAdded = (agent, point, reason) => _pending.Add(new JumpEvent(JumpEventKind.Added, agent, Tick, Time, -1, point, default, default, 0f, Planner.Planning.PlannerStatus.Exact, reason));
     }
 
     /// <summary>
@@ -206,6 +208,20 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>World time, seconds: <see cref="Tick"/> × <see cref="WorldSettings.TickSeconds"/>.</summary>
     public double Time => Tick * Settings.TickSeconds;
+
+    /// <summary>
+    /// Every agent's root pose (<see cref="GetRootPose"/>) as one span indexed by <see cref="AgentHandle.Index"/>, for
+    /// systems and game code that read many agents a query selected (<c>world.RootPoses[agent.Index]</c>), as a DOTS
+    /// job reads a component array. Entries of slots without an active agent are stale. Valid until the next change
+    /// that adds an agent; written by the systems only.
+    /// </summary>
+    public ReadOnlySpan<RootPose> RootPoses => _agents.Root.AsSpan(0, _agents.HighWater);
+
+    /// <summary>Every agent's body point (<see cref="GetBodyPoint"/>) as one span indexed by <see cref="AgentHandle.Index"/>; as <see cref="RootPoses"/>.</summary>
+    public ReadOnlySpan<BodyPoint> BodyPoints => _agents.Body.AsSpan(0, _agents.HighWater);
+
+    /// <summary>What every agent does this tick (<see cref="GetState"/>) as one span indexed by <see cref="AgentHandle.Index"/>; as <see cref="RootPoses"/>.</summary>
+    public ReadOnlySpan<AgentState> States => _agents.State.AsSpan(0, _agents.HighWater);
 
     /// <summary>Agents added and not removed, in any <see cref="AgentLifecycle"/>.</summary>
     public int AgentCount => _agents.Count;
@@ -1136,7 +1152,7 @@ public sealed class JumpWorld : IDisposable
         try
         {
             Tick++;
-            Commands.Play(this, _commandRefused);
+            Commands.Play(this, _commandRefused, _commandAdded);
             if (_rehoming > 0)
             {
                 // Agents that ended the move they were in when their kind was rebaked: onto the new roadmap.

@@ -39,4 +39,12 @@ public enum JumpEventKind
     /// system and the exception; <see cref="JumpEvent.Agent"/> is the default handle. The tick went on with the next system.
     /// </summary>
     SystemFailed,
+
+    /// <summary>
+    /// An agent recorded with <see cref="JumpCommandBuffer.AddAgent"/> was added when the commands were played:
+    /// <see cref="JumpEvent.Agent"/> is its handle, <see cref="JumpEvent.From"/> the position asked; a
+    /// <see cref="JumpEvent.Reason"/> says why it waits out of the simulation (its kind has no roadmap yet, or it
+    /// cannot stand there: <see cref="Agents.AgentLifecycle"/>).
+    /// </summary>
+    Added,
 }

@@ -410,6 +410,57 @@ public sealed class EcsTests
     }
 
     [Test]
+    public void AnAgentSpawnedThroughTheCommandBufferIsAddedAndSentAsTheCallsWouldBe()
+    {
+        // Two worlds: one spawning with direct calls between ticks, one through its command buffer, a target given to
+        // the pending handle right after the spawn.
+        (JumpWorld direct, KindHandle kind) = WalkingPaths.World();
+        (JumpWorld buffered, _) = WalkingPaths.World();
+        using (direct)
+        using (buffered)
+        {
+            (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(WalkingPaths.Kind.Roadmap, 1, seed: 6)[0];
+            AgentHandle pending = buffered.Commands.AddAgent(kind, RuntimeWorlds.Point(from));
+            buffered.Commands.SetTarget(pending, RuntimeWorlds.Point(to));
+            AgentHandle sky = buffered.Commands.AddAgent(kind, new Vector3(0f, 500f, 0f));
+            AgentHandle nowhere = buffered.Commands.AddAgent(new KindHandle(9, 1), Vector3.Zero);
+            buffered.Commands.SetTarget(nowhere, RuntimeWorlds.Point(to));
+            Assert.That(pending.IsAssigned || buffered.IsValid(pending), Is.False, "a pending handle names no agent yet");
+            Assert.That(buffered.AgentCount, Is.Zero, "nothing happens before the tick");
+
+            AgentHandle agent = direct.AddAgent(kind, RuntimeWorlds.Point(from)).Agent;
+            Assert.That(direct.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
+            buffered.Step();
+            direct.Step();
+            JumpEvent[] played = [.. buffered.Events.ToArray().Where(e => e.Kind is JumpEventKind.Added or JumpEventKind.CommandRefused)];
+            Assert.That(played.Select(e => e.Kind), Is.EqualTo(new[] { JumpEventKind.Added, JumpEventKind.Added, JumpEventKind.CommandRefused, JumpEventKind.CommandRefused }), string.Join("; ", played.Select(e => e.Reason)));
+            Assert.That(played[0].Agent, Is.EqualTo(agent), "the same slot as the direct add");
+            Assert.That(played[0].From, Is.EqualTo(RuntimeWorlds.Point(from)));
+            Assert.That(played[0].Reason, Is.Null);
+            Assert.That(buffered.GetLifecycle(played[1].Agent), Is.EqualTo(AgentLifecycle.Unplaced), "the one in the sky is added, unplaced");
+            Assert.That(played[1].Reason, Does.Contain("cannot stand"));
+            Assert.That(played[2].Reason, Does.StartWith("AddAgent of kind 9#1"));
+            Assert.That(played[3].Reason, Does.StartWith("SetTarget of the agent pending as pending add 3 of playback 1"));
+            Assert.That(buffered.GetTarget(agent), Is.EqualTo(direct.GetTarget(agent)), "the target recorded on the pending handle reached the agent");
+
+            for (int tick = 0; tick < 600 && direct.GetTarget(agent) is not null; tick++)
+            {
+                direct.Step();
+                buffered.Step();
+                Assert.That(buffered.GetRootPose(agent), Is.EqualTo(direct.GetRootPose(agent)), $"tick {direct.Tick}");
+            }
+
+            Assert.That(direct.GetTarget(agent), Is.Null, "it arrived");
+
+            // A pending handle of an earlier playback names nobody.
+            buffered.Commands.SetTarget(pending, RuntimeWorlds.Point(from));
+            buffered.Step();
+            Assert.That(buffered.Events.ToArray().Single(e => e.Kind == JumpEventKind.CommandRefused).Reason, Does.Contain("pending add 1 of playback 1"));
+            Assert.That(sky.Index, Is.EqualTo(-2));
+        }
+    }
+
+    [Test]
     public void TheWorldsSystemsDoNotHoldOrCallOneAnother()
     {
         // They talk through components, events and the path queue: no system type holds another.
@@ -420,6 +471,42 @@ public sealed class EcsTests
             IEnumerable<Type> held = system.GetFields(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public).Select(f => f.FieldType)
                 .Concat(system.GetConstructors(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public).SelectMany(c => c.GetParameters()).Select(p => p.ParameterType));
             Assert.That(held.Intersect(systems), Is.Empty, $"{system.Name} holds another system");
+        }
+    }
+
+    [Test]
+    public void ComponentsReadAsSpansByHandleIndexAreEachAgentsOwn()
+    {
+        (JumpWorld world, KindHandle kind) = WalkingPaths.World();
+        using (world)
+        {
+            List<AgentHandle> agents = WalkingPaths.SetOff(world, kind, 3);
+            ComponentColumn<float> stamina = world.AddComponentColumn<float>("stamina");
+            agents.Skip(1).ToList().ForEach(a => stamina.Set(a, 1f));
+            int checkedAgents = 0;
+            var reader = new Meddler(w =>
+            {
+                foreach (AgentHandle agent in w.Query(new AgentQuery()))
+                {
+                    Assert.That(w.RootPoses[agent.Index], Is.EqualTo(w.GetRootPose(agent)));
+                    Assert.That(w.BodyPoints[agent.Index], Is.EqualTo(w.GetBodyPoint(agent)));
+                    Assert.That(w.States[agent.Index], Is.EqualTo(w.GetState(agent)));
+                    checkedAgents++;
+                }
+            });
+            Assert.That(world.Systems.InsertAfter(world.BodyPointSystem, reader).Ok, Is.True);
+            RuntimeWorlds.Run(world, 240, (w, _) => false);
+            Assert.That(checkedAgents, Is.EqualTo(3 * 240), "every agent, every tick");
+
+            // A game column written in place through its span: the agent's own value, nobody else's.
+            foreach (AgentHandle agent in world.Query(new AgentQuery().With(stamina)))
+            {
+                stamina.Values[agent.Index] -= 0.25f;
+            }
+
+            Assert.That(stamina.TryGet(agents[1], out float b) && b == 0.75f && stamina.TryGet(agents[2], out float c) && c == 0.75f, Is.True);
+            Assert.That(stamina.Has(agents[0]), Is.False, "the agent without a value has none");
+            Assert.That(world.RootPoses.Length, Is.GreaterThanOrEqualTo(agents.Max(a => a.Index) + 1));
         }
     }
 
@@ -488,7 +575,7 @@ public sealed class EcsTests
         public void Update(in TickContext tick, JumpWorld world) => action(world);
     }
 
-    /// <summary>Tires every moving agent that has stamina, through a query and the component's reference.</summary>
+    /// <summary>Tires every moving agent that has stamina (jumping twice as fast as walking), through a query and the spans of the component and the states.</summary>
     private sealed class Tire(ComponentColumn<float> stamina) : IJumpSystem
     {
         private readonly AgentQuery _moving = new AgentQuery().InStates(AgentStates.Walking | AgentStates.Jumping).With(stamina);
@@ -497,9 +584,11 @@ public sealed class EcsTests
 
         public void Update(in TickContext tick, JumpWorld world)
         {
+            Span<float> left = stamina.Values;
+            ReadOnlySpan<AgentState> states = world.States;
             foreach (AgentHandle agent in world.Query(_moving))
             {
-                stamina.GetRef(agent) -= 0.1f * (float)tick.DeltaSeconds;
+                left[agent.Index] -= (states[agent.Index] == AgentState.Walking ? 0.1f : 0.2f) * (float)tick.DeltaSeconds;
                 Moving++;
             }
         }
