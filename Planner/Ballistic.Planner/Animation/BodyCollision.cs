@@ -19,7 +19,7 @@ namespace Ballistic.Planner.Animation;
 /// its GLB draws): none may be more than <see cref="SkinDepth"/> inside the level, when the level's triangles are
 /// given. Thread-safe.
 /// </summary>
-public sealed class BodyCollision
+internal sealed class BodyCollision
 {
     /// <summary>Distance from a contact point within which a bone may touch the surface, metres.</summary>
     public const float ContactClearance = 0.01f;

@@ -10,7 +10,7 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Cone">Centroidal cone of the contacts (meaningful when there is at least one).</param>
 /// <param name="Valid">True when the pose makes contacts whose cone accepts the jump's velocity and no limb passes through the level.</param>
 /// <param name="Reason">Why the pose is not valid, or <c>null</c>.</param>
-public sealed record ContactConfiguration(RootPose Root, float[] Angles, IReadOnlyList<LimbContact> Contacts, FrictionCone Cone, bool Valid, string? Reason)
+internal sealed record ContactConfiguration(RootPose Root, float[] Angles, IReadOnlyList<LimbContact> Contacts, FrictionCone Cone, bool Valid, string? Reason)
 {
     /// <summary>The contact limb <paramref name="limb"/> (an index in the character's limb list) makes, or <c>null</c> when it touches nothing.</summary>
     public LimbContact? ContactOf(int limb)

@@ -15,7 +15,7 @@ namespace Ballistic.Planner.Animation;
 /// the level. Limbs that find no contact keep the reference pose. The result is valid when the generated contacts'
 /// centroidal cone accepts the jump's velocity.
 /// </summary>
-public sealed class ContactGenerator
+internal sealed class ContactGenerator
 {
     private const int CandidatesPerLimb = 6;
 

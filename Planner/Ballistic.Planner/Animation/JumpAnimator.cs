@@ -72,7 +72,7 @@ public sealed class JumpAnimator : IJumpAnimator
     public CharacterModel Model { get; }
 
     /// <summary>The contact generator (its databases and collision checks).</summary>
-    public ContactGenerator Contacts => _contacts;
+    internal ContactGenerator Contacts => _contacts;
 
     /// <inheritdoc />
     public bool CanStand(PoseEvaluation pose)

@@ -7,4 +7,4 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Position">Contact point on the surface, world metres.</param>
 /// <param name="Normal">Unit surface normal at the contact, world.</param>
 /// <param name="Mu">Friction coefficient of the surface.</param>
-public readonly record struct LimbContact(int Limb, Vector3 Position, Vector3 Normal, float Mu);
+internal readonly record struct LimbContact(int Limb, Vector3 Position, Vector3 Normal, float Mu);

@@ -9,7 +9,7 @@ namespace Ballistic.Planner.Animation;
 /// of cubic cells), as the original planner's limb databases were: the nearest sample to a target point is the
 /// IK's starting guess. Samples are kept in order of closeness to the contact reference pose. Thread-safe once built.
 /// </summary>
-public sealed class LimbSampleDatabase
+internal sealed class LimbSampleDatabase
 {
     private readonly float[][] _angles;
     private readonly Vector3[] _points;

@@ -17,7 +17,7 @@ namespace Ballistic.Planner.Contacts;
 /// The centroidal cone has the normalised sum of the contact normals as axis and the least friction as μ. A pose that
 /// passes all of that must then pass the optional <see cref="IPoseValidator"/>. Thread-safe.
 /// </summary>
-public sealed class ContactEstimator
+internal sealed class ContactEstimator
 {
     /// <summary>|Σ nᵢ| below this counts as force closure (normals cancelling out).</summary>
     public const float ForceClosureThreshold = 0.05f;

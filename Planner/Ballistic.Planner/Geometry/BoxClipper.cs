@@ -6,7 +6,7 @@ namespace Ballistic.Planner.Geometry;
 /// Clips a triangle by an oriented box (Sutherland–Hodgman against its six face planes) and measures the part
 /// inside: the area and centroid of the intersection, used to estimate where a limb's workspace meets a surface.
 /// </summary>
-public static class BoxClipper
+internal static class BoxClipper
 {
     /// <summary>A triangle clipped by six planes has at most 9 vertices.</summary>
     private const int MaxVertices = 12;

@@ -41,19 +41,19 @@ public sealed class PlanningScene
     public TriangleBvh Bvh { get; }
 
     /// <summary>Contact surfaces of the level.</summary>
-    public SurfaceSet Surfaces { get; }
+    internal SurfaceSet Surfaces { get; }
 
     /// <summary>Contact and cone estimation.</summary>
-    public ContactEstimator Estimator { get; }
+    internal ContactEstimator Estimator { get; }
 
     /// <summary>Root pose sampler.</summary>
-    public TrunkSampler Sampler { get; }
+    internal TrunkSampler Sampler { get; }
 
     /// <summary>The parabola steering method with the character's limits.</summary>
     public ParabolaSteering Steering { get; }
 
     /// <summary>The walking steering method with the character's walking limits (it finds no walk for a character that does not walk).</summary>
-    public WalkSteering Walking { get; }
+    internal WalkSteering Walking { get; }
 
     /// <summary>Builds the scene.</summary>
     /// <param name="level">The level.</param>

@@ -5,4 +5,4 @@ namespace Ballistic.Planner.Rigs;
 /// <param name="PositionError">Remaining distance from the effector to its target, metres.</param>
 /// <param name="NormalError">Remaining angle between the contact normal and its target, radians (0 without a normal target).</param>
 /// <param name="Iterations">Iterations spent over all attempts.</param>
-public readonly record struct IkResult(bool Success, float PositionError, float NormalError, int Iterations);
+internal readonly record struct IkResult(bool Success, float PositionError, float NormalError, int Iterations);

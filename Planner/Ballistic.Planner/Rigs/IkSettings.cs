@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.Rigs;
 
 /// <summary>Parameters of the damped-least-squares limb IK.</summary>
-public sealed record IkSettings
+internal sealed record IkSettings
 {
     /// <summary>Iterations per attempt.</summary>
     public int MaxIterations { get; init; } = 80;

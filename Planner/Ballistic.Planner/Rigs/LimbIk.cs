@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Rigs;
 /// the solver stalling against the limit); restarts from other configurations when stuck.
 /// A target it cannot reach is reported as a failure and leaves the configuration untouched.
 /// </summary>
-public sealed class LimbIk
+internal sealed class LimbIk
 {
     private const int MaxRows = 5;
 

@@ -6,7 +6,7 @@ namespace Ballistic.Planner.Roadmaps;
 /// A roadmap under construction: nodes and edges are added in order (the bake, a file being read), then
 /// <see cref="Freeze"/> makes the immutable <see cref="Roadmap"/> that queries use. Not thread-safe.
 /// </summary>
-public sealed class RoadmapBuilder
+internal sealed class RoadmapBuilder
 {
     private readonly List<RoadmapNode> _nodes = [];
     private readonly List<RoadmapEdge> _edges = [];

@@ -15,7 +15,7 @@ namespace Ballistic.Planner.Sampling;
 /// when the trunk is free and enough limbs touch. Also places requested start and goal points
 /// (<see cref="Place"/>). Thread-safe; all randomness comes from the <see cref="Random"/> passed in.
 /// </summary>
-public sealed class TrunkSampler
+internal sealed class TrunkSampler
 {
     private readonly Level _level;
     private readonly TriangleBvh _bvh;

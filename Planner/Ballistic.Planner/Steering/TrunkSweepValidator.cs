@@ -16,7 +16,7 @@ namespace Ballistic.Planner.Steering;
 /// down to a growth of the collision tolerance. A thin obstacle can therefore never be stepped over, and the trunk's
 /// corners cannot clip one between samples.
 /// </remarks>
-public sealed class TrunkSweepValidator : IArcValidator
+internal sealed class TrunkSweepValidator : IArcValidator
 {
     private readonly ICollisionWorld _world;
 

@@ -10,4 +10,4 @@ namespace Ballistic.Planner.Surfaces;
 /// <param name="Area">Total area, square metres.</param>
 /// <param name="MaterialIndex">Index of the material shared by its triangles, in the level's material list.</param>
 /// <param name="TriangleCount">Number of triangles.</param>
-public readonly record struct ContactSurface(int Id, Vector3 Normal, float Area, int MaterialIndex, int TriangleCount);
+internal readonly record struct ContactSurface(int Id, Vector3 Normal, float Area, int MaterialIndex, int TriangleCount);

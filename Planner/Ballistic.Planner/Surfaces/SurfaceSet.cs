@@ -7,7 +7,7 @@ namespace Ballistic.Planner.Surfaces;
 /// The level's triangles grouped into contact surfaces by region growing: triangles sharing a vertex, with the
 /// same material and a normal close to the region's first triangle, form one surface. Deterministic.
 /// </summary>
-public sealed class SurfaceSet
+internal sealed class SurfaceSet
 {
     private readonly int[] _surfaceOfTriangle;
     private readonly ContactSurface[] _surfaces;

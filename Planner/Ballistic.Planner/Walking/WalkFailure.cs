@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.Walking;
 
 /// <summary>Why two stances are not linked by a walk.</summary>
-public enum WalkFailure
+internal enum WalkFailure
 {
     /// <summary>The walk is valid.</summary>
     None,

@@ -23,7 +23,7 @@ namespace Ballistic.Planner.Walking;
 /// half the interval being free proves the interval free; otherwise the interval is halved down to the collision
 /// tolerance.
 /// </remarks>
-public sealed class WalkSteering
+internal sealed class WalkSteering
 {
     /// <summary>Horizontal spacing of the ground samples, metres.</summary>
     public const float SampleSpacing = 0.05f;
