@@ -31,7 +31,7 @@ public sealed class GlbWriter
     /// further accessors and objects are appended after them.
     /// </summary>
     /// <exception cref="GltfException">A buffer or image cannot be read, or the file uses an extension whose data cannot be moved (EXT_meshopt_compression).</exception>
-    public static GlbWriter From(GltfDocument document)
+    internal static GlbWriter From(GltfDocument document)
     {
         ArgumentNullException.ThrowIfNull(document);
         if (document.Array("extensionsUsed").Any(e => e is JsonValue v && v.TryGetValue(out string? id) && id == "EXT_meshopt_compression"))

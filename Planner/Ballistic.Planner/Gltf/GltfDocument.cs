@@ -17,7 +17,7 @@ namespace Ballistic.Planner.Gltf;
 /// the bytes it reads before anything is allocated; and every problem is a <see cref="GltfException"/> naming the
 /// file, the element and what is wrong.
 /// </summary>
-public sealed class GltfDocument
+internal sealed class GltfDocument
 {
     private const uint GlbMagic = 0x46546C67;
     private const uint JsonChunk = 0x4E4F534A;

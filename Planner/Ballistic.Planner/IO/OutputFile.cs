@@ -12,7 +12,7 @@ namespace Ballistic.Planner.IO;
 /// is removed on every exit path, and temporary files left by writers that were killed (their process is gone) are
 /// removed by the next write to the same file.
 /// </summary>
-public static class OutputFile
+internal static class OutputFile
 {
     /// <summary>Writes <paramref name="bytes"/> to <paramref name="path"/>, creating its folder.</summary>
     /// <exception cref="OutputFileException">The target is not a regular file, or it cannot be written; the message names <paramref name="path"/>.</exception>

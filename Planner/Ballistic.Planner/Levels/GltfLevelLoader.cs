@@ -45,7 +45,7 @@ public static partial class GltfLevelLoader
     /// <param name="source">Where the level comes from, for messages and <see cref="Level.Source"/>.</param>
     /// <exception cref="GltfException">The document's scene, nodes, meshes or accessors are malformed, or exceed a limit.</exception>
     /// <exception cref="LevelException">A vertex is not finite or lies beyond <see cref="LevelBuilder.MaxCoordinate"/>, an index is out of range, or no triangle is left.</exception>
-    public static Level Build(GltfDocument document, string source)
+    internal static Level Build(GltfDocument document, string source)
     {
         ArgumentNullException.ThrowIfNull(document);
         ArgumentNullException.ThrowIfNull(source);

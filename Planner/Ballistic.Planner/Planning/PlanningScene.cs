@@ -50,7 +50,7 @@ public sealed class PlanningScene
     internal TrunkSampler Sampler { get; }
 
     /// <summary>The parabola steering method with the character's limits.</summary>
-    public ParabolaSteering Steering { get; }
+    internal ParabolaSteering Steering { get; }
 
     /// <summary>The walking steering method with the character's walking limits (it finds no walk for a character that does not walk).</summary>
     internal WalkSteering Walking { get; }

@@ -12,7 +12,7 @@ namespace Ballistic.Planner.Rigs;
 /// animator checks their corners against the level, so what is checked is what is seen. Rest pose (every angle 0),
 /// model frame, metres.
 /// </summary>
-public sealed class BoneBoxes
+internal sealed class BoneBoxes
 {
     private readonly Vector3[] _positions;
     private readonly int[] _joints;

@@ -77,7 +77,7 @@ public sealed class CharacterModel
     /// in code. When set, the animated GLB carries the file's own meshes and skin rather than bone boxes.
     /// </summary>
     /// <exception cref="RigException">The source maps a different number of joints than the rig has.</exception>
-    public CharacterSource? Source
+    internal CharacterSource? Source
     {
         get => _source;
         init => _source = value is null || value.JointNodes.Count == Rig.Joints.Count

@@ -8,7 +8,7 @@ namespace Ballistic.Planner.Rigs;
 /// The animated GLB writer uses it to write the user's own meshes, materials, textures, skin and node hierarchy
 /// with the jump clip added, instead of the procedural bone boxes.
 /// </summary>
-public sealed class CharacterSource
+internal sealed class CharacterSource
 {
     /// <summary>Creates a source mapping.</summary>
     /// <param name="document">The glTF the rig was read from.</param>

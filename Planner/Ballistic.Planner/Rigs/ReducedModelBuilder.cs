@@ -11,7 +11,7 @@ namespace Ballistic.Planner.Rigs;
 /// trimmed per axis, so rare extreme reaches do not count). Contacts estimated inside Wk are then ones the whole
 /// body can really make.
 /// </summary>
-public static class ReducedModelBuilder
+internal static class ReducedModelBuilder
 {
     /// <summary>
     /// The trunk box of the given joints, bones padded by their radii, in the root joint's frame with the root

@@ -10,4 +10,4 @@ namespace Ballistic.Planner.Steering;
 /// <param name="X">Horizontal distance between the poses, metres.</param>
 /// <param name="Z">Rise from takeoff to landing (landing Y − takeoff Y), metres.</param>
 /// <param name="Heading">Unit horizontal direction from takeoff to landing (world XZ plane).</param>
-public readonly record struct AngleInterval(double Min, double Max, double X, double Z, Vector3 Heading);
+internal readonly record struct AngleInterval(double Min, double Max, double X, double Z, Vector3 Heading);

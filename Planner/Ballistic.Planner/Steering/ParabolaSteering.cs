@@ -18,7 +18,7 @@ namespace Ballistic.Planner.Steering;
 /// closed form; the midpoint of their intersection is tried first, then fixed fractions of it when the trunk
 /// collides or the apex is too high (Campana et al. 2016; planning notes §1).
 /// </remarks>
-public sealed class ParabolaSteering
+internal sealed class ParabolaSteering
 {
     /// <summary>Fractions of the admissible angle interval tried in order.</summary>
     private static readonly double[] Fractions = [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875];

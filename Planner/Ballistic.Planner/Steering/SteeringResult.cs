@@ -3,7 +3,7 @@ namespace Ballistic.Planner.Steering;
 /// <summary>The outcome of one call of the parabola steering method.</summary>
 /// <param name="Failure"><see cref="SteeringFailure.None"/> on success, otherwise why no jump exists.</param>
 /// <param name="Arc">The jump found; meaningful only on success.</param>
-public readonly record struct SteeringResult(SteeringFailure Failure, BallisticArc Arc)
+internal readonly record struct SteeringResult(SteeringFailure Failure, BallisticArc Arc)
 {
     /// <summary>True when a valid jump was found.</summary>
     public bool Succeeded => Failure == SteeringFailure.None;
