@@ -223,6 +223,18 @@ public sealed class JumpWorld : IDisposable
     /// <summary>What every agent does this tick (<see cref="GetState"/>) as one span indexed by <see cref="AgentHandle.Index"/>; as <see cref="RootPoses"/>.</summary>
     public ReadOnlySpan<AgentState> States => _agents.State.AsSpan(0, _agents.HighWater);
 
+    /// <summary>Where every agent's navigation stands (<see cref="GetNavigationStatus"/>) as one span indexed by <see cref="AgentHandle.Index"/>; as <see cref="RootPoses"/>.</summary>
+    public ReadOnlySpan<NavigationStatus> NavigationStatuses => _agents.Navigation.AsSpan(0, _agents.HighWater);
+
+    /// <summary>
+    /// Where the agent's navigation stands: idle (no target), planning, following a path, reached its target, or
+    /// failed (<see cref="GetNavigationFailure"/>); <see cref="NavigationStatus.Idle"/> for an unknown agent.
+    /// </summary>
+    public NavigationStatus GetNavigationStatus(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Navigation[agent.Index] : NavigationStatus.Idle;
+
+    /// <summary>Why the agent's last path failed, while its status is <see cref="NavigationStatus.Failed"/>; otherwise <c>null</c>.</summary>
+    public string? GetNavigationFailure(AgentHandle agent) => _agents.IsValid(agent) ? _agents.NavigationFailure[agent.Index] : null;
+
     /// <summary>Agents added and not removed, in any <see cref="AgentLifecycle"/>.</summary>
     public int AgentCount => _agents.Count;
 
@@ -673,6 +685,10 @@ public sealed class JumpWorld : IDisposable
 
         _agents.PoseDirty[slot] = true;
         _agents.State[slot] = AgentState.Idle;
+        if (_agents.Navigation[slot] is NavigationStatus.Planning or NavigationStatus.Following)
+        {
+            _agents.Navigate(slot, NavigationStatus.Idle); // its path or request was dropped (reached and failed stay: a rebake moves nobody)
+        }
     }
 
     /// <summary>
@@ -895,11 +911,12 @@ public sealed class JumpWorld : IDisposable
         _queue.Cancel(slot);
         if (_agents.Path[slot] is not null)
         {
-            _agents.StopAtStance[slot] = true;
+            _agents.StopAtStance[slot] = true; // following until it stops on the next stance
         }
         else
         {
             _agents.State[slot] = AgentState.Idle;
+            _agents.Navigate(slot, NavigationStatus.Idle);
         }
 
         return RuntimeResult.Success;
@@ -955,6 +972,7 @@ public sealed class JumpWorld : IDisposable
 
         _queue.Cancel(slot);
         Settle(slot, kind, stance.Node, stance.Angles);
+        _agents.Navigate(slot, NavigationStatus.Idle); // pushed elsewhere: what it reached or failed is not where it stands
         if (_agents.HasTarget[slot])
         {
             _agents.State[slot] = AgentState.Stance;

@@ -56,6 +56,10 @@ internal sealed class AgentStore
     public Vector3[] Target = [];
     public bool[] HasTarget = [];
 
+    /// <summary>Where the agent's navigation stands, and why it failed (<see cref="NavigationStatus.Failed"/>).</summary>
+    public NavigationStatus[] Navigation = [];
+    public string?[] NavigationFailure = [];
+
     /// <summary>The path followed, its start on the world clock, the event cursor (2i: start of move i, its takeoff or first step; 2i+1: its end, a landing or arrival).</summary>
     public AgentPath?[] Path = [];
     public double[] PathStart = [];
@@ -109,6 +113,7 @@ internal sealed class AgentStore
         Target[slot] = default;
         HasTarget[slot] = false;
         Count++;
+        Navigate(slot, NavigationStatus.Idle);
         Deactivate(slot, lifecycle, reason, point);
         return slot;
     }
@@ -143,6 +148,7 @@ internal sealed class AgentStore
         Alive[slot] = false;
         Lifecycle[slot] = lifecycle;
         Reason[slot] = reason;
+        Navigate(slot, NavigationStatus.Idle);
         Point[slot] = point;
         Character[slot] = null;
         Rehome[slot] = false;
@@ -153,6 +159,13 @@ internal sealed class AgentStore
         Request[slot] = null;
         Angles[slot] = [];
         Rotations[slot] = [];
+    }
+
+    /// <summary>Sets the agent's navigation status (and the failure's reason, for <see cref="NavigationStatus.Failed"/>).</summary>
+    public void Navigate(int slot, NavigationStatus status, string? failure = null)
+    {
+        Navigation[slot] = status;
+        NavigationFailure[slot] = status == NavigationStatus.Failed ? failure : null;
     }
 
     public void Remove(int slot)
@@ -182,6 +195,8 @@ internal sealed class AgentStore
         Array.Resize(ref Stance, capacity);
         Array.Resize(ref Target, capacity);
         Array.Resize(ref HasTarget, capacity);
+        Array.Resize(ref Navigation, capacity);
+        Array.Resize(ref NavigationFailure, capacity);
         Array.Resize(ref Path, capacity);
         Array.Resize(ref PathStart, capacity);
         Array.Resize(ref Cursor, capacity);

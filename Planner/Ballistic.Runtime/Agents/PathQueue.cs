@@ -34,6 +34,7 @@ internal sealed class PathQueue(AgentStore agents)
     {
         var request = new PathRequest(agents.HandleOf(slot), agents.Target[slot]) { ForcedEdge = forcedEdge };
         agents.Request[slot] = request;
+        agents.Navigate(slot, NavigationStatus.Planning);
         _queue.AddLast(request);
     }
 

@@ -38,6 +38,11 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
             {
                 // Never expected; the agent stops where its path began rather than letting the tick fail.
                 Stop(slot, path.Start, path.Start.Pose, 0f, path);
+                if (agents.Request[slot] is null)
+                {
+                    agents.Navigate(slot, NavigationStatus.Failed, $"internal error while moving: {e.Message}");
+                }
+
                 events.Add(new JumpEvent(JumpEventKind.PathFailed, agents.HandleOf(slot), tick, time, -1, agents.Root[slot].Position, path.Target, default, 0f, PlannerStatus.NoPath, $"internal error while moving: {e.Message}"));
             }
         }
@@ -94,6 +99,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
             if (!agents.StopAtStance[slot])
             {
                 agents.HasTarget[slot] = false;
+                agents.Navigate(slot, NavigationStatus.Reached);
                 events.Add(new JumpEvent(JumpEventKind.TargetReached, handle, tick, start + path.Duration, last.Index, last.EndPose.Position, path.Target, default, 0f, PlannerStatus.Exact, null, path));
                 Stop(slot, last.To, last.EndPose, path.Duration, path);
                 return;
@@ -168,6 +174,10 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         {
             agents.State[slot] = AgentState.Stance;
             requests.Request(slot);
+        }
+        else if (!agents.HasTarget[slot] && agents.Navigation[slot] == NavigationStatus.Following)
+        {
+            agents.Navigate(slot, NavigationStatus.Idle); // stopped on the stance after its target was cleared
         }
     }
 }

@@ -195,6 +195,7 @@ internal sealed class PathRequestSystem : IDisposable
             _agents.Request[slot] = null;
             _agents.State[slot] = AgentState.Idle;
             _agents.HasTarget[slot] = false;
+            _agents.Navigate(slot, NavigationStatus.Reached);
             _events.Add(new JumpEvent(JumpEventKind.TargetReached, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, PlannerStatus.Exact, null));
             return;
         }
@@ -206,6 +207,7 @@ internal sealed class PathRequestSystem : IDisposable
         _agents.PathStart[slot] = time;
         _agents.Cursor[slot] = 0;
         _agents.StopAtStance[slot] = false;
+        _agents.Navigate(slot, NavigationStatus.Following);
         _events.Add(new JumpEvent(JumpEventKind.PathFound, request.Agent, tick, time, -1, path.Start.Pose.Position, request.Target, default, 0f, PlannerStatus.Exact, null, path));
     }
 
@@ -213,6 +215,7 @@ internal sealed class PathRequestSystem : IDisposable
     {
         _agents.Request[slot] = null;
         _agents.State[slot] = AgentState.Idle;
+        _agents.Navigate(slot, NavigationStatus.Failed, reason);
         _events.Add(new JumpEvent(JumpEventKind.PathFailed, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, status, reason));
     }
 

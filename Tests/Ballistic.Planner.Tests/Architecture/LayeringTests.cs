@@ -32,11 +32,11 @@ public sealed class LayeringTests
 
     /// <summary>
     /// The public surface only shrinks (issue 22: a game needs about 15–20 types): a type made public again, or a new
-    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 60 types on 2026-12-01; helpers the
+    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; helpers the
     /// tools and tests use are internal, visible to them by <c>InternalsVisibleTo</c>.
     /// </summary>
     [TestCase("planner", 74)]
-    [TestCase("runtime", 60)]
+    [TestCase("runtime", 61)]
     public void ThePublicSurfaceDoesNotGrow(string library, int most)
     {
         Assembly assembly = library == "planner" ? PlannerAssembly : RuntimeAssembly;
