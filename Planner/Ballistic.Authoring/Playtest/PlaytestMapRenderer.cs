@@ -9,7 +9,7 @@ namespace Ballistic.Authoring.Playtest;
 /// <summary>
 /// The playtest seen from above: the level shaded by height, every executed jump as a line from takeoff to landing
 /// (blue), every executed walk as its ground path dashed (green-blue), the spawn points (white), reached targets (green) and failed ones (red crosses, with a thin red line from
-/// where the agent stood). As an SVG (vector marks over the shaded level) and as a PNG (the same, rasterised).
+/// where the agent stood). As an SVG (vector marks over the shaded level, a title and a legend) and as a PNG (that SVG drawn).
 /// World X → right, world Z → down.
 /// </summary>
 public static class PlaytestMapRenderer
@@ -73,46 +73,8 @@ public static class PlaytestMapRenderer
         return svg.ToString();
     }
 
-    /// <summary>The map as a PNG image.</summary>
-    public static byte[] Png(PlaytestResult result)
-    {
-        ArgumentNullException.ThrowIfNull(result);
-        (int width, int height, Func<Vector3, Vector2> map) = Frame(result);
-        byte[] rgb = SvgPlanRenderer.HeightMapRgb(result.Kind.Scene.Bvh, result.Kind.Scene.Level.Bounds, width, height);
-        foreach (PlaytestAgent agent in result.Agents)
-        {
-            foreach (ExecutedJump jump in agent.Jumps)
-            {
-                Line(rgb, width, height, map(jump.Jump.Arc.Start), map(jump.Jump.Arc.End), (31, 95, 191));
-            }
-
-            foreach (ExecutedWalk walk in agent.Walks)
-            {
-                DashedPolyline(rgb, width, height, walk.Walk.Path.Select(p => map(p)).ToList(), (19, 138, 114));
-            }
-        }
-
-        foreach (PlaytestAgent agent in result.Agents)
-        {
-            Dot(rgb, width, height, map(agent.Spawn), 3, (255, 255, 255));
-            foreach (PlaytestTarget target in agent.Targets.Where(t => t.Reached))
-            {
-                Dot(rgb, width, height, map(target.Target), 2, (46, 157, 58));
-            }
-        }
-
-        foreach ((Vector3 target, _) in PlaytestReportWriter.Failures(result))
-        {
-            Vector2 p = map(target);
-            for (int k = -1; k <= 1; k++)
-            {
-                Line(rgb, width, height, p + new Vector2(-5f, -5f + k), p + new Vector2(5f, 5f + k), (214, 39, 40));
-                Line(rgb, width, height, p + new Vector2(-5f, 5f + k), p + new Vector2(5f, -5f + k), (214, 39, 40));
-            }
-        }
-
-        return PngEncoder.EncodeRgb(width, height, rgb);
-    }
+    /// <summary>The map as a PNG image: the SVG, title and legend included, drawn by <see cref="SvgRaster"/>.</summary>
+    public static byte[] Png(PlaytestResult result) => SvgRaster.ToPng(Svg(result));
 
     private static (int Width, int Height, Func<Vector3, Vector2> Map) Frame(PlaytestResult result)
     {
@@ -122,61 +84,6 @@ public static class PlaytestMapRenderer
         float scale = Width / worldW;
         int height = Math.Clamp((int)MathF.Round(worldD * scale), 2, 4 * Width);
         return (Width, height, p => new Vector2((p.X - bounds.Min.X) * scale, (p.Z - bounds.Min.Z) * scale));
-    }
-
-    private static void Line(byte[] rgb, int width, int height, Vector2 a, Vector2 b, (byte R, byte G, byte B) color)
-    {
-        int steps = Math.Max(1, (int)MathF.Ceiling(Vector2.Distance(a, b)));
-        for (int i = 0; i <= steps; i++)
-        {
-            Set(rgb, width, height, Vector2.Lerp(a, b, (float)i / steps), color);
-        }
-    }
-
-    /// <summary>A polyline drawn <see cref="DashOn"/> pixels on, <see cref="DashOff"/> off, the pattern running on across its corners.</summary>
-    private static void DashedPolyline(byte[] rgb, int width, int height, List<Vector2> points, (byte R, byte G, byte B) color)
-    {
-        int along = 0;
-        for (int s = 1; s < points.Count; s++)
-        {
-            Vector2 a = points[s - 1];
-            Vector2 b = points[s];
-            int steps = Math.Max(1, (int)MathF.Ceiling(Vector2.Distance(a, b)));
-            for (int i = 0; i < steps; i++, along++)
-            {
-                if (along % (DashOn + DashOff) < DashOn)
-                {
-                    Set(rgb, width, height, Vector2.Lerp(a, b, (float)i / steps), color);
-                }
-            }
-        }
-    }
-
-    private static void Dot(byte[] rgb, int width, int height, Vector2 p, int radius, (byte R, byte G, byte B) color)
-    {
-        for (int dy = -radius; dy <= radius; dy++)
-        {
-            for (int dx = -radius; dx <= radius; dx++)
-            {
-                if ((dx * dx) + (dy * dy) <= radius * radius)
-                {
-                    Set(rgb, width, height, p + new Vector2(dx, dy), color);
-                }
-            }
-        }
-    }
-
-    private static void Set(byte[] rgb, int width, int height, Vector2 p, (byte R, byte G, byte B) color)
-    {
-        int x = (int)MathF.Floor(p.X);
-        int y = (int)MathF.Floor(p.Y);
-        if ((uint)x < (uint)width && (uint)y < (uint)height)
-        {
-            int i = 3 * ((y * width) + x);
-            rgb[i] = color.R;
-            rgb[i + 1] = color.G;
-            rgb[i + 2] = color.B;
-        }
     }
 
     private static string Title(PlaytestResult result) =>

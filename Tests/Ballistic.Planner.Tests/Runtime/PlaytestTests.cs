@@ -94,6 +94,18 @@ public sealed class PlaytestTests
         Assert.That(PlaytestMapRenderer.Svg(result), Does.StartWith("<svg").And.Contain("targets reached"));
         byte[] png = PlaytestMapRenderer.Png(result);
         Assert.That(png.AsSpan(1, 3).ToArray(), Is.EqualTo("PNG"u8.ToArray()));
+
+        // The PNG is the SVG drawn, title and legend included: its size, and dark text in the band above the map.
+        using SkiaSharp.SKBitmap image = SkiaSharp.SKBitmap.Decode(png);
+        System.Xml.Linq.XElement svg = System.Xml.Linq.XElement.Parse(PlaytestMapRenderer.Svg(result));
+        Assert.That((image.Width, image.Height), Is.EqualTo(((int)svg.Attribute("width")!, (int)svg.Attribute("height")!)));
+        int Count(int top, int bottom, Func<SkiaSharp.SKColor, bool> ink) => Enumerable.Range(top, bottom - top).Sum(y => Enumerable.Range(0, image.Width).Count(x => ink(image.GetPixel(x, y))));
+        static bool Black(SkiaSharp.SKColor c) => c.Red < 40 && c.Green < 40 && c.Blue < 40;
+        static bool Grey(SkiaSharp.SKColor c) => c.Red is >= 70 and < 160 && c.Red == c.Green && c.Green == c.Blue;
+        Assert.That(Count(4, 22, Black), Is.GreaterThan(200), "the title's black letters");
+        Assert.That(Count(24, 38, Grey), Is.GreaterThan(200), "the legend's grey letters");
+        Assert.That(Count(24, 38, Black), Is.Zero, "the legend is grey");
+        Assert.That(Count(0, 3, c => c != SkiaSharp.SKColors.White), Is.Zero, "a white margin above the title");
     }
 
     [Test]
