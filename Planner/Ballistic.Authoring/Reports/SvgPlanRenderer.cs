@@ -33,7 +33,9 @@ public static class SvgPlanRenderer
     {
         ArgumentNullException.ThrowIfNull(report);
         TriangleBvh bvh = report.Scene.Bvh;
-        Aabb bounds = report.Scene.Level.Bounds;
+        // The level, and the requested points where they lie off it (a goal placed within its tolerance of a point
+        // past the level's edge): their markers are drawn inside the top view, never over the side profile.
+        Aabb bounds = Finite(report.From) && Finite(report.To) ? report.Scene.Level.Bounds.Encapsulate(report.From).Encapsulate(report.To) : report.Scene.Level.Bounds;
         PlanResult result = report.Result;
         var svg = new StringBuilder();
 
@@ -142,13 +144,20 @@ public static class SvgPlanRenderer
         string map = HeightMapPng(bvh, bounds, Math.Max(2, (int)MathF.Min(topW, 480f)), Math.Max(2, (int)(MathF.Min(topW, 480f) * topH / topW)));
         svg.Append(Invariant($"<image x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{map}\"/>\n"));
         svg.Append(Invariant($"<rect x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" fill=\"none\" stroke=\"#555\"/>\n"));
+        string roadmapLegend = "roadmap jumps";
         if (roadmap is not null)
         {
-            svg.Append("<g stroke=\"#2b4c7e\" stroke-opacity=\"0.25\" stroke-width=\"0.7\">\n");
-            foreach (RoadmapEdge edge in roadmap.Edges)
+            (List<(int From, int To)> drawn, int pairs) = DrawnEdges(roadmap);
+            if (drawn.Count < pairs)
             {
-                Vector3 a = roadmap.Nodes[edge.From].Pose.Position;
-                Vector3 b = roadmap.Nodes[edge.To].Pose.Position;
+                roadmapLegend = Invariant($"roadmap jumps ({drawn.Count:N0} of {pairs:N0} drawn)");
+            }
+
+            svg.Append("<g class=\"roadmap\" stroke=\"#2b4c7e\" stroke-opacity=\"0.25\" stroke-width=\"0.7\">\n");
+            foreach ((int from, int to) in drawn)
+            {
+                Vector3 a = roadmap.Nodes[from].Pose.Position;
+                Vector3 b = roadmap.Nodes[to].Pose.Position;
                 svg.Append(Invariant($"<line x1=\"{Tx(a):0.#}\" y1=\"{Ty(a):0.#}\" x2=\"{Tx(b):0.#}\" y2=\"{Ty(b):0.#}\"/>\n"));
             }
 
@@ -250,12 +259,46 @@ public static class SvgPlanRenderer
         float legendY = pageH - 22f;
         svg.Append(Invariant($"<g font-size=\"11\"><line x1=\"{Margin}\" y1=\"{legendY}\" x2=\"{Margin + 24}\" y2=\"{legendY}\" stroke=\"{JumpColor}\" stroke-width=\"3\"/><text x=\"{Margin + 30}\" y=\"{legendY + 4}\">jump (trunk centre)</text>"));
         svg.Append(Invariant($"<line x1=\"{Margin + 145}\" y1=\"{legendY}\" x2=\"{Margin + 169}\" y2=\"{legendY}\" stroke=\"{WalkColor}\" stroke-width=\"3\" stroke-dasharray=\"{WalkDash}\"/><text x=\"{Margin + 175}\" y=\"{legendY + 4}\">walk (ground path)</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 290}\" y1=\"{legendY}\" x2=\"{Margin + 314}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 320}\" y=\"{legendY + 4}\">roadmap jumps</text>"));
+        svg.Append(Invariant($"<line x1=\"{Margin + 290}\" y1=\"{legendY}\" x2=\"{Margin + 314}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 320}\" y=\"{legendY + 4}\">{Escape(roadmapLegend)}</text>"));
         svg.Append(Invariant($"<path d=\"M {Margin + 420} {legendY + 5} L {Margin + 430} {legendY - 6} L {Margin + 440} {legendY + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/><text x=\"{Margin + 446}\" y=\"{legendY + 4}\">takeoff cone</text>"));
         svg.Append(Invariant($"<path d=\"M {Margin + 530} {legendY + 5} L {Margin + 540} {legendY - 6} L {Margin + 550} {legendY + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/><text x=\"{Margin + 556}\" y=\"{legendY + 4}\">landing cone</text>"));
         svg.Append(Invariant($"<line x1=\"{Margin + 640}\" y1=\"{legendY}\" x2=\"{Margin + 664}\" y2=\"{legendY}\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"{Margin + 670}\" y=\"{legendY + 4}\">takeoff velocity (×0.08 s)</text></g>\n"));
         svg.Append("</svg>\n");
         return svg.ToString();
+    }
+
+    /// <summary>Most roadmap jumps the top view draws: past it the layer hides the level and the path (the pond's 8,151).</summary>
+    internal const int MaxDrawnJumps = 1_500;
+
+    /// <summary>
+    /// The roadmap jumps the top view draws: each pair of nodes once (a jump and its way back are one line), at most
+    /// <see cref="MaxDrawnJumps"/> of them, taken evenly through the roadmap's order (the same every time); and how
+    /// many pairs there are.
+    /// </summary>
+    internal static (List<(int From, int To)> Drawn, int Pairs) DrawnEdges(Roadmap roadmap)
+    {
+        var seen = new HashSet<(int, int)>();
+        var pairs = new List<(int From, int To)>();
+        foreach (RoadmapEdge edge in roadmap.Edges)
+        {
+            if (seen.Add((Math.Min(edge.From, edge.To), Math.Max(edge.From, edge.To))))
+            {
+                pairs.Add((edge.From, edge.To));
+            }
+        }
+
+        if (pairs.Count <= MaxDrawnJumps)
+        {
+            return (pairs, pairs.Count);
+        }
+
+        var drawn = new List<(int From, int To)>(MaxDrawnJumps);
+        for (int i = 0; i < MaxDrawnJumps; i++)
+        {
+            drawn.Add(pairs[(int)((long)i * pairs.Count / MaxDrawnJumps)]);
+        }
+
+        return (drawn, pairs.Count);
     }
 
     /// <summary>Writes the SVG to <paramref name="path"/>, creating its folder.</summary>
@@ -406,6 +449,8 @@ public static class SvgPlanRenderer
 
         return rgb;
     }
+
+    private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
     private static string Escape(string text) => text.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
 

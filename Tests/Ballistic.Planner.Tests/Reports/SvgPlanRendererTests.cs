@@ -36,6 +36,67 @@ public sealed class SvgPlanRendererTests
     }
 
     [Test]
+    public void AThickRoadmapLayerIsThinnedAndTheLegendSaysHowMuch()
+    {
+        // The pond's 8,151 roadmap jumps buried its top view; a jump and its way back are one line, and past
+        // MaxDrawnJumps pairs an even share of them is drawn, the legend saying how many of how many.
+        Roadmap roadmap = Runtime.RuntimeWorlds.DesertSkeleton.Roadmap;
+        int pairs = roadmap.Edges.Select(e => (Math.Min(e.From, e.To), Math.Max(e.From, e.To))).Distinct().Count();
+        Assume.That(pairs, Is.GreaterThan(SvgPlanRenderer.MaxDrawnJumps), "a roadmap thicker than the layer draws");
+        (List<(int From, int To)> drawn, int counted) = SvgPlanRenderer.DrawnEdges(roadmap);
+        Assert.That(counted, Is.EqualTo(pairs));
+        Assert.That(drawn, Has.Count.EqualTo(SvgPlanRenderer.MaxDrawnJumps));
+        Assert.That(drawn.Select(e => (Math.Min(e.From, e.To), Math.Max(e.From, e.To))).Distinct().Count(), Is.EqualTo(drawn.Count), "each pair once");
+        Assert.That(drawn.All(e => roadmap.Edges.Any(r => r.From == e.From && r.To == e.To)), Is.True, "roadmap jumps only");
+        Assert.That(drawn.Select(e => e.From).Distinct().Count(), Is.GreaterThan(roadmap.Nodes.Count * 3 / 4), "spread over the whole roadmap, not its first nodes");
+
+        XDocument svg = XDocument.Parse(SvgPlanRenderer.Render(WalkPlans.Report(WalkPlans.WalkAndJump, WalkPlans.Animation), roadmap));
+        XElement layer = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("class") == "roadmap");
+        Assert.That(layer.Elements(Svg + "line").Count(), Is.EqualTo(SvgPlanRenderer.MaxDrawnJumps));
+        Assert.That(svg.Descendants(Svg + "text").Select(t => t.Value), Has.Some.EqualTo(string.Create(CultureInfo.InvariantCulture, $"roadmap jumps ({SvgPlanRenderer.MaxDrawnJumps:N0} of {pairs:N0} drawn)")));
+
+        // A thin roadmap (its first 40 nodes' jumps among themselves) is drawn whole, each pair once, under the plain legend.
+        var builder = new RoadmapBuilder(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, roadmap.Seed);
+        foreach (RoadmapNode node in roadmap.Nodes)
+        {
+            builder.AddNode(node);
+        }
+
+        foreach (RoadmapEdge edge in roadmap.Edges.Where(e => e.From < 40 && e.To < 40))
+        {
+            builder.AddEdge(edge);
+        }
+
+        Roadmap thin = builder.Freeze();
+        int thinPairs = thin.Edges.Select(e => (Math.Min(e.From, e.To), Math.Max(e.From, e.To))).Distinct().Count();
+        Assert.That(thinPairs, Is.InRange(1, SvgPlanRenderer.MaxDrawnJumps));
+        Assert.That(thin.Edges, Has.Count.GreaterThan(thinPairs), "some jumps go both ways");
+        (List<(int From, int To)> thinDrawn, int thinCounted) = SvgPlanRenderer.DrawnEdges(thin);
+        Assert.That((thinDrawn.Count, thinCounted), Is.EqualTo((thinPairs, thinPairs)), "drawn whole");
+        XDocument thinSvg = XDocument.Parse(SvgPlanRenderer.Render(WalkPlans.Report(WalkPlans.WalkAndJump, WalkPlans.Animation), thin));
+        Assert.That(thinSvg.Descendants(Svg + "text").Select(t => t.Value), Has.Some.EqualTo("roadmap jumps"));
+    }
+
+    [Test]
+    public void ARequestedPointOffTheLevelIsMarkedInsideTheTopView()
+    {
+        // A goal asked for past the level's edge (placed within its tolerance): its marker was drawn below the top
+        // view, over the side profile's title.
+        PlanReport report = WalkPlans.Report(WalkPlans.WalkAndJump, WalkPlans.Animation);
+        Vector3 past = new(report.Scene.Level.Bounds.Max.X + 3f, report.To.Y, report.Scene.Level.Bounds.Max.Z + 4f);
+        XDocument svg = XDocument.Parse(SvgPlanRenderer.Render(report with { To = past }, roadmap: null));
+        XElement frame = svg.Root!.Elements(Svg + "rect").First(r => (string?)r.Attribute("fill") == "none");
+        float Number(XElement e, string name) => float.Parse(e.Attribute(name)!.Value, CultureInfo.InvariantCulture);
+        (float left, float top, float right, float bottom) = (Number(frame, "x"), Number(frame, "y"), Number(frame, "x") + Number(frame, "width"), Number(frame, "y") + Number(frame, "height"));
+        XElement goal = svg.Root.Elements(Svg + "text").Single(t => t.Value == "goal");
+        (float x, float y) = (Number(goal, "x") - 8f, Number(goal, "y") - 14f); // the cross's centre
+        Assert.That(x, Is.InRange(left, right + 0.1f), "inside the top view across");
+        Assert.That(y, Is.InRange(top, bottom + 0.1f), "and down");
+        XElement profileTitle = svg.Root.Elements(Svg + "text").Single(t => t.Value.StartsWith("Side profile", StringComparison.Ordinal));
+        Assert.That(Number(profileTitle, "y"), Is.GreaterThan(bottom), "the side profile starts below the top view");
+    }
+
+    [Test]
     public void WalksAreDashedPolylinesThroughTheirGroundPointsInBothViews()
     {
         PlanResult result = WalkPlans.WalkAndJump;
