@@ -86,25 +86,7 @@ public static class SvgPlanRenderer
         float sMin = -lead;
         float sMax = segments[^1].Offset + Horizontal(segments[^1].To - segments[^1].From).Length() + lead;
         const int profileSamples = 480;
-        var profile = new float[profileSamples + 1];
-        for (int i = 0; i <= profileSamples; i++)
-        {
-            float s = sMin + ((sMax - sMin) * i / profileSamples);
-            Vector3 column = AlongPath(segments, s);
-            Vector3 heading = HeadingAt(segments, s);
-            Vector3 side = Vector3.Cross(Vector3.UnitY, heading);
-            float best = float.NaN;
-            for (int c = -2; c <= 2; c++)
-            {
-                Vector3 probe = column + (side * (Corridor * c / 4f));
-                if (GroundHeight(bvh, bounds, probe.X, probe.Z) is float h && !(h <= best))
-                {
-                    best = h;
-                }
-            }
-
-            profile[i] = best;
-        }
+        (float[] profile, float[] beside) = GroundProfile(bvh, bounds, segments, sMin, sMax, profileSamples);
 
         var pathPoints = new List<Vector3> { report.From, report.To };
         foreach (Jump jump in result.Jumps)
@@ -121,7 +103,7 @@ public static class SvgPlanRenderer
         }
 
         float yLow = MathF.Min(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Min.Y).Min(), pathPoints.Min(p => p.Y)) - 0.5f;
-        float yHigh = MathF.Max(profile.Where(float.IsFinite).DefaultIfEmpty(bounds.Max.Y).Max(), pathPoints.Max(p => p.Y)) + 0.5f;
+        float yHigh = MathF.Max(profile.Concat(beside).Where(float.IsFinite).DefaultIfEmpty(bounds.Max.Y).Max(), pathPoints.Max(p => p.Y)) + 0.5f;
         float profileScale = MathF.Min((PageWidth - (2 * Margin)) / (sMax - sMin), 240f / (yHigh - yLow));
         float profileX = (PageWidth - ((sMax - sMin) * profileScale)) / 2f;
         float profileY = topY + topH + 60f;
@@ -196,7 +178,7 @@ public static class SvgPlanRenderer
         Marker(svg, Tx(report.To), Ty(report.To), "#c92a2a", "goal");
 
         // Side profile.
-        svg.Append(Invariant($"<text x=\"{profileX}\" y=\"{profileY - 8}\" font-weight=\"bold\">Side profile along the path, unrolled (level within {Corridor / 2f:0.##} m of the track; 1 m = {profileScale:0.#} px both ways)</text>\n"));
+        svg.Append(Invariant($"<text x=\"{profileX}\" y=\"{profileY - 8}\" font-weight=\"bold\">Side profile along the path, unrolled (filled: ground under the track; outline: level up to {Corridor / 2f:0.##} m beside it; 1 m = {profileScale:0.#} px both ways)</text>\n"));
         var ground = new StringBuilder();
         ground.Append(Invariant($"M {Sx(sMin):0.#} {Py(yLow):0.#} "));
         for (int i = 0; i <= profileSamples; i++)
@@ -208,6 +190,34 @@ public static class SvgPlanRenderer
 
         ground.Append(Invariant($"L {Sx(sMax):0.#} {Py(yLow):0.#} Z"));
         svg.Append(Invariant($"<path d=\"{ground}\" fill=\"#d9c9a3\" stroke=\"#8c7851\" stroke-width=\"1\"/>\n"));
+
+        // What stands beside the track and rises above the ground under it (a wall, a trough's side, a block the jump
+        // passes), as a thin outline over the ground: runs of two samples or more where it stands at least 5 cm higher.
+        var besideRuns = new StringBuilder();
+        var run = new List<string>();
+        for (int i = 0; i <= profileSamples + 1; i++)
+        {
+            bool above = i <= profileSamples && float.IsFinite(beside[i]) && !(beside[i] <= (float.IsFinite(profile[i]) ? profile[i] : yLow) + 0.05f);
+            if (above)
+            {
+                float s = sMin + ((sMax - sMin) * i / profileSamples);
+                run.Add(Invariant($"{Sx(s):0.#} {Py(beside[i]):0.#}"));
+            }
+            else
+            {
+                if (run.Count >= 2)
+                {
+                    besideRuns.Append("M ").Append(string.Join(" L ", run)).Append(' ');
+                }
+
+                run.Clear();
+            }
+        }
+
+        if (besideRuns.Length > 0)
+        {
+            svg.Append(Invariant($"<path class=\"beside\" d=\"{besideRuns.ToString().TrimEnd()}\" fill=\"none\" stroke=\"#8c7851\" stroke-width=\"1.3\" stroke-opacity=\"0.8\"/>\n"));
+        }
         for (int m = 0; m < moves.Count; m++)
         {
             if (moves[m] is Walk)
@@ -394,6 +404,68 @@ public static class SvgPlanRenderer
     }
 
     /// <summary>Height of the highest surface under (x, z), or null where there is none.</summary>
+    /// <summary>How far above the track (metres) the ground under it is looked for: a roof or a ceiling higher up is not ground.</summary>
+    private const float GroundReach = 1f;
+
+    /// <summary>How far above the track (metres) the level beside it is drawn: a wall, a trough's side, a block; not the ceiling over a room.</summary>
+    private const float BesideReach = 2.5f;
+
+    /// <summary>
+    /// The side profile's two lines, sampled <paramref name="samples"/> + 1 times from <paramref name="sMin"/> to
+    /// <paramref name="sMax"/> along the unrolled track (<paramref name="segments"/>): the ground under the track (the
+    /// highest surface straight below a point <see cref="GroundReach"/> above it, where a walk treads and a jump
+    /// lands), and the highest surface within <see cref="Corridor"/>/2 either side below <see cref="BesideReach"/>
+    /// above the track. NaN where there is none. The track's height runs linearly along each segment.
+    /// </summary>
+    internal static (float[] Ground, float[] Beside) GroundProfile(TriangleBvh bvh, Aabb bounds, List<(Vector3 From, Vector3 To, float Offset)> segments, float sMin, float sMax, int samples)
+    {
+        var ground = new float[samples + 1];
+        var beside = new float[samples + 1];
+        for (int i = 0; i <= samples; i++)
+        {
+            float s = sMin + ((sMax - sMin) * i / samples);
+            Vector3 column = AlongPath(segments, s);
+            column.Y = TrackHeight(segments, s);
+            Vector3 side = Vector3.Cross(Vector3.UnitY, HeadingAt(segments, s));
+            ground[i] = GroundBelow(bvh, bounds, column.X, column.Y + GroundReach, column.Z) ?? float.NaN;
+            float best = float.NaN;
+            for (int c = -4; c <= 4; c++)
+            {
+                Vector3 probe = column + (side * (Corridor * c / 8f));
+                if (GroundBelow(bvh, bounds, probe.X, column.Y + BesideReach, probe.Z) is float h && !(h <= best))
+                {
+                    best = h;
+                }
+            }
+
+            beside[i] = best;
+        }
+
+        return (ground, beside);
+    }
+
+    /// <summary>The track's height at distance <paramref name="s"/>: linear between the ends of the segment there (held before and after the track).</summary>
+    private static float TrackHeight(List<(Vector3 From, Vector3 To, float Offset)> segments, float s)
+    {
+        foreach ((Vector3 from, Vector3 to, float offset) in segments)
+        {
+            float length = Horizontal(to - from).Length();
+            if (s <= offset + length)
+            {
+                return length > 1e-6f ? float.Lerp(from.Y, to.Y, Math.Clamp((s - offset) / length, 0f, 1f)) : to.Y;
+            }
+        }
+
+        return segments[^1].To.Y;
+    }
+
+    /// <summary>The highest surface straight below (<paramref name="x"/>, <paramref name="top"/>, <paramref name="z"/>), down to under the level; <c>null</c> where there is none.</summary>
+    private static float? GroundBelow(TriangleBvh bvh, Aabb bounds, float x, float top, float z)
+    {
+        float depth = top - bounds.Min.Y + 2f;
+        return depth > 0f && bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
+    }
+
     private static float? GroundHeight(TriangleBvh bvh, Aabb bounds, float x, float z)
     {
         float top = bounds.Max.Y + 1f;

@@ -2,8 +2,10 @@ using System.Globalization;
 using System.Numerics;
 using System.Xml.Linq;
 using Ballistic.Authoring.Reports;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Reports;
 
@@ -94,6 +96,32 @@ public sealed class SvgPlanRendererTests
         Assert.That(y, Is.InRange(top, bottom + 0.1f), "and down");
         XElement profileTitle = svg.Root.Elements(Svg + "text").Single(t => t.Value.StartsWith("Side profile", StringComparison.Ordinal));
         Assert.That(Number(profileTitle, "y"), Is.GreaterThan(bottom), "the side profile starts below the top view");
+    }
+
+    [Test]
+    public void TheProfilesGroundIsWhatTheTrackStandsOnNotTheRoofOrTheWallBesideIt()
+    {
+        // A floor; a roof 2.6 m over it (a room, or the floor above: the old profile drew it as solid ground); a wall
+        // 0.5 m beside the track, 1.2 m high (drawn filled before, as if walked over); a 0.5 m step the track climbs.
+        Level level = new LevelBuilder("room")
+            .AddFloor(-2f, -3f, 12f, 3f, 0f)
+            .AddBox(new Vector3(2f, 2.6f, -3f), new Vector3(4f, 2.8f, 3f))
+            .AddBox(new Vector3(6f, 0f, 0.4f), new Vector3(7f, 1.2f, 0.6f))
+            .AddBox(new Vector3(9f, 0f, -3f), new Vector3(12f, 0.5f, 3f))
+            .Build();
+        var bvh = level.Bvh;
+        List<(Vector3 From, Vector3 To, float Offset)> track = [(new(0f, 0f, 0f), new(9f, 0f, 0f), 0f), (new(9f, 0.5f, 0f), new(11f, 0.5f, 0f), 9f)];
+        (float[] ground, float[] beside) = SvgPlanRenderer.GroundProfile(bvh, level.Bounds, track, 0f, 11f, 110);
+        float At(float[] line, float s) => line[(int)MathF.Round(s * 10f)];
+        Assert.Multiple(() =>
+        {
+            Assert.That(At(ground, 3f), Is.EqualTo(0f).Within(1e-4f), "under the roof the ground is the floor");
+            Assert.That(At(beside, 3f), Is.EqualTo(0f).Within(1e-4f), "the roof, out of reach above, is not beside the track either");
+            Assert.That(At(ground, 6.5f), Is.EqualTo(0f).Within(1e-4f), "beside the wall the ground is the floor");
+            Assert.That(At(beside, 6.5f), Is.EqualTo(1.2f).Within(1e-4f), "the wall stands beside the track");
+            Assert.That(At(ground, 10f), Is.EqualTo(0.5f).Within(1e-4f), "the step's tread the track climbed");
+            Assert.That(At(ground, 1f), Is.EqualTo(0f).Within(1e-4f));
+        });
     }
 
     [Test]
