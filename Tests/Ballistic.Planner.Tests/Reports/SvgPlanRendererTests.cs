@@ -57,6 +57,9 @@ public sealed class SvgPlanRendererTests
         Assert.That(layer.Elements(Svg + "line").Count(), Is.EqualTo(SvgPlanRenderer.MaxDrawnJumps));
         Assert.That(svg.Descendants(Svg + "text").Select(t => t.Value), Has.Some.EqualTo(string.Create(CultureInfo.InvariantCulture, $"roadmap jumps ({SvgPlanRenderer.MaxDrawnJumps:N0} of {pairs:N0} drawn)")));
 
+        string readme = File.ReadAllText(Path.Combine(RepositoryFiles.Root, "README.md"));
+        Assert.That(readme.ReplaceLineEndings(" "), Does.Contain(string.Create(CultureInfo.InvariantCulture, $"at most {SvgPlanRenderer.MaxDrawnJumps:N0} pairs")), "the README's figure");
+
         // A thin roadmap (its first 40 nodes' jumps among themselves) is drawn whole, each pair once, under the plain legend.
         var builder = new RoadmapBuilder(roadmap.LevelFingerprint, roadmap.CharacterFingerprint, roadmap.CharacterName, roadmap.Seed);
         foreach (RoadmapNode node in roadmap.Nodes)
