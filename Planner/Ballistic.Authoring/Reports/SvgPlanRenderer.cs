@@ -466,13 +466,6 @@ public static class SvgPlanRenderer
         return depth > 0f && bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
     }
 
-    private static float? GroundHeight(TriangleBvh bvh, Aabb bounds, float x, float z)
-    {
-        float top = bounds.Max.Y + 1f;
-        float depth = top - bounds.Min.Y + 2f;
-        return bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
-    }
-
     private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height) =>
         Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, HeightMapRgb(bvh, bounds, width, height)));
 
