@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Reflection;
 using System.Runtime.Loader;
 using System.Text.RegularExpressions;
@@ -67,6 +68,18 @@ public sealed partial class ReadmeEcsExampleTests
                 Assert.That(seen.Where(e => e.Kind == JumpEventKind.JumpStarted && e.Tick > cleared), Is.Empty, "no takeoff once tired");
                 int started = seen.Count(e => e.Kind == JumpEventKind.JumpStarted);
                 Assert.That(started, Is.InRange(1, planned - 1), $"it took off {started} times of the {planned} jumps planned");
+
+                // Spawned through the command buffer toward a point off the level: added on the next tick, then
+                // stranded (its path failed), which the polled count sees.
+                Type game = example.GetType("Game")!;
+                Vector3 at = RuntimeWorlds.Point(RuntimeWorlds.DesertSkeleton.Roadmap.Nodes[2]);
+                game.GetMethod("Spawn")!.Invoke(null, [world, kind, at, new Vector3(500f, 0f, 500f)]);
+                Assert.That((int)game.GetMethod("Stranded")!.Invoke(null, [world])!, Is.Zero);
+                List<JumpEvent> spawned = RuntimeWorlds.Run(world, 600, (_, events) => events.Any(e => e.Kind == JumpEventKind.PathFailed));
+                JumpEvent added = spawned.Single(e => e.Kind == JumpEventKind.Added);
+                Assert.That(added.From, Is.EqualTo(at));
+                Assert.That(spawned.Single(e => e.Kind == JumpEventKind.PathFailed).Agent, Is.EqualTo(added.Agent), "the target recorded on the pending handle reached the spawned agent");
+                Assert.That((int)game.GetMethod("Stranded")!.Invoke(null, [world])!, Is.EqualTo(1));
             }
         }
         finally
