@@ -99,10 +99,11 @@ internal static class PlaytestCommand
             progress?.Finish();
 
             // Written even when cancelled (what was simulated is kept; the report says it was cut short), as one set.
+            string picture = PlaytestMapRenderer.Svg(result);
             OutputFile.WriteAll(
             [
-                (stem + ".svg", System.Text.Encoding.UTF8.GetBytes(PlaytestMapRenderer.Svg(result))),
-                (stem + ".png", PlaytestMapRenderer.Png(result)),
+                (stem + ".svg", System.Text.Encoding.UTF8.GetBytes(picture)),
+                (stem + ".png", PlaytestMapRenderer.Png(picture)),
                 (stem + ".json", PlaytestReportWriter.ToJson(result, levelPath.Replace('\\', '/'))),
             ]);
             IReadOnlyList<double> times = result.TimesToReach;

@@ -74,7 +74,10 @@ public static class PlaytestMapRenderer
     }
 
     /// <summary>The map as a PNG image: the SVG, title and legend included, drawn by <see cref="SvgRaster"/>.</summary>
-    public static byte[] Png(PlaytestResult result) => SvgRaster.ToPng(Svg(result));
+    public static byte[] Png(PlaytestResult result) => Png(Svg(result));
+
+    /// <summary>The map's SVG (<see cref="Svg"/>) as a PNG image: for a caller writing both, so the level's height map is shaded once.</summary>
+    public static byte[] Png(string svg) => SvgRaster.ToPng(svg);
 
     private static (int Width, int Height, Func<Vector3, Vector2> Map) Frame(PlaytestResult result)
     {
