@@ -431,7 +431,7 @@ public sealed class JumpWorld : IDisposable
             return new RuntimeResult(failure.Status, reason);
         }
 
-        _agents.Activate(slot, kind, stance.Node.Pose, stance.Node, stance.Angles, new Quaternion[kind.JointCount]);
+        _agents.Activate(slot, kind, stance.Node.Pose, stance.Node, stance.Angles);
         PlaceBody(slot);
         if (_agents.HasTarget[slot])
         {
@@ -604,7 +604,7 @@ public sealed class JumpWorld : IDisposable
             // The same body on the same level: the stance it stands on is still one. It stays exactly there, on the
             // new roadmap's node of that very pose, or as a stance off the roadmap (searches steer from it).
             RoadmapNode kept = kind.Roadmap.FindPose(standing.Pose) is int id ? kind.Roadmap.Nodes[id] : standing.Id < 0 ? standing : standing with { Id = -1 };
-            Settle(slot, kind, kept, _agents.Angles[slot]);
+            Settle(slot, kind, kept, angles: null);
         }
         else if (Stand(kind, standing.ContactCentre, out RuntimeResult failure) is { } stance)
         {
@@ -653,24 +653,16 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>
     /// Stands the agent in <paramref name="slot"/> on <paramref name="stance"/> of <paramref name="kind"/> with the
-    /// pose <paramref name="angles"/>, idle and pathless: its pose buffers sized for the kind's rig (a rebake may have
-    /// changed it), its rebake settled.
+    /// pose <paramref name="angles"/> (<c>null</c>: the pose it holds, of the same rig), idle and pathless: its pose
+    /// slices sized for the kind's rig (a rebake may have changed it), its rebake settled.
     /// </summary>
-    private void Settle(int slot, CharacterKind kind, RoadmapNode stance, float[] angles)
+    private void Settle(int slot, CharacterKind kind, RoadmapNode stance, float[]? angles)
     {
         SetRehome(slot, false);
         if (!ReferenceEquals(_agents.Character[slot], kind))
         {
             _agents.Character[slot] = kind;
-            if (_agents.Angles[slot].Length != angles.Length)
-            {
-                _agents.Angles[slot] = new float[angles.Length];
-            }
-
-            if (_agents.Rotations[slot].Length != kind.JointCount)
-            {
-                _agents.Rotations[slot] = new Quaternion[kind.JointCount];
-            }
+            _agents.SizePose(slot, angles?.Length ?? _agents.Pose[slot].AngleCount, kind.JointCount);
         }
 
         _agents.Path[slot] = null;
@@ -678,10 +670,7 @@ public sealed class JumpWorld : IDisposable
         _agents.Stance[slot] = stance;
         _agents.Root[slot] = stance.Pose;
         PlaceBody(slot);
-        if (!ReferenceEquals(angles, _agents.Angles[slot]))
-        {
-            angles.CopyTo(_agents.Angles[slot], 0);
-        }
+        angles?.CopyTo(_agents.AnglesOf(slot));
 
         _agents.PoseDirty[slot] = true;
         _agents.State[slot] = AgentState.Idle;
@@ -1536,16 +1525,18 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>
     /// The agent's joint angles this tick, one per degree of freedom of its rig (radians, <see cref="Planner.Rigs.Rig.Dofs"/>
-    /// order); empty for an unknown agent. Filled by the pose system; read-only view, valid until the next tick.
+    /// order); empty for an unknown agent. Filled by the pose system; a read-only view of the agent's slice of the
+    /// world's pose pool, valid until the next tick or the next agent placed (the pool may grow then).
     /// </summary>
-    public ReadOnlySpan<float> GetJointAngles(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Angles[agent.Index] : [];
+    public ReadOnlySpan<float> GetJointAngles(AgentHandle agent) => _agents.IsValid(agent) ? _agents.AnglesOf(agent.Index) : [];
 
     /// <summary>
     /// The agent's joint rotations this tick, one per joint of its rig (<see cref="Planner.Rigs.Rig.Joints"/> order),
     /// each local to its parent joint (the root joint's local to the root pose, <see cref="GetRootPose"/>); empty
-    /// for an unknown agent. Filled by the pose system; read-only view, valid until the next tick.
+    /// for an unknown agent. Filled by the pose system; a read-only view of the agent's slice of the world's pose
+    /// pool, valid until the next tick or the next agent placed (the pool may grow then).
     /// </summary>
-    public ReadOnlySpan<Quaternion> GetJointRotations(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Rotations[agent.Index] : [];
+    public ReadOnlySpan<Quaternion> GetJointRotations(AgentHandle agent) => _agents.IsValid(agent) ? _agents.RotationsOf(agent.Index) : [];
 
     /// <summary>Copies the handles of the active agents (on their kind's roadmap), in slot order, into <paramref name="destination"/>; returns how many were written.</summary>
     public int CopyAgents(Span<AgentHandle> destination)

@@ -73,8 +73,21 @@ internal sealed class AgentStore
 
     public bool[] PoseEnabled = [];
     public bool[] PoseDirty = [];
-    public float[][] Angles = [];
-    public Quaternion[][] Rotations = [];
+
+    /// <summary>Where each agent's joint angles and rotations lie in <see cref="AnglePool"/> and <see cref="RotationPool"/> (empty while it is out of the simulation).</summary>
+    public PoseSlice[] Pose = [];
+
+    /// <summary>Every active agent's joint angles, one slice each (<see cref="Pose"/>).</summary>
+    public readonly SlicePool<float> AnglePool = new();
+
+    /// <summary>Every active agent's joint rotations, one slice each (<see cref="Pose"/>).</summary>
+    public readonly SlicePool<Quaternion> RotationPool = new();
+
+    /// <summary>The joint angles of the agent in <paramref name="slot"/>.</summary>
+    public Span<float> AnglesOf(int slot) => AnglePool.Slice(Pose[slot].Angles, Pose[slot].AngleCount);
+
+    /// <summary>The joint rotations of the agent in <paramref name="slot"/>.</summary>
+    public Span<Quaternion> RotationsOf(int slot) => RotationPool.Slice(Pose[slot].Rotations, Pose[slot].RotationCount);
 
     /// <summary>One past the highest slot ever used.</summary>
     public int HighWater { get; private set; }
@@ -119,7 +132,7 @@ internal sealed class AgentStore
     }
 
     /// <summary>Puts the registered agent in <paramref name="slot"/> in the simulation, standing idle on <paramref name="stance"/> of <paramref name="character"/>.</summary>
-    public void Activate(int slot, CharacterKind character, RootPose root, RoadmapNode stance, float[] angles, Quaternion[] rotations)
+    public void Activate(int slot, CharacterKind character, RootPose root, RoadmapNode stance, ReadOnlySpan<float> angles)
     {
         Alive[slot] = true;
         Lifecycle[slot] = AgentLifecycle.Active;
@@ -138,8 +151,29 @@ internal sealed class AgentStore
         Request[slot] = null;
         PoseEnabled[slot] = true;
         PoseDirty[slot] = true;
-        Angles[slot] = angles;
-        Rotations[slot] = rotations;
+        SizePose(slot, angles.Length, character.JointCount);
+        angles.CopyTo(AnglesOf(slot));
+    }
+
+    /// <summary>Sizes the pose slices of the agent in <paramref name="slot"/> for <paramref name="angles"/> joint angles and <paramref name="joints"/> joint rotations (new slices, cleared, when either length changes).</summary>
+    public void SizePose(int slot, int angles, int joints)
+    {
+        PoseSlice pose = Pose[slot];
+        if (pose.AngleCount == angles && pose.RotationCount == joints)
+        {
+            return;
+        }
+
+        FreePose(slot);
+        Pose[slot] = new PoseSlice(AnglePool.Rent(angles), angles, RotationPool.Rent(joints), joints);
+    }
+
+    private void FreePose(int slot)
+    {
+        PoseSlice pose = Pose[slot];
+        AnglePool.Return(pose.Angles, pose.AngleCount);
+        RotationPool.Return(pose.Rotations, pose.RotationCount);
+        Pose[slot] = default;
     }
 
     /// <summary>Takes the agent in <paramref name="slot"/> out of the simulation into <paramref name="lifecycle"/>, standing at <paramref name="point"/>; its kind and target stay.</summary>
@@ -157,8 +191,7 @@ internal sealed class AgentStore
         Stance[slot] = null;
         StopAtStance[slot] = false;
         Request[slot] = null;
-        Angles[slot] = [];
-        Rotations[slot] = [];
+        FreePose(slot);
     }
 
     /// <summary>Sets the agent's navigation status (and the failure's reason, for <see cref="NavigationStatus.Failed"/>).</summary>
@@ -204,7 +237,6 @@ internal sealed class AgentStore
         Array.Resize(ref Request, capacity);
         Array.Resize(ref PoseEnabled, capacity);
         Array.Resize(ref PoseDirty, capacity);
-        Array.Resize(ref Angles, capacity);
-        Array.Resize(ref Rotations, capacity);
+        Array.Resize(ref Pose, capacity);
     }
 }

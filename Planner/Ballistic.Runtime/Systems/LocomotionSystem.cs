@@ -167,7 +167,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         agents.Root[slot] = root;
         agents.BodyStale[slot] = true;
         agents.StopAtStance[slot] = false;
-        path.Animation.Sample(at, agents.Angles[slot]);
+        path.Animation.Sample(at, agents.AnglesOf(slot));
         agents.PoseDirty[slot] = true;
         agents.State[slot] = AgentState.Idle;
         if (agents.HasTarget[slot] && agents.Request[slot] is null)
