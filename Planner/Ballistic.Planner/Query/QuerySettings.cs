@@ -14,7 +14,9 @@ public sealed record QuerySettings
     /// <summary>
     /// An extra check the start and goal stances must pass (the whole body can stand there), or <c>null</c>.
     /// <see cref="Query.AnimatedPlanner"/> sets it to its animator's <see cref="Animation.IJumpAnimator.CanStand"/>, for
-    /// the bake and the query alike, so that both place the same stances.
+    /// the bake and the query alike, so that both place the same stances. A function of the pose alone (the same
+    /// pose, the same answer): the stances a query places facing a way are remembered by the scene, per delegate, and
+    /// served again to later queries with an equal one.
     /// </summary>
     public Func<Contacts.PoseEvaluation, bool>? CanStand { get; init; }
 

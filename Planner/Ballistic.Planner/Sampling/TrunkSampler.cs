@@ -210,6 +210,82 @@ internal sealed class TrunkSampler
 
     private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null, float[]? liftOrder = null)
     {
+        if (facing is not float yawFacing || searchBeyond)
+        {
+            return PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yawOffsets, liftOrder);
+        }
+
+        // A stance placed facing a way (a jump turned to face it, a takeoff moved along walkable ground): remembered.
+        var key = new Placing(point, tolerance, yawFacing, yawOffsets, liftOrder, canStand);
+        Dictionary<Placing, EndpointPlacement> newer = _newerPlacings;
+        lock (_placingsLock)
+        {
+            if (newer.TryGetValue(key, out EndpointPlacement? known) || _olderPlacings.TryGetValue(key, out known))
+            {
+                newer[key] = known;
+                return known;
+            }
+        }
+
+        EndpointPlacement placed = PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yawOffsets, liftOrder);
+        lock (_placingsLock)
+        {
+            if (_newerPlacings.Count >= RememberedPlacings)
+            {
+                (_olderPlacings, _newerPlacings) = (_newerPlacings, []);
+            }
+
+            _newerPlacings[key] = placed;
+        }
+
+        return placed;
+    }
+
+    /// <summary>
+    /// Placements facing a way that each generation of the remembered ones keeps (<see cref="PlaceNear"/>): two
+    /// generations, the newer becoming the older when full and the older forgotten; one found in the older is kept
+    /// in the newer. A placement is a function of what it is asked (the point, tolerance, yaws, lifts and the stance
+    /// check, which <see cref="Query.QuerySettings.CanStand"/> documents as a function of the pose), and queries place the
+    /// same stances again and again (a roadmap jump turned to face its way in every query whose path takes it, a
+    /// repair placing them anew): what is remembered never changes a result, only how soon it comes.
+    /// </summary>
+    private const int RememberedPlacings = 8_192;
+
+    private readonly object _placingsLock = new();
+    private Dictionary<Placing, EndpointPlacement> _newerPlacings = [];
+    private Dictionary<Placing, EndpointPlacement> _olderPlacings = [];
+
+    /// <summary>What a placement facing a way is asked: the point (metres), tolerance, facing (radians), yaw offsets and lifts tried (by content) and the stance check (by delegate equality).</summary>
+    private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float facing, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand) : IEquatable<Placing>
+    {
+        private readonly int _hash = HashCode.Combine(point, tolerance, facing, yaws?.Length ?? -1, yaws is { Length: > 0 } ? yaws[^1] : 0f, lifts?.Length ?? -1, lifts is { Length: > 0 } ? lifts[0] : 0f);
+
+        public bool Equals(Placing? other) =>
+            other is not null && _hash == other._hash && point == other.Point && tolerance == other.Tolerance && facing == other.Facing
+            && Same(yaws, other.Yaws) && Same(lifts, other.Lifts) && Equals(canStand, other.CanStand);
+
+        public override bool Equals(object? obj) => Equals(obj as Placing);
+
+        public override int GetHashCode() => _hash;
+
+        private Vector3 Point => point;
+
+        private EndpointTolerance Tolerance => tolerance;
+
+        private float Facing => facing;
+
+        private float[]? Yaws => yaws;
+
+        private float[]? Lifts => lifts;
+
+        private Func<PoseEvaluation, bool>? CanStand => canStand;
+
+        private static bool Same(float[]? a, float[]? b) => a is null ? b is null : b is not null && a.AsSpan().SequenceEqual(b);
+    }
+
+    /// <summary><see cref="PlaceNear"/> without the remembered placements.</summary>
+    private EndpointPlacement PlaceAnew(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets, float[]? liftOrder)
+    {
         float[] yaws = facing is null ? AllYaws : yawOffsets ?? EighthTurns;
         tolerance.Validate();
         if (!float.IsFinite(point.X) || !float.IsFinite(point.Y) || !float.IsFinite(point.Z))

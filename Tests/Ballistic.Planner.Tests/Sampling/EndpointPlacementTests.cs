@@ -81,6 +81,45 @@ public sealed class EndpointPlacementTests
     }
 
     [Test]
+    public void APlacementFacingAWayIsRememberedPerStanceCheckAndIsTheSameAsOneMadeAnew()
+    {
+        PlanningScene scene = BesideAHole();
+        var tolerance = new EndpointTolerance(0.3f, 0.25f);
+        var point = new Vector3(-3f, 0f, 1f);
+        int asked = 0;
+        bool Counting(PoseEvaluation pose)
+        {
+            asked++;
+            return pose.Contacts.Count >= 2;
+        }
+
+        Func<PoseEvaluation, bool> check = Counting;
+        EndpointPlacement first = scene.Sampler.PlaceFacing(point, tolerance, 0.5f, check);
+        Assert.That(first.Placed, Is.True, first.Failure("stance", tolerance));
+        int once = asked;
+        Assert.That(once, Is.GreaterThan(0));
+
+        EndpointPlacement again = scene.Sampler.PlaceFacing(point, tolerance, 0.5f, Counting);
+        Assert.That(again, Is.SameAs(first), "remembered: the same check (an equal delegate) is not asked again");
+        Assert.That(asked, Is.EqualTo(once));
+
+        EndpointPlacement otherWay = scene.Sampler.PlaceFacing(point, tolerance, 0.6f, check);
+        Assert.That(asked, Is.GreaterThan(once), "another facing is placed anew");
+        Assert.That(otherWay.Pose!.Pose, Is.Not.EqualTo(first.Pose!.Pose));
+
+        int before = asked;
+        EndpointPlacement otherCheck = scene.Sampler.PlaceFacing(point, tolerance, 0.5f, pose => pose.Contacts.Count >= 2 && ++asked > 0);
+        Assert.That(asked, Is.GreaterThan(before), "another stance check is asked: it may refuse what the first took");
+        Assert.That(otherCheck.Pose!.Pose, Is.EqualTo(first.Pose.Pose));
+
+        // What is remembered never changes an answer: a scene made anew places the very same stance.
+        EndpointPlacement fresh = BesideAHole().Sampler.PlaceFacing(point, tolerance, 0.5f, check);
+        Assert.That(fresh.Pose!.Pose, Is.EqualTo(first.Pose.Pose));
+        Assert.That(fresh.Pose.Contacts, Is.EqualTo(first.Pose.Contacts));
+        Assert.That(fresh.ContactCentre, Is.EqualTo(first.ContactCentre));
+    }
+
+    [Test]
     public void APointWithNoStanceWithinToleranceSaysHowFarTheNearestIs()
     {
         // 0.9 m above the floor and away from every slab: the floor is 0.9 m down, beyond 0.25 m.
