@@ -229,7 +229,7 @@ internal sealed class JumpFacer
             return walk.Via.Count == 0 && !_hops && _scene.Walking.Steer(from, walk.To).Walk is Walk steered ? steered : null;
         }
 
-        SteeringResult r = _scene.Steering.Steer(from.Pose, from.Cone, move.To.Pose, move.To.Cone);
+        SteeringResult r = _scene.Steering.SteerRemembered(from.Pose, from.Cone, move.To.Pose, move.To.Cone);
         return r.Succeeded ? new Jump(from, move.To, r.Arc) : null;
     }
 
@@ -276,7 +276,7 @@ internal sealed class JumpFacer
                 continue;
             }
 
-            if (_scene.Steering.Steer(from.Pose, from.Cone, to.Pose, to.Cone) is { Succeeded: true } r)
+            if (_scene.Steering.SteerRemembered(from.Pose, from.Cone, to.Pose, to.Cone) is { Succeeded: true } r)
             {
                 faced = new Jump(from, to, r.Arc) with { CutFrom = cut };
                 turnIn = up?.Moves;
@@ -455,7 +455,7 @@ internal sealed class JumpFacer
 
         var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         if (rejected?.Contains((before.From.Id, node.Id)) == true
-            || _scene.Steering.Steer(before.From.Pose, before.From.Cone, node.Pose, node.Cone) is not { Succeeded: true } r
+            || _scene.Steering.SteerRemembered(before.From.Pose, before.From.Cone, node.Pose, node.Cone) is not { Succeeded: true } r
             || Off(node, Way(r.Arc)) > StillOffLanding)
         {
             yield break;
@@ -505,7 +505,7 @@ internal sealed class JumpFacer
         }
 
         // A hop the body cannot push off for or absorb (its arc is the steepest the cones allow, at their edge) is no turn.
-        SteeringResult hop = _scene.Steering.SteerSteep(from.Pose, from.Cone, to.Pose, to.Cone);
+        SteeringResult hop = _scene.Steering.SteerRemembered(from.Pose, from.Cone, to.Pose, to.Cone, steep: true);
         return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight
             && _canPush?.Invoke(from.Pose, from.Contacts, hop.Arc.TakeoffVelocity) != false
             && _canPush?.Invoke(to.Pose, to.Contacts, -hop.Arc.LandingVelocity) != false

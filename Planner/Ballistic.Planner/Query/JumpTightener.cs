@@ -195,7 +195,7 @@ internal sealed class JumpTightener
                 break;
             }
 
-            SteeringResult steered = _scene.Steering.Steer(up.Pose, up.Cone, down.Pose, down.Cone);
+            SteeringResult steered = _scene.Steering.SteerRemembered(up.Pose, up.Cone, down.Pose, down.Cone);
             if (steered.Succeeded)
             {
                 return (takeoff.Walk, new Jump(up, down, steered.Arc), landing.Walk);

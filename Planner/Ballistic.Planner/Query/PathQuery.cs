@@ -856,7 +856,7 @@ public sealed class PathQuery
                     best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }
                 else if (!walksOnly && j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
-                    _scene.Steering.Steer(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && jump.Arc.FlightTime + _effort < saving)
+                    _scene.Steering.SteerRemembered(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && jump.Arc.FlightTime + _effort < saving)
                 {
                     best = new Jump(a, b, jump.Arc);
                 }

@@ -216,44 +216,19 @@ internal sealed class TrunkSampler
         }
 
         // A stance placed facing a way (a jump turned to face it, a takeoff moved along walkable ground): remembered.
-        var key = new Placing(point, tolerance, yawFacing, yawOffsets, liftOrder, canStand);
-        Dictionary<Placing, EndpointPlacement> newer = _newerPlacings;
-        lock (_placingsLock)
-        {
-            if (newer.TryGetValue(key, out EndpointPlacement? known) || _olderPlacings.TryGetValue(key, out known))
-            {
-                newer[key] = known;
-                return known;
-            }
-        }
-
-        EndpointPlacement placed = PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yawOffsets, liftOrder);
-        lock (_placingsLock)
-        {
-            if (_newerPlacings.Count >= RememberedPlacings)
-            {
-                (_olderPlacings, _newerPlacings) = (_newerPlacings, []);
-            }
-
-            _newerPlacings[key] = placed;
-        }
-
-        return placed;
+        return _placings.GetOrAdd(new Placing(point, tolerance, yawFacing, yawOffsets, liftOrder, canStand), this, static (k, sampler) => k.PlaceWith(sampler));
     }
 
     /// <summary>
-    /// Placements facing a way that each generation of the remembered ones keeps (<see cref="PlaceNear"/>): two
-    /// generations, the newer becoming the older when full and the older forgotten; one found in the older is kept
-    /// in the newer. A placement is a function of what it is asked (the point, tolerance, yaws, lifts and the stance
+    /// Placements facing a way that each generation of the remembered ones keeps (<see cref="PlaceNear"/>,
+    /// <see cref="RememberedResults{TKey, TValue}"/>). A placement is a function of what it is asked (the point, tolerance, yaws, lifts and the stance
     /// check, which <see cref="Query.QuerySettings.CanStand"/> documents as a function of the pose), and queries place the
     /// same stances again and again (a roadmap jump turned to face its way in every query whose path takes it, a
     /// repair placing them anew): what is remembered never changes a result, only how soon it comes.
     /// </summary>
     private const int RememberedPlacings = 8_192;
 
-    private readonly object _placingsLock = new();
-    private Dictionary<Placing, EndpointPlacement> _newerPlacings = [];
-    private Dictionary<Placing, EndpointPlacement> _olderPlacings = [];
+    private readonly RememberedResults<Placing, EndpointPlacement> _placings = new(RememberedPlacings);
 
     /// <summary>What a placement facing a way is asked: the point (metres), tolerance, facing (radians), yaw offsets and lifts tried (by content) and the stance check (by delegate equality).</summary>
     private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float facing, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand) : IEquatable<Placing>
@@ -267,6 +242,9 @@ internal sealed class TrunkSampler
         public override bool Equals(object? obj) => Equals(obj as Placing);
 
         public override int GetHashCode() => _hash;
+
+        /// <summary>The placement asked, made anew by <paramref name="sampler"/>.</summary>
+        public EndpointPlacement PlaceWith(TrunkSampler sampler) => sampler.PlaceAnew(point, tolerance, canStand, facing, searchBeyond: false, yaws, lifts);
 
         private Vector3 Point => point;
 

@@ -74,6 +74,25 @@ internal sealed class ParabolaSteering
     internal SteeringResult SteerSteep(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone) =>
         SteerTrying(from, fromCone, to, toCone, SteepFractions);
 
+    /// <summary>
+    /// <see cref="Steer(in RootPose, in FrictionCone, in RootPose, in FrictionCone)"/> (or, with
+    /// <paramref name="steep"/>, <see cref="SteerSteep"/>) remembered, for a query's path post-processing: turning a
+    /// jump to face its way, cutting it down or shortcutting steer the same stances in every query whose path takes
+    /// that jump. A result is a function of the poses and cones alone (<see cref="RememberedResults{TKey, TValue}"/>,
+    /// <see cref="RememberedSteers"/> a generation); the bake, whose pairs never repeat, steers without it.
+    /// </summary>
+    internal SteeringResult SteerRemembered(in RootPose from, in FrictionCone fromCone, in RootPose to, in FrictionCone toCone, bool steep = false) =>
+        _remembered.GetOrAdd(new SteerKey(from, fromCone, to, toCone, steep), this, static (k, steering) =>
+            k.Steep ? steering.SteerSteep(k.From, k.FromCone, k.To, k.ToCone) : steering.Steer(k.From, k.FromCone, k.To, k.ToCone));
+
+    /// <summary>Steering results each generation of <see cref="SteerRemembered"/> keeps (about 200 bytes each).</summary>
+    private const int RememberedSteers = 16_384;
+
+    private readonly RememberedResults<SteerKey, SteeringResult> _remembered = new(RememberedSteers);
+
+    /// <summary>What a remembered steer was asked: both poses and cones, and whether the steepest arcs were tried first.</summary>
+    private readonly record struct SteerKey(RootPose From, FrictionCone FromCone, RootPose To, FrictionCone ToCone, bool Steep);
+
     /// <summary>Fractions of the admissible angle interval tried in order by <see cref="SteerSteep"/>.</summary>
     private static readonly double[] SteepFractions = [0.875, 0.75, 0.625, 0.5];
 

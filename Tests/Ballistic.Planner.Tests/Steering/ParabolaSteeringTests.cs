@@ -13,6 +13,48 @@ public sealed class ParabolaSteeringTests
     private static readonly Vector3 Trunk = new(0.2f, 0.3f, 0.15f);
 
     [Test]
+    public void ARememberedSteerIsTheSteerItselfAskedOnce()
+    {
+        var random = new Random(7);
+        var validator = new CountingValidator();
+        var steering = new ParabolaSteering(new SteeringLimits(8f, 10f), Trunk, validator);
+        var fresh = new ParabolaSteering(new SteeringLimits(8f, 10f), Trunk, new CountingValidator());
+        int succeeded = 0;
+        for (int i = 0; i < 300; i++)
+        {
+            RootPose a = RandomPose(random, 4f);
+            RootPose b = RandomPose(random, 4f);
+            FrictionCone ca = RandomCone(random);
+            FrictionCone cb = RandomCone(random);
+            foreach (bool steep in new[] { false, true })
+            {
+                SteeringResult expected = steep ? fresh.SteerSteep(a, ca, b, cb) : fresh.Steer(a, ca, b, cb);
+                SteeringResult first = steering.SteerRemembered(a, ca, b, cb, steep);
+                int asked = validator.Calls;
+                SteeringResult again = steering.SteerRemembered(a, ca, b, cb, steep);
+                Assert.That(first, Is.EqualTo(expected), $"case {i}, steep {steep}: the steer itself");
+                Assert.That(again, Is.EqualTo(first), $"case {i}, steep {steep}");
+                Assert.That(validator.Calls, Is.EqualTo(asked), $"case {i}, steep {steep}: asked again is remembered, no arc checked");
+                succeeded += first.Succeeded ? 1 : 0;
+            }
+        }
+
+        Assert.That(succeeded, Is.GreaterThan(30), "arcs found, not only failures remembered");
+        Assert.That(validator.Calls, Is.GreaterThan(0));
+    }
+
+    private sealed class CountingValidator : IArcValidator
+    {
+        public int Calls { get; private set; }
+
+        public bool IsValid(in BallisticArc arc)
+        {
+            Calls++;
+            return arc.Apex.Y - arc.Start.Y < 1.5f;
+        }
+    }
+
+    [Test]
     public void EverySuccessfulJumpObeysThePhysics()
     {
         var random = new Random(2016);

@@ -1,0 +1,42 @@
+namespace Ballistic.Planner.Geometry;
+
+/// <summary>
+/// Results of a pure function remembered across calls and threads, bounded: two generations of at most
+/// <c>capacity</c> each, the newer becoming the older when full and the older forgotten, a result found in the older
+/// kept in the newer. For work that queries repeat (placing the same stances, steering the same pairs): since a result
+/// depends on its key alone, what is remembered never changes one, only how soon it comes, whatever the order or
+/// the threads that asked.
+/// </summary>
+internal sealed class RememberedResults<TKey, TValue>(int capacity)
+    where TKey : notnull
+{
+    private readonly object _lock = new();
+    private Dictionary<TKey, TValue> _newer = [];
+    private Dictionary<TKey, TValue> _older = [];
+
+    /// <summary>The result for <paramref name="key"/>: remembered, or made by <paramref name="make"/> (outside the lock) and remembered.</summary>
+    public TValue GetOrAdd<TState>(TKey key, TState state, Func<TKey, TState, TValue> make)
+    {
+        lock (_lock)
+        {
+            if (_newer.TryGetValue(key, out TValue? known) || _older.TryGetValue(key, out known))
+            {
+                _newer[key] = known;
+                return known;
+            }
+        }
+
+        TValue made = make(key, state);
+        lock (_lock)
+        {
+            if (_newer.Count >= capacity)
+            {
+                (_older, _newer) = (_newer, []);
+            }
+
+            _newer[key] = made;
+        }
+
+        return made;
+    }
+}
