@@ -1526,7 +1526,8 @@ public sealed class JumpWorld : IDisposable
     /// <summary>
     /// The agent's joint angles this tick, one per degree of freedom of its rig (radians, <see cref="Planner.Rigs.Rig.Dofs"/>
     /// order); empty for an unknown agent. Filled by the pose system; a read-only view of the agent's slice of the
-    /// world's pose pool, valid until the next tick or the next agent placed (the pool may grow then).
+    /// world's pose pool, valid until the next tick or the next change to the world's agents or kinds (the pool may
+    /// grow or the slice move then).
     /// </summary>
     public ReadOnlySpan<float> GetJointAngles(AgentHandle agent) => _agents.IsValid(agent) ? _agents.AnglesOf(agent.Index) : [];
 
@@ -1534,7 +1535,8 @@ public sealed class JumpWorld : IDisposable
     /// The agent's joint rotations this tick, one per joint of its rig (<see cref="Planner.Rigs.Rig.Joints"/> order),
     /// each local to its parent joint (the root joint's local to the root pose, <see cref="GetRootPose"/>); empty
     /// for an unknown agent. Filled by the pose system; a read-only view of the agent's slice of the world's pose
-    /// pool, valid until the next tick or the next agent placed (the pool may grow then).
+    /// pool, valid until the next tick or the next change to the world's agents or kinds (the pool may grow or the
+    /// slice move then).
     /// </summary>
     public ReadOnlySpan<Quaternion> GetJointRotations(AgentHandle agent) => _agents.IsValid(agent) ? _agents.RotationsOf(agent.Index) : [];
 

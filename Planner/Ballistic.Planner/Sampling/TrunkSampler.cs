@@ -221,10 +221,11 @@ internal sealed class TrunkSampler
 
     /// <summary>
     /// Placements facing a way that each generation of the remembered ones keeps (<see cref="PlaceNear"/>,
-    /// <see cref="RememberedResults{TKey, TValue}"/>). A placement is a function of what it is asked (the point, tolerance, yaws, lifts and the stance
-    /// check, which <see cref="Query.QuerySettings.CanStand"/> documents as a function of the pose), and queries place the
-    /// same stances again and again (a roadmap jump turned to face its way in every query whose path takes it, a
-    /// repair placing them anew): what is remembered never changes a result, only how soon it comes.
+    /// <see cref="RememberedResults{TKey, TValue}"/>). A placement is a function of what it is asked (the point,
+    /// tolerance, yaws, lifts and the stance check, which <see cref="Query.QuerySettings.CanStand"/> documents as a
+    /// function of the pose), and queries place the same stances again and again (a roadmap jump turned to face its
+    /// way in every query whose path takes it, a repair placing them anew): what is remembered never changes a
+    /// result, only how soon it comes.
     /// </summary>
     private const int RememberedPlacings = 8_192;
 
