@@ -226,7 +226,7 @@ internal sealed class JumpFacer
 
         if (move is Walk walk)
         {
-            return walk.Via.Count == 0 && !_hops && _scene.Walking.Steer(from, walk.To).Walk is Walk steered ? steered : null;
+            return walk.Via.Count == 0 && !_hops && _scene.Walking.SteerRemembered(from, walk.To).Walk is Walk steered ? steered : null;
         }
 
         SteeringResult r = _scene.Steering.SteerRemembered(from.Pose, from.Cone, move.To.Pose, move.To.Cone);
@@ -300,7 +300,7 @@ internal sealed class JumpFacer
         {
             if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
                 rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
-                _scene.Walking.Steer(before.From, faced.From).Walk is Walk steered)
+                _scene.Walking.SteerRemembered(before.From, faced.From).Walk is Walk steered)
             {
                 result[^1] = steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom };
             }

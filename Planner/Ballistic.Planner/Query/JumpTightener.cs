@@ -400,7 +400,7 @@ internal sealed class JumpTightener
 
         var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         (RoadmapNode first, RoadmapNode second) = toStance ? (own, node) : (node, own);
-        if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.Steer(first, second).Walk is not Walk walk)
+        if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.SteerRemembered(first, second).Walk is not Walk walk)
         {
             return new Candidate(null, null);
         }

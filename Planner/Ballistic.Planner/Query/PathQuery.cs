@@ -284,7 +284,7 @@ public sealed class PathQuery
                     _extra.Add(new Extra(start.Id, goal.Id, direct.Arc.FlightTime + _effort, direct.Arc, null));
                 }
 
-                if (_walking && _scene.Walking.Steer(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
+                if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
                 {
                     _extra.Add(new Extra(start.Id, goal.Id, WalkCost(walk), default, walk));
                 }
@@ -751,7 +751,7 @@ public sealed class PathQuery
                     break;
                 case FromWalk:
                     // The roadmap keeps a walk's length; its ground path is traced again, exactly as the bake did.
-                    if (_scene.Walking.Steer(from, to).Walk is not Walk walk)
+                    if (_scene.Walking.SteerRemembered(from, to).Walk is not Walk walk)
                     {
                         _lostWalk = (fromId, node);
                         return null;
@@ -792,7 +792,7 @@ public sealed class PathQuery
             }
 
             RoadmapNode node = _roadmap.Node(j);
-            if ((fromNode ? _scene.Walking.Steer(stance, node, distance) : _scene.Walking.Steer(node, stance, distance)).Walk is Walk walk)
+            if ((fromNode ? _scene.Walking.SteerRemembered(stance, node, distance) : _scene.Walking.SteerRemembered(node, stance, distance)).Walk is Walk walk)
             {
                 _extra.Add(new Extra(a, b, WalkCost(walk), default, walk));
                 if (++connected >= settings.Connections * 2)
@@ -851,7 +851,7 @@ public sealed class PathQuery
                 }
 
                 float saving = costs[j] - costs[i] - 1e-3f;
-                if (_scene.Walking.Steer(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving)
+                if (_scene.Walking.SteerRemembered(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving)
                 {
                     best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }

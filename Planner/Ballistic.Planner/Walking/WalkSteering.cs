@@ -71,23 +71,13 @@ internal sealed class WalkSteering
     /// <param name="maxDistance">The farthest (metres, horizontally between contact centres) a walk may go; +∞ for no limit.</param>
     public WalkResult Steer(RoadmapNode from, RoadmapNode to, float maxDistance = float.PositiveInfinity)
     {
-        ArgumentNullException.ThrowIfNull(from);
-        ArgumentNullException.ThrowIfNull(to);
-        if (!Limits.CanWalk)
+        if (Refused(from, to, maxDistance) is WalkFailure refused)
         {
-            return new WalkResult(null, WalkFailure.NotWalking);
-        }
-
-        Vector3 a = from.ContactCentre;
-        Vector3 b = to.ContactCentre;
-        float across = new Vector2(b.X - a.X, b.Z - a.Z).Length();
-        if (!(across <= maxDistance))
-        {
-            return new WalkResult(null, WalkFailure.TooFar);
+            return new WalkResult(null, refused);
         }
 
         var path = new List<Vector3>();
-        WalkFailure ground = TraceGround(a, b, path, out _);
+        WalkFailure ground = TraceGround(from.ContactCentre, to.ContactCentre, path, out _);
         if (ground != WalkFailure.None)
         {
             return new WalkResult(null, ground);
@@ -95,6 +85,66 @@ internal sealed class WalkSteering
 
         var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate);
         return TrunkIsFree(walk) ? new WalkResult(walk, WalkFailure.None) : new WalkResult(null, WalkFailure.TrunkCollides);
+    }
+
+    /// <summary>
+    /// <see cref="Steer"/> with the ground traced and the trunk checked from memory, for a query's path
+    /// post-processing (cutting jumps down to walks, shortcuts, turns, steering into the roadmap), which asks for the
+    /// same walks in every query whose path passes there. A walk's ground path and its trunk check are a function of
+    /// its stances' poses and contact centres alone (<see cref="RememberedResults{TKey, TValue}"/>), so what is
+    /// remembered never changes a result; the walk itself is made anew on <paramref name="from"/> and
+    /// <paramref name="to"/>. The bake, whose pairs never repeat, steers without it.
+    /// </summary>
+    /// <param name="from">The stance walked from, world frame.</param>
+    /// <param name="to">The stance walked to, world frame.</param>
+    /// <param name="maxDistance">The farthest (metres, horizontally between contact centres) a walk may go; +∞ for no limit.</param>
+    internal WalkResult SteerRemembered(RoadmapNode from, RoadmapNode to, float maxDistance = float.PositiveInfinity)
+    {
+        if (Refused(from, to, maxDistance) is WalkFailure refused)
+        {
+            return new WalkResult(null, refused);
+        }
+
+        (Vector3[]? path, WalkFailure failure) = _traced.GetOrAdd(new WalkKey(from.Pose, from.ContactCentre, to.Pose, to.ContactCentre), this, static (k, steering) => steering.Trace(k));
+        return path is null ? new WalkResult(null, failure) : new WalkResult(new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate), WalkFailure.None);
+    }
+
+    /// <summary>Why no walk is even traced from <paramref name="from"/> to <paramref name="to"/> (the character does not walk, or they lie farther apart than <paramref name="maxDistance"/>), or <c>null</c>.</summary>
+    private WalkFailure? Refused(RoadmapNode from, RoadmapNode to, float maxDistance)
+    {
+        ArgumentNullException.ThrowIfNull(from);
+        ArgumentNullException.ThrowIfNull(to);
+        if (!Limits.CanWalk)
+        {
+            return WalkFailure.NotWalking;
+        }
+
+        Vector3 a = from.ContactCentre;
+        Vector3 b = to.ContactCentre;
+        return new Vector2(b.X - a.X, b.Z - a.Z).Length() <= maxDistance ? null : WalkFailure.TooFar;
+    }
+
+    /// <summary>Walks each generation of <see cref="SteerRemembered"/> keeps (a ground path of a few dozen points each).</summary>
+    private const int RememberedWalks = 4_096;
+
+    private readonly RememberedResults<WalkKey, (Vector3[]? Path, WalkFailure Failure)> _traced = new(RememberedWalks);
+
+    /// <summary>What a remembered walk depends on: its stances' root poses and contact centres (metres).</summary>
+    private readonly record struct WalkKey(RootPose FromPose, Vector3 From, RootPose ToPose, Vector3 To);
+
+    /// <summary>The ground path of the walk <paramref name="key"/> asks for and the trunk's check along it, as <see cref="Steer"/> makes them: the path, or why there is none.</summary>
+    private (Vector3[]? Path, WalkFailure Failure) Trace(WalkKey key)
+    {
+        var path = new List<Vector3>();
+        WalkFailure ground = TraceGround(key.From, key.To, path, out _);
+        if (ground != WalkFailure.None)
+        {
+            return (null, ground);
+        }
+
+        // The trunk's check needs only the poses and the path: stances of those poses stand in for the real ones.
+        var walk = new Walk(new RoadmapNode(-1, key.FromPose, default, []), new RoadmapNode(-2, key.ToPose, default, []), path, Limits.Speed, turnRate: Limits.TurnRate);
+        return TrunkIsFree(walk) ? ([.. path], WalkFailure.None) : (null, WalkFailure.TrunkCollides);
     }
 
     /// <summary>
@@ -117,14 +167,7 @@ internal sealed class WalkSteering
             return null;
         }
 
-        var path = new List<Vector3>();
-        if (TraceGround(a, b, path, out _) != WalkFailure.None)
-        {
-            return null;
-        }
-
-        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate);
-        return TrunkIsFree(walk) ? walk : null;
+        return SteerRemembered(from, to).Walk;
     }
 
     /// <summary>

@@ -96,6 +96,62 @@ public sealed class WalkSteeringTests
         });
     }
 
+    [Test]
+    public void ARememberedWalkIsTheWalkSteeredAnewOnTheStancesAsked()
+    {
+        var scene = PlanningScene.Create(GapCourse.Build(), Skeleton);
+        var fresh = PlanningScene.Create(GapCourse.Build(), Skeleton);
+        var random = new Random(5);
+        var stances = new List<RoadmapNode>();
+        while (stances.Count < 14)
+        {
+            // Points over the platforms and the gaps between them: those with a stance within the tolerance are taken.
+            EndpointPlacement placed = scene.Sampler.Place(new Vector3(Range(random, -7.5f, 12f), 0f, Range(random, -1.5f, 1.5f)), new EndpointTolerance());
+            if (placed.Pose is { } pose)
+            {
+                stances.Add(new RoadmapNode(stances.Count, pose.Pose, pose.Cone, pose.Contacts));
+            }
+        }
+
+        var failures = new HashSet<WalkFailure>();
+        int walked = 0;
+        foreach (RoadmapNode a in stances)
+        {
+            foreach (RoadmapNode b in stances.Where(b => b != a))
+            {
+                foreach (float limit in new[] { float.PositiveInfinity, 4f })
+                {
+                    WalkResult expected = fresh.Walking.Steer(a, b, limit);
+                    foreach (RoadmapNode from in new[] { a, a with { Id = a.Id + 100 } })
+                    {
+                        // Asked twice, the second time for stances of the same poses under other ids: the walk is made on those.
+                        WalkResult remembered = scene.Walking.SteerRemembered(from, b, limit);
+                        string pair = $"{a.Id} -> {b.Id} (as {from.Id}), limit {limit}";
+                        Assert.That(remembered.Failure, Is.EqualTo(expected.Failure), pair);
+                        Assert.That(remembered.Walk is null, Is.EqualTo(expected.Walk is null), pair);
+                        if (remembered.Walk is { } walk)
+                        {
+                            Assert.That(walk.From, Is.SameAs(from), pair);
+                            Assert.That(walk.To, Is.SameAs(b), pair);
+                            Assert.That(walk.Path, Is.EqualTo(expected.Walk!.Path), pair);
+                            Assert.That(walk.Duration, Is.EqualTo(expected.Walk.Duration), pair);
+                            Assert.That(walk.PoseAt(0.37f * walk.Duration), Is.EqualTo(expected.Walk.PoseAt(0.37f * walk.Duration)), pair);
+                        }
+                    }
+
+                    walked += expected.Walk is null ? 0 : 1;
+                    failures.Add(expected.Failure);
+                }
+            }
+        }
+
+        Assert.That(walked, Is.GreaterThan(20), "walks found");
+        Assert.That(failures, Is.SupersetOf(new[] { WalkFailure.None, WalkFailure.TooFar }), "and refused, for the same reasons");
+        Assert.That(failures.Count, Is.GreaterThanOrEqualTo(3), string.Join(", ", failures));
+    }
+
+    private static float Range(Random random, float min, float max) => min + ((float)random.NextDouble() * (max - min));
+
     /// <summary>Two upright stances 3.7 m apart on the gap course's first platform and the walk steered between them.</summary>
     private static (PlanningScene Scene, RoadmapNode A, RoadmapNode B, Walk Walk) TwoStancesOnTheGapCourse()
     {
