@@ -1,0 +1,66 @@
+using Ballistic.Planner.Geometry;
+
+namespace Ballistic.Planner.Tests.Geometry;
+
+/// <summary>The bounded memory behind the remembered placements, steers and walks: what it keeps, what it forgets, and that threads only ever see the function's own results.</summary>
+public sealed class RememberedResultsTests
+{
+    [Test]
+    public void ResultsAreMadeOnceWhileRememberedAndTwoGenerationsBoundWhatIsKept()
+    {
+        var memory = new RememberedResults<int, string>(4);
+        int made = 0;
+        string Make(int key, int salt)
+        {
+            made++;
+            return $"{key}:{salt}";
+        }
+
+        for (int k = 0; k < 4; k++)
+        {
+            Assert.That(memory.GetOrAdd(k, 7, Make), Is.EqualTo($"{k}:7"));
+        }
+
+        Assert.That(made, Is.EqualTo(4));
+        Assert.That(memory.GetOrAdd(2, 99, Make), Is.EqualTo("2:7"), "remembered: the function is not asked again");
+        Assert.That(made, Is.EqualTo(4));
+
+        // The newer generation is full: the fifth key starts a new one, the first four become the older, still served.
+        Assert.That(memory.GetOrAdd(4, 7, Make), Is.EqualTo("4:7"));
+        Assert.That(memory.GetOrAdd(0, 99, Make), Is.EqualTo("0:7"), "found in the older generation, and kept in the newer");
+        Assert.That(made, Is.EqualTo(5));
+
+        // Two more generations later, keys 1–3 (never asked again) are forgotten and made anew; key 0 went forward each time it was asked.
+        for (int k = 10; k < 17; k++)
+        {
+            memory.GetOrAdd(k, 7, Make);
+            memory.GetOrAdd(0, 99, Make);
+        }
+
+        int before = made;
+        Assert.That(memory.GetOrAdd(1, 8, Make), Is.EqualTo("1:8"), "forgotten: made anew");
+        Assert.That(made, Is.EqualTo(before + 1));
+        Assert.That(memory.GetOrAdd(0, 8, Make), Is.EqualTo("0:7"), "kept while asked");
+    }
+
+    [Test]
+    public void ThreadsAskingAtOnceOnlyEverSeeTheFunctionsOwnResults()
+    {
+        var memory = new RememberedResults<int, long>(64);
+        var wrong = 0;
+        Parallel.For(0, 8, new ParallelOptions { MaxDegreeOfParallelism = 8 }, thread =>
+        {
+            var random = new Random(thread);
+            for (int i = 0; i < 20_000; i++)
+            {
+                int key = random.Next(500);
+                if (memory.GetOrAdd(key, 0, static (k, _) => ((long)k * k) + 1) != ((long)key * key) + 1)
+                {
+                    Interlocked.Increment(ref wrong);
+                }
+            }
+        });
+
+        Assert.That(wrong, Is.Zero);
+    }
+}
