@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Globalization;
 using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Playtest;
 using Ballistic.Authoring.Reports;
@@ -108,6 +109,11 @@ internal static class PlaytestCommand
             ]);
             IReadOnlyList<double> times = result.TimesToReach;
             stdout.WriteLine($"agents: {result.Agents.Count} for {result.Ticks / (double)settings.TickRate:0.#} s ({result.Ticks} ticks) in {result.WallSeconds:0.##} s wall time{(result.Cancelled ? ", cancelled" : "")}");
+            if (result.TickTimes is { } cost)
+            {
+                stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"ticks: median {cost.MedianMilliseconds:0.###} ms, p95 {cost.P95Milliseconds:0.###} ms, worst {cost.WorstMilliseconds:0.###} ms on the tick thread ({cost.OverFrame} longer than a 60 Hz frame); {cost.CpuMillisecondsPerTick:0.###} ms of CPU per tick on all threads; {cost.BytesAllocatedPerTick:0} bytes allocated per tick on the tick thread"));
+            }
+
             stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps and {result.WalksTaken} walks ({result.WalkedMetres:0.#} m) taken");
             if (times.Count > 0)
             {

@@ -31,6 +31,9 @@ public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kin
     /// <summary>Length of the ground paths of all walks started, metres.</summary>
     public double WalkedMetres => Agents.Sum(a => a.Walks.Sum(w => (double)w.Walk.Length));
 
+    /// <summary>What the ticks cost on this machine (<see cref="PlaytestTickTimes"/>); <c>null</c> when no tick ran.</summary>
+    public PlaytestTickTimes? TickTimes { get; init; }
+
     /// <summary>Seconds from setting each reached target to arriving, in increasing order.</summary>
     public IReadOnlyList<double> TimesToReach => [.. Agents.SelectMany(a => a.Targets).Where(t => t.Reached).Select(t => t.ReachedAt!.Value - t.SetAt).Order()];
 }

@@ -76,6 +76,9 @@ public static class PlaytestRunner
         var paths = new Dictionary<AgentHandle, AgentPath>();
         bool cancelled = false;
         long reportEvery = Math.Max(1, ticks / 200);
+        var tickMilliseconds = new List<double>((int)Math.Min(ticks, 1_000_000));
+        long allocated = 0;
+        TimeSpan cpuStart = Process.GetCurrentProcess().TotalProcessorTime;
         for (long tick = 0; tick < ticks; tick++)
         {
             if (cancellationToken.IsCancellationRequested)
@@ -84,7 +87,11 @@ public static class PlaytestRunner
                 break;
             }
 
+            long allocatedBefore = GC.GetAllocatedBytesForCurrentThread();
+            long started = Stopwatch.GetTimestamp();
             world.Step();
+            tickMilliseconds.Add(Stopwatch.GetElapsedTime(started).TotalMilliseconds);
+            allocated += GC.GetAllocatedBytesForCurrentThread() - allocatedBefore;
             List<AgentHandle>? resend = null;
             foreach (JumpEvent e in world.Events)
             {
@@ -134,6 +141,8 @@ public static class PlaytestRunner
             }
         }
 
+        PlaytestTickTimes? tickTimes = PlaytestTickTimes.From(tickMilliseconds, Process.GetCurrentProcess().TotalProcessorTime - cpuStart, allocated);
+
         // Connectivity of the roadmap itself: random node pairs joined by a sequence of moves (jumps, and walks unless jumps only).
         var pairs = new Random(settings.Seed ^ 0x5eed);
         int connected = 0;
@@ -144,7 +153,7 @@ public static class PlaytestRunner
             connected += (settings.Locomotion == Locomotion.Jump ? roadmap.Reaches(from, to) : roadmap.ReachesWalking(from, to)) ? 1 : 0;
         }
 
-        return new PlaytestResult(settings, kind, agents, world.Tick, clock.Elapsed.TotalSeconds, settings.ReachabilityPairs, connected, cancelled);
+        return new PlaytestResult(settings, kind, agents, world.Tick, clock.Elapsed.TotalSeconds, settings.ReachabilityPairs, connected, cancelled) { TickTimes = tickTimes };
     }
 
     private static void SendSomewhere(JumpWorld world, AgentHandle handle, PlaytestAgent agent, Roadmap roadmap, Random random)

@@ -56,6 +56,26 @@ public sealed class PlaytestTests
     }
 
     [Test]
+    public void TheTicksCostIsMeasuredAsAFrameFeelsIt()
+    {
+        PlaytestResult result = Run.Value;
+        PlaytestTickTimes cost = result.TickTimes!;
+        Assert.That(cost, Is.Not.Null);
+        Assert.That(cost.MedianMilliseconds, Is.GreaterThan(0));
+        Assert.That(cost.P95Milliseconds, Is.GreaterThanOrEqualTo(cost.MedianMilliseconds));
+        Assert.That(cost.WorstMilliseconds, Is.GreaterThanOrEqualTo(cost.P95Milliseconds));
+        Assert.That(cost.WorstMilliseconds, Is.LessThanOrEqualTo(result.WallSeconds * 1000.0), "no tick longer than the whole run");
+        Assert.That(cost.CpuMillisecondsPerTick, Is.GreaterThan(0));
+        Assert.That(cost.BytesAllocatedPerTick, Is.GreaterThanOrEqualTo(0));
+
+        // The figures themselves: the median and the 95th percentile of the ticks given, the worst, and the sums per tick.
+        PlaytestTickTimes made = PlaytestTickTimes.From([.. Enumerable.Range(1, 100).Select(i => (double)i).Reverse()], TimeSpan.FromMilliseconds(250), 1_000)!;
+        Assert.That(made, Is.EqualTo(new PlaytestTickTimes(51, 95, 100, 2.5, 10, 84)), "ticks of 17 to 100 ms are longer than a frame");
+        Assert.That(cost.OverFrame, Is.InRange(0, (int)result.Ticks));
+        Assert.That(PlaytestTickTimes.From([], TimeSpan.Zero, 0), Is.Null);
+    }
+
+    [Test]
     public void TheSameSeedGivesTheSamePlaytestWhateverTheThreads()
     {
         PlaytestResult again = PlaytestRunner.Run(WalkingPaths.Kind, new PlaytestSettings { Agents = 5, Seconds = 50, Seed = 4, AnimationThreads = 0, Locomotion = Locomotion.WalkAndJump, ReachabilityPairs = 100 });
