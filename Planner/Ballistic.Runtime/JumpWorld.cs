@@ -355,20 +355,10 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult RemoveKind(KindHandle kind)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(kind, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!IsValid(kind))
-        {
-            return UnknownKind(kind);
+            return refusal;
         }
 
         string reason = $"kind '{_kindNames[kind.Index]}' was removed";
@@ -466,20 +456,10 @@ public sealed class JumpWorld : IDisposable
     /// <param name="replacement">The new scene, roadmap and animator.</param>
     public RuntimeResult ReplaceKind(KindHandle kind, CharacterKind? replacement)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(kind, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!IsValid(kind))
-        {
-            return UnknownKind(kind);
+            return refusal;
         }
 
         string name = _kindNames[kind.Index];
@@ -767,20 +747,10 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult RemoveAgent(AgentHandle agent)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         int slot = agent.Index;
@@ -806,20 +776,10 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult SetTarget(AgentHandle agent, Vector3 target)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         if (!Finite(target))
@@ -869,20 +829,10 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Forgets the agent's target: it stops on the next stance of its path (or at once when standing).</summary>
     public RuntimeResult ClearTarget(AgentHandle agent)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         int slot = agent.Index;
@@ -918,20 +868,10 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     public RuntimeResult Warp(AgentHandle agent, Vector3 position)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         if (!Finite(position))
@@ -988,20 +928,10 @@ public sealed class JumpWorld : IDisposable
     /// <param name="edge">Index of the jump in the agent's kind's roadmap edges.</param>
     public RuntimeResult PerformJump(AgentHandle agent, int edge)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         int slot = agent.Index;
@@ -1045,20 +975,10 @@ public sealed class JumpWorld : IDisposable
     /// </summary>
     internal RuntimeResult PerformMoves(AgentHandle agent, IReadOnlyList<Move> moves)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         if (moves is null || moves.Count == 0 || moves.Any(m => m is null))
@@ -1095,20 +1015,10 @@ public sealed class JumpWorld : IDisposable
     /// <summary>Turns the pose system on or off for one agent (off for agents nobody sees; on by default).</summary>
     public RuntimeResult SetPoseEnabled(AgentHandle agent, bool enabled)
     {
-        using Gate gate = Gate.Enter(_gate, "world", out RuntimeResult? busy);
-        if (busy is { } crowded)
+        using Gate gate = EnterFor(agent, out RuntimeResult? entry);
+        if (entry is { } refusal)
         {
-            return crowded;
-        }
-
-        if (Gone() is { } gone)
-        {
-            return gone;
-        }
-
-        if (!_agents.IsValid(agent))
-        {
-            return Unknown(agent);
+            return refusal;
         }
 
         _agents.PoseEnabled[agent.Index] = enabled;
@@ -1597,6 +1507,26 @@ public sealed class JumpWorld : IDisposable
         _agents.Body[slot] = BodyPointRunner.Standing(_agents.Stance[slot]!.ContactCentre, _agents.Root[slot], _agents.Body[slot].Heading);
 
     /// <summary>The refusal of every call after <see cref="Dispose"/> (but <see cref="Step()"/>, which throws), or <c>null</c> before.</summary>
+    /// <summary>
+    /// Enters the world's gate for a change to <paramref name="agent"/>: <paramref name="refused"/> says why not when
+    /// another thread holds the world, the world was disposed or the handle names no agent of it (the gate, if
+    /// entered, is left when the returned gate is disposed).
+    /// </summary>
+    private Gate EnterFor(AgentHandle agent, out RuntimeResult? refused)
+    {
+        Gate gate = Gate.Enter(_gate, "world", out refused);
+        refused ??= Gone() ?? (_agents.IsValid(agent) ? null : Unknown(agent));
+        return gate;
+    }
+
+    /// <summary>As <see cref="EnterFor(AgentHandle, out RuntimeResult?)"/>, for a change to the kind <paramref name="kind"/>.</summary>
+    private Gate EnterFor(KindHandle kind, out RuntimeResult? refused)
+    {
+        Gate gate = Gate.Enter(_gate, "world", out refused);
+        refused ??= Gone() ?? (IsValid(kind) ? null : UnknownKind(kind));
+        return gate;
+    }
+
     private RuntimeResult? Gone() => _disposed ? new RuntimeResult(RuntimeStatus.Disposed, "the world was disposed: nothing was done") : null;
 
     private static RuntimeResult Unknown(AgentHandle agent) => new(RuntimeStatus.UnknownAgent, $"{agent} is not an agent of this world (never added, or removed)");
