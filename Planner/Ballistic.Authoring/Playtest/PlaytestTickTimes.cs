@@ -10,7 +10,7 @@ namespace Ballistic.Authoring.Playtest;
 /// <param name="P95Milliseconds">95th percentile of the same, milliseconds.</param>
 /// <param name="WorstMilliseconds">The longest tick, milliseconds.</param>
 /// <param name="CpuMillisecondsPerTick">CPU time of the whole process over the ticks, on all threads, per tick, milliseconds.</param>
-/// <param name="BytesAllocatedPerTick">Bytes the tick thread allocated inside the steps, per tick.</param>
+/// <param name="BytesAllocatedPerTick">Bytes the tick thread allocated inside the steps, per tick (the requests it solved while waiting for late ones included).</param>
 /// <param name="OverFrame">Ticks longer than a 60 Hz frame (<see cref="FrameMilliseconds"/>): hitches a player would see.</param>
 public sealed record PlaytestTickTimes(double MedianMilliseconds, double P95Milliseconds, double WorstMilliseconds, double CpuMillisecondsPerTick, double BytesAllocatedPerTick, int OverFrame)
 {

@@ -29,10 +29,19 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }
 
-    /// <summary>The request's search and animation running in the background (null when run on the tick).</summary>
-    public Task<RequestOutcome>? Job { get; set; }
+    /// <summary>
+    /// The request's search and animation queued or running in the background (null when run on the tick): its result
+    /// is null when the tick thread claimed and ran the work itself (<see cref="Outcome"/> then holds it).
+    /// </summary>
+    public Task<RequestOutcome?>? Job { get; set; }
 
-    /// <summary>The outcome of the search and animation run on the tick.</summary>
+    /// <summary>
+    /// Runs the work <see cref="Job"/> runs, here and now, unless a thread has already started it (then null): the
+    /// tick thread waiting for the request runs it itself while no background thread has.
+    /// </summary>
+    public Func<RequestOutcome?>? RunHere { get; set; }
+
+    /// <summary>The outcome of the search and animation run on the tick thread.</summary>
     public RequestOutcome? Outcome { get; set; }
 
     /// <summary>True once a tick stopped waiting for this request's animation (<see cref="Core.WorldSettings.MaxAnimationWait"/> spent): it is delivered at the first tick its animation is ready.</summary>

@@ -35,7 +35,8 @@ public sealed record WorldSettings
     /// With <see cref="WaitForAnimation"/>, the most wall-clock time one tick waits, in all, for animations that are
     /// late on their due tick (a starved machine, hundreds of requests at once); <c>null</c> (the default) waits as long
     /// as it takes, so that a world stepped as fast as a loop can go (tests, tools, offline simulations) gives the
-    /// same run on any machine. Past it the tick goes on, and each request still animating is delivered at the first
+    /// same run on any machine; while it waits, the tick thread solves the requests no background thread has started
+    /// yet (the one it waits for first, then those queued after it) instead of idling. Past it the tick goes on, and each request still animating is delivered at the first
     /// tick its animation is ready, as without <see cref="WaitForAnimation"/> (then trajectories depend on machine
     /// speed; each such request is counted in <see cref="JumpWorld.LateRequests"/>). A world stepped in real time
     /// should set one: the Godot server's world uses <see cref="RealTimeAnimationWait"/> (<see cref="RealTime"/>), so a game hitches, never
@@ -49,7 +50,10 @@ public sealed record WorldSettings
     /// <summary>The defaults of a world stepped in real time, as the Godot server's: <see cref="MaxAnimationWait"/> is <see cref="RealTimeAnimationWait"/>.</summary>
     public static WorldSettings RealTime => new() { MaxAnimationWait = RealTimeAnimationWait };
 
-    /// <summary>Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded hosts).</summary>
+    /// <summary>
+    /// Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded
+    /// hosts). Without a <see cref="MaxAnimationWait"/> a tick waiting for a late request lends its thread too.
+    /// </summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
     /// <summary>Searches per request at most: a jump the body cannot perform is set aside and the search runs again (<see cref="AnimatedPlanner"/>).</summary>

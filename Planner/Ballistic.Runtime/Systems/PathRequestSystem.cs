@@ -78,11 +78,13 @@ internal sealed class PathRequestSystem : IDisposable
             {
                 request.Outcome = job.Run();
                 request.Job = null;
+                request.RunHere = null;
             }
             else
             {
                 request.Outcome = null;
-                request.Job = Task.Factory.StartNew(job.Run, _shutdown.Token, TaskCreationOptions.None, _scheduler);
+                request.RunHere = job.TryRun;
+                request.Job = Task.Factory.StartNew(job.TryRun, _shutdown.Token, TaskCreationOptions.None, _scheduler);
             }
 
             _inFlight.Add(request);
@@ -101,7 +103,7 @@ internal sealed class PathRequestSystem : IDisposable
         {
             PathRequest request = _inFlight[i];
             bool due = request.DueTick <= tick;
-            bool ready = request.Job is null || request.Job.IsCompleted;
+            bool ready = Ready(request);
             if (!Current(request))
             {
                 if (!ready)
@@ -114,7 +116,7 @@ internal sealed class PathRequestSystem : IDisposable
 
             if (due && !ready && _settings.WaitForAnimation && !request.Late)
             {
-                ready = Await(request.Job!, ref waitStart);
+                ready = Await(i, ref waitStart);
                 if (!ready)
                 {
                     request.Late = true;
@@ -132,7 +134,8 @@ internal sealed class PathRequestSystem : IDisposable
             RequestOutcome outcome;
             try
             {
-                outcome = request.Outcome ?? request.Job!.GetAwaiter().GetResult();
+                outcome = request.Outcome ?? request.Job!.GetAwaiter().GetResult()
+                    ?? throw new InvalidOperationException("A request's job ended with no outcome.");
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
@@ -145,18 +148,32 @@ internal sealed class PathRequestSystem : IDisposable
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
     }
 
+    /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>
+    private static bool Ready(PathRequest request) => request.Outcome is not null || request.Job is null || request.Job.IsCompleted;
+
     /// <summary>
-    /// Waits for <paramref name="job"/> within what is left of this tick's <see cref="WorldSettings.MaxAnimationWait"/>
-    /// (counted from the first wait of the tick, <paramref name="waitStart"/>; without a limit, until it ends); true
-    /// when it ended (a failed job too: its outcome says so).
+    /// Waits for the in-flight request at <paramref name="index"/> within what is left of this tick's
+    /// <see cref="WorldSettings.MaxAnimationWait"/> (counted from the first wait of the tick,
+    /// <paramref name="waitStart"/>); true when it ended (a failed job too: its outcome says so). Without a limit (an
+    /// offline world, where only the outcome matters, not how long a tick takes) this thread works instead of idling
+    /// until it ends (<see cref="Help"/>): an outcome is the same whichever thread solves it.
     /// </summary>
-    private bool Await(Task<RequestOutcome> job, ref long waitStart)
+    private bool Await(int index, ref long waitStart)
     {
+        PathRequest request = _inFlight[index];
+        Task<RequestOutcome?> job = request.Job!;
         try
         {
             if (_settings.MaxAnimationWait is not { } limit)
             {
-                job.Wait();
+                while (!Ready(request))
+                {
+                    if (!Help(index))
+                    {
+                        job.Wait();
+                    }
+                }
+
                 return true;
             }
 
@@ -172,6 +189,30 @@ internal sealed class PathRequestSystem : IDisposable
         {
             return true; // the job failed: it ended, and reading its outcome next says how
         }
+    }
+
+    /// <summary>
+    /// Runs on this thread, to its end, the first request from <paramref name="index"/> on in request order (the one
+    /// waited for first) whose job no background thread has started; false when every one has started.
+    /// </summary>
+    private bool Help(int index)
+    {
+        for (int j = index; j < _inFlight.Count; j++)
+        {
+            PathRequest other = _inFlight[j];
+            if (Ready(other) || other.RunHere is not { } run || !Current(other))
+            {
+                continue;
+            }
+
+            if (run() is { } outcome)
+            {
+                other.Outcome = outcome;
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>Delivers a request's outcome on its due tick: a clean path to follow, a failure (the search's, or no path animating cleanly), or the target reached already.</summary>

@@ -21,8 +21,22 @@ internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathR
     private readonly int _forcedEdge = request.ForcedEdge;
     private readonly IReadOnlyList<Move>? _forcedMoves = request.ForcedMoves;
     private readonly JumpRepair _repair = request.Repair;
+    private int _claimed;
 
+    /// <summary>
+    /// Runs the job unless a thread has already claimed it (<see cref="TryRun"/> or <see cref="Run"/>): the tick thread
+    /// waiting for a request may run it itself when no background thread has started it. Null when it was claimed.
+    /// </summary>
+    public RequestOutcome? TryRun() => Interlocked.Exchange(ref _claimed, 1) == 0 ? Solve() : null;
+
+    /// <summary>Runs the job here (a world with no background threads); its outcome.</summary>
     public RequestOutcome Run()
+    {
+        _claimed = 1;
+        return Solve();
+    }
+
+    private RequestOutcome Solve()
     {
         IReadOnlyList<Move>? given = _forcedMoves;
         if (_forcedEdge >= 0)

@@ -29,7 +29,9 @@ public sealed class BackgroundSearchTests
         var watch = new ThreadWatch();
         var scene = PlanningScene.Create(desert.Scene.Level, desert.Scene.Character, poseValidator: watch, arcValidator: watch);
         var kind = new CharacterKind(scene, desert.Roadmap, desert.Animator, new SimpleMoveAnimator(desert.Animator));
-        using var world = new JumpWorld(scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = threads });
+        // A real-time world (its ticks wait a bounded time): a world without a limit lends its waiting tick thread to
+        // the jobs (AnimationWaitTests).
+        using var world = new JumpWorld(scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = threads, MaxAnimationWait = TimeSpan.FromSeconds(30) });
         KindHandle handle = world.AddKind(kind).Kind;
 
         // Targets beside roadmap nodes (not on one): each search places its goal and steers it in.
