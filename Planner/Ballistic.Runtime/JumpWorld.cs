@@ -671,6 +671,11 @@ public sealed class JumpWorld : IDisposable
             return new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null");
         }
 
+        if (new Planner.Query.QuerySettings { JumpEffort = kind.JumpEffort ?? 0f, JumpHeightEffort = kind.JumpHeightEffort ?? 0f }.EffortProblem() is { } costs)
+        {
+            return new RuntimeResult(RuntimeStatus.InvalidArgument, $"kind '{kind.Name}': its {costs}");
+        }
+
         if (kind.Roadmap.LevelFingerprint != kind.Scene.Level.Fingerprint)
         {
             return new RuntimeResult(RuntimeStatus.Mismatch, $"kind '{kind.Name}': its roadmap was baked on another level than its scene's ({kind.Scene.Level.Source})");

@@ -15,7 +15,7 @@ namespace Ballistic.Authoring.Playtest;
 /// </summary>
 /// <remarks>
 /// Version 2 (walking) adds to version 1: <c>settings.locomotion</c> ("walk_and_jump" or "jump") and
-/// <c>settings.jumpEffort</c> (s); <c>summary.walksTaken</c> and <c>summary.walkedMetres</c>; and per agent a
+/// <c>settings.jumpEffort</c> (s) and <c>settings.jumpHeightEffort</c> (s/m); <c>summary.walksTaken</c> and <c>summary.walkedMetres</c>; and per agent a
 /// <c>walks</c> array, each walk an object with <c>startTime</c> (s), <c>from</c> and <c>to</c> (<c>node</c>: the stance's id,
 /// a roadmap node's, or −1 or an id past the roadmap's last for a stance placed off it; <c>position</c>: trunk centre), <c>via</c> (node ids passed through), <c>speed</c>
 /// (m/s), <c>length</c> (m), <c>duration</c> (s) and <c>path</c> (the walk's ground points, [x, y, z] each). Everything of
@@ -49,6 +49,7 @@ public static class PlaytestReportWriter
             w.WriteNumber("tickRate", result.Settings.TickRate);
             w.WriteString("locomotion", result.Settings.Locomotion == Locomotion.Jump ? "jump" : "walk_and_jump");
             w.WriteNumber("jumpEffort", result.Settings.JumpEffort);
+            w.WriteNumber("jumpHeightEffort", result.Settings.JumpHeightEffort);
             w.WriteEndObject();
 
             w.WriteStartObject("roadmap");

@@ -48,6 +48,7 @@ public static class PlaytestRunner
             MaxAnimationWait = null, // a playtest is offline: the same at any thread count and machine speed
             Locomotion = settings.Locomotion,
             JumpEffort = settings.JumpEffort,
+            JumpHeightEffort = settings.JumpHeightEffort,
         });
         KindHandle handle = world.AddKind(kind).Kind;
 

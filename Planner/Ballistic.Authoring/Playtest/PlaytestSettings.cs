@@ -30,6 +30,9 @@ public sealed record PlaytestSettings
     /// <summary>What a jump costs beyond its flight time, in seconds of walking (<see cref="Runtime.Core.WorldSettings.JumpEffort"/>).</summary>
     public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
 
+    /// <summary>What a jump costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height, seconds per metre (<see cref="Runtime.Core.WorldSettings.JumpHeightEffort"/>).</summary>
+    public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
+
     /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>
     public string? Problem() =>
         Agents is < 1 or > 100_000 ? $"--agents must be 1–100000, not {Agents}"
@@ -39,5 +42,6 @@ public sealed record PlaytestSettings
         : AnimationThreads < 0 ? "the animation thread count must not be negative"
         : !Enum.IsDefined(Locomotion) ? $"the locomotion must be WalkAndJump or Jump, not {Locomotion}"
         : !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort) ? $"the jump effort must be finite and not negative, not {JumpEffort} s"
+        : !(JumpHeightEffort >= 0f) || !float.IsFinite(JumpHeightEffort) ? $"the jump height effort must be finite and not negative, not {JumpHeightEffort} s/m"
         : null;
 }

@@ -46,8 +46,9 @@ public sealed class PathQuery
     private readonly int[] _heuristicStamp;
     private int _generation;
 
-    // The costs of the current request: a jump's flight time plus this effort (0 without walking); walks when allowed.
+    // The costs of the current request: a jump's flight time plus these efforts (0 without walking; QuerySettings.JumpCost); walks when allowed.
     private float _effort;
+    private float _heightEffort;
     private bool _walking;
     private IReadOnlySet<int>? _noTakeoffs;
     private IReadOnlySet<int>? _noLandings;
@@ -91,6 +92,13 @@ public sealed class PathQuery
     /// <summary>The roadmap searched.</summary>
     public Roadmap Roadmap => _roadmap;
 
+    /// <summary>The request's settings (the defaults for <c>null</c>), refused with one line when their jump costs are negative or not finite.</summary>
+    private static QuerySettings Checked(QuerySettings? settings)
+    {
+        settings ??= new QuerySettings();
+        return settings.EffortProblem() is { } problem ? throw new ArgumentException(problem, nameof(settings)) : settings;
+    }
+
     /// <summary>Plans from the point <paramref name="from"/> to the point <paramref name="to"/> (world metres).</summary>
     public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings = null) => Plan(from, to, settings, rejected: null);
 
@@ -113,9 +121,10 @@ public sealed class PathQuery
     /// request's start): the result then has that condition's status (<see cref="PlannerStatus.Timeout"/>,
     /// <see cref="PlannerStatus.Cancelled"/>) and reason. <c>null</c> for none.
     /// </param>
+    /// <exception cref="ArgumentException">The settings' jump costs are negative or not finite.</exception>
     public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination = null)
     {
-        settings ??= new QuerySettings();
+        settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         if (Stopped(termination, clock, null, null) is { } early)
         {
@@ -162,10 +171,11 @@ public sealed class PathQuery
     /// <param name="settings">Endpoint tolerance, stance check and connections; defaults when <c>null</c>.</param>
     /// <param name="rejected">Jumps (takeoff id, landing id, as in the result) not to use, or <c>null</c>.</param>
     /// <param name="termination">Stops the request early (see the point-to-point overload); <c>null</c> for none.</param>
+    /// <exception cref="ArgumentException">The settings' jump costs are negative or not finite.</exception>
     public PlanResult Plan(RoadmapNode start, Vector3 to, QuerySettings? settings = null, IReadOnlySet<(int From, int To)>? rejected = null, TerminationCondition? termination = null)
     {
         ArgumentNullException.ThrowIfNull(start);
-        settings ??= new QuerySettings();
+        settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         int n = _roadmap.Nodes.Count;
         RoadmapNode from = Resolve(start, n);
@@ -198,11 +208,12 @@ public sealed class PathQuery
     /// <param name="settings">Connections for stances off the roadmap; defaults when <c>null</c> (the tolerance and stance check are not used).</param>
     /// <param name="rejected">Jumps (takeoff id, landing id, as in the result) not to use, or <c>null</c>.</param>
     /// <param name="termination">Stops the request early (see the point-to-point overload); <c>null</c> for none.</param>
+    /// <exception cref="ArgumentException">The settings' jump costs are negative or not finite.</exception>
     public PlanResult Plan(RoadmapNode start, RoadmapNode goal, QuerySettings? settings = null, IReadOnlySet<(int From, int To)>? rejected = null, TerminationCondition? termination = null)
     {
         ArgumentNullException.ThrowIfNull(start);
         ArgumentNullException.ThrowIfNull(goal);
-        settings ??= new QuerySettings();
+        settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         int n = _roadmap.Nodes.Count;
         RoadmapNode from = Resolve(start, n);
@@ -267,6 +278,7 @@ public sealed class PathQuery
         _noTakeoffs = settings.NoTakeoffs;
         _noLandings = settings.NoLandings;
         _effort = _walking ? settings.JumpEffort : 0f;
+        _heightEffort = _walking ? settings.JumpHeightEffort : 0f;
         float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
 
         // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
@@ -281,7 +293,7 @@ public sealed class PathQuery
             {
                 if (steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
                 {
-                    _extra.Add(new Extra(start.Id, goal.Id, direct.Arc.FlightTime + _effort, direct.Arc, null));
+                    _extra.Add(new Extra(start.Id, goal.Id, JumpCost(direct.Arc), direct.Arc, null));
                 }
 
                 if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
@@ -311,7 +323,7 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add(new Extra(start.Id, j, r.Arc.FlightTime + _effort, r.Arc, null));
+                    _extra.Add(new Extra(start.Id, j, JumpCost(r.Arc), r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -345,7 +357,7 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add(new Extra(j, goal.Id, r.Arc.FlightTime + _effort, r.Arc, null));
+                    _extra.Add(new Extra(j, goal.Id, JumpCost(r.Arc), r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -567,6 +579,7 @@ public sealed class PathQuery
         ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
         ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
+        ReadOnlySpan<float> heights = _roadmap.OutgoingEnergyHeights;
         ReadOnlySpan<int> edges = _roadmap.OutgoingEdges;
         ReadOnlySpan<int> walkOffsets = _roadmap.WalkOffsets;
         ReadOnlySpan<int> walkTargets = _roadmap.WalkTargets;
@@ -574,6 +587,7 @@ public sealed class PathQuery
         ReadOnlySpan<int> walkEntries = _roadmap.WalkEntries;
         bool walks = _walking && _roadmap.Walks.Count > 0;
         float effort = _effort;
+        float heightEffort = _heightEffort;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -607,7 +621,7 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    Relax(node, targets[i], here + times[i] + effort, edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
@@ -806,7 +820,10 @@ public sealed class PathQuery
     }
 
     /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>
-    private float CostOf(Move move) => move is Jump jump ? jump.Arc.FlightTime + _effort : WalkCost((Walk)move);
+    private float CostOf(Move move) => move is Jump jump ? JumpCost(jump.Arc) : WalkCost((Walk)move);
+
+    /// <summary>A jump's cost in this search, seconds: its flight time, plus (walking allowed) <see cref="QuerySettings.JumpCost"/>'s effort.</summary>
+    private float JumpCost(in BallisticArc arc) => arc.FlightTime + _effort + (_heightEffort * arc.EnergyHeight);
 
     /// <summary>A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds; turning in place and speeding up are not counted.</summary>
     private static float WalkCost(Walk walk) => walk.Length / walk.Speed;
@@ -856,7 +873,7 @@ public sealed class PathQuery
                     best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }
                 else if (!walksOnly && j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
-                    _scene.Steering.SteerRemembered(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && jump.Arc.FlightTime + _effort < saving)
+                    _scene.Steering.SteerRemembered(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && JumpCost(jump.Arc) < saving)
                 {
                     best = new Jump(a, b, jump.Arc);
                 }

@@ -55,11 +55,37 @@ public sealed record QuerySettings
     /// <summary>The default <see cref="JumpEffort"/>, seconds.</summary>
     public const float DefaultJumpEffort = 4f;
 
+    /// <summary>The default <see cref="JumpHeightEffort"/>, seconds per metre.</summary>
+    public const float DefaultJumpHeightEffort = 0f;
+
     /// <summary>
-    /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking: a path jumps only
-    /// where that saves more time than this. Not negative. Unused in <see cref="Locomotion.Jump"/> mode.
+    /// What every jump costs beyond its flight time when walking is allowed, in seconds of walking (getting set,
+    /// landing); <see cref="JumpHeightEffort"/> adds what its push costs. Not negative. Unused in
+    /// <see cref="Locomotion.Jump"/> mode.
     /// </summary>
     public float JumpEffort { get; init; } = DefaultJumpEffort;
+
+    /// <summary>
+    /// What a jump costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height
+    /// (<see cref="Steering.BallisticArc.EnergyHeight"/>, |v|²/(2g): the apex's rise for a jump straight up, more for
+    /// a long leap), in seconds of walking per metre: a hop over a ditch costs little, a vault whose trunk rises 2.4 m
+    /// costs about three seconds more, so a path walks a moderate detour rather than vault. With the defaults a
+    /// human-sized character's jumps cost 2.5–5 s beyond their flight (takeoff 3–8 m/s). Not negative. Unused in
+    /// <see cref="Locomotion.Jump"/> mode.
+    /// </summary>
+    public float JumpHeightEffort { get; init; } = DefaultJumpHeightEffort;
+
+    /// <summary>
+    /// What a jump along <paramref name="arc"/> costs a search that walks, seconds: its flight time plus
+    /// <see cref="JumpEffort"/> plus <see cref="JumpHeightEffort"/> per metre of its energy height.
+    /// </summary>
+    public float JumpCost(in Steering.BallisticArc arc) => arc.FlightTime + JumpEffort + (JumpHeightEffort * arc.EnergyHeight);
+
+    /// <summary>A one-line problem with the jump costs (negative or not finite), or <c>null</c> when there is none.</summary>
+    internal string? EffortProblem() =>
+        !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort) ? $"JumpEffort must be finite and not negative, not {JumpEffort} s"
+        : !(JumpHeightEffort >= 0f) || !float.IsFinite(JumpHeightEffort) ? $"JumpHeightEffort must be finite and not negative, not {JumpHeightEffort} s/m"
+        : null;
 
     /// <summary>
     /// A start or goal off the roadmap is linked by walks to and from roadmap nodes at most this far (metres,

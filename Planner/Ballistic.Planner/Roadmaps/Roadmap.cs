@@ -23,6 +23,7 @@ public sealed class Roadmap
     private readonly int[] _offsets;
     private readonly int[] _rowTargets;
     private readonly float[] _rowFlightTimes;
+    private readonly float[] _rowEnergyHeights;
     private readonly int[] _rowEdges;
     private readonly Vector3[] _positions;
     private readonly Vector2[] _horizontal;
@@ -82,6 +83,7 @@ public sealed class Roadmap
 
         _rowTargets = new int[edges.Length];
         _rowFlightTimes = new float[edges.Length];
+        _rowEnergyHeights = new float[edges.Length];
         _rowEdges = new int[edges.Length];
         int[] next = n > 0 ? _offsets[..n] : [];
         for (int e = 0; e < edges.Length; e++)
@@ -89,6 +91,7 @@ public sealed class Roadmap
             int k = next[edges[e].From]++;
             _rowTargets[k] = edges[e].To;
             _rowFlightTimes[k] = edges[e].Arc.FlightTime;
+            _rowEnergyHeights[k] = edges[e].Arc.EnergyHeight;
             _rowEdges[k] = e;
         }
 
@@ -189,6 +192,9 @@ public sealed class Roadmap
 
     /// <summary>Flight time in seconds of each outgoing-edge entry (see <see cref="OutgoingOffsets"/>).</summary>
     public ReadOnlySpan<float> OutgoingFlightTimes => _rowFlightTimes;
+
+    /// <summary>Energy height in metres (<see cref="Steering.BallisticArc.EnergyHeight"/>) of each outgoing-edge entry (see <see cref="OutgoingOffsets"/>).</summary>
+    internal ReadOnlySpan<float> OutgoingEnergyHeights => _rowEnergyHeights;
 
     /// <summary>Index into <see cref="Edges"/> of each outgoing-edge entry (see <see cref="OutgoingOffsets"/>).</summary>
     public ReadOnlySpan<int> OutgoingEdges => _rowEdges;

@@ -58,6 +58,13 @@ public readonly record struct BallisticArc
     /// <summary>Horizontal speed ẋ (constant during the flight), m/s.</summary>
     public float HorizontalSpeed => new Vector2(TakeoffVelocity.X, TakeoffVelocity.Z).Length();
 
+    /// <summary>
+    /// The height (metres) the takeoff speed |v| would lift the trunk straight up, |v|²/(2g): the takeoff's kinetic
+    /// energy per unit mass over g. It is the apex's rise above the takeoff for a jump straight up, and more for a long
+    /// leap to the same apex: what the legs put into the jump, in metres of climbing.
+    /// </summary>
+    public float EnergyHeight => TakeoffVelocity.LengthSquared() / (2f * Gravity);
+
     /// <summary>Time of the highest point, seconds, clamped to the flight.</summary>
     public float ApexTime => Math.Clamp(TakeoffVelocity.Y / Gravity, 0f, FlightTime);
 

@@ -75,11 +75,19 @@ public sealed record WorldSettings
     public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>
-    /// What a jump costs beyond its flight time when walking is allowed, in seconds of walking
-    /// (<see cref="QuerySettings.JumpEffort"/>; <see cref="QuerySettings.DefaultJumpEffort"/> by default): a path jumps
-    /// only where that saves more time than this. Finite and not negative.
+    /// What every jump costs beyond its flight time when walking is allowed, in seconds of walking
+    /// (<see cref="QuerySettings.JumpEffort"/>; <see cref="QuerySettings.DefaultJumpEffort"/> by default); with
+    /// <see cref="JumpHeightEffort"/>, a path jumps only where that saves more time than the jump's effort. Finite and
+    /// not negative.
     /// </summary>
     public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
+
+    /// <summary>
+    /// What a jump costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height, in seconds of
+    /// walking per metre (<see cref="QuerySettings.JumpHeightEffort"/>; <see cref="QuerySettings.DefaultJumpHeightEffort"/>
+    /// by default): high vaults cost more than hops. Finite and not negative.
+    /// </summary>
+    public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
 
     /// <summary>Seconds per tick.</summary>
     public double TickSeconds => 1.0 / TickRate;
@@ -112,11 +120,11 @@ public sealed record WorldSettings
             return $"MaxAnimationWait must be positive (or null: no limit), not {wait.TotalSeconds} s";
         }
 
-        if (!Enum.IsDefined(Locomotion) || !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort))
+        if (!Enum.IsDefined(Locomotion))
         {
-            return $"Locomotion must be WalkAndJump or Jump (not {Locomotion}) and JumpEffort finite and not negative (not {JumpEffort} s)";
+            return $"Locomotion must be WalkAndJump or Jump, not {Locomotion}";
         }
 
-        return null;
+        return new QuerySettings { JumpEffort = JumpEffort, JumpHeightEffort = JumpHeightEffort }.EffortProblem();
     }
 }

@@ -38,6 +38,21 @@ public sealed class CharacterKind
         PathAnimator = new PathAnimationCache(pathAnimator, animator.Model);
     }
 
+    /// <summary>
+    /// What every jump of this kind costs beyond its flight time, in seconds of walking
+    /// (<see cref="Ballistic.Planner.Query.QuerySettings.JumpEffort"/>); <c>null</c> (the default) for the world's
+    /// <see cref="Core.WorldSettings.JumpEffort"/>. Finite and not negative (else <see cref="JumpWorld.AddKind"/> refuses the kind).
+    /// </summary>
+    public float? JumpEffort { get; init; }
+
+    /// <summary>
+    /// What a jump of this kind costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height, in
+    /// seconds of walking per metre (<see cref="Ballistic.Planner.Query.QuerySettings.JumpHeightEffort"/>): a heavy
+    /// character that should walk round a wall it could vault gets more. <c>null</c> (the default) for the world's
+    /// <see cref="Core.WorldSettings.JumpHeightEffort"/>. Finite and not negative.
+    /// </summary>
+    public float? JumpHeightEffort { get; init; }
+
     /// <summary>The character's name.</summary>
     public string Name => Scene.Character.Name;
 

@@ -25,11 +25,12 @@ internal sealed class RoadmapSearch
             Tolerance = world.Tolerance,
             CanStand = kind.Animator.CanStand,
             Locomotion = world.Locomotion,
-            JumpEffort = world.JumpEffort,
+            JumpEffort = kind.JumpEffort ?? world.JumpEffort,
+            JumpHeightEffort = kind.JumpHeightEffort ?? world.JumpHeightEffort,
         };
     }
 
-    /// <summary>The query settings of every search: the world's tolerance, locomotion and jump effort, the kind's standing check.</summary>
+    /// <summary>The query settings of every search: the world's tolerance, locomotion, the kind's jump costs (else the world's), the kind's standing check.</summary>
     public QuerySettings Settings => _settings;
 
     /// <summary>Searches from the stance <paramref name="start"/> to the point <paramref name="target"/> (to its roadmap node, when one stands there); thread-safe.</summary>

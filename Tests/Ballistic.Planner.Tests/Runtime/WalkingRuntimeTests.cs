@@ -348,6 +348,29 @@ public sealed class WalkingRuntimeTests
     }
 
     [Test]
+    public void AKindsJumpCostsOverrideTheWorldsAndBadOnesRefuseTheKind()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var world = new WorldSettings { JumpEffort = 3.5f, JumpHeightEffort = 0.25f };
+        Assert.That(new RoadmapSearch(desert, world).Settings.JumpHeightEffort, Is.EqualTo(0.25f), "the world's, for a kind without its own");
+
+        var heavy = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator) { JumpEffort = 6f, JumpHeightEffort = 2f };
+        QuerySettings own = new RoadmapSearch(heavy, world).Settings;
+        Assert.That((own.JumpEffort, own.JumpHeightEffort), Is.EqualTo((6f, 2f)), "the kind's own");
+
+        var light = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator) { JumpHeightEffort = 0f };
+        QuerySettings mixed = new RoadmapSearch(light, world).Settings;
+        Assert.That((mixed.JumpEffort, mixed.JumpHeightEffort), Is.EqualTo((3.5f, 0f)), "each cost the kind leaves out is the world's");
+
+        using var jumps = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly);
+        var bad = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator) { JumpHeightEffort = float.NaN };
+        AddKindResult refused = jumps.AddKind(bad);
+        Assert.That(refused.Result.Status, Is.EqualTo(RuntimeStatus.InvalidArgument));
+        Assert.That(refused.Result.Reason, Does.Contain("JumpHeightEffort must be finite and not negative"));
+        Assert.That(jumps.AddKind(heavy).Result.Ok, Is.True);
+    }
+
+    [Test]
     public void APlannedPathOfWalksAndJumpsIsFollowedExactly()
     {
         // The planner's own walks (the default locomotion) on the desert, animated by the double.

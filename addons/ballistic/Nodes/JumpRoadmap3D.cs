@@ -6,6 +6,7 @@ using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Baking;
@@ -114,6 +115,21 @@ public partial class JumpRoadmap3D : Node3D
     /// <summary>At runtime, bake on a thread when no roadmap was baked in the editor (handy for prototypes).</summary>
     [Export]
     public bool BakeOnReadyIfMissing { get; set; } = true;
+
+    /// <summary>
+    /// What every jump costs the character's path searches beyond its flight time, in seconds of walking: a path jumps
+    /// only where that (and <see cref="JumpHeightEffort"/>) saves more walking, as a navigation region's enter cost.
+    /// </summary>
+    [ExportGroup("Costs")]
+    [Export(PropertyHint.Range, "0,60,0.1,or_greater,suffix:s")]
+    public float JumpEffort { get; set; } = QuerySettings.DefaultJumpEffort;
+
+    /// <summary>
+    /// What a jump costs on top of <see cref="JumpEffort"/> per metre its takeoff could lift the body (its energy
+    /// height, |v|²/2g), in seconds of walking per metre: raise it to make the character walk round walls it could vault.
+    /// </summary>
+    [Export(PropertyHint.Range, "0,20,0.1,or_greater,suffix:s/m")]
+    public float JumpHeightEffort { get; set; } = QuerySettings.DefaultJumpHeightEffort;
 
     /// <summary>Publish the roadmap's jumps as one-way links on the world's navigation map at runtime.</summary>
     [ExportGroup("Navigation Links")]
@@ -462,6 +478,7 @@ public partial class JumpRoadmap3D : Node3D
 
         RoadmapData data = Roadmap!.ToData();
         string name = string.IsNullOrEmpty(Roadmap.ResourcePath) ? GetPath().ToString() : Roadmap.ResourcePath;
+        (float effort, float heightEffort) = (JumpEffort, JumpHeightEffort);
         JumpLinkSettings? links = PublishNavigationLinks
             ? new JumpLinkSettings { ReferenceSpeed = LinkReferenceSpeed, MinHorizontalDistance = LinkMinDistance, MaxLinks = MaxLinks }
             : null;
@@ -471,7 +488,7 @@ public partial class JumpRoadmap3D : Node3D
             Roadmap roadmap = data.Load(level, reduced, name);
             var animator = new JumpAnimator(scene, model);
             JumpLinkSet? set = links is null ? null : JumpLinkSet.Build(roadmap, links, animator, System.Environment.ProcessorCount);
-            return (new CharacterKind(scene, roadmap, animator), set);
+            return (new CharacterKind(scene, roadmap, animator) { JumpEffort = effort, JumpHeightEffort = heightEffort }, set);
         });
     }
 
