@@ -12,6 +12,7 @@ using Ballistic.Planner.Characters;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Baking;
@@ -32,6 +33,26 @@ internal static class CliCommands
     private static Option<int> ThreadsOption() => new("--threads") { Description = "Worker threads (the roadmap does not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
 
     internal static Option<string> LocomotionOption() => new("--locomotion") { Description = "walk+jump: walk where the ground allows, jump where it must; jump: jumps only (the paper's planner).", DefaultValueFactory = _ => "walk+jump" };
+
+    /// <summary>The --jump-effort option: seconds of walking every jump costs beyond its flight time.</summary>
+    internal static Option<double> JumpEffortOption() => new("--jump-effort")
+    {
+        Description = "Seconds of walking every jump costs beyond its flight time (walk+jump only).",
+        DefaultValueFactory = _ => QuerySettings.DefaultJumpEffort,
+        CustomParser = r => Number(r, "--jump-effort"),
+    };
+
+    /// <summary>The --jump-height-effort option: seconds per metre of a jump's energy height on top of --jump-effort.</summary>
+    internal static Option<double> JumpHeightEffortOption() => new("--jump-height-effort")
+    {
+        Description = "Seconds of walking per metre of a jump's energy height |v|²/2g, on top of --jump-effort: raise it to walk round walls rather than vault them (walk+jump only).",
+        DefaultValueFactory = _ => QuerySettings.DefaultJumpHeightEffort,
+        CustomParser = r => Number(r, "--jump-height-effort"),
+    };
+
+    /// <summary>A jump cost given on the command line, checked: 0 to an hour.</summary>
+    internal static float Effort(double value, string option) =>
+        value is >= 0 and <= 3600 ? (float)value : throw new CliException(string.Create(CultureInfo.InvariantCulture, $"{option} takes 0 to 3600 seconds, not {value}."));
 
     internal static Locomotion ParseLocomotion(string value) => value switch
     {
@@ -139,7 +160,9 @@ internal static class CliCommands
         Option<string?> glb = new("--glb") { Description = "Animated GLB to write with --animate (default: the report's name with .glb)." };
         Option<string> tolerance = new("--goal-tolerance") { Description = "How close (metres) the first and last stances' contacts must come to --from and --to: ACROSS[,UPDOWN], horizontally and vertically.", DefaultValueFactory = _ => "0.5,0.25" };
         Option<string> locomotion = LocomotionOption();
-        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion };
+        Option<double> jumpEffort = JumpEffortOption();
+        Option<double> jumpHeightEffort = JumpHeightEffortOption();
+        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort };
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
@@ -160,6 +183,8 @@ internal static class CliCommands
                 Cancellation = cancellation,
                 Tolerance = CliInputs.ParseTolerance(parse.GetValue(tolerance)!, "--goal-tolerance"),
                 Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
+                JumpEffort = Effort(parse.GetValue(jumpEffort), "--jump-effort"),
+                JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort"),
             };
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);

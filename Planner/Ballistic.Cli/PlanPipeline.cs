@@ -48,6 +48,12 @@ internal sealed class PlanPipeline
     /// <summary>Walk where the ground allows and jump where it must (the default), or jump only (the paper).</summary>
     public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
+    /// <summary>Seconds of walking every jump costs beyond its flight time (<see cref="QuerySettings.JumpEffort"/>).</summary>
+    public float JumpEffort { get; init; } = QuerySettings.DefaultJumpEffort;
+
+    /// <summary>Seconds of walking per metre of a jump's energy height (<see cref="QuerySettings.JumpHeightEffort"/>).</summary>
+    public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
+
     /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }
 
@@ -75,14 +81,14 @@ internal sealed class PlanPipeline
             roadmap = RoadmapFile.Load(RoadmapPath, Level, Character);
             Timings["loadRoadmap"] = clock.Elapsed.TotalSeconds;
             clock.Restart();
-            plan = planner.Plan(roadmap, From, To, new QuerySettings { Tolerance = Tolerance, Locomotion = Locomotion }, termination: TerminationCondition.Cancellation(Cancellation));
+            plan = planner.Plan(roadmap, From, To, Query(), termination: TerminationCondition.Cancellation(Cancellation));
             Timings["planAndAnimate"] = clock.Elapsed.TotalSeconds;
         }
         else
         {
             var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance, Locomotion = Locomotion };
             ConsoleProgress progress = ConsoleProgress.For(error, MaxNodes);
-            (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress);
+            (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress, Query());
             progress.Finish();
             roadmap = bake.Roadmap;
             bakeSeconds = bake.Elapsed.TotalSeconds;
@@ -92,6 +98,9 @@ internal sealed class PlanPipeline
         Animation = plan.Animation;
         return (Report(scene, roadmap, bakeSeconds, plan.Result) with { Rejected = plan.Rejected }, roadmap);
     }
+
+    /// <summary>The query's settings: the tolerance, locomotion and jump costs given.</summary>
+    private QuerySettings Query() => new() { Tolerance = Tolerance, Locomotion = Locomotion, JumpEffort = JumpEffort, JumpHeightEffort = JumpHeightEffort };
 
     /// <summary>The clean whole-body animation of the last plan, when it has one.</summary>
     public JumpAnimation? Animation { get; private set; }

@@ -32,9 +32,11 @@ internal static class PlaytestCommand
         Option<int> threads = new("--threads") { Description = "Worker threads (the results do not depend on it).", DefaultValueFactory = _ => Environment.ProcessorCount };
         Option<string> output = new("--out") { Description = "Folder for LEVEL-CHARACTER-playtest.json, .svg and .png.", DefaultValueFactory = _ => "out" };
         Option<string> locomotion = CliCommands.LocomotionOption();
+        Option<double> jumpEffort = CliCommands.JumpEffortOption();
+        Option<double> jumpHeightEffort = CliCommands.JumpHeightEffortOption();
         var command = new Command("playtest", "Many agents navigate the level by walks and jumps, headless, toward random targets; writes a report and a map of where they failed.")
         {
-            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output, locomotion,
+            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output, locomotion, jumpEffort, jumpHeightEffort,
         };
         command.SetAction(parse => CliCommands.Guard(parse, () =>
         {
@@ -49,6 +51,8 @@ internal static class PlaytestCommand
                 Seed = parse.GetValue(seed),
                 AnimationThreads = Math.Max(1, threadCount - 1),
                 Locomotion = CliCommands.ParseLocomotion(parse.GetValue(locomotion)!),
+                JumpEffort = CliCommands.Effort(parse.GetValue(jumpEffort), "--jump-effort"),
+                JumpHeightEffort = CliCommands.Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort"),
             };
             if (settings.Problem() is { } problem)
             {

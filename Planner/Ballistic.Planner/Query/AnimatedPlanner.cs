@@ -44,8 +44,12 @@ public sealed class AnimatedPlanner
     /// of each bake and each plan); a plan it stops has its status and reason.
     /// </param>
     /// <param name="progress">Receives the bakes' progress.</param>
+    /// <param name="query">
+    /// The plans' other settings (jump costs, connections); <c>null</c> for the defaults. Their tolerance and
+    /// locomotion are the bake's.
+    /// </param>
     /// <exception cref="ArgumentException">The settings are invalid or have no node budget.</exception>
-    public (AnimatedPlan Plan, BakeResult Bake) BakeAndPlan(Vector3 from, Vector3 to, BakeSettings bake, TerminationCondition? termination = null, IProgress<BakeState>? progress = null)
+    public (AnimatedPlan Plan, BakeResult Bake) BakeAndPlan(Vector3 from, Vector3 to, BakeSettings bake, TerminationCondition? termination = null, IProgress<BakeState>? progress = null, QuerySettings? query = null)
     {
         ArgumentNullException.ThrowIfNull(bake);
         if (bake.MaxNodes is not int budget)
@@ -55,7 +59,7 @@ public sealed class AnimatedPlanner
 
         var baker = new RoadmapBaker(_scene);
         bake = bake with { CanStand = Animator.CanStand };
-        var query = new QuerySettings { Tolerance = bake.Tolerance, Locomotion = bake.Locomotion };
+        query = (query ?? new QuerySettings()) with { Tolerance = bake.Tolerance, Locomotion = bake.Locomotion };
         BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
         while (true)
         {

@@ -205,6 +205,18 @@ public sealed class CliJobTests
         Assert.That(output, Does.Contain("roadmap: 80 nodes"));
         Assert.That(output, Does.Contain("loadRoadmap"));
 
+        // The jump costs reach the search: jumps free of effort, the path jumps more than when each costs a minute.
+        int JumpsWith(string effort)
+        {
+            string costed = Path.Combine(_folder, $"effort-{effort}.json");
+            (int c, _, string e) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "skeleton", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", costed, "--jump-effort", effort);
+            Assert.That(c, Is.Zero, e);
+            using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(costed));
+            return doc.RootElement.GetProperty("jumps").GetArrayLength();
+        }
+
+        Assert.That(JumpsWith("0"), Is.GreaterThan(JumpsWith("60")), "free jumps are taken where a minute's would be walked");
+
         // The same roadmap for another character is refused in one line.
         (int wrong, _, string wrongError) = Run("plan", "--level", RepositoryFiles.Level("gap-course"), "--character", "frog", "--roadmap", roadmap, "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report);
         Assert.Multiple(() =>
@@ -252,6 +264,9 @@ public sealed class CliJobTests
             (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid pose stands within 0.5 m across and 0.25 m up/down of the start"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "0,1"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "wide"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-height-effort", "-1"], "--jump-height-effort takes 0 to 3600 seconds, not -1"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-effort", "lots"], "--jump-effort takes a number"),
+            (["playtest", "--level", level, "--character", "skeleton", "--out", _folder, "--jump-effort", "1e9"], "--jump-effort takes 0 to 3600 seconds"),
         };
         foreach ((string[] args, string expected) in cases)
         {
