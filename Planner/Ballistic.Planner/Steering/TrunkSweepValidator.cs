@@ -14,7 +14,8 @@ namespace Ballistic.Planner.Steering;
 /// every trunk position lies inside the mid-interval trunk grown by the largest distance a point can travel in half
 /// the interval, so that grown box being free proves the whole interval free. Where it is not, the interval is halved,
 /// down to a growth of the collision tolerance. A thin obstacle can therefore never be stepped over, and the trunk's
-/// corners cannot clip one between samples.
+/// corners cannot clip one between samples. Runs of intervals are first tested in one box that holds all their grown
+/// boxes, so an arc's stretch through open air costs one test; the verdict is the intervals' own, exactly.
 /// </remarks>
 internal sealed class TrunkSweepValidator : IArcValidator
 {
@@ -58,15 +59,106 @@ internal sealed class TrunkSweepValidator : IArcValidator
         float cornerSpeed = arc.FlightTime > 0f ? turn / arc.FlightTime * TrunkHalfExtents.Length() : 0f;
         float pointSpeed = speed + cornerSpeed;
         int steps = Math.Max(1, (int)MathF.Ceiling(arc.FlightTime * pointSpeed / spacing));
-        for (int i = 0; i < steps; i++)
+        return new Sweep(this, arc, steps, pointSpeed, turn).RunIsFree(0, steps, grouped: steps >= GroupedArcSteps);
+    }
+
+    /// <summary>Runs of fewer steps than this are tested step by step.</summary>
+    private const int GroupSteps = 4;
+
+    /// <summary>Arcs of fewer steps than this are tested step by step (a short hop's runs all lie near the ground).</summary>
+    private const int GroupedArcSteps = 16;
+
+    /// <summary>
+    /// Rotation (radians) always allowed for between a run's steps and its reference frame, above what the slerp
+    /// gives: the float error of the interpolation (and its linear fallback for turns under a few milliradians).
+    /// </summary>
+    private const float AngleNoise = 2e-3f;
+
+    /// <summary>Metres a run's box is grown by beyond what holds its steps' boxes, for the float error of the tests.</summary>
+    private const float GroupMargin = 1e-4f;
+
+    /// <summary>
+    /// One arc's sweep, its flight cut into <c>steps</c> equal intervals, each tested by <see cref="IntervalIsFree"/>
+    /// (the verdict is theirs). Runs of steps are tested in one box first: where a box holding every step's grown box
+    /// of a run is free, each of them would be found free at once, so only the runs near the level are tested step by
+    /// step; a step touching the level makes every run holding it touch it too, so the verdict is exactly the steps'.
+    /// </summary>
+    private readonly ref struct Sweep(TrunkSweepValidator validator, in BallisticArc arc, int steps, float pointSpeed, float turn)
+    {
+        private readonly BallisticArc _arc = arc;
+
+        public bool RunIsFree(int from, int to, bool grouped = true)
         {
-            if (!IntervalIsFree(arc, arc.FlightTime * i / steps, arc.FlightTime * (i + 1) / steps, pointSpeed, depth: 0))
+            if (!grouped || to - from < GroupSteps)
             {
-                return false;
+                for (int i = from; i < to; i++)
+                {
+                    if (!validator.IntervalIsFree(_arc, _arc.FlightTime * i / steps, _arc.FlightTime * (i + 1) / steps, pointSpeed, depth: 0))
+                    {
+                        return false;
+                    }
+                }
+
+                return true;
             }
+
+            if (!validator._world.Overlaps(Holding(from, to)))
+            {
+                return true;
+            }
+
+            int middle = (from + to) / 2;
+            return RunIsFree(from, middle) && RunIsFree(middle, to);
         }
 
-        return true;
+        /// <summary>
+        /// A box holding the grown boxes of steps <paramref name="from"/> to <paramref name="to"/> − 1: in the frame of
+        /// the trunk mid-run, the range of the parabola between the first and last steps' middles (each coordinate a
+        /// quadratic in time) plus each box's half extents, grown by what its rotation away from that frame (the slerp's
+        /// constant rate times the time between them) can move a corner.
+        /// </summary>
+        private OrientedBox Holding(int from, int to)
+        {
+            float duration = _arc.FlightTime;
+            float first = 0.5f * ((duration * from / steps) + (duration * (from + 1) / steps));
+            float last = 0.5f * ((duration * (to - 1) / steps) + (duration * to / steps));
+            float mid = 0.5f * (first + last);
+            Quaternion frame = Quaternion.Normalize(_arc.RotationAt(mid));
+            Quaternion inverse = Quaternion.Conjugate(frame);
+            Vector3 centre = _arc.PositionAt(mid);
+
+            // p(t) − centre = a + b·t + c·t² in the frame, t from the run's middle.
+            Vector3 a = Vector3.Transform(_arc.PositionAt(mid) - centre, inverse);
+            Vector3 b = Vector3.Transform(_arc.VelocityAt(mid), inverse);
+            Vector3 c = Vector3.Transform(new Vector3(0f, -0.5f * _arc.Gravity, 0f), inverse);
+            float t0 = first - mid;
+            float t1 = last - mid;
+            Vector3 low = Vector3.Min(Along(a, b, c, t0), Along(a, b, c, t1));
+            Vector3 high = Vector3.Max(Along(a, b, c, t0), Along(a, b, c, t1));
+            for (int axis = 0; axis < 3; axis++)
+            {
+                float ca = c[axis];
+                if (MathF.Abs(ca) > 1e-12f)
+                {
+                    float vertex = -b[axis] / (2f * ca);
+                    if (vertex > t0 && vertex < t1)
+                    {
+                        float value = a[axis] + (b[axis] * vertex) + (ca * vertex * vertex);
+                        low[axis] = MathF.Min(low[axis], value);
+                        high[axis] = MathF.Max(high[axis], value);
+                    }
+                }
+            }
+
+            Vector3 half = validator.TrunkHalfExtents + new Vector3((pointSpeed * 0.5f * duration / steps * 1.0001f) + 1e-6f);
+            float angle = (duration > 0f ? turn * MathF.Max(-t0, t1) / duration : 0f) + AngleNoise + (turn < 0.01f ? turn : 0f);
+            Vector3 reach = half + new Vector3((angle * half.Length()) + GroupMargin);
+            low -= reach;
+            high += reach;
+            return new OrientedBox(centre + Vector3.Transform(0.5f * (low + high), frame), 0.5f * (high - low), frame);
+        }
+
+        private static Vector3 Along(Vector3 a, Vector3 b, Vector3 c, float t) => a + (b * t) + (c * (t * t));
     }
 
     private bool IntervalIsFree(in BallisticArc arc, float t0, float t1, float pointSpeed, int depth)
