@@ -50,9 +50,9 @@ internal static class CliCommands
         CustomParser = r => Number(r, "--jump-height-effort"),
     };
 
-    /// <summary>A jump cost given on the command line, checked: 0 to an hour.</summary>
-    internal static float Effort(double value, string option) =>
-        value is >= 0 and <= 3600 ? (float)value : throw new CliException(string.Create(CultureInfo.InvariantCulture, $"{option} takes 0 to 3600 seconds, not {value}."));
+    /// <summary>A jump cost given on the command line in <paramref name="unit"/>, checked: 0 to 3600.</summary>
+    internal static float Effort(double value, string option, string unit = "seconds") =>
+        value is >= 0 and <= 3600 ? (float)value : throw new CliException(string.Create(CultureInfo.InvariantCulture, $"{option} takes 0 to 3600 {unit}, not {value}."));
 
     internal static Locomotion ParseLocomotion(string value) => value switch
     {
@@ -184,7 +184,7 @@ internal static class CliCommands
                 Tolerance = CliInputs.ParseTolerance(parse.GetValue(tolerance)!, "--goal-tolerance"),
                 Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
                 JumpEffort = Effort(parse.GetValue(jumpEffort), "--jump-effort"),
-                JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort"),
+                JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
             };
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);

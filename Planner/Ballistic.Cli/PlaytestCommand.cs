@@ -52,7 +52,7 @@ internal static class PlaytestCommand
                 AnimationThreads = Math.Max(1, threadCount - 1),
                 Locomotion = CliCommands.ParseLocomotion(parse.GetValue(locomotion)!),
                 JumpEffort = CliCommands.Effort(parse.GetValue(jumpEffort), "--jump-effort"),
-                JumpHeightEffort = CliCommands.Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort"),
+                JumpHeightEffort = CliCommands.Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
             };
             if (settings.Problem() is { } problem)
             {

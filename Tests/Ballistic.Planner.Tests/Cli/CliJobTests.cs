@@ -264,7 +264,7 @@ public sealed class CliJobTests
             (["plan", "--level", level, "--character", "skeleton", "--from", "0,40,0", "--to", "11.5,1,0", "--report", report], "no valid pose stands within 0.5 m across and 0.25 m up/down of the start"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "0,1"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--goal-tolerance", "wide"], "--goal-tolerance takes ACROSS[,UPDOWN]"),
-            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-height-effort", "-1"], "--jump-height-effort takes 0 to 3600 seconds, not -1"),
+            (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-height-effort", "-1"], "--jump-height-effort takes 0 to 3600 seconds per metre, not -1"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-effort", "lots"], "--jump-effort takes a number"),
             (["playtest", "--level", level, "--character", "skeleton", "--out", _folder, "--jump-effort", "1e9"], "--jump-effort takes 0 to 3600 seconds"),
         };
