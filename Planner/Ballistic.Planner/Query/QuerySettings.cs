@@ -68,10 +68,10 @@ public sealed record QuerySettings
     /// <summary>
     /// What a jump costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height
     /// (<see cref="Steering.BallisticArc.EnergyHeight"/>, |v|²/(2g): the apex's rise for a jump straight up, more for
-    /// a long leap), in seconds of walking per metre: a hop over a ditch costs little, a vault whose trunk rises 2.4 m
-    /// costs about three seconds more, so a path walks a moderate detour rather than vault. With the defaults a
-    /// human-sized character's jumps cost 2.5–5 s beyond their flight (takeoff 3–8 m/s). Not negative. Unused in
-    /// <see cref="Locomotion.Jump"/> mode.
+    /// a long leap), in seconds of walking per metre: at 1 s/m a hop over a ditch (takeoff 3 m/s) costs half a second
+    /// more, a vault whose trunk rises 2.4 m about three seconds more, so a path walks a moderate detour rather than
+    /// vault. 0 by default (every jump costs <see cref="JumpEffort"/>, as before this setting existed). Not negative.
+    /// Unused in <see cref="Locomotion.Jump"/> mode.
     /// </summary>
     public float JumpHeightEffort { get; init; } = DefaultJumpHeightEffort;
 
