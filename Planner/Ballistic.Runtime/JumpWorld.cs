@@ -142,7 +142,9 @@ public sealed class JumpWorld : IDisposable
     /// The path-request system: starts queued requests within the tick's budget
     /// (<see cref="WorldSettings.MaxSearchesPerTick"/>), each searched and animated in the background, and delivers each
     /// outcome <see cref="WorldSettings.PathLatencyTicks"/> after its start (<see cref="JumpEventKind.PathFound"/>,
-    /// <see cref="JumpEventKind.PathFailed"/>): the tick itself never searches.
+    /// <see cref="JumpEventKind.PathFailed"/>): the tick itself never searches, except that a world without
+    /// <see cref="WorldSettings.MaxAnimationWait"/> solves, while it waits for a late request, those no background
+    /// thread has started.
     /// </summary>
     public IJumpSystem PathRequestSystem { get; }
 

@@ -12,7 +12,9 @@ namespace Ballistic.Runtime.Systems;
 /// <see cref="WorldSettings.MaxSearchesPerTick"/> of them. A started request is one job, searched then animated in
 /// the background (<see cref="WorldSettings.AnimationThreads"/>; on the tick with none), whose outcome (a path, a
 /// failure, or the target reached already) is delivered to its agent exactly <see cref="WorldSettings.PathLatencyTicks"/>
-/// later: the tick thread never searches, so no search, however long, makes a tick long. Within the job, a path whose
+/// later: the tick thread never searches, so no search, however long, makes a tick long (a world without
+/// <see cref="WorldSettings.MaxAnimationWait"/>, which waits for late requests however long they take, has its tick
+/// thread solve the requests no background thread has started while it waits: <see cref="Help"/>). Within the job, a path whose
 /// animation shows a move (jump or walk) the body cannot perform is searched again without it (lazy repair, up to
 /// <see cref="WorldSettings.RepairRounds"/> searches: the planner's <see cref="Planner.Query.PlanJob"/>, as
 /// <see cref="Planner.Query.AnimatedPlanner"/> runs it) before it is reported as failed. Requests come from the world's
