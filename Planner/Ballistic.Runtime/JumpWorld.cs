@@ -673,7 +673,7 @@ public sealed class JumpWorld : IDisposable
             return new RuntimeResult(RuntimeStatus.InvalidArgument, "the character kind is null");
         }
 
-        if (new Planner.Query.QuerySettings { JumpEffort = kind.JumpEffort ?? 0f, JumpHeightEffort = kind.JumpHeightEffort ?? 0f }.EffortProblem() is { } costs)
+        if (Planner.Query.QuerySettings.EffortProblem(kind.JumpEffort ?? 0f, kind.JumpHeightEffort ?? 0f) is { } costs)
         {
             return new RuntimeResult(RuntimeStatus.InvalidArgument, $"kind '{kind.Name}': its {costs}");
         }

@@ -822,8 +822,8 @@ public sealed class PathQuery
     /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>
     private float CostOf(Move move) => move is Jump jump ? JumpCost(jump.Arc) : WalkCost((Walk)move);
 
-    /// <summary>A jump's cost in this search, seconds: its flight time, plus (walking allowed) <see cref="QuerySettings.JumpCost"/>'s effort.</summary>
-    private float JumpCost(in BallisticArc arc) => arc.FlightTime + _effort + (_heightEffort * arc.EnergyHeight);
+    /// <summary>A jump's cost in this search, seconds: its flight time, plus (walking allowed) the efforts of <see cref="QuerySettings.JumpCost(in BallisticArc, float, float)"/>.</summary>
+    private float JumpCost(in BallisticArc arc) => QuerySettings.JumpCost(arc, _effort, _heightEffort);
 
     /// <summary>A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds; turning in place and speeding up are not counted.</summary>
     private static float WalkCost(Walk walk) => walk.Length / walk.Speed;

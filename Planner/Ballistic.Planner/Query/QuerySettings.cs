@@ -79,12 +79,19 @@ public sealed record QuerySettings
     /// What a jump along <paramref name="arc"/> costs a search that walks, seconds: its flight time plus
     /// <see cref="JumpEffort"/> plus <see cref="JumpHeightEffort"/> per metre of its energy height.
     /// </summary>
-    public float JumpCost(in Steering.BallisticArc arc) => arc.FlightTime + JumpEffort + (JumpHeightEffort * arc.EnergyHeight);
+    public float JumpCost(in Steering.BallisticArc arc) => JumpCost(arc, JumpEffort, JumpHeightEffort);
+
+    /// <summary>A jump's cost with the efforts given (seconds, seconds per metre): the one formula every search uses.</summary>
+    internal static float JumpCost(in Steering.BallisticArc arc, float effort, float heightEffort) =>
+        arc.FlightTime + effort + (heightEffort * arc.EnergyHeight);
 
     /// <summary>A one-line problem with the jump costs (negative or not finite), or <c>null</c> when there is none.</summary>
-    internal string? EffortProblem() =>
-        !(JumpEffort >= 0f) || !float.IsFinite(JumpEffort) ? $"JumpEffort must be finite and not negative, not {JumpEffort} s"
-        : !(JumpHeightEffort >= 0f) || !float.IsFinite(JumpHeightEffort) ? $"JumpHeightEffort must be finite and not negative, not {JumpHeightEffort} s/m"
+    internal string? EffortProblem() => EffortProblem(JumpEffort, JumpHeightEffort);
+
+    /// <summary>A one-line problem with the jump costs given (seconds, seconds per metre), or <c>null</c>: the one check the planner, the world and its kinds make.</summary>
+    internal static string? EffortProblem(float effort, float heightEffort) =>
+        !(effort >= 0f) || !float.IsFinite(effort) ? $"JumpEffort must be finite and not negative, not {effort} s"
+        : !(heightEffort >= 0f) || !float.IsFinite(heightEffort) ? $"JumpHeightEffort must be finite and not negative, not {heightEffort} s/m"
         : null;
 
     /// <summary>

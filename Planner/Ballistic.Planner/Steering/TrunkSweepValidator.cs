@@ -127,14 +127,13 @@ internal sealed class TrunkSweepValidator : IArcValidator
             Quaternion inverse = Quaternion.Conjugate(frame);
             Vector3 centre = _arc.PositionAt(mid);
 
-            // p(t) − centre = a + b·t + c·t² in the frame, t from the run's middle.
-            Vector3 a = Vector3.Transform(_arc.PositionAt(mid) - centre, inverse);
+            // p(t) − centre = b·t + c·t² in the frame, t from the run's middle (centre = p(mid)).
             Vector3 b = Vector3.Transform(_arc.VelocityAt(mid), inverse);
             Vector3 c = Vector3.Transform(new Vector3(0f, -0.5f * _arc.Gravity, 0f), inverse);
             float t0 = first - mid;
             float t1 = last - mid;
-            Vector3 low = Vector3.Min(Along(a, b, c, t0), Along(a, b, c, t1));
-            Vector3 high = Vector3.Max(Along(a, b, c, t0), Along(a, b, c, t1));
+            Vector3 low = Vector3.Min(Along(b, c, t0), Along(b, c, t1));
+            Vector3 high = Vector3.Max(Along(b, c, t0), Along(b, c, t1));
             for (int axis = 0; axis < 3; axis++)
             {
                 float ca = c[axis];
@@ -143,7 +142,7 @@ internal sealed class TrunkSweepValidator : IArcValidator
                     float vertex = -b[axis] / (2f * ca);
                     if (vertex > t0 && vertex < t1)
                     {
-                        float value = a[axis] + (b[axis] * vertex) + (ca * vertex * vertex);
+                        float value = (b[axis] * vertex) + (ca * vertex * vertex);
                         low[axis] = MathF.Min(low[axis], value);
                         high[axis] = MathF.Max(high[axis], value);
                     }
@@ -158,7 +157,7 @@ internal sealed class TrunkSweepValidator : IArcValidator
             return new OrientedBox(centre + Vector3.Transform(0.5f * (low + high), frame), 0.5f * (high - low), frame);
         }
 
-        private static Vector3 Along(Vector3 a, Vector3 b, Vector3 c, float t) => a + (b * t) + (c * (t * t));
+        private static Vector3 Along(Vector3 b, Vector3 c, float t) => (b * t) + (c * (t * t));
     }
 
     private bool IntervalIsFree(in BallisticArc arc, float t0, float t1, float pointSpeed, int depth)

@@ -125,6 +125,6 @@ public sealed record WorldSettings
             return $"Locomotion must be WalkAndJump or Jump, not {Locomotion}";
         }
 
-        return new QuerySettings { JumpEffort = JumpEffort, JumpHeightEffort = JumpHeightEffort }.EffortProblem();
+        return QuerySettings.EffortProblem(JumpEffort, JumpHeightEffort);
     }
 }

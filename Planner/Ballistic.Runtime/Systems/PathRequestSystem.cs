@@ -85,8 +85,9 @@ internal sealed class PathRequestSystem : IDisposable
             else
             {
                 request.Outcome = null;
-                request.RunHere = job.TryRun;
-                request.Job = Task.Factory.StartNew(job.TryRun, _shutdown.Token, TaskCreationOptions.None, _scheduler);
+                Func<RequestOutcome?> run = job.TryRun;
+                request.RunHere = run;
+                request.Job = Task.Factory.StartNew(run, _shutdown.Token, TaskCreationOptions.None, _scheduler);
             }
 
             _inFlight.Add(request);
