@@ -100,6 +100,7 @@ internal static class FuzzHarness
                     ? $"allocated {allocated >> 20} MiB (limit {CaseBytes >> 20} MiB)"
                     : thrown is null ? null : Problem(thrown);
         loaded = problem is null && thrown is null;
+        Record(format, seed, problem is not null ? "failed" : loaded ? "loaded" : "refused", $"{problem ?? thrown?.Message}\t{mutator.Description}");
         if (problem is null)
         {
             Directory.Delete(caseFolder, recursive: true);
@@ -108,6 +109,25 @@ internal static class FuzzHarness
 
         return $"{format} seed {seed}: {problem}\n    mutations: {mutator.Description}\n    replay: BALLISTIC_FUZZ_REPLAY={format}:{seed} dotnet test --filter Name=Replay";
     }
+
+    /// <summary>
+    /// With <c>BALLISTIC_FUZZ_OUTCOMES=file</c>, appends each case's outcome class to that file ("format seed loaded",
+    /// "refused" or "failed", then a tab, the message, a tab and the mutations), so that two versions of the loaders can be compared case by case (sort both files, then diff).
+    /// </summary>
+    private static void Record(string format, int seed, string outcome, string? why)
+    {
+        if (Environment.GetEnvironmentVariable("BALLISTIC_FUZZ_OUTCOMES") is not { Length: > 0 } file)
+        {
+            return;
+        }
+
+        lock (OutcomeLock)
+        {
+            File.AppendAllText(file, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{format} {seed} {outcome}\t{why?.ReplaceLineEndings(" ")}\n"));
+        }
+    }
+
+    private static readonly object OutcomeLock = new();
 
     /// <summary>What is wrong with an exception coming out of a load, or <c>null</c> when it is a proper input error.</summary>
     public static string? Problem(Exception e)
