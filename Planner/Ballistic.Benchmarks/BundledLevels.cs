@@ -6,9 +6,10 @@ namespace Ballistic.Benchmarks;
 internal static class BundledLevels
 {
     /// <summary>Loads <c>Scenes/levels/<paramref name="name"/>.glb</c>.</summary>
-    public static Level Load(string name) => GltfLevelLoader.Load(Path.Combine(Root(), "Scenes", "levels", name + ".glb"));
+    public static Level Load(string name) => GltfLevelLoader.Load(Path.Combine(RepositoryRoot(), "Scenes", "levels", name + ".glb"));
 
-    private static string Root()
+    /// <summary>The repository root: the folder holding Ballistic.slnx, above the benchmark's folder.</summary>
+    public static string RepositoryRoot()
     {
         for (DirectoryInfo? dir = new(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
         {

@@ -1,11 +1,11 @@
 using System.Globalization;
 using System.Numerics;
-using System.Runtime.InteropServices;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Planner.Levels;
 
@@ -27,7 +27,7 @@ public static partial class GltfLevelLoader
         ArgumentNullException.ThrowIfNull(path);
         try
         {
-            return Build(GltfDocument.Load(path, options), path);
+            return Build(GltfModel.Load(path, options), path);
         }
         catch (GltfException e)
         {
@@ -40,172 +40,122 @@ public static partial class GltfLevelLoader
         }
     }
 
-    /// <summary>Builds a level from an already parsed document, within the document's <see cref="GltfDocument.Options"/>.</summary>
-    /// <param name="document">The parsed glTF.</param>
+    /// <summary>Builds a level from an already read model, within the model's <see cref="GltfModel.Options"/>.</summary>
+    /// <param name="model">The glTF, read and validated.</param>
     /// <param name="source">Where the level comes from, for messages and <see cref="Level.Source"/>.</param>
-    /// <exception cref="GltfException">The document's scene, nodes, meshes or accessors are malformed, or exceed a limit.</exception>
+    /// <exception cref="GltfException">The scene lists a node twice, a friction is not a finite number ≥ 0, or the meshes exceed a limit.</exception>
     /// <exception cref="LevelException">A vertex is not finite or lies beyond <see cref="LevelBuilder.MaxCoordinate"/>, an index is out of range, or no triangle is left.</exception>
-    internal static Level Build(GltfDocument document, string source)
+    internal static Level Build(GltfModel model, string source)
     {
-        ArgumentNullException.ThrowIfNull(document);
+        ArgumentNullException.ThrowIfNull(model);
         ArgumentNullException.ThrowIfNull(source);
         var builder = new LevelBuilder(source);
-        JsonArray meshes = document.Array("meshes");
-        JsonArray materialArray = document.Array("materials");
-        var materials = new LevelMaterial[materialArray.Count];
+        ModelRoot root = model.Root;
+        var materials = new LevelMaterial[root.LogicalMaterials.Count];
         for (int i = 0; i < materials.Length; i++)
         {
-            materials[i] = Material(document, materialArray[i], i);
+            materials[i] = Material(model, root.LogicalMaterials[i]);
         }
 
         var defaultMaterial = new LevelMaterial("default", null);
-        int[] parents = document.NodeParents();
-        var visited = new bool[parents.Length];
-        var counts = new Counts(document.Options);
+        var visited = new bool[root.LogicalNodes.Count];
+        var counts = new Counts(model.Options);
 
-        var stack = new Stack<(int Node, Matrix4x4 Parent)>();
-        List<int> roots = SceneRoots(document, parents);
-        for (int r = roots.Count - 1; r >= 0; r--)
+        // The default scene's nodes (with no scene, every node that is nobody's child), depth first in the file's order.
+        IEnumerable<Node> roots = root.DefaultScene is Scene scene ? scene.VisualChildren : root.LogicalNodes.Where(n => n.VisualParent is null);
+        var stack = new Stack<(Node Node, Matrix4x4 Parent)>();
+        foreach (Node node in roots.Reverse())
         {
-            stack.Push((roots[r], Matrix4x4.Identity));
+            stack.Push((node, Matrix4x4.Identity));
         }
 
         while (stack.Count > 0)
         {
-            (int index, Matrix4x4 parent) = stack.Pop();
-            if (visited[index])
+            (Node node, Matrix4x4 parent) = stack.Pop();
+            if (visited[node.LogicalIndex])
             {
-                throw new GltfException($"{document.Name}: the scene lists node {index} twice.");
+                throw new GltfException($"{model.Name}: the scene lists node {node.LogicalIndex} twice.");
             }
 
-            visited[index] = true;
-            JsonObject node = document.Node(index);
-            Matrix4x4 world = document.LocalTransform(node) * parent;
-            if (document.OptionalIndex(node, "mesh", $"node {index}") is int m)
+            visited[node.LogicalIndex] = true;
+            Matrix4x4 world = model.LocalTransform(node) * parent;
+            if (node.Mesh is Mesh mesh)
             {
-                if (m >= meshes.Count || meshes[m] is not JsonObject mesh)
+                string meshName = !string.IsNullOrEmpty(mesh.Name) ? mesh.Name : !string.IsNullOrEmpty(node.Name) ? node.Name : $"mesh {mesh.LogicalIndex}";
+                for (int p = 0; p < mesh.Primitives.Count; p++)
                 {
-                    throw new GltfException($"{document.Name}: node {index} names mesh {m}, which does not exist (there are {meshes.Count}).");
-                }
-
-                string meshName = document.OptionalText(mesh, "name", $"mesh {m}") ?? document.OptionalText(node, "name", $"node {index}") ?? $"mesh {m}";
-                JsonArray primitives = mesh["primitives"] switch
-                {
-                    JsonArray list => list,
-                    null => throw new GltfException($"{document.Name}: mesh {m} ('{MessageText.Printable(meshName)}') has no primitives."),
-                    JsonNode other => throw new GltfException($"{document.Name}: mesh {m} ('{MessageText.Printable(meshName)}') has primitives {GltfDocument.Describe(other)}, not a list."),
-                };
-                for (int p = 0; p < primitives.Count; p++)
-                {
-                    string what = $"primitive {p} of mesh {m} ('{MessageText.Printable(meshName)}')";
-                    JsonObject primitive = primitives[p] as JsonObject ?? throw new GltfException($"{document.Name}: {what} is {GltfDocument.Describe(primitives[p])}, not an object.");
-                    AddPrimitive(builder, document, primitive, what, $"{meshName}[{p}]", world, materials, defaultMaterial, counts);
+                    string what = $"primitive {p} of mesh {mesh.LogicalIndex} ('{MessageText.Printable(meshName)}')";
+                    AddPrimitive(builder, model, mesh.Primitives[p], what, $"{meshName}[{p}]", world, materials, defaultMaterial, counts);
                 }
             }
 
-            if (node["children"] is JsonArray children)
+            foreach (Node child in node.VisualChildren.Reverse())
             {
-                // NodeParents checked every child index and that each node has one parent.
-                for (int c = children.Count - 1; c >= 0; c--)
-                {
-                    stack.Push((children[c]!.GetValue<int>(), world));
-                }
+                stack.Push((child, world));
             }
         }
 
         return builder.Build();
     }
 
-    private static void AddPrimitive(LevelBuilder builder, GltfDocument document, JsonObject primitive, string what, string name, Matrix4x4 world, LevelMaterial[] materials, LevelMaterial fallback, Counts counts)
+    private static void AddPrimitive(LevelBuilder builder, GltfModel model, MeshPrimitive primitive, string what, string name, Matrix4x4 world, LevelMaterial[] materials, LevelMaterial fallback, Counts counts)
     {
-        int mode = document.OptionalIndex(primitive, "mode", what) ?? 4;
-        if (mode > 6)
-        {
-            throw new GltfException($"{document.Name}: {what} has the unknown mode {mode}.");
-        }
-
-        JsonObject attributes = primitive["attributes"] as JsonObject ?? throw new GltfException($"{document.Name}: {what} has {(primitive["attributes"] is null ? "no attributes" : $"attributes {GltfDocument.Describe(primitive["attributes"])}")}, not an object.");
-        if (mode is not (4 or 5 or 6) || attributes["POSITION"] is null)
+        PrimitiveType mode = primitive.DrawPrimitiveType;
+        if (mode is not (PrimitiveType.TRIANGLES or PrimitiveType.TRIANGLE_STRIP or PrimitiveType.TRIANGLE_FAN) || primitive.GetVertexAccessor("POSITION") is not Accessor positionAccessor)
         {
             return; // points and lines are not surfaces
         }
 
-        int positionAccessor = document.RequiredIndex(attributes, "POSITION", what + "'s attributes");
-        int? indexAccessor = document.OptionalIndex(primitive, "indices", what);
-        int material = document.OptionalIndex(primitive, "material", what) ?? -1;
-        if (material >= materials.Length)
+        Accessor? indexAccessor = primitive.IndexAccessor;
+
+        // Count before reading: the accessors' declared sizes (checked against their data by the library) against the limits.
+        int vertexCount = positionAccessor.Count;
+        int indexCount = indexAccessor?.Count ?? vertexCount;
+        long triangleCount = mode == PrimitiveType.TRIANGLES ? indexCount / 3 : Math.Max(0, indexCount - 2);
+        counts.Add(model, what, vertexCount, triangleCount);
+
+        if (positionAccessor.Dimensions != DimensionType.VEC3)
         {
-            throw new GltfException($"{document.Name}: {what} names material {material}, which does not exist (there are {materials.Length}).");
+            throw new GltfException($"{model.Name}: {what}'s POSITION accessor {positionAccessor.LogicalIndex} holds {positionAccessor.Dimensions}, not VEC3.");
         }
 
-        // Count before reading: the accessors' declared sizes, checked against their data and the limits.
-        int vertexCount = document.ElementCount(positionAccessor);
-        int indexCount = indexAccessor is int ia ? document.ElementCount(ia) : vertexCount;
-        long triangleCount = mode == 4 ? indexCount / 3 : Math.Max(0, indexCount - 2);
-        counts.Add(document, what, vertexCount, triangleCount);
-
-        float[] flat = document.ReadFloats(positionAccessor, 3);
-        ReadOnlySpan<Vector3> positions = MemoryMarshal.Cast<float, Vector3>(flat.AsSpan());
-        int[] indices = indexAccessor is int i ? document.ReadIntegers(i) : [.. Enumerable.Range(0, positions.Length)];
+        Vector3[] positions = [.. positionAccessor.AsVector3Array()];
+        int[] indices = indexAccessor is null ? [.. Enumerable.Range(0, positions.Length)] : Indices(model, indexAccessor, what);
         int[] triangles = mode switch
         {
-            5 => Strip(indices),
-            6 => Fan(indices),
+            PrimitiveType.TRIANGLE_STRIP => Strip(indices),
+            PrimitiveType.TRIANGLE_FAN => Fan(indices),
             _ => indices.Length % 3 == 0 ? indices : indices[..(indices.Length - (indices.Length % 3))],
         };
-        builder.AddMesh(name, positions, triangles, world, material >= 0 ? materials[material] : fallback);
+        LevelMaterial material = primitive.Material is Material m ? materials[m.LogicalIndex] : fallback;
+        builder.AddMesh(name, positions, triangles, world, material);
     }
 
-    private static List<int> SceneRoots(GltfDocument document, int[] parents)
+    /// <summary>An index accessor's values, each a vertex index (the library has checked the encoding is unsigned).</summary>
+    private static int[] Indices(GltfModel model, Accessor accessor, string what)
     {
-        JsonArray scenes = document.Array("scenes");
-        if (scenes.Count == 0)
+        IList<uint> values = accessor.AsIndicesArray();
+        int[] indices = new int[values.Count];
+        for (int i = 0; i < indices.Length; i++)
         {
-            // No scenes: every node that is nobody's child.
-            return [.. Enumerable.Range(0, parents.Length).Where(n => parents[n] < 0)];
+            uint v = values[i];
+            indices[i] = v <= int.MaxValue
+                ? (int)v
+                : throw new GltfException(string.Create(CultureInfo.InvariantCulture, $"{model.Name}: {what}'s index accessor {accessor.LogicalIndex} holds the value {v} at element {i}, too large for an index."));
         }
 
-        int scene = document.OptionalIndex(document.Root, "scene", "the file") ?? 0;
-        if (scene >= scenes.Count)
-        {
-            throw new GltfException($"{document.Name}: the default scene {scene} does not exist (there are {scenes.Count}).");
-        }
-
-        JsonObject sceneJson = scenes[scene] as JsonObject ?? throw new GltfException($"{document.Name}: scene {scene} is {GltfDocument.Describe(scenes[scene])}, not an object.");
-        JsonArray nodes = sceneJson["nodes"] switch
-        {
-            null => [],
-            JsonArray list => list,
-            JsonNode other => throw new GltfException($"{document.Name}: scene {scene}'s nodes are {GltfDocument.Describe(other)}, not a list."),
-        };
-        var roots = new List<int>(nodes.Count);
-        for (int i = 0; i < nodes.Count; i++)
-        {
-            int n = nodes[i] is JsonValue v && v.GetValueKind() == JsonValueKind.Number && v.TryGetValue(out int k) && k >= 0 && k < parents.Length
-                ? k
-                : throw new GltfException($"{document.Name}: scene {scene} lists node {GltfDocument.Describe(nodes[i])}, which is not a node (there are {parents.Length}).");
-            if (parents[n] >= 0)
-            {
-                throw new GltfException($"{document.Name}: scene {scene} lists node {n}, which is a child of node {parents[n]}; a scene lists only root nodes.");
-            }
-
-            roots.Add(n);
-        }
-
-        return roots;
+        return indices;
     }
 
-    private static LevelMaterial Material(GltfDocument document, JsonNode? node, int index)
+    private static LevelMaterial Material(GltfModel model, Material material)
     {
-        string what = $"material {index}";
-        JsonObject material = node as JsonObject ?? throw new GltfException($"{document.Name}: {what} is {GltfDocument.Describe(node)}, not an object.");
-        string name = document.OptionalText(material, "name", what) ?? what;
+        string name = !string.IsNullOrEmpty(material.Name) ? material.Name : $"material {material.LogicalIndex}";
         float? friction = null;
-        if (material["extras"] is JsonObject extras && extras["friction"] is JsonNode extra)
+        if (material.Extras is JsonObject extras && extras["friction"] is JsonNode extra)
         {
             friction = extra is JsonValue v && v.GetValueKind() == JsonValueKind.Number
                 ? (float)v.GetValue<double>()
-                : throw new GltfException($"{document.Name}: material '{MessageText.Printable(name)}' sets extras.friction to {GltfDocument.Describe(extra)}, not a number.");
+                : throw new GltfException($"{model.Name}: material '{MessageText.Printable(name)}' sets extras.friction to {Describe(extra)}, not a number.");
         }
         else if (FrictionInName().Match(name) is { Success: true } match)
         {
@@ -214,10 +164,23 @@ public static partial class GltfLevelLoader
 
         if (friction is float f && (!(f >= 0f) || !float.IsFinite(f)))
         {
-            throw new GltfException($"{document.Name}: material '{MessageText.Printable(name)}' sets friction {f.ToString(CultureInfo.InvariantCulture)}; friction must be a finite number ≥ 0.");
+            throw new GltfException($"{model.Name}: material '{MessageText.Printable(name)}' sets friction {f.ToString(CultureInfo.InvariantCulture)}; friction must be a finite number ≥ 0.");
         }
 
         return new LevelMaterial(name, friction);
+    }
+
+    /// <summary>A short description of a JSON value for messages: "the string \"x\"", "the number 2.0", "a list of 3", "an object", "null".</summary>
+    private static string Describe(JsonNode node)
+    {
+        static string Clip(string s) => s.Length > 40 ? s[..37] + "…" : s;
+        return node switch
+        {
+            JsonObject => "an object",
+            JsonArray a => a.Count == 0 ? "an empty list" : $"a list of {a.Count}",
+            JsonValue v when v.GetValueKind() == JsonValueKind.String => $"the string {Clip(MessageText.Printable(v.ToJsonString()))}",
+            _ => Clip(MessageText.Printable(node.ToJsonString())),
+        };
     }
 
     private static int[] Strip(int[] s)
@@ -251,18 +214,18 @@ public static partial class GltfLevelLoader
         private long _vertices;
         private long _triangles;
 
-        public void Add(GltfDocument document, string what, long vertices, long triangles)
+        public void Add(GltfModel model, string what, long vertices, long triangles)
         {
             _vertices += vertices;
             _triangles += triangles;
             if (_vertices > options.MaxVertices)
             {
-                throw new GltfException($"{document.Name}: with {what}, the level reads more than {options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
+                throw new GltfException($"{model.Name}: with {what}, the level reads more than {options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
             }
 
             if (_triangles > options.MaxTriangles)
             {
-                throw new GltfException($"{document.Name}: with {what}, the level holds more than {options.MaxTriangles} triangles (GltfLoadOptions.MaxTriangles).");
+                throw new GltfException($"{model.Name}: with {what}, the level holds more than {options.MaxTriangles} triangles (GltfLoadOptions.MaxTriangles).");
             }
         }
     }

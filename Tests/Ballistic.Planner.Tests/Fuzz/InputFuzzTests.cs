@@ -349,31 +349,50 @@ public sealed class InputFuzzTests
         return m.Serialize(json);
     }
 
-    /// <summary>After a successful load, the .gltf's buffers must all have been files in its folder.</summary>
+    /// <summary>
+    /// After a successful load, every URI the .gltf names (its buffers' and images', under any key it repeats: a
+    /// reader may take either of two duplicate keys) must have been a data URI or a file in its folder.
+    /// </summary>
     private static void CheckNothingOutsideWasRead(byte[] text, string folder)
     {
-        JsonNode? json;
+        JsonDocument document;
         try
         {
-            json = JsonNode.Parse(text);
+            document = JsonDocument.Parse(text);
         }
         catch (JsonException)
         {
             return;
         }
 
-        if (json?["buffers"] is not JsonArray buffers)
-        {
-            return;
-        }
-
         string inside = Path.GetFullPath(folder) + Path.DirectorySeparatorChar;
-        foreach (JsonNode? buffer in buffers)
+        using (document)
         {
-            if (buffer is JsonObject b && b["uri"] is JsonValue v && v.TryGetValue(out string? uri) && !uri.StartsWith("data:", StringComparison.OrdinalIgnoreCase)
-                && !Path.GetFullPath(Path.Combine(folder, Uri.UnescapeDataString(uri))).StartsWith(inside, StringComparison.Ordinal))
+            var pending = new Stack<JsonElement>([document.RootElement]);
+            while (pending.Count > 0)
             {
-                throw new InvalidOperationException($"The level loaded, reading its buffer from '{uri}', outside its folder.");
+                JsonElement element = pending.Pop();
+                if (element.ValueKind == JsonValueKind.Array)
+                {
+                    foreach (JsonElement item in element.EnumerateArray())
+                    {
+                        pending.Push(item);
+                    }
+                }
+                else if (element.ValueKind == JsonValueKind.Object)
+                {
+                    foreach (JsonProperty property in element.EnumerateObject())
+                    {
+                        if (property.Name == "uri" && property.Value.ValueKind == JsonValueKind.String && property.Value.GetString() is string uri
+                            && !uri.StartsWith("data:", StringComparison.OrdinalIgnoreCase)
+                            && !Path.GetFullPath(Path.Combine(folder, Uri.UnescapeDataString(uri))).StartsWith(inside, StringComparison.Ordinal))
+                        {
+                            throw new InvalidOperationException($"The level loaded, naming the file '{uri}', outside its folder.");
+                        }
+
+                        pending.Push(property.Value);
+                    }
+                }
             }
         }
     }

@@ -50,7 +50,7 @@ public sealed class GltfLevelTests
         int parent = writer.Add("nodes", new JsonObject { ["translation"] = new JsonArray(10f, 0f, 0f), ["rotation"] = new JsonArray(0f, s, 0f, s), ["children"] = new JsonArray(child) });
         writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["nodes"] = new JsonArray(parent) });
 
-        Level level = GltfLevelLoader.Build(GltfDocument.Parse(writer.ToBytes(), "t.glb", null), "t.glb");
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(writer.ToBytes(), "t.glb", null), "t.glb");
         // The child's origin (1, 2, 0) turned 90° about Y is (0, 2, −1), then moved to (10, 2, −1).
         Assert.That(Vector3.Distance(level.Triangles[0].A, new Vector3(10f, 2f, -1f)), Is.LessThan(1e-5f));
         Assert.That(Vector3.Distance(level.Triangles[0].B, new Vector3(10f, 2f, -2f)), Is.LessThan(1e-5f));
@@ -66,7 +66,7 @@ public sealed class GltfLevelTests
         JsonObject root = (JsonObject)parsed.Root.DeepClone();
         root["buffers"] = new JsonArray(new JsonObject { ["byteLength"] = bin.Length, ["uri"] = "data:application/octet-stream;base64," + Convert.ToBase64String(bin) });
         ((JsonObject)((JsonArray)root["nodes"]!)[0]!)["matrix"] = new JsonArray(1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 3f, 0f, 1f);
-        Level level = GltfLevelLoader.Build(GltfDocument.Parse(Encoding.UTF8.GetBytes(root.ToJsonString()), "f.gltf", null), "f.gltf");
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(root.ToJsonString()), "f.gltf", null), "f.gltf");
         Assert.That(level.Bounds.Min.Y, Is.EqualTo(3f));
     }
 
@@ -75,7 +75,7 @@ public sealed class GltfLevelTests
     {
         var named = Floor with { Material = new LevelMaterial("Wet rock (mu=0.3)", null) };
         byte[] glb = GltfLevelWriter.ToBytes([named]);
-        Level level = GltfLevelLoader.Build(GltfDocument.Parse(glb, "n.glb", null), "n.glb");
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(glb, "n.glb", null), "n.glb");
         Assert.That(level.FrictionOf(0, 1f), Is.EqualTo(0.3f));
     }
 
@@ -116,7 +116,7 @@ public sealed class GltfLevelTests
         byte[] glb = GltfLevelWriter.ToBytes([bad]);
         int binStart = 20 + BitConverter.ToInt32(glb, 12) + 8;
         BitConverter.GetBytes(float.PositiveInfinity).CopyTo(glb, binStart);
-        Assert.That(() => GltfLevelLoader.Build(GltfDocument.Parse(glb, "b.glb", null), "b.glb"), Throws.TypeOf<LevelException>().With.Message.Contains("BrokenRock").And.Message.Contains("vertex 0"));
+        Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(glb, "b.glb", null), "b.glb"), Throws.TypeOf<LevelException>().With.Message.Contains("BrokenRock").And.Message.Contains("vertex 0"));
     }
 
     private static byte[] ExtractBin(byte[] glb)

@@ -35,7 +35,7 @@ public sealed class GltfReaderFeatureTests
          "nodes":[{"mesh":0}],
          "scenes":[{"nodes":[0]}],"scene":0}
         """;
-        Level level = GltfLevelLoader.Build(GltfDocument.Parse(Encoding.UTF8.GetBytes(json), "strip.gltf", null), "strip.gltf");
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(json), "strip.gltf", null), "strip.gltf");
         Assert.Multiple(() =>
         {
             Assert.That(level.Triangles, Has.Count.EqualTo(2));
@@ -97,7 +97,7 @@ public sealed class GltfReaderFeatureTests
          "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
          "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}
         """;
-        Assert.That(() => GltfLevelLoader.Build(GltfDocument.Parse(Encoding.UTF8.GetBytes(json), "short.gltf", null), "short.gltf"),
+        Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(json), "short.gltf", null), "short.gltf"),
             Throws.TypeOf<GltfException>().With.Message.Contains("past the end"));
     }
 
