@@ -94,7 +94,7 @@ internal static class CliCommands
         {
             TextWriter stdout = parse.InvocationConfiguration.Output;
             TextWriter stderr = parse.InvocationConfiguration.Error;
-            Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!);
+            Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!, parse.InvocationConfiguration.Error);
             ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!).Reduced;
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
             int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
@@ -170,7 +170,7 @@ internal static class CliCommands
             var pipeline = new PlanPipeline
             {
                 LevelPath = levelPath,
-                Level = CliInputs.LoadLevel(levelPath),
+                Level = CliInputs.LoadLevel(levelPath, parse.InvocationConfiguration.Error),
                 Character = reduced,
                 Model = model,
                 From = CliInputs.ParsePoint(parse.GetValue(from)!, "--from"),
@@ -222,7 +222,7 @@ internal static class CliCommands
             TextWriter stdout = parse.InvocationConfiguration.Output;
             var clock = Stopwatch.StartNew();
             string? path = CliInputs.FindBundledLevel("desert");
-            Level level = path is null ? CliInputs.Generated("desert") : CliInputs.LoadLevel(path);
+            Level level = path is null ? CliInputs.Generated("desert") : CliInputs.LoadLevel(path, parse.InvocationConfiguration.Error);
             double loadSeconds = clock.Elapsed.TotalSeconds;
             ReducedCharacter skeleton = CharacterPresets.Skeleton();
             var scene = PlanningScene.Create(level, skeleton);

@@ -4,6 +4,7 @@ using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Sampling;
@@ -60,8 +61,8 @@ internal static class CliInputs
         throw new CliException($"{option} takes ACROSS[,UPDOWN] in metres, both positive (for example 0.5,0.25), not '{text}'.");
     }
 
-    /// <summary>Loads a level file (.glb or .gltf).</summary>
-    public static Level LoadLevel(string path)
+    /// <summary>Loads a level file (.glb or .gltf); what its reader repaired is said on <paramref name="notes"/>, once.</summary>
+    public static Level LoadLevel(string path, TextWriter? notes = null)
     {
         CheckPath(path, "Level file");
         if (!File.Exists(path))
@@ -75,7 +76,13 @@ internal static class CliInputs
             throw new InputFileException($"Level file '{path}' is not glTF: give a .glb or .gltf file.");
         }
 
-        return GltfLevelLoader.Load(path);
+        Level level = GltfLevelLoader.Load(path);
+        if (level.Repaired is string repaired)
+        {
+            notes?.WriteLine($"note: {MessageText.Printable(path)} is not valid glTF ({repaired.TrimEnd('.')}); loaded as repaired.");
+        }
+
+        return level;
     }
 
     /// <summary>

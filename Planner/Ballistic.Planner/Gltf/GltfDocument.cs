@@ -9,9 +9,10 @@ namespace Ballistic.Planner.Gltf;
 
 /// <summary>
 /// A glTF 2.0 asset read from a <c>.glb</c> or <c>.gltf</c> file (embedded, data-URI or external buffers): its JSON
-/// and binary buffers, with typed access to accessors and node transforms. Written for this project because no
-/// glTF library is available from the package registry it builds against; it reads what levels and characters
-/// need (meshes, node hierarchies, materials, skins) and refuses compressed extensions with a clear message.
+/// and binary buffers, with typed access to accessors and node transforms. Characters and the animated GLB writer
+/// still read through it; levels are read through SharpGLTF (<see cref="GltfModel"/>), and issue 25 moves the rest.
+/// It reads what characters need (node hierarchies, skins, skinned meshes) and refuses compressed extensions with a
+/// clear message.
 /// Input is not trusted: only regular files are read, within <see cref="GltfLoadOptions"/>' limits; external
 /// buffers and images only from the glTF's own folder or below; every count, offset and stride is checked against
 /// the bytes it reads before anything is allocated; and every problem is a <see cref="GltfException"/> naming the
@@ -22,8 +23,6 @@ internal sealed class GltfDocument
     private const uint GlbMagic = 0x46546C67;
     private const uint JsonChunk = 0x4E4F534A;
     private const uint BinChunk = 0x004E4942;
-
-    private static readonly HashSet<string> SupportedRequiredExtensions = ["KHR_mesh_quantization", "KHR_materials_emissive_strength"];
 
     private readonly List<ReadOnlyMemory<byte>> _buffers;
     private readonly long _bufferBytes;
@@ -64,17 +63,7 @@ internal sealed class GltfDocument
     {
         ArgumentNullException.ThrowIfNull(path);
         options ??= GltfLoadOptions.Default;
-        byte[] bytes = InputFile.Read(path, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{MessageText.Printable(path)} {problem}.", e!));
-        string? directory;
-        try
-        {
-            directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        }
-        catch (Exception e) when (e is ArgumentException or IOException or NotSupportedException)
-        {
-            throw new GltfException($"{MessageText.Printable(path)} cannot be read: {MessageText.Printable(e.Message.TrimEnd('.'))}.", e);
-        }
-
+        (byte[] bytes, string? directory) = GltfModel.ReadFile(path, options);
         return Parse(bytes, path, directory, options);
     }
 
@@ -101,7 +90,6 @@ internal sealed class GltfDocument
         }
 
         JsonObject root = ParseJson(json, name);
-        CheckAsset(root, name);
 
         var buffers = new List<ReadOnlyMemory<byte>>();
         long budget = options.MaxBytes - bytes.Length;
@@ -483,124 +471,10 @@ internal sealed class GltfDocument
             throw new GltfException($"{name} is not a glTF file: its JSON is not valid UTF-8 text.");
         }
 
-        try
-        {
-            using (JsonDocument document = JsonDocument.Parse(json))
-            {
-                if (document.RootElement.ValueKind != JsonValueKind.Object)
-                {
-                    string kind = document.RootElement.ValueKind switch
-                    {
-                        JsonValueKind.Array => "a list",
-                        JsonValueKind.String => "a string",
-                        JsonValueKind.Number => "a number",
-                        _ => document.RootElement.GetRawText(),
-                    };
-                    throw new GltfException($"{name} is not a glTF file: its JSON is {kind}, not an object.");
-                }
-
-                CheckUniqueKeys(document.RootElement, name, []);
-            }
-
-            return (JsonObject)JsonNode.Parse(json.Span)!;
-        }
-        catch (JsonException e)
-        {
-            throw new GltfException($"{name} is not a glTF file: {MessageText.Json(e)}.", e);
-        }
-    }
-
-    /// <summary>
-    /// A repeated key is an error naming the key and where it repeats; so is a string or key that is not valid text
-    /// (an escaped lone surrogate such as <c>\uD800</c>, which the JSON reader accepts but cannot turn into a string).
-    /// </summary>
-    private static void CheckUniqueKeys(JsonElement element, string name, List<string> path)
-    {
-        string Where() => path.Count == 0 ? "the top-level object" : $"the object at {string.Concat(path)}";
-        string Valid(Func<string?> read)
-        {
-            try
-            {
-                return read() ?? "";
-            }
-            catch (InvalidOperationException e)
-            {
-                throw new GltfException($"{name}: {(path.Count == 0 ? "the top-level JSON" : $"the JSON at {string.Concat(path)}")} holds text that is not valid Unicode (an escaped lone surrogate).", e);
-            }
-        }
-
-        if (element.ValueKind == JsonValueKind.Object)
-        {
-            var seen = new HashSet<string>(StringComparer.Ordinal);
-            foreach (JsonProperty property in element.EnumerateObject())
-            {
-                string key = Valid(() => property.Name);
-                if (!seen.Add(key))
-                {
-                    throw new GltfException($"{name}: the key '{MessageText.Printable(key)}' appears twice in {Where()}.");
-                }
-
-                path.Add(path.Count == 0 ? key : "." + key);
-                CheckUniqueKeys(property.Value, name, path);
-                path.RemoveAt(path.Count - 1);
-            }
-        }
-        else if (element.ValueKind == JsonValueKind.Array)
-        {
-            int i = 0;
-            foreach (JsonElement item in element.EnumerateArray())
-            {
-                if (item.ValueKind is JsonValueKind.Object or JsonValueKind.Array or JsonValueKind.String)
-                {
-                    path.Add($"[{i}]");
-                    CheckUniqueKeys(item, name, path);
-                    path.RemoveAt(path.Count - 1);
-                }
-
-                i++;
-            }
-        }
-        else if (element.ValueKind == JsonValueKind.String)
-        {
-            Valid(element.GetString);
-        }
-    }
-
-    private static void CheckAsset(JsonObject root, string name)
-    {
-        if (root["asset"] is not JsonObject asset)
-        {
-            throw new GltfException($"{name} is not a glTF 2.0 asset: it has {(root["asset"] is null ? "no 'asset'" : $"'asset' {Describe(root["asset"])}")}, not an object with a version.");
-        }
-
-        JsonNode? versionNode = asset["version"];
-        string? version = Text(versionNode);
-        if (version is null)
-        {
-            throw new GltfException($"{name} is not a glTF 2.0 asset: asset.version is {(versionNode is null ? "missing" : Describe(versionNode))}, not a string such as \"2.0\".");
-        }
-
-        if (!version.StartsWith("2.", StringComparison.Ordinal))
-        {
-            throw new GltfException($"{name} is not a glTF 2.0 asset (asset.version is '{MessageText.Printable(version)}').");
-        }
-
-        if (root["extensionsRequired"] is JsonNode requiredNode)
-        {
-            if (requiredNode is not JsonArray required)
-            {
-                throw new GltfException($"{name}: extensionsRequired is {Describe(requiredNode)}, not a list of extension names.");
-            }
-
-            for (int i = 0; i < required.Count; i++)
-            {
-                string id = Text(required[i]) ?? throw new GltfException($"{name}: extensionsRequired item {i} is {Describe(required[i])}, not an extension name.");
-                if (!SupportedRequiredExtensions.Contains(id))
-                {
-                    throw new GltfException($"{name} requires the glTF extension {MessageText.Printable(id)}, which Ballistic cannot read; export it without compression.");
-                }
-            }
-        }
+        // The same checks as a level's (SharpGLTF's reader): parses, an object, no key twice, a glTF 2.0 asset with
+        // extensions we read, a node hierarchy one parent each, without cycles, at most GltfModel.MaxNodeDepth deep.
+        GltfModel.CheckJson(System.Text.Encoding.UTF8.GetString(json.Span), name);
+        return (JsonObject)JsonNode.Parse(json.Span)!;
     }
 
     private static ReadOnlyMemory<byte> LoadBuffer(JsonNode? node, int index, ReadOnlyMemory<byte>? binChunk, string name, string? directory, long budget, long maxBytes)

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
@@ -53,18 +54,23 @@ internal sealed partial class GltfModel
     {
         ArgumentNullException.ThrowIfNull(path);
         options ??= GltfLoadOptions.Default;
+        (byte[] bytes, string? directory) = ReadFile(path, options);
+        return Parse(bytes, path, directory, options);
+    }
+
+    /// <summary>A glTF file's bytes (a regular file, within <see cref="GltfLoadOptions.MaxBytes"/>) and its folder, against which its URIs resolve.</summary>
+    /// <exception cref="GltfException">The file is missing, not a regular file, too large, or its path cannot be resolved.</exception>
+    internal static (byte[] Bytes, string? Directory) ReadFile(string path, GltfLoadOptions options)
+    {
         byte[] bytes = InputFile.Read(path, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{MessageText.Printable(path)} {problem}.", e!));
-        string? directory;
         try
         {
-            directory = Path.GetDirectoryName(Path.GetFullPath(path));
+            return (bytes, Path.GetDirectoryName(Path.GetFullPath(path)));
         }
         catch (Exception e) when (e is ArgumentException or IOException or NotSupportedException)
         {
             throw new GltfException($"{MessageText.Printable(path)} cannot be read: {MessageText.Printable(e.Message.TrimEnd('.'))}.", e);
         }
-
-        return Parse(bytes, path, directory, options);
     }
 
     /// <summary>Parses glTF bytes (binary GLB or JSON).</summary>
@@ -81,17 +87,18 @@ internal sealed partial class GltfModel
         string printable = MessageText.Printable(name);
         try
         {
-            return new GltfModel(Read(bytes, printable, directory, options, ValidationMode.Strict, null), name, options, null);
+            return new GltfModel(Read(bytes, printable, directory, options, ValidationMode.Strict, repair: false), name, options, null);
         }
         catch (ModelException strict)
         {
             try
             {
-                return new GltfModel(Read(bytes, printable, directory, options, ValidationMode.TryFix, WithoutBounds), name, options, Describe(strict));
+                ModelRoot repaired = Read(bytes, printable, directory, options, ValidationMode.TryFix, repair: true);
+                return new GltfModel(repaired, name, options, Locate(Describe(strict), repaired));
             }
             catch (ModelException e)
             {
-                throw new GltfException($"{printable}: {Describe(e)}");
+                throw new GltfException($"{printable}: {Locate(Describe(e), Unchecked(bytes, printable, directory, options))}");
             }
         }
     }
@@ -115,29 +122,108 @@ internal sealed partial class GltfModel
         return local;
     }
 
+    /// <summary>
+    /// A VEC3 accessor's elements (decoded as the library decodes them: normalised or quantised integers, sparse
+    /// substitutions). Tightly packed floats, what exporters write, are copied in one block instead of element by element.
+    /// </summary>
+    public static Vector3[] Vectors(Accessor accessor)
+    {
+        ArgumentNullException.ThrowIfNull(accessor);
+        if (Packed(accessor, EncodingType.FLOAT, 12) is ArraySegment<byte> bytes)
+        {
+            return MemoryMarshal.Cast<byte, Vector3>(bytes.AsSpan()).ToArray();
+        }
+
+        return [.. accessor.AsVector3Array()];
+    }
+
+    /// <summary>
+    /// An index accessor's values as <see cref="int"/>; a value above 2³¹ − 1 comes out negative, for the caller to
+    /// refuse. Tightly packed 32-bit and 16-bit indices are read in one pass.
+    /// </summary>
+    public static int[] Indices(Accessor accessor)
+    {
+        ArgumentNullException.ThrowIfNull(accessor);
+        if (Packed(accessor, EncodingType.UNSIGNED_INT, 4) is ArraySegment<byte> words)
+        {
+            return MemoryMarshal.Cast<byte, int>(words.AsSpan()).ToArray();
+        }
+
+        if (Packed(accessor, EncodingType.UNSIGNED_SHORT, 2) is ArraySegment<byte> halves)
+        {
+            ReadOnlySpan<ushort> values = MemoryMarshal.Cast<byte, ushort>(halves.AsSpan());
+            int[] result = new int[values.Length];
+            for (int i = 0; i < values.Length; i++)
+            {
+                result[i] = values[i];
+            }
+
+            return result;
+        }
+
+        IList<uint> all = accessor.AsIndicesArray();
+        int[] indices = new int[all.Count];
+        for (int i = 0; i < indices.Length; i++)
+        {
+            indices[i] = unchecked((int)all[i]);
+        }
+
+        return indices;
+    }
+
+    /// <summary>
+    /// The bytes of an accessor whose elements lie back to back in its buffer view (no stride beyond the element, no
+    /// sparse substitution, not normalised, of <paramref name="encoding"/> with <paramref name="size"/>-byte
+    /// elements), on a little-endian machine; <c>null</c> otherwise. The library has checked them against the view.
+    /// </summary>
+    private static ArraySegment<byte>? Packed(Accessor accessor, EncodingType encoding, int size)
+    {
+        if (!BitConverter.IsLittleEndian || accessor.IsSparse || accessor.Normalized || accessor.Encoding != encoding
+            || accessor.Format.ByteSize != size || accessor.SourceBufferView is not BufferView view
+            || (view.ByteStride != 0 && view.ByteStride != size))
+        {
+            return null;
+        }
+
+        long length = (long)accessor.Count * size;
+        ArraySegment<byte> content = view.Content;
+        if (accessor.ByteOffset < 0 || accessor.ByteOffset + length > content.Count)
+        {
+            return null;
+        }
+
+        return content.Slice(accessor.ByteOffset, (int)length);
+    }
+
     /// <summary>" ('name')" for an element with a name, else nothing: for messages.</summary>
     public static string Named(string? name) => string.IsNullOrEmpty(name) ? "" : $" ('{MessageText.Printable(name)}')";
 
     /// <summary>
-    /// Reads with SharpGLTF in <paramref name="mode"/>, external files through the callback that confines them to
+    /// Reads with SharpGLTF in <paramref name="mode"/>, the JSON first through <see cref="Prepare"/> (with
+    /// <paramref name="repair"/>, without accessor bounds), external files through the callback that confines them to
     /// <paramref name="directory"/> and to what is left of the byte limit; every exception becomes a
     /// <see cref="GltfException"/> but the library's <see cref="ModelException"/>, left to the caller.
     /// </summary>
-    private static ModelRoot Read(byte[] bytes, string name, string? directory, GltfLoadOptions options, ValidationMode mode, JsonFilterCallback? filter)
+    private static ModelRoot Read(byte[] bytes, string name, string? directory, GltfLoadOptions options, ValidationMode mode, bool repair)
     {
         long budget = options.MaxBytes - bytes.Length;
         GltfException? refused = null;
+        var elements = new Dictionary<string, string>(StringComparer.Ordinal);
         ArraySegment<byte> External(string uri)
         {
             try
             {
+                // The element that names the URI, as the file wrote it (the library may hand it over percent-decoded).
+                string element = elements.TryGetValue(uri, out string? named) ? named
+                    : elements.FirstOrDefault(e => Unescaped(e.Key) == uri).Value ?? "a file";
+                string raw = elements.FirstOrDefault(e => e.Value == element && (e.Key == uri || Unescaped(e.Key) == uri)).Key ?? uri;
                 if (directory is null)
                 {
-                    throw new GltfException($"{name}: it refers to the external file '{MessageText.Printable(uri)}', which cannot be resolved here.");
+                    throw new GltfException($"{name}: {element} refers to the external file '{MessageText.Printable(raw)}', which cannot be resolved here.");
                 }
 
-                string path = ReferencedFile.Resolve(directory, uri, problem => new GltfException($"{name}: the URI '{MessageText.Printable(uri)}' {problem}."));
-                byte[] data = InputFile.Read(path, Math.Max(budget, 0), $"what is left of the limit of {options.MaxBytes} with the glTF and its other files, GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{name}: the file '{MessageText.Printable(uri)}' {problem}.", e!));
+                string path = ReferencedFile.Resolve(directory, raw, problem => new GltfException($"{name}: {element}'s URI '{MessageText.Printable(raw)}' {problem}."));
+                byte[] data = InputFile.Read(path, Math.Max(budget, 0), $"what is left of the limit of {options.MaxBytes} with the glTF and its other files, GltfLoadOptions.MaxBytes", (problem, e) => new GltfException($"{name}: {element}'s file '{MessageText.Printable(raw)}' {problem}.", e!));
                 budget -= data.Length;
                 return data;
             }
@@ -152,11 +238,15 @@ internal sealed partial class GltfModel
         {
             ReadContext context = ReadContext.Create(External);
             context.Validation = mode;
-            context.JsonPreprocessor = filter;
+            context.JsonPreprocessor = json => Prepare(json, name, repair, elements);
             using var stream = new MemoryStream(bytes, writable: false);
             return context.ReadSchema2(stream);
         }
         catch (ModelException) when (refused is null)
+        {
+            throw;
+        }
+        catch (GltfException)
         {
             throw;
         }
@@ -168,69 +258,504 @@ internal sealed partial class GltfModel
         }
     }
 
-    /// <summary>
-    /// The repair pass's filter on the JSON: every accessor's <c>min</c> and <c>max</c> dropped. Stale bounds (a
-    /// vertex moved after they were written, a rounding in the exporter) are the commonest defect SharpGLTF's strict
-    /// and repairing modes both refuse; Godot and Blender import such files, and nothing here reads the bounds.
-    /// </summary>
-    private static string WithoutBounds(string json)
+    /// <summary>The asset read without validation, only to name the elements a message speaks of; <c>null</c> when even that fails.</summary>
+    private static ModelRoot? Unchecked(byte[] bytes, string name, string? directory, GltfLoadOptions options)
     {
         try
         {
-            if (JsonNode.Parse(json) is JsonObject root && root["accessors"] is JsonArray accessors)
-            {
-                foreach (JsonObject accessor in accessors.OfType<JsonObject>())
-                {
-                    accessor.Remove("min");
-                    accessor.Remove("max");
-                }
-
-                return root.ToJsonString();
-            }
+            return Read(bytes, name, directory, options, ValidationMode.Skip, repair: true);
         }
-        catch (Exception e) when (e is JsonException or ArgumentException or InvalidOperationException)
+        catch (Exception e) when (e is ModelException or GltfException)
         {
-            // Malformed, or a key twice in one object: left as it is, for the library to say what is wrong with it.
+            return null;
+        }
+    }
+
+    /// <summary>
+    /// A SharpGLTF message with its element (<c>Accessor[3]</c>, <c>Node[2]</c>…) in our words, and what uses it
+    /// where <paramref name="model"/> says: "accessor 3 (POSITION of primitive 0 of mesh 1 ('Rock'))".
+    /// </summary>
+    private static string Locate(string message, ModelRoot? model)
+    {
+        Match match = Element().Match(message);
+        if (!match.Success)
+        {
+            return message;
+        }
+
+        int index = int.Parse(match.Groups[2].Value, System.Globalization.CultureInfo.InvariantCulture);
+        string kind = match.Groups[1].Value switch
+        {
+            "BufferView" => "buffer view",
+            "MeshPrimitive" => "mesh primitive",
+            string other => other.ToLowerInvariant(),
+        };
+        string? context = model is null ? null : Context(model, kind, index);
+        return $"{kind} {index}{(context is null ? "" : $" ({context})")}: {match.Groups[3].Value.TrimStart().TrimStart(':').TrimStart()}";
+    }
+
+    /// <summary>What element <paramref name="index"/> of <paramref name="kind"/> is, by its name or its first user; <c>null</c> when unknown.</summary>
+    private static string? Context(ModelRoot model, string kind, int index)
+    {
+        string? Of(Accessor accessor)
+        {
+            foreach (Mesh mesh in model.LogicalMeshes)
+            {
+                foreach (MeshPrimitive primitive in mesh.Primitives)
+                {
+                    string where = $"primitive {primitive.LogicalIndex} of mesh {mesh.LogicalIndex}{Named(mesh.Name)}";
+                    if (primitive.IndexAccessor == accessor)
+                    {
+                        return "indices of " + where;
+                    }
+
+                    foreach (KeyValuePair<string, Accessor> attribute in primitive.VertexAccessors)
+                    {
+                        if (attribute.Value == accessor)
+                        {
+                            return $"{MessageText.Printable(attribute.Key)} of {where}";
+                        }
+                    }
+                }
+            }
+
+            return string.IsNullOrEmpty(accessor.Name) ? null : $"'{MessageText.Printable(accessor.Name)}'";
+        }
+
+        try
+        {
+            return kind switch
+            {
+                "accessor" when index < model.LogicalAccessors.Count => Of(model.LogicalAccessors[index]),
+                "buffer view" when index < model.LogicalBufferViews.Count => model.LogicalAccessors.FirstOrDefault(a => a.SourceBufferView?.LogicalIndex == index) is Accessor user
+                    ? $"read by accessor {user.LogicalIndex}{(Of(user) is string of ? $", {of}" : "")}"
+                    : null,
+                "node" when index < model.LogicalNodes.Count => NameOnly(model.LogicalNodes[index].Name),
+                "mesh" when index < model.LogicalMeshes.Count => NameOnly(model.LogicalMeshes[index].Name),
+                "material" when index < model.LogicalMaterials.Count => NameOnly(model.LogicalMaterials[index].Name),
+                "skin" when index < model.LogicalSkins.Count => NameOnly(model.LogicalSkins[index].Name),
+                _ => null,
+            };
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return null; // an unvalidated model's links may be broken: the message goes without its context
+        }
+
+        static string? NameOnly(string? name) => string.IsNullOrEmpty(name) ? null : $"'{MessageText.Printable(name)}'";
+    }
+
+    /// <summary>The deepest node hierarchy read (a node under 999 ancestors); rigs and levels nest a few dozen deep.</summary>
+    public const int MaxNodeDepth = 1000;
+
+    /// <summary>
+    /// What we do to the JSON before SharpGLTF parses it (its <see cref="ReadSettings.JsonPreprocessor"/> hook):
+    /// a byte-order mark some exporters write is dropped; JSON that does not parse, is not an object or repeats a key
+    /// is refused with where (<see cref="CheckUniqueKeys"/>); the node hierarchy is checked (<see cref="CheckNodes"/>),
+    /// which the library checks recursively, so that a deep or looping hierarchy cannot overflow the stack or take
+    /// quadratic time; and with <paramref name="repair"/> every accessor's <c>min</c> and <c>max</c> are dropped.
+    /// Stale bounds (a vertex moved after they were written, a rounding in the exporter) are the commonest defect
+    /// the library's strict and repairing modes both refuse; Godot and Blender import such files, and nothing here
+    /// reads the bounds.
+    /// </summary>
+    private static string Prepare(string json, string name, bool repair, Dictionary<string, string> elements)
+    {
+        json = json.TrimStart('\uFEFF');
+        if (json.Contains('\uFFFD', StringComparison.Ordinal))
+        {
+            // The library decodes the bytes with replacement characters: text that was not UTF-8 shows as U+FFFD.
+            throw new GltfException($"{name} is not a glTF file: its JSON is not valid UTF-8 text.");
+        }
+
+        CheckJson(json, name, elements);
+        if (repair && JsonNode.Parse(json) is JsonObject repaired && repaired["accessors"] is JsonArray accessors)
+        {
+            foreach (JsonObject accessor in accessors.OfType<JsonObject>())
+            {
+                accessor.Remove("min");
+                accessor.Remove("max");
+            }
+
+            return repaired.ToJsonString();
         }
 
         return json;
     }
 
     /// <summary>
+    /// The checks made on a glTF's JSON text before it is read: it parses, is an object, repeats no key
+    /// (<see cref="CheckUniqueKeys"/>), has a glTF 2.0 asset and only extensions we can read (<see cref="CheckAsset"/>), and
+    /// a node hierarchy within bounds (<see cref="CheckNodes"/>). The URIs of buffers and images go into
+    /// <paramref name="elements"/> (the URI as written, and the element, "buffer 2"), when given.
+    /// </summary>
+    /// <exception cref="GltfException">One of the checks fails; the message names the file and where.</exception>
+    internal static void CheckJson(string json, string name, Dictionary<string, string>? elements = null)
+    {
+        JsonDocument document;
+        try
+        {
+            document = JsonDocument.Parse(json);
+        }
+        catch (JsonException e)
+        {
+            throw new GltfException($"{name} is not a glTF file: {MessageText.Json(e)}.");
+        }
+
+        using (document)
+        {
+            JsonElement root = document.RootElement;
+            if (root.ValueKind != JsonValueKind.Object)
+            {
+                string kind = root.ValueKind switch
+                {
+                    JsonValueKind.Array => "a list",
+                    JsonValueKind.String => "a string",
+                    JsonValueKind.Number => "a number",
+                    _ => root.GetRawText(),
+                };
+                throw new GltfException($"{name} is not a glTF file: its JSON is {kind}, not an object.");
+            }
+
+            CheckUniqueKeys(root, name, []);
+            CheckAsset(root, name);
+            if (root.TryGetProperty("nodes", out JsonElement nodes) && nodes.ValueKind == JsonValueKind.Array)
+            {
+                CheckNodes(nodes, name);
+            }
+
+            foreach ((string list, string kind) in new[] { ("buffers", "buffer"), ("images", "image") })
+            {
+                if (elements is not null && root.TryGetProperty(list, out JsonElement items) && items.ValueKind == JsonValueKind.Array)
+                {
+                    int i = 0;
+                    foreach (JsonElement item in items.EnumerateArray())
+                    {
+                        if (item.ValueKind == JsonValueKind.Object && item.TryGetProperty("uri", out JsonElement uri) && uri.ValueKind == JsonValueKind.String && uri.GetString() is string text)
+                        {
+                            elements.TryAdd(text, $"{kind} {i}");
+                        }
+
+                        i++;
+                    }
+                }
+            }
+        }
+    }
+
+    /// <summary>
+    /// A repeated key is an error naming the key and where it repeats (readers differ in which of the two they keep,
+    /// so the level baked could differ from the one the engine shows); so is a string or key that is not valid text
+    /// (an escaped lone surrogate such as <c>\uD800</c>, which the JSON reader accepts but cannot turn into a string).
+    /// Recursive within the JSON reader's nesting limit of 64.
+    /// </summary>
+    private static void CheckUniqueKeys(JsonElement element, string name, List<(string? Key, int Index)> path)
+    {
+        string At() => string.Concat(path.Select((p, i) => p.Key is null ? $"[{p.Index}]" : i == 0 ? p.Key : "." + p.Key));
+        string Where() => path.Count == 0 ? "the top-level object" : $"the object at {At()}";
+        GltfException NotUnicode() => new($"{name}: {(path.Count == 0 ? "the top-level JSON" : $"the JSON at {At()}")} holds text that is not valid Unicode (an escaped lone surrogate).");
+        string Valid(JsonProperty property)
+        {
+            try
+            {
+                return property.Name;
+            }
+            catch (InvalidOperationException)
+            {
+                throw NotUnicode();
+            }
+        }
+
+        if (element.ValueKind == JsonValueKind.Object)
+        {
+            // Most objects have a few keys: each compared with those before it, a set only past the first eight.
+            HashSet<string>? seen = null;
+            int k = 0;
+            foreach (JsonProperty property in element.EnumerateObject())
+            {
+                string key = Valid(property);
+                bool repeated = false;
+                if (k < 8)
+                {
+                    int j = 0;
+                    foreach (JsonProperty before in element.EnumerateObject())
+                    {
+                        if (j++ == k)
+                        {
+                            break;
+                        }
+
+                        repeated |= before.NameEquals(key);
+                    }
+                }
+                else
+                {
+                    seen ??= [.. element.EnumerateObject().Take(k).Select(p => p.Name)];
+                    repeated = !seen.Add(key);
+                }
+
+                if (repeated)
+                {
+                    throw new GltfException($"{name}: the key '{MessageText.Printable(key)}' appears twice in {Where()}.");
+                }
+
+                k++;
+                if (property.Value.ValueKind is JsonValueKind.Object or JsonValueKind.Array or JsonValueKind.String)
+                {
+                    path.Add((key, 0));
+                    CheckUniqueKeys(property.Value, name, path);
+                    path.RemoveAt(path.Count - 1);
+                }
+            }
+        }
+        else if (element.ValueKind == JsonValueKind.Array)
+        {
+            int i = 0;
+            foreach (JsonElement item in element.EnumerateArray())
+            {
+                if (item.ValueKind is JsonValueKind.Object or JsonValueKind.Array or JsonValueKind.String)
+                {
+                    path.Add((null, i));
+                    CheckUniqueKeys(item, name, path);
+                    path.RemoveAt(path.Count - 1);
+                }
+
+                i++;
+            }
+        }
+        else if (element.ValueKind == JsonValueKind.String)
+        {
+            try
+            {
+                _ = element.GetString();
+            }
+            catch (InvalidOperationException)
+            {
+                throw NotUnicode();
+            }
+        }
+    }
+
+    /// <summary>The glTF extensions a file may require: those whose data the library decodes for us.</summary>
+    private static readonly HashSet<string> SupportedRequiredExtensions = ["KHR_mesh_quantization", "KHR_materials_emissive_strength"];
+
+    /// <summary>
+    /// The asset's version and required extensions, which the library reads with misleading messages when they are
+    /// of the wrong type ("Empty array found" for a version written as a number) or not checked at all.
+    /// </summary>
+    private static void CheckAsset(JsonElement root, string name)
+    {
+        if (!root.TryGetProperty("asset", out JsonElement asset) || asset.ValueKind != JsonValueKind.Object)
+        {
+            throw new GltfException($"{name} is not a glTF 2.0 asset: it has {(root.TryGetProperty("asset", out JsonElement other) ? $"'asset' {Describe(other)}" : "no 'asset'")}, not an object with a version.");
+        }
+
+        if (!asset.TryGetProperty("version", out JsonElement version) || version.ValueKind != JsonValueKind.String)
+        {
+            throw new GltfException($"{name} is not a glTF 2.0 asset: asset.version is {(asset.TryGetProperty("version", out JsonElement v) ? Describe(v) : "missing")}, not a string such as \"2.0\".");
+        }
+
+        if (!(version.GetString() ?? "").StartsWith("2.", StringComparison.Ordinal))
+        {
+            throw new GltfException($"{name} is not a glTF 2.0 asset (asset.version is '{MessageText.Printable(version.GetString() ?? "")}').");
+        }
+
+        if (root.TryGetProperty("extensionsRequired", out JsonElement required))
+        {
+            if (required.ValueKind != JsonValueKind.Array)
+            {
+                throw new GltfException($"{name}: extensionsRequired is {Describe(required)}, not a list of extension names.");
+            }
+
+            int i = 0;
+            foreach (JsonElement item in required.EnumerateArray())
+            {
+                string id = item.ValueKind == JsonValueKind.String ? item.GetString() ?? "" : throw new GltfException($"{name}: extensionsRequired item {i} is {Describe(item)}, not an extension name.");
+                if (!SupportedRequiredExtensions.Contains(id))
+                {
+                    throw new GltfException($"{name} requires the glTF extension {MessageText.Printable(id)}, which Ballistic cannot read; export it without compression.");
+                }
+
+                i++;
+            }
+        }
+    }
+
+    /// <summary>A short description of a JSON value for messages: "the string \"x\"", "the number 2.0", "a list of 3", "an object", "null".</summary>
+    private static string Describe(JsonElement element)
+    {
+        static string Clip(string s) => s.Length > 40 ? s[..37] + "…" : s;
+        return element.ValueKind switch
+        {
+            JsonValueKind.Object => "an object",
+            JsonValueKind.Array => element.GetArrayLength() == 0 ? "an empty list" : $"a list of {element.GetArrayLength()}",
+            JsonValueKind.String => $"the string {Clip(MessageText.Printable(element.GetRawText()))}",
+            JsonValueKind.Number => $"the number {Clip(element.GetRawText())}",
+            _ => element.GetRawText(),
+        };
+    }
+
+    /// <summary>A URI percent-decoded, or as it is when it does not decode.</summary>
+    private static string Unescaped(string uri)
+    {
+        try
+        {
+            return Uri.UnescapeDataString(uri);
+        }
+        catch (UriFormatException)
+        {
+            return uri;
+        }
+    }
+
+    /// <summary>
+    /// The node hierarchy, linear in the nodes: each child listed by one parent, once, not itself; no cycle; at most
+    /// <see cref="MaxNodeDepth"/> deep. Children that are not node indices are left to the library.
+    /// </summary>
+    /// <exception cref="GltfException">A node has two parents, lists a child twice or itself, the hierarchy loops, or is deeper than allowed.</exception>
+    private static void CheckNodes(JsonElement nodes, string name)
+    {
+        int count = nodes.GetArrayLength();
+        int[] parents = new int[count];
+        Array.Fill(parents, -1);
+        int n = 0;
+        foreach (JsonElement node in nodes.EnumerateArray())
+        {
+            if (node.ValueKind == JsonValueKind.Object && node.TryGetProperty("children", out JsonElement children) && children.ValueKind == JsonValueKind.Array)
+            {
+                foreach (JsonElement child in children.EnumerateArray())
+                {
+                    if (child.ValueKind != JsonValueKind.Number || !child.TryGetInt32(out int c) || c < 0 || c >= count)
+                    {
+                        continue;
+                    }
+
+                    if (c == n)
+                    {
+                        throw new GltfException($"{name}: node {n} lists itself as a child.");
+                    }
+
+                    if (parents[c] == n)
+                    {
+                        throw new GltfException($"{name}: node {n} lists node {c} as a child twice.");
+                    }
+
+                    if (parents[c] >= 0)
+                    {
+                        throw new GltfException($"{name}: node {c} is a child of both node {parents[c]} and node {n}; a glTF node has at most one parent.");
+                    }
+
+                    parents[c] = n;
+                }
+            }
+
+            n++;
+        }
+
+        // With one parent each, following parents from any node ends at a root or loops; each node is measured once.
+        int[] depth = new int[count]; // 0 unmeasured, -1 on the current path, else its depth (a root is 1)
+        var path = new List<int>();
+        for (int start = 0; start < count; start++)
+        {
+            path.Clear();
+            int p = start;
+            while (p >= 0 && depth[p] == 0)
+            {
+                depth[p] = -1;
+                path.Add(p);
+                p = parents[p];
+            }
+
+            if (p >= 0 && depth[p] < 0)
+            {
+                throw new GltfException($"{name}: the node hierarchy has a cycle through node {p}.");
+            }
+
+            int below = p >= 0 ? depth[p] : 0;
+            for (int i = path.Count - 1; i >= 0; i--)
+            {
+                depth[path[i]] = ++below;
+                if (below > MaxNodeDepth)
+                {
+                    throw new GltfException($"{name}: node {path[i]} lies {below} deep in the node hierarchy; at most {MaxNodeDepth} levels are read (GltfModel.MaxNodeDepth).");
+                }
+            }
+        }
+    }
+
+    /// <summary>
     /// One line from a SharpGLTF exception: its message without the library's advice to run the validator and its
-    /// parameter names, and in place of a .NET message that names a failed argument check (an index out of range in a
-    /// link the library did not validate), what it means for the file.
+    /// parameter names. Where the library's validation speaks of an element (<c>Accessor[3] …</c>), <see cref="Locate"/>
+    /// names it further. Where its JSON reader or a failed argument check speaks in .NET's words (which name no
+    /// element: the reader does not say where it was), the message says what that means for the file.
     /// </summary>
     private static string Describe(Exception e)
     {
         string message = e switch
         {
-            JsonException => "the JSON is malformed" + (e.Message.Length > 0 ? ": " + e.Message : ""),
+            NotImplementedException or NotSupportedException => "its JSON has a value of a type the glTF 2.0 schema does not allow where it is",
+            NotFiniteNumberException => "a vertex attribute holds a number that is not finite (NaN or infinity), which the library's repair cannot mend",
             EndOfStreamException => "the file ends before its content does (truncated)",
             _ => e.Message,
         };
         int advice = message.IndexOf("Model generated by", StringComparison.Ordinal);
         message = advice >= 0 ? message[..advice] : message;
-        message = ParameterName().Replace(message, "");
-        if (DuplicateKey().Match(message) is { Success: true } duplicate)
+        message = ParameterName().Replace(message, "").Trim();
+        string where = message.Split(' ', 2)[0].TrimEnd(':');
+        string? plain = GlbLength().Match(message) is { Success: true } length
+            ? $"its GLB header gives {length.Groups[1].Value} bytes but the file holds {length.Groups[2].Value}{(long.Parse(length.Groups[2].Value, System.Globalization.CultureInfo.InvariantCulture) < long.Parse(length.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) ? " (it is truncated)" : "")}"
+            : Capacity().Match(message) is { Success: true } capacity
+                ? $"a GLB chunk declares {capacity.Groups[1].Value} bytes, more than the file holds (it is truncated or corrupt)"
+                : TokenAsNumber().Match(message) is { Success: true } token
+                    ? $"its JSON has {Token(token.Groups[1].Value)} where the glTF 2.0 schema wants a number"
+                    : UnexpectedToken().Match(message) is { Success: true } unexpected
+                        ? $"its JSON has {Token(unexpected.Groups[1].Value)} where the glTF 2.0 schema wants another kind of value"
+                        : message.Contains("Empty array found", StringComparison.Ordinal) ? "its JSON has an empty list where the glTF 2.0 schema wants a value or a list with items"
+                        : message.Contains("is out of bounds for an Int", StringComparison.Ordinal) ? "its JSON has a number where the glTF 2.0 schema wants a whole number within range"
+                        : message.Contains("System.Text.Json.JsonException", StringComparison.Ordinal) ? "its JSON does not follow the glTF 2.0 schema"
+                        : message.Contains("Offset and length were out of bounds", StringComparison.Ordinal) ? "an offset or length runs past the end of the bytes it refers to (a buffer view past its buffer, or an accessor past its view)"
+                        : RuntimeWords.Any(w => message.Contains(w, StringComparison.Ordinal)) ? "an element refers to another that does not exist (an index past the end of its list)"
+                        : null;
+        if (plain is not null)
         {
-            message = $"the JSON names '{duplicate.Groups[1].Value.TrimEnd('.')}' twice in one object";
+            message = Element().IsMatch(where) ? $"{where} {plain}" : plain;
         }
-        else if (RuntimeWords.Any(w => message.Contains(w, StringComparison.Ordinal)))
+        else if (where == "ModelRoot")
         {
-            string where = message.Split(' ', 2)[0];
-            message = $"{where}: an element refers to another that does not exist (an index past the end of its list)";
+            message = message["ModelRoot".Length..].Trim();
         }
 
         string line = MessageText.Printable(message.ReplaceLineEndings(" ").Trim());
         return line.Length == 0 ? $"SharpGLTF cannot read it ({e.GetType().Name})" : line.TrimEnd('.') + ".";
+
+        static string Token(string kind) => kind switch
+        {
+            "StartArray" => "a list",
+            "StartObject" => "an object",
+            "String" => "a string",
+            "Number" => "a number",
+            "True" or "False" => "true or false",
+            "Null" => "null",
+            _ => "a value",
+        };
     }
+
+    [GeneratedRegex(@"Cannot get the value of a token type '(\w+)' as a number")]
+    private static partial Regex TokenAsNumber();
+
+    [GeneratedRegex(@"Unexpected token (\w+)")]
+    private static partial Regex UnexpectedToken();
 
     /// <summary>.NET's own phrases for a failed argument check, which say nothing to the file's author.</summary>
     private static readonly string[] RuntimeWords = ["Index was out of range", "Specified argument was out of the range", "Object reference not set", "Value cannot be null"];
 
-    [GeneratedRegex(@"An item with the same key has already been added\. Key: (\S+)")]
-    private static partial Regex DuplicateKey();
+    [GeneratedRegex(@"^(Accessor|BufferView|Buffer|Node|Mesh|MeshPrimitive|Material|Skin|Texture|Image|Sampler|Scene|Camera|Animation)\[(\d+)\](.*)$")]
+    private static partial Regex Element();
+
+    [GeneratedRegex(@"specified length of the file \((\d+)\) is not equal to the actual length of the file \((\d+)\)")]
+    private static partial Regex GlbLength();
+
+    [GeneratedRegex(@"(\d+) bytes to read exceeds maximum capacity")]
+    private static partial Regex Capacity();
 
     [GeneratedRegex(@"\s*\(Parameter '[^']*'\)")]
     private static partial Regex ParameterName();

@@ -12,9 +12,10 @@ namespace Ballistic.Planner.Levels;
 /// <summary>
 /// Reads a level from a glTF 2.0 file (<c>.glb</c> or <c>.gltf</c>): every triangle mesh of the default scene with
 /// its node transforms applied. A material sets its surface friction with <c>"extras": {"friction": μ}</c>, or with
-/// <c>mu=μ</c> or <c>friction=μ</c> in its name; otherwise the character's default applies. The node hierarchy is
-/// walked once (a node with two parents, a cycle, or a node a scene reaches twice is an error naming it), and the
-/// vertices and triangles are counted against <see cref="GltfLoadOptions"/> before they are read.
+/// <c>mu=μ</c> or <c>friction=μ</c> in its name; otherwise the character's default applies. The file is read and
+/// validated by SharpGLTF (<see cref="GltfModel"/>: what it repaired is <see cref="Level.Repaired"/>); the scene is
+/// walked once (a node a scene reaches twice is an error naming it), and the vertices and triangles are counted
+/// against <see cref="GltfLoadOptions"/> before they are read.
 /// </summary>
 public static partial class GltfLevelLoader
 {
@@ -95,7 +96,9 @@ public static partial class GltfLevelLoader
             }
         }
 
-        return builder.Build();
+        Level level = builder.Build();
+        level.Repaired = model.Repaired;
+        return level;
     }
 
     private static void AddPrimitive(LevelBuilder builder, GltfModel model, MeshPrimitive primitive, string what, string name, Matrix4x4 world, LevelMaterial[] materials, LevelMaterial fallback, Counts counts)
@@ -119,7 +122,7 @@ public static partial class GltfLevelLoader
             throw new GltfException($"{model.Name}: {what}'s POSITION accessor {positionAccessor.LogicalIndex} holds {positionAccessor.Dimensions}, not VEC3.");
         }
 
-        Vector3[] positions = [.. positionAccessor.AsVector3Array()];
+        Vector3[] positions = GltfModel.Vectors(positionAccessor);
         int[] indices = indexAccessor is null ? [.. Enumerable.Range(0, positions.Length)] : Indices(model, indexAccessor, what);
         int[] triangles = mode switch
         {
@@ -134,14 +137,13 @@ public static partial class GltfLevelLoader
     /// <summary>An index accessor's values, each a vertex index (the library has checked the encoding is unsigned).</summary>
     private static int[] Indices(GltfModel model, Accessor accessor, string what)
     {
-        IList<uint> values = accessor.AsIndicesArray();
-        int[] indices = new int[values.Count];
+        int[] indices = GltfModel.Indices(accessor);
         for (int i = 0; i < indices.Length; i++)
         {
-            uint v = values[i];
-            indices[i] = v <= int.MaxValue
-                ? (int)v
-                : throw new GltfException(string.Create(CultureInfo.InvariantCulture, $"{model.Name}: {what}'s index accessor {accessor.LogicalIndex} holds the value {v} at element {i}, too large for an index."));
+            if (indices[i] < 0)
+            {
+                throw new GltfException(string.Create(CultureInfo.InvariantCulture, $"{model.Name}: {what}'s index accessor {accessor.LogicalIndex} holds the value {(uint)indices[i]} at element {i}, too large for an index."));
+            }
         }
 
         return indices;

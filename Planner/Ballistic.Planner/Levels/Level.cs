@@ -44,6 +44,13 @@ public sealed class Level
     /// <summary>Where the level came from (a file path, or a name given by code).</summary>
     public string Source { get; }
 
+    /// <summary>
+    /// What was wrong with the level's glTF file and was repaired as it loaded (one line: stale accessor bounds, a
+    /// rotation a little off unit length, as SharpGLTF's validation found them), or <c>null</c> when the file was
+    /// valid as it was. Tools show it once; the level itself is right.
+    /// </summary>
+    public string? Repaired { get; internal set; }
+
     /// <summary>World bounds of all triangles.</summary>
     public Aabb Bounds { get; }
 

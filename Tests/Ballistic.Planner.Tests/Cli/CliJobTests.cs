@@ -22,6 +22,28 @@ public sealed class CliJobTests
     public void RemoveFolder() => Directory.Delete(_folder, recursive: true);
 
     [Test]
+    public void ALevelWithStaleAccessorBoundsLoadsAsRepairedAndSaysSoOnce()
+    {
+        // An exporter that moved a vertex after writing the bounds: SharpGLTF's validation refuses the file in both its
+        // modes, Godot and Blender import it, and so do we, with one note.
+        (System.Text.Json.Nodes.JsonObject json, byte[] bin) = Fuzz.FuzzInputs.SplitGlb(File.ReadAllBytes(RepositoryFiles.Level("gap-course")));
+        json["accessors"]![0]!["max"] = new System.Text.Json.Nodes.JsonArray(0.5, 0.5, 0.5);
+        string level = Path.Combine(_folder, "stale.glb");
+        File.WriteAllBytes(level, Fuzz.FuzzInputs.JoinGlb(System.Text.Encoding.UTF8.GetBytes(json.ToJsonString()), bin));
+        Assert.That(Ballistic.Planner.Levels.GltfLevelLoader.Load(RepositoryFiles.Level("gap-course")).Repaired, Is.Null, "the bundled level is valid as it is");
+
+        (int code, string output, string error) = Run("bake", "--level", level, "--character", "skeleton", "--max-nodes", "30", "--out", Path.Combine(_folder, "stale.roadmap"));
+        string[] notes = [.. error.Split('\n').Where(l => l.StartsWith("note: ", StringComparison.Ordinal))];
+        Assert.Multiple(() =>
+        {
+            Assert.That(code, Is.Zero, error);
+            Assert.That(output, Does.Contain("30 nodes"));
+            Assert.That(notes, Has.Length.EqualTo(1));
+            Assert.That(notes.FirstOrDefault(), Does.StartWith($"note: {level} is not valid glTF (accessor 0 (POSITION of primitive 0 of mesh 0").And.EndWith("); loaded as repaired."));
+        });
+    }
+
+    [Test]
     public void PlanWritesAReportWhoseJumpsObeyThePhysics()
     {
         string report = Path.Combine(_folder, "plan.json");

@@ -116,7 +116,7 @@ public sealed class GltfLevelTests
         byte[] glb = GltfLevelWriter.ToBytes([bad]);
         int binStart = 20 + BitConverter.ToInt32(glb, 12) + 8;
         BitConverter.GetBytes(float.PositiveInfinity).CopyTo(glb, binStart);
-        Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(glb, "b.glb", null), "b.glb"), Throws.TypeOf<LevelException>().With.Message.Contains("BrokenRock").And.Message.Contains("vertex 0"));
+        Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(glb, "b.glb", null), "b.glb"), Throws.TypeOf<GltfException>().With.Message.EqualTo("b.glb: accessor 0 (POSITION of primitive 0 of mesh 0 ('BrokenRock')): POSITION[0]: Invalid Position."));
     }
 
     private static byte[] ExtractBin(byte[] glb)

@@ -53,7 +53,7 @@ public sealed class GltfReaderFeatureTests
         try
         {
             var bin = new List<byte>();
-            short[] quantised = [0, 0, 0, 0, 0, 32767, 32767, 0, 0, 0]; // three vertices + 2 bytes of padding
+            short[] quantised = [0, 0, 0, 0, 0, 0, 32767, 0, 32767, 0, 0, 0]; // three vertices, each padded to 8 bytes (a vertex stride is a multiple of 4)
             foreach (short q in quantised)
             {
                 bin.AddRange(BitConverter.GetBytes(q));
@@ -68,7 +68,7 @@ public sealed class GltfReaderFeatureTests
             string json = """
             {"asset":{"version":"2.0"},"extensionsUsed":["KHR_mesh_quantization"],"extensionsRequired":["KHR_mesh_quantization"],
              "buffers":[{"byteLength":BYTES,"uri":"level%20data.bin"}],
-             "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":18,"byteStride":6},{"buffer":0,"byteOffset":20,"byteLength":2},{"buffer":0,"byteOffset":24,"byteLength":6}],
+             "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":24,"byteStride":8},{"buffer":0,"byteOffset":24,"byteLength":2},{"buffer":0,"byteOffset":28,"byteLength":6}],
              "accessors":[{"bufferView":0,"componentType":5122,"normalized":true,"count":3,"type":"VEC3",
                            "sparse":{"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":2}}}],
              "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
@@ -98,7 +98,7 @@ public sealed class GltfReaderFeatureTests
          "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}
         """;
         Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(json), "short.gltf", null), "short.gltf"),
-            Throws.TypeOf<GltfException>().With.Message.Contains("past the end"));
+            Throws.TypeOf<GltfException>().With.Message.Contains("short.gltf: accessor 0 (POSITION of primitive 0 of mesh 0): BufferView[0]").And.Message.Contains("exceeds the number of available items (12)"));
     }
 
     private static byte[] Floats(params float[] values)

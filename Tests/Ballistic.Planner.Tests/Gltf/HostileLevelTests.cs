@@ -67,26 +67,34 @@ public sealed class HostileLevelTests
     }
 
     [Test]
-    public void AHundredThousandNodeChainLoadsInLinearTime()
+    public void AHundredThousandNodeChainIsRefusedAtOnceAndAThousandDeepLoads()
     {
-        // Deep but legal: no recursion (no stack overflow) and no walk up from every node (no quadratic time).
-        JsonObject root = Triangle();
-        var nodes = new JsonArray();
-        const int Depth = 100_000;
-        for (int i = 0; i < Depth; i++)
+        // SharpGLTF checks the hierarchy recursively (a 100,000-node chain overflowed the stack and took the process
+        // down): ours, linear and without recursion, runs first and refuses more than GltfModel.MaxNodeDepth levels.
+        string Chain(string file, int depth)
         {
-            nodes.Add(i + 1 < Depth ? new JsonObject { ["children"] = new JsonArray(i + 1) } : new JsonObject { ["mesh"] = 0, ["translation"] = new JsonArray(0, 1, 0) });
+            JsonObject root = Triangle();
+            var nodes = new JsonArray();
+            for (int i = 0; i < depth; i++)
+            {
+                nodes.Add(i + 1 < depth ? new JsonObject { ["children"] = new JsonArray(i + 1) } : new JsonObject { ["mesh"] = 0, ["translation"] = new JsonArray(0, 1, 0) });
+            }
+
+            root["nodes"] = nodes;
+            return Write(file, root);
         }
 
-        root["nodes"] = nodes;
-        string path = Write("deep.gltf", root);
+        string deep = Chain("deep.gltf", 100_000);
         var clock = Stopwatch.StartNew();
-        Level level = GltfLevelLoader.Load(path);
+        string message = Refused(deep);
+        TimeSpan refused = clock.Elapsed;
+        Level level = GltfLevelLoader.Load(Chain("thousand.gltf", GltfModel.MaxNodeDepth));
         Assert.Multiple(() =>
         {
+            Assert.That(message, Does.Contain("deep.gltf: node 1000 lies 1001 deep in the node hierarchy; at most 1000 levels are read"));
+            Assert.That(refused, Is.LessThan(TimeSpan.FromSeconds(10)));
             Assert.That(level.Triangles, Has.Count.EqualTo(1));
             Assert.That(level.Bounds.Min.Y, Is.EqualTo(1f));
-            Assert.That(clock.Elapsed, Is.LessThan(TimeSpan.FromSeconds(10)));
         });
     }
 
@@ -97,7 +105,7 @@ public sealed class HostileLevelTests
         root["accessors"]!.AsArray().Add(new JsonObject { ["componentType"] = 5126, ["count"] = 150_000_000, ["type"] = "VEC3" });
         root["meshes"]![0]!["primitives"]![0]!["attributes"]!["POSITION"] = 1;
         string message = Refused(Write("huge.gltf", root));
-        Assert.That(message, Does.Contain("accessor 1 declares 150000000 elements without a buffer view"));
+        Assert.That(message, Does.Contain("huge.gltf: with primitive 0 of mesh 0 ('Floor'), the level reads more than 60000000 vertices (GltfLoadOptions.MaxVertices)"));
     }
 
     [Test]
@@ -115,11 +123,11 @@ public sealed class HostileLevelTests
         negative["accessors"]![0]!["count"] = -3;
         Assert.Multiple(() =>
         {
-            Assert.That(Refused(Write("count.gltf", count)), Does.Contain("accessor 0 reads past the end of buffer view 0"));
-            Assert.That(Refused(Write("offset.gltf", offset)), Does.Contain("accessor 0 reads past the end of buffer view 0"));
-            Assert.That(Refused(Write("stride.gltf", stride)), Does.Contain("accessor 0 has 12-byte elements, but buffer view 0's byteStride is 4"));
-            Assert.That(Refused(Write("view.gltf", view)), Does.Contain("buffer view 0 runs past the end of buffer 0"));
-            Assert.That(Refused(Write("negative.gltf", negative)), Does.Contain("accessor 0 has 'count' the number -3"));
+            Assert.That(Refused(Write("count.gltf", count)), Does.Contain("count.gltf: accessor 0 (POSITION of primitive 0 of mesh 0 ('Floor')): BufferView[0]"));
+            Assert.That(Refused(Write("offset.gltf", offset)), Does.Contain("offset.gltf: accessor 0 (POSITION of primitive 0 of mesh 0 ('Floor')): BufferView[0]: .2147483000+36 exceeds the number of available items (36)"));
+            Assert.That(Refused(Write("stride.gltf", stride)), Does.Contain("stride.gltf: accessor 0 (POSITION of primitive 0 of mesh 0 ('Floor')): ElementByteSize: 4 must be greater or equal to 12"));
+            Assert.That(Refused(Write("view.gltf", view)), Does.Contain("view.gltf: an offset or length runs past the end of the bytes it refers to"));
+            Assert.That(Refused(Write("negative.gltf", negative)), Does.Contain("negative.gltf: accessor 0 (POSITION of primitive 0 of mesh 0 ('Floor')): _count: -3 must be greater or equal to 1"));
         });
     }
 
@@ -137,7 +145,7 @@ public sealed class HostileLevelTests
             ["indices"] = new JsonObject { ["bufferView"] = 1, ["componentType"] = 5123 },
             ["values"] = new JsonObject { ["bufferView"] = 2 },
         };
-        Assert.That(Refused(Write("sparse.gltf", root)), Does.Contain("sparse index 0 of accessor 0 is 7, but the accessor has 3 elements"));
+        Assert.That(Refused(Write("sparse.gltf", root)), Does.Contain("sparse.gltf: an element refers to another that does not exist"));
     }
 
     [Test]
@@ -147,7 +155,7 @@ public sealed class HostileLevelTests
         BinaryPrimitives.WriteUInt32LittleEndian(glb.AsSpan(12), 0xFFFFFFF0);
         string path = Path.Combine(_folder, "chunk.glb");
         File.WriteAllBytes(path, glb);
-        Assert.That(Refused(path), Does.Contain("chunk.glb is truncated or corrupt: GLB chunk 0 at byte 12 declares 4294967280 bytes"));
+        Assert.That(Refused(path), Does.Contain("chunk.glb: a GLB chunk declares 4294967280 bytes, more than the file holds (it is truncated or corrupt)"));
     }
 
     [Test]
@@ -204,7 +212,7 @@ public sealed class HostileLevelTests
         {
             Assert.That(Refused(Write("far.gltf", far)), Does.Contain("vertex 1 has a coordinate of 1E+30 m, beyond the ±1e6 m a level may span"));
             Assert.That(Refused(Write("scaled.gltf", scaled)), Does.Contain("vertex 1 has a coordinate of 1E+30 m, beyond the ±1e6 m"));
-            Assert.That(Refused(Write("nan.gltf", nan)), Does.Contain("vertex 1 is not finite (NaN, 0, 0)"));
+            Assert.That(Refused(Write("nan.gltf", nan)), Does.Contain("nan.gltf: accessor 0 (POSITION of primitive 0 of mesh 0 ('Floor')): POSITION[1]: Invalid Position"));
         });
     }
 
@@ -323,7 +331,7 @@ public sealed class HostileLevelTests
         root["buffers"]![0]!["uri"] = "floor.bin";
         string gltf = Write("floor.gltf", root);
         long json = new FileInfo(gltf).Length;
-        Assert.That(Refused(gltf, new GltfLoadOptions { MaxBytes = json + 30 }), Does.Contain("buffer 0 declares 36 bytes, more than the 30 bytes left"));
+        Assert.That(Refused(gltf, new GltfLoadOptions { MaxBytes = json + 30 }), Does.Contain("buffer 0's file 'floor.bin' is 36 bytes, more than the 30 bytes allowed (what is left of the limit of"));
         Assert.That(GltfLevelLoader.Load(gltf, new GltfLoadOptions { MaxBytes = json + 36 }).Triangles, Has.Count.EqualTo(1));
     }
 
