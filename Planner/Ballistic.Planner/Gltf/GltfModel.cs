@@ -98,7 +98,8 @@ internal sealed partial class GltfModel
             }
             catch (ModelException e)
             {
-                throw new GltfException($"{printable}: {Locate(Describe(e), Unchecked(bytes, printable, directory, options))}");
+                string described = Describe(e);
+                throw new GltfException($"{printable}: {(Element().IsMatch(described) ? Locate(described, Unchecked(bytes, printable, directory, options)) : Pinpointed(bytes, described))}");
             }
         }
     }
@@ -254,8 +255,167 @@ internal sealed partial class GltfModel
         {
             // The library met something it does not expect (a malformed GLB header, JSON that is not glTF's shape,
             // an extension it cannot decode): the file is at fault, not the program, and it says so in one line.
-            throw refused ?? new GltfException($"{name}: {Describe(e)}");
+            throw refused ?? new GltfException($"{name}: {Pinpointed(bytes, Describe(e))}");
         }
+    }
+
+    /// <summary>The most documents <see cref="Pinpoint"/> reads to find where a failure lies.</summary>
+    private const int MostProbes = 4000;
+
+    /// <summary><paramref name="failure"/> with where in the JSON it lies in front ("accessors[3].componentType: …"), when <see cref="Pinpoint"/> finds it.</summary>
+    private static string Pinpointed(byte[] bytes, string failure) =>
+        failure.StartsWith("its JSON ", StringComparison.Ordinal) && Pinpoint(bytes, failure) is string where ? $"{where}: {failure}" : failure;
+
+    /// <summary>
+    /// Where in the file's JSON the library's reader fails with <paramref name="failure"/> (its reader does not say):
+    /// found by reading, without validation, documents that hold the asset and one top-level property, then one item
+    /// of that list, then that item without one of its keys, and seeing which still fail the same way. Only run for a
+    /// file already refused; at most <see cref="MostProbes"/> reads. <c>null</c> when no single place is found.
+    /// </summary>
+    private static string? Pinpoint(byte[] bytes, string failure)
+    {
+        JsonObject root;
+        try
+        {
+            using var stream = new MemoryStream(bytes, writable: false);
+            if (JsonNode.Parse(ReadContext.ReadJson(stream).TrimStart('\uFEFF')) is not JsonObject parsed)
+            {
+                return null;
+            }
+
+            root = parsed;
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return null; // not even JSON: the failure says so itself
+        }
+
+        int probes = 0;
+        bool Fails(JsonObject probe)
+        {
+            if (++probes > MostProbes)
+            {
+                return false;
+            }
+
+            try
+            {
+                ReadContext context = ReadContext.Create(_ => throw new FileNotFoundException());
+                context.Validation = ValidationMode.Skip;
+                using var stream = new MemoryStream(System.Text.Encoding.UTF8.GetBytes(probe.ToJsonString()), writable: false);
+                context.ReadSchema2(stream);
+                return false;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                return Describe(e) == failure;
+            }
+        }
+
+        JsonNode? asset = root["asset"];
+        JsonObject With(string key, JsonNode? value) => new() { ["asset"] = asset?.DeepClone(), [key] = value?.DeepClone() };
+        foreach ((string key, JsonNode? value) in root.ToList())
+        {
+            if (key == "asset" || probes >= MostProbes || !Fails(With(key, value)))
+            {
+                continue;
+            }
+
+            // Narrowed from the outside in: in an object, the key without which the probe no longer fails; in a list,
+            // the item that alone still fails.
+            JsonObject probe = With(key, value);
+            var path = new List<(string? Key, int Index)> { (key, 0) };
+            JsonNode? node = probe[key];
+            while (probes < MostProbes && node is JsonObject or JsonArray)
+            {
+                (string? Key, int Index)? found = null;
+                if (Emptied(node))
+                {
+                    break; // the list or object fails as it is, empty: it is the value of the wrong type
+                }
+
+                if (node is JsonObject obj)
+                {
+                    foreach ((string property, JsonNode? _) in obj.ToList())
+                    {
+                        JsonNode? removed = obj[property];
+                        obj.Remove(property);
+                        bool stillFails = Fails(probe);
+                        obj[property] = removed;
+                        if (!stillFails)
+                        {
+                            found = (property, 0);
+                            break;
+                        }
+                    }
+                }
+                else if (node is JsonArray array)
+                {
+                    JsonNode?[] items = [.. array];
+                    array.Clear();
+                    for (int i = 0; i < items.Length && found is null && probes < MostProbes; i++)
+                    {
+                        array.Add(items[i]);
+                        if (Fails(probe))
+                        {
+                            found = (null, i);
+                        }
+                        else
+                        {
+                            array.Clear();
+                        }
+                    }
+
+                    if (found is null)
+                    {
+                        array.Clear();
+                        foreach (JsonNode? item in items)
+                        {
+                            array.Add(item);
+                        }
+                    }
+                }
+
+                if (found is not { } step)
+                {
+                    break;
+                }
+
+                path.Add(step);
+                node = step.Key is string k ? ((JsonObject)node)[k] : ((JsonArray)node)[0];
+            }
+
+            return string.Concat(path.Select((p, i) => p.Key is null ? $"[{p.Index}]" : i == 0 ? p.Key : "." + p.Key));
+
+            // Whether the probe still fails with this list or object emptied (it is then restored).
+            bool Emptied(JsonNode container)
+            {
+                if (container is JsonArray list)
+                {
+                    JsonNode?[] items = [.. list];
+                    list.Clear();
+                    bool fails = Fails(probe);
+                    foreach (JsonNode? item in items)
+                    {
+                        list.Add(item);
+                    }
+
+                    return fails;
+                }
+
+                var properties = ((JsonObject)container).ToList();
+                ((JsonObject)container).Clear();
+                bool still = Fails(probe);
+                foreach ((string k, JsonNode? v) in properties)
+                {
+                    ((JsonObject)container)[k] = v;
+                }
+
+                return still;
+            }
+        }
+
+        return null;
     }
 
     /// <summary>The asset read without validation, only to name the elements a message speaks of; <c>null</c> when even that fails.</summary>

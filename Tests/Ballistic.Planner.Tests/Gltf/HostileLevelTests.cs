@@ -176,6 +176,21 @@ public sealed class HostileLevelTests
     }
 
     [Test]
+    public void AValueOfTheWrongTypeIsNamedWithWhereItIs()
+    {
+        // SharpGLTF's JSON reader says what it met but not where; the loader finds where by reading parts of the file.
+        JsonObject list = Triangle();
+        list["accessors"]![0]!["componentType"] = new JsonArray(0, 1, 2);
+        JsonObject text = Triangle();
+        text["materials"] = new JsonArray(new JsonObject { ["pbrMetallicRoughness"] = new JsonObject { ["baseColorFactor"] = new JsonArray(1, "red", 1, 1) } });
+        Assert.Multiple(() =>
+        {
+            Assert.That(Refused(Write("list.gltf", list)), Does.EndWith("list.gltf: accessors[0].componentType: its JSON has a value of a type the glTF 2.0 schema does not allow where it is."));
+            Assert.That(Refused(Write("text.gltf", text)), Does.EndWith("text.gltf: materials[0].pbrMetallicRoughness.baseColorFactor[1]: its JSON has a string where the glTF 2.0 schema wants a number."));
+        });
+    }
+
+    [Test]
     public void RepeatedKeysAreNamedWithWhereTheyRepeat()
     {
         string path = Path.Combine(_folder, "keys.gltf");
