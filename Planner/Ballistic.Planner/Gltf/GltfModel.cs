@@ -251,12 +251,31 @@ internal sealed partial class GltfModel
         {
             throw;
         }
-        catch (Exception e) when (e is not OutOfMemoryException and not StackOverflowException)
+        catch (Exception e) when (e is not OutOfMemoryException and not StackOverflowException && !ThrownByUs(e))
         {
             // The library met something it does not expect (a malformed GLB header, JSON that is not glTF's shape,
             // an extension it cannot decode): the file is at fault, not the program, and it says so in one line.
             throw refused ?? new GltfException($"{name}: {Pinpointed(bytes, Describe(e))}");
         }
+    }
+
+    /// <summary>
+    /// Whether <paramref name="e"/> came out of our own code (the JSON checks run inside the library's read): the first
+    /// frame outside .NET's own libraries is ours. Such an exception is a bug of ours and is not dressed as an input
+    /// error, so that the fuzz suite sees it.
+    /// </summary>
+    private static bool ThrownByUs(Exception e)
+    {
+        foreach (System.Diagnostics.StackFrame frame in new System.Diagnostics.StackTrace(e).GetFrames())
+        {
+            if (frame.GetMethod()?.DeclaringType?.Assembly is System.Reflection.Assembly assembly && assembly != typeof(object).Assembly
+                && !(assembly.GetName().Name ?? "").StartsWith("System.", StringComparison.Ordinal))
+            {
+                return assembly == typeof(GltfModel).Assembly;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>The most documents <see cref="Pinpoint"/> reads to find where a failure lies.</summary>
