@@ -5,6 +5,7 @@ using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
 using Ballistic.Planner.IO;
 using SharpGLTF.Schema2;
+using SharpGLTF.Transforms;
 using SharpGLTF.Validation;
 
 namespace Ballistic.Planner.Gltf;
@@ -23,13 +24,21 @@ namespace Ballistic.Planner.Gltf;
 /// </summary>
 internal sealed partial class GltfModel
 {
-    private GltfModel(ModelRoot root, string name, GltfLoadOptions options, string? repaired)
+    private GltfModel(ModelRoot root, string name, GltfLoadOptions options, string? repaired, byte[] bytes, string? directory)
     {
+        Bytes = bytes;
+        Directory = directory;
         Root = root;
         Name = name;
         Options = options;
         Repaired = repaired;
     }
+
+    /// <summary>The file's bytes as read (the animated GLB writer copies the user's rig from them).</summary>
+    internal byte[] Bytes { get; }
+
+    /// <summary>The folder against which the file's URIs resolve, or <c>null</c> when they cannot.</summary>
+    internal string? Directory { get; }
 
     /// <summary>The asset as SharpGLTF's typed schema.</summary>
     public ModelRoot Root { get; }
@@ -87,14 +96,14 @@ internal sealed partial class GltfModel
         string printable = MessageText.Printable(name);
         try
         {
-            return new GltfModel(Read(bytes, printable, directory, options, ValidationMode.Strict, repair: false), name, options, null);
+            return new GltfModel(Read(bytes, printable, directory, options, ValidationMode.Strict, repair: false), name, options, null, bytes, directory);
         }
         catch (ModelException strict)
         {
             try
             {
                 ModelRoot repaired = Read(bytes, printable, directory, options, ValidationMode.TryFix, repair: true);
-                return new GltfModel(repaired, name, options, Locate(Describe(strict), repaired));
+                return new GltfModel(repaired, name, options, Locate(Describe(strict), repaired), bytes, directory);
             }
             catch (ModelException e)
             {
@@ -104,11 +113,34 @@ internal sealed partial class GltfModel
         }
     }
 
-    /// <summary>The local transform of <paramref name="node"/> (its matrix, or translation · rotation · scale), row-vector convention, checked finite.</summary>
-    /// <exception cref="GltfException">The node's matrix holds a number that is not finite.</exception>
+    /// <summary>
+    /// The local transform of <paramref name="node"/>, row-vector convention: its matrix, or scale · rotation ·
+    /// translation with the rotation normalised in double precision (a quaternion an exporter wrote a little off unit
+    /// length rotates, and does not scale).
+    /// </summary>
+    /// <exception cref="GltfException">The node's rotation is zero, or its transform holds a number that is not finite.</exception>
     public Matrix4x4 LocalTransform(Node node)
     {
-        Matrix4x4 local = node.LocalMatrix;
+        ArgumentNullException.ThrowIfNull(node);
+        AffineTransform transform = node.LocalTransform;
+        Matrix4x4 local;
+        if (transform.IsMatrix)
+        {
+            local = transform.Matrix;
+        }
+        else
+        {
+            Quaternion q = transform.Rotation;
+            double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
+            if (!(length > 1e-6))
+            {
+                throw new GltfException($"{MessageText.Printable(Name)}: node {node.LogicalIndex}{Named(node.Name)} has a zero rotation quaternion.");
+            }
+
+            var rotation = new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length));
+            local = Matrix4x4.CreateScale(transform.Scale) * Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(transform.Translation);
+        }
+
         for (int r = 0; r < 4; r++)
         {
             for (int c = 0; c < 4; c++)
@@ -121,6 +153,36 @@ internal sealed partial class GltfModel
         }
 
         return local;
+    }
+
+    /// <summary>The parent of every node (−1 for a root), by node index; the hierarchy was checked on load (one parent each, no cycle).</summary>
+    public int[] NodeParents() => [.. Root.LogicalNodes.Select(n => n.VisualParent?.LogicalIndex ?? -1)];
+
+    /// <summary>Every node's rest transform in the scene (its local transform times its ancestors'), row-vector convention, by node index.</summary>
+    /// <exception cref="GltfException">A node's transform is not finite or has a zero rotation.</exception>
+    public Matrix4x4[] WorldTransforms()
+    {
+        int[] parents = NodeParents();
+        var world = new Matrix4x4[parents.Length];
+        var done = new bool[parents.Length];
+        var chain = new Stack<int>();
+        for (int n = 0; n < parents.Length; n++)
+        {
+            for (int p = n; p >= 0 && !done[p]; p = parents[p])
+            {
+                chain.Push(p);
+            }
+
+            while (chain.Count > 0)
+            {
+                int node = chain.Pop();
+                Matrix4x4 local = LocalTransform(Root.LogicalNodes[node]);
+                world[node] = parents[node] >= 0 ? local * world[parents[node]] : local;
+                done[node] = true;
+            }
+        }
+
+        return world;
     }
 
     /// <summary>
@@ -498,6 +560,14 @@ internal sealed partial class GltfModel
                 }
             }
 
+            foreach (Skin skin in model.LogicalSkins)
+            {
+                if (skin.GetInverseBindMatricesAccessor() == accessor)
+                {
+                    return $"the inverse bind matrices of skin {skin.LogicalIndex}{Named(skin.Name)}";
+                }
+            }
+
             return string.IsNullOrEmpty(accessor.Name) ? null : $"'{MessageText.Printable(accessor.Name)}'";
         }
 
@@ -600,6 +670,11 @@ internal sealed partial class GltfModel
             if (root.TryGetProperty("nodes", out JsonElement nodes) && nodes.ValueKind == JsonValueKind.Array)
             {
                 CheckNodes(nodes, name);
+            }
+
+            if (root.TryGetProperty("skins", out JsonElement skins) && skins.ValueKind == JsonValueKind.Array)
+            {
+                CheckSkinJoints(skins, name);
             }
 
             foreach ((string list, string kind) in new[] { ("buffers", "buffer"), ("images", "image") })
@@ -714,6 +789,58 @@ internal sealed partial class GltfModel
         }
     }
 
+    /// <summary>
+    /// A node's <c>translation</c>, <c>rotation</c>, <c>scale</c> and <c>matrix</c> are lists of exactly 3, 4, 3 and 16
+    /// numbers: the library reads the first numbers of a longer list and fills a shorter one, so that a rotation written
+    /// with an extra number would turn the bone silently.
+    /// </summary>
+    /// <exception cref="GltfException">One of them is not such a list.</exception>
+    private static void CheckTransform(JsonElement node, int index, string name)
+    {
+        if (node.ValueKind != JsonValueKind.Object)
+        {
+            return;
+        }
+
+        foreach ((string key, int length) in Transforms)
+        {
+            if (node.TryGetProperty(key, out JsonElement value)
+                && (value.ValueKind != JsonValueKind.Array || value.GetArrayLength() != length || value.EnumerateArray().Any(v => v.ValueKind != JsonValueKind.Number)))
+            {
+                string named = node.TryGetProperty("name", out JsonElement n) && n.ValueKind == JsonValueKind.String && n.GetString() is { Length: > 0 } text ? $" ('{MessageText.Printable(text)}')" : "";
+                string seen = value.ValueKind == JsonValueKind.Array && value.GetArrayLength() == length
+                    ? $"item {value.EnumerateArray().TakeWhile(v => v.ValueKind == JsonValueKind.Number).Count()} is {Describe(value.EnumerateArray().First(v => v.ValueKind != JsonValueKind.Number))}"
+                    : $"not {Describe(value)}";
+                throw new GltfException($"{name}: node {index}{named} has a malformed {key}: it must be a list of {length} numbers; {seen}.");
+            }
+        }
+    }
+
+    private static readonly (string Key, int Length)[] Transforms = [("translation", 3), ("rotation", 4), ("scale", 3), ("matrix", 16)];
+
+    /// <summary>A skin that lists a node as its joint twice (the library reads it, and the bone would be two bones).</summary>
+    /// <exception cref="GltfException">A skin lists a node twice.</exception>
+    private static void CheckSkinJoints(JsonElement skins, string name)
+    {
+        int s = 0;
+        foreach (JsonElement skin in skins.EnumerateArray())
+        {
+            if (skin.ValueKind == JsonValueKind.Object && skin.TryGetProperty("joints", out JsonElement joints) && joints.ValueKind == JsonValueKind.Array)
+            {
+                var seen = new HashSet<int>();
+                foreach (JsonElement joint in joints.EnumerateArray())
+                {
+                    if (joint.ValueKind == JsonValueKind.Number && joint.TryGetInt32(out int node) && !seen.Add(node))
+                    {
+                        throw new GltfException($"{name}: skin {s} lists node {node} as a joint twice.");
+                    }
+                }
+            }
+
+            s++;
+        }
+    }
+
     /// <summary>The glTF extensions a file may require: those whose data the library decodes for us.</summary>
     private static readonly HashSet<string> SupportedRequiredExtensions = ["KHR_mesh_quantization", "KHR_materials_emissive_strength"];
 
@@ -799,6 +926,7 @@ internal sealed partial class GltfModel
         int n = 0;
         foreach (JsonElement node in nodes.EnumerateArray())
         {
+            CheckTransform(node, n, name);
             if (node.ValueKind == JsonValueKind.Object && node.TryGetProperty("children", out JsonElement children) && children.ValueKind == JsonValueKind.Array)
             {
                 foreach (JsonElement child in children.EnumerateArray())

@@ -11,21 +11,21 @@ namespace Ballistic.Planner.Rigs;
 internal sealed class CharacterSource
 {
     /// <summary>Creates a source mapping.</summary>
-    /// <param name="document">The glTF the rig was read from.</param>
+    /// <param name="model">The glTF the rig was read from.</param>
     /// <param name="jointNodes">For each rig joint (rig order), the index of its glTF node.</param>
     /// <param name="upAxis">The spec's <c>upAxis</c> (e.g. "+Z"): the glTF scene's direction that is the character's up.</param>
     /// <param name="forwardAxis">The spec's <c>forwardAxis</c> (e.g. "-Y"): the glTF scene's direction the character faces.</param>
     /// <exception cref="RigException">A node index is out of range or repeats, or an axis name is unknown.</exception>
-    public CharacterSource(GltfDocument document, IReadOnlyList<int> jointNodes, string upAxis = "+Y", string forwardAxis = "+Z")
+    public CharacterSource(GltfModel model, IReadOnlyList<int> jointNodes, string upAxis = "+Y", string forwardAxis = "+Z")
     {
-        ArgumentNullException.ThrowIfNull(document);
+        ArgumentNullException.ThrowIfNull(model);
         ArgumentNullException.ThrowIfNull(jointNodes);
         ArgumentNullException.ThrowIfNull(upAxis);
         ArgumentNullException.ThrowIfNull(forwardAxis);
-        int nodes = document.Array("nodes").Count;
+        int nodes = model.Root.LogicalNodes.Count;
         if (jointNodes.Any(n => n < 0 || n >= nodes) || jointNodes.Distinct().Count() != jointNodes.Count)
         {
-            throw new RigException($"{document.Name}: the joints' node indices must be distinct nodes of the file.");
+            throw new RigException($"{model.Name}: the joints' node indices must be distinct nodes of the file.");
         }
 
         if (!CharacterSpecReader.AxisNames.ContainsKey(upAxis) || !CharacterSpecReader.AxisNames.ContainsKey(forwardAxis))
@@ -33,14 +33,23 @@ internal sealed class CharacterSource
             throw new RigException($"Unknown axis name '{upAxis}' or '{forwardAxis}' (expected one of {string.Join(", ", CharacterSpecReader.AxisNames.Keys)}).");
         }
 
-        Document = document;
+        Model = model;
+        _document = new Lazy<GltfDocument>(() => GltfDocument.Parse(model.Bytes, model.Name, model.Directory, model.Options));
         JointNodes = [.. jointNodes];
         UpAxis = upAxis;
         ForwardAxis = forwardAxis;
     }
 
-    /// <summary>The glTF the rig was read from.</summary>
-    public GltfDocument Document { get; }
+    /// <summary>The glTF the rig was read from (SharpGLTF's schema).</summary>
+    public GltfModel Model { get; }
+
+    /// <summary>
+    /// The same file as our own glTF document, parsed on first use from the bytes the rig was read from: the animated
+    /// GLB writer still copies the user's JSON and buffers through it (issue 25 moves the writer to SharpGLTF).
+    /// </summary>
+    public GltfDocument Document => _document.Value;
+
+    private readonly Lazy<GltfDocument> _document;
 
     /// <summary>For each rig joint, the index of its glTF node.</summary>
     public IReadOnlyList<int> JointNodes { get; }

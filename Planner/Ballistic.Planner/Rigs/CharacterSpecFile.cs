@@ -112,7 +112,7 @@ public static class CharacterSpecFile
                 throw new RigException($"Limb spec {specName} is {specBytes.LongLength} bytes, more than the {limits.MaxBytes} bytes allowed (GltfLoadOptions.MaxBytes).");
             }
 
-            return LoadParts(specBytes, specName, () => GltfDocument.Parse(gltfBytes, gltfName, null, limits));
+            return LoadParts(specBytes, specName, () => GltfModel.Parse(gltfBytes, gltfName, null, limits));
         }
         catch (RigException e) when (e.Message.Any(char.IsControl))
         {
@@ -123,14 +123,14 @@ public static class CharacterSpecFile
     private static (CharacterModel Model, ReducedCharacter Reduced) LoadFiles(string gltfPath, string specPath, GltfLoadOptions options)
     {
         byte[] bytes = InputFile.Read(specPath, options.MaxBytes, "GltfLoadOptions.MaxBytes", (problem, e) => new RigException($"Limb spec {specPath} {problem}.", e!));
-        return LoadParts(bytes, specPath, () => GltfDocument.Load(gltfPath, options));
+        return LoadParts(bytes, specPath, () => GltfModel.Load(gltfPath, options));
     }
 
     /// <summary>Parses the spec, then reads the glTF with <paramref name="readDocument"/> and builds the character.</summary>
-    private static (CharacterModel Model, ReducedCharacter Reduced) LoadParts(byte[] specBytes, string specPath, Func<GltfDocument> readDocument)
+    private static (CharacterModel Model, ReducedCharacter Reduced) LoadParts(byte[] specBytes, string specPath, Func<GltfModel> readDocument)
     {
         CharacterSpec spec = CharacterSpecReader.Read(specBytes, specPath);
-        GltfDocument document;
+        GltfModel document;
         try
         {
             document = readDocument();
@@ -252,7 +252,7 @@ public static class CharacterSpecFile
         return Encoding.UTF8.GetBytes(root.ToJsonString(new JsonSerializerOptions { WriteIndented = true, Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping }) + "\n");
     }
 
-    private static (CharacterModel, ReducedCharacter) Build(GltfDocument document, CharacterSpec spec, string specPath)
+    private static (CharacterModel, ReducedCharacter) Build(GltfModel document, CharacterSpec spec, string specPath)
     {
         string file = document.Name;
         RigException Error(string where, string problem) => new($"{specPath}: {where}: {problem}");

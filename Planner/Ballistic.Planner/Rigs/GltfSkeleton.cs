@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Numerics;
-using System.Text.Json.Nodes;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Planner.Rigs;
 
@@ -64,32 +64,31 @@ internal sealed class GltfSkeleton
     /// <summary>Largest share of its weight a vertex's own bone may carry for the vertex to count as blended.</summary>
     public const float BlendedShare = 0.95f;
 
-    /// <summary>Reads skin 0 of <paramref name="document"/>.</summary>
-    /// <param name="document">The rigged glTF.</param>
+    /// <summary>Reads skin 0 of <paramref name="model"/>.</summary>
+    /// <param name="model">The rigged glTF, read and validated.</param>
     /// <param name="axes">Rotation from the glTF scene into Ballistic's frame (from the spec's up and forward axes).</param>
     /// <param name="limbBones">Names of the limbs' bones, to choose the root among several root bones.</param>
     /// <exception cref="RigException">There is no skin, a bone is scaled non-uniformly or mirrored, or bone names repeat.</exception>
     /// <exception cref="GltfException">The glTF's hierarchy, skin or meshes are malformed.</exception>
-    public static GltfSkeleton Read(GltfDocument document, Quaternion axes, IReadOnlyCollection<string> limbBones)
+    public static GltfSkeleton Read(GltfModel model, Quaternion axes, IReadOnlyCollection<string> limbBones)
     {
-        string file = document.Name;
-        JsonArray skins = document.Array("skins");
-        if (skins.Count == 0)
+        string file = model.Name;
+        if (model.Root.LogicalSkins.Count == 0)
         {
             throw new RigException($"{file} has no skin: a character needs a rigged (skinned) mesh.");
         }
 
-        JsonArray nodes = document.Array("nodes");
-        int[] skinJoints = SkinJoints(document, 0);
+        IReadOnlyList<Node> nodes = model.Root.LogicalNodes;
+        int[] skinJoints = SkinJoints(model, 0);
         if (skinJoints.Length == 0)
         {
             throw new RigException($"{file}: skin 0 has no joints.");
         }
 
-        int[] parentNode = document.NodeParents();
-        Matrix4x4[] world = document.WorldTransforms();
+        int[] parentNode = model.NodeParents();
+        Matrix4x4[] world = model.WorldTransforms();
         var isJoint = new HashSet<int>(skinJoints);
-        string NodeName(int node) => nodes[node]?["name"] is JsonValue v && v.TryGetValue(out string? s) && s.Length > 0 ? s : $"node {node}";
+        string NodeName(int node) => nodes[node].Name is { Length: > 0 } s ? s : $"node {node}";
 
         var byName = new Dictionary<string, int>(StringComparer.Ordinal);
         foreach (int j in skinJoints)
@@ -171,7 +170,7 @@ internal sealed class GltfSkeleton
         for (int i = 0; i < count; i++)
         {
             int node = order[i];
-            CheckBoneScale(document, nodes, parentNode, isJoint, node, NodeName, rigid);
+            CheckBoneScale(model, parentNode, isJoint, node, NodeName, rigid);
             if (!IsFinite(world[node]))
             {
                 throw new RigException($"{file}: bone '{NodeName(node)}' with its parents' transforms is not finite (a translation or scale too large); apply the transforms before exporting.");
@@ -212,37 +211,27 @@ internal sealed class GltfSkeleton
             rests[i] = Quaternion.Normalize(inverse * rotations[i]);
         }
 
-        (List<Vector3>[] points, List<SkinBlend[]>[] blends) = SkinnedPoints(document, world, index, axes, positions, rotations);
+        (List<Vector3>[] points, List<SkinBlend[]>[] blends) = SkinnedPoints(model, world, index, axes, positions, rotations);
         return new GltfSkeleton([.. order], [.. order.Select(NodeName)], parents, offsets, rests, positions, rotations, points, blends);
     }
 
     /// <summary>The skin's joint nodes.</summary>
-    internal static int[] SkinJoints(GltfDocument document, int skin)
+    internal static int[] SkinJoints(GltfModel model, int skin)
     {
-        int nodeCount = document.Array("nodes").Count;
-        if (document.Array("skins")[skin] is not JsonObject json || json["joints"] is not JsonArray joints)
-        {
-            throw new GltfException($"{document.Name}: skin {skin} has no list of joints.");
-        }
-
-        int[] result = new int[joints.Count];
+        int[] result = [.. model.Root.LogicalSkins[skin].Joints.Select(n => n.LogicalIndex)];
         var seen = new HashSet<int>();
-        for (int i = 0; i < joints.Count; i++)
+        foreach (int joint in result)
         {
-            JsonNode? j = joints[i];
-            result[i] = j is JsonValue v && v.GetValueKind() == System.Text.Json.JsonValueKind.Number && v.TryGetValue(out int n) && n >= 0 && n < nodeCount
-                ? n
-                : throw new GltfException($"{document.Name}: skin {skin} lists joint {GltfDocument.Describe(j)}, which is not a node (there are {nodeCount}).");
-            if (!seen.Add(result[i]))
+            if (!seen.Add(joint))
             {
-                throw new GltfException($"{document.Name}: skin {skin} lists node {result[i]} as a joint twice.");
+                throw new GltfException($"{model.Name}: skin {skin} lists node {joint} as a joint twice.");
             }
         }
 
         return result;
     }
 
-    /// <summary>Every node once, each after its parent (parents from <see cref="GltfDocument.NodeParents"/>, which has no cycle).</summary>
+    /// <summary>Every node once, each after its parent (parents from <see cref="GltfModel.NodeParents"/>, which has no cycle).</summary>
     private static int[] ParentsFirst(int[] parents)
     {
         var children = new List<int>?[parents.Length];
@@ -278,13 +267,13 @@ internal sealed class GltfSkeleton
         float.IsFinite(m.M31) && float.IsFinite(m.M32) && float.IsFinite(m.M33) && float.IsFinite(m.M34) &&
         float.IsFinite(m.M41) && float.IsFinite(m.M42) && float.IsFinite(m.M43) && float.IsFinite(m.M44);
 
-    private static void CheckBoneScale(GltfDocument document, JsonArray nodes, int[] parentNode, HashSet<int> isJoint, int bone, Func<int, string> name, HashSet<int> rigid)
+    private static void CheckBoneScale(GltfModel model, int[] parentNode, HashSet<int> isJoint, int bone, Func<int, string> name, HashSet<int> rigid)
     {
         // The bone itself, then its ancestors up to the scene root: each must be a rotation with a uniform scale
         // (a node found rigid before, for another bone, has had its ancestors checked too).
         for (int node = bone; node >= 0 && !rigid.Contains(node); node = parentNode[node])
         {
-            Matrix4x4 local = document.LocalTransform(document.Node(node));
+            Matrix4x4 local = model.LocalTransform(model.Root.LogicalNodes[node]);
             string Which() => node == bone ? $"bone '{name(node)}'" : $"{(isJoint.Contains(node) ? "bone" : "node")} '{name(node)}' (above bone '{name(bone)}')";
             float largest = 0f;
             for (int k = 0; k < 16; k++)
@@ -294,7 +283,7 @@ internal sealed class GltfSkeleton
 
             if (!(largest <= MaxCoordinate))
             {
-                throw new RigException($"{document.Name}: {Which()} has a scale or translation beyond ±1e6; apply the transforms before exporting.");
+                throw new RigException($"{model.Name}: {Which()} has a scale or translation beyond ±1e6; apply the transforms before exporting.");
             }
 
             if (Rotations.TryRigid(local, out _, out _))
@@ -307,7 +296,7 @@ internal sealed class GltfSkeleton
             string problem = Vector3.Dot(Vector3.Cross(new Vector3(local.M11, local.M12, local.M13), new Vector3(local.M21, local.M22, local.M23)), new Vector3(local.M31, local.M32, local.M33)) <= 0f
                 ? "is mirrored or collapsed (a negative or zero scale)"
                 : $"is scaled non-uniformly ({scale.X:0.###}, {scale.Y:0.###}, {scale.Z:0.###})";
-            throw new RigException($"{document.Name}: {what} {problem}; apply the scale before exporting.");
+            throw new RigException($"{model.Name}: {what} {problem}; apply the scale before exporting.");
         }
 
         int checkedNode = bone;
@@ -320,7 +309,7 @@ internal sealed class GltfSkeleton
     /// <summary>Every skinned vertex in the rest pose, assigned to its dominant bone and expressed in that bone's rest frame; and those weighted to several bones, with each bone's share (<see cref="Blends"/>).</summary>
     /// <exception cref="GltfException">A skinned mesh, its skin or its accessors are malformed, or the vertices read exceed <see cref="GltfLoadOptions.MaxVertices"/>.</exception>
     /// <exception cref="RigException">A skinned vertex is not finite or lies beyond <see cref="MaxCoordinate"/>.</exception>
-    private static (List<Vector3>[] Points, List<SkinBlend[]>[] Blends) SkinnedPoints(GltfDocument document, Matrix4x4[] world, Dictionary<int, int> jointIndex, Quaternion axes, Vector3[] positions, Quaternion[] rotations)
+    private static (List<Vector3>[] Points, List<SkinBlend[]>[] Blends) SkinnedPoints(GltfModel model, Matrix4x4[] world, Dictionary<int, int> jointIndex, Quaternion axes, Vector3[] positions, Quaternion[] rotations)
     {
         var points = new List<Vector3>[positions.Length];
         var blends = new List<SkinBlend[]>[positions.Length];
@@ -330,36 +319,23 @@ internal sealed class GltfSkeleton
             blends[j] = [];
         }
 
-        string file = document.Name;
-        JsonArray nodes = document.Array("nodes");
-        JsonArray meshes = document.Array("meshes");
-        JsonArray skins = document.Array("skins");
+        string file = model.Name;
         long verticesRead = 0;
         var weightOfJoint = new Dictionary<int, float>();
-        for (int n = 0; n < nodes.Count; n++)
+        Span<float> read = stackalloc float[16];
+        foreach (Node node in model.Root.LogicalNodes)
         {
-            JsonObject node = document.Node(n);
-            if (node["mesh"] is null || node["skin"] is null)
+            if (node.Mesh is not Mesh mesh || node.Skin is not Skin skinOfNode)
             {
                 continue;
             }
 
-            int meshIndex = document.RequiredIndex(node, "mesh", $"node {n}");
-            int skin = document.RequiredIndex(node, "skin", $"node {n}");
-            if (meshIndex >= meshes.Count || meshes[meshIndex] is not JsonObject mesh)
-            {
-                throw new GltfException($"{file}: node {n} names mesh {meshIndex}, which does not exist (there are {meshes.Count}).");
-            }
-
-            if (skin >= skins.Count || skins[skin] is not JsonObject skinJson)
-            {
-                throw new GltfException($"{file}: node {n} names skin {skin}, which does not exist (there are {skins.Count}).");
-            }
-
-            int[] joints = SkinJoints(document, skin);
+            int meshIndex = mesh.LogicalIndex;
+            int skin = skinOfNode.LogicalIndex;
+            int[] joints = SkinJoints(model, skin);
             var skinMatrices = new Matrix4x4[joints.Length];
-            float[]? inverseBind = document.OptionalIndex(skinJson, "inverseBindMatrices", $"skin {skin}") is int ibAccessor ? document.ReadFloats(ibAccessor, 16) : null;
-            if (inverseBind is not null && inverseBind.Length < 16 * joints.Length)
+            IReadOnlyList<Matrix4x4>? inverseBind = skinOfNode.GetInverseBindMatricesAccessor() is Accessor ibAccessor ? [.. ibAccessor.AsMatrix4x4Array()] : null;
+            if (inverseBind is not null && inverseBind.Count < joints.Length)
             {
                 throw new GltfException($"{file}: skin {skin} has fewer inverse bind matrices than joints.");
             }
@@ -369,9 +345,13 @@ internal sealed class GltfSkeleton
                 Matrix4x4 ibm = Matrix4x4.Identity;
                 if (inverseBind is not null)
                 {
-                    ReadOnlySpan<float> v = inverseBind.AsSpan(16 * i, 16);
-                    ibm = new Matrix4x4(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15]);
-                    if (InverseBindProblem(v, ibm) is { } problem)
+                    ibm = inverseBind[i];
+                    for (int k = 0; k < 16; k++)
+                    {
+                        read[k] = ibm[k / 4, k % 4];
+                    }
+
+                    if (InverseBindProblem(read, ibm) is { } problem)
                     {
                         throw new GltfException($"{file}: skin {skin}'s inverse bind matrix {i} (of joint node {joints[i]}) {problem}.");
                     }
@@ -380,38 +360,46 @@ internal sealed class GltfSkeleton
                 skinMatrices[i] = ibm * world[joints[i]];
             }
 
-            JsonArray primitives = mesh["primitives"] as JsonArray ?? [];
-            for (int pi = 0; pi < primitives.Count; pi++)
+            for (int pi = 0; pi < mesh.Primitives.Count; pi++)
             {
-                if (primitives[pi] is not JsonObject primitive || primitive["attributes"] is not JsonObject attributes || attributes["POSITION"] is null)
+                MeshPrimitive primitive = mesh.Primitives[pi];
+                if (primitive.GetVertexAccessor("POSITION") is not Accessor positionAccessor)
                 {
                     continue;
                 }
 
                 string what = $"primitive {pi} of mesh {meshIndex}";
-                int positionAccessor = document.RequiredIndex(attributes, "POSITION", what + "'s attributes");
                 int sets = 0;
-                while (attributes[$"JOINTS_{sets}"] is not null && attributes[$"WEIGHTS_{sets}"] is not null)
+                while (primitive.GetVertexAccessor($"JOINTS_{sets}") is not null && primitive.GetVertexAccessor($"WEIGHTS_{sets}") is not null)
                 {
                     sets++;
                 }
 
-                long vertexCount = document.ElementCount(positionAccessor);
+                long vertexCount = positionAccessor.Count;
                 verticesRead += vertexCount * (1 + sets);
-                if (verticesRead > document.Options.MaxVertices)
+                if (verticesRead > model.Options.MaxVertices)
                 {
-                    throw new GltfException($"{file}: with {what}, the character's skinned meshes read more than {document.Options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
+                    throw new GltfException($"{file}: with {what}, the character's skinned meshes read more than {model.Options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
                 }
 
-                float[] vertices = document.ReadFloats(positionAccessor, 3);
+                float[] vertices = [.. GltfModel.Vectors(positionAccessor).SelectMany(p => new[] { p.X, p.Y, p.Z })];
                 var influences = new List<(int[] Joints, float[] Weights)>();
                 for (int set = 0; set < sets; set++)
                 {
-                    int[] js = document.ReadIntegers(document.RequiredIndex(attributes, $"JOINTS_{set}", what + "'s attributes"));
-                    float[] ws = document.ReadFloats(document.RequiredIndex(attributes, $"WEIGHTS_{set}", what + "'s attributes"), 4);
-                    if (js.Length < vertices.Length / 3 * 4 || ws.Length < vertices.Length / 3 * 4)
+                    IList<Vector4> jointSets = primitive.GetVertexAccessor($"JOINTS_{set}").AsVector4Array();
+                    IList<Vector4> weightSets = primitive.GetVertexAccessor($"WEIGHTS_{set}").AsVector4Array();
+                    if (jointSets.Count < vertexCount || weightSets.Count < vertexCount)
                     {
                         throw new GltfException($"{file}: {what}'s JOINTS_{set} or WEIGHTS_{set} has fewer elements than POSITION.");
+                    }
+
+                    int[] js = new int[4 * vertexCount];
+                    float[] ws = new float[4 * vertexCount];
+                    for (int v = 0; v < vertexCount; v++)
+                    {
+                        (Vector4 jv, Vector4 wv) = (jointSets[v], weightSets[v]);
+                        (js[4 * v], js[(4 * v) + 1], js[(4 * v) + 2], js[(4 * v) + 3]) = ((int)jv.X, (int)jv.Y, (int)jv.Z, (int)jv.W);
+                        (ws[4 * v], ws[(4 * v) + 1], ws[(4 * v) + 2], ws[(4 * v) + 3]) = (wv.X, wv.Y, wv.Z, wv.W);
                     }
 
                     influences.Add((js, ws));

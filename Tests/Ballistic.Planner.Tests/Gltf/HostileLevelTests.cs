@@ -191,6 +191,22 @@ public sealed class HostileLevelTests
     }
 
     [Test]
+    public void ATransformListOfTheWrongLengthIsRefused()
+    {
+        // SharpGLTF reads the first four numbers of a five-number rotation (and fills a short list): the node would be
+        // turned by a rotation its file does not say.
+        JsonObject rotation = Triangle();
+        rotation["nodes"]![0]!["rotation"] = new JsonArray(0, 0.7071068, 0, 0.7071068, 0);
+        JsonObject translation = Triangle();
+        translation["nodes"]![0]!["translation"] = new JsonArray(1, 2);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Refused(Write("rotation.gltf", rotation)), Does.EndWith("rotation.gltf: node 0 has a malformed rotation: it must be a list of 4 numbers; not a list of 5."));
+            Assert.That(Refused(Write("translation.gltf", translation)), Does.EndWith("translation.gltf: node 0 has a malformed translation: it must be a list of 3 numbers; not a list of 2."));
+        });
+    }
+
+    [Test]
     public void RepeatedKeysAreNamedWithWhereTheyRepeat()
     {
         string path = Path.Combine(_folder, "keys.gltf");

@@ -139,13 +139,13 @@ public sealed class SpecErrorTests
             message = Broken(j => j["skins"]![0]!["joints"]![3] = 999);
             Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin 0").And.Contain("999"));
             message = Broken(j => j["accessors"]![0]!.AsObject().Remove("count"));
-            Assert.That(message, Does.Contain("dog.gltf").And.Contain("accessor 0").And.Contain("'count'"));
+            Assert.That(message, Does.Contain("dog.gltf").And.Contain("accessor 0").And.Contain("_count: 0 must be greater or equal to 1"));
             message = Broken(j => j["nodes"]![0]!["translation"] = new JsonArray("a", 0, 0));
-            Assert.That(message, Does.Contain("dog.gltf").And.Contain("node 'pelvis' has a malformed translation"));
+            Assert.That(message, Does.Contain("dog.gltf: node 0 ('pelvis') has a malformed translation: it must be a list of 3 numbers; item 0 is the string \"a\""));
             message = Broken(j => j["nodes"]![Node(j, "chest")]!["children"] = new JsonArray(0));
             Assert.That(message, Does.Contain("dog.gltf").And.Contain("cycle"));
             message = Broken(j => j["skins"]![0]!["joints"] = 5);
-            Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin 0"));
+            Assert.That(message, Does.Contain("dog.gltf: skins[0].joints: its JSON does not follow the glTF 2.0 schema"));
             message = Broken(j => j["nodes"]![Node(j, "Body")]!["skin"] = "zero");
             Assert.That(message, Does.Contain("dog.gltf").And.Contain("skin"));
         });

@@ -1,7 +1,6 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Planner.Gltf;
-using Ballistic.Planner.Rigs;
 using Ballistic.Runtime.Skeletons;
 
 namespace Ballistic.Planner.Tests.Skeletons;
@@ -26,7 +25,7 @@ internal static class GodotSkeletonImport
         JsonArray nodes = document.Array("nodes");
         int[] parents = document.NodeParents();
         Matrix4x4[] world = document.WorldTransforms();
-        int[] joints = GltfSkeleton.SkinJoints(document, 0);
+        int[] joints = [.. document.Array("skins")[0]!.AsObject()["joints"]!.AsArray().Select(j => j!.GetValue<int>())];
         int Height(int n)
         {
             int h = 0;
