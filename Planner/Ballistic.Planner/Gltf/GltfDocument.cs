@@ -9,10 +9,9 @@ namespace Ballistic.Planner.Gltf;
 
 /// <summary>
 /// A glTF 2.0 asset read from a <c>.glb</c> or <c>.gltf</c> file (embedded, data-URI or external buffers): its JSON
-/// and binary buffers, with typed access to accessors and node transforms. Characters and the animated GLB writer
-/// still read through it; levels are read through SharpGLTF (<see cref="GltfModel"/>), and issue 25 moves the rest.
-/// It reads what characters need (node hierarchies, skins, skinned meshes) and refuses compressed extensions with a
-/// clear message.
+/// and binary buffers, with typed access to accessors and node transforms. Levels and characters are read through
+/// SharpGLTF (<see cref="GltfModel"/>); the animated GLB writer still copies a user's rig through this document,
+/// parsed from the same bytes, until issue 25 moves the writer to SharpGLTF too.
 /// Input is not trusted: only regular files are read, within <see cref="GltfLoadOptions"/>' limits; external
 /// buffers and images only from the glTF's own folder or below; every count, offset and stride is checked against
 /// the bytes it reads before anything is allocated; and every problem is a <see cref="GltfException"/> naming the

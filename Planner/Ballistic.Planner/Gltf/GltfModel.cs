@@ -1016,6 +1016,8 @@ internal sealed partial class GltfModel
                     ? $"its JSON has {Token(token.Groups[1].Value)} where the glTF 2.0 schema wants a number"
                     : UnexpectedToken().Match(message) is { Success: true } unexpected
                         ? $"its JSON has {Token(unexpected.Groups[1].Value)} where the glTF 2.0 schema wants another kind of value"
+                        : EnumValue().Match(message) is { Success: true } enumValue
+                            ? $"its JSON has the value '{enumValue.Groups[1].Value}' where the glTF 2.0 schema allows only its own names"
                         : message.Contains("Empty array found", StringComparison.Ordinal) ? "its JSON has an empty list where the glTF 2.0 schema wants a value or a list with items"
                         : message.Contains("is out of bounds for an Int", StringComparison.Ordinal) ? "its JSON has a number where the glTF 2.0 schema wants a whole number within range"
                         : message.Contains("System.Text.Json.JsonException", StringComparison.Ordinal) ? "its JSON does not follow the glTF 2.0 schema"
@@ -1048,6 +1050,9 @@ internal sealed partial class GltfModel
 
     [GeneratedRegex(@"Cannot get the value of a token type '(\w+)' as a number")]
     private static partial Regex TokenAsNumber();
+
+    [GeneratedRegex(@"(?s)Value '(.*)' not found in 'SharpGLTF\.[\w.]+'")]
+    private static partial Regex EnumValue();
 
     [GeneratedRegex(@"Unexpected token (\w+)")]
     private static partial Regex UnexpectedToken();

@@ -183,8 +183,11 @@ public sealed class HostileLevelTests
         list["accessors"]![0]!["componentType"] = new JsonArray(0, 1, 2);
         JsonObject text = Triangle();
         text["materials"] = new JsonArray(new JsonObject { ["pbrMetallicRoughness"] = new JsonObject { ["baseColorFactor"] = new JsonArray(1, "red", 1, 1) } });
+        JsonObject target = Triangle();
+        target["bufferViews"]![0]!["target"] = "vertices";
         Assert.Multiple(() =>
         {
+            Assert.That(Refused(Write("target.gltf", target)), Does.EndWith("target.gltf: bufferViews[0].target: its JSON has the value 'vertices' where the glTF 2.0 schema allows only its own names."));
             Assert.That(Refused(Write("list.gltf", list)), Does.EndWith("list.gltf: accessors[0].componentType: its JSON has a value of a type the glTF 2.0 schema does not allow where it is."));
             Assert.That(Refused(Write("text.gltf", text)), Does.EndWith("text.gltf: materials[0].pbrMetallicRoughness.baseColorFactor[1]: its JSON has a string where the glTF 2.0 schema wants a number."));
         });
