@@ -95,7 +95,7 @@ internal static class CliCommands
             TextWriter stdout = parse.InvocationConfiguration.Output;
             TextWriter stderr = parse.InvocationConfiguration.Error;
             Level lvl = CliInputs.LoadLevel(parse.GetValue(level)!, parse.InvocationConfiguration.Error);
-            ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!).Reduced;
+            ReducedCharacter chr = CliInputs.Character(parse.GetValue(character)!, parse.InvocationConfiguration.Error).Reduced;
             TimeSpan? limit = Seconds(parse.GetValue(timeLimit), "--time-limit");
             int? nodes = parse.GetValue(maxNodes) is int given ? Nodes(given, "--max-nodes") : (limit is null ? 200 : null);
             var settings = new BakeSettings { Seed = parse.GetValue(seed), Threads = Threads(parse.GetValue(threads)), MaxNodes = nodes, TimeLimit = limit, Locomotion = ParseLocomotion(parse.GetValue(locomotion)!) };
@@ -166,7 +166,7 @@ internal static class CliCommands
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
-            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!);
+            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!, parse.InvocationConfiguration.Error);
             var pipeline = new PlanPipeline
             {
                 LevelPath = levelPath,

@@ -108,9 +108,10 @@ internal static class CliInputs
 
     /// <summary>
     /// The character named on the command line: a preset name, or a limb spec file (<c>NAME.limbs.json</c>) whose
-    /// rigged glTF its <c>rig</c> key names or sits beside it as <c>NAME.glb</c> (or <c>NAME.gltf</c>).
+    /// rigged glTF its <c>rig</c> key names or sits beside it as <c>NAME.glb</c> (or <c>NAME.gltf</c>). What the rig's
+    /// reader repaired is said on <paramref name="notes"/>, once.
     /// </summary>
-    public static (ReducedCharacter Reduced, CharacterModel Model) Character(string value)
+    public static (ReducedCharacter Reduced, CharacterModel Model) Character(string value, TextWriter? notes = null)
     {
         if (!value.EndsWith(".json", StringComparison.OrdinalIgnoreCase))
         {
@@ -124,6 +125,11 @@ internal static class CliInputs
         }
 
         (CharacterModel model, ReducedCharacter reduced) = CharacterSpecFile.Load(value);
+        if (model.Source?.Model is { Repaired: string repaired } rig)
+        {
+            notes?.WriteLine($"note: {MessageText.Printable(rig.Name)} is not valid glTF ({repaired.TrimEnd('.')}); loaded as repaired.");
+        }
+
         return (reduced, model);
     }
 

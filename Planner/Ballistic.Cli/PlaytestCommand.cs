@@ -61,7 +61,7 @@ internal static class PlaytestCommand
 
             int nodes = parse.GetValue(maxNodes) is int n and >= 1 and <= 1_000_000 ? n : throw new CliException($"--max-nodes takes 1 to 1,000,000 nodes, not {parse.GetValue(maxNodes)}.");
             Level lvl = CliInputs.LoadLevel(levelPath, parse.InvocationConfiguration.Error);
-            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!);
+            (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!, parse.InvocationConfiguration.Error);
             // The character's name comes from its spec (a mod's file): a slug, never a path. The outputs are checked
             // before the bake and the simulation, which may take minutes.
             string folder = parse.GetValue(output)!;

@@ -22,6 +22,28 @@ public sealed class CliJobTests
     public void RemoveFolder() => Directory.Delete(_folder, recursive: true);
 
     [Test]
+    public void ARigWithStaleAccessorBoundsLoadsAsRepairedAndSaysSoOnce()
+    {
+        string characters = Path.Combine(RepositoryFiles.Root, "Scenes", "characters");
+        (System.Text.Json.Nodes.JsonObject json, byte[] bin) = Fuzz.FuzzInputs.SplitGlb(File.ReadAllBytes(Path.Combine(characters, "frog.glb")));
+        int position = json["meshes"]![0]!["primitives"]![0]!["attributes"]!["POSITION"]!.GetValue<int>();
+        json["accessors"]![position]!["max"] = new System.Text.Json.Nodes.JsonArray(0.01, 0.01, 0.01);
+        string rig = Path.Combine(_folder, "frog.glb");
+        File.WriteAllBytes(rig, Fuzz.FuzzInputs.JoinGlb(System.Text.Encoding.UTF8.GetBytes(json.ToJsonString()), bin));
+        File.Copy(Path.Combine(characters, "frog.limbs.json"), Path.Combine(_folder, "frog.limbs.json"));
+
+        (int code, string output, string error) = Run("bake", "--level", RepositoryFiles.Level("gap-course"), "--character", Path.Combine(_folder, "frog.limbs.json"), "--max-nodes", "30", "--out", Path.Combine(_folder, "frog.roadmap"));
+        string[] notes = [.. error.Split('\n').Where(l => l.StartsWith("note: ", StringComparison.Ordinal))];
+        Assert.Multiple(() =>
+        {
+            Assert.That(code, Is.Zero, error);
+            Assert.That(output, Does.Contain("30 nodes"));
+            Assert.That(notes, Has.Length.EqualTo(1));
+            Assert.That(notes.FirstOrDefault(), Does.StartWith($"note: {rig} is not valid glTF (accessor {position} (POSITION of primitive 0 of mesh 0").And.EndWith("); loaded as repaired."));
+        });
+    }
+
+    [Test]
     public void ALevelWithStaleAccessorBoundsLoadsAsRepairedAndSaysSoOnce()
     {
         // An exporter that moved a vertex after writing the bounds: SharpGLTF's validation refuses the file in both its
