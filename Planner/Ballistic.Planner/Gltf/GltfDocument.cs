@@ -139,21 +139,9 @@ internal sealed class GltfDocument
         }
 
         Vector3 t = node["translation"] is JsonNode tn ? Vector(Numbers(tn, 3, node, "translation")) : Vector3.Zero;
-        Quaternion r = Quaternion.Identity;
-        if (node["rotation"] is JsonNode rn)
-        {
-            float[] q = Numbers(rn, 4, node, "rotation");
-            double length = Math.Sqrt(((double)q[0] * q[0]) + ((double)q[1] * q[1]) + ((double)q[2] * q[2]) + ((double)q[3] * q[3]));
-            if (!(length > 1e-6))
-            {
-                throw new GltfException($"{Name}: {NodeName(node)} has a zero rotation quaternion.");
-            }
-
-            r = new Quaternion((float)(q[0] / length), (float)(q[1] / length), (float)(q[2] / length), (float)(q[3] / length));
-        }
-
+        Quaternion r = node["rotation"] is JsonNode rn && Numbers(rn, 4, node, "rotation") is float[] q ? new Quaternion(q[0], q[1], q[2], q[3]) : Quaternion.Identity;
         Vector3 s = node["scale"] is JsonNode sn ? Vector(Numbers(sn, 3, node, "scale")) : Vector3.One;
-        return Matrix4x4.CreateScale(s) * Matrix4x4.CreateFromQuaternion(r) * Matrix4x4.CreateTranslation(t);
+        return GltfModel.Trs(t, r, s) ?? throw new GltfException($"{Name}: {NodeName(node)} has a zero rotation quaternion.");
 
         static Vector3 Vector(float[] a) => new(a[0], a[1], a[2]);
     }
@@ -235,30 +223,7 @@ internal sealed class GltfDocument
 
     /// <summary>Every node's rest transform in the scene (its local transform times its ancestors'), row-vector convention.</summary>
     /// <exception cref="GltfException">The hierarchy or a node's transform is malformed.</exception>
-    public Matrix4x4[] WorldTransforms()
-    {
-        int[] parents = NodeParents();
-        var world = new Matrix4x4[parents.Length];
-        var done = new bool[parents.Length];
-        var chain = new Stack<int>();
-        for (int n = 0; n < parents.Length; n++)
-        {
-            for (int p = n; p >= 0 && !done[p]; p = parents[p])
-            {
-                chain.Push(p);
-            }
-
-            while (chain.Count > 0)
-            {
-                int node = chain.Pop();
-                Matrix4x4 local = LocalTransform(Node(node));
-                world[node] = parents[node] >= 0 ? local * world[parents[node]] : local;
-                done[node] = true;
-            }
-        }
-
-        return world;
-    }
+    public Matrix4x4[] WorldTransforms() => GltfModel.Compose(NodeParents(), n => LocalTransform(Node(n)));
 
     /// <summary>The encoded bytes of image <paramref name="index"/> (from a buffer view, a data URI or a file in the glTF's folder) and its MIME type.</summary>
     /// <exception cref="GltfException">The image is missing, cannot be read, or its URI leads out of the glTF's folder.</exception>

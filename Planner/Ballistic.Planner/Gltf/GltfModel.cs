@@ -130,15 +130,8 @@ internal sealed partial class GltfModel
         }
         else
         {
-            Quaternion q = transform.Rotation;
-            double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
-            if (!(length > 1e-6))
-            {
-                throw new GltfException($"{MessageText.Printable(Name)}: node {node.LogicalIndex}{Named(node.Name)} has a zero rotation quaternion.");
-            }
-
-            var rotation = new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length));
-            local = Matrix4x4.CreateScale(transform.Scale) * Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(transform.Translation);
+            local = Trs(transform.Translation, transform.Rotation, transform.Scale)
+                ?? throw new GltfException($"{MessageText.Printable(Name)}: node {node.LogicalIndex}{Named(node.Name)} has a zero rotation quaternion.");
         }
 
         for (int r = 0; r < 4; r++)
@@ -160,9 +153,31 @@ internal sealed partial class GltfModel
 
     /// <summary>Every node's rest transform in the scene (its local transform times its ancestors'), row-vector convention, by node index.</summary>
     /// <exception cref="GltfException">A node's transform is not finite or has a zero rotation.</exception>
-    public Matrix4x4[] WorldTransforms()
+    public Matrix4x4[] WorldTransforms() => Compose(NodeParents(), n => LocalTransform(Root.LogicalNodes[n]));
+
+    /// <summary>
+    /// A node's local transform from glTF's translation, rotation and scale (row-vector convention: scale, then
+    /// rotation, then translation), the rotation normalised in double precision; <c>null</c> for a zero rotation. Both
+    /// glTF readers compose transforms through it, so that they agree to the bit.
+    /// </summary>
+    internal static Matrix4x4? Trs(Vector3 translation, Quaternion q, Vector3 scale)
     {
-        int[] parents = NodeParents();
+        double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
+        if (!(length > 1e-6))
+        {
+            return null;
+        }
+
+        var rotation = new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length));
+        return Matrix4x4.CreateScale(scale) * Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(translation);
+    }
+
+    /// <summary>
+    /// World transforms from each node's parent (−1 for a root; no cycle) and its local transform: every node once,
+    /// its ancestors first, without recursion. Both glTF readers compose the scene through it.
+    /// </summary>
+    internal static Matrix4x4[] Compose(int[] parents, Func<int, Matrix4x4> local)
+    {
         var world = new Matrix4x4[parents.Length];
         var done = new bool[parents.Length];
         var chain = new Stack<int>();
@@ -176,8 +191,7 @@ internal sealed partial class GltfModel
             while (chain.Count > 0)
             {
                 int node = chain.Pop();
-                Matrix4x4 local = LocalTransform(Root.LogicalNodes[node]);
-                world[node] = parents[node] >= 0 ? local * world[parents[node]] : local;
+                world[node] = parents[node] >= 0 ? local(node) * world[parents[node]] : local(node);
                 done[node] = true;
             }
         }

@@ -215,21 +215,8 @@ internal sealed class GltfSkeleton
         return new GltfSkeleton([.. order], [.. order.Select(NodeName)], parents, offsets, rests, positions, rotations, points, blends);
     }
 
-    /// <summary>The skin's joint nodes.</summary>
-    internal static int[] SkinJoints(GltfModel model, int skin)
-    {
-        int[] result = [.. model.Root.LogicalSkins[skin].Joints.Select(n => n.LogicalIndex)];
-        var seen = new HashSet<int>();
-        foreach (int joint in result)
-        {
-            if (!seen.Add(joint))
-            {
-                throw new GltfException($"{model.Name}: skin {skin} lists node {joint} as a joint twice.");
-            }
-        }
-
-        return result;
-    }
+    /// <summary>The skin's joint nodes, by node index (each once: <see cref="GltfModel.CheckJson"/> refuses a skin listing a node twice).</summary>
+    internal static int[] SkinJoints(GltfModel model, int skin) => [.. model.Root.LogicalSkins[skin].Joints.Select(n => n.LogicalIndex)];
 
     /// <summary>Every node once, each after its parent (parents from <see cref="GltfModel.NodeParents"/>, which has no cycle).</summary>
     private static int[] ParentsFirst(int[] parents)
@@ -382,7 +369,7 @@ internal sealed class GltfSkeleton
                     throw new GltfException($"{file}: with {what}, the character's skinned meshes read more than {model.Options.MaxVertices} vertices (GltfLoadOptions.MaxVertices).");
                 }
 
-                float[] vertices = [.. GltfModel.Vectors(positionAccessor).SelectMany(p => new[] { p.X, p.Y, p.Z })];
+                float[] vertices = System.Runtime.InteropServices.MemoryMarshal.Cast<Vector3, float>(GltfModel.Vectors(positionAccessor)).ToArray();
                 var influences = new List<(int[] Joints, float[] Weights)>();
                 for (int set = 0; set < sets; set++)
                 {
