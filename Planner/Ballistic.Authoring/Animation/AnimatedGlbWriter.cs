@@ -1,11 +1,12 @@
 using System.Numerics;
-using System.Text.Json.Nodes;
 using Ballistic.Authoring.Gltf;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Rigs;
+using SharpGLTF.Schema2;
+using SharpGLTF.Transforms;
 
 namespace Ballistic.Authoring.Animation;
 
@@ -53,7 +54,8 @@ public static class AnimatedGlbWriter
 
         Rig rig = model.Rig;
         int jointCount = rig.Joints.Count;
-        var writer = new GlbWriter();
+        ModelRoot root = GltfWrite.Create();
+        Scene scene = root.UseScene(model.Name);
 
         // Nodes: Armature, then one node per joint (node index = joint index + 1), then the skinned mesh node.
         var bindPositions = new Vector3[jointCount];
@@ -61,116 +63,73 @@ public static class AnimatedGlbWriter
         // Bind pose = rest pose (every angle 0), so that a reader applying the limb spec's angles gets this rig back.
         float[] rest = new float[rig.DofCount];
         rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), rest, bindPositions, bindRotations);
-        var armatureChildren = new JsonArray();
-        writer.Add("nodes", new JsonObject { ["name"] = "Armature", ["children"] = armatureChildren });
+        Node armature = scene.CreateNode("Armature");
+        var nodes = new Node[jointCount];
         for (int j = 0; j < jointCount; j++)
         {
             Joint joint = rig.Joints[j];
-            Vector3 translation = j == 0 ? bindPositions[0] : joint.Offset;
-            Quaternion rotation = j == 0 ? bindRotations[0] : rig.LocalRotation(j, rest);
-            var node = new JsonObject
-            {
-                ["name"] = joint.Name,
-                ["translation"] = Array(translation),
-                ["rotation"] = Array(rotation),
-            };
-            var children = new JsonArray();
-            for (int c = 0; c < jointCount; c++)
-            {
-                if (rig.Joints[c].Parent == j)
-                {
-                    children.Add(c + 1);
-                }
-            }
-
-            if (children.Count > 0)
-            {
-                node["children"] = children;
-            }
-
-            writer.Add("nodes", node);
-            if (j == 0)
-            {
-                armatureChildren.Add(1);
-            }
+            nodes[j] = (j == 0 ? armature : nodes[joint.Parent]).CreateNode(joint.Name);
+            nodes[j].LocalTransform = new AffineTransform(null, j == 0 ? bindRotations[0] : rig.LocalRotation(j, rest), j == 0 ? bindPositions[0] : joint.Offset);
         }
 
         // Skinned mesh: the bone boxes (BoneBoxes: the body the animator checks against the level), each vertex bound to one joint.
         BoneBoxes boxes = BoneBoxes.Of(model);
         Vector3[] positions = [.. boxes.Positions];
-        var joints = new List<byte>();
-        foreach (int joint in boxes.Joints)
-        {
-            joints.AddRange([(byte)joint, 0, 0, 0]);
-        }
-
-        int[] indices = [.. boxes.Indices];
-
-        int material = writer.Add("materials", new JsonObject
-        {
-            ["name"] = $"{model.Name} bones",
-            ["pbrMetallicRoughness"] = new JsonObject { ["baseColorFactor"] = new JsonArray(0.85f, 0.82f, 0.74f, 1f), ["metallicFactor"] = 0f, ["roughnessFactor"] = 0.7f },
-            ["doubleSided"] = true,
-        });
+        byte[] joints = new byte[positions.Length * 4];
         float[] weights = new float[positions.Length * 4];
         for (int v = 0; v < positions.Length; v++)
         {
+            joints[4 * v] = (byte)boxes.Joints[v];
             weights[4 * v] = 1f;
         }
 
-        int positionAccessor = writer.AddVector3(positions);
-        int jointAccessor = writer.AddJoints([.. joints]);
-        int weightAccessor = writer.AddFloats(weights, "VEC4", 4, 34962);
-        int indexAccessor = writer.AddIndices(indices);
-        int mesh = writer.Add("meshes", new JsonObject
-        {
-            ["name"] = model.Name,
-            ["primitives"] = new JsonArray(new JsonObject
-            {
-                ["attributes"] = new JsonObject { ["POSITION"] = positionAccessor, ["JOINTS_0"] = jointAccessor, ["WEIGHTS_0"] = weightAccessor },
-                ["indices"] = indexAccessor,
-                ["material"] = material,
-            }),
-        });
+        Material material = root.CreateMaterial($"{model.Name} bones");
+        material.InitializePBRMetallicRoughness();
+        material.DoubleSided = true;
+        MaterialChannel color = material.FindChannel("BaseColor")!.Value;
+        color.Color = new Vector4(0.85f, 0.82f, 0.74f, 1f);
+        MaterialChannel surface = material.FindChannel("MetallicRoughness")!.Value;
+        surface.SetFactor("MetallicFactor", 0f);
+        surface.SetFactor("RoughnessFactor", 0.7f);
 
-        float[] inverseBind = new float[jointCount * 16];
+        Mesh mesh = root.CreateMesh(model.Name);
+        MeshPrimitive primitive = mesh.CreatePrimitive();
+        primitive.SetVertexAccessor("POSITION", GltfWrite.Vectors(root, positions));
+        primitive.SetVertexAccessor("JOINTS_0", GltfWrite.Joints(root, joints));
+        primitive.SetVertexAccessor("WEIGHTS_0", GltfWrite.Floats(root, weights, DimensionType.VEC4, vertex: true));
+        primitive.SetIndexAccessor(GltfWrite.Indices(root, [.. boxes.Indices]));
+        primitive.Material = material;
+
+        var bound = new (Node Joint, Matrix4x4 InverseBind)[jointCount];
         for (int j = 0; j < jointCount; j++)
         {
             Matrix4x4 world = Matrix4x4.CreateFromQuaternion(bindRotations[j]) * Matrix4x4.CreateTranslation(bindPositions[j]);
             Matrix4x4.Invert(world, out Matrix4x4 inverse);
 
             // glTF requires the affine row of an inverse bind matrix to be exactly (0, 0, 0, 1).
-            inverse.M14 = 0f;
-            inverse.M24 = 0f;
-            inverse.M34 = 0f;
-            inverse.M44 = 1f;
-            Write(inverseBind.AsSpan(16 * j), inverse);
+            (inverse.M14, inverse.M24, inverse.M34, inverse.M44) = (0f, 0f, 0f, 1f);
+            bound[j] = (nodes[j], inverse);
         }
 
-        int inverseBindAccessor = writer.AddFloats(inverseBind, "MAT4", 16);
-        var skinJoints = new JsonArray();
-        for (int j = 0; j < jointCount; j++)
-        {
-            skinJoints.Add(j + 1);
-        }
-
-        int skin = writer.Add("skins", new JsonObject { ["name"] = model.Name, ["joints"] = skinJoints, ["inverseBindMatrices"] = inverseBindAccessor, ["skeleton"] = 1 });
-        int meshNode = writer.Add("nodes", new JsonObject { ["name"] = $"{model.Name}_mesh", ["mesh"] = mesh, ["skin"] = skin });
-
-        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["name"] = model.Name, ["nodes"] = new JsonArray(0, meshNode) });
+        Skin skin = root.CreateSkin(model.Name);
+        skin.BindJoints(bound);
+        skin.Skeleton = nodes[0];
+        Node meshNode = scene.CreateNode($"{model.Name}_mesh");
+        meshNode.Mesh = mesh;
+        meshNode.Skin = skin;
         if (animation is null)
         {
-            return writer.ToBytes();
+            return GltfWrite.Glb(root);
         }
 
         // The clip.
         int frames = animation.Frames.Count;
         float[] times = new float[frames];
         var rootTranslations = new Vector3[frames];
-        var rotations = new float[jointCount][];
+        var rotations = new Quaternion[jointCount][];
         for (int j = 0; j < jointCount; j++)
         {
-            rotations[j] = new float[frames * 4];
+            rotations[j] = new Quaternion[frames];
         }
 
         for (int f = 0; f < frames; f++)
@@ -180,49 +139,59 @@ public static class AnimatedGlbWriter
             rootTranslations[f] = frame.Root.ToWorld(rig.RootOffset + rig.Joints[0].Offset);
             for (int j = 0; j < jointCount; j++)
             {
-                Quaternion r = j == 0 ? Quaternion.Normalize(frame.Root.Rotation * rig.LocalRotation(0, frame.Angles)) : rig.LocalRotation(j, frame.Angles);
-                rotations[j][4 * f] = r.X;
-                rotations[j][(4 * f) + 1] = r.Y;
-                rotations[j][(4 * f) + 2] = r.Z;
-                rotations[j][(4 * f) + 3] = r.W;
+                rotations[j][f] = j == 0 ? Quaternion.Normalize(frame.Root.Rotation * rig.LocalRotation(0, frame.Angles)) : rig.LocalRotation(j, frame.Angles);
             }
         }
 
-        EnsureShortestPaths(rotations, frames);
-        int input = writer.AddFloats(times, "SCALAR", 1);
-        var samplers = new JsonArray();
-        var channels = new JsonArray();
-        samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddVector3(rootTranslations, target: null), ["interpolation"] = "LINEAR" });
-        channels.Add(new JsonObject { ["sampler"] = 0, ["target"] = new JsonObject { ["node"] = 1, ["path"] = "translation" } });
+        EnsureShortestPaths(rotations);
+        SharpGLTF.Schema2.Animation written = root.CreateAnimation(clip);
+        written.CreateTranslationChannel(nodes[0], Keys(times, rootTranslations), true);
         for (int j = 0; j < jointCount; j++)
         {
-            if (j > 0 && rig.DofsOf(j) == 0)
+            if (j == 0 || rig.DofsOf(j) > 0)
             {
-                continue;
+                written.CreateRotationChannel(nodes[j], Keys(times, rotations[j]), true);
             }
-
-            samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddFloats(rotations[j], "VEC4", 4), ["interpolation"] = "LINEAR" });
-            channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = j + 1, ["path"] = "rotation" } });
         }
 
-        writer.AddFirst("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels }); // first: the clip importers pick (Blender's action)
-        return writer.ToBytes();
+        return GltfWrite.Glb(root);
     }
 
-    /// <summary>The user's glTF with the clip added: channels on the original bone nodes.</summary>
+    /// <summary>
+    /// The user's glTF with the clip added first in its list of animations: channels on the original bone nodes; the
+    /// file made self-contained (buffers merged, images embedded), skin weights that do not sum to one normalised, and
+    /// the generator named beside the original's.
+    /// </summary>
     private static byte[] BuildFromSource(CharacterModel model, CharacterSource source, JumpAnimation? animation, string clip)
     {
-        GlbWriter writer = GlbWriter.From(source.Document);
+        GltfModel original = source.Model;
+        ModelRoot root = original.ReadAgain(animation is null ? null : clip);
+        if (root.ExtensionsUsed.Contains("EXT_meshopt_compression"))
+        {
+            throw new GltfException($"{MessageText.Printable(original.Name)} uses EXT_meshopt_compression; export it without compression.");
+        }
+
+        string? generator = root.Asset.Generator;
+        root.Asset.Generator = string.IsNullOrWhiteSpace(generator) || generator == GltfWrite.Generator ? GltfWrite.Generator : $"{GltfWrite.Generator} (from {generator})";
+        NormaliseWeights(root);
+        if (original.Repaired is not null)
+        {
+            // Read as repaired, without the accessors' stale bounds: written with bounds that hold.
+            foreach (Accessor accessor in root.LogicalAccessors)
+            {
+                accessor.UpdateBounds();
+            }
+        }
+
         if (animation is null)
         {
-            return writer.ToBytes();
+            return GltfWrite.Glb(root);
         }
 
         Rig rig = model.Rig;
         int jointCount = rig.Joints.Count;
-        GltfDocument document = source.Document;
-        int[] parentNode = document.NodeParents();
-        Matrix4x4[] world = document.WorldTransforms();
+        int[] parentNode = original.NodeParents();
+        Matrix4x4[] world = original.WorldTransforms();
         var jointOfNode = new Dictionary<int, int>();
         for (int j = 0; j < jointCount; j++)
         {
@@ -237,7 +206,6 @@ public static class AnimatedGlbWriter
         var parentRotation = new Quaternion[jointCount];
         var parentPosition = new Vector3[jointCount];
         var parentScale = new float[jointCount];
-        JsonArray nodes = (JsonArray)writer.Root["nodes"]!;
         for (int j = 0; j < jointCount; j++)
         {
             int node = source.JointNodes[j];
@@ -252,7 +220,7 @@ public static class AnimatedGlbWriter
             Matrix4x4 parentWorld = parent >= 0 ? world[parent] : Matrix4x4.Identity;
             if (!Rigid(parentWorld, out parentScale[j], out parentRotation[j]))
             {
-                throw new GltfException($"{document.Name}: the parent of bone '{rig.Joints[j].Name}' is not a rotation with a uniform scale.");
+                throw new GltfException($"{MessageText.Printable(original.Name)}: the parent of bone '{rig.Joints[j].Name}' is not a rotation with a uniform scale.");
             }
 
             parentPosition[j] = parentWorld.Translation;
@@ -263,25 +231,23 @@ public static class AnimatedGlbWriter
             }
 
             // Animated nodes must carry translation, rotation and scale rather than a matrix.
-            if (nodes[node] is JsonObject json && json["matrix"] is not null && (isRoot[j] || rig.DofsOf(j) > 0))
+            Node written = root.LogicalNodes[node];
+            if (written.LocalTransform.IsMatrix && (isRoot[j] || rig.DofsOf(j) > 0))
             {
-                Matrix4x4 local = document.LocalTransform(json);
+                Matrix4x4 local = original.LocalTransform(original.Root.LogicalNodes[node]);
                 Rigid(local, out float scale, out Quaternion rotation);
-                json.Remove("matrix");
-                json["translation"] = Array(local.Translation);
-                json["rotation"] = Array(rotation);
-                json["scale"] = new JsonArray(scale, scale, scale);
+                written.LocalTransform = new AffineTransform(new Vector3(scale), rotation, local.Translation);
             }
         }
 
         int frames = animation.Frames.Count;
         float[] times = new float[frames];
         var translations = new Vector3[jointCount][];
-        var rotations = new float[jointCount][];
+        var rotations = new Quaternion[jointCount][];
         for (int j = 0; j < jointCount; j++)
         {
             translations[j] = new Vector3[frames];
-            rotations[j] = new float[frames * 4];
+            rotations[j] = new Quaternion[frames];
         }
 
         var positions = new Vector3[jointCount];
@@ -305,36 +271,85 @@ public static class AnimatedGlbWriter
                     local = Quaternion.Conjugate(worldRotations[rig.Joints[j].Parent] * between[j]) * worldRotations[j];
                 }
 
-                local = Quaternion.Normalize(local);
-                rotations[j][4 * f] = local.X;
-                rotations[j][(4 * f) + 1] = local.Y;
-                rotations[j][(4 * f) + 2] = local.Z;
-                rotations[j][(4 * f) + 3] = local.W;
+                rotations[j][f] = Quaternion.Normalize(local);
             }
         }
 
-        EnsureShortestPaths(rotations, frames);
-        int input = writer.AddFloats(times, "SCALAR", 1);
-        var samplers = new JsonArray();
-        var channels = new JsonArray();
+        EnsureShortestPaths(rotations);
+        SharpGLTF.Schema2.Animation ours = root.LogicalAnimations[0]; // the one ReadAgain put first: the clip importers pick (Blender's action)
         for (int j = 0; j < jointCount; j++)
         {
-            int node = source.JointNodes[j];
+            Node node = root.LogicalNodes[source.JointNodes[j]];
             if (isRoot[j])
             {
-                samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddVector3(translations[j], target: null), ["interpolation"] = "LINEAR" });
-                channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = node, ["path"] = "translation" } });
+                ours.CreateTranslationChannel(node, Keys(times, translations[j]), true);
             }
 
             if (isRoot[j] || rig.DofsOf(j) > 0)
             {
-                samplers.Add(new JsonObject { ["input"] = input, ["output"] = writer.AddFloats(rotations[j], "VEC4", 4), ["interpolation"] = "LINEAR" });
-                channels.Add(new JsonObject { ["sampler"] = samplers.Count - 1, ["target"] = new JsonObject { ["node"] = node, ["path"] = "rotation" } });
+                ours.CreateRotationChannel(node, Keys(times, rotations[j]), true);
             }
         }
 
-        writer.AddFirst("animations", new JsonObject { ["name"] = clip, ["samplers"] = samplers, ["channels"] = channels }); // first: the clip importers pick (Blender's action)
-        return writer.ToBytes();
+        return GltfWrite.Glb(root);
+    }
+
+    /// <summary>
+    /// Scales every float skin weight set (WEIGHTS_0, WEIGHTS_1… of a vertex together) whose sum is off one by more than
+    /// a few units in the last place (assimp writes 0.999999) to sum to one; sets summing to zero, and quantised
+    /// weights, are left as they are (the library's validation refuses them on load).
+    /// </summary>
+    private static void NormaliseWeights(ModelRoot root)
+    {
+        foreach (MeshPrimitive primitive in root.LogicalMeshes.SelectMany(m => m.Primitives))
+        {
+            Accessor[] sets = [.. primitive.VertexAccessors.Where(a => a.Key.StartsWith("WEIGHTS_", StringComparison.Ordinal)).OrderBy(a => a.Key, StringComparer.Ordinal).Select(a => a.Value)];
+            if (sets.Length == 0 || sets.Any(a => a.Encoding != EncodingType.FLOAT || a.Dimensions != DimensionType.VEC4 || a.IsSparse))
+            {
+                continue;
+            }
+
+            var arrays = sets.Select(a => a.AsVector4Array()).ToArray();
+            int count = arrays.Min(a => a.Count);
+            for (int v = 0; v < count; v++)
+            {
+                double sum = 0;
+                foreach (var array in arrays)
+                {
+                    Vector4 w = array[v];
+                    sum += (double)w.X + w.Y + w.Z + w.W;
+                }
+
+                if (Math.Abs(sum - 1.0) > WeightTolerance && sum > 0.0)
+                {
+                    foreach (var array in arrays)
+                    {
+                        array[v] /= (float)sum;
+                    }
+                }
+            }
+        }
+    }
+
+    /// <summary>How far (absolute) a vertex's skin weights may sum from one before they are normalised: a few units in the last place of a float near one.</summary>
+    private const double WeightTolerance = 5e-7;
+
+    /// <summary>The keyframes (time, value) of a channel.</summary>
+    /// <exception cref="GltfException">The frame times do not increase.</exception>
+    private static Dictionary<float, T> Keys<T>(float[] times, T[] values)
+    {
+        var keys = new Dictionary<float, T>(times.Length);
+        for (int f = 0; f < times.Length; f++)
+        {
+            if (f > 0 && !(times[f] > times[f - 1]))
+            {
+                throw new GltfException($"Cannot write the clip: frame {f}'s time {times[f]} s does not follow frame {f - 1}'s ({times[f - 1]} s).");
+            }
+
+            keys.Add(times[f], values[f]);
+        }
+
+        return keys;
     }
 
     /// <summary>Splits a row-vector transform into a uniform scale and a rotation; false when it is neither.</summary>
@@ -345,32 +360,17 @@ public static class AnimatedGlbWriter
     public static void Save(JumpAnimation animation, string path, string clip = "jumps") => OutputFile.Write(path, ToBytes(animation, clip));
 
     /// <summary>Flips quaternion keys whose dot product with the previous key is negative, so slerp takes the short way.</summary>
-    private static void EnsureShortestPaths(float[][] rotations, int frames)
+    private static void EnsureShortestPaths(Quaternion[][] rotations)
     {
-        foreach (float[] keys in rotations)
+        foreach (Quaternion[] keys in rotations)
         {
-            for (int f = 1; f < frames; f++)
+            for (int f = 1; f < keys.Length; f++)
             {
-                float dot = (keys[4 * f] * keys[4 * (f - 1)]) + (keys[(4 * f) + 1] * keys[(4 * (f - 1)) + 1]) + (keys[(4 * f) + 2] * keys[(4 * (f - 1)) + 2]) + (keys[(4 * f) + 3] * keys[(4 * (f - 1)) + 3]);
-                if (dot < 0f)
+                if (Quaternion.Dot(keys[f], keys[f - 1]) < 0f)
                 {
-                    for (int k = 0; k < 4; k++)
-                    {
-                        keys[(4 * f) + k] = -keys[(4 * f) + k];
-                    }
+                    keys[f] = -keys[f];
                 }
             }
         }
-    }
-
-    private static JsonArray Array(Vector3 v) => new(v.X, v.Y, v.Z);
-
-    private static JsonArray Array(Quaternion q) => new(q.X, q.Y, q.Z, q.W);
-
-    private static void Write(Span<float> target, Matrix4x4 m)
-    {
-        // System.Numerics (row vectors) written row by row is glTF's column-major order.
-        float[] values = [m.M11, m.M12, m.M13, m.M14, m.M21, m.M22, m.M23, m.M24, m.M31, m.M32, m.M33, m.M34, m.M41, m.M42, m.M43, m.M44];
-        values.CopyTo(target);
     }
 }

@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Authoring.Gltf;
+using Ballistic.Planner.Gltf;
 using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Authoring.Levels;
 
@@ -10,53 +12,42 @@ namespace Ballistic.Authoring.Levels;
 public static class GltfLevelWriter
 {
     /// <summary>The meshes as GLB bytes: one node per mesh, smooth vertex normals, one material per distinct material.</summary>
+    /// <exception cref="GltfException">A coordinate is not finite.</exception>
     public static byte[] ToBytes(IReadOnlyList<LevelMesh> meshes)
     {
         ArgumentNullException.ThrowIfNull(meshes);
-        var writer = new GlbWriter();
-        var materials = new Dictionary<(LevelMaterial, Vector4), int>();
-        var sceneNodes = new JsonArray();
+        ModelRoot root = GltfWrite.Create();
+        Scene scene = root.UseScene("level");
+        var materials = new Dictionary<(LevelMaterial, Vector4), Material>();
         foreach (LevelMesh mesh in meshes)
         {
-            if (!materials.TryGetValue((mesh.Material, mesh.Color), out int material))
+            if (!materials.TryGetValue((mesh.Material, mesh.Color), out Material? material))
             {
-                var json = new JsonObject
-                {
-                    ["name"] = mesh.Material.Name,
-                    ["pbrMetallicRoughness"] = new JsonObject
-                    {
-                        ["baseColorFactor"] = new JsonArray(mesh.Color.X, mesh.Color.Y, mesh.Color.Z, mesh.Color.W),
-                        ["metallicFactor"] = 0f,
-                        ["roughnessFactor"] = 0.9f,
-                    },
-                };
+                material = root.CreateMaterial(mesh.Material.Name);
+                material.InitializePBRMetallicRoughness();
+                MaterialChannel color = material.FindChannel("BaseColor")!.Value;
+                color.Color = mesh.Color;
+                MaterialChannel surface = material.FindChannel("MetallicRoughness")!.Value;
+                surface.SetFactor("MetallicFactor", 0f);
+                surface.SetFactor("RoughnessFactor", 0.9f);
                 if (mesh.Material.Friction is float friction)
                 {
-                    json["extras"] = new JsonObject { ["friction"] = friction };
+                    material.Extras = new JsonObject { ["friction"] = friction };
                 }
 
-                material = writer.Add("materials", json);
                 materials.Add((mesh.Material, mesh.Color), material);
             }
 
-            int positions = writer.AddVector3(mesh.Positions);
-            int normals = writer.AddVector3(SmoothNormals(mesh.Positions, mesh.Indices));
-            int indices = writer.AddIndices(mesh.Indices);
-            int meshIndex = writer.Add("meshes", new JsonObject
-            {
-                ["name"] = mesh.Name,
-                ["primitives"] = new JsonArray(new JsonObject
-                {
-                    ["attributes"] = new JsonObject { ["POSITION"] = positions, ["NORMAL"] = normals },
-                    ["indices"] = indices,
-                    ["material"] = material,
-                }),
-            });
-            sceneNodes.Add(writer.Add("nodes", new JsonObject { ["name"] = mesh.Name, ["mesh"] = meshIndex }));
+            Mesh written = root.CreateMesh(mesh.Name);
+            MeshPrimitive primitive = written.CreatePrimitive();
+            primitive.SetVertexAccessor("POSITION", GltfWrite.Vectors(root, mesh.Positions));
+            primitive.SetVertexAccessor("NORMAL", GltfWrite.Vectors(root, SmoothNormals(mesh.Positions, mesh.Indices)));
+            primitive.SetIndexAccessor(GltfWrite.Indices(root, mesh.Indices));
+            primitive.Material = material;
+            scene.CreateNode(mesh.Name).Mesh = written;
         }
 
-        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["name"] = "level", ["nodes"] = sceneNodes });
-        return writer.ToBytes();
+        return GltfWrite.Glb(root);
     }
 
     /// <summary>Writes the meshes to <paramref name="path"/>.</summary>

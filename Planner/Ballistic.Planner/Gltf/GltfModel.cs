@@ -114,6 +114,25 @@ internal sealed partial class GltfModel
     }
 
     /// <summary>
+    /// The file read again into a model of its own, to be changed and written (the animated GLB of a user's rig): its
+    /// buffers and images read afresh through the same checks, and repaired as when it was loaded. With
+    /// <paramref name="firstAnimation"/>, an animation of that name, with no channels yet, comes first in its list.
+    /// </summary>
+    /// <exception cref="GltfException">A file the glTF refers to can no longer be read, or has changed so that it no longer loads.</exception>
+    internal ModelRoot ReadAgain(string? firstAnimation)
+    {
+        string printable = MessageText.Printable(Name);
+        try
+        {
+            return Read(Bytes, printable, Directory, Options, Repaired is null ? ValidationMode.Strict : ValidationMode.TryFix, repair: Repaired is not null, firstAnimation);
+        }
+        catch (ModelException e)
+        {
+            throw new GltfException($"{printable}: {Describe(e)}");
+        }
+    }
+
+    /// <summary>
     /// The local transform of <paramref name="node"/>, row-vector convention: its matrix, or scale · rotation ·
     /// translation with the rotation normalised in double precision (a quaternion an exporter wrote a little off unit
     /// length rotates, and does not scale).
@@ -281,7 +300,7 @@ internal sealed partial class GltfModel
     /// <paramref name="directory"/> and to what is left of the byte limit; every exception becomes a
     /// <see cref="GltfException"/> but the library's <see cref="ModelException"/>, left to the caller.
     /// </summary>
-    private static ModelRoot Read(byte[] bytes, string name, string? directory, GltfLoadOptions options, ValidationMode mode, bool repair)
+    private static ModelRoot Read(byte[] bytes, string name, string? directory, GltfLoadOptions options, ValidationMode mode, bool repair, string? firstAnimation = null)
     {
         long budget = options.MaxBytes - bytes.Length;
         GltfException? refused = null;
@@ -315,7 +334,7 @@ internal sealed partial class GltfModel
         {
             ReadContext context = ReadContext.Create(External);
             context.Validation = mode;
-            context.JsonPreprocessor = json => Prepare(json, name, repair, elements);
+            context.JsonPreprocessor = json => Prepare(json, name, repair, elements, firstAnimation);
             using var stream = new MemoryStream(bytes, writable: false);
             return context.ReadSchema2(stream);
         }
@@ -621,7 +640,7 @@ internal sealed partial class GltfModel
     /// the library's strict and repairing modes both refuse; Godot and Blender import such files, and nothing here
     /// reads the bounds.
     /// </summary>
-    private static string Prepare(string json, string name, bool repair, Dictionary<string, string> elements)
+    private static string Prepare(string json, string name, bool repair, Dictionary<string, string> elements, string? firstAnimation)
     {
         json = json.TrimStart('\uFEFF');
         if (json.Contains('\uFFFD', StringComparison.Ordinal))
@@ -631,18 +650,34 @@ internal sealed partial class GltfModel
         }
 
         CheckJson(json, name, elements);
-        if (repair && JsonNode.Parse(json) is JsonObject repaired && repaired["accessors"] is JsonArray accessors)
+        if ((!repair && firstAnimation is null) || JsonNode.Parse(json) is not JsonObject prepared)
+        {
+            return json;
+        }
+
+        if (repair && prepared["accessors"] is JsonArray accessors)
         {
             foreach (JsonObject accessor in accessors.OfType<JsonObject>())
             {
                 accessor.Remove("min");
                 accessor.Remove("max");
             }
-
-            return repaired.ToJsonString();
         }
 
-        return json;
+        if (firstAnimation is not null)
+        {
+            // An animation of its own, first in the list, for the writer to fill with channels: the library appends
+            // the animations it creates, and nothing in glTF refers to an animation by its index.
+            if (prepared["animations"] is not JsonArray animations)
+            {
+                animations = [];
+                prepared["animations"] = animations;
+            }
+
+            animations.Insert(0, new JsonObject { ["name"] = firstAnimation });
+        }
+
+        return prepared.ToJsonString();
     }
 
     /// <summary>
