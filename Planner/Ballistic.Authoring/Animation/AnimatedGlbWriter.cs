@@ -12,9 +12,10 @@ namespace Ballistic.Authoring.Animation;
 
 /// <summary>
 /// Writes a character and its animation (a path of moves: jumps and walks) as one animated, skinned glTF binary
-/// (Godot and Blender import it). A character loaded from a user's glTF (<see cref="CharacterModel.Source"/> set) is
-/// written as that file: its scenes, node hierarchy, skinned meshes, materials, textures and images (embedded),
-/// skins and clips, with one clip added whose channels target the original bone nodes: the rotation of every bone
+/// (Godot and Blender import it), through SharpGLTF. A character loaded from a user's glTF (<see cref="CharacterModel.Source"/> set) is
+/// written as that file, read again through the same checks: its scenes, node hierarchy, skinned meshes, materials,
+/// textures and images (embedded), skins and clips, with one clip added, first in the list (the clip Blender makes the
+/// armature's action), whose channels target the original bone nodes: the rotation of every bone
 /// that moves, relative to its glTF parent (so anchor nodes between bones keep their place), and the translation and
 /// rotation of every root bone, relative to its non-bone ancestors' transforms (an <c>Armature</c> rotated or scaled
 /// stays as it is). A character built in code is written as an <c>Armature</c> node holding the joint hierarchy
@@ -22,7 +23,7 @@ namespace Ballistic.Authoring.Animation;
 /// the bones below it cut flat at the limb's contact point, a sole), and one clip whose channels are the
 /// root joint's translation and rotation (its world placement on the jump arcs and walk paths) and every joint's
 /// local rotation. Either way the clip is keyed at each of the animation's frames (flights, walks and the stances
-/// between them alike) with linear interpolation; world frame Y up, metres, seconds.
+/// between them alike) with linear interpolation; world frame Y up, metres, seconds. The same input gives the same bytes.
 /// </summary>
 public static class AnimatedGlbWriter
 {
@@ -159,8 +160,9 @@ public static class AnimatedGlbWriter
 
     /// <summary>
     /// The user's glTF with the clip added first in its list of animations: channels on the original bone nodes; the
-    /// file made self-contained (buffers merged, images embedded), skin weights that do not sum to one normalised, and
-    /// the generator named beside the original's.
+    /// file made self-contained (buffers merged, images embedded) and the generator named beside the original's. A rig
+    /// that loaded repaired is read again as repaired: SharpGLTF's repairing mode rescales skin weights that do not sum
+    /// to one (assimp writes 0.999999), and the accessors get bounds that hold.
     /// </summary>
     private static byte[] BuildFromSource(CharacterModel model, CharacterSource source, JumpAnimation? animation, string clip)
     {
@@ -173,7 +175,6 @@ public static class AnimatedGlbWriter
 
         string? generator = root.Asset.Generator;
         root.Asset.Generator = string.IsNullOrWhiteSpace(generator) || generator == GltfWrite.Generator ? GltfWrite.Generator : $"{GltfWrite.Generator} (from {generator})";
-        NormaliseWeights(root);
         if (original.Repaired is not null)
         {
             // Read as repaired, without the accessors' stale bounds: written with bounds that hold.
@@ -293,46 +294,6 @@ public static class AnimatedGlbWriter
 
         return GltfWrite.Glb(root);
     }
-
-    /// <summary>
-    /// Scales every float skin weight set (WEIGHTS_0, WEIGHTS_1… of a vertex together) whose sum is off one by more than
-    /// a few units in the last place (assimp writes 0.999999) to sum to one; sets summing to zero, and quantised
-    /// weights, are left as they are (the library's validation refuses them on load).
-    /// </summary>
-    private static void NormaliseWeights(ModelRoot root)
-    {
-        foreach (MeshPrimitive primitive in root.LogicalMeshes.SelectMany(m => m.Primitives))
-        {
-            Accessor[] sets = [.. primitive.VertexAccessors.Where(a => a.Key.StartsWith("WEIGHTS_", StringComparison.Ordinal)).OrderBy(a => a.Key, StringComparer.Ordinal).Select(a => a.Value)];
-            if (sets.Length == 0 || sets.Any(a => a.Encoding != EncodingType.FLOAT || a.Dimensions != DimensionType.VEC4 || a.IsSparse))
-            {
-                continue;
-            }
-
-            var arrays = sets.Select(a => a.AsVector4Array()).ToArray();
-            int count = arrays.Min(a => a.Count);
-            for (int v = 0; v < count; v++)
-            {
-                double sum = 0;
-                foreach (var array in arrays)
-                {
-                    Vector4 w = array[v];
-                    sum += (double)w.X + w.Y + w.Z + w.W;
-                }
-
-                if (Math.Abs(sum - 1.0) > WeightTolerance && sum > 0.0)
-                {
-                    foreach (var array in arrays)
-                    {
-                        array[v] /= (float)sum;
-                    }
-                }
-            }
-        }
-    }
-
-    /// <summary>How far (absolute) a vertex's skin weights may sum from one before they are normalised: a few units in the last place of a float near one.</summary>
-    private const double WeightTolerance = 5e-7;
 
     /// <summary>The keyframes (time, value) of a channel.</summary>
     /// <exception cref="GltfException">The frame times do not increase.</exception>
