@@ -34,7 +34,6 @@ internal sealed class CharacterSource
         }
 
         Model = model;
-        _document = new Lazy<GltfDocument>(() => GltfDocument.Parse(model.Bytes, model.Name, model.Directory, model.Options));
         JointNodes = [.. jointNodes];
         UpAxis = upAxis;
         ForwardAxis = forwardAxis;
@@ -42,14 +41,6 @@ internal sealed class CharacterSource
 
     /// <summary>The glTF the rig was read from (SharpGLTF's schema).</summary>
     public GltfModel Model { get; }
-
-    /// <summary>
-    /// The same file as our own glTF document, parsed on first use from the bytes the rig was read from: the animated
-    /// GLB writer still copies the user's JSON and buffers through it (issue 25 moves the writer to SharpGLTF).
-    /// </summary>
-    public GltfDocument Document => _document.Value;
-
-    private readonly Lazy<GltfDocument> _document;
 
     /// <summary>For each rig joint, the index of its glTF node.</summary>
     public IReadOnlyList<int> JointNodes { get; }

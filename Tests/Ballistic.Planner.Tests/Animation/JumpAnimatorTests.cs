@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Text.Json.Nodes;
 using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
@@ -10,6 +9,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Support;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Planner.Tests.Animation;
 
@@ -92,23 +92,16 @@ public sealed class JumpAnimatorTests
     {
         JumpAnimation animation = Desert.Value.Animation;
         byte[] glb = AnimatedGlbWriter.ToBytes(animation, "desert");
-        GltfDocument document = GltfDocument.Parse(glb, "skeleton.glb", null);
-        JsonArray nodes = document.Array("nodes");
-        var animationJson = (JsonObject)document.Array("animations")[0]!;
-        Assert.That(animationJson["name"]!.GetValue<string>(), Is.EqualTo("desert"));
-        Assert.That(document.Array("skins"), Has.Count.EqualTo(1));
+        ModelRoot document = ModelRoot.ParseGLB(glb);
+        IReadOnlyList<Node> nodes = document.LogicalNodes;
+        Assert.That(document.LogicalAnimations[0].Name, Is.EqualTo("desert"));
+        Assert.That(document.LogicalSkins, Has.Count.EqualTo(1));
 
         // Local transforms per node at each key: the rest transform, overridden by the clip's channels.
-        var samplers = (JsonArray)animationJson["samplers"]!;
-        var keyed = new Dictionary<(int Node, string Path), float[]>();
-        float[] times = document.ReadFloats(samplers[0]!["input"]!.GetValue<int>(), 1);
-        foreach (JsonNode? channel in (JsonArray)animationJson["channels"]!)
-        {
-            int node = channel!["target"]!["node"]!.GetValue<int>();
-            string path = channel["target"]!["path"]!.GetValue<string>();
-            JsonNode sampler = samplers[channel["sampler"]!.GetValue<int>()]!;
-            keyed[(node, path)] = document.ReadFloats(sampler["output"]!.GetValue<int>(), path == "rotation" ? 4 : 3);
-        }
+        var channels = GlbChannels.Of(document.LogicalAnimations[0]);
+        var keyed = channels.ToDictionary(c => c.Key, c => c.Value.Values);
+        float[] times = channels.Values.First().Times;
+        Assert.That(channels.Values.Select(c => c.Times), Has.All.EqualTo(times), "every channel keyed at the same times");
 
         Rig rig = animation.Model.Rig;
         var expected = new Vector3[rig.Joints.Count];
@@ -122,9 +115,8 @@ public sealed class JumpAnimatorTests
             var world = new Matrix4x4[nodes.Count];
             for (int n = 0; n < rig.Joints.Count + 1; n++)
             {
-                var node = (JsonObject)nodes[n]!;
-                Vector3 t = node["translation"] is JsonArray ta ? new Vector3(ta[0]!.GetValue<float>(), ta[1]!.GetValue<float>(), ta[2]!.GetValue<float>()) : Vector3.Zero;
-                Quaternion r = node["rotation"] is JsonArray ra ? new Quaternion(ra[0]!.GetValue<float>(), ra[1]!.GetValue<float>(), ra[2]!.GetValue<float>(), ra[3]!.GetValue<float>()) : Quaternion.Identity;
+                Vector3 t = nodes[n].LocalTransform.Translation;
+                Quaternion r = nodes[n].LocalTransform.Rotation;
                 if (keyed.TryGetValue((n, "translation"), out float[]? tk))
                 {
                     t = new Vector3(tk[3 * f], tk[(3 * f) + 1], tk[(3 * f) + 2]);

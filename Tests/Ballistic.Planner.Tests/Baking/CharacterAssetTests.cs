@@ -38,7 +38,7 @@ public sealed class CharacterAssetTests
             Assert.That(reduced.Name, Is.EqualTo("skeleton"));
             Assert.That(fromBytes.Rig.Joints.Select(j => j.Name), Is.EqualTo(model.Rig.Joints.Select(j => j.Name)));
             Assert.That(fromBytes.Limbs.Select(l => l.Name), Is.EqualTo(model.Limbs.Select(l => l.Name)));
-            Assert.That(fromBytes.Source!.Document.Name, Is.EqualTo("res://characters/skeleton.glb"));
+            Assert.That(fromBytes.Source!.Model.Name, Is.EqualTo("res://characters/skeleton.glb"));
         });
     }
 

@@ -5,6 +5,8 @@ using Ballistic.Authoring.Gltf;
 using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
+using SharpGLTF.Schema2;
+using SharpGLTF.Transforms;
 
 namespace Ballistic.Planner.Tests.Gltf;
 
@@ -42,15 +44,16 @@ public sealed class GltfLevelTests
     public void NodeHierarchyTransformsApplyParentFirst()
     {
         // Parent: translate (10, 0, 0) and turn 90° about Y; child: translate (1, 2, 0) holding the mesh.
-        var writer = new GlbWriter();
-        int positions = writer.AddVector3([new(0f, 0f, 0f), new(1f, 0f, 0f), new(0f, 0f, -1f)]);
-        int mesh = writer.Add("meshes", new JsonObject { ["primitives"] = new JsonArray(new JsonObject { ["attributes"] = new JsonObject { ["POSITION"] = positions } }) });
-        int child = writer.Add("nodes", new JsonObject { ["mesh"] = mesh, ["translation"] = new JsonArray(1f, 2f, 0f) });
+        ModelRoot root = GltfWrite.Create();
         float s = MathF.Sqrt(0.5f);
-        int parent = writer.Add("nodes", new JsonObject { ["translation"] = new JsonArray(10f, 0f, 0f), ["rotation"] = new JsonArray(0f, s, 0f, s), ["children"] = new JsonArray(child) });
-        writer.Root["scene"] = writer.Add("scenes", new JsonObject { ["nodes"] = new JsonArray(parent) });
+        Node parent = root.UseScene(0).CreateNode("parent");
+        parent.LocalTransform = new AffineTransform(null, new Quaternion(0f, s, 0f, s), new Vector3(10f, 0f, 0f));
+        Node child = parent.CreateNode("child");
+        child.LocalTransform = new AffineTransform(null, null, new Vector3(1f, 2f, 0f));
+        child.Mesh = root.CreateMesh();
+        child.Mesh.CreatePrimitive().SetVertexAccessor("POSITION", GltfWrite.Vectors(root, [new(0f, 0f, 0f), new(1f, 0f, 0f), new(0f, 0f, -1f)]));
 
-        Level level = GltfLevelLoader.Build(GltfModel.Parse(writer.ToBytes(), "t.glb", null), "t.glb");
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(GltfWrite.Glb(root), "t.glb", null), "t.glb");
         // The child's origin (1, 2, 0) turned 90° about Y is (0, 2, −1), then moved to (10, 2, −1).
         Assert.That(Vector3.Distance(level.Triangles[0].A, new Vector3(10f, 2f, -1f)), Is.LessThan(1e-5f));
         Assert.That(Vector3.Distance(level.Triangles[0].B, new Vector3(10f, 2f, -2f)), Is.LessThan(1e-5f));
@@ -60,10 +63,8 @@ public sealed class GltfLevelTests
     public void MatrixNodesAndTextGltfWithDataUrisAreRead()
     {
         byte[] glb = GltfLevelWriter.ToBytes([Floor]);
-        GltfDocument parsed = GltfDocument.Parse(glb, "f.glb", null);
         // Re-express as a .gltf text file: the binary chunk as a base64 data URI, the node moved by a matrix.
-        byte[] bin = ExtractBin(glb);
-        JsonObject root = (JsonObject)parsed.Root.DeepClone();
+        (JsonObject root, byte[] bin) = Fuzz.FuzzInputs.SplitGlb(glb);
         root["buffers"] = new JsonArray(new JsonObject { ["byteLength"] = bin.Length, ["uri"] = "data:application/octet-stream;base64," + Convert.ToBase64String(bin) });
         ((JsonObject)((JsonArray)root["nodes"]!)[0]!)["matrix"] = new JsonArray(1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 3f, 0f, 1f);
         Level level = GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(root.ToJsonString()), "f.gltf", null), "f.gltf");
@@ -117,14 +118,6 @@ public sealed class GltfLevelTests
         int binStart = 20 + BitConverter.ToInt32(glb, 12) + 8;
         BitConverter.GetBytes(float.PositiveInfinity).CopyTo(glb, binStart);
         Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(glb, "b.glb", null), "b.glb"), Throws.TypeOf<GltfException>().With.Message.EqualTo("b.glb: accessor 0 (POSITION of primitive 0 of mesh 0 ('BrokenRock')): POSITION[0]: Invalid Position."));
-    }
-
-    private static byte[] ExtractBin(byte[] glb)
-    {
-        int jsonLength = BitConverter.ToInt32(glb, 12);
-        int at = 20 + jsonLength;
-        int binLength = BitConverter.ToInt32(glb, at);
-        return glb[(at + 8)..(at + 8 + binLength)];
     }
 
     private static string Temp(string extension) => Path.Combine(Path.GetTempPath(), $"ballistic-{Guid.NewGuid():N}{extension}");

@@ -1,10 +1,9 @@
 using System.Numerics;
-using System.Text.Json.Nodes;
 using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
-using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Reports;
 
@@ -15,13 +14,9 @@ public sealed class WalkGlbTests
     public void TheClipIsKeyedThroughTheWalksWithTheRootOnThem()
     {
         JumpAnimation animation = WalkPlans.Animation;
-        GltfDocument document = GltfDocument.Parse(AnimatedGlbWriter.ToBytes(animation, "moves"), "skeleton.glb", null);
-        var clip = (JsonObject)document.Array("animations")[0]!;
-        Assert.That((string?)clip["name"], Is.EqualTo("moves"));
-        var samplers = (JsonArray)clip["samplers"]!;
-        float[] times = document.ReadFloats(samplers[0]!["input"]!.GetValue<int>(), 1);
-        JsonNode rootChannel = ((JsonArray)clip["channels"]!).Single(c => c!["target"]!["node"]!.GetValue<int>() == 1 && (string?)c["target"]!["path"] == "translation")!;
-        float[] root = document.ReadFloats(samplers[rootChannel["sampler"]!.GetValue<int>()]!["output"]!.GetValue<int>(), 3);
+        SharpGLTF.Schema2.Animation clip = SharpGLTF.Schema2.ModelRoot.ParseGLB(AnimatedGlbWriter.ToBytes(animation, "moves")).LogicalAnimations[0];
+        Assert.That(clip.Name, Is.EqualTo("moves"));
+        (float[] times, float[] root) = GlbChannels.Of(clip)[(1, "translation")];
 
         Assert.That(times, Has.Length.EqualTo(animation.Frames.Count));
         Assert.That(times[^1], Is.EqualTo(animation.Duration).Within(1f / 30f), "the clip runs to the end of the last walk");

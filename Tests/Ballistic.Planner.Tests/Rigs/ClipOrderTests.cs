@@ -7,6 +7,7 @@ using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Planner.Tests.Rigs;
 
@@ -50,22 +51,25 @@ public sealed class ClipOrderTests
             File.WriteAllBytes(Path.Combine(validate, "dog-with-clips-animated.glb"), glb);
         }
 
-        GltfDocument original = GltfDocument.Load(gltf);
-        GltfDocument written = GltfDocument.Parse(glb, "dog.glb", null);
-        JsonArray clips = written.Array("animations");
+        ModelRoot original = GltfModel.Load(gltf).Root;
+        ModelRoot written = ModelRoot.ParseGLB(glb);
+        IReadOnlyList<SharpGLTF.Schema2.Animation> clips = written.LogicalAnimations;
         Assert.Multiple(() =>
         {
-            Assert.That(clips.Select(c => c!["name"]!.GetValue<string>()), Is.EqualTo(new[] { "jumps", "Idle", "Run" }));
+            Assert.That(clips.Select(c => c.Name), Is.EqualTo(new[] { "jumps", "Idle", "Run" }));
             for (int i = 0; i < 2; i++)
             {
-                JsonNode theirs = original.Array("animations")[i]!;
-                JsonNode ours = clips[i + 1]!;
-                Assert.That(JsonNode.DeepEquals(ours["channels"], theirs["channels"]), Is.True, $"{theirs["name"]}: channels kept");
-                int sampler = ours["samplers"]![0]!["output"]!.GetValue<int>();
-                Assert.That(written.ReadFloats(sampler, 4), Is.EqualTo(original.ReadFloats(theirs["samplers"]![0]!["output"]!.GetValue<int>(), 4)), $"{theirs["name"]}: keys kept");
+                var theirs = GlbChannels.Of(original.LogicalAnimations[i]);
+                var ours = GlbChannels.Of(clips[i + 1]);
+                Assert.That(ours.Keys, Is.EqualTo(theirs.Keys), $"{clips[i + 1].Name}: channels kept");
+                foreach (var channel in theirs)
+                {
+                    Assert.That(ours[channel.Key].Times, Is.EqualTo(channel.Value.Times), $"{clips[i + 1].Name}: key times kept");
+                    Assert.That(ours[channel.Key].Values, Is.EqualTo(channel.Value.Values), $"{clips[i + 1].Name}: keys kept");
+                }
             }
 
-            Assert.That(clips[0]!["channels"]!.AsArray(), Is.Not.Empty, "our clip is keyed");
+            Assert.That(clips[0].Channels, Is.Not.Empty, "our clip is keyed");
         });
     }
 
@@ -100,7 +104,7 @@ public sealed class ClipOrderTests
         }
 
         byte[] bytes = new byte[floats.Count * 4];
-        Buffer.BlockCopy(floats.ToArray(), 0, bytes, 0, bytes.Length);
+        System.Buffer.BlockCopy(floats.ToArray(), 0, bytes, 0, bytes.Length);
         buffers.Add(new JsonObject { ["byteLength"] = bytes.Length, ["uri"] = "data:application/octet-stream;base64," + Convert.ToBase64String(bytes) });
         root["animations"] = animations;
         File.WriteAllText(gltfPath, root.ToJsonString());

@@ -10,6 +10,7 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
+using SharpGLTF.Schema2;
 
 namespace Ballistic.Planner.Tests.Rigs;
 
@@ -199,43 +200,37 @@ public sealed class ForeignRigTests
             File.WriteAllBytes(Path.Combine(validate, name + "-animated.glb"), glb);
         }
 
-        GltfDocument original = GltfDocument.Load(gltf);
-        GltfDocument written = GltfDocument.Parse(glb, name + ".glb", null);
+        GltfModel originalModel = GltfModel.Load(gltf);
+        GltfModel writtenModel = GltfModel.Parse(glb, name + ".glb", null);
+        ModelRoot original = originalModel.Root;
+        ModelRoot written = writtenModel.Root;
+        JsonObject originalJson = gltf.EndsWith(".glb", StringComparison.Ordinal) ? Fuzz.FuzzInputs.SplitGlb(File.ReadAllBytes(gltf)).Json : JsonNode.Parse(File.ReadAllText(gltf))!.AsObject();
+        JsonObject writtenJson = Fuzz.FuzzInputs.SplitGlb(glb).Json;
 
         // The user's own content is there, unchanged.
         Assert.Multiple(() =>
         {
             foreach (string key in new[] { "meshes", "materials", "textures", "samplers", "skins" })
             {
-                Assert.That(JsonNode.DeepEquals(written.Root[key], original.Root[key]), Is.True, $"{name}: {key} copied");
+                Assert.That(JsonNode.DeepEquals(writtenJson[key], originalJson[key]), Is.True, $"{name}: {key} copied");
             }
 
-            Assert.That(written.Array("nodes").Select(n => n!["name"]?.GetValue<string>()), Is.EqualTo(original.Array("nodes").Select(n => n!["name"]?.GetValue<string>())));
-            Assert.That(written.ReadImage(0).Bytes, Is.EqualTo(ForeignRig.Png), "texture embedded");
-            Assert.That(written.Array("buffers"), Has.Count.EqualTo(1));
-            Assert.That(written.Array("animations"), Has.Count.EqualTo(1));
+            Assert.That(written.LogicalNodes.Select(n => n.Name), Is.EqualTo(original.LogicalNodes.Select(n => n.Name)));
+            Assert.That(written.LogicalImages[0].Content.Content.ToArray(), Is.EqualTo(ForeignRig.Png), "texture embedded");
+            Assert.That(written.LogicalBuffers, Has.Count.EqualTo(1));
+            Assert.That(written.LogicalAnimations, Has.Count.EqualTo(1));
         });
-        int skinAccessor = written.Array("skins")[0]!["inverseBindMatrices"]!.GetValue<int>();
-        Assert.That(written.ReadFloats(skinAccessor, 16), Is.EqualTo(original.ReadFloats(skinAccessor, 16)), "inverse bind matrices");
-        var meshAttributes = (JsonObject)written.Array("meshes")[0]!["primitives"]![0]!["attributes"]!;
-        Assert.That(written.ReadFloats(meshAttributes["POSITION"]!.GetValue<int>(), 3), Is.EqualTo(original.ReadFloats(meshAttributes["POSITION"]!.GetValue<int>(), 3)), "vertices");
+        Assert.That(written.LogicalSkins[0].InverseBindMatrices, Is.EqualTo(original.LogicalSkins[0].InverseBindMatrices), "inverse bind matrices");
+        Assert.That(written.LogicalMeshes[0].Primitives[0].GetVertexAccessor("POSITION").AsVector3Array(), Is.EqualTo(original.LogicalMeshes[0].Primitives[0].GetVertexAccessor("POSITION").AsVector3Array()), "vertices");
 
         // Evaluate the written node hierarchy at each key: every bone where forward kinematics puts it, with the
         // rotation it has in the rig and the scale it has in the user's file.
-        JsonArray nodes = written.Array("nodes");
-        int[] parents = written.NodeParents();
-        Matrix4x4[] restWorld = original.WorldTransforms();
-        var clip = (JsonObject)written.Array("animations")[0]!;
-        var samplers = (JsonArray)clip["samplers"]!;
-        var keyed = new Dictionary<(int Node, string Path), float[]>();
-        foreach (JsonNode? channel in (JsonArray)clip["channels"]!)
-        {
-            int node = channel!["target"]!["node"]!.GetValue<int>();
-            string path = channel["target"]!["path"]!.GetValue<string>();
-            JsonNode sampler = samplers[channel["sampler"]!.GetValue<int>()]!;
-            Assert.That(written.ReadFloats(sampler["input"]!.GetValue<int>(), 1), Is.EqualTo(frames.Select(f => f.Time)));
-            keyed[(node, path)] = written.ReadFloats(sampler["output"]!.GetValue<int>(), path == "rotation" ? 4 : 3);
-        }
+        IReadOnlyList<Node> nodes = written.LogicalNodes;
+        int[] parents = writtenModel.NodeParents();
+        Matrix4x4[] restWorld = originalModel.WorldTransforms();
+        var channels = GlbChannels.Of(written.LogicalAnimations[0]);
+        Assert.That(channels.Values.Select(c => c.Times), Has.All.EqualTo(frames.Select(f => f.Time)));
+        var keyed = channels.ToDictionary(c => c.Key, c => c.Value.Values);
 
         var expected = new Vector3[rig.Joints.Count];
         var expectedRotations = new Quaternion[rig.Joints.Count];
@@ -250,11 +245,10 @@ public sealed class ForeignRigTests
                     return done;
                 }
 
-                var json = (JsonObject)nodes[n]!;
-                Matrix4x4 local = written.LocalTransform(json);
+                Matrix4x4 local = writtenModel.LocalTransform(nodes[n]);
                 if (keyed.ContainsKey((n, "translation")) || keyed.ContainsKey((n, "rotation")))
                 {
-                    Assert.That(json["matrix"], Is.Null, "animated nodes have no matrix");
+                    Assert.That(nodes[n].LocalTransform.IsMatrix, Is.False, "animated nodes have no matrix");
                     Matrix4x4.Decompose(local, out Vector3 s, out Quaternion r, out Vector3 t);
                     if (keyed.TryGetValue((n, "translation"), out float[]? tk))
                     {
@@ -277,7 +271,7 @@ public sealed class ForeignRigTests
             for (int j = 0; j < rig.Joints.Count; j++)
             {
                 int node = model.Source!.JointNodes[j];
-                Assert.That(nodes[node]!["name"]!.GetValue<string>(), Is.EqualTo(rig.Joints[j].Name));
+                Assert.That(nodes[node].Name, Is.EqualTo(rig.Joints[j].Name));
                 Matrix4x4 m = World(node);
                 Assert.That(Vector3.Distance(m.Translation, expected[j]), Is.LessThan(1e-3f), $"{name}: bone {rig.Joints[j].Name} at frame {f}");
                 float scale = new Vector3(m.M11, m.M12, m.M13).Length();

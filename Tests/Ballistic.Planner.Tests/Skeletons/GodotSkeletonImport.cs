@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Text.Json.Nodes;
 using Ballistic.Planner.Gltf;
 using Ballistic.Runtime.Skeletons;
 
@@ -20,12 +19,15 @@ internal sealed record GodotSkeleton(TargetSkeleton Skeleton, BoneTransform Glob
 /// </summary>
 internal static class GodotSkeletonImport
 {
-    public static GodotSkeleton Import(GltfDocument document)
+    /// <summary>The skeleton Godot imports from the glTF file at <paramref name="path"/> (read through SharpGLTF by <see cref="GltfModel"/>).</summary>
+    public static GodotSkeleton Import(string path) => Import(GltfModel.Load(path));
+
+    public static GodotSkeleton Import(GltfModel model)
     {
-        JsonArray nodes = document.Array("nodes");
-        int[] parents = document.NodeParents();
-        Matrix4x4[] world = document.WorldTransforms();
-        int[] joints = [.. document.Array("skins")[0]!.AsObject()["joints"]!.AsArray().Select(j => j!.GetValue<int>())];
+        IReadOnlyList<SharpGLTF.Schema2.Node> nodes = model.Root.LogicalNodes;
+        int[] parents = model.NodeParents();
+        Matrix4x4[] world = model.WorldTransforms();
+        int[] joints = [.. model.Root.LogicalSkins[0].Joints.Select(j => j.LogicalIndex)];
         int Height(int n)
         {
             int h = 0;
@@ -74,7 +76,7 @@ internal static class GodotSkeletonImport
         }
 
         // Every node below a member, but a childless skinned mesh.
-        bool IsSkinnedLeaf(int n) => nodes[n]!["mesh"] is not null && nodes[n]!["skin"] is not null && nodes[n]!["children"] is null;
+        bool IsSkinnedLeaf(int n) => nodes[n].Mesh is not null && nodes[n].Skin is not null && !nodes[n].VisualChildren.Any();
         var stack = new Stack<int>(members);
         while (stack.Count > 0)
         {
@@ -116,7 +118,7 @@ internal static class GodotSkeletonImport
         for (int b = 0; b < order.Count; b++)
         {
             int n = order[b];
-            string baseName = GodotBoneNames.Sanitize(nodes[n]!["name"]?.GetValue<string>() ?? "");
+            string baseName = GodotBoneNames.Sanitize(nodes[n].Name ?? "");
             string name = baseName;
             for (int k = 2; !used.Add(name); k++)
             {
@@ -125,7 +127,7 @@ internal static class GodotSkeletonImport
 
             names[b] = name;
             boneParents[b] = parents[n] >= 0 && members.Contains(parents[n]) ? order.IndexOf(parents[n]) : -1;
-            rests[b] = Decompose(document.LocalTransform((JsonObject)nodes[n]!));
+            rests[b] = Decompose(model.LocalTransform(nodes[n]));
         }
 
         int skeletonParent = parents[finalRoots[0]];

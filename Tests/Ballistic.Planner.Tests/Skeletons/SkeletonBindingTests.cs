@@ -34,7 +34,7 @@ public sealed class SkeletonBindingTests
 
     internal static string SkeletonGlb => Path.Combine(RepositoryFiles.Root, "Scenes", "characters", "skeleton.glb");
 
-    internal static GodotSkeleton BundledSkeleton() => GodotSkeletonImport.Import(GltfDocument.Load(SkeletonGlb));
+    internal static GodotSkeleton BundledSkeleton() => GodotSkeletonImport.Import(SkeletonGlb);
 
     internal static SkeletonBinding Bind(CharacterModel model, TargetSkeleton target, SkeletonBindingOptions? options = null)
     {
@@ -118,7 +118,7 @@ public sealed class SkeletonBindingTests
         };
         (string gltf, string spec) = character.Write(_folder);
         (CharacterModel model, _) = CharacterSpecFile.Load(gltf, spec);
-        GodotSkeleton godot = GodotSkeletonImport.Import(GltfDocument.Load(gltf));
+        GodotSkeleton godot = GodotSkeletonImport.Import(gltf);
         SkeletonBinding binding = Bind(model, godot.Skeleton);
         int helpers = godot.Skeleton.BoneCount - model.Rig.Joints.Count;
         Assert.Multiple(() =>
