@@ -3,7 +3,6 @@ using Ballistic.Authoring.Animation;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Geometry;
-using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Runtime.InteropServices;
 using System.Text.Json.Nodes;
-using Ballistic.Authoring.Gltf;
 using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Support;

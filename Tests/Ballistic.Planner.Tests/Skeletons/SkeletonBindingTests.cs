@@ -1,6 +1,5 @@
 using System.Numerics;
 using Ballistic.Planner.Geometry;
-using Ballistic.Planner.Gltf;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
