@@ -638,7 +638,10 @@ internal sealed partial class GltfModel
     /// quadratic time; and with <paramref name="repair"/> every accessor's <c>min</c> and <c>max</c> are dropped.
     /// Stale bounds (a vertex moved after they were written, a rounding in the exporter) are the commonest defect
     /// the library's strict and repairing modes both refuse; Godot and Blender import such files, and nothing here
-    /// reads the bounds.
+    /// reads the bounds. With <paramref name="firstAnimation"/> (a file read again to be written, <see cref="ReadAgain"/>),
+    /// an animation of that name and nothing else is put first in its list of animations: SharpGLTF appends the
+    /// animations it creates and cannot reorder them, and its reader refuses empty channel and sampler lists but not
+    /// missing ones.
     /// </summary>
     private static string Prepare(string json, string name, bool repair, Dictionary<string, string> elements, string? firstAnimation)
     {
@@ -666,8 +669,8 @@ internal sealed partial class GltfModel
 
         if (firstAnimation is not null)
         {
-            // An animation of its own, first in the list, for the writer to fill with channels: the library appends
-            // the animations it creates, and nothing in glTF refers to an animation by its index.
+            // An animation of its own, first in the list, for the writer to fill with channels (nothing in glTF
+            // refers to an animation by its index, so the user's clips move up one without a reference to mend).
             if (prepared["animations"] is not JsonArray animations)
             {
                 animations = [];
