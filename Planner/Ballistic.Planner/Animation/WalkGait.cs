@@ -620,6 +620,45 @@ internal sealed class WalkGait
     }
 
     /// <summary>
+    /// The least-squares parabola through the <paramref name="measured"/> <paramref name="heights"/> (metres, one per
+    /// fine step) within <paramref name="window"/> steps of step <paramref name="i"/>: its slope at <paramref name="i"/>
+    /// (metres per step) and its bend (the coefficient of the squared step); the line's slope and no bend where fewer
+    /// than five steps are measured or they do not fix a parabola.
+    /// </summary>
+    private static (float Slope, float Bend) FitBend(float[] heights, bool[] measured, int i, int window)
+    {
+        double[] s = new double[5];
+        double[] t = new double[3];
+        for (int j = Math.Max(0, i - window); j <= Math.Min(heights.Length - 1, i + window); j++)
+        {
+            if (measured[j])
+            {
+                double x = j - i;
+                double power = 1.0;
+                for (int k = 0; k < 5; k++)
+                {
+                    s[k] += power;
+                    if (k < 3)
+                    {
+                        t[k] += power * heights[j];
+                    }
+
+                    power *= x;
+                }
+            }
+        }
+
+        var normal = MathNet.Numerics.LinearAlgebra.Matrix<double>.Build.DenseOfArray(new[,] { { s[0], s[1], s[2] }, { s[1], s[2], s[3] }, { s[2], s[3], s[4] } });
+        if (s[0] < 5 || !(Math.Abs(normal.Determinant()) > 1e-9))
+        {
+            return (FitLine(heights, measured, i, window).Slope, 0f);
+        }
+
+        MathNet.Numerics.LinearAlgebra.Vector<double> c = normal.Solve(MathNet.Numerics.LinearAlgebra.Vector<double>.Build.DenseOfArray(t));
+        return ((float)c[1], (float)c[2]);
+    }
+
+    /// <summary>
     /// Lowers <paramref name="values"/> (metres, one per fine step) where they rise or fall faster than
     /// <paramref name="rate"/> per step, never raising any: each becomes the least of every measured value plus
     /// <paramref name="rate"/> times the steps between them (a forward and a backward pass). Steps not
@@ -1129,15 +1168,19 @@ internal sealed class WalkGait
             {
                 if (measured[i])
                 {
-                    // The walk's own grade: the slope (metres per fine step) of the line through the unlifted roots.
-                    float slope = FitLine(path, measured, i, window).Slope;
+                    // The walk's own grade and bend: the parabola (metres per fine step, and per step squared)
+                    // through the unlifted roots. About a straight line, the ends of a window over a dune's crest lie
+                    // below it and held the hips down there (the desert skeleton's lift of 0.25 m over a crest was
+                    // cut to 0.02 m, its hips 0.74 L over the held foot).
+                    (float slope, float bend) = FitBend(path, measured, i, window);
                     float above = height[i];
                     float floor = above;
                     for (int j = Math.Max(0, i - window); j <= Math.Min(_steps, i + window); j++)
                     {
                         if (measured[j])
                         {
-                            floor = MathF.Min(floor, height[j] - (slope * (j - i)));
+                            float x = j - i;
+                            floor = MathF.Min(floor, height[j] - (slope * x) - (bend * x * x));
                         }
                     }
 

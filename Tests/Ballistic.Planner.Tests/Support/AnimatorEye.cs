@@ -476,6 +476,10 @@ internal sealed class AnimatorEye
         return MathF.Abs(ahead.Point.Y - behind.Point.Y) <= 2f * GradeSpan * MathF.Tan(FlatGround * MathF.PI / 180f);
     }
 
+    /// <summary>The height (metres) of the ground straight below the trunk at clip time <paramref name="time"/> (where <see cref="LevelGroundAt"/> found it).</summary>
+    private float GroundBelow(TriangleBvh level, float time) =>
+        level.Raycast(TrunkAt(time), -Vector3.UnitY, 4f * Leg, out RayHit ground) ? ground.Point.Y : 0f;
+
     /// <summary>
     /// True when the contacts held at one instant are level with each other: between every two of them the rise is
     /// under <see cref="FlatGround"/>° over their distance on the ground plane (with a centimetre for the soles).
@@ -905,9 +909,9 @@ internal sealed class AnimatorEye
     /// <summary>
     /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
     /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes; <see cref="LevelFooting"/>: the feet then held level with each other), the median
-    /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L; the hips (in
-    /// the world) rising and falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about the
-    /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade; read where the level ground spans at least a stride); a biped (two feet) at most <see cref="MostCadence"/> foot placements
+    /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L; the hips
+    /// (their height above the ground straight below the trunk) rising and falling at least <see cref="LeastBob"/> L and at most <see cref="MostBob"/> L about the
+    /// line fitted through the second around (5th to 95th percentile: the steps' bob, not the ground's grade or bend; read where the level ground spans at least a stride); a biped (two feet) at most <see cref="MostCadence"/> foot placements
     /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back), read where the
@@ -991,7 +995,7 @@ internal sealed class AnimatorEye
                 if (held > 0)
                 {
                     hips.Add(ownShare / held);
-                    heights.Add(_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) / Leg);
+                    heights.Add((_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) - GroundBelow(level, t)) / Leg);
                     times.Add(t);
                 }
 
@@ -1012,10 +1016,14 @@ internal sealed class AnimatorEye
                 float[] sorted = [.. hips.Order()];
                 float median = sorted[sorted.Length / 2];
                 look.Upright.Add(median / UprightHips, $"{name}'s hips cruise {median:0.000} L above its held feet (each hip in its own leg's length)");
-                // The bob: the hips' height in the world (as the eye sees the trunk rise and fall, whichever foot holds
-                // it on a gentle slope) about the straight line fitted through the second around each sample (the
-                // ground's grade and the slower rise and sink of starting and stopping taken out), 5th to 95th
-                // percentile. Read, like the arms' swing, over a whole stride of the first leg (a step of each foot) of
+                // The bob: the hips' height above the ground straight below the trunk (as the eye sees the trunk rise
+                // and fall over the ground it crosses, whichever foot holds it on a gentle slope) about the straight
+                // line fitted through the second around each sample (the ground's grade and the slower rise and sink of
+                // starting and stopping taken out), 5th to 95th percentile. Above the ground, not in the world: over a
+                // dune's crest, grades of ±8° within the second sag 0.05 L below any straight line, and hips that
+                // follow the crest at a steady height above it read as that much bob in the world (the desert
+                // skeleton's hips, held down on crests to keep that reading under MostBob, stood 0.74 L over the held
+                // foot there). Read, like the arms' swing, over a whole stride of the first leg (a step of each foot) of
                 // unbroken level ground, each such stretch on its own: level ground that spans less sees only part of
                 // the rise and fall (the desert skeleton's first walk read 0.010 L over 0.32 s, less than its 0.46 s
                 // step), and two short stretches a second apart read 0.006 L where the hips rose 0.06 m over each
