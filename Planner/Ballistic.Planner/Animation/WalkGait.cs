@@ -627,8 +627,8 @@ internal sealed class WalkGait
     /// </summary>
     private static (float Slope, float Bend) FitBend(float[] heights, bool[] measured, int i, int window)
     {
-        double[] s = new double[5];
-        double[] t = new double[3];
+        Span<double> s = stackalloc double[5];
+        Span<double> t = stackalloc double[3];
         for (int j = Math.Max(0, i - window); j <= Math.Min(heights.Length - 1, i + window); j++)
         {
             if (measured[j])
@@ -648,15 +648,21 @@ internal sealed class WalkGait
             }
         }
 
-        var normal = MathNet.Numerics.LinearAlgebra.Matrix<double>.Build.DenseOfArray(new[,] { { s[0], s[1], s[2] }, { s[1], s[2], s[3] }, { s[2], s[3], s[4] } });
-        if (s[0] < 5 || !(Math.Abs(normal.Determinant()) > 1e-9))
+        // The normal equations of a + b·x + c·x², solved by Cramer's rule (3 × 3, once per fine step: no allocation).
+        double det = Det3(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+        if (s[0] < 5 || !(Math.Abs(det) > 1e-9))
         {
             return (FitLine(heights, measured, i, window).Slope, 0f);
         }
 
-        MathNet.Numerics.LinearAlgebra.Vector<double> c = normal.Solve(MathNet.Numerics.LinearAlgebra.Vector<double>.Build.DenseOfArray(t));
-        return ((float)c[1], (float)c[2]);
+        double b = Det3(s[0], t[0], s[2], s[1], t[1], s[3], s[2], t[2], s[4]) / det;
+        double c = Det3(s[0], s[1], t[0], s[1], s[2], t[1], s[2], s[3], t[2]) / det;
+        return ((float)b, (float)c);
     }
+
+    /// <summary>The determinant of the 3 × 3 matrix given row by row.</summary>
+    private static double Det3(double a, double b, double c, double d, double e, double f, double g, double h, double k) =>
+        (a * ((e * k) - (f * h))) - (b * ((d * k) - (f * g))) + (c * ((d * h) - (e * g)));
 
     /// <summary>
     /// Lowers <paramref name="values"/> (metres, one per fine step) where they rise or fall faster than
