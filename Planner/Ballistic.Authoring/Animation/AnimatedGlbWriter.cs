@@ -84,14 +84,7 @@ public static class AnimatedGlbWriter
             weights[4 * v] = 1f;
         }
 
-        Material material = root.CreateMaterial($"{model.Name} bones");
-        material.InitializePBRMetallicRoughness();
-        material.DoubleSided = true;
-        MaterialChannel color = material.FindChannel("BaseColor")!.Value;
-        color.Color = new Vector4(0.85f, 0.82f, 0.74f, 1f);
-        MaterialChannel surface = material.FindChannel("MetallicRoughness")!.Value;
-        surface.SetFactor("MetallicFactor", 0f);
-        surface.SetFactor("RoughnessFactor", 0.7f);
+        Material material = GltfWrite.Material(root, $"{model.Name} bones", new Vector4(0.85f, 0.82f, 0.74f, 1f), roughness: 0.7f, doubleSided: true);
 
         Mesh mesh = root.CreateMesh(model.Name);
         MeshPrimitive primitive = mesh.CreatePrimitive();

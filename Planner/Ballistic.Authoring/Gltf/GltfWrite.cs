@@ -26,6 +26,23 @@ internal static class GltfWrite
         return root;
     }
 
+    /// <summary>
+    /// A non-metallic PBR material of base colour <paramref name="color"/> (linear RGBA) and roughness
+    /// <paramref name="roughness"/> (0 … 1), seen from both sides with <paramref name="doubleSided"/>.
+    /// </summary>
+    public static Material Material(ModelRoot root, string name, Vector4 color, float roughness, bool doubleSided = false)
+    {
+        Material material = root.CreateMaterial(name);
+        material.InitializePBRMetallicRoughness();
+        material.DoubleSided = doubleSided;
+        MaterialChannel baseColor = material.FindChannel("BaseColor")!.Value;
+        baseColor.Color = color;
+        MaterialChannel surface = material.FindChannel("MetallicRoughness")!.Value;
+        surface.SetFactor("MetallicFactor", 0f);
+        surface.SetFactor("RoughnessFactor", roughness);
+        return material;
+    }
+
     /// <summary>A VEC3 float accessor (vertex data, or animation output with <paramref name="vertex"/> false), with min and max.</summary>
     /// <exception cref="GltfException">A coordinate is not finite.</exception>
     public static Accessor Vectors(ModelRoot root, ReadOnlySpan<Vector3> values, bool vertex = true)

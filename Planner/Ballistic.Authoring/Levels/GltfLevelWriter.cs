@@ -23,13 +23,7 @@ public static class GltfLevelWriter
         {
             if (!materials.TryGetValue((mesh.Material, mesh.Color), out Material? material))
             {
-                material = root.CreateMaterial(mesh.Material.Name);
-                material.InitializePBRMetallicRoughness();
-                MaterialChannel color = material.FindChannel("BaseColor")!.Value;
-                color.Color = mesh.Color;
-                MaterialChannel surface = material.FindChannel("MetallicRoughness")!.Value;
-                surface.SetFactor("MetallicFactor", 0f);
-                surface.SetFactor("RoughnessFactor", 0.9f);
+                material = GltfWrite.Material(root, mesh.Material.Name, mesh.Color, roughness: 0.9f);
                 if (mesh.Material.Friction is float friction)
                 {
                     material.Extras = new JsonObject { ["friction"] = friction };
