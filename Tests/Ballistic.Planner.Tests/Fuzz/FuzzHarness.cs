@@ -147,6 +147,8 @@ internal static class FuzzHarness
             return $"{e.GetType().Name} with the runtime's words (\"{word}\"): {e.Message}";
         }
 
+        // An input error that wraps one of these hides a bug of ours (an unchecked index, a null, a method left
+        // unwritten): the case fails instead of counting as refused.
         for (Exception? inner = e.InnerException; inner is not null; inner = inner.InnerException)
         {
             if (inner is NullReferenceException or IndexOutOfRangeException or ArgumentException or InvalidOperationException or InvalidCastException

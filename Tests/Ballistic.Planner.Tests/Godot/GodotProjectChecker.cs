@@ -427,6 +427,7 @@ public sealed partial class GodotProjectChecker
             Report(file.Path, section.Line, element, "has both type= and instance= (an instanced scene's type comes from that scene)");
         }
 
+        // Godot's instance_placeholder (a scene loaded later, on demand) must name a scene file of the project, as instance= must.
         if (section.AttributeString("instance_placeholder") is { } placeholder
             && (GodotProject.RelativePath(placeholder) is not { } placeholderPath || !_project.Exists(placeholderPath)))
         {

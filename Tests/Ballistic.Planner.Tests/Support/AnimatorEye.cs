@@ -457,28 +457,27 @@ internal sealed class AnimatorEye
     /// surface straight below is under <see cref="FlatGround"/>°, and so is the grade between the ground
     /// <see cref="GradeSpan"/> m ahead of the trunk and as far behind (a staircase's treads are flat, the staircase is not).
     /// </summary>
-    private bool LevelGroundAt(TriangleBvh level, float time)
+    private bool LevelGroundAt(TriangleBvh level, float time) => LevelGround(level, time) is not null;
+
+    /// <summary>The height (metres) of the ground straight below the trunk at clip time <paramref name="time"/> where it is level (<see cref="LevelGroundAt"/>), or <c>null</c>.</summary>
+    private float? LevelGround(TriangleBvh level, float time)
     {
         Vector3 trunk = TrunkAt(time);
         Vector3 heading = HeadingAt(time);
         float flat = MathF.Cos(FlatGround * MathF.PI / 180f);
         if (!level.Raycast(trunk, -Vector3.UnitY, 4f * Leg, out RayHit ground) || MathF.Abs(ground.Normal.Y) < flat)
         {
-            return false;
+            return null;
         }
 
         if (!level.Raycast(trunk + (heading * GradeSpan), -Vector3.UnitY, 4f * Leg, out RayHit ahead)
             || !level.Raycast(trunk - (heading * GradeSpan), -Vector3.UnitY, 4f * Leg, out RayHit behind))
         {
-            return false;
+            return null;
         }
 
-        return MathF.Abs(ahead.Point.Y - behind.Point.Y) <= 2f * GradeSpan * MathF.Tan(FlatGround * MathF.PI / 180f);
+        return MathF.Abs(ahead.Point.Y - behind.Point.Y) <= 2f * GradeSpan * MathF.Tan(FlatGround * MathF.PI / 180f) ? ground.Point.Y : null;
     }
-
-    /// <summary>The height (metres) of the ground straight below the trunk at clip time <paramref name="time"/> (where <see cref="LevelGroundAt"/> found it).</summary>
-    private float GroundBelow(TriangleBvh level, float time) =>
-        level.Raycast(TrunkAt(time), -Vector3.UnitY, 4f * Leg, out RayHit ground) ? ground.Point.Y : 0f;
 
     /// <summary>
     /// True when the contacts held at one instant are level with each other: between every two of them the rise is
@@ -942,7 +941,7 @@ internal sealed class AnimatorEye
             var armTimes = new List<float>();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
             {
-                if (!LevelGroundAt(level, t))
+                if (LevelGround(level, t) is not float groundY)
                 {
                     continue;
                 }
@@ -995,7 +994,7 @@ internal sealed class AnimatorEye
                 if (held > 0)
                 {
                     hips.Add(ownShare / held);
-                    heights.Add((_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) - GroundBelow(level, t)) / Leg);
+                    heights.Add((_legs.Average(l => WorldAt(l.Hip, t).Translation.Y) - groundY) / Leg);
                     times.Add(t);
                 }
 
