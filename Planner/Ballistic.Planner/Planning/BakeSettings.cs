@@ -33,6 +33,14 @@ public sealed record BakeSettings
     /// <summary>Stop as soon as the start reaches the goal (needs both).</summary>
     public bool StopWhenConnected { get; init; }
 
+    /// <summary>
+    /// With a start and a goal: sample a corridor between them first, widening it as it fills, then the whole level
+    /// (on a level much larger than the request: a request on a large level costs what its route costs); the whole
+    /// level from the start where the first corridor is a quarter of it or more. <c>true</c> by default; without a
+    /// start and a goal the whole level is sampled either way.
+    /// </summary>
+    public bool FocusOnRequest { get; init; } = true;
+
     /// <summary>How close the start and goal nodes' contacts must come to the requested points (<see cref="TrunkSampler.Place"/>).</summary>
     public EndpointTolerance Tolerance { get; init; } = new();
 

@@ -104,6 +104,10 @@ public sealed class RoadmapBaker
                 : Insert(roadmap, index, reach, [pose], settings, counters, CancelledNow)?[0];
         }
 
+        // A request on a level much larger than its route samples around the route first.
+        RequestFocus? focus = settings.FocusOnRequest && startPlacement?.Pose is { } from && goalPlacement?.Pose is { } to
+            ? RequestFocus.For(_scene.Sampler, _scene.Steering.Limits, from.Pose.Position, to.Pose.Position, roadmap.Nodes.Count)
+            : null;
         long nextSample = 0;
         int rounds = 0;
         int emptyRounds = 0;
@@ -148,8 +152,9 @@ public sealed class RoadmapBaker
             // Sample a round in parallel; keep the valid ones in sample order.
             var samples = new PoseEvaluation?[batch];
             long first = nextSample;
+            SampleRegion? region = focus?.RegionAt(roadmap.Nodes.Count);
             if (RunParallel(batch, settings.Threads, StopNow,
-                i => samples[i] = _scene.Sampler.Sample(SeedMixer.Create(settings.Seed, first + i))))
+                i => samples[i] = _scene.Sampler.Sample(SeedMixer.Create(settings.Seed, first + i), region, out _)))
             {
                 continue; // the termination check at the top of the loop ends the bake
             }

@@ -110,6 +110,77 @@ internal sealed class TrunkSampler
     }
 
     /// <summary>
+    /// As <see cref="Sample(Random, out long)"/>, the surface point drawn uniformly over <paramref name="region"/>'s
+    /// surface (a triangle of it by area, then a point of it, drawn again up to <see cref="RegionRedraws"/> times while
+    /// outside the region; an attempt whose points all fell outside fails); over the whole level when
+    /// <paramref name="region"/> is <c>null</c>.
+    /// </summary>
+    internal PoseEvaluation? Sample(Random random, SampleRegion? region, out long work)
+    {
+        if (region is null)
+        {
+            return Sample(random, out work);
+        }
+
+        ArgumentNullException.ThrowIfNull(random);
+        work = 0;
+        if (region.Candidates.Length == 0)
+        {
+            return null;
+        }
+
+        for (int attempt = 0; attempt < Settings.MaxAttempts && work <= MaxSampleWork; attempt++)
+        {
+            int triangle = PickByArea(random, region.Candidates, region.Cumulative);
+            Vector3 point = SamplePoint(random, _level.Triangles[triangle]);
+            for (int redraw = 0; redraw < RegionRedraws && !region.Contains(point); redraw++)
+            {
+                triangle = PickByArea(random, region.Candidates, region.Cumulative);
+                point = SamplePoint(random, _level.Triangles[triangle]);
+            }
+
+            if (region.Contains(point) && TryAt(random, triangle, point, ref work) is { } pose)
+            {
+                return pose;
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>Times a point drawn outside a <see cref="SampleRegion"/> is drawn again within one attempt.</summary>
+    private const int RegionRedraws = 8;
+
+    /// <summary>
+    /// The candidate triangles within <paramref name="radius"/> metres, horizontally, of the segment from
+    /// <paramref name="from"/> to <paramref name="to"/> (by their horizontal bounds: those that may reach into it), as a
+    /// <see cref="SampleRegion"/>.
+    /// </summary>
+    internal SampleRegion Region(Vector3 from, Vector3 to, float radius)
+    {
+        var a = new Vector2(from.X, from.Z);
+        var b = new Vector2(to.X, to.Z);
+        var inside = new List<int>();
+        var cumulative = new List<double>();
+        double total = 0;
+        foreach (int t in _candidates)
+        {
+            Triangle triangle = _level.Triangles[t];
+            Vector3 min = Vector3.Min(Vector3.Min(triangle.A, triangle.B), triangle.C);
+            Vector3 max = Vector3.Max(Vector3.Max(triangle.A, triangle.B), triangle.C);
+            if (SampleRegion.Reaches(new Vector2(min.X, min.Z), new Vector2(max.X, max.Z), a, b, radius))
+            {
+                total += triangle.Area;
+                inside.Add(t);
+                cumulative.Add(total);
+            }
+        }
+
+        double all = _cumulativeArea.Length > 0 ? _cumulativeArea[^1] : 0.0;
+        return new SampleRegion(from, to, radius, [.. inside], [.. cumulative], all > 0 ? total / all : 1.0);
+    }
+
+    /// <summary>
     /// Most triangles one <see cref="Sample(Random)"/> call may find its trunk overlapping, summed over its attempts'
     /// repair steps, before it gives up: 100,000, about a millisecond of work. A character that fits its level never
     /// comes near it (measured on 1,000-node bakes of every bundled level and character: at most 110 in one call,

@@ -6,11 +6,11 @@ namespace Ballistic.Planner.Tests.Support;
 /// <summary>
 /// Levels in the shapes other tools export, not ours: unwelded triangle soups placed by node transforms (some
 /// modelled Z-up and turned, some scaled), single-sided planes, thin slabs, fine curved terrain, stairs, a block to
-/// stand on, a floor with holes and rotated debris, and a low cave. Each comes with requests a user would make.
+/// stand on, a floor with holes and rotated debris, a low cave, and a wide open field. Each comes with requests a user would make.
 /// </summary>
 internal static class ForeignLevels
 {
-    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave"];
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field"];
 
     /// <summary>A level and the start/goal pairs a user would try on it.</summary>
     public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
@@ -21,8 +21,29 @@ internal static class ForeignLevels
         "block" => Block(),
         "holes-debris" => HolesDebris(),
         "cave" => Cave(),
+        "field" => Field(),
         _ => throw new ArgumentException($"no foreign level '{name}'"),
     };
+
+    /// <summary>
+    /// A wide open field, 120 m square, as a terrain exporter writes one (unwelded 5 m quads), with a few rocks and a
+    /// 4 m wall, 12 m long and too high to jump, standing across the way of one request: requests of 12 to 40 m on a
+    /// level a hundred times their route's area, one of them around the wall.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Field()
+    {
+        var b = new LevelBuilder("field (foreign)");
+        AddSoupQuad(b, "ground", new Vector3(-60f, 0f, -60f), new Vector3(60f, 0f, -60f), new Vector3(60f, 0f, 60f), new Vector3(-60f, 0f, 60f), 24);
+        AddSoupBox(b, "wall", new Vector3(29.75f, 0f, -6f), new Vector3(30.25f, 4f, 6f));
+        AddSoupBox(b, "rock_1", new Vector3(-30f, 0f, -31f), new Vector3(-29f, 0.5f, -30f));
+        AddSoupBox(b, "rock_2", new Vector3(-22f, 0f, -27f), new Vector3(-20.5f, 0.4f, -25.5f));
+        AddSoupBox(b, "rock_3", new Vector3(8f, 0f, 20f), new Vector3(9f, 0.6f, 21f));
+        return (b.Build(), [
+            (new Vector3(-45f, 0f, -40f), new Vector3(-10f, 0f, -20f)),
+            (new Vector3(22f, 0f, 0f), new Vector3(38f, 0f, 0f)),
+            (new Vector3(0f, 0f, 10f), new Vector3(12f, 0f, 14f)),
+        ]);
+    }
 
     /// <summary>
     /// A ground plane, slabs 2–10 cm thick floating at 0.5–1.2 m (boxes, as a modeller makes a shelf), a bare
