@@ -12,6 +12,7 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Cli;
 
@@ -161,6 +162,12 @@ internal sealed class PlanPipeline
         {
             int walks = r.Walks.Count();
             output.WriteLine($"path: {r.Jumps.Count} jumps ({r.TotalFlightTime:0.00} s of flight, {r.Jumps.Sum(j => j.Arc.ArcLength):0.0} m of arcs) and {walks} walks ({r.Walks.Sum(w => w.Length):0.0} m, {r.Walks.Sum(w => w.Duration):0.00} s): {r.TotalDuration:0.00} s of moves");
+        }
+
+        if (report.Locomotion != Locomotion.Jump && r.Jumps.Count > 0)
+        {
+            var kinds = WalkRefusals.Of(report.Scene, r.Moves).GroupBy(n => WalkRefusals.Name(n.Failure)).Select(g => $"{g.Key} {g.Count()}");
+            output.WriteLine($"not walked: {r.Jumps.Count} {(r.Jumps.Count == 1 ? "jump" : "jumps")} ({string.Join(", ", kinds)}; the report's notWalked says why)");
         }
 
         if (animationLine is not null)

@@ -10,6 +10,7 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Authoring.Reports;
 
@@ -322,6 +323,24 @@ public static class PlanReportWriter
             }
 
             w.WriteEndArray();
+
+            // Why each jump of the path is not a walk (a request planned with jumps only says so by its locomotion).
+            if (report.Locomotion != Locomotion.Jump)
+            {
+                w.WriteStartArray("notWalked");
+                foreach ((int move, WalkFailure failure, string reason) in WalkRefusals.Of(report.Scene, result.Moves))
+                {
+                    w.WriteStartObject();
+                    w.WriteNumber("move", move);
+                    Vector("from", result.Moves[move].From.Pose.Position);
+                    Vector("to", result.Moves[move].To.Pose.Position);
+                    w.WriteString("walk", WalkRefusals.Name(failure));
+                    w.WriteString("reason", reason);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+            }
 
             if (report.Animation is { } animation)
             {

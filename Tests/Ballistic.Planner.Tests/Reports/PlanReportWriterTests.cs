@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json.Nodes;
 using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Collision;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
@@ -45,6 +46,85 @@ public sealed class PlanReportWriterTests
         Assert.That(Vec(moves[0]!["from"]!["position"]), Is.EqualTo(first.From.Pose.Position));
         Assert.That(moves[0]!["from"]!["contacts"]!.AsArray(), Has.Count.EqualTo(first.From.Contacts.Count));
         Assert.That(moves[0]!["from"]!.AsObject().Select(p => p.Key), Is.EqualTo(moves[1]!["takeoff"]!.AsObject().Select(p => p.Key)));
+    }
+
+    /// <summary>
+    /// Each jump of a path says why no walk stands in for it, and what it says is true of the level, checked apart
+    /// from the walking steering: under the straight line between its stances' contact centres (every 5 cm) a
+    /// `gap` has no ground within 2 m somewhere or drops by more than the step height, a `step_too_high` rises by
+    /// more, and a `possible` walk has ground all the way; the gap course's gaps say `gap`.
+    /// </summary>
+    [Test]
+    public void EachJumpSaysWhyItIsNotAWalkAndItIsTrueOfTheLevel()
+    {
+        PlanResult result = WalkPlans.JumpOnly;
+        JsonArray notWalked = Write(WalkPlans.Report(result))["notWalked"]!.AsArray();
+        Assert.That(notWalked.Select(n => n!["move"]!.GetValue<int>()), Is.EqualTo(Enumerable.Range(0, result.Moves.Count).Where(m => result.Moves[m] is Jump)));
+        float step = WalkPlans.Scene.Character.Walking.StepHeight;
+        var seen = new HashSet<string>();
+        foreach (JsonNode? entry in notWalked)
+        {
+            Move jump = result.Moves[entry!["move"]!.GetValue<int>()];
+            string walk = (string)entry["walk"]!;
+            string reason = (string)entry["reason"]!;
+            seen.Add(walk);
+            Assert.That(Vec(entry["from"]), Is.EqualTo(jump.From.Pose.Position));
+            Assert.That(Vec(entry["to"]), Is.EqualTo(jump.To.Pose.Position));
+
+            Vector3 a = jump.From.ContactCentre;
+            Vector3 b = jump.To.ContactCentre;
+            var heights = new List<float>();
+            bool missing = false;
+            int samples = (int)MathF.Ceiling(new Vector2(b.X - a.X, b.Z - a.Z).Length() / 0.05f);
+            for (int i = 0; i <= samples; i++)
+            {
+                Vector3 p = Vector3.Lerp(a, b, i / (float)Math.Max(1, samples));
+                if (WalkPlans.Scene.Bvh.Raycast(p + (2f * Vector3.UnitY), -Vector3.UnitY, 4f, out RayHit hit))
+                {
+                    heights.Add(hit.Point.Y);
+                }
+                else
+                {
+                    missing = true;
+                }
+            }
+
+            float biggestDrop = heights.Zip(heights.Skip(1), (x, y) => x - y).DefaultIfEmpty(0f).Max();
+            float biggestRise = heights.Zip(heights.Skip(1), (x, y) => y - x).DefaultIfEmpty(0f).Max();
+            switch (walk)
+            {
+                case "gap":
+                    Assert.That(missing || biggestDrop > step, Is.True, $"{reason}: ground all the way, dropping {biggestDrop:0.00} m at most");
+                    Assert.That(reason, Does.Contain($"({step:0.00} m)"));
+                    break;
+                case "step_too_high":
+                    Assert.That(biggestRise, Is.GreaterThan(step), reason);
+                    break;
+                case "possible":
+                    Assert.That(missing, Is.False, reason);
+                    Assert.That(MathF.Max(biggestDrop, biggestRise), Is.LessThanOrEqualTo(step), reason);
+                    break;
+                default:
+                    Assert.That(walk, Is.AnyOf("too_steep", "trunk_collides"), reason);
+                    break;
+            }
+        }
+
+        Assert.That(seen, Does.Contain("gap"), "the gap course's jumps cross gaps");
+
+        // A request for jumps only says so by its locomotion, and lists nothing.
+        Assert.That(Write(WalkPlans.Report(result) with { Locomotion = Locomotion.Jump }).ContainsKey("notWalked"), Is.False);
+    }
+
+    /// <summary>A character that does not walk (the frog: all four limbs down) says so for every jump.</summary>
+    [Test]
+    public void ACharacterThatDoesNotWalkSaysSoForEveryJump()
+    {
+        var frog = PlanningScene.Create(GapCourse.Build(), Authoring.Characters.CharacterPresets.Frog());
+        IReadOnlyList<(int Move, Planner.Walking.WalkFailure Failure, string Reason)> refusals = Planner.Walking.WalkRefusals.Of(frog, WalkPlans.JumpOnly.Moves);
+        Assert.That(refusals, Has.Count.EqualTo(WalkPlans.JumpOnly.Jumps.Count));
+        Assert.That(refusals.Select(r => r.Failure), Has.All.EqualTo(Planner.Walking.WalkFailure.NotWalking));
+        Assert.That(refusals[0].Reason, Does.StartWith("the character does not walk"));
     }
 
     [Test]
