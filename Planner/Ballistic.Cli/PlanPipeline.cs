@@ -12,7 +12,6 @@ using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
-using Ballistic.Planner.Walking;
 
 namespace Ballistic.Cli;
 

@@ -121,7 +121,7 @@ public sealed class PlanReportWriterTests
     public void ACharacterThatDoesNotWalkSaysSoForEveryJump()
     {
         var frog = PlanningScene.Create(GapCourse.Build(), Authoring.Characters.CharacterPresets.Frog());
-        IReadOnlyList<(int Move, Planner.Walking.WalkFailure Failure, string Reason)> refusals = Planner.Walking.WalkRefusals.Of(frog, WalkPlans.JumpOnly.Moves);
+        IReadOnlyList<(int Move, Planner.Walking.WalkFailure Failure, string Reason)> refusals = Planner.Query.WalkRefusals.Of(frog, WalkPlans.JumpOnly.Moves);
         Assert.That(refusals, Has.Count.EqualTo(WalkPlans.JumpOnly.Jumps.Count));
         Assert.That(refusals.Select(r => r.Failure), Has.All.EqualTo(Planner.Walking.WalkFailure.NotWalking));
         Assert.That(refusals[0].Reason, Does.StartWith("the character does not walk"));

@@ -2,8 +2,9 @@ using System.Globalization;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Walking;
 
-namespace Ballistic.Planner.Walking;
+namespace Ballistic.Planner.Query;
 
 /// <summary>
 /// Why a path jumps where a user might expect a walk: for each jump of the path, the walk from its takeoff stance to
