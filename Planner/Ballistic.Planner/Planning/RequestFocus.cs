@@ -69,6 +69,13 @@ internal sealed class RequestFocus
         return _region;
     }
 
+    /// <summary>
+    /// Ends the corridor's stage now: a round that drew no valid pose in it (a corridor under a low ceiling, over
+    /// ground too steep to stand on) must not end the bake as if the character could stand nowhere; the next round
+    /// samples a corridor twice as wide, or the whole level.
+    /// </summary>
+    public void Widen() => _stageEnd = 0;
+
     /// <summary>Nodes a corridor of half width <paramref name="radius"/> receives before it widens: <see cref="StageDensity"/> per square cell of its flat area.</summary>
     private int StageNodes(float radius)
     {

@@ -161,7 +161,16 @@ public sealed class RoadmapBaker
 
             nextSample += batch;
             PoseEvaluation[] valid = [.. samples.Where(s => s is not null).Select(s => s!)];
-            emptyRounds = valid.Length == 0 ? emptyRounds + 1 : 0;
+            if (valid.Length == 0 && region is not null)
+            {
+                // Nothing valid in the corridor: widen it; only rounds over the whole level count as empty.
+                focus!.Widen();
+            }
+            else
+            {
+                emptyRounds = valid.Length == 0 ? emptyRounds + 1 : 0;
+            }
+
             if (valid.Length > 0 && Insert(roadmap, index, reach, valid, settings, counters, StopNow) is null)
             {
                 continue; // cut short while steering: the roadmap is unchanged and the check above ends the bake

@@ -100,6 +100,23 @@ public sealed class RequestFocusTests
         Assert.That(bake.Roadmap.Nodes.Max(n => MathF.Abs(n.Pose.Position.Z)), Is.GreaterThan(half + 0.3f), "nodes beyond the first corridor");
     }
 
+    /// <summary>
+    /// A round that draws no valid pose in the corridor widens it at once (the bake asks with <see cref="RequestFocus.Widen"/>)
+    /// instead of counting as a round in which the character could stand nowhere; otherwise the corridor keeps its
+    /// width until it has its nodes.
+    /// </summary>
+    [Test]
+    public void ACorridorWithNothingValidInItWidensAtOnce()
+    {
+        (Vector3 from, Vector3 to) = Field.Value.Requests[1];
+        PlanningScene scene = Skeleton.Value;
+        RequestFocus focus = RequestFocus.For(scene.Sampler, scene.Steering.Limits, from, to, 2)!;
+        float first = focus.RegionAt(2)!.Radius;
+        Assert.That(focus.RegionAt(3)!.Radius, Is.EqualTo(first), "not widened before its nodes");
+        focus.Widen();
+        Assert.That(focus.RegionAt(3)!.Radius, Is.EqualTo(2f * first));
+    }
+
     /// <summary>The corridor's stages follow the node count alone: the same seed gives the same roadmap, byte for byte, on one thread and on four.</summary>
     [Test]
     public void AFocusedBakeIsTheSameOnOneThreadAndOnFour()
