@@ -130,6 +130,12 @@ internal static class PlaytestCommand
                 stdout.WriteLine($"failed ({failure.Key}): {failure.Count()}, e.g. {failure.First().FailureReason}");
             }
 
+            foreach (PlaytestAgent stuck in result.Stuck)
+            {
+                PlaytestTarget first = stuck.Targets.First(t => t.Failed);
+                stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"stuck: agent {stuck.Index} at ({first.From.X:0.##}, {first.From.Y:0.##}, {first.From.Z:0.##}) failed all {stuck.Targets.Count(t => t.Failed)} of its targets from there (first: {first.FailureReason})"));
+            }
+
             stdout.WriteLine($"written: {stem}.json, {stem}.svg, {stem}.png");
             return result.Cancelled ? ExitCode.Cancelled : ExitCode.Success;
         }));

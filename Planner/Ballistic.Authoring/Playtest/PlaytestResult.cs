@@ -1,3 +1,4 @@
+using System.Numerics;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Authoring.Playtest;
@@ -33,6 +34,21 @@ public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kin
 
     /// <summary>What the ticks cost on this machine (<see cref="PlaytestTickTimes"/>); <c>null</c> when no tick ran.</summary>
     public PlaytestTickTimes? TickTimes { get; init; }
+
+    /// <summary>
+    /// Agents stuck where they stand: those that reached no target and failed at least <see cref="StuckFailures"/>,
+    /// every one asked from the same point (within a centimetre): a stance the level lets the character stand on but
+    /// not leave (no takeoff from it animates, say), which a designer wants to know of before a player finds it. Each
+    /// failed request there costs a whole search and its repairs, over and over (the desert's 100-agent playtest spent
+    /// most of its time on one such agent, 256 failures).
+    /// </summary>
+    public IReadOnlyList<PlaytestAgent> Stuck => [.. Agents.Where(a =>
+        !a.Targets.Any(t => t.Reached)
+        && a.Targets.Count(t => t.Failed) >= StuckFailures
+        && a.Targets.Where(t => t.Failed).All(t => Vector3.Distance(t.From, a.Targets[0].From) <= 0.01f))];
+
+    /// <summary>Failed targets, none reached, from which an agent counts as <see cref="Stuck"/>.</summary>
+    public const int StuckFailures = 3;
 
     /// <summary>Seconds from setting each reached target to arriving, in increasing order.</summary>
     public IReadOnlyList<double> TimesToReach => [.. Agents.SelectMany(a => a.Targets).Where(t => t.Reached).Select(t => t.ReachedAt!.Value - t.SetAt).Order()];

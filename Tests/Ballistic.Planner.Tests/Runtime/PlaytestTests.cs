@@ -128,6 +128,37 @@ public sealed class PlaytestTests
         Assert.That(Count(0, 3, c => c != SkiaSharp.SKColors.White), Is.Zero, "a white margin above the title");
     }
 
+    /// <summary>
+    /// An agent that reached nothing and failed three targets or more, every one from the same spot, is stuck there (a
+    /// stance it cannot leave); one that failed as often but from two spots, or reached one target, or failed only
+    /// twice, is not.
+    /// </summary>
+    [Test]
+    public void AnAgentFailingEveryTargetFromOneSpotIsStuck()
+    {
+        var spot = new Vector3(1f, 0.5f, 2f);
+        PlaytestAgent Agent(int index, int failures, Vector3? elsewhere = null, bool reached = false)
+        {
+            var agent = new PlaytestAgent(index, spot);
+            for (int k = 0; k < failures; k++)
+            {
+                Vector3 from = k == failures - 1 && elsewhere is Vector3 other ? other : spot;
+                agent.Targets.Add(new PlaytestTarget(new Vector3(k, 0f, 0f), from, k) { FailureStatus = PlannerStatus.AnimationFailed, FailureReason = "no path animates cleanly", FailedAt = k + 0.5 });
+            }
+
+            if (reached)
+            {
+                agent.Targets.Add(new PlaytestTarget(Vector3.Zero, spot, failures) { ReachedAt = failures + 3.0 });
+            }
+
+            return agent;
+        }
+
+        var settings = new PlaytestSettings { Agents = 5, Seconds = 6, AnimationThreads = 0 };
+        var result = new PlaytestResult(settings, RuntimeWorlds.DesertSkeleton, [Agent(0, 5), Agent(1, 5, spot + new Vector3(0.5f, 0f, 0f)), Agent(2, 5, reached: true), Agent(3, 2), Agent(4, 3, spot + new Vector3(0.005f, 0f, 0f))], 360, 0.1, 0, 0, false);
+        Assert.That(result.Stuck.Select(a => a.Index), Is.EqualTo(new[] { 0, 4 }));
+    }
+
     [Test]
     public void TheReportListsEveryWalkAndTheMapDrawsThemDashed()
     {
