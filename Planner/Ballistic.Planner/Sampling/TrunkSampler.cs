@@ -87,59 +87,35 @@ internal sealed class TrunkSampler
     public PoseEvaluation? Sample(Random random) => Sample(random, out _);
 
     /// <summary>As <see cref="Sample(Random)"/>, saying how many triangles the attempts' trunks overlapped in all (<see cref="MaxSampleWork"/>).</summary>
-    internal PoseEvaluation? Sample(Random random, out long work)
-    {
-        ArgumentNullException.ThrowIfNull(random);
-        work = 0;
-        if (_candidates.Length == 0)
-        {
-            return null;
-        }
-
-        for (int attempt = 0; attempt < Settings.MaxAttempts && work <= MaxSampleWork; attempt++)
-        {
-            int triangle = PickByArea(random, _candidates, _cumulativeArea);
-            PoseEvaluation? pose = TryAt(random, triangle, SamplePoint(random, _level.Triangles[triangle]), ref work);
-            if (pose is not null)
-            {
-                return pose;
-            }
-        }
-
-        return null;
-    }
+    internal PoseEvaluation? Sample(Random random, out long work) => Sample(random, null, out work);
 
     /// <summary>
     /// As <see cref="Sample(Random, out long)"/>, the surface point drawn uniformly over <paramref name="region"/>'s
     /// surface (a triangle of it by area, then a point of it, drawn again up to <see cref="RegionRedraws"/> times while
     /// outside the region; an attempt whose points all fell outside fails); over the whole level when
-    /// <paramref name="region"/> is <c>null</c>.
+    /// <paramref name="region"/> is <c>null</c> (the same draws as before regions existed: no redraw).
     /// </summary>
     internal PoseEvaluation? Sample(Random random, SampleRegion? region, out long work)
     {
-        if (region is null)
-        {
-            return Sample(random, out work);
-        }
-
         ArgumentNullException.ThrowIfNull(random);
         work = 0;
-        if (region.Candidates.Length == 0)
+        (int[] candidates, double[] cumulative) = region is null ? (_candidates, _cumulativeArea) : (region.Candidates, region.Cumulative);
+        if (candidates.Length == 0)
         {
             return null;
         }
 
         for (int attempt = 0; attempt < Settings.MaxAttempts && work <= MaxSampleWork; attempt++)
         {
-            int triangle = PickByArea(random, region.Candidates, region.Cumulative);
+            int triangle = PickByArea(random, candidates, cumulative);
             Vector3 point = SamplePoint(random, _level.Triangles[triangle]);
-            for (int redraw = 0; redraw < RegionRedraws && !region.Contains(point); redraw++)
+            for (int redraw = 0; redraw < RegionRedraws && region is not null && !region.Contains(point); redraw++)
             {
-                triangle = PickByArea(random, region.Candidates, region.Cumulative);
+                triangle = PickByArea(random, candidates, cumulative);
                 point = SamplePoint(random, _level.Triangles[triangle]);
             }
 
-            if (region.Contains(point) && TryAt(random, triangle, point, ref work) is { } pose)
+            if ((region is null || region.Contains(point)) && TryAt(random, triangle, point, ref work) is { } pose)
             {
                 return pose;
             }
