@@ -115,7 +115,11 @@ internal sealed class WalkGait
     /// <summary>Least the hips dip (in rest leg lengths) as the feet change over, below their height mid-step: the bob of a walker who does not glide.</summary>
     public const float LeastBob = 0.05f;
 
-    /// <summary>Time (seconds) over which the hips' lift is smoothed: no abrupt rise or fall.</summary>
+    /// <summary>
+    /// Time (seconds) over which the hips' lift is smoothed: no abrupt rise or fall. Shortened in proportion where short
+    /// legs shorten the half-cycle (<see cref="FullSizeLeg"/>): smoothed over 0.03 s, a rat's 0.04 s half-cycles lost
+    /// their bob.
+    /// </summary>
     private const float LiftSmoothing = 0.03f;
 
     /// <summary>
@@ -152,6 +156,15 @@ internal sealed class WalkGait
 
     /// <summary>Least duration of a half-cycle, seconds: its swing lasts at least <see cref="MinSwing"/>.</summary>
     public const float MinHalfCycle = MinSwing / (1f - (2f * Overlap));
+
+    /// <summary>
+    /// Leg length (metres) at and above which <see cref="MinHalfCycle"/> holds whatever the speed. A shorter leg whose
+    /// walk would carry the feet farther in <see cref="MinHalfCycle"/> than they reach steps faster, down to
+    /// <see cref="MinHalfCycle"/> × √(leg ÷ this): walks at equal Froude numbers last in proportion to √(leg ÷ g),
+    /// so a 4.5 cm rat's half-cycle may be as short as 0.04 s (walking its 0.33 m/s, each of its feet steps about 9
+    /// times a second, 3.8 cm each time).
+    /// </summary>
+    public const float FullSizeLeg = 1f;
 
     /// <summary>
     /// Most a held foot drifts sideways under its hip as the trunk turns over it during one half-cycle, in its own
@@ -741,6 +754,7 @@ internal sealed class WalkGait
         private float _stepHeight;
         private float _step;
         private float _stepLow;
+        private float _halfCycle = MinHalfCycle;
         private float[] _times = [];
         private float[] _cost = [0f, 1f];
         private float _cruiseStart;
@@ -867,7 +881,7 @@ internal sealed class WalkGait
             // The step: StepShare of the leg; long enough that a swing at full speed lasts MinSwing; short enough that a
             // held foot, from half a step (and an overlap) ahead of its centre to as much behind, stays within
             // ReachMargin of what its leg reaches.
-            float step = MathF.Max(StepShare * _leg, 2f * _walk.Speed * MinHalfCycle);
+            float natural = StepShare * _leg;
             float margin = ReachMargin;
             if (_longSteps)
             {
@@ -875,7 +889,7 @@ internal sealed class WalkGait
                 // v²/(g·L): about 0.75 L at a relaxed walk), as much of the reach as the hips dipping between steps allows.
                 float leg = _gait._restLeg;
                 float froude = _walk.Speed * _walk.Speed / (9.81f * leg);
-                step = MathF.Max(1.15f * leg * MathF.Pow(froude, 0.3f), 2f * _walk.Speed * MinHalfCycle);
+                natural = 1.15f * leg * MathF.Pow(froude, 0.3f);
                 margin = UprightReachMargin;
             }
 
@@ -888,7 +902,18 @@ internal sealed class WalkGait
                 // (unless that shortens them by more than a quarter: legs that barely reach that high walk as before).
                 reach = MathF.Min(reach, _gait._manyFeetReach);
             }
-            _step = MathF.Max(MathF.Min(step, margin * reach / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+
+            float fits = margin * reach / (0.5f + Overlap);
+            if (2f * _walk.Speed * MinHalfCycle > fits && _walk.Speed > 0f)
+            {
+                // Short legs: a swing of MinSwing would carry the feet past their reach, so the half-cycle shortens
+                // to the step they reach, no shorter than MinHalfCycle scaled to the leg as dynamic similarity says.
+                float least = MinHalfCycle * MathF.Min(1f, MathF.Sqrt(MathF.Max(_gait._restLeg, _leg) / FullSizeLeg));
+                _halfCycle = MathF.Max(least, fits / (2f * _walk.Speed));
+            }
+
+            float step = MathF.Max(natural, 2f * _walk.Speed * _halfCycle);
+            _step = MathF.Max(MathF.Min(step, fits), MathF.Max(0.05f * _leg, 1e-3f));
             _stepLow = _step;
             if (cruising)
             {
@@ -954,8 +979,10 @@ internal sealed class WalkGait
                 }
             }
 
-            // No foot steps to a new foothold faster than MinAirTime allows (it would read as a slide): a walk too
-            // short or turning too fast for its steps says so. (A foot rolling onto its ball, or back, keeps its foothold.)
+            // No foot steps to a new foothold faster than MinAirTime allows (it would read as a slide), shortened as the
+            // half-cycle is for short legs: a walk too short or turning too fast for its steps says so. (A foot
+            // rolling onto its ball, or back, keeps its foothold.)
+            float minAir = JumpAnimator.MinAirTime * (_halfCycle / MinHalfCycle);
             foreach (IGrouping<int, ContactPhase> limbPhases in _phases.GroupBy(p => p.Limb))
             {
                 ContactPhase[] ordered = [.. limbPhases.OrderBy(p => p.From)];
@@ -964,7 +991,7 @@ internal sealed class WalkGait
                     float moved = Vector3.Distance(ordered[i].Position, ordered[i - 1].Position);
                     bool rolling = ordered[i].OnBall != ordered[i - 1].OnBall && _model.Limbs[ordered[i].Limb].Ball is RigLimb ball
                         && moved <= Vector3.Distance(ball.EffectorOffset, _model.Limbs[ordered[i].Limb].EffectorOffset) + (2f * Touch);
-                    if (!rolling && ordered[i].From - ordered[i - 1].To < JumpAnimator.MinAirTime && moved > 2f * Touch)
+                    if (!rolling && ordered[i].From - ordered[i - 1].To < minAir && moved > 2f * Touch)
                     {
                         Fail(ordered[i].Limb, "would have to step faster than it can", Step(ordered[i - 1].To));
                     }
@@ -1243,7 +1270,7 @@ internal sealed class WalkGait
                 raw[i] = MathF.Min(raw[i], lifted[i].High - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
             }
 
-            int k = Math.Max(1, (int)MathF.Round(LiftSmoothing / _h));
+            int k = Math.Max(1, (int)MathF.Round(LiftSmoothing * (_halfCycle / MinHalfCycle) / _h));
             float[] eroded = new float[raw.Length];
             for (int i = 0; i < raw.Length; i++)
             {
@@ -1790,11 +1817,11 @@ internal sealed class WalkGait
         /// <summary>
         /// The half-cycles' boundaries in time, seconds. The trunk's motion is costed in steps: its travel plus what
         /// its turn moves the farthest foot under it (never more than a step per <see cref="MaxTurn"/>), and never less
-        /// than its turn in <see cref="MaxTurn"/>s (at most one half-cycle per <see cref="MinHalfCycle"/>): a biped's
+        /// than its turn in <see cref="MaxTurn"/>s (at most one half-cycle per least half-cycle): a biped's
         /// turn along a curve barely shortens its steps, a long-bodied rig re-steps its feet as it turns. The first half-cycle lasts
         /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
         /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
-        /// at most one, none shorter than <see cref="MinHalfCycle"/>.
+        /// at most one, none shorter than the least half-cycle (<see cref="MinHalfCycle"/>, shorter for short legs: <see cref="FullSizeLeg"/>).
         /// </summary>
         private float[] Boundaries(int[] group, int first)
         {
@@ -1811,30 +1838,30 @@ internal sealed class WalkGait
                 float moved = Vector3.Distance(previous.Position, pose.Position);
                 float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples);
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
-                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / MinHalfCycle);
+                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
                 previous = pose;
             }
 
             float total = cost[samples];
-            if (duration < 2f * MinHalfCycle || total <= 1f)
+            if (duration < 2f * _halfCycle || total <= 1f)
             {
                 // One step of each group: the first swings while the other holds the start contacts, then the other.
                 return [0f, 0.5f * duration, duration];
             }
 
-            float firstEnd = Math.Clamp(MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f))), MinHalfCycle, 0.5f * duration);
-            float lastStart = Math.Clamp(MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f))), 0.5f * duration, duration - MinHalfCycle);
+            float firstEnd = Math.Clamp(MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f))), _halfCycle, 0.5f * duration);
+            float lastStart = Math.Clamp(MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f))), 0.5f * duration, duration - _halfCycle);
             float span = lastStart - firstEnd;
-            if (span < MinHalfCycle)
+            if (span < _halfCycle)
             {
                 return [0f, 0.5f * duration, duration];
             }
 
             float c0 = CostAt(firstEnd);
             float c1 = CostAt(lastStart);
-            int middle = Math.Clamp((int)MathF.Ceiling(c1 - c0 - 1e-4f), 1, Math.Max(1, (int)(span / MinHalfCycle)));
+            int middle = Math.Clamp((int)MathF.Ceiling(c1 - c0 - 1e-4f), 1, Math.Max(1, (int)(span / _halfCycle)));
 
-            // Even in cost, drawn toward even in time as far as needed for every half-cycle to last MinHalfCycle.
+            // Even in cost, drawn toward even in time as far as needed for every half-cycle to last the least half-cycle.
             var times = new float[middle + 3];
             times[0] = 0f;
             times[1] = firstEnd;
@@ -1851,7 +1878,7 @@ internal sealed class WalkGait
 
                 for (int k = 1; k <= middle; k++)
                 {
-                    ok &= times[k + 1] - times[k] >= MinHalfCycle - 1e-4f;
+                    ok &= times[k + 1] - times[k] >= _halfCycle - 1e-4f;
                 }
 
                 if (ok || blend >= 1f)
@@ -2445,6 +2472,15 @@ internal sealed class WalkGait
         }
 
         /// <summary>
+        /// Whether <paramref name="effector"/> is within <see cref="Touch"/> of <paramref name="contact"/> (if any) on
+        /// short legs that step faster than <see cref="MinHalfCycle"/>: a rat's foot lifts a millimetre or two in its
+        /// swing's first fine step, and its bones still touch the ground by its contact. Full-size legs lift theirs up
+        /// to <see cref="FirstMove"/> at once and do without it (allowed there too, it changed which lift their swings
+        /// took, and the desert skeleton's walks cruised lower: 0.796 L on one).
+        /// </summary>
+        private bool Touching(Vector3 effector, Vector3? contact) => _halfCycle < MinHalfCycle && contact is { } c && Vector3.Distance(effector, c) <= Touch;
+
+        /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
         /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
         /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
@@ -2570,12 +2606,17 @@ internal sealed class WalkGait
                     }
 
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
-                    Vector3? near = i == a ? contact0 : i == b ? contact1 : null;
+                    // An effector still or already within Touch of its contact touches it (a swing's first and last
+                    // moments count in the contact phases around it): on short legs its bones may touch the ground
+                    // there, as on the contact itself (Touching).
+                    Vector3 effector = limb.EffectorPosition(_positions, _rotations);
+                    Vector3? near = i == a ? contact0 : i == b ? contact1 : Touching(effector, contact0) ? contact0 : Touching(effector, contact1) ? contact1 : null;
+                    Vector3? nearBefore = i - 1 == a ? contact0 : i == b ? contact1 : Touching(effector, contact0) ? contact0 : Touching(effector, contact1) ? contact1 : null;
                     if (_gait._collision.LimbCollides(limb, _positions, _rotations, near))
                     {
                         failures++;
                     }
-                    else if (i > a && MidwayCollides(limb, i, q, trial, i - 1 == a ? contact0 : i == b ? contact1 : null))
+                    else if (i > a && MidwayCollides(limb, i, q, trial, nearBefore))
                     {
                         // Played between the two steps (angles interpolated), the limb must be clear too.
                         failures++;

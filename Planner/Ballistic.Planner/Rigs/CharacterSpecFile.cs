@@ -422,6 +422,17 @@ public static class CharacterSpecFile
             };
         }
 
+        float size = JumpSpeedScale(reduced.StanceLift.Max);
+        if (size < 1f && (spec.TakeoffSpeedMax is null || spec.LandingSpeedMax is null))
+        {
+            // Speeds the spec does not give scale with the rig's size (a rat does not jump like a person).
+            reduced = new ReducedCharacter(reduced.Name, reduced.TrunkHalfExtents, reduced.Limbs, reduced.RequiredContacts, spec.TakeoffSpeedMax ?? (8f * size), spec.LandingSpeedMax ?? (12f * size), reduced.Friction)
+            {
+                StanceLift = reduced.StanceLift,
+                Walking = reduced.Walking,
+            };
+        }
+
         if (spec.WalkSpeed is not null || spec.MaxSlope is not null || spec.MaxSlopeAlong is not null || spec.StepHeight is not null)
         {
             WalkingLimits derived = reduced.Walking;
@@ -537,6 +548,16 @@ public static class CharacterSpecFile
             }
         }
     }
+
+    /// <summary>Standing root height (metres) for which the default jump speeds, 8 m/s up and 12 m/s down, were chosen: the bundled skeleton's.</summary>
+    internal const float FullSizeStance = 0.96f;
+
+    /// <summary>
+    /// The share of the default jump speeds a rig standing with its root <paramref name="stance"/> metres above its
+    /// contacts gets: √(stance ÷ <see cref="FullSizeStance"/>), at most 1 (a Froude rule: jumps of the same shape in
+    /// proportion to the body: a 4.5 cm rat takes off at 1.7 m/s and hops about 0.3 m; a person is not made faster).
+    /// </summary>
+    internal static float JumpSpeedScale(float stance) => stance > 0f && float.IsFinite(stance) ? MathF.Min(1f, MathF.Sqrt(stance / FullSizeStance)) : 1f;
 
     /// <summary>
     /// How many limbs must touch when a spec does not say: half the feet, rounded up (2 for a biped or a quadruped, 3

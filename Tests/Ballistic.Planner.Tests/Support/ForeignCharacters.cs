@@ -3,21 +3,24 @@ using System.Numerics;
 namespace Ballistic.Planner.Tests.Support;
 
 /// <summary>
-/// Three characters in the shapes other tools export, each with a limbs-only spec: a Mixamo/Blender-like human in
+/// Characters in the shapes other tools export, each with a limbs-only spec: a Mixamo/Blender-like human in
 /// centimetres and Z up under a rotated, scaled armature (or in a Z-up scene that the spec turns upright); a dog with
 /// anchor empties between its leg bones (one scaled, one bone written as a matrix), written as a .gltf with its buffer
 /// and texture in separate files; and a tailed quadruped whose skin has three root bones under one armature node
-/// (tail, IK target and hips) that faces +X.
+/// (tail, IK target and hips) that faces +X; and a 4.5 cm rat whose tail lies on the ground. The dog's and the tailed
+/// quadruped's specs give a full-size jumper's speeds (8 and 12 m/s: what these rigs are tested with since before
+/// speeds scaled with size); the others give none.
 /// </summary>
 internal static class ForeignCharacters
 {
-    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog" or "tailed".</summary>
+    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog", "tailed" or "rat".</summary>
     public static ForeignCharacter Named(string name) => name switch
     {
         "human" => Human(zUpScene: false),
         "human-zup" => Human(zUpScene: true),
         "dog" => Dog(),
         "tailed" => TailedQuadruped(),
+        "rat" => Rat(),
         _ => throw new ArgumentException($"no foreign character '{name}'", nameof(name)),
     };
 
@@ -126,7 +129,7 @@ internal static class ForeignCharacters
         }
 
         string spec = """
-            {"schema":"ballistic.character/1","name":"dog","requiredContacts":2,
+            {"schema":"ballistic.character/1","name":"dog","requiredContacts":2,"takeoffSpeedMax":8,"landingSpeedMax":12,
              "limbs":{
                "left_hind":{"rootBone":"left_hip","effectorBone":"left_hind_paw"},
                "right_hind":{"rootBone":"right_hip","effectorBone":"right_hind_paw","contact":"foot"},
@@ -179,7 +182,7 @@ internal static class ForeignCharacters
         // The skin lists the tail chain and the IK target before the hips: three root bones under the armature.
         r.SkinOrder = [tailRoot, tail1, tail2, ik, hips, chest, head, .. legs];
         string spec = """
-            {"schema":"ballistic.character/1","name":"tailed","forwardAxis":"+X","requiredContacts":3,
+            {"schema":"ballistic.character/1","name":"tailed","forwardAxis":"+X","requiredContacts":3,"takeoffSpeedMax":8,"landingSpeedMax":12,
              "limbs":{
                "left_hind":{"rootBone":"left_thigh","effectorBone":"left_foot"},
                "right_hind":{"rootBone":"right_thigh","effectorBone":"right_foot"},
@@ -187,5 +190,64 @@ internal static class ForeignCharacters
                "right_front":{"rootBone":"right_upper_arm","effectorBone":"right_hand"}}}
             """;
         return new ForeignCharacter("tailed", r, spec, Quaternion.CreateFromAxisAngle(Vector3.UnitY, -90f * Degree), "hips", "head", "hips", "head", ["hips", "chest"], [.. feet], External: false, ByteWeights: true);
+    }
+
+    /// <summary>
+    /// A rat 17 cm long (hips 4.5 cm above the ground) whose tail, a chain of four bones, rests on the ground behind it
+    /// in the rest pose, as a modeller leaves a tail lying on the floor: the skin of its last three bones reaches 1–2 mm below its soles. Its
+    /// limbs-only spec gives no speeds, no poses and nothing for the tail.
+    /// </summary>
+    public static ForeignCharacter Rat()
+    {
+        var r = new ForeignRig();
+        int hips = r.BoneAt("pelvis", -1, -1, new(0, 0.045f, -0.05f), new(0, 0.047f, 0.02f));
+        int chest = r.BoneAt("spine", hips, -1, new(0, 0.047f, 0.02f), new(0, 0.05f, 0.07f));
+        int head = r.BoneAt("skull", chest, -1, new(0, 0.05f, 0.07f), new(0, 0.045f, 0.12f));
+        r.Box(hips, -1, new(-0.028f, 0.025f, -0.07f), new(0.028f, 0.065f, 0.02f));
+        r.Box(chest, -1, new(-0.026f, 0.027f, 0.02f), new(0.026f, 0.066f, 0.07f), hips);
+        r.Box(head, -1, new(-0.018f, 0.03f, 0.07f), new(0.018f, 0.062f, 0.12f), chest);
+        int tail = hips;
+        Vector3 from = new(0, 0.04f, -0.07f);
+        Vector3[] tailPoints = [new(0, 0.022f, -0.11f), new(0, 0.004f, -0.15f), new(0, 0.002f, -0.19f), new(0, 0.001f, -0.23f)];
+        for (int i = 0; i < tailPoints.Length; i++)
+        {
+            int bone = r.BoneAt($"tail_{i + 1:00}", tail, -1, from, tailPoints[i]);
+            float w = 0.006f - (0.001f * i);
+            Vector3 lo = Vector3.Min(from, tailPoints[i]);
+            Vector3 hi = Vector3.Max(from, tailPoints[i]);
+            r.Box(bone, -1, new(-w, lo.Y - w, lo.Z), new(w, hi.Y + w, hi.Z), tail == hips ? -1 : tail);
+            tail = bone;
+            from = tailPoints[i];
+        }
+
+        var feet = new List<ForeignFoot>();
+        foreach ((string side, float s) in new[] { ("l", 1f), ("r", -1f) })
+        {
+            float x = 0.022f * s;
+            int thigh = r.BoneAt($"thigh_{side}", hips, -1, new(x, 0.04f, -0.045f), new(x, 0.024f, -0.035f));
+            int shin = r.BoneAt($"shin_{side}", thigh, -1, new(x, 0.024f, -0.035f), new(x, 0.008f, -0.048f));
+            int foot = r.BoneAt($"hindpaw_{side}", shin, -1, new(x, 0.008f, -0.048f), new(x, 0.003f, -0.028f));
+            int upper = r.BoneAt($"humerus_{side}", chest, -1, new(x, 0.042f, 0.05f), new(x, 0.025f, 0.045f));
+            int fore = r.BoneAt($"radius_{side}", upper, -1, new(x, 0.025f, 0.045f), new(x, 0.007f, 0.05f));
+            int hand = r.BoneAt($"forepaw_{side}", fore, -1, new(x, 0.007f, 0.05f), new(x, 0.003f, 0.062f));
+            r.Box(thigh, -1, new(x - 0.008f, 0.024f, -0.05f), new(x + 0.008f, 0.042f, -0.03f), hips, 0.2f);
+            r.Box(shin, -1, new(x - 0.006f, 0.008f, -0.054f), new(x + 0.006f, 0.024f, -0.032f));
+            r.Box(foot, -1, new(x - 0.008f, 0f, -0.054f), new(x + 0.008f, 0.008f, -0.024f), shin, 0.2f);
+            r.Box(upper, -1, new(x - 0.007f, 0.025f, 0.038f), new(x + 0.007f, 0.044f, 0.056f), chest, 0.2f);
+            r.Box(fore, -1, new(x - 0.006f, 0.007f, 0.04f), new(x + 0.006f, 0.025f, 0.056f));
+            r.Box(hand, -1, new(x - 0.007f, 0f, 0.044f), new(x + 0.007f, 0.007f, 0.066f), fore, 0.2f);
+            feet.Add(new ForeignFoot($"{side}_hind", [$"hindpaw_{side}"]));
+            feet.Add(new ForeignFoot($"{side}_front", [$"forepaw_{side}"]));
+        }
+
+        string spec = """
+            {"schema":"ballistic.character/1","name":"rat",
+             "limbs":{
+               "l_hind":{"rootBone":"thigh_l","effectorBone":"hindpaw_l"},
+               "r_hind":{"rootBone":"thigh_r","effectorBone":"hindpaw_r"},
+               "l_front":{"rootBone":"humerus_l","effectorBone":"forepaw_l"},
+               "r_front":{"rootBone":"humerus_r","effectorBone":"forepaw_r"}}}
+            """;
+        return new ForeignCharacter("rat", r, spec, Quaternion.Identity, "pelvis", "skull", "pelvis", "skull", ["pelvis", "spine"], [.. feet], External: false, ByteWeights: false);
     }
 }
