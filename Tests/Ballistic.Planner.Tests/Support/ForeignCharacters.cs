@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class ForeignCharacters
 {
-    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog", "tailed" or "rat".</summary>
+    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog", "tailed", "rat" or "spider".</summary>
     public static ForeignCharacter Named(string name) => name switch
     {
         "human" => Human(zUpScene: false),
@@ -21,6 +21,7 @@ internal static class ForeignCharacters
         "dog" => Dog(),
         "tailed" => TailedQuadruped(),
         "rat" => Rat(),
+        "spider" => Spider(),
         _ => throw new ArgumentException($"no foreign character '{name}'", nameof(name)),
     };
 
@@ -249,5 +250,48 @@ internal static class ForeignCharacters
                "r_front":{"rootBone":"humerus_r","effectorBone":"forepaw_r"}}}
             """;
         return new ForeignCharacter("rat", r, spec, Quaternion.Identity, "pelvis", "skull", "pelvis", "skull", ["pelvis", "spine"], [.. feet], External: false, ByteWeights: false);
+    }
+
+    /// <summary>
+    /// A giant spider (a game's enemy: 1.5 m across its legs, its body 0.35 m above the ground) with eight legs spread
+    /// in its rest pose, each a femur rising to a knee above the body and a tibia and tarsus falling to the ground, as
+    /// spiders are modelled; each segment's skin a box along its bone. Its limbs-only spec gives nothing but the legs.
+    /// </summary>
+    public static ForeignCharacter Spider()
+    {
+        var r = new ForeignRig();
+        const float Degree = MathF.PI / 180f;
+        int thorax = r.BoneAt("cephalothorax", -1, -1, new(0, 0.35f, -0.05f), new(0, 0.36f, 0.2f));
+        int abdomen = r.BoneAt("abdomen", thorax, -1, new(0, 0.37f, -0.05f), new(0, 0.4f, -0.45f));
+        r.Box(thorax, -1, new(-0.14f, 0.28f, -0.08f), new(0.14f, 0.42f, 0.22f));
+        r.Box(abdomen, -1, new(-0.15f, 0.3f, -0.5f), new(0.15f, 0.5f, -0.08f), thorax);
+        var feet = new List<ForeignFoot>();
+        var limbs = new List<string>();
+        foreach ((string side, float s) in new[] { ("l", 1f), ("r", -1f) })
+        {
+            float[] angles = [35f, 70f, 105f, 140f];
+            for (int n = 0; n < angles.Length; n++)
+            {
+                Vector3 d = new(s * MathF.Sin(angles[n] * Degree), 0f, MathF.Cos(angles[n] * Degree));
+                Vector3 p0 = new Vector3(0f, 0.34f, 0.07f) + (d * 0.12f);
+                Vector3 p1 = p0 + (d * 0.22f) + new Vector3(0f, 0.18f, 0f);
+                Vector3 p2 = p1 + (d * 0.3f) + new Vector3(0f, -0.44f, 0f);
+                Vector3 p3 = p2 + (d * 0.06f) + new Vector3(0f, -0.08f, 0f);
+                string leg = $"{side}{n + 1}";
+                int femur = r.BoneAt($"leg_{leg}_femur", thorax, -1, p0, p1);
+                int tibia = r.BoneAt($"leg_{leg}_tibia", femur, -1, p1, p2);
+                int tarsus = r.BoneAt($"leg_{leg}_tarsus", tibia, -1, p2, p3);
+                foreach ((int bone, float length, float radius, int blend) in new[] { (femur, Vector3.Distance(p0, p1), 0.03f, thorax), (tibia, Vector3.Distance(p1, p2), 0.025f, femur), (tarsus, Vector3.Distance(p2, p3), 0.018f, tibia) })
+                {
+                    r.Box(bone, bone, new(-radius, 0f, -radius), new(radius, length, radius), blend, 0.2f);
+                }
+
+                feet.Add(new ForeignFoot(leg, [$"leg_{leg}_tarsus"]));
+                limbs.Add($"\"{leg}\":{{\"rootBone\":\"leg_{leg}_femur\",\"effectorBone\":\"leg_{leg}_tarsus\"}}");
+            }
+        }
+
+        string spec = "{\"schema\":\"ballistic.character/1\",\"name\":\"spider\",\"limbs\":{" + string.Join(",", limbs) + "}}";
+        return new ForeignCharacter("spider", r, spec, Quaternion.Identity, "cephalothorax", "cephalothorax", "abdomen", "cephalothorax", ["cephalothorax", "abdomen"], [.. feet], External: false, ByteWeights: false);
     }
 }

@@ -1,0 +1,83 @@
+using System.Numerics;
+using Ballistic.Authoring.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.EndToEnd;
+
+/// <summary>
+/// An eight-legged rig loaded from a user's files (issue 24's spider: legs spread in the rest pose, knees above the
+/// body, a limbs-only spec naming only the legs) stands on half its feet by default and walks across open floor, one
+/// walk and no jump, fully right by the audit and by every criterion of the animator's eye read from its GLB. Onto a
+/// platform it jumps, physically right, but not yet as an animator wants (see the test).
+/// </summary>
+[Category("EndToEnd")]
+public sealed class EightLegTests
+{
+    private static readonly Lazy<(CharacterModel Model, ReducedCharacter Reduced)> Spider = new(() => ForeignCharacters.Spider().Load());
+
+    [Test]
+    public void ASpiderStandsOnFourOfItsEightFeetAndJumpsAtItsSize()
+    {
+        ReducedCharacter spider = Spider.Value.Reduced;
+        Assert.That(spider.Limbs, Has.Count.EqualTo(8));
+        Assert.That(spider.RequiredContacts, Is.EqualTo(4));
+        Assert.That(spider.Walking.CanWalk, Is.True, spider.ToString());
+        Assert.That(spider.TakeoffSpeedMax, Is.EqualTo(8f * MathF.Sqrt(spider.StanceLift.Max / 0.96f)).Within(1e-4f), "standing 0.36 m tall: 4.9 m/s");
+    }
+
+    [TestCase(-1.5f, 0f, 1.5f, 0f)]
+    [TestCase(-1f, -1f, 1.2f, 0.8f)]
+    public void ASpiderWalksAcrossOpenFloor(float x0, float z0, float x1, float z1)
+    {
+        (AnimatedPlan plan, AnimatorEye.Look look) = Plan("floor", new LevelBuilder("floor").AddFloor(-3f, -3f, 3f, 3f, 0f).Build(), new(x0, 0f, z0), new(x1, 0f, z1));
+        Assert.That(plan.Rejected, Is.Empty, () => "no walk set aside: " + string.Join("; ", plan.Rejected.Select(r => r.Reason)));
+        Assert.That(plan.Result.Moves.OfType<Jump>(), Is.Empty, "no jump across flat floor");
+        Assert.That(plan.Result.Moves.OfType<Walk>().Count(), Is.EqualTo(1));
+        SweepTests.AssertEveryCriterion(look, "the spider's walk", _ => false, "none");
+        Assert.That(look.Upright.Seen, Is.Not.Empty, "the walk cruises on level ground");
+        Assert.That(look.Crossing.Seen, Is.Not.Empty, "its legs' sides are read");
+    }
+
+    /// <summary>
+    /// Onto a 0.6 m platform (far above its 9 cm step) the spider walks, jumps and walks again, physically right by
+    /// the audit, but the criteria in <see cref="NotYet"/> fail (one passing fails the test: take it off the list).
+    /// Every direct jump up the platform's face is set aside because a front leg passes through the level in flight
+    /// whatever pose it takes (the flight poses derived for legs spread flat tuck them under the body, not up); the
+    /// plan found after six rounds hops along the floor and up at an angle, its landings 104° and 136° off their way,
+    /// in rounds that turn only by hops, whose crouches do not fit under the spread legs.
+    /// </summary>
+    [Test]
+    public void NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants()
+    {
+        (AnimatedPlan plan, AnimatorEye.Look look) = Plan("platform", new LevelBuilder("platform")
+            .AddFloor(-4f, -3f, 4f, 3f, 0f)
+            .AddBox(new Vector3(1f, 0f, -3f), new Vector3(4f, 0.6f, 3f))
+            .Build(), new(-2.5f, 0f, 0.5f), new(2.5f, 0.6f, -0.5f));
+        Assert.That(plan.Result.Moves.OfType<Jump>(), Is.Not.Empty, "it jumps up");
+        Assert.That(plan.Rejected.Select(r => r.Reason), Has.Some.Contains("passes through the level in flight"));
+        SweepTests.AssertEveryCriterion(look, "the spider's platform", NotYet.Contains, nameof(NotYet));
+    }
+
+    /// <summary>The criteria the spider's jumps onto the platform do not pass yet (see <see cref="NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants"/>).</summary>
+    private static readonly string[] NotYet = ["facing", "flight pose", "under hips", "footholds", "bob"];
+
+    /// <summary>Bakes until connected, plans, animates, audits (fully right asserted) and reads the exported GLB as an importer would.</summary>
+    private static (AnimatedPlan Plan, AnimatorEye.Look Look) Plan(string name, Level level, Vector3 from, Vector3 to)
+    {
+        (CharacterModel model, ReducedCharacter reduced) = Spider.Value;
+        Sweep.Setup setup = Sweep.Prepare(name, level, model, reduced);
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        AuditReport report = PlanAudit.Check($"spider on {name}", setup.Scene, from, to, plan.Result, plan.Animation);
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(plan.Animation!), model).Measure(plan.Animation!, setup.Scene);
+        TestContext.Out.WriteLine($"{string.Join(" ", plan.Result.Moves.Select(m => m.GetType().Name))}: " + string.Join("; ", look.All.Select(c => $"{c.Name}: {c.Criterion}")));
+        return (plan, look);
+    }
+}
