@@ -2244,12 +2244,17 @@ internal sealed class WalkGait
             }
 
             // Each hold is a contact phase, from the first fine step to the last when the effector is within Touch of
-            // its point (the swings around it leave and reach it gradually); where the foot rolls onto its ball (and
-            // back), the hold is phases on the sole and on the ball in turn.
-            foreach (Holding hold in holds)
+            // its point (the swings around it leave and reach it gradually), but no further than halfway through the
+            // swings either side: a re-step shorter than twice Touch (a rat's 1.2 cm shuffle as it turns) leaves one
+            // point and reaches the next within Touch of both, and its phases would overlap. Where the foot rolls onto
+            // its ball (and back), the hold is phases on the sole and on the ball in turn.
+            for (int h = 0; h < holds.Count; h++)
             {
+                Holding hold = holds[h];
+                int earliest = h > 0 ? ((holds[h - 1].To + hold.From) / 2) + 1 : 0;
+                int latest = h + 1 < holds.Count ? (hold.To + holds[h + 1].From) / 2 : _steps;
                 int from = hold.From;
-                while (from > 0 && Near(l, from - 1, hold.Point))
+                while (from > earliest && Near(l, from - 1, hold.Point))
                 {
                     from--;
                 }
@@ -2263,7 +2268,7 @@ internal sealed class WalkGait
                     if (r == 0)
                     {
                         a = onBall ? a : from;
-                        while (onBall && a > 0 && Near(touching, a - 1, point))
+                        while (onBall && a > earliest && Near(touching, a - 1, point))
                         {
                             a--;
                         }
@@ -2276,7 +2281,7 @@ internal sealed class WalkGait
 
                     if (r == runs.Count - 1)
                     {
-                        while (b < _steps && Near(touching, b + 1, point))
+                        while (b < latest && Near(touching, b + 1, point))
                         {
                             b++;
                         }

@@ -53,7 +53,8 @@ public sealed class SmallQuadrupedTests
     /// Two metres of floor, either way across: one walk, no jump, fully right by the audit and every criterion of the
     /// animator's eye read from the exported GLB; its feet step about 0.9 of its leg (the README's figure) and leave
     /// their contacts for at least 0.1 s × √(leg ÷ 1 m) (about 0.02 s), not the three legs' lengths a 0.16 s swing would need.
-    /// Its tail, lying on the ground at rest, never enters the level more than 5 mm.
+    /// Its tail, lying on the ground at rest, never enters the level more than 5 mm; no foot's contact phases overlap
+    /// (its 1.2 cm re-steps as it turns came within 8 mm of both points at once).
     /// </summary>
     [TestCase(-1f, 0f, 1f, 0f)]
     [TestCase(-0.5f, 0.3f, 0.6f, -0.4f)]
@@ -92,6 +93,7 @@ public sealed class SmallQuadrupedTests
             ContactPhase[] ordered = [.. foot.OrderBy(p => p.From)];
             for (int i = 1; i < ordered.Length; i++)
             {
+                Assert.That(ordered[i].From, Is.GreaterThanOrEqualTo(ordered[i - 1].To - 1e-5f), $"limb {foot.Key}'s contact phases overlap (a short re-step near both points at once)");
                 if (Vector3.Distance(ordered[i].Position, ordered[i - 1].Position) > 0.02f)
                 {
                     air.Add(ordered[i].From - ordered[i - 1].To);
