@@ -266,16 +266,50 @@ public static class SvgPlanRenderer
             svg.Append(Invariant($"<text x=\"{X(jump.Arc.Start) + 3:0.#}\" y=\"{Py(jump.Arc.Start.Y) + 16:0.#}\" font-size=\"11\" fill=\"#7a2e05\">{m + 1}</text>\n"));
         }
 
-        float legendY = pageH - 22f;
-        svg.Append(Invariant($"<g font-size=\"11\"><line x1=\"{Margin}\" y1=\"{legendY}\" x2=\"{Margin + 24}\" y2=\"{legendY}\" stroke=\"{JumpColor}\" stroke-width=\"3\"/><text x=\"{Margin + 30}\" y=\"{legendY + 4}\">jump (trunk centre)</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 145}\" y1=\"{legendY}\" x2=\"{Margin + 169}\" y2=\"{legendY}\" stroke=\"{WalkColor}\" stroke-width=\"3\" stroke-dasharray=\"{WalkDash}\"/><text x=\"{Margin + 175}\" y=\"{legendY + 4}\">walk (ground path)</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 290}\" y1=\"{legendY}\" x2=\"{Margin + 314}\" y2=\"{legendY}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/><text x=\"{Margin + 320}\" y=\"{legendY + 4}\">{Escape(roadmapLegend)}</text>"));
-        svg.Append(Invariant($"<path d=\"M {Margin + 420} {legendY + 5} L {Margin + 430} {legendY - 6} L {Margin + 440} {legendY + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/><text x=\"{Margin + 446}\" y=\"{legendY + 4}\">takeoff cone</text>"));
-        svg.Append(Invariant($"<path d=\"M {Margin + 530} {legendY + 5} L {Margin + 540} {legendY - 6} L {Margin + 550} {legendY + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/><text x=\"{Margin + 556}\" y=\"{legendY + 4}\">landing cone</text>"));
-        svg.Append(Invariant($"<line x1=\"{Margin + 640}\" y1=\"{legendY}\" x2=\"{Margin + 664}\" y2=\"{legendY}\" stroke=\"#000\" stroke-width=\"1.5\"/><text x=\"{Margin + 670}\" y=\"{legendY + 4}\">takeoff velocity (×0.08 s)</text></g>\n"));
+        // The legend: each item's sample then its words, laid out one after the other by the words' width (a long
+        // roadmap line, "roadmap jumps (1,500 of 3,065 drawn)", ran into the next item at fixed places), on a second
+        // row when the first is full.
+        (Func<float, float, FormattableString> Sample, string Text)[] items =
+        [
+            ((x, y) => $"<line x1=\"{x}\" y1=\"{y}\" x2=\"{x + 24}\" y2=\"{y}\" stroke=\"{JumpColor}\" stroke-width=\"3\"/>", "jump (trunk centre)"),
+            ((x, y) => $"<line x1=\"{x}\" y1=\"{y}\" x2=\"{x + 24}\" y2=\"{y}\" stroke=\"{WalkColor}\" stroke-width=\"3\" stroke-dasharray=\"{WalkDash}\"/>", "walk (ground path)"),
+            ((x, y) => $"<line x1=\"{x}\" y1=\"{y}\" x2=\"{x + 24}\" y2=\"{y}\" stroke=\"#2b4c7e\" stroke-opacity=\"0.5\"/>", roadmapLegend),
+            ((x, y) => $"<path d=\"M {x + 2} {y + 5} L {x + 12} {y - 6} L {x + 22} {y + 5} Z\" fill=\"#1971c2\" fill-opacity=\"0.25\" stroke=\"#1971c2\"/>", "takeoff cone"),
+            ((x, y) => $"<path d=\"M {x + 2} {y + 5} L {x + 12} {y - 6} L {x + 22} {y + 5} Z\" fill=\"#9c36b5\" fill-opacity=\"0.25\" stroke=\"#9c36b5\"/>", "landing cone"),
+            ((x, y) => $"<line x1=\"{x}\" y1=\"{y}\" x2=\"{x + 24}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"1.5\"/>", "takeoff velocity (×0.08 s)"),
+        ];
+        float legendX = Margin;
+        float legendY = pageH - 34f;
+        svg.Append("<g font-size=\"11\">");
+        foreach ((Func<float, float, FormattableString> sample, string text) in items)
+        {
+            float width = LegendSample + LegendWidth(text);
+            if (legendX > Margin && legendX + width > PageWidth - Margin)
+            {
+                (legendX, legendY) = (Margin, legendY + 16f);
+            }
+
+            svg.Append(Invariant(sample(legendX, legendY)));
+            svg.Append(Invariant($"<text x=\"{legendX + LegendSample}\" y=\"{legendY + 4}\">{Escape(text)}</text>"));
+            legendX += width + LegendGap;
+        }
+
+        svg.Append("</g>\n");
         svg.Append("</svg>\n");
         return svg.ToString();
     }
+
+    /// <summary>Width (px) of a legend item's sample and the space before its words.</summary>
+    private const float LegendSample = 30f;
+
+    /// <summary>Space (px) between legend items.</summary>
+    private const float LegendGap = 18f;
+
+    /// <summary>
+    /// The width (px) <paramref name="text"/> takes in the legend's 11 px sans-serif, at most: 6.2 px a character
+    /// (wider than the average of DejaVu Sans and Arial at that size, whose widest common letters, m and w, are 9 px).
+    /// </summary>
+    internal static float LegendWidth(string text) => 6.2f * text.Length;
 
     /// <summary>Most roadmap jumps the top view draws: past it the layer hides the level and the path (the pond's 8,151).</summary>
     internal const int MaxDrawnJumps = 1_500;

@@ -57,6 +57,28 @@ public sealed class SvgPlanRendererTests
         Assert.That(layer.Elements(Svg + "line").Count(), Is.EqualTo(SvgPlanRenderer.MaxDrawnJumps));
         Assert.That(svg.Descendants(Svg + "text").Select(t => t.Value), Has.Some.EqualTo(string.Create(CultureInfo.InvariantCulture, $"roadmap jumps ({SvgPlanRenderer.MaxDrawnJumps:N0} of {pairs:N0} drawn)")));
 
+        // The legend's items, the long roadmap line among them, stand apart and within the page: each item's words
+        // end (at 6.2 px a character) before the next item's sample begins on its row.
+        float page = float.Parse(svg.Root!.Attribute("width")!.Value, CultureInfo.InvariantCulture);
+        XElement legend = svg.Root.Elements(Svg + "g").Last();
+        var rows = legend.Elements(Svg + "text")
+            .Select(t => (X: float.Parse(t.Attribute("x")!.Value, CultureInfo.InvariantCulture), Y: t.Attribute("y")!.Value, Text: t.Value))
+            .GroupBy(t => t.Y).ToList();
+        Assert.That(rows.Sum(r => r.Count()), Is.EqualTo(6), "six legend items");
+        foreach (var row in rows)
+        {
+            var ordered = row.OrderBy(t => t.X).ToList();
+            for (int i = 0; i < ordered.Count; i++)
+            {
+                float end = ordered[i].X + SvgPlanRenderer.LegendWidth(ordered[i].Text);
+                Assert.That(end, Is.LessThanOrEqualTo(page), ordered[i].Text);
+                if (i + 1 < ordered.Count)
+                {
+                    Assert.That(ordered[i + 1].X - 30f, Is.GreaterThan(end), $"'{ordered[i].Text}' runs into '{ordered[i + 1].Text}'");
+                }
+            }
+        }
+
         string readme = File.ReadAllText(Path.Combine(RepositoryFiles.Root, "README.md"));
         Assert.That(readme.ReplaceLineEndings(" "), Does.Contain(string.Create(CultureInfo.InvariantCulture, $"at most {SvgPlanRenderer.MaxDrawnJumps:N0} pairs")), "the README's figure");
 
