@@ -346,8 +346,12 @@ public static class CharacterSpecFile
 
         // The trunk box bounds the trunk bones' skinned vertices in the contact pose; a bone whose radius the spec
         // gives, or without vertices, counts as a sphere of its radius around its joint.
+        // Where some trunk bones are skinned, one with neither vertices nor a radius in the spec is a control, not
+        // body (Rigify's root bone on the ground, an IK target): it does not stretch the box down to the floor.
         IReadOnlyList<Vector3>[] trunkPoints = [.. names.Select((n, j) => spec.BoneRadii.ContainsKey(n) ? (IReadOnlyList<Vector3>)[] : skeleton.Points[j])];
-        (Vector3 centre, Vector3 half) = ReducedModelBuilder.TrunkBox(joints, trunk, radii, contact0, trunkPoints);
+        bool skinned = trunk.Any(j => trunkPoints[j].Count > 0);
+        int[] boxed = [.. trunk.Where(j => !skinned || trunkPoints[j].Count > 0 || spec.BoneRadii.ContainsKey(names[j]))];
+        (Vector3 centre, Vector3 half) = ReducedModelBuilder.TrunkBox(joints, boxed, radii, contact0, trunkPoints);
         Rig rig = Named(() => new Rig(joints, -centre));
         var rigLimbs = new List<RigLimb>();
         foreach (LimbSpec limb in spec.Limbs)

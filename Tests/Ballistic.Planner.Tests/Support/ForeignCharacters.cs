@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class ForeignCharacters
 {
-    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog", "tailed", "rat" or "spider".</summary>
+    /// <summary>The character called <paramref name="name"/>: "human", "human-zup", "dog", "tailed", "rat", "spider" or "panda".</summary>
     public static ForeignCharacter Named(string name) => name switch
     {
         "human" => Human(zUpScene: false),
@@ -22,6 +22,7 @@ internal static class ForeignCharacters
         "tailed" => TailedQuadruped(),
         "rat" => Rat(),
         "spider" => Spider(),
+        "panda" => Panda(),
         _ => throw new ArgumentException($"no foreign character '{name}'", nameof(name)),
     };
 
@@ -293,5 +294,63 @@ internal static class ForeignCharacters
 
         string spec = "{\"schema\":\"ballistic.character/1\",\"name\":\"spider\",\"limbs\":{" + string.Join(",", limbs) + "}}";
         return new ForeignCharacter("spider", r, spec, Quaternion.Identity, "cephalothorax", "cephalothorax", "abdomen", "cephalothorax", ["cephalothorax", "abdomen"], [.. feet], External: false, ByteWeights: false);
+    }
+
+    /// <summary>
+    /// A stocky quadruped 1.2 m long rigged as Rigify and similar tools rig one (issue 24's panda): a root bone on the
+    /// ground carrying the torso and, beside it, a foot IK helper and a knee pole for each leg (bones with no skin,
+    /// outside the legs' chains), bone names with ".L"/".R", and modelled mid-stride: the left front and right hind
+    /// feet a step ahead of their hips, the other two a step behind, so its rest pose (its default contact pose) is not
+    /// symmetric. Its limbs-only spec names the legs from thigh to foot and nothing else.
+    /// </summary>
+    public static ForeignCharacter Panda()
+    {
+        var r = new ForeignRig();
+        int root = r.BoneAt("root", -1, -1, new(0, 0, -0.3f), new(0, 0, 0.1f));
+        int torso = r.BoneAt("torso", root, -1, new(0, 0.6f, -0.35f), new(0, 0.62f, 0f));
+        int chest = r.BoneAt("chest", torso, -1, new(0, 0.62f, 0f), new(0, 0.64f, 0.35f));
+        int neck = r.BoneAt("neck", chest, -1, new(0, 0.64f, 0.35f), new(0, 0.72f, 0.48f));
+        int head = r.BoneAt("head", neck, -1, new(0, 0.72f, 0.48f), new(0, 0.74f, 0.7f));
+        r.Box(torso, -1, new(-0.24f, 0.42f, -0.5f), new(0.24f, 0.8f, 0f));
+        r.Box(chest, -1, new(-0.24f, 0.44f, 0f), new(0.24f, 0.82f, 0.38f), torso);
+        r.Box(neck, -1, new(-0.1f, 0.6f, 0.36f), new(0.1f, 0.8f, 0.5f), chest);
+        r.Box(head, -1, new(-0.15f, 0.6f, 0.48f), new(0.15f, 0.88f, 0.74f));
+        var feet = new List<ForeignFoot>();
+        foreach ((string end, float z) in new[] { ("front", 0.25f), ("hind", -0.38f) })
+        {
+            foreach ((string side, float s) in new[] { ("L", 1f), ("R", -1f) })
+            {
+                // Mid-stride: the left front and the right hind foot ahead, the others behind.
+                float stride = (end == "front") == (s > 0f) ? 0.16f : -0.16f;
+                float x = 0.16f * s;
+                int parent = end == "front" ? chest : torso;
+                string thighName = end == "front" ? "upper_arm" : "thigh";
+                string shinName = end == "front" ? "forearm" : "shin";
+                string footName = end == "front" ? "hand" : "foot";
+                Vector3 hip = new(x, 0.5f, z);
+                Vector3 knee = new(x, 0.27f, z + (0.45f * stride) + (end == "front" ? -0.02f : 0.05f));
+                Vector3 ankle = new(x, 0.06f, z + stride);
+                Vector3 toe = new(x, 0.02f, z + stride + 0.14f);
+                int thigh = r.BoneAt($"{thighName}.{side}", parent, -1, hip, knee);
+                int shin = r.BoneAt($"{shinName}.{side}", thigh, -1, knee, ankle);
+                int foot = r.BoneAt($"{footName}.{side}", shin, -1, ankle, toe);
+                r.Box(thigh, thigh, new(-0.07f, 0f, -0.07f), new(0.07f, Vector3.Distance(hip, knee), 0.07f), parent, 0.2f);
+                r.Box(shin, shin, new(-0.055f, 0f, -0.055f), new(0.055f, Vector3.Distance(knee, ankle), 0.055f), thigh);
+                r.Box(foot, -1, new(x - 0.07f, 0f, z + stride - 0.06f), new(x + 0.07f, 0.08f, z + stride + 0.16f), shin, 0.2f);
+                r.BoneAt($"{footName}_ik.{side}", root, -1, ankle, ankle + new Vector3(0f, 0f, 0.12f));
+                r.BoneAt($"{(end == "front" ? "elbow" : "knee")}_pole.{side}", root, -1, knee + new Vector3(0f, 0f, end == "front" ? -0.4f : 0.4f), knee + new Vector3(0f, 0f, end == "front" ? -0.5f : 0.5f));
+                feet.Add(new ForeignFoot($"{end}_{side}", [$"{footName}.{side}"]));
+            }
+        }
+
+        string spec = """
+            {"schema":"ballistic.character/1","name":"panda",
+             "limbs":{
+               "front_L":{"rootBone":"upper_arm.L","effectorBone":"hand.L"},
+               "front_R":{"rootBone":"upper_arm.R","effectorBone":"hand.R"},
+               "hind_L":{"rootBone":"thigh.L","effectorBone":"foot.L"},
+               "hind_R":{"rootBone":"thigh.R","effectorBone":"foot.R"}}}
+            """;
+        return new ForeignCharacter("panda", r, spec, Quaternion.Identity, "root", "head", "torso", "head", ["torso", "chest"], [.. feet], External: false, ByteWeights: false);
     }
 }
