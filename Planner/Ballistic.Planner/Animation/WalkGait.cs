@@ -2477,13 +2477,25 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// Whether <paramref name="effector"/> is within <see cref="Touch"/> of <paramref name="contact"/> (if any) on
-        /// short legs that step faster than <see cref="MinHalfCycle"/>: a rat's foot lifts a millimetre or two in its
+        /// The contact (<paramref name="contact0"/> left, else <paramref name="contact1"/> reached) within
+        /// <see cref="Touch"/> of <paramref name="limb"/>'s effector as last solved, or <c>null</c>; only on short
+        /// legs that step faster than <see cref="MinHalfCycle"/> (always <c>null</c> otherwise, nothing computed): a rat's foot lifts a millimetre or two in its
         /// swing's first fine step, and its bones still touch the ground by its contact. Full-size legs lift theirs up
         /// to <see cref="FirstMove"/> at once and do without it (allowed there too, it changed which lift their swings
         /// took, and the desert skeleton's walks cruised lower: 0.796 L on one).
         /// </summary>
-        private bool Touching(Vector3 effector, Vector3? contact) => _halfCycle < MinHalfCycle && contact is { } c && Vector3.Distance(effector, c) <= Touch;
+        private Vector3? Touched(RigLimb limb, Vector3? contact0, Vector3? contact1)
+        {
+            if (_halfCycle >= MinHalfCycle)
+            {
+                return null;
+            }
+
+            Vector3 effector = limb.EffectorPosition(_positions, _rotations);
+            return contact0 is { } c0 && Vector3.Distance(effector, c0) <= Touch ? c0
+                : contact1 is { } c1 && Vector3.Distance(effector, c1) <= Touch ? c1
+                : null;
+        }
 
         /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
@@ -2613,10 +2625,10 @@ internal sealed class WalkGait
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
                     // An effector still or already within Touch of its contact touches it (a swing's first and last
                     // moments count in the contact phases around it): on short legs its bones may touch the ground
-                    // there, as on the contact itself (Touching).
-                    Vector3 effector = limb.EffectorPosition(_positions, _rotations);
-                    Vector3? near = i == a ? contact0 : i == b ? contact1 : Touching(effector, contact0) ? contact0 : Touching(effector, contact1) ? contact1 : null;
-                    Vector3? nearBefore = i - 1 == a ? contact0 : i == b ? contact1 : Touching(effector, contact0) ? contact0 : Touching(effector, contact1) ? contact1 : null;
+                    // there, as on the contact itself (Touched).
+                    Vector3? touched = Touched(limb, contact0, contact1);
+                    Vector3? near = i == a ? contact0 : i == b ? contact1 : touched;
+                    Vector3? nearBefore = i - 1 == a ? contact0 : i == b ? contact1 : touched;
                     if (_gait._collision.LimbCollides(limb, _positions, _rotations, near))
                     {
                         failures++;

@@ -416,23 +416,18 @@ public static class CharacterSpecFile
             spec.TakeoffSpeedMax ?? 8f,
             spec.LandingSpeedMax ?? 12f,
             spec.Friction ?? 0.5f));
-        if (trunk.Any(j => trunkPoints[j].Count > 0))
-        {
-            // Derive bounds the trunk joints' spheres; the trunk box here bounds the skinned vertices.
-            reduced = new ReducedCharacter(reduced.Name, half, reduced.Limbs, reduced.RequiredContacts, reduced.TakeoffSpeedMax, reduced.LandingSpeedMax, reduced.Friction)
-            {
-                StanceLift = ReducedModelBuilder.StanceLift(model, reduced.RequiredContacts, half),
-                Walking = reduced.Walking,
-            };
-        }
 
-        float size = JumpSpeedScale(reduced.StanceLift.Max);
-        if (size < 1f && (spec.TakeoffSpeedMax is null || spec.LandingSpeedMax is null))
+        // Derive bounds the trunk joints' spheres; where the trunk is skinned its box bounds the vertices instead.
+        // Speeds the spec does not give scale with the rig's size (a rat does not jump like a person).
+        HeightRange lift = skinned ? ReducedModelBuilder.StanceLift(model, reduced.RequiredContacts, half) : reduced.StanceLift;
+        float size = JumpSpeedScale(lift.Max);
+        float takeoff = spec.TakeoffSpeedMax ?? (8f * size);
+        float landing = spec.LandingSpeedMax ?? (12f * size);
+        if (skinned || takeoff != reduced.TakeoffSpeedMax || landing != reduced.LandingSpeedMax)
         {
-            // Speeds the spec does not give scale with the rig's size (a rat does not jump like a person).
-            reduced = new ReducedCharacter(reduced.Name, reduced.TrunkHalfExtents, reduced.Limbs, reduced.RequiredContacts, spec.TakeoffSpeedMax ?? (8f * size), spec.LandingSpeedMax ?? (12f * size), reduced.Friction)
+            reduced = new ReducedCharacter(reduced.Name, skinned ? half : reduced.TrunkHalfExtents, reduced.Limbs, reduced.RequiredContacts, takeoff, landing, reduced.Friction)
             {
-                StanceLift = reduced.StanceLift,
+                StanceLift = lift,
                 Walking = reduced.Walking,
             };
         }

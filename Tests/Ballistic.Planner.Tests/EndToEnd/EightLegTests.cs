@@ -1,5 +1,4 @@
 using System.Numerics;
-using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
@@ -72,11 +71,10 @@ public sealed class EightLegTests
     {
         (CharacterModel model, ReducedCharacter reduced) = Spider.Value;
         Sweep.Setup setup = Sweep.Prepare(name, level, model, reduced);
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, from, to);
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
-        AuditReport report = PlanAudit.Check($"spider on {name}", setup.Scene, from, to, plan.Result, plan.Animation);
         Assert.That(report.FullyRight, Is.True, report.ToString());
-        AnimatorEye.Look look = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(plan.Animation!), model).Measure(plan.Animation!, setup.Scene);
+        AnimatorEye.Look look = report.Look!;
         TestContext.Out.WriteLine($"{string.Join(" ", plan.Result.Moves.Select(m => m.GetType().Name))}: " + string.Join("; ", look.All.Select(c => $"{c.Name}: {c.Criterion}")));
         return (plan, look);
     }

@@ -1,5 +1,4 @@
 using System.Numerics;
-using Ballistic.Authoring.Animation;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
@@ -63,17 +62,16 @@ public sealed class SmallQuadrupedTests
         Sweep.Setup setup = Floor.Value;
         Vector3 from = new(x0, 0f, z0);
         Vector3 to = new(x1, 0f, z1);
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+        (AnimatedPlan plan, AuditReport report, AnimatorEye? seen) = Sweep.Plan(setup, from, to);
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         Assert.That(plan.Rejected, Is.Empty, "no walk set aside");
         Assert.That(plan.Result.Moves.OfType<Jump>(), Is.Empty, "no jump across flat floor");
         Assert.That(plan.Result.Moves.OfType<Walk>().Count(), Is.EqualTo(1));
 
         JumpAnimation animation = plan.Animation!;
-        AuditReport report = PlanAudit.Check("rat on the floor", setup.Scene, from, to, plan.Result, animation);
         Assert.That(report.FullyRight, Is.True, report.ToString());
-        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), setup.Model);
-        AnimatorEye.Look look = eye.Measure(animation, setup.Scene);
+        AnimatorEye eye = seen!;
+        AnimatorEye.Look look = report.Look!;
         foreach ((string name, AnimatorEye.Criterion criterion) in look.All)
         {
             Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
@@ -125,7 +123,7 @@ public sealed class SmallQuadrupedTests
             .AddFloor(-1f, -1f, 1f, 1f, 0f)
             .AddBox(new Vector3(-0.1f, 0f, -1f), new Vector3(0.1f, 0.08f, 1f))
             .Build(), Rat.Value.Model, Rat.Value.Reduced);
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(new Vector3(-0.5f, 0f, 0f), new Vector3(0.5f, 0f, 0f), new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-0.5f, 0f, 0f), new Vector3(0.5f, 0f, 0f));
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         float reach = setup.Scene.Character.TakeoffSpeedMax * setup.Scene.Character.TakeoffSpeedMax / 9.81f;
         Assert.That(reach, Is.LessThan(0.35f));
@@ -136,7 +134,6 @@ public sealed class SmallQuadrupedTests
             Assert.That(new Vector2(d.X, d.Z).Length(), Is.LessThanOrEqualTo(reach + 0.1f), $"jump {jump.From.Id}→{jump.To.Id}");
         }
 
-        AuditReport report = PlanAudit.Check("rat over a rail", setup.Scene, new Vector3(-0.5f, 0f, 0f), new Vector3(0.5f, 0f, 0f), plan.Result, plan.Animation);
         Assert.That(report.FullyRight, Is.True, report.ToString());
     }
 }

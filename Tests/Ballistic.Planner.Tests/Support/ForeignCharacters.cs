@@ -284,7 +284,7 @@ internal static class ForeignCharacters
                 int tarsus = r.BoneAt($"leg_{leg}_tarsus", tibia, -1, p2, p3);
                 foreach ((int bone, float length, float radius, int blend) in new[] { (femur, Vector3.Distance(p0, p1), 0.03f, thorax), (tibia, Vector3.Distance(p1, p2), 0.025f, femur), (tarsus, Vector3.Distance(p2, p3), 0.018f, tibia) })
                 {
-                    r.Box(bone, bone, new(-radius, 0f, -radius), new(radius, length, radius), blend, 0.2f);
+                    r.BoxAlong(bone, length, radius, blend, 0.2f);
                 }
 
                 feet.Add(new ForeignFoot(leg, [$"leg_{leg}_tarsus"]));
@@ -334,8 +334,8 @@ internal static class ForeignCharacters
                 int thigh = r.BoneAt($"{thighName}.{side}", parent, -1, hip, knee);
                 int shin = r.BoneAt($"{shinName}.{side}", thigh, -1, knee, ankle);
                 int foot = r.BoneAt($"{footName}.{side}", shin, -1, ankle, toe);
-                r.Box(thigh, thigh, new(-0.07f, 0f, -0.07f), new(0.07f, Vector3.Distance(hip, knee), 0.07f), parent, 0.2f);
-                r.Box(shin, shin, new(-0.055f, 0f, -0.055f), new(0.055f, Vector3.Distance(knee, ankle), 0.055f), thigh);
+                r.BoxAlong(thigh, Vector3.Distance(hip, knee), 0.07f, parent, 0.2f);
+                r.BoxAlong(shin, Vector3.Distance(knee, ankle), 0.055f, thigh);
                 r.Box(foot, -1, new(x - 0.07f, 0f, z + stride - 0.06f), new(x + 0.07f, 0.08f, z + stride + 0.16f), shin, 0.2f);
                 r.BoneAt($"{footName}_ik.{side}", root, -1, ankle, ankle + new Vector3(0f, 0f, 0.12f));
                 r.BoneAt($"{(end == "front" ? "elbow" : "knee")}_pole.{side}", root, -1, knee + new Vector3(0f, 0f, end == "front" ? -0.4f : 0.4f), knee + new Vector3(0f, 0f, end == "front" ? -0.5f : 0.5f));

@@ -100,6 +100,10 @@ internal sealed class ForeignRig
         }
     }
 
+    /// <summary>A box along <paramref name="bone"/> (in its own frame: its +Y from its head, <paramref name="length"/> long, <paramref name="radius"/> either side), as <see cref="Box"/>.</summary>
+    public void BoxAlong(int bone, float length, float radius, int blend = -1, float blendWeight = 0.3f) =>
+        Box(bone, bone, new Vector3(-radius, 0f, -radius), new Vector3(radius, length, radius), blend, blendWeight);
+
     /// <summary>Scene positions of the vertices whose main bone is one of <paramref name="bones"/>.</summary>
     public Vector3[] VerticesOf(params int[] bones) => [.. _vertices.Where(v => bones.Contains(v.Bone)).Select(v => v.Position)];
 

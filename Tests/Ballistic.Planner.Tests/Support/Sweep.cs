@@ -47,21 +47,30 @@ internal static class Sweep
     private static Setup Prepare(string levelName, PlanningScene scene, CharacterModel model) =>
         new(levelName, scene, model, new AnimatedPlanner(scene, new JumpAnimator(scene, model)));
 
+    /// <summary>A request planned and animated: the plan, its audit (with the eye's look when exact) and the eye that read its GLB (<c>null</c> unless exact).</summary>
+    public sealed record Planned(AnimatedPlan Plan, AuditReport Report, AnimatorEye? Eye);
+
     /// <summary>Plans (walking and jumping unless <paramref name="locomotion"/> says otherwise), animates and audits one request.</summary>
-    public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
+    public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump) =>
+        Plan(setup, from, to, seed, maxNodes, locomotion).Report;
+
+    /// <summary>As <see cref="Run"/>, keeping the plan and the eye as well as the audit.</summary>
+    public static Planned Plan(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
     {
         string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
         PlanningScene scene = setup.Scene;
         (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Locomotion = locomotion });
         AuditReport report = PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
+        AnimatorEye? eye = null;
         if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
         {
             byte[] glb = AnimatedGlbWriter.ToBytes(animation);
-            report.Look = AnimatorEye.Read(glb, setup.Model).Measure(animation, scene);
+            eye = AnimatorEye.Read(glb, setup.Model);
+            report.Look = eye.Measure(animation, scene);
             Dump(setup, name, glb, animation);
         }
 
-        return report;
+        return new Planned(plan, report, eye);
     }
 
     /// <summary>
