@@ -129,6 +129,9 @@ internal sealed class WalkGait
     /// </summary>
     private const float LiftRise = 0.25f;
 
+    /// <summary>Half a sole's length, as a share of the rest leg (0.15: a 27 cm foot for a 0.9 m leg), fitted wholly on a stair's tread (<see cref="Run"/>).</summary>
+    private const float HalfSole = 0.15f;
+
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
 
@@ -1117,7 +1120,7 @@ internal sealed class WalkGait
             var points = new List<(int Limb, Vector3 Point)>();
             for (int i = 0; i <= _steps; i++)
             {
-                float w = Math.Clamp(_walk.SpeedAt(Time(i)) / _walk.Speed, 0f, 1f);
+                float w = Cruising(Time(i));
                 if (w <= 0f)
                 {
                     continue;
@@ -1265,7 +1268,7 @@ internal sealed class WalkGait
                 }
 
                 float u = Math.Clamp((t - _times[half]) / span, 0f, 1f);
-                float w = Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
+                float w = Cruising(t);
                 float deficit = MathF.Max(0f, dip - swings[i]);
                 raw[i] = MathF.Min(raw[i], lifted[i].High - (w * deficit * (1f - MathF.Sin(MathF.PI * u))));
             }
@@ -1399,7 +1402,7 @@ internal sealed class WalkGait
                 float behind = -ToLocal(_roots[i], _positions[leg.EffectorJoint]).Z + ToLocal(_roots[i], _positions[leg.RootJoint]).Z;
                 float share = Math.Clamp(behind / MathF.Max(0.5f * _step, 1e-3f), -1f, 1f);
                 float fade = MathF.Min(1f, MathF.Min(i - from, to - i) / (float)ramp);
-                float angle = ArmSwing * share * Smooth(fade) * Math.Clamp(_walk.SpeedAt(Time(i)) / _walk.Speed, 0f, 1f);
+                float angle = ArmSwing * share * Smooth(fade) * Cruising(Time(i));
                 Vector3 left = Vector3.Transform(Vector3.UnitX, _roots[i].Rotation);
                 Vector3 forward = Vector3.Transform(Vector3.UnitZ, _roots[i].Rotation);
 
@@ -1836,7 +1839,7 @@ internal sealed class WalkGait
                 RootPose pose = _walk.PoseAt(duration * i / samples);
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
-                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples);
+                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples) * _walk.PaceAt(_walk.DistanceAt(duration * (i - 0.5f) / samples));
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
                 previous = pose;
@@ -1897,8 +1900,11 @@ internal sealed class WalkGait
         private float Shortened(float time) =>
             _shortAt.Length == 0 ? 1f : float.Lerp(_shortShare, 1f, Clear(time, _shortAt, _shortSpan * StepTime, StepTime));
 
-        /// <summary>The walk's speed at <paramref name="t"/> seconds over its walking speed, 0 to 1 (0 outside the walk).</summary>
-        private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / _walk.Speed, 0f, 1f);
+        /// <summary>
+        /// The walk's speed at <paramref name="t"/> seconds over its walking speed at its pace there, 0 to 1 (0 outside
+        /// the walk): how far it has sped up from rest or slowed toward it, not how it slows on stairs (<see cref="Walk.PaceAt"/>).
+        /// </summary>
+        private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / (_walk.Speed * _walk.PaceAt(_walk.DistanceAt(t))), 0f, 1f);
 
         /// <summary>The time (seconds into the walk) at which the trunk's motion has cost <paramref name="c"/> half-cycles (<see cref="Boundaries"/>).</summary>
         private float TimeAtCost(float c)
@@ -2082,7 +2088,8 @@ internal sealed class WalkGait
         /// <summary>
         /// The foothold of foot <paramref name="l"/> in half-cycle <paramref name="k"/>, held from fine step
         /// <paramref name="from"/> to <paramref name="to"/>: its centred stance offset at the trunk pose mid-half-cycle,
-        /// dropped on the ground, moved toward the path's centre line until the ground is there and the leg holds it.
+        /// dropped on the ground, moved toward the path's centre line until the ground is there and the leg holds it;
+        /// on a stair's tread, moved along the walk first until the whole sole lies on the tread (<see cref="OnTread"/>).
         /// </summary>
         private Holding Foothold(int l, int k, int from, int to)
         {
@@ -2130,6 +2137,11 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
+                if (OnTread(hit.Point, heading) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                {
+                    return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
+                }
+
                 if (CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
                 {
                     return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
@@ -2144,6 +2156,50 @@ internal sealed class WalkGait
 
             Fail(l, "finds no ground to step on", mid);
             return new Holding(from, to, new Vector3(nominal.X, ground.Y, nominal.Z), Vector3.UnitY, Settle: false);
+        }
+
+        /// <summary>
+        /// Where a foot set down at <paramref name="point"/> (world metres, on the level) lies wholly on the flat it is
+        /// on, along <paramref name="heading"/>: a stair tread, a step's top. Null where the ground is even within
+        /// <see cref="HalfSole"/> of the rest leg either way (the foot fits where it is), or the flat is too short for
+        /// the sole (the foot is then kept where it was); otherwise the point moved along the walk to the flat's middle,
+        /// or just far enough for the sole to clear its riser and its nosing, with the ground's normal there.
+        /// </summary>
+        private (Vector3 Point, Vector3 Normal)? OnTread(Vector3 point, Vector3 heading)
+        {
+            float half = HalfSole * _gait._restLeg;
+            float step = MathF.Max(0.01f, 0.1f * half);
+            float rise = MathF.Max(0.02f, 0.5f * _stepHeight);
+            float? Height(Vector3 p) =>
+                _gait._scene.Bvh.Raycast(p + (Vector3.UnitY * (2f * rise)), -Vector3.UnitY, 4f * rise, out RayHit h) && h.Normal.Y > 0f ? h.Point.Y : null;
+            bool Flat(float along) => Height(point + (heading * along)) is float y && MathF.Abs(y - point.Y) <= rise;
+            if (Flat(half) && Flat(-half))
+            {
+                return null;
+            }
+
+            // The flat's extent along the walk, from the point, in steps of a tenth of the half sole.
+            float front = 0f;
+            while (front < 3f * half && Flat(front + step))
+            {
+                front += step;
+            }
+
+            float back = 0f;
+            while (back < 3f * half && Flat(-(back + step)))
+            {
+                back += step;
+            }
+
+            if (front + back < 2f * half)
+            {
+                return null;
+            }
+
+            float shift = front < half ? front - half : back < half ? half - back : 0f;
+            Vector3 column = point + (heading * shift);
+            return _gait._scene.Bvh.Raycast(column + (Vector3.UnitY * (2f * rise)), -Vector3.UnitY, 4f * rise, out RayHit hit) && hit.Normal.Y > 0f
+                ? (hit.Point, hit.Normal) : null;
         }
 
         /// <summary>

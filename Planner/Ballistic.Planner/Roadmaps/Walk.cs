@@ -11,7 +11,9 @@ namespace Ballistic.Planner.Roadmaps;
 /// the trunk first turns in place from the first stance's orientation to the walking heading (at
 /// <see cref="TurnRate"/> on average, the character's <see cref="WalkingLimits.TurnRate"/>, in <see cref="MinTurnTime"/> at least), speeds up from rest to <see cref="Speed"/> over <see cref="RampTime"/>, walks,
 /// slows down to rest over <see cref="RampTime"/> (a shorter walk never reaches full speed), and turns in place to
-/// the second stance's orientation. Immutable.
+/// the second stance's orientation. On stepped ground (stairs, a kerb: rises steeper than the walker's
+/// <see cref="MaxGrade"/>) it slows so that the trunk climbs or descends the steps no faster than
+/// <see cref="ClimbShare"/> of the walking speed, as people slow on stairs. Immutable.
 /// </summary>
 public sealed record Walk : Move
 {
@@ -23,6 +25,17 @@ public sealed record Walk : Move
 
     /// <summary>Time (seconds) the trunk takes to speed up from rest to the walking speed, and to slow down to rest.</summary>
     public const float RampTime = 0.5f;
+
+    /// <summary>
+    /// Most the trunk climbs or descends steps along a walk, as a share of the walking speed (0.25: on stairs with
+    /// 17 cm risers and 30 cm treads a 1.5 m/s walk goes at about 0.75 m/s along the path, and the gait's steps
+    /// shorten by as much: a tread a step at the cadence of the level). The steps' rise is measured over
+    /// <see cref="ClimbWindow"/> of path either way; slopes the walker walks (no steeper than <see cref="MaxGrade"/>) do not slow it.
+    /// </summary>
+    public const float ClimbShare = 0.25f;
+
+    /// <summary>Path distance (metres) either way over which the steps' rise that slows a walk (<see cref="ClimbShare"/>) is measured: two treads and risers of a stair.</summary>
+    public const float ClimbWindow = 0.5f;
 
     private readonly Vector3[] _path;
     private readonly float[] _distances;
@@ -38,6 +51,21 @@ public sealed record Walk : Move
     private readonly float _cruise;
     private readonly float _ramp;
 
+    /// <summary>
+    /// Paced distance (metres walked at full speed in the same time) at each path point, where the walk slows
+    /// somewhere (<see cref="ClimbShare"/>); <c>null</c> where it never does (then it is <see cref="_distances"/>).
+    /// </summary>
+    private readonly float[]? _paced;
+
+    /// <summary>The steps' summed rise (metres) up to each path point (<see cref="Stepped"/>); <c>null</c> where the path has no step.</summary>
+    private readonly float[]? _stepped;
+
+    /// <summary>Finds the segment under a paced distance in <see cref="_paced"/>.</summary>
+    private readonly SortedLookup? _pacedLookup;
+
+    /// <summary>Length walked at full speed in the walk's time at speed (metres): <see cref="Length"/> unless it slows.</summary>
+    private readonly float _pacedLength;
+
     /// <summary>Creates a walk.</summary>
     /// <param name="from">The stance walked from.</param>
     /// <param name="to">The stance walked to.</param>
@@ -48,8 +76,13 @@ public sealed record Walk : Move
     /// (their ground points lie on <paramref name="path"/>); <c>null</c> or empty for a walk straight from one stance to the next.
     /// </param>
     /// <param name="turnRate">Average rate at which the trunk turns in place at either end, radians per second (positive).</param>
-    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, or a speed or turn rate not positive.</exception>
-    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate)
+    /// <param name="maxGrade">
+    /// The walker's steepest grade (rise per metre across, <see cref="WalkingLimits.MaxGrade"/>): a path segment
+    /// steeper than that is a step (a stair's riser, a kerb), where the walk slows (<see cref="ClimbShare"/>). By
+    /// default none: the walk never slows.
+    /// </param>
+    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, or a negative grade.</exception>
+    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity)
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
@@ -67,6 +100,11 @@ public sealed record Walk : Move
         if (!(turnRate > 0f) || !float.IsFinite(turnRate))
         {
             throw new ArgumentException($"The turn rate must be positive, not {turnRate}.", nameof(turnRate));
+        }
+
+        if (!(maxGrade >= 0f))
+        {
+            throw new ArgumentException($"The steepest grade must not be negative, not {maxGrade}.", nameof(maxGrade));
         }
 
         _path = [.. path];
@@ -87,8 +125,13 @@ public sealed record Walk : Move
         Via = via is null ? [] : [.. via];
         Speed = speed;
         TurnRate = turnRate;
+        MaxGrade = maxGrade;
         Length = _distances[^1];
         _lookup = new SortedLookup(_distances);
+        _stepped = Stepped();
+        _paced = Paced(_distances);
+        _pacedLookup = _paced is null ? null : new SortedLookup(_paced);
+        _pacedLength = _paced is null ? Length : _paced[^1];
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
         _startHeading = Upright(HeadingAt(0f));
@@ -98,11 +141,130 @@ public sealed record Walk : Move
         _startUpright = StoodUp(StartOffset, from.Pose.Rotation);
         _endUpright = StoodUp(EndOffset, to.Pose.Rotation);
 
-        // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway.
+        // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway. In
+        // paced distance: where the walk slows, the same time covers less of the path.
         _acceleration = speed / RampTime;
-        _cruise = Length >= speed * RampTime ? speed : MathF.Sqrt(_acceleration * Length);
+        _cruise = _pacedLength >= speed * RampTime ? speed : MathF.Sqrt(_acceleration * _pacedLength);
         _ramp = _cruise / _acceleration;
-        WalkTime = _cruise >= speed ? (Length / speed) + RampTime : 2f * _ramp;
+        WalkTime = _cruise >= speed ? (_pacedLength / speed) + RampTime : 2f * _ramp;
+    }
+
+    /// <summary>
+    /// The paced distance at each of the path points at <paramref name="distances"/> (metres along the path): each
+    /// segment counted 1 / pace times, its pace the most of 1 and <see cref="ClimbShare"/> over the steps' grade (the
+    /// steps' net rise or fall, segments steeper than <see cref="MaxGrade"/>, over the path's length) within
+    /// <see cref="ClimbWindow"/> either way of its middle; <c>null</c> when every pace is 1.
+    /// </summary>
+    private float[]? Paced(float[] distances)
+    {
+        if (_stepped is null)
+        {
+            return null;
+        }
+
+        float[]? paced = null;
+        for (int i = 1; i < distances.Length; i++)
+        {
+            float segment = distances[i] - distances[i - 1];
+            float pace = Pace(0.5f * (distances[i - 1] + distances[i]));
+            if (pace < 1f && paced is null)
+            {
+                paced = new float[distances.Length];
+                Array.Copy(distances, paced, i);
+            }
+
+            if (paced is not null)
+            {
+                paced[i] = paced[i - 1] + (segment / pace);
+            }
+        }
+
+        return paced;
+    }
+
+    /// <summary>The pace (0 to 1, a share of the walking speed) at <paramref name="distance"/> metres along the path (<see cref="ClimbShare"/>).</summary>
+    private float Pace(float distance)
+    {
+        float a = MathF.Max(0f, distance - ClimbWindow);
+        float b = MathF.Min(Length, distance + ClimbWindow);
+
+        // Over the whole window, also near either end: one step down off a crate as the walk starts is no flight of stairs.
+        float grade = MathF.Abs(SteppedAt(b) - SteppedAt(a)) / (2f * ClimbWindow);
+        return grade > ClimbShare ? ClimbShare / grade : 1f;
+    }
+
+    /// <summary>The steps' summed rise (metres) up to <paramref name="distance"/> metres along the path, interpolated within a segment.</summary>
+    private float SteppedAt(float distance)
+    {
+        int i = _lookup.FirstAtOrAbove(distance);
+        if (i == 0)
+        {
+            return 0f;
+        }
+
+        float span = _distances[i] - _distances[i - 1];
+        return span > 0f ? float.Lerp(_stepped![i - 1], _stepped[i], Math.Clamp((distance - _distances[i - 1]) / span, 0f, 1f)) : _stepped![i];
+    }
+
+    /// <summary>
+    /// The steps' rise (metres, up positive, down negative: segments steeper than <see cref="MaxGrade"/>) summed up to
+    /// each path point; <c>null</c> where the path has no step. A flight of stairs adds up, a crate stepped onto and
+    /// off nets nothing.
+    /// </summary>
+    private float[]? Stepped()
+    {
+        if (!float.IsFinite(MaxGrade))
+        {
+            return null;
+        }
+
+        var stepped = new float[_path.Length];
+        bool any = false;
+        for (int i = 1; i < _path.Length; i++)
+        {
+            Vector3 d = _path[i] - _path[i - 1];
+            float rise = MathF.Abs(d.Y);
+            stepped[i] = stepped[i - 1] + (rise > (MaxGrade * Horizontal(d).Length()) + 1e-3f ? d.Y : 0f);
+            any |= stepped[i] != stepped[i - 1];
+        }
+
+        return any ? stepped : null;
+    }
+
+    /// <summary>The distance along the path (metres) at paced distance <paramref name="paced"/> (clamped).</summary>
+    private float FromPaced(float paced)
+    {
+        if (_paced is null)
+        {
+            return paced;
+        }
+
+        int i = _pacedLookup!.FirstAtOrAbove(paced);
+        if (i == 0 || _paced[i] == paced)
+        {
+            return _distances[i];
+        }
+
+        float span = _paced[i] - _paced[i - 1];
+        return span > 0f ? float.Lerp(_distances[i - 1], _distances[i], Math.Clamp((paced - _paced[i - 1]) / span, 0f, 1f)) : _distances[i];
+    }
+
+    /// <summary>The paced distance (metres) at <paramref name="distance"/> metres along the path (clamped).</summary>
+    private float ToPaced(float distance)
+    {
+        if (_paced is null)
+        {
+            return distance;
+        }
+
+        int i = _lookup.FirstAtOrAbove(distance);
+        if (i == 0 || _distances[i] == distance)
+        {
+            return _paced[i];
+        }
+
+        float span = _distances[i] - _distances[i - 1];
+        return span > 0f ? float.Lerp(_paced[i - 1], _paced[i], Math.Clamp((distance - _distances[i - 1]) / span, 0f, 1f)) : _paced[i];
     }
 
 
@@ -140,6 +302,9 @@ public sealed record Walk : Move
     /// <summary>Average rate at which the trunk turns in place at either end, radians per second (<see cref="WalkingLimits.TurnRate"/>).</summary>
     public float TurnRate { get; }
 
+    /// <summary>The walker's steepest grade (rise per metre across): steeper path segments are steps, where the walk slows (<see cref="ClimbShare"/>); infinite where it never does.</summary>
+    public float MaxGrade { get; }
+
     /// <summary>Length of the ground path, metres (3D, along the polyline).</summary>
     public float Length { get; }
 
@@ -149,7 +314,7 @@ public sealed record Walk : Move
     /// <summary>Seconds the trunk turns in place at the start, from the first stance's orientation to the walking heading.</summary>
     public float StartTurn { get; }
 
-    /// <summary>Seconds the trunk moves along the path, speeding up and slowing down included (length over speed plus <see cref="RampTime"/> for a walk that reaches full speed).</summary>
+    /// <summary>Seconds the trunk moves along the path, speeding up and slowing down included (length over speed plus <see cref="RampTime"/> for a walk that reaches full speed, longer where it slows on steep ground: <see cref="ClimbShare"/>).</summary>
     public float WalkTime { get; }
 
     /// <summary>Seconds the trunk turns in place at the end, from the walking heading to the second stance's orientation.</summary>
@@ -183,9 +348,9 @@ public sealed record Walk : Move
 
         float left = WalkTime - t;
         float d = t <= _ramp ? 0.5f * _acceleration * t * t
-            : left <= _ramp ? Length - (0.5f * _acceleration * left * left)
+            : left <= _ramp ? _pacedLength - (0.5f * _acceleration * left * left)
             : (0.5f * _cruise * _ramp) + (_cruise * (t - _ramp));
-        return Math.Clamp(d, 0f, Length);
+        return FromPaced(Math.Clamp(d, 0f, _pacedLength));
     }
 
     /// <summary>The time (seconds after the walk starts) at which the trunk has walked <paramref name="distance"/> metres along the path (clamped): the inverse of <see cref="DistanceAt"/>, 0 for no distance.</summary>
@@ -201,9 +366,10 @@ public sealed record Walk : Move
             return StartTurn + WalkTime;
         }
 
+        distance = ToPaced(distance);
         float rampDistance = 0.5f * _acceleration * _ramp * _ramp;
         float t = distance <= rampDistance ? MathF.Sqrt(2f * distance / _acceleration)
-            : distance >= Length - rampDistance ? WalkTime - MathF.Sqrt(2f * (Length - distance) / _acceleration)
+            : distance >= _pacedLength - rampDistance ? WalkTime - MathF.Sqrt(2f * (_pacedLength - distance) / _acceleration)
             : _ramp + ((distance - rampDistance) / _cruise);
         return StartTurn + Math.Clamp(t, 0f, WalkTime);
     }
@@ -217,7 +383,31 @@ public sealed record Walk : Move
             return 0f;
         }
 
-        return MathF.Min(_cruise, _acceleration * MathF.Min(t, WalkTime - t));
+        float speed = MathF.Min(_cruise, _acceleration * MathF.Min(t, WalkTime - t));
+        if (_paced is null)
+        {
+            return speed;
+        }
+
+        // Paced distance per second, times path per paced distance where the trunk is.
+        return speed * PaceAt(DistanceAt(time));
+    }
+
+    /// <summary>
+    /// The walk's pace at <paramref name="distance"/> metres along the path: its speed there over the speed it
+    /// would have on level ground, 0 to 1 (1 but where steep ground slows it: <see cref="ClimbShare"/>). The gait
+    /// shortens its steps by as much, so that its cadence stays that of the level.
+    /// </summary>
+    internal float PaceAt(float distance)
+    {
+        if (_paced is null)
+        {
+            return 1f;
+        }
+
+        int i = Math.Max(1, _lookup.FirstAtOrAbove(distance));
+        float paced = _paced[i] - _paced[i - 1];
+        return paced > 0f ? (_distances[i] - _distances[i - 1]) / paced : 1f;
     }
 
     /// <summary>The ground point at <paramref name="distance"/> metres along the path (clamped), world metres.</summary>

@@ -1,0 +1,59 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.EndToEnd;
+
+/// <summary>
+/// Issue 24's stairs, climbed as a designer expects (the foreign staircase: eight 17 cm risers, 30 cm treads, 2 m
+/// wide, each step its own mesh): the skeleton walks from the floor up to the landing, and to a tread halfway up, in
+/// one walk, no jump, fully right by the audit and every criterion of the animator's eye read from its GLB. On the
+/// flight it slows (<see cref="Walk.ClimbShare"/>) and shortens its steps by as much, and every foot it sets down
+/// there lies on a tread, clear of the riser behind and the nosing ahead. Before, the upright walk put a foot two
+/// treads and 0.66 m up in one swing at full speed and failed; the walk fell back to short steps (4.4 a second on the
+/// floor before the stairs) or was set aside for jumps.
+/// </summary>
+[Category("EndToEnd")]
+public sealed class StairWalkTests
+{
+    private static readonly Lazy<Sweep.Setup> Stairs = new(() => Sweep.Prepare("stairs", ForeignLevels.Get("stairs").Level, "skeleton"));
+
+    /// <summary>The least distance (metres) from a foothold on the flight to its tread's front and back edges.</summary>
+    private const float EdgeClearance = 0.03f;
+
+    [TestCase(-4f, 0f, 0f, 6.5f, 1.36f, 0f, TestName = "The skeleton walks up the stairs from the floor to the landing")]
+    [TestCase(-2f, 0f, 2f, 3.35f, 0.68f, 0f, TestName = "The skeleton walks up to a tread halfway up the stairs")]
+    public void TheSkeletonWalksUpTheStairs(float x0, float y0, float z0, float x1, float y1, float z1)
+    {
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(Stairs.Value, new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves.OfType<Jump>(), Is.Empty, "no jump on stairs the legs climb");
+        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1), "one walk");
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
+        {
+            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+        }
+
+        // The walk slows on the flight, to about ClimbShare over the flight's grade (0.17 m per 0.3 m across).
+        var walk = (Walk)plan.Result.Moves[0];
+        float slowest = Enumerable.Range(0, 400).Select(i => walk.PaceAt(walk.Length * i / 399f)).Min();
+        Assert.That(slowest, Is.InRange(0.35f, 0.75f), "the pace on the flight");
+
+        // Every foothold on the flight lies on its tread, clear of both its edges (the top step is flush with the landing).
+        JumpAnimation animation = plan.Animation!;
+        ContactPhase[] onFlight = [.. animation.ContactPhases.Where(p => !p.OnBall && p.Position.X > 2f && p.Position.X < 4.1f && p.Position.Y > 0.1f)];
+        Assert.That(onFlight, Is.Not.Empty, "feet set down on the stairs");
+        foreach (ContactPhase phase in onFlight)
+        {
+            int tread = (int)MathF.Floor((phase.Position.X - 2f) / 0.3f);
+            float back = 2f + (0.3f * tread);
+            string where = $"{animation.Model.Limbs[phase.Limb].Name} at {phase.Position} ({phase.From:0.00}–{phase.To:0.00} s)";
+            Assert.That(phase.Position.Y, Is.EqualTo(0.17f * (tread + 1)).Within(0.015f), $"{where}: on tread {tread}");
+            Assert.That(MathF.Min(phase.Position.X - back, back + 0.3f - phase.Position.X), Is.GreaterThanOrEqualTo(EdgeClearance), $"{where}: clear of the tread's edges");
+        }
+    }
+}
