@@ -1839,7 +1839,11 @@ internal sealed class WalkGait
                 RootPose pose = _walk.PoseAt(duration * i / samples);
                 float turn = Rotations.AngleBetween(previous.Rotation, pose.Rotation);
                 float moved = Vector3.Distance(previous.Position, pose.Position);
-                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples) * _walk.PaceAt(_walk.DistanceAt(duration * (i - 0.5f) / samples));
+                // Steps shorten by the walk's pace where the trunk is or where the foot lands, half a step ahead:
+                // the last step before a flight is already the flight's (a full step down onto it does not reach).
+                float along = _walk.DistanceAt(duration * (i - 0.5f) / samples);
+                float pace = MathF.Min(_walk.PaceAt(along), _walk.PaceAt(along + (0.5f * _step)));
+                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples) * pace;
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
                 previous = pose;

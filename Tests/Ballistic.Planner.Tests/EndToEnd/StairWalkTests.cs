@@ -21,6 +21,41 @@ public sealed class StairWalkTests
 {
     private static readonly Lazy<Sweep.Setup> Stairs = new(() => Sweep.Prepare("stairs", ForeignLevels.Get("stairs").Level, "skeleton"));
 
+    /// <summary>Where the user's human rig's files are written (removed when the fixture ends).</summary>
+    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-stairs-{Environment.ProcessId}");
+
+    private static readonly Lazy<Sweep.Setup> HumanOnStairs = new(() => Sweep.PrepareForeign("stairs", "human", RigFolder).Setup);
+
+    [OneTimeTearDown]
+    public void RemoveTheRigFiles()
+    {
+        if (Directory.Exists(RigFolder))
+        {
+            Directory.Delete(RigFolder, recursive: true);
+        }
+    }
+
+    /// <summary>
+    /// A user's human rig (pelvis and legs with 90° rest rotations, a limbs-only spec) walks up the whole flight and
+    /// back down it, one walk each way, fully right; before, it hopped up (two walks and a jump) and down (two walks
+    /// and two jumps). Steps shorten by the pace where the foot lands as well as where the trunk is, so the last step
+    /// onto the flight is already a stair step (the skeleton's full stride from the landing's edge, 1.16 m down to the
+    /// second tread, was out of reach).
+    /// </summary>
+    [TestCase(-4f, 0f, 0f, 6.5f, 1.36f, 0f, TestName = "A user's human rig walks up the whole flight")]
+    [TestCase(6.5f, 1.36f, 1.5f, -4f, 0f, -2f, TestName = "A user's human rig walks down the whole flight")]
+    public void AUsersHumanRigWalksUpAndDownTheStairs(float x0, float y0, float z0, float x1, float y1, float z1)
+    {
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(HumanOnStairs.Value, new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "one walk, no jump");
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
+        {
+            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+        }
+    }
+
     /// <summary>The least distance (metres) from a foothold on the flight to its tread's front and back edges.</summary>
     private const float EdgeClearance = 0.03f;
 
