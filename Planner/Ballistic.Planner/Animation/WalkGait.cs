@@ -1908,7 +1908,7 @@ internal sealed class WalkGait
         /// The walk's speed at <paramref name="t"/> seconds over its walking speed at its pace there, 0 to 1 (0 outside
         /// the walk): how far it has sped up from rest or slowed toward it, not how it slows on stairs (<see cref="Walk.PaceAt"/>).
         /// </summary>
-        private float Cruising(float t) => Math.Clamp(_walk.SpeedAt(t) / (_walk.Speed * _walk.PaceAt(_walk.DistanceAt(t))), 0f, 1f);
+        private float Cruising(float t) => Math.Clamp(_walk.CruiseAt(t), 0f, 1f);
 
         /// <summary>The time (seconds into the walk) at which the trunk's motion has cost <paramref name="c"/> half-cycles (<see cref="Boundaries"/>).</summary>
         private float TimeAtCost(float c)

@@ -57,9 +57,6 @@ public sealed record Walk : Move
     /// </summary>
     private readonly float[]? _paced;
 
-    /// <summary>The steps' summed rise (metres) up to each path point (<see cref="Stepped"/>); <c>null</c> where the path has no step.</summary>
-    private readonly float[]? _stepped;
-
     /// <summary>Finds the segment under a paced distance in <see cref="_paced"/>.</summary>
     private readonly SortedLookup? _pacedLookup;
 
@@ -128,8 +125,7 @@ public sealed record Walk : Move
         MaxGrade = maxGrade;
         Length = _distances[^1];
         _lookup = new SortedLookup(_distances);
-        _stepped = Stepped();
-        _paced = Paced(_distances);
+        _paced = Stepped() is float[] stepped ? Paced(stepped) : null;
         _pacedLookup = _paced is null ? null : new SortedLookup(_paced);
         _pacedLength = _paced is null ? Length : _paced[^1];
         StartOffset = from.Pose.Position - _path[0];
@@ -150,60 +146,50 @@ public sealed record Walk : Move
     }
 
     /// <summary>
-    /// The paced distance at each of the path points at <paramref name="distances"/> (metres along the path): each
-    /// segment counted 1 / pace times, its pace the most of 1 and <see cref="ClimbShare"/> over the steps' grade (the
-    /// steps' net rise or fall, segments steeper than <see cref="MaxGrade"/>, over the path's length) within
-    /// <see cref="ClimbWindow"/> either way of its middle; <c>null</c> when every pace is 1.
+    /// The paced distance at each path point: each segment counted 1 / pace times, its pace the most of 1 and
+    /// <see cref="ClimbShare"/> over the steps' grade (their net rise or fall, from <paramref name="stepped"/>, over
+    /// the whole 2 × <see cref="ClimbWindow"/> either way of its middle, also near either end: one step down off a crate
+    /// as the walk starts is no flight of stairs); <c>null</c> when every pace is 1.
     /// </summary>
-    private float[]? Paced(float[] distances)
+    private float[]? Paced(float[] stepped)
     {
-        if (_stepped is null)
-        {
-            return null;
-        }
-
         float[]? paced = null;
-        for (int i = 1; i < distances.Length; i++)
+        for (int i = 1; i < _distances.Length; i++)
         {
-            float segment = distances[i] - distances[i - 1];
-            float pace = Pace(0.5f * (distances[i - 1] + distances[i]));
+            float middle = 0.5f * (_distances[i - 1] + _distances[i]);
+            float rise = Along(_lookup, _distances, stepped, MathF.Min(Length, middle + ClimbWindow)) - Along(_lookup, _distances, stepped, MathF.Max(0f, middle - ClimbWindow));
+            float grade = MathF.Abs(rise) / (2f * ClimbWindow);
+            float pace = grade > ClimbShare ? ClimbShare / grade : 1f;
             if (pace < 1f && paced is null)
             {
-                paced = new float[distances.Length];
-                Array.Copy(distances, paced, i);
+                paced = new float[_distances.Length];
+                Array.Copy(_distances, paced, i);
             }
 
             if (paced is not null)
             {
-                paced[i] = paced[i - 1] + (segment / pace);
+                paced[i] = paced[i - 1] + ((_distances[i] - _distances[i - 1]) / pace);
             }
         }
 
         return paced;
     }
 
-    /// <summary>The pace (0 to 1, a share of the walking speed) at <paramref name="distance"/> metres along the path (<see cref="ClimbShare"/>).</summary>
-    private float Pace(float distance)
+    /// <summary>
+    /// <paramref name="values"/> (one per path point) interpolated at <paramref name="at"/> on the ascending
+    /// <paramref name="keys"/> (one per path point, indexed by <paramref name="lookup"/>), clamped to the ends: from
+    /// path distance to paced distance or the steps' rise, and back.
+    /// </summary>
+    private static float Along(SortedLookup lookup, float[] keys, float[] values, float at)
     {
-        float a = MathF.Max(0f, distance - ClimbWindow);
-        float b = MathF.Min(Length, distance + ClimbWindow);
-
-        // Over the whole window, also near either end: one step down off a crate as the walk starts is no flight of stairs.
-        float grade = MathF.Abs(SteppedAt(b) - SteppedAt(a)) / (2f * ClimbWindow);
-        return grade > ClimbShare ? ClimbShare / grade : 1f;
-    }
-
-    /// <summary>The steps' summed rise (metres) up to <paramref name="distance"/> metres along the path, interpolated within a segment.</summary>
-    private float SteppedAt(float distance)
-    {
-        int i = _lookup.FirstAtOrAbove(distance);
-        if (i == 0)
+        int i = lookup.FirstAtOrAbove(at);
+        if (i == 0 || keys[i] == at)
         {
-            return 0f;
+            return values[i];
         }
 
-        float span = _distances[i] - _distances[i - 1];
-        return span > 0f ? float.Lerp(_stepped![i - 1], _stepped[i], Math.Clamp((distance - _distances[i - 1]) / span, 0f, 1f)) : _stepped![i];
+        float span = keys[i] - keys[i - 1];
+        return span > 0f ? float.Lerp(values[i - 1], values[i], Math.Clamp((at - keys[i - 1]) / span, 0f, 1f)) : values[i];
     }
 
     /// <summary>
@@ -232,40 +218,10 @@ public sealed record Walk : Move
     }
 
     /// <summary>The distance along the path (metres) at paced distance <paramref name="paced"/> (clamped).</summary>
-    private float FromPaced(float paced)
-    {
-        if (_paced is null)
-        {
-            return paced;
-        }
-
-        int i = _pacedLookup!.FirstAtOrAbove(paced);
-        if (i == 0 || _paced[i] == paced)
-        {
-            return _distances[i];
-        }
-
-        float span = _paced[i] - _paced[i - 1];
-        return span > 0f ? float.Lerp(_distances[i - 1], _distances[i], Math.Clamp((paced - _paced[i - 1]) / span, 0f, 1f)) : _distances[i];
-    }
+    private float FromPaced(float paced) => _paced is null ? paced : Along(_pacedLookup!, _paced, _distances, paced);
 
     /// <summary>The paced distance (metres) at <paramref name="distance"/> metres along the path (clamped).</summary>
-    private float ToPaced(float distance)
-    {
-        if (_paced is null)
-        {
-            return distance;
-        }
-
-        int i = _lookup.FirstAtOrAbove(distance);
-        if (i == 0 || _distances[i] == distance)
-        {
-            return _paced[i];
-        }
-
-        float span = _distances[i] - _distances[i - 1];
-        return span > 0f ? float.Lerp(_paced[i - 1], _paced[i], Math.Clamp((distance - _distances[i - 1]) / span, 0f, 1f)) : _paced[i];
-    }
+    private float ToPaced(float distance) => _paced is null ? distance : Along(_lookup, _distances, _paced, distance);
 
 
     /// <inheritdoc />
@@ -377,21 +333,24 @@ public sealed record Walk : Move
     /// <summary>The trunk's speed along the path at <paramref name="time"/> seconds after the walk starts, m/s: 0 while it turns in place, at most <see cref="Speed"/>.</summary>
     public float SpeedAt(float time)
     {
-        float t = time - StartTurn;
-        if (!(t > 0f) || t >= WalkTime)
-        {
-            return 0f;
-        }
-
-        float speed = MathF.Min(_cruise, _acceleration * MathF.Min(t, WalkTime - t));
-        if (_paced is null)
-        {
-            return speed;
-        }
-
         // Paced distance per second, times path per paced distance where the trunk is.
-        return speed * PaceAt(DistanceAt(time));
+        float speed = RampSpeed(time);
+        return _paced is null || !(speed > 0f) ? speed : speed * PaceAt(DistanceAt(time));
     }
+
+    /// <summary>Paced distance per second at <paramref name="time"/> seconds after the walk starts (m/s): 0 while it turns in place, up to <see cref="Speed"/> as it speeds up and slows down.</summary>
+    private float RampSpeed(float time)
+    {
+        float t = time - StartTurn;
+        return !(t > 0f) || t >= WalkTime ? 0f : MathF.Min(_cruise, _acceleration * MathF.Min(t, WalkTime - t));
+    }
+
+    /// <summary>
+    /// How far the walk has sped up from rest, or slowed toward it, at <paramref name="time"/> seconds after it
+    /// starts: its speed over the walking speed at its pace there, 0 to 1 (0 while it turns in place), whatever
+    /// slowing on stairs (<see cref="PaceAt"/>) does to its speed.
+    /// </summary>
+    internal float CruiseAt(float time) => RampSpeed(time) / Speed;
 
     /// <summary>
     /// The walk's pace at <paramref name="distance"/> metres along the path: its speed there over the speed it
