@@ -974,10 +974,15 @@ internal sealed class WalkGait
             {
                 if (!IsFoot(l))
                 {
-                    Perform(l, HandPlan(l, n));
-                    if (_arms && n > 2)
+                    // A swinging arm's free poses are checked against the level as they are shown, after the swing
+                    // replaces the hanging pose (a T-posed rig's hang would meet a door frame its swinging arm clears).
+                    List<Segment> plan = HandPlan(l, n);
+                    bool swings = _arms && n > 2;
+                    Perform(l, plan, checkFree: !swings);
+                    if (swings)
                     {
                         SwingArm(l, _swingStart[0], _swingEnd[n - 1]);
+                        CheckFree(l, plan);
                     }
                 }
             }
@@ -1364,8 +1369,11 @@ internal sealed class WalkGait
         /// <paramref name="to"/> (the first swing's start to the last swing's end: a short walk's arms swing fully while
         /// it cruises): by IK, its effector brought down beside the thigh over
         /// <see cref="ArmDrop"/> (a rig hanging its arms out in a T stays so no longer) and turned about the trunk's left axis by up to
-        /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed;
-        /// where the arm cannot reach or would touch the level it keeps its last swing.
+        /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed.
+        /// Where the swinging arm would touch the level (a door's jamb, a corridor's wall), it is held in over
+        /// <see cref="ArmDrop"/> either side: the hand drawn toward the front of the thigh (<see cref="HeldIn"/>) and its
+        /// swing faded out, as a walker squeezing through a doorway keeps their arms in; where even that touches (or the
+        /// arm cannot reach) it keeps its last pose, and the free limb's check reports it.
         /// </summary>
         private void SwingArm(int l, int from, int to)
         {
@@ -1389,28 +1397,84 @@ internal sealed class WalkGait
                 return;
             }
 
+            // The hand's free pose before the swing (the walk's own hanging pose), kept per fine step: a second pass
+            // holding the arm in starts from it again.
+            float[][] hanging = [.. Enumerable.Range(0, to - from + 1).Select(k => limb.ChainDofs.Select(d => _angles[from + k][d]).ToArray())];
+            bool[] touched = SwingPass(l, foot, from, to, null, hanging);
+            if (!touched.Any(t => t))
+            {
+                return;
+            }
+
+            // Held in around every touch, faded in and out over ArmDrop.
             int ramp = Math.Max(1, (int)MathF.Round(ArmDrop / _h));
-            float side = MathF.Sign(shoulderLocal.X);
+            float[] tuck = new float[to - from + 1];
+            for (int k = 0; k < tuck.Length; k++)
+            {
+                if (!touched[k])
+                {
+                    continue;
+                }
+
+                for (int j = Math.Max(0, k - ramp); j <= Math.Min(tuck.Length - 1, k + ramp); j++)
+                {
+                    tuck[j] = MathF.Max(tuck[j], Smooth(1f - (Math.Abs(j - k) / (float)(ramp + 1))));
+                }
+            }
+
+            for (int k = 0; k < tuck.Length; k++)
+            {
+                foreach ((int d, int c) in limb.ChainDofs.Select((d, c) => (d, c)))
+                {
+                    _angles[from + k][d] = hanging[k][c];
+                }
+            }
+
+            SwingPass(l, foot, from, to, tuck, hanging);
+        }
+
+        /// <summary>
+        /// Share of the arm's length (shoulder to effector) by which a held-in hand is drawn from beside the thigh toward
+        /// the body's middle and forward, in front of the thigh.
+        /// </summary>
+        private const float HeldIn = 0.2f;
+
+        /// <summary>
+        /// One pass of <see cref="SwingArm"/> over fine steps <paramref name="from"/> to <paramref name="to"/> (the
+        /// arm's chain starting at each step from <paramref name="hanging"/>'s angles), the arm held in by
+        /// <paramref name="tuck"/> (0 to 1 per step; <c>null</c>: nowhere): the steps (from <paramref name="from"/>) at
+        /// which the swung hand's pose touched the level.
+        /// </summary>
+        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck, float[][] hanging)
+        {
+            RigLimb limb = _model.Limbs[l];
+            _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
+            float side = MathF.Sign(ToLocal(_roots[from], _positions[limb.RootJoint]).X);
+            int ramp = Math.Max(1, (int)MathF.Round(ArmDrop / _h));
+            bool[] touched = new bool[to - from + 1];
             float[]? last = null;
             float[][] buffers = [new float[_rig.DofCount], new float[_rig.DofCount]];
+            var none = new List<Vector3>();
             for (int i = from; i <= to; i++)
             {
+                float held = tuck?[i - from] ?? 0f;
                 _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
                 Vector3 shoulder = _positions[limb.RootJoint];
-                Vector3 hanging = limb.EffectorPosition(_positions, _rotations);
+                Vector3 hangingHand = limb.EffectorPosition(_positions, _rotations);
                 RigLimb leg = _model.Limbs[foot];
                 float behind = -ToLocal(_roots[i], _positions[leg.EffectorJoint]).Z + ToLocal(_roots[i], _positions[leg.RootJoint]).Z;
                 float share = Math.Clamp(behind / MathF.Max(0.5f * _step, 1e-3f), -1f, 1f);
                 float fade = MathF.Min(1f, MathF.Min(i - from, to - i) / (float)ramp);
-                float angle = ArmSwing * share * Smooth(fade) * Cruising(Time(i));
+                float angle = ArmSwing * share * Smooth(fade) * Cruising(Time(i)) * (1f - held);
                 Vector3 left = Vector3.Transform(Vector3.UnitX, _roots[i].Rotation);
                 Vector3 forward = Vector3.Transform(Vector3.UnitZ, _roots[i].Rotation);
 
                 // The hand drops from its hanging pose to beside the thigh (the arm down, elbow a little bent, clear of
-                // the body sideways), then swings about the shoulder.
+                // the body sideways), drawn in front of the thigh as far as it is held in, then swings about the shoulder.
                 float reach = _gait._bones[l];
-                Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * (0.08f * reach)) + (left * (side * 0.06f * reach));
-                Vector3 hand = Vector3.Lerp(hanging, down, Smooth(fade));
+                float inward = (0.06f - (held * HeldIn)) * reach;
+                Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * ((0.08f + (held * HeldIn)) * reach)) + (left * (side * inward));
+                Vector3 hand = Vector3.Lerp(hangingHand, down, Smooth(fade));
                 Vector3 target = shoulder + Vector3.Transform(hand - shoulder, Quaternion.CreateFromAxisAngle(left, -angle));
                 // Into whichever buffer the last kept angles are not in (no array per fine step).
                 float[] trial = ReferenceEquals(last, buffers[0]) ? buffers[1] : buffers[0];
@@ -1427,7 +1491,9 @@ internal sealed class WalkGait
                 if (ok)
                 {
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
-                    ok = !_gait._collision.LimbCollides(limb, _positions, _rotations, null);
+                    ok = !_gait._collision.LimbCollides(limb, _positions, _rotations, null)
+                        && !SoleThrough(_positions[limb.EffectorJoint], limb.EffectorPosition(_positions, _rotations), none);
+                    touched[i - from] = !ok;
                 }
 
                 float[]? keep = ok ? trial : last;
@@ -1441,6 +1507,8 @@ internal sealed class WalkGait
 
                 last = keep;
             }
+
+            return touched;
         }
 
         private void Fail(int limb, string kind, int step)
@@ -2253,6 +2321,29 @@ internal sealed class WalkGait
             return seed;
         }
 
+        /// <summary>Checks limb <paramref name="l"/> against the level at every fine step of its free segments in <paramref name="plan"/>, as posed now.</summary>
+        private void CheckFree(int l, List<Segment> plan)
+        {
+            foreach (Free free in plan.OfType<Free>())
+            {
+                for (int i = free.From; i <= free.To; i++)
+                {
+                    CheckFree(l, i);
+                }
+            }
+        }
+
+        /// <summary>Reports limb <paramref name="l"/> passing through the level at fine step <paramref name="i"/> (no contact of its own allowed for).</summary>
+        private void CheckFree(int l, int i)
+        {
+            _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
+            if (_gait._collision.LimbCollides(_model.Limbs[l], _positions, _rotations, null))
+            {
+                _colliding[i] = true;
+                Fail(l, "passes through the level", i);
+            }
+        }
+
         /// <summary>The angles a foot's chain tends to while walking, <paramref name="u"/> of the way along: the start pose's blended into the end pose's.</summary>
         private float[] Stance(float u)
         {
@@ -2266,8 +2357,12 @@ internal sealed class WalkGait
             return q;
         }
 
-        /// <summary>Moves limb <paramref name="l"/> through its segments, writing its angles at every fine step.</summary>
-        private void Perform(int l, List<Segment> plan)
+        /// <summary>
+        /// Moves limb <paramref name="l"/> through its segments, writing its angles at every fine step; with
+        /// <paramref name="checkFree"/>, its free segments are checked against the level as they are written (else the
+        /// caller checks them once it has posed them: <see cref="CheckFree(int, List{Segment})"/>).
+        /// </summary>
+        private void Perform(int l, List<Segment> plan, bool checkFree = true)
         {
             RigLimb limb = _model.Limbs[l];
             var holds = new List<Holding>();
@@ -2288,11 +2383,9 @@ internal sealed class WalkGait
                                 _angles[i][d] = float.Lerp(free.Start[d], free.End[d], w);
                             }
 
-                            _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
-                            if (_gait._collision.LimbCollides(limb, _positions, _rotations, null))
+                            if (checkFree)
                             {
-                                _colliding[i] = true;
-                                Fail(l, "passes through the level", i);
+                                CheckFree(l, i);
                             }
                         }
 

@@ -34,14 +34,14 @@ public sealed class SweepTests
     [
         ("thin-slabs", "skeleton"), ("curved", "skeleton"), ("stairs", "skeleton"), ("block", "skeleton"),
         ("holes-debris", "skeleton"), ("cave", "skeleton"), ("thin-slabs", "frog"), ("stairs", "ant"), ("curved", "ant"),
-        ("field", "skeleton"), ("field", "frog"),
+        ("field", "skeleton"), ("field", "frog"), ("doorway", "skeleton"),
     ];
 
     /// <summary>Rigs exported in other tools' shapes (limbs-only specs), on levels with the requests a user would make.</summary>
     private static readonly (string Rig, string Level)[] ForeignRigs =
     [
         ("human", "block"), ("human", "stairs"), ("human-zup", "thin-slabs"), ("dog", "block"), ("dog", "curved"),
-        ("tailed", "stairs"), ("tailed", "holes-debris"),
+        ("tailed", "stairs"), ("tailed", "holes-debris"), ("dog", "doorway"),
     ];
 
     /// <summary>The reports of every case run, by case name, for the whole-sweep share.</summary>

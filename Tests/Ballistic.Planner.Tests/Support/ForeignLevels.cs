@@ -10,7 +10,7 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class ForeignLevels
 {
-    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field"];
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway"];
 
     /// <summary>A level and the start/goal pairs a user would try on it.</summary>
     public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
@@ -22,8 +22,29 @@ internal static class ForeignLevels
         "holes-debris" => HolesDebris(),
         "cave" => Cave(),
         "field" => Field(),
+        "doorway" => Doorway(),
         _ => throw new ArgumentException($"no foreign level '{name}'"),
     };
+
+    /// <summary>
+    /// Two rooms a 4 m wall apart, joined by an interior door 0.9 m wide and 2.1 m high (the wall, its two jambs and
+    /// the lintel each a box, as a modeller cuts a door out of a wall), on a 20 cm thick floor slab: walked straight
+    /// through, and from a corner of one room to the far corner of the other, the route bending through the door.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Doorway()
+    {
+        const float Half = 0.45f;
+        var b = new LevelBuilder("doorway (foreign)");
+        AddSoupBox(b, "floor", new Vector3(-6f, -0.2f, -4f), new Vector3(6f, 0f, 4f));
+        AddSoupBox(b, "wall_left", new Vector3(-0.1f, 0f, -4f), new Vector3(0.1f, 4f, -Half));
+        AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, Half), new Vector3(0.1f, 4f, 4f));
+        AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -Half), new Vector3(0.1f, 4f, Half));
+        return (b.Build(), [
+            (new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f)),
+            (new Vector3(-3f, 0f, 2.5f), new Vector3(3f, 0f, 2.5f)),
+            (new Vector3(2.5f, 0f, -3f), new Vector3(-2.5f, 0f, -1f)),
+        ]);
+    }
 
     /// <summary>
     /// A wide open field, 120 m square, as a terrain exporter writes one (unwelded 5 m quads), with a few rocks and a

@@ -1,0 +1,117 @@
+using System.Numerics;
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Characters;
+using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.EndToEnd;
+
+/// <summary>
+/// Issue 24's doorways, walked as a designer expects: a door cut in a wall between two rooms (the foreign doorway
+/// level's shape, <see cref="ForeignLevels.Doorway"/>, at other widths) is walked through in one walk, no jump, fully
+/// right by the audit and every criterion of the animator's eye read from the GLB. Before, a user's human rig (a
+/// Mixamo-style T-pose) hopped through a 0.9 m and a 1.2 m door in six jumps: its walk was refused because its arms,
+/// checked in the T-pose they hang in before the swing replaces it, met the jambs ("left_hand passes through the
+/// level"), though the arms shown swing beside the thighs. And the skeleton hopped through a 0.5 m opening (two walks
+/// and three jumps) because its swinging hands met the jambs: they are now held in there.
+/// </summary>
+[Category("EndToEnd")]
+public sealed class DoorwayWalkTests
+{
+    /// <summary>Where the user's human rig's files are written (removed when the fixture ends).</summary>
+    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-doorway-{Environment.ProcessId}");
+
+    [OneTimeTearDown]
+    public void RemoveTheRigFiles()
+    {
+        if (Directory.Exists(RigFolder))
+        {
+            Directory.Delete(RigFolder, recursive: true);
+        }
+    }
+
+    /// <summary>Two rooms joined by a door <paramref name="width"/> metres wide and 2.1 m high in a 20 cm wall, 4 m high.</summary>
+    private static Level Doorway(float width)
+    {
+        float half = 0.5f * width;
+        var b = new LevelBuilder($"doorway {width:0.##} m (foreign)");
+        ForeignLevels.AddSoupBox(b, "floor", new Vector3(-6f, -0.2f, -4f), new Vector3(6f, 0f, 4f));
+        ForeignLevels.AddSoupBox(b, "wall_left", new Vector3(-0.1f, 0f, -4f), new Vector3(0.1f, 4f, -half));
+        ForeignLevels.AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, half), new Vector3(0.1f, 4f, 4f));
+        ForeignLevels.AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -half), new Vector3(0.1f, 4f, half));
+        return b.Build();
+    }
+
+    [TestCase(0.9f, TestName = "A user's human rig walks through an interior door, 0.9 m wide")]
+    [TestCase(1.2f, TestName = "A user's human rig walks through a front door, 1.2 m wide")]
+    public void AUsersHumanRigWalksThroughADoor(float width)
+    {
+        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(RigFolder);
+        Sweep.Setup setup = Sweep.Prepare($"doorway-{width}", Doorway(width), model, reduced);
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f));
+        AssertOneCleanWalk(plan, report);
+    }
+
+    /// <summary>
+    /// The skeleton walks through an opening 0.5 m wide (its shoulders are 0.36 m apart), its hands held in at the
+    /// jambs: as the trunk passes the wall both hands are nearer its middle than anywhere on the open floor, and they
+    /// swing again beyond.
+    /// </summary>
+    [Test]
+    public void TheSkeletonHoldsItsArmsInThroughANarrowOpening()
+    {
+        // 1,500 nodes: at 600 the roadmap does not yet reach through an opening this narrow.
+        Sweep.Setup setup = Sweep.Prepare("doorway-0.5", Doorway(0.5f), "skeleton");
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f), maxNodes: 1500);
+        AssertOneCleanWalk(plan, report);
+
+        // Each hand's distance (metres) from the trunk's middle plane (its own frame's X), at the wall (the root within 0.1 m of its
+        // plane) and on the open floor (over 1.5 m from it).
+        JumpAnimation animation = plan.Animation!;
+        CharacterModel model = animation.Model;
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        RigLimb[] hands = [.. model.Limbs.Where(l => l.Kind != LimbKind.Foot)];
+        Assert.That(hands, Has.Length.EqualTo(2));
+        var atWall = new List<float>[] { [], [] };
+        var open = new List<float>[] { [], [] };
+        foreach (AnimationFrame frame in animation.Frames)
+        {
+            float x = frame.Root.Position.X;
+            if (MathF.Abs(x) > 0.1f && MathF.Abs(x) < 1.5f)
+            {
+                continue;
+            }
+
+            model.Rig.Solve(frame.Root, frame.Angles, positions, rotations);
+            for (int h = 0; h < hands.Length; h++)
+            {
+                Vector3 local = Vector3.Transform(hands[h].EffectorPosition(positions, rotations) - frame.Root.Position, Quaternion.Inverse(frame.Root.Rotation));
+                float aside = MathF.Abs(local.X);
+                (MathF.Abs(x) <= 0.1f ? atWall : open)[h].Add(aside);
+            }
+        }
+
+        for (int h = 0; h < hands.Length; h++)
+        {
+            Assert.That(atWall[h], Is.Not.Empty, "the trunk passes the wall");
+            Assert.That(atWall[h].Max(), Is.LessThan(open[h].Min()), $"{hands[h].Name} is held in at the wall");
+        }
+    }
+
+    /// <summary>Exact, one walk and no jump, fully right by the audit, every criterion of the eye passing.</summary>
+    private static void AssertOneCleanWalk(AnimatedPlan plan, AuditReport report)
+    {
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "one walk, no jump");
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
+        {
+            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+        }
+    }
+}
