@@ -291,7 +291,7 @@ internal sealed class WalkGait
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
         _footRadius = model.Limbs.Where(l => l.Kind == LimbKind.Foot).Select(l => l.EffectorPosition(positions, rotations))
             .Select(p => new Vector2(p.X, p.Z).Length()).DefaultIfEmpty(0f).Max();
-        _poseFeet = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))];
+        _poseFeet = Paired(model, [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))]);
 
         _maxTurn = model.TurnLimit(TurnDrift, MaxTurn);
 
@@ -375,6 +375,42 @@ internal sealed class WalkGait
     {
         /// <summary>Times (seconds on the walk's clock) at which something went wrong: where a second run shortens its steps.</summary>
         public float[] Troubles { get; init; } = [];
+    }
+
+    /// <summary>
+    /// <paramref name="feet"/> (where the contact pose holds each limb, trunk frame) with each foot moved along the
+    /// trunk's forward axis to halfway between where it stands and where its partner on the other side (the foot across
+    /// nearest it front to back) stands: a rig modelled mid-stride (a Rigify quadruped with one front and the other hind
+    /// foot ahead) cruises with each pair of feet level under its hips or shoulders, not one foot of each pair a
+    /// stride ahead of its reach. A rig modelled standing (its pairs level already) is unchanged.
+    /// </summary>
+    private static Vector3[] Paired(CharacterModel model, Vector3[] feet)
+    {
+        var paired = (Vector3[])feet.Clone();
+        for (int l = 0; l < feet.Length; l++)
+        {
+            if (model.Limbs[l].Kind != LimbKind.Foot)
+            {
+                continue;
+            }
+
+            int partner = -1;
+            for (int o = 0; o < feet.Length; o++)
+            {
+                if (o != l && model.Limbs[o].Kind == LimbKind.Foot && feet[o].X * feet[l].X < 0f
+                    && (partner < 0 || MathF.Abs(feet[o].Z - feet[l].Z) < MathF.Abs(feet[partner].Z - feet[l].Z)))
+                {
+                    partner = o;
+                }
+            }
+
+            if (partner >= 0 && feet[partner].Z != feet[l].Z)
+            {
+                paired[l].Z = 0.5f * (feet[l].Z + feet[partner].Z);
+            }
+        }
+
+        return paired;
     }
 
     /// <summary>How a limb is moved over a span of fine steps (both ends included).</summary>

@@ -139,9 +139,16 @@ internal static class ReducedModelBuilder
     }
 
     /// <summary>
+    /// Share of the legs' standing height (their root joints above their soles) under which the rig's root joint
+    /// standing height is not taken for the leg (<see cref="Walking"/>): a control rig's root bone on the ground.
+    /// </summary>
+    public const float RootOnTheGround = 0.5f;
+
+    /// <summary>
     /// Walking derived from the rig (<see cref="WalkingLimits.FromLeg"/>): a character with at least two feet that
     /// stands on its feet alone (no more required contacts than feet) walks, its leg length being the root joint's
-    /// standing height above its contacts (as in <see cref="StanceLift"/>), on slopes up to what its feet can stand on
+    /// standing height above its contacts (as in <see cref="StanceLift"/>), or the feet's root joints' where the root
+    /// joint stands under <see cref="RootOnTheGround"/> of theirs (a Rigify root bone on the ground), on slopes up to what its feet can stand on
     /// (<see cref="WalkableSlope"/>, and <see cref="WalkableSlopeAlong"/> straight up or down); any other (a frog that needs all four limbs down) only jumps.
     /// </summary>
     public static WalkingLimits Walking(CharacterModel model, int requiredContacts)
@@ -154,6 +161,14 @@ internal static class ReducedModelBuilder
         }
 
         (float rootHeight, _) = Standing(model, requiredContacts);
+        float hips = model.LegLengths().DefaultIfEmpty(0f).Max();
+        if (rootHeight < RootOnTheGround * hips)
+        {
+            // The root joint is no hip: a root bone on the ground under the body, as Rigify and other control rigs
+            // place one. The leg is the feet's root joints' standing height above their soles.
+            rootHeight = hips;
+        }
+
         WalkingLimits walking = WalkingLimits.FromLeg(rootHeight);
         if (!walking.CanWalk)
         {
