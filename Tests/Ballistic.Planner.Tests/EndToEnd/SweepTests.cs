@@ -142,8 +142,11 @@ public sealed class SweepTests
     /// <list type="bullet">
     /// <item>facing: the tailed quadruped's turns in place on the stairs put its front leg's upper bone through a
     /// riser and its hind feet off the treads' edges, and its turn hops do not steer; the jumps fly as searched.</item>
-    /// <item>cadence: a short walk toward the stairs takes 2.63 steps a second over its three or four steps on level
-    /// ground (it is clean at once and shortens its last level steps for the stairs ahead). The walk onto a tread
+    /// <item>cadence: a short walk onto the third tread (request 3) takes 2.77 steps a second of 0.61 L over its three or
+    /// four steps on level ground: upright, its left foot cannot land on the flight 2.92 m along (its foothold is 0.925 m
+    /// from the hip at touchdown, its leg's bones 0.85 m: the trunk, following the flight's ground line up, is already
+    /// too high for it, and the lift only raises the hips, never lowers them below that line), so its steps are
+    /// shortened to 0.85 around there, and its last level steps shorten for the stairs ahead. The walk onto a tread
     /// halfway up (request 1) passes since walks slow on stairs and shorten their steps by as much (before, its
     /// upright walk swung a foot two treads up at full speed and fell back to 4.4 short steps a second).</item>
     /// </list>
