@@ -1433,10 +1433,19 @@ internal sealed class WalkGait
                 return;
             }
 
-            // The hand's free pose before the swing (the walk's own hanging pose), kept per fine step: a second pass
-            // holding the arm in starts from it again.
-            float[][] hanging = [.. Enumerable.Range(0, to - from + 1).Select(k => limb.ChainDofs.Select(d => _angles[from + k][d]).ToArray())];
-            bool[] touched = SwingPass(l, foot, from, to, null, hanging);
+            // The arm's free pose before the swing (the walk's own hanging pose), its chain's angles kept per fine step
+            // (one array): a second pass holding the arm in starts from it again.
+            IReadOnlyList<int> dofs = limb.ChainDofs;
+            float[] hanging = new float[(to - from + 1) * dofs.Count];
+            for (int k = 0; k <= to - from; k++)
+            {
+                for (int c = 0; c < dofs.Count; c++)
+                {
+                    hanging[(k * dofs.Count) + c] = _angles[from + k][dofs[c]];
+                }
+            }
+
+            bool[] touched = SwingPass(l, foot, from, to, null);
             if (!touched.Any(t => t))
             {
                 return;
@@ -1460,13 +1469,13 @@ internal sealed class WalkGait
 
             for (int k = 0; k < tuck.Length; k++)
             {
-                foreach ((int d, int c) in limb.ChainDofs.Select((d, c) => (d, c)))
+                for (int c = 0; c < dofs.Count; c++)
                 {
-                    _angles[from + k][d] = hanging[k][c];
+                    _angles[from + k][dofs[c]] = hanging[(k * dofs.Count) + c];
                 }
             }
 
-            SwingPass(l, foot, from, to, tuck, hanging);
+            SwingPass(l, foot, from, to, tuck);
         }
 
         /// <summary>
@@ -1477,11 +1486,11 @@ internal sealed class WalkGait
 
         /// <summary>
         /// One pass of <see cref="SwingArm"/> over fine steps <paramref name="from"/> to <paramref name="to"/> (the
-        /// arm's chain starting at each step from <paramref name="hanging"/>'s angles), the arm held in by
-        /// <paramref name="tuck"/> (0 to 1 per step; <c>null</c>: nowhere): the steps (from <paramref name="from"/>) at
-        /// which the swung hand's pose touched the level.
+        /// arm's chain starting at each step from its hanging pose there), the arm held in by <paramref name="tuck"/>
+        /// (0 to 1 per step; <c>null</c>: nowhere): the steps (from <paramref name="from"/>) at which the swung hand's
+        /// pose touched the level.
         /// </summary>
-        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck, float[][] hanging)
+        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck)
         {
             RigLimb limb = _model.Limbs[l];
             _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
