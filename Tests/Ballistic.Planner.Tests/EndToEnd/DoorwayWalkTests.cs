@@ -1,18 +1,15 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
-using Ballistic.Planner.Levels;
-using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
-using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
 
 /// <summary>
 /// Issue 24's doorways, walked as a designer expects: a door cut in a wall between two rooms (the foreign doorway
-/// level's shape, <see cref="ForeignLevels.Doorway"/>, at other widths) is walked through in one walk, no jump, fully
+/// level's shape, <see cref="ForeignLevels.DoorwayLevel"/>, at other widths) is walked through in one walk, no jump, fully
 /// right by the audit and every criterion of the animator's eye read from the GLB. Before, a user's human rig (a
 /// Mixamo-style T-pose) hopped through a 0.9 m and a 1.2 m door in six jumps: its walk was refused because its arms,
 /// checked in the T-pose they hang in before the swing replaces it, met the jambs ("left_hand passes through the
@@ -34,26 +31,14 @@ public sealed class DoorwayWalkTests
         }
     }
 
-    /// <summary>Two rooms joined by a door <paramref name="width"/> metres wide and 2.1 m high in a 20 cm wall, 4 m high.</summary>
-    private static Level Doorway(float width)
-    {
-        float half = 0.5f * width;
-        var b = new LevelBuilder($"doorway {width:0.##} m (foreign)");
-        ForeignLevels.AddSoupBox(b, "floor", new Vector3(-6f, -0.2f, -4f), new Vector3(6f, 0f, 4f));
-        ForeignLevels.AddSoupBox(b, "wall_left", new Vector3(-0.1f, 0f, -4f), new Vector3(0.1f, 4f, -half));
-        ForeignLevels.AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, half), new Vector3(0.1f, 4f, 4f));
-        ForeignLevels.AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -half), new Vector3(0.1f, 4f, half));
-        return b.Build();
-    }
-
     [TestCase(0.9f, TestName = "A user's human rig walks through an interior door, 0.9 m wide")]
     [TestCase(1.2f, TestName = "A user's human rig walks through a front door, 1.2 m wide")]
     public void AUsersHumanRigWalksThroughADoor(float width)
     {
         (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(RigFolder);
-        Sweep.Setup setup = Sweep.Prepare($"doorway-{width}", Doorway(width), model, reduced);
+        Sweep.Setup setup = Sweep.Prepare($"doorway-{width}", ForeignLevels.DoorwayLevel(width), model, reduced);
         (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f));
-        AssertOneCleanWalk(plan, report);
+        SweepTests.AssertOneCleanWalk(plan, report);
     }
 
     /// <summary>
@@ -65,9 +50,9 @@ public sealed class DoorwayWalkTests
     public void TheSkeletonHoldsItsArmsInThroughANarrowOpening()
     {
         // 1,500 nodes: at 600 the roadmap does not yet reach through an opening this narrow.
-        Sweep.Setup setup = Sweep.Prepare("doorway-0.5", Doorway(0.5f), "skeleton");
+        Sweep.Setup setup = Sweep.Prepare("doorway-0.5", ForeignLevels.DoorwayLevel(0.5f), "skeleton");
         (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f), maxNodes: 1500);
-        AssertOneCleanWalk(plan, report);
+        SweepTests.AssertOneCleanWalk(plan, report);
 
         // Each hand's distance (metres) from the trunk's middle plane (its own frame's X), at the wall (the root within 0.1 m of its
         // plane) and on the open floor (over 1.5 m from it).
@@ -100,18 +85,6 @@ public sealed class DoorwayWalkTests
         {
             Assert.That(atWall[h], Is.Not.Empty, "the trunk passes the wall");
             Assert.That(atWall[h].Max(), Is.LessThan(open[h].Min()), $"{hands[h].Name} is held in at the wall");
-        }
-    }
-
-    /// <summary>Exact, one walk and no jump, fully right by the audit, every criterion of the eye passing.</summary>
-    private static void AssertOneCleanWalk(AnimatedPlan plan, AuditReport report)
-    {
-        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
-        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "one walk, no jump");
-        Assert.That(report.FullyRight, Is.True, report.ToString());
-        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
-        {
-            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
         }
     }
 }

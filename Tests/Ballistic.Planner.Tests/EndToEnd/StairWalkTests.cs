@@ -47,13 +47,7 @@ public sealed class StairWalkTests
     public void AUsersHumanRigWalksUpAndDownTheStairs(float x0, float y0, float z0, float x1, float y1, float z1)
     {
         (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(HumanOnStairs.Value, new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
-        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
-        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "one walk, no jump");
-        Assert.That(report.FullyRight, Is.True, report.ToString());
-        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
-        {
-            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
-        }
+        SweepTests.AssertOneCleanWalk(plan, report);
     }
 
     /// <summary>The least distance (metres) from a foothold on the flight to its tread's front and back edges.</summary>

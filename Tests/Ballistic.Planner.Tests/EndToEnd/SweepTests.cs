@@ -2,6 +2,9 @@ using System.Collections.Concurrent;
 using System.Globalization;
 using System.Numerics;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -114,6 +117,18 @@ public sealed class SweepTests
     /// </summary>
     private static void AssertNotYetEveryPlan(AnimatorEye.Look look, string key) =>
         AssertEveryCriterion(look, key, name => NotYetEveryPlan.TryGetValue(name, out string[]? plans) && plans.Contains(key), nameof(NotYetEveryPlan));
+
+    /// <summary>A plan that should be one walk: exact, one walk and no jump, fully right by the audit, every criterion of the eye passing.</summary>
+    internal static void AssertOneCleanWalk(AnimatedPlan plan, AuditReport report)
+    {
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.InstanceOf<Walk>(), "one walk, no jump");
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
+        {
+            Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+        }
+    }
 
     /// <summary>
     /// Every criterion of <paramref name="look"/> (of plan <paramref name="key"/>) passes, except those

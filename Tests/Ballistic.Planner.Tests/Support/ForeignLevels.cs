@@ -31,19 +31,23 @@ internal static class ForeignLevels
     /// the lintel each a box, as a modeller cuts a door out of a wall), on a 20 cm thick floor slab: walked straight
     /// through, and from a corner of one room to the far corner of the other, the route bending through the door.
     /// </summary>
-    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Doorway()
-    {
-        const float Half = 0.45f;
-        var b = new LevelBuilder("doorway (foreign)");
-        AddSoupBox(b, "floor", new Vector3(-6f, -0.2f, -4f), new Vector3(6f, 0f, 4f));
-        AddSoupBox(b, "wall_left", new Vector3(-0.1f, 0f, -4f), new Vector3(0.1f, 4f, -Half));
-        AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, Half), new Vector3(0.1f, 4f, 4f));
-        AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -Half), new Vector3(0.1f, 4f, Half));
-        return (b.Build(), [
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Doorway() =>
+        (DoorwayLevel(0.9f), [
             (new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f)),
             (new Vector3(-3f, 0f, 2.5f), new Vector3(3f, 0f, 2.5f)),
             (new Vector3(2.5f, 0f, -3f), new Vector3(-2.5f, 0f, -1f)),
         ]);
+
+    /// <summary>The doorway level (<see cref="Doorway"/>) with a door <paramref name="width"/> metres wide, centred on z = 0 in the wall at x = 0.</summary>
+    internal static Level DoorwayLevel(float width)
+    {
+        float half = 0.5f * width;
+        var b = new LevelBuilder($"doorway {width:0.##} m (foreign)");
+        AddSoupBox(b, "floor", new Vector3(-6f, -0.2f, -4f), new Vector3(6f, 0f, 4f));
+        AddSoupBox(b, "wall_left", new Vector3(-0.1f, 0f, -4f), new Vector3(0.1f, 4f, -half));
+        AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, half), new Vector3(0.1f, 4f, 4f));
+        AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -half), new Vector3(0.1f, 4f, half));
+        return b.Build();
     }
 
     /// <summary>
