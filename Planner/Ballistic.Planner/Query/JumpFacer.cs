@@ -109,6 +109,7 @@ internal sealed class JumpFacer
     public List<Move> Face(List<Move> path, ref int nextId, IReadOnlySet<(int From, int To)>? rejected, IReadOnlySet<(int From, int To)>? uncut, IReadOnlySet<(int From, int To)>? unfaced, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal, Func<bool> stop)
     {
         _nextId = nextId;
+        _firstPlaced = nextId;
         _unturned.Clear();
         var result = new List<Move>(path.Count + 4);
         if (path.Count == 0)
@@ -129,6 +130,12 @@ internal sealed class JumpFacer
             if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == 0 ? placeStart : null, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
             {
                 current = landed;
+            }
+            else if (move is Jump unturned && Far(unturned) && Given(unturned, unfaced) && StillOff(unturned) && !SwungBefore(unturned, rejected) && !stop()
+                && Swung(unturned, current, result, rejected, Cut(unturned)) is RoadmapNode swung)
+            {
+                // Its turned stances did not animate: a jump swung toward its landing's heading, once.
+                current = swung;
             }
             else
             {
@@ -283,6 +290,13 @@ internal sealed class JumpFacer
                 turnBack = down?.Moves;
                 break;
             }
+        }
+
+        // A landing that stays too far off its way (a tread too shallow to stand on facing up the flight) is met by
+        // a jump swung round toward the way it faces: taken off from a stance walked to.
+        if (!_hops && Off(faced?.To ?? jump.To, Way((faced ?? jump).Arc)) > StillOffLanding && Swung(jump, current, result, rejected, cut) is RoadmapNode swung)
+        {
+            return swung;
         }
 
         if (faced is null)
@@ -465,6 +479,107 @@ internal sealed class JumpFacer
 
         _relanded = (node, landing);
         yield return (node, []);
+    }
+
+    /// <summary>Angles (radians) between a landing's heading and the way of a jump swung to meet it (<see cref="Swing"/>), tried in order: within the eye's 45°, nearest the jump's own way first.</summary>
+    private static readonly float[] SwingYaws = [40f * MathF.PI / 180f, 30f * MathF.PI / 180f];
+
+    /// <summary>Lengths across (shares of the jump's own, between contact centres) of a jump swung to meet its landing, tried in order.</summary>
+    private static readonly float[] SwingReach = [1f, 0.8f, 1.25f];
+
+    /// <summary>The first id the last <see cref="Face"/> gave a stance it placed.</summary>
+    private int _firstPlaced;
+
+    /// <summary>Whether a jump from a stance this facer places onto <paramref name="jump"/>'s landing was set aside already (a swung jump that did not animate): not swung again.</summary>
+    private bool SwungBefore(Jump jump, IReadOnlySet<(int From, int To)>? rejected) =>
+        rejected is { Count: > 0 } && rejected.Any(r => r.To == jump.To.Id && r.From >= _firstPlaced);
+
+    /// <summary>
+    /// Appends <see cref="Swing"/>'s jump onto <paramref name="jump"/>'s landing to <paramref name="result"/> with the
+    /// walk into its takeoff (the walk before steered again, or a new one from <paramref name="current"/>) and returns
+    /// that landing; <c>null</c> (and <paramref name="result"/> unchanged) for a request that does not walk or when none steers.
+    /// </summary>
+    private RoadmapNode? Swung(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
+    {
+        if (!_walking || Swing(jump, current, result, rejected, cut) is not var (swung, into, replaces))
+        {
+            return null;
+        }
+
+        if (replaces)
+        {
+            result[^1] = into;
+        }
+        else
+        {
+            result.Add(into);
+        }
+
+        _placedGoal = null;
+        _turnBack = null;
+        result.Add(swung);
+        return swung.To;
+    }
+
+    /// <summary>
+    /// A jump onto <paramref name="jump"/>'s own landing swung round toward the way that landing faces, when it cannot
+    /// be turned to face the jump (a stance across a stair's tread): its way at most <see cref="SwingYaws"/> off the
+    /// landing's heading, on the side of the jump's own way, as long across as the jump (<see cref="SwingReach"/>);
+    /// taken off from a stance placed facing that way (<see cref="Yaws"/>) at the takeoff's height, to which the walk
+    /// before the jump is steered again (<c>Replaces</c>), or a walk from <paramref name="current"/> leads. Steered
+    /// like any jump (cones, speed limits, trunk sweep), and taken only when it takes off and lands within the eye's
+    /// bounds (<see cref="StillOff"/>); <c>null</c> when none is.
+    /// </summary>
+    private (Jump Jump, Walk Into, bool Replaces)? Swing(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
+    {
+        RoadmapNode landing = jump.To;
+        Vector3 forward = landing.Pose.Forward;
+        float heading = MathF.Atan2(forward.X, forward.Z);
+        float side = MathF.IEEERemainder(Way(jump.Arc) - heading, 2f * MathF.PI) >= 0f ? 1f : -1f;
+        Vector3 across = landing.ContactCentre - jump.From.ContactCentre;
+        float length = new Vector2(across.X, across.Z).Length();
+        Walk? before = result.Count > 0 && result[^1] is Walk w && w.Via.Count == 0 ? w : null;
+        foreach (float swing in SwingYaws)
+        {
+            float yaw = heading + (side * swing);
+            var way = new Vector3(MathF.Sin(yaw), 0f, MathF.Cos(yaw));
+            foreach (float reach in SwingReach)
+            {
+                Vector3 point = landing.ContactCentre - (way * (reach * length));
+                point.Y = jump.From.ContactCentre.Y;
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, yaw, Yaws, _canStand, Height(jump.From));
+                if (placed.Pose is not { } pose || Refused(pose.Pose))
+                {
+                    continue;
+                }
+
+                var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
+                if (rejected?.Contains((node.Id, landing.Id)) == true
+                    || _scene.Steering.SteerRemembered(node.Pose, node.Cone, landing.Pose, landing.Cone) is not { Succeeded: true } r)
+                {
+                    continue;
+                }
+
+                Jump swung = new Jump(node, landing, r.Arc) with { CutFrom = cut };
+                if (StillOff(swung))
+                {
+                    continue;
+                }
+
+                if (before is not null && rejected?.Contains((before.From.Id, node.Id)) != true
+                    && _scene.Walking.SteerRemembered(before.From, node).Walk is Walk steered)
+                {
+                    return (swung, steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom }, true);
+                }
+
+                if (rejected?.Contains((current.Id, node.Id)) != true && _scene.Walking.SteerRemembered(current, node).Walk is Walk walk)
+                {
+                    return (swung, walk with { CutFrom = cut }, false);
+                }
+            }
+        }
+
+        return null;
     }
 
     /// <summary>Whether <paramref name="pose"/> is where the body could not crouch or absorb for a faced jump before (<see cref="QuerySettings.RefusedTurns"/>).</summary>
