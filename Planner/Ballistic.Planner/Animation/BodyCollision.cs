@@ -238,6 +238,32 @@ internal sealed class BodyCollision
     }
 
     /// <summary>
+    /// How far (metres, along <paramref name="normal"/>) the deepest skin point of <paramref name="limb"/>'s foot (its
+    /// effector bone and the bones below it, blended as the GLB draws them) lies below the ground plane through
+    /// <paramref name="contact"/>; 0 when none is below it or the rig has no skin (a character built in code). A loaded
+    /// rig's foot skin blended with the shin (a Rigify panda's: a fifth) sinks below its sole as the shin leans.
+    /// </summary>
+    public float SoleSink(RigLimb limb, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, Vector3 contact, Vector3 normal)
+    {
+        ArgumentNullException.ThrowIfNull(limb);
+        if (_model.Source is null)
+        {
+            return 0f;
+        }
+
+        float deepest = 0f;
+        foreach ((int Joint, Vector3 Point, SkinBlend[]? Blend) probe in _probes[IndexOf(limb)])
+        {
+            if (probe.Joint == limb.EffectorJoint || _model.Rig.IsAncestor(limb.EffectorJoint, probe.Joint))
+            {
+                deepest = MathF.Max(deepest, Vector3.Dot(contact - Posed(probe, positions, rotations), normal));
+            }
+        }
+
+        return deepest;
+    }
+
+    /// <summary>
     /// True when a skin point of <paramref name="probes"/> (joint, point in its frame) lies more than
     /// <see cref="SkinDepth"/> inside the level. For a character built in code, with <paramref name="sole"/> (a held
     /// contact point and the effector joint holding it), a corner of the box of the effector bone or a bone below it

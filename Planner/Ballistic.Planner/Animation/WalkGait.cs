@@ -618,7 +618,48 @@ internal sealed class WalkGait
     }
 
     /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>, or rolled onto its ball where it cannot lie flat (<see cref="SoleHold"/>).</summary>
-    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null) => _sole.Hold(root, q, limb, point, normal, _groundUnder, ball);
+    private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null)
+    {
+        if (!_sole.Hold(root, q, limb, point, normal, _groundUnder, ball))
+        {
+            return false;
+        }
+
+        if (ball is not null || _model.Source is null)
+        {
+            return true;
+        }
+
+        // A loaded rig's foot skin blended with the shin sinks below the sole as the shin leans: the foot is held
+        // that much higher (SkinSettle of it left below, MostRaised at most), so that the skin the GLB draws stands on
+        // the ground, not in it.
+        Span<Vector3> positions = _model.Rig.Joints.Count <= 128 ? stackalloc Vector3[_model.Rig.Joints.Count] : new Vector3[_model.Rig.Joints.Count];
+        Span<Quaternion> rotations = _model.Rig.Joints.Count <= 128 ? stackalloc Quaternion[_model.Rig.Joints.Count] : new Quaternion[_model.Rig.Joints.Count];
+        _model.Rig.Solve(root, q, positions, rotations);
+        Vector3 up = Vector3.Normalize(normal);
+        float sink = _collision.SoleSink(limb, positions, rotations, point, up);
+        if (!(sink > SinkAllowed))
+        {
+            return true;
+        }
+
+        float[] raised = (float[])q.Clone();
+        if (_sole.Hold(root, raised, limb, point + (up * MathF.Min(sink - SkinSettle, MostRaised)), normal, _groundUnder))
+        {
+            Array.Copy(raised, q, q.Length);
+        }
+
+        return true;
+    }
+
+    /// <summary>How far (metres) a loaded rig's foot skin may sink below a held sole before the foot is held higher (<see cref="BodyCollision.SoleSink"/>): as deep as any skin may lie inside the level (<see cref="BodyCollision.SkinDepth"/>).</summary>
+    private const float SinkAllowed = BodyCollision.SkinDepth;
+
+    /// <summary>How far (metres) below the ground a foot held higher for its sinking skin leaves that skin (the sole's own tolerance).</summary>
+    private const float SkinSettle = 0.003f;
+
+    /// <summary>The most (metres) a foot is held above its contact for its sinking skin: within a centimetre of the contact the plan reports, as every held effector is.</summary>
+    private const float MostRaised = 0.008f;
 
     /// <summary>The level's surface under a point (world metres) within <see cref="Touch"/> of it, straight down; <c>null</c> where there is none there (a rolling foot's ball never rests on air).</summary>
     private Vector3? GroundUnder(Vector3 point) =>
