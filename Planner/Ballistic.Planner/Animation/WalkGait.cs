@@ -375,6 +375,9 @@ internal sealed class WalkGait
     {
         /// <summary>Times (seconds on the walk's clock) at which something went wrong: where a second run shortens its steps.</summary>
         public float[] Troubles { get; init; } = [];
+
+        /// <summary>How far (metres, world up) the run lifted its roots at each fine step: where a run walked again judges its footholds.</summary>
+        public float[] Lifts { get; init; } = [];
     }
 
     /// <summary>
@@ -510,6 +513,8 @@ internal sealed class WalkGait
         // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
         // first without problems is kept, else the one with fewest.
         Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
+        // The best run so far walked again with its footholds judged at the hips its own lift gave (Lifted).
+        Func<float[], Clip> rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, raised: raised).Animate();
         bool roll = true;
         if (best.Problems.Count > 0 && _balls.Any(b => b is not null))
         {
@@ -517,6 +522,10 @@ internal sealed class WalkGait
             // so (its toes would go into the ground): lifted as far as the feet reach flat.
             Clip flat = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false).Animate();
             (best, roll) = flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
+            if (!roll)
+            {
+                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false, raised: raised).Animate();
+            }
         }
 
         // Where the upright walk met trouble, it is walked again with shorter steps there (ShortenRounds times at
@@ -557,6 +566,9 @@ internal sealed class WalkGait
             {
                 best = clip;
                 bestShare = share;
+                float[] at = shortAt;
+                float by = share;
+                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, at, shortShare: by, raised: raised).Animate();
             }
             else if (again > 0 && clip.Problems.Count > best.Problems.Count)
             {
@@ -581,12 +593,14 @@ internal sealed class WalkGait
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && lowAt.Length > 0; again++)
         {
             Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, lowAt, bestShare).Animate();
+            float[] low = lowAt;
             float[] more = [.. lowAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(lowAt);
             lowAt = more;
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
+                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, low, bestShare, raised: raised).Animate();
             }
 
             if (!news)
@@ -598,6 +612,24 @@ internal sealed class WalkGait
         if (best.Problems.Count == 0 || !(_restLeg > 0f))
         {
             return best;
+        }
+
+        // Going down stairs, a foot set down on the tread above is judged at the unlifted hips, which follow the
+        // flight's ground line: a riser below that tread, too low for the foot to hold behind the hip, so the foot is
+        // set down at the nosing, where it cannot roll onto its ball (its ball is past the edge) once the lift raises
+        // the hips. Judged where the lift holds the hips, the foot lands back on the tread and rolls there.
+        if (best.Lifts.Length > 0)
+        {
+            Clip raisedClip = rerun(best.Lifts);
+            if (raisedClip.Problems.Count < best.Problems.Count)
+            {
+                best = raisedClip;
+            }
+
+            if (best.Problems.Count == 0)
+            {
+                return best;
+            }
         }
 
         foreach ((bool lift, bool longSteps) in ((bool, bool)[])[(true, true), (true, false), (false, false)])
@@ -820,6 +852,12 @@ internal sealed class WalkGait
         private readonly List<ContactPhase> _phases = [];
         private readonly List<float> _troubles = [];
         private readonly float[] _shortAt;
+
+        /// <summary>An earlier run's lifts per fine step (<see cref="Clip.Lifts"/>, metres, world up), added to the roots while the footholds are chosen; <c>null</c>: chosen at the unlifted roots.</summary>
+        private readonly float[]? _raised;
+
+        /// <summary>What this run's lift raised its roots by at each fine step (metres, world up); empty without a lift.</summary>
+        private float[] _lifts = [];
         private readonly float[] _lowAt;
         private readonly float _shortShare;
         private readonly float _shortSpan;
@@ -854,8 +892,9 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan, float[]? raised = null)
         {
+            _raised = raised;
             _shortShare = shortShare;
             _shortSpan = shortSpan;
             _roll = roll;
@@ -1029,14 +1068,26 @@ internal sealed class WalkGait
 
             // The feet's footholds, then (upright) the hips lifted as far as the held feet let them, then the limbs moved.
             var plans = new List<Segment>?[_limbs];
+            RootPose[] unlifted = (RootPose[])_roots.Clone();
+            if (_raised is { } raised && raised.Length == _roots.Length)
+            {
+                // Footholds judged where an earlier run's lift held the hips (AnimateAnew); the lift is then made anew.
+                for (int i = 0; i <= _steps; i++)
+                {
+                    _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * raised[i]), _roots[i].Rotation);
+                }
+            }
+
             for (int l = 0; l < _limbs; l++)
             {
                 plans[l] = IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : null;
             }
 
+            Array.Copy(unlifted, _roots, _roots.Length);
             if (_lift)
             {
                 Lift(plans);
+                _lifts = [.. _roots.Select((r, i) => r.Position.Y - unlifted[i].Position.Y)];
             }
 
             for (int l = 0; l < _limbs; l++)
@@ -1153,7 +1204,7 @@ internal sealed class WalkGait
                 _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})", distance));
             }
 
-            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n) { Troubles = [.. _troubles] };
+            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n) { Troubles = [.. _troubles], Lifts = _lifts };
         }
 
         /// <summary>The roots on the walk at every fine step; the trunk's angles (in no limb) going smoothly from the start pose's to the end pose's; limbs as at the start.</summary>
