@@ -513,8 +513,8 @@ internal sealed class WalkGait
         // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
         // first without problems is kept, else the one with fewest.
         Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
-        // The best run so far walked again with its footholds judged at the hips its own lift gave (Lifted).
-        Func<float[], Clip> rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, raised: raised).Animate();
+        // How the best run so far was made (rolling, shortened and lowered where), to walk it again below.
+        (bool Roll, float[]? ShortAt, float[]? LowAt, float Share) made = (true, null, null, ShortStep);
         bool roll = true;
         if (best.Problems.Count > 0 && _balls.Any(b => b is not null))
         {
@@ -522,10 +522,7 @@ internal sealed class WalkGait
             // so (its toes would go into the ground): lifted as far as the feet reach flat.
             Clip flat = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false).Animate();
             (best, roll) = flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
-            if (!roll)
-            {
-                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false, raised: raised).Animate();
-            }
+            made = made with { Roll = roll };
         }
 
         // Where the upright walk met trouble, it is walked again with shorter steps there (ShortenRounds times at
@@ -558,7 +555,8 @@ internal sealed class WalkGait
         float bestShare = ShortStep;
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, shortShare: share).Animate();
+            float[] used = shortAt;
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, used, shortShare: share).Animate();
             float[] more = [.. shortAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(shortAt);
             shortAt = more;
@@ -566,9 +564,7 @@ internal sealed class WalkGait
             {
                 best = clip;
                 bestShare = share;
-                float[] at = shortAt;
-                float by = share;
-                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, at, shortShare: by, raised: raised).Animate();
+                made = (roll, used, null, share);
             }
             else if (again > 0 && clip.Problems.Count > best.Problems.Count)
             {
@@ -592,15 +588,15 @@ internal sealed class WalkGait
         float[] lowAt = shortAt;
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && lowAt.Length > 0; again++)
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, lowAt, bestShare).Animate();
-            float[] low = lowAt;
+            float[] used = lowAt;
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, used, bestShare).Animate();
             float[] more = [.. lowAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(lowAt);
             lowAt = more;
             if (clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
-                rerun = raised => new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, low, bestShare, raised: raised).Animate();
+                made = (roll, shortAt, used, bestShare);
             }
 
             if (!news)
@@ -620,7 +616,7 @@ internal sealed class WalkGait
         // the hips. Judged where the lift holds the hips, the foot lands back on the tread and rolls there.
         if (best.Lifts.Length > 0)
         {
-            Clip raisedClip = rerun(best.Lifts);
+            Clip raisedClip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, made.Roll, made.ShortAt, made.LowAt, made.Share, raised: best.Lifts).Animate();
             if (raisedClip.Problems.Count < best.Problems.Count)
             {
                 best = raisedClip;
