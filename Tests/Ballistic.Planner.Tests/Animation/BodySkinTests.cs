@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
@@ -136,5 +137,34 @@ public sealed class BodySkinTests
         Level block = new LevelBuilder("block").AddBox(at - new Vector3(half), at + new Vector3(half)).Build();
         var collision = new BodyCollision(new TriangleBvh(block.Triangles), model, block.Triangles);
         Assert.That(collision.LimbCollides(leg, positions, rotations, null), Is.True, $"the thigh's top, blended with the trunk, {half * 100f:0.0} cm inside a block");
+    }
+
+    /// <summary>
+    /// How deep a loaded rig's foot skin lies below a held ground plane (<see cref="BodyCollision.SoleSink"/>, by which
+    /// the gait holds a panda's foot higher where its skin, blended with the shin, would sink): the tailed quadruped's
+    /// hind foot sinks at least as far as a plane is raised above its foot's lowest skin point, and not at all below a
+    /// plane under every point of it; a character built in code (its bone boxes are no skin) reads 0 whatever the plane.
+    /// </summary>
+    [Test]
+    public void ASolesSinkIsReadFromTheFootsSkin()
+    {
+        CharacterModel model = Tailed.Value;
+        RigLimb foot = model.Limbs.Single(l => l.Name == "left_hind");
+        (Vector3[] positions, Quaternion[] rotations) = Solve(model, new RootPose(new Vector3(0f, 1f, 0f), Quaternion.Identity));
+        int effector = foot.EffectorJoint;
+        float lowest = model.Source!.SkinProbes[effector].Min(s => (positions[effector] + Vector3.Transform(s, rotations[effector])).Y);
+        Level floor = new LevelBuilder("floor").AddFloor(-2f, -2f, 2f, 2f, 0f).Build();
+        var collision = new BodyCollision(new TriangleBvh(floor.Triangles), model, floor.Triangles);
+        float Sink(float planeY) => collision.SoleSink(foot, positions, rotations, new Vector3(positions[effector].X, planeY, positions[effector].Z), Vector3.UnitY);
+
+        CharacterModel built = CharacterPresets.Model("skeleton");
+        (Vector3[] builtPositions, Quaternion[] builtRotations) = Solve(built, new RootPose(Vector3.Zero, Quaternion.Identity));
+        var builtCollision = new BodyCollision(new TriangleBvh(floor.Triangles), built, floor.Triangles);
+        Assert.Multiple(() =>
+        {
+            Assert.That(Sink(lowest + 0.05f), Is.GreaterThanOrEqualTo(0.05f - 1e-4f), "a plane 5 cm above the foot's lowest skin point");
+            Assert.That(Sink(lowest - 0.5f), Is.EqualTo(0f), "a plane half a metre under the foot");
+            Assert.That(builtCollision.SoleSink(built.Limbs[0], builtPositions, builtRotations, new Vector3(0f, 10f, 0f), Vector3.UnitY), Is.EqualTo(0f), "a character built in code");
+        });
     }
 }
