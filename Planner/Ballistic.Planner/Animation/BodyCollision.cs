@@ -62,6 +62,9 @@ internal sealed class BodyCollision
     private readonly (Aabb Bounds, Vector3 Normal)[] _shapes = [];
     private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _probes;
     private readonly float[] _probeReach;
+
+    /// <summary>Per limb: the probes of its foot's skin (<see cref="SoleSink"/>).</summary>
+    private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _soleProbes;
     private readonly (int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes)[] _freeSkins;
 
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
@@ -178,6 +181,10 @@ internal sealed class BodyCollision
         // How far a limb's skin reaches from the joints carrying it: a blended point lies within its parts' reach of theirs.
         _probeReach = [.. _probes.Select(probes => probes.Select(p => p.Blend is SkinBlend[] b ? b.Max(part => part.Point.Length()) : p.Point.Length()).DefaultIfEmpty(0f).Max())];
 
+        // A loaded rig's foot skin (its effector bone's and the bones' below it), for SoleSink; none for a character built in code.
+        _soleProbes = [.. Enumerable.Range(0, model.Limbs.Count).Select(l => model.Source is null ? [] : _probes[l]
+            .Where(p => p.Joint == model.Limbs[l].EffectorJoint || rig.IsAncestor(model.Limbs[l].EffectorJoint, p.Joint)).ToArray())];
+
         // The skin of bones that belong to no limb: those that carry none and hang from none (a tail's tip reaches past
         // its last joint, a head) and the trunk's (a pelvis, a spine, the root bone too: the desert skeleton's pelvis
         // sank 3.3 cm into a dune as it crouched to jump).
@@ -246,22 +253,17 @@ internal sealed class BodyCollision
     public float SoleSink(RigLimb limb, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, Vector3 contact, Vector3 normal)
     {
         ArgumentNullException.ThrowIfNull(limb);
-        if (_model.Source is null)
-        {
-            return 0f;
-        }
-
         float deepest = 0f;
-        foreach ((int Joint, Vector3 Point, SkinBlend[]? Blend) probe in _probes[IndexOf(limb)])
+        foreach ((int Joint, Vector3 Point, SkinBlend[]? Blend) probe in _soleProbes[IndexOf(limb)])
         {
-            if (probe.Joint == limb.EffectorJoint || _model.Rig.IsAncestor(limb.EffectorJoint, probe.Joint))
-            {
-                deepest = MathF.Max(deepest, Vector3.Dot(contact - Posed(probe, positions, rotations), normal));
-            }
+            deepest = MathF.Max(deepest, Vector3.Dot(contact - Posed(probe, positions, rotations), normal));
         }
 
         return deepest;
     }
+
+    /// <summary>Whether <paramref name="limb"/>'s foot has skin <see cref="SoleSink"/> reads (a loaded rig's); false for a character built in code.</summary>
+    public bool HasSoleSkin(RigLimb limb) => _soleProbes[IndexOf(limb)].Length > 0;
 
     /// <summary>
     /// True when a skin point of <paramref name="probes"/> (joint, point in its frame) lies more than

@@ -653,7 +653,7 @@ internal sealed class WalkGait
             return false;
         }
 
-        if (ball is not null || _model.Source is null)
+        if (ball is not null || !_collision.HasSoleSkin(limb))
         {
             return true;
         }
@@ -1064,10 +1064,11 @@ internal sealed class WalkGait
 
             // The feet's footholds, then (upright) the hips lifted as far as the held feet let them, then the limbs moved.
             var plans = new List<Segment>?[_limbs];
-            RootPose[] unlifted = (RootPose[])_roots.Clone();
+            RootPose[]? unlifted = null;
             if (_raised is { } raised && raised.Length == _roots.Length)
             {
                 // Footholds judged where an earlier run's lift held the hips (AnimateAnew); the lift is then made anew.
+                unlifted = (RootPose[])_roots.Clone();
                 for (int i = 0; i <= _steps; i++)
                 {
                     _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * raised[i]), _roots[i].Rotation);
@@ -1079,11 +1080,14 @@ internal sealed class WalkGait
                 plans[l] = IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : null;
             }
 
-            Array.Copy(unlifted, _roots, _roots.Length);
+            if (unlifted is not null)
+            {
+                Array.Copy(unlifted, _roots, _roots.Length);
+            }
+
             if (_lift)
             {
                 Lift(plans);
-                _lifts = [.. _roots.Select((r, i) => r.Position.Y - unlifted[i].Position.Y)];
             }
 
             for (int l = 0; l < _limbs; l++)
@@ -1242,6 +1246,7 @@ internal sealed class WalkGait
         /// </summary>
         private void Lift(List<Segment>?[] plans)
         {
+            _lifts = new float[_steps + 1];
             float target = UprightHips * _gait._restLeg;
             float[] raw = new float[_steps + 1];
             float[] height = new float[_steps + 1];
@@ -1425,6 +1430,7 @@ internal sealed class WalkGait
 
                 float lift = sum / ((2 * k) + 1);
                 _roots[i] = new RootPose(_roots[i].Position + (Vector3.UnitY * lift), _roots[i].Rotation);
+                _lifts[i] = lift;
             }
         }
 
