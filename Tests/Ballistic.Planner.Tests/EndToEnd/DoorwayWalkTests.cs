@@ -20,16 +20,10 @@ namespace Ballistic.Planner.Tests.EndToEnd;
 public sealed class DoorwayWalkTests
 {
     /// <summary>Where the user's human rig's files are written (removed when the fixture ends).</summary>
-    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-doorway-{Environment.ProcessId}");
+    private static readonly string RigFolder = RigFolders.For("doorway");
 
     [OneTimeTearDown]
-    public void RemoveTheRigFiles()
-    {
-        if (Directory.Exists(RigFolder))
-        {
-            Directory.Delete(RigFolder, recursive: true);
-        }
-    }
+    public void RemoveTheRigFiles() => RigFolders.Remove(RigFolder);
 
     [TestCase(0.9f, TestName = "A user's human rig walks through an interior door, 0.9 m wide")]
     [TestCase(1.2f, TestName = "A user's human rig walks through a front door, 1.2 m wide")]

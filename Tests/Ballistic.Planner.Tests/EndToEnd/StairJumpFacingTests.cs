@@ -19,18 +19,12 @@ namespace Ballistic.Planner.Tests.EndToEnd;
 public sealed class StairJumpFacingTests
 {
     /// <summary>Where the rig's files are written (removed when the fixture ends).</summary>
-    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-stair-facing-{Environment.ProcessId}");
+    private static readonly string RigFolder = RigFolders.For("stair-facing");
 
     private static readonly Lazy<(Sweep.Setup Setup, (Vector3 From, Vector3 To)[] Requests)> Stairs = new(() => Sweep.PrepareForeign("stairs", "tailed", RigFolder));
 
     [OneTimeTearDown]
-    public void RemoveTheRigFiles()
-    {
-        if (Directory.Exists(RigFolder))
-        {
-            Directory.Delete(RigFolder, recursive: true);
-        }
-    }
+    public void RemoveTheRigFiles() => RigFolders.Remove(RigFolder);
 
     [TestCase(1, TestName = "A tailed quadruped walks to the flight and jumps up onto the fourth tread facing its jump")]
     [TestCase(3, TestName = "A tailed quadruped jumps from the floor onto the third tread facing its jump")]

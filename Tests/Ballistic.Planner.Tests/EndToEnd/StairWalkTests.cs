@@ -25,18 +25,12 @@ public sealed class StairWalkTests
     private static readonly Lazy<Sweep.Setup> Stairs = new(() => Sweep.Prepare("stairs", ForeignLevels.Get("stairs").Level, "skeleton"));
 
     /// <summary>Where the user's human rig's files are written (removed when the fixture ends).</summary>
-    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-stairs-{Environment.ProcessId}");
+    private static readonly string RigFolder = RigFolders.For("stairs");
 
     private static readonly Lazy<Sweep.Setup> HumanOnStairs = new(() => Sweep.PrepareForeign("stairs", "human", RigFolder).Setup);
 
     [OneTimeTearDown]
-    public void RemoveTheRigFiles()
-    {
-        if (Directory.Exists(RigFolder))
-        {
-            Directory.Delete(RigFolder, recursive: true);
-        }
-    }
+    public void RemoveTheRigFiles() => RigFolders.Remove(RigFolder);
 
     /// <summary>
     /// A user's human rig (pelvis and legs with 90° rest rotations, a limbs-only spec) walks up the whole flight and

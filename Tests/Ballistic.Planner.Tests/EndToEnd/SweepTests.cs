@@ -56,7 +56,7 @@ public sealed class SweepTests
     private static readonly Lazy<int> CaseCount = new(() => Cases().Count());
 
     /// <summary>Where the foreign rigs' files are written for the sweep (removed when it ends).</summary>
-    private static readonly string RigFolder = Path.Combine(Path.GetTempPath(), $"ballistic-sweep-{Environment.ProcessId}");
+    private static readonly string RigFolder = RigFolders.For("sweep");
 
     /// <summary>One case per request: (kind, level, character or rig, request index).</summary>
     public static IEnumerable<TestCaseData> Cases()
@@ -180,10 +180,7 @@ public sealed class SweepTests
     [OneTimeTearDown]
     public void NineteenRequestsInTwentyAreFullyRight()
     {
-        if (Directory.Exists(RigFolder))
-        {
-            Directory.Delete(RigFolder, recursive: true);
-        }
+        RigFolders.Remove(RigFolder);
 
         if (Reports.Count < CaseCount.Value)
         {
