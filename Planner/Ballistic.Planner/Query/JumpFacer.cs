@@ -180,6 +180,23 @@ internal sealed class JumpFacer
         return Off(jump.From, facing) > StillOffTakeoff || Off(jump.To, facing) > StillOffLanding;
     }
 
+    /// <summary>
+    /// Whether a jump from <paramref name="from"/> to <paramref name="to"/> on <paramref name="arc"/> reads as facing
+    /// its way as it stands: shorter than <see cref="MinDistance"/> across (a hop may go any way), or taking off within
+    /// <see cref="StillOffTakeoff"/> and landing within <see cref="StillOffLanding"/> of its direction.
+    /// </summary>
+    internal static bool Faces(RoadmapNode from, RoadmapNode to, in BallisticArc arc)
+    {
+        Vector3 across = arc.End - arc.Start;
+        if (new Vector2(across.X, across.Z).Length() < MinDistance)
+        {
+            return true;
+        }
+
+        float facing = Way(arc);
+        return Off(from, facing) <= StillOffTakeoff && Off(to, facing) <= StillOffLanding;
+    }
+
     /// <summary>The yaw (radians about +Y, 0 along +Z) of <paramref name="arc"/>'s direction across, from takeoff to landing.</summary>
     private static float Way(BallisticArc arc) => MathF.Atan2(arc.End.X - arc.Start.X, arc.End.Z - arc.Start.Z);
 

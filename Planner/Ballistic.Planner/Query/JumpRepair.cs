@@ -124,7 +124,7 @@ public sealed class JumpRepair
 
         if (!CuttingAllowed && (settings.TightenJumps || settings.FaceJumps))
         {
-            settings = settings with { TightenJumps = false, FaceJumps = false };
+            settings = settings with { TightenJumps = false, FaceJumps = false, PreferFacedJumps = true };
         }
 
         if (_spots.Count > 0)

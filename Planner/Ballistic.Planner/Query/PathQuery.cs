@@ -49,6 +49,9 @@ public sealed class PathQuery
     // The costs of the current request: a jump's flight time plus these efforts (0 without walking; QuerySettings.JumpCost); walks when allowed.
     private float _effort;
     private float _heightEffort;
+
+    /// <summary>Whether this request walks, its jumps are not turned afterwards and faced ones are preferred (<see cref="QuerySettings.PreferFacedJumps"/>): jumps that do not face their way cost <see cref="UnfacedJumpCost"/> more.</summary>
+    private bool _unturned;
     private bool _walking;
     private IReadOnlySet<int>? _noTakeoffs;
     private IReadOnlySet<int>? _noLandings;
@@ -279,6 +282,7 @@ public sealed class PathQuery
         _noLandings = settings.NoLandings;
         _effort = _walking ? settings.JumpEffort : 0f;
         _heightEffort = _walking ? settings.JumpHeightEffort : 0f;
+        _unturned = _walking && !settings.FaceJumps && settings.PreferFacedJumps;
         float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
 
         // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
@@ -293,7 +297,7 @@ public sealed class PathQuery
             {
                 if (steering.Steer(start.Pose, start.Cone, goal.Pose, goal.Cone) is { Succeeded: true } direct)
                 {
-                    _extra.Add(new Extra(start.Id, goal.Id, JumpCost(direct.Arc), direct.Arc, null));
+                    _extra.Add(new Extra(start.Id, goal.Id, JumpCost(start, goal, direct.Arc), direct.Arc, null));
                 }
 
                 if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
@@ -323,7 +327,7 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add(new Extra(start.Id, j, JumpCost(r.Arc), r.Arc, null));
+                    _extra.Add(new Extra(start.Id, j, JumpCost(start, node, r.Arc), r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -357,7 +361,7 @@ public sealed class PathQuery
                 SteeringResult r = steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
                 if (r.Succeeded)
                 {
-                    _extra.Add(new Extra(j, goal.Id, JumpCost(r.Arc), r.Arc, null));
+                    _extra.Add(new Extra(j, goal.Id, JumpCost(node, goal, r.Arc), r.Arc, null));
                     if (++connected >= settings.Connections)
                     {
                         break;
@@ -588,6 +592,7 @@ public sealed class PathQuery
         bool walks = _walking && _roadmap.Walks.Count > 0;
         float effort = _effort;
         float heightEffort = _heightEffort;
+        bool unturned = _unturned;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -621,7 +626,7 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]), edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (unturned ? FacingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
@@ -820,10 +825,30 @@ public sealed class PathQuery
     }
 
     /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>
-    private float CostOf(Move move) => move is Jump jump ? JumpCost(jump.Arc) : WalkCost((Walk)move);
+    private float CostOf(Move move) => move is Jump jump ? JumpCost(jump.From, jump.To, jump.Arc) : WalkCost((Walk)move);
 
     /// <summary>A jump's cost in this search, seconds: its flight time, plus (walking allowed) the efforts of <see cref="QuerySettings.JumpCost(in BallisticArc, float, float)"/>.</summary>
     private float JumpCost(in BallisticArc arc) => QuerySettings.JumpCost(arc, _effort, _heightEffort);
+
+    /// <summary><see cref="JumpCost(in BallisticArc)"/> of a jump from <paramref name="from"/> to <paramref name="to"/>, plus <see cref="UnfacedJumpCost"/> when it does not face its way and will not be turned to.</summary>
+    private float JumpCost(RoadmapNode from, RoadmapNode to, in BallisticArc arc) =>
+        JumpCost(arc) + (_unturned && !JumpFacer.Faces(from, to, arc) ? UnfacedJumpCost : 0f);
+
+    /// <summary>What roadmap edge <paramref name="edge"/> costs on top of its effort in a search whose jumps are not turned afterwards: <see cref="UnfacedJumpCost"/> when it does not face its way.</summary>
+    private float FacingCost(int edge)
+    {
+        RoadmapEdge e = _roadmap.Edges[edge];
+        return JumpFacer.Faces(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To], e.Arc) ? 0f : UnfacedJumpCost;
+    }
+
+    /// <summary>
+    /// Seconds a jump travelling <see cref="JumpFacer.MinDistance"/> or more across costs on top of its effort when its
+    /// stances do not face its way (<see cref="JumpFacer.Faces"/>) in a walking request whose jumps are not turned
+    /// afterwards (the repair's last rounds, once turned jumps failed to animate: <see cref="QuerySettings.PreferFacedJumps"/>):
+    /// such a search prefers the roadmap's jumps that already face their way wherever one costs at most
+    /// this much more, so a character is not flown sideways or backwards where it need not be.
+    /// </summary>
+    internal const float UnfacedJumpCost = 8f;
 
     /// <summary>A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds; turning in place and speeding up are not counted.</summary>
     private static float WalkCost(Walk walk) => walk.Length / walk.Speed;
@@ -873,7 +898,7 @@ public sealed class PathQuery
                     best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }
                 else if (!walksOnly && j >= i + 2 && _reach.InReach(a.Pose.Position, b.Pose.Position) &&
-                    _scene.Steering.SteerRemembered(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && JumpCost(jump.Arc) < saving)
+                    _scene.Steering.SteerRemembered(a.Pose, a.Cone, b.Pose, b.Cone) is { Succeeded: true } jump && JumpCost(a, b, jump.Arc) < saving)
                 {
                     best = new Jump(a, b, jump.Arc);
                 }

@@ -53,14 +53,14 @@ public sealed record QuerySettings
     public Locomotion Locomotion { get; init; } = Locomotion.WalkAndJump;
 
     /// <summary>The default <see cref="JumpEffort"/>, seconds.</summary>
-    public const float DefaultJumpEffort = 4f;
+    public const float DefaultJumpEffort = 3.5f;
 
     /// <summary>The default <see cref="JumpHeightEffort"/>, seconds per metre.</summary>
-    public const float DefaultJumpHeightEffort = 0f;
+    public const float DefaultJumpHeightEffort = 0.25f;
 
     /// <summary>
     /// What every jump costs beyond its flight time when walking is allowed, in seconds of walking (getting set,
-    /// landing); <see cref="JumpHeightEffort"/> adds what its push costs. Not negative. Unused in
+    /// landing); <see cref="JumpHeightEffort"/> adds what its push costs. 3.5 s by default (<see cref="DefaultJumpEffort"/>). Not negative. Unused in
     /// <see cref="Locomotion.Jump"/> mode.
     /// </summary>
     public float JumpEffort { get; init; } = DefaultJumpEffort;
@@ -70,7 +70,9 @@ public sealed record QuerySettings
     /// (<see cref="Steering.BallisticArc.EnergyHeight"/>, |v|²/(2g): the apex's rise for a jump straight up, more for
     /// a long leap), in seconds of walking per metre: at 1 s/m a hop over a ditch (takeoff 3 m/s) costs half a second
     /// more, a vault whose trunk rises 2.4 m about three seconds more, so a path walks a moderate detour rather than
-    /// vault. 0 by default (every jump costs <see cref="JumpEffort"/>, as before this setting existed). Not negative.
+    /// vault. 0.25 s/m by default (<see cref="DefaultJumpHeightEffort"/>): with the default 3.5 s of
+    /// <see cref="JumpEffort"/> a hop taking off at 3 m/s costs 3.6 s beyond its flight and a leap at 7 m/s 4.1 s (a
+    /// flat 4 s each before 2026-12-02), so of two jumps that serve alike the lighter one is taken. Not negative.
     /// Unused in <see cref="Locomotion.Jump"/> mode.
     /// </summary>
     public float JumpHeightEffort { get; init; } = DefaultJumpHeightEffort;
@@ -130,6 +132,15 @@ public sealed record QuerySettings
     /// plans, whose stances face any way.
     /// </summary>
     public bool FaceJumps { get; init; } = true;
+
+    /// <summary>
+    /// In a walking search whose jumps are not turned afterwards (<see cref="FaceJumps"/> off), a jump travelling about
+    /// a metre or more whose stances do not face its way costs <see cref="PathQuery.UnfacedJumpCost"/> more, so the
+    /// search takes the roadmap's jumps that already face their way where one costs at most that much more. Set by
+    /// the repair (<see cref="JumpRepair.Adjust"/>) when it stops turning jumps because turned ones failed to animate;
+    /// off otherwise.
+    /// </summary>
+    internal bool PreferFacedJumps { get; init; }
 
     /// <summary>
     /// The shortest walk (metres, horizontally) <see cref="TightenJumps"/> adds before or after a jump (a hop over a

@@ -33,21 +33,47 @@ public sealed class JumpCostTests
     public void AJumpCostsItsFlightTheEffortAndTheHeightEffortPerMetreOfItsEnergyHeight()
     {
         // Straight up at √(2g) m/s: the takeoff's energy lifts the trunk 1 m, and that is the apex's rise.
-        float up = MathF.Sqrt(2f * 9.81f);
-        float flight = 2f * up / 9.81f;
-        var at = new RootPose(Vector3.Zero, Quaternion.Identity);
-        var vertical = new BallisticArc(at, at, new Vector3(0f, up, 0f), flight, 9.81f);
+        (BallisticArc vertical, BallisticArc leap) = SameFlight();
         Assert.That(vertical.EnergyHeight, Is.EqualTo(1f).Within(1e-4f));
         Assert.That(vertical.Apex.Y - vertical.Start.Y, Is.EqualTo(1f).Within(1e-4f));
 
         // A long leap to the same apex costs more: its horizontal speed is effort too.
-        var leap = new BallisticArc(at, new RootPose(new Vector3(6f, 0f, 0f), Quaternion.Identity), new Vector3(6f / flight, up, 0f), flight, 9.81f);
         Assert.That(leap.EnergyHeight, Is.GreaterThan(vertical.EnergyHeight + 0.5f));
 
         var settings = new QuerySettings { JumpEffort = 1.5f, JumpHeightEffort = 2f };
         Assert.That(settings.JumpCost(vertical), Is.EqualTo(vertical.FlightTime + 1.5f + 2f).Within(1e-4f));
         Assert.That(settings.JumpCost(leap), Is.EqualTo(leap.FlightTime + 1.5f + (2f * leap.EnergyHeight)).Within(1e-4f));
         Assert.That(new QuerySettings().JumpCost(leap), Is.EqualTo(leap.FlightTime + QuerySettings.DefaultJumpEffort + (QuerySettings.DefaultJumpHeightEffort * leap.EnergyHeight)).Within(1e-4f));
+    }
+
+    [Test]
+    public void ByDefaultAJumpCostsMoreTheHarderItPushes()
+    {
+        // Two jumps of the same flight time: the long leap pushes harder than the jump straight up and, by default,
+        // costs more beyond its flight (issue 24: not a flat effort); a hop at 3 m/s costs about 3.6 s, a leap at 7 m/s
+        // about 4.1 s, as the README says.
+        (BallisticArc vertical, BallisticArc leap) = SameFlight();
+        var defaults = new QuerySettings();
+        Assert.That(defaults.JumpCost(leap) - leap.FlightTime, Is.GreaterThan(defaults.JumpCost(vertical) - vertical.FlightTime + 0.1f));
+        Assert.That(Beyond(3f), Is.EqualTo(3.6f).Within(0.05f));
+        Assert.That(Beyond(7f), Is.EqualTo(4.1f).Within(0.05f));
+
+        // Seconds of walking a jump taking off at this speed costs beyond its flight.
+        float Beyond(float speed)
+        {
+            var hop = new BallisticArc(new RootPose(Vector3.Zero, Quaternion.Identity), new RootPose(new Vector3(1f, 0f, 0f), Quaternion.Identity), new Vector3(speed * 0.6f, speed * 0.8f, 0f), 2f * speed * 0.8f / 9.81f, 9.81f);
+            return defaults.JumpCost(hop) - hop.FlightTime;
+        }
+    }
+
+    /// <summary>A jump straight up at √(2g) m/s (energy height 1 m) and a 6 m leap of the same flight time and apex.</summary>
+    private static (BallisticArc Vertical, BallisticArc Leap) SameFlight()
+    {
+        float up = MathF.Sqrt(2f * 9.81f);
+        float flight = 2f * up / 9.81f;
+        var at = new RootPose(Vector3.Zero, Quaternion.Identity);
+        return (new BallisticArc(at, at, new Vector3(0f, up, 0f), flight, 9.81f),
+            new BallisticArc(at, new RootPose(new Vector3(6f, 0f, 0f), Quaternion.Identity), new Vector3(6f / flight, up, 0f), flight, 9.81f));
     }
 
     [Test]

@@ -61,6 +61,42 @@ public sealed class JumpFacingTests
         return (c, new QuerySettings { CanStand = c.Real.CanStand, Locomotion = level == "desert" ? Locomotion.WalkAndJump : Locomotion.Jump });
     }
 
+    /// <summary>
+    /// When the repair stops turning jumps (turned ones failed to animate), its searches prefer the roadmap's jumps that
+    /// already face their way (<see cref="QuerySettings.PreferFacedJumps"/>): each jump of a metre or more whose
+    /// stances do not face it costs <see cref="PathQuery.UnfacedJumpCost"/> more. On the desert the path searched
+    /// without turning flies jumps off their way; preferring faced jumps, the search takes fewer of them, and what it
+    /// pays for that in time is at most that cost per jump it avoids (the search's optimum with the extra cost).
+    /// </summary>
+    [Test]
+    public void ASearchWhoseJumpsAreNotTurnedPrefersJumpsThatFaceTheirWay()
+    {
+        (Case c, QuerySettings settings) = Request("desert");
+        QuerySettings unturned = settings with { FaceJumps = false, TightenJumps = false };
+        PlanResult searched = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, unturned);
+        PlanResult preferred = new PathQuery(c.Scene, c.Roadmap).Plan(c.From, c.To, unturned with { PreferFacedJumps = true });
+        Assert.That(searched.Status, Is.EqualTo(PlannerStatus.Exact), searched.Reason);
+        Assert.That(preferred.Status, Is.EqualTo(PlannerStatus.Exact), preferred.Reason);
+        int offBefore = Unfaced(searched);
+        int offAfter = Unfaced(preferred);
+        TestContext.Out.WriteLine($"searched: {searched.Moves.Count} moves, {offBefore} jumps off their way, {Cost(searched):0.0} s; preferring faced: {preferred.Moves.Count} moves, {offAfter} off, {Cost(preferred):0.0} s");
+        Assert.Multiple(() =>
+        {
+            Assert.That(offBefore, Is.GreaterThan(0), "the path searched without turning has a jump off its way (else this test shows nothing)");
+            Assert.That(offAfter, Is.LessThan(offBefore), "jumps off their way when faced ones are preferred");
+            Assert.That(Cost(preferred), Is.LessThanOrEqualTo(Cost(searched) + ((offBefore - offAfter) * PathQuery.UnfacedJumpCost) + 1e-2f), "seconds paid for the faced jumps");
+            Assert.That(preferred.Moves[0].From, Is.EqualTo(preferred.Start));
+            Assert.That(preferred.Moves[^1].To, Is.EqualTo(preferred.Goal));
+            for (int i = 1; i < preferred.Moves.Count; i++)
+            {
+                Assert.That(preferred.Moves[i].From, Is.EqualTo(preferred.Moves[i - 1].To), $"move {i} starts where move {i - 1} ends");
+            }
+        });
+
+        static int Unfaced(PlanResult plan) => plan.Jumps.Count(j => !JumpFacer.Faces(j.From, j.To, j.Arc));
+        float Cost(PlanResult plan) => plan.Moves.Sum(m => m is Jump j ? settings.JumpCost(j.Arc) : ((Walk)m).Length / ((Walk)m).Speed);
+    }
+
     [TestCase("desert")]
     [TestCase("pond")]
     public void EveryJumpOfAMetreOrMoreLeavesAndLandsFacingItsWay(string level)

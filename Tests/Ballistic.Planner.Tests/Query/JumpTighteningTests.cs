@@ -144,6 +144,7 @@ public sealed class JumpTighteningTests
             Assert.That(repair.Uncut, Is.EquivalentTo(path.Moves.SelectMany(m => m.CutFrom).Distinct()));
             Assert.That(repair.Adjust(settings).UncutJumps, Is.EquivalentTo(repair.Uncut));
             Assert.That(repair.Adjust(settings).TightenJumps, Is.True);
+            Assert.That(repair.Adjust(settings).PreferFacedJumps, Is.False, "jumps are still turned: no search needs to prefer faced ones");
         });
 
         for (int round = 1; round < JumpRepair.CutRounds; round++)
@@ -154,6 +155,7 @@ public sealed class JumpTighteningTests
         Assert.That(repair.CuttingAllowed, Is.False);
         Assert.That(repair.Adjust(settings).TightenJumps, Is.False);
         Assert.That(repair.Adjust(settings).FaceJumps, Is.False, "nor turned to face their way");
+        Assert.That(repair.Adjust(settings).PreferFacedJumps, Is.True, "the searches prefer jumps that already face their way instead");
         Assert.That(repair.IsExhausted(JumpRepair.CutRounds, 1), Is.False, "cut rounds do not count against the searches");
     }
 }
