@@ -106,6 +106,48 @@ public sealed class JumpCostTests
         }
     }
 
+    /// <summary>
+    /// A maze of two 0.8 m walls across a floor, each open past the other's end (issue 24: "a maze is walked through
+    /// its corridors when the detour is moderate"): from one side to the other, 8 m straight across both walls, the
+    /// corridor between them is about 10 m of walking. With the default costs (a jump of a metre's rise costs about
+    /// 4 s beyond its flight, some 6 m of walking) the skeleton walks the corridor; with jumps free it vaults the
+    /// walls, so the maze is one it could jump.
+    /// </summary>
+    [Test]
+    public void AMazeIsWalkedThroughItsCorridorsWhenTheDetourIsModerate()
+    {
+        Level level = new LevelBuilder("maze")
+            .AddFloor(-6f, -6f, 6f, 6f, 0f, n: 8)
+            .AddBox(new Vector3(-6f, 0f, -1.65f), new Vector3(0.5f, 0.8f, -1.35f))
+            .AddBox(new Vector3(-0.5f, 0f, 1.35f), new Vector3(6f, 0.8f, 1.65f))
+            .Build();
+        var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Seed = 3, MaxNodes = 500, Threads = 2, Locomotion = Locomotion.WalkAndJump }).Roadmap;
+        var query = new PathQuery(scene, roadmap);
+        Vector3 from = new(0f, 0f, -4f);
+        Vector3 to = new(0f, 0f, 4f);
+        PlanResult defaults = query.Plan(from, to, new QuerySettings());
+        PlanResult free = query.Plan(from, to, new QuerySettings { JumpEffort = 0f, JumpHeightEffort = 0f });
+
+        static bool Vaults(Move move) => move is Jump jump && (Across(jump, -1.5f) || Across(jump, 1.5f));
+        static bool Across(Jump jump, float z) => (jump.Arc.Start.Z - z) * (jump.Arc.End.Z - z) < 0f;
+        TestContext.Out.WriteLine($"defaults: {defaults.Moves.OfType<Walk>().Sum(w => w.Length):0.0} m walked, {defaults.Jumps.Count} jumps; free jumps: {free.Moves.OfType<Walk>().Sum(w => w.Length):0.0} m walked, {free.Jumps.Count} jumps");
+        Assert.Multiple(() =>
+        {
+            Assert.That(defaults.Status, Is.EqualTo(PlannerStatus.Exact), defaults.Reason);
+            Assert.That(free.Status, Is.EqualTo(PlannerStatus.Exact), free.Reason);
+            Assert.That(defaults.Moves.Any(Vaults), Is.False, "with the default costs no wall is vaulted");
+            Assert.That(defaults.Moves.OfType<Walk>().Sum(w => w.Length), Is.GreaterThan(9f), "the corridor walked, past both walls' open ends");
+            Assert.That(free.Moves.Any(Vaults), Is.True, "with jumps free a wall is vaulted");
+        });
+
+        foreach ((string name, PlanResult plan) in new[] { ("defaults", defaults), ("free", free) })
+        {
+            AuditReport audit = PlanAudit.Check($"maze {name}", scene, from, to, plan, null);
+            Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
+        }
+    }
+
     [Test]
     public void NegativeOrNonFiniteJumpCostsAreRefusedWithOneLine()
     {
