@@ -128,7 +128,7 @@ public partial class JumpRoadmap3D : Node3D
     /// What a jump costs on top of <see cref="JumpEffort"/> per metre its takeoff could lift the body (its energy
     /// height, |v|²/2g), in seconds of walking per metre: raise it to make the character walk round walls it could vault.
     /// </summary>
-    [Export(PropertyHint.Range, "0,20,0.1,or_greater,suffix:s/m")]
+    [Export(PropertyHint.Range, "0,20,0.05,or_greater,suffix:s/m")]
     public float JumpHeightEffort { get; set; } = QuerySettings.DefaultJumpHeightEffort;
 
     /// <summary>Publish the roadmap's jumps as one-way links on the world's navigation map at runtime.</summary>
