@@ -174,36 +174,32 @@ internal sealed class JumpFacer
     public const float StillOffLanding = 45f * MathF.PI / 180f;
 
     /// <summary>Whether <paramref name="jump"/> takes off or lands further off its way than a viewer accepts (<see cref="StillOffTakeoff"/>, <see cref="StillOffLanding"/>).</summary>
-    private static bool StillOff(Jump jump)
+    private static bool StillOff(Jump jump) => StillOff(jump.From, jump.To, jump.Arc);
+
+    /// <summary><see cref="StillOff(Jump)"/> of a jump from <paramref name="from"/> to <paramref name="to"/> on <paramref name="arc"/>.</summary>
+    private static bool StillOff(RoadmapNode from, RoadmapNode to, in BallisticArc arc)
     {
-        float facing = Way(jump.Arc);
-        return Off(jump.From, facing) > StillOffTakeoff || Off(jump.To, facing) > StillOffLanding;
+        float facing = Way(arc);
+        return Off(from, facing) > StillOffTakeoff || Off(to, facing) > StillOffLanding;
     }
 
     /// <summary>
     /// Whether a jump from <paramref name="from"/> to <paramref name="to"/> on <paramref name="arc"/> reads as facing
-    /// its way as it stands: shorter than <see cref="MinDistance"/> across (a hop may go any way), or taking off within
-    /// <see cref="StillOffTakeoff"/> and landing within <see cref="StillOffLanding"/> of its direction.
+    /// its way as it stands: not <see cref="Far(in BallisticArc)"/> (a hop may go any way), or not still off its way
+    /// (<see cref="StillOff(RoadmapNode, RoadmapNode, in BallisticArc)"/>).
     /// </summary>
-    internal static bool Faces(RoadmapNode from, RoadmapNode to, in BallisticArc arc)
-    {
-        Vector3 across = arc.End - arc.Start;
-        if (new Vector2(across.X, across.Z).Length() < MinDistance)
-        {
-            return true;
-        }
-
-        float facing = Way(arc);
-        return Off(from, facing) <= StillOffTakeoff && Off(to, facing) <= StillOffLanding;
-    }
+    internal static bool Faces(RoadmapNode from, RoadmapNode to, in BallisticArc arc) => !Far(arc) || !StillOff(from, to, arc);
 
     /// <summary>The yaw (radians about +Y, 0 along +Z) of <paramref name="arc"/>'s direction across, from takeoff to landing.</summary>
     private static float Way(BallisticArc arc) => MathF.Atan2(arc.End.X - arc.Start.X, arc.End.Z - arc.Start.Z);
 
     /// <summary>Whether <paramref name="jump"/> travels far enough across to need facing.</summary>
-    private static bool Far(Jump jump)
+    private static bool Far(Jump jump) => Far(jump.Arc);
+
+    /// <summary>Whether a jump on <paramref name="arc"/> travels <see cref="MinDistance"/> or more across, from takeoff to landing.</summary>
+    private static bool Far(in BallisticArc arc)
     {
-        Vector3 across = jump.Arc.End - jump.Arc.Start;
+        Vector3 across = arc.End - arc.Start;
         return new Vector2(across.X, across.Z).Length() >= MinDistance;
     }
 
@@ -545,7 +541,7 @@ internal sealed class JumpFacer
     /// taken off from a stance placed facing that way (<see cref="Yaws"/>) at the takeoff's height, to which the walk
     /// before the jump is steered again (<c>Replaces</c>), or a walk from <paramref name="current"/> leads. Steered
     /// like any jump (cones, speed limits, trunk sweep), and taken only when it takes off and lands within the eye's
-    /// bounds (<see cref="StillOff"/>); <c>null</c> when none is.
+    /// bounds (<see cref="StillOff(Jump)"/>); <c>null</c> when none is.
     /// </summary>
     private (Jump Jump, Walk Into, bool Replaces)? Swing(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
     {

@@ -51,7 +51,7 @@ public sealed class PathQuery
     private float _heightEffort;
 
     /// <summary>Whether this request walks, its jumps are not turned afterwards and faced ones are preferred (<see cref="QuerySettings.PreferFacedJumps"/>): jumps that do not face their way cost <see cref="UnfacedJumpCost"/> more.</summary>
-    private bool _unturned;
+    private bool _preferFaced;
     private bool _walking;
     private IReadOnlySet<int>? _noTakeoffs;
     private IReadOnlySet<int>? _noLandings;
@@ -282,7 +282,7 @@ public sealed class PathQuery
         _noLandings = settings.NoLandings;
         _effort = _walking ? settings.JumpEffort : 0f;
         _heightEffort = _walking ? settings.JumpHeightEffort : 0f;
-        _unturned = _walking && !settings.FaceJumps && settings.PreferFacedJumps;
+        _preferFaced = _walking && !settings.FaceJumps && settings.PreferFacedJumps;
         float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
 
         // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
@@ -592,7 +592,7 @@ public sealed class PathQuery
         bool walks = _walking && _roadmap.Walks.Count > 0;
         float effort = _effort;
         float heightEffort = _heightEffort;
-        bool unturned = _unturned;
+        bool preferFaced = _preferFaced;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -626,7 +626,7 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (unturned ? FacingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
@@ -832,7 +832,7 @@ public sealed class PathQuery
 
     /// <summary><see cref="JumpCost(in BallisticArc)"/> of a jump from <paramref name="from"/> to <paramref name="to"/>, plus <see cref="UnfacedJumpCost"/> when it does not face its way and will not be turned to.</summary>
     private float JumpCost(RoadmapNode from, RoadmapNode to, in BallisticArc arc) =>
-        JumpCost(arc) + (_unturned && !JumpFacer.Faces(from, to, arc) ? UnfacedJumpCost : 0f);
+        JumpCost(arc) + (_preferFaced && !JumpFacer.Faces(from, to, arc) ? UnfacedJumpCost : 0f);
 
     /// <summary>What roadmap edge <paramref name="edge"/> costs on top of its effort in a search whose jumps are not turned afterwards: <see cref="UnfacedJumpCost"/> when it does not face its way.</summary>
     private float FacingCost(int edge)
