@@ -28,6 +28,12 @@ public sealed class JumpAnimator : IJumpAnimator
 
     private const int MaxResamples = 64;
 
+    /// <summary>
+    /// Share of the way from letting go to the apex (and from the apex to taking hold) over which a limb that would
+    /// otherwise pass through the level moves to its flight pose (and from it): a quick retraction.
+    /// </summary>
+    private const float Retract = 0.25f;
+
     /// <summary>Heights (metres) the effector is lifted by at mid-step, tried in order until the swing is clear.</summary>
     private static readonly float[] StepLifts = [0.06f, 0.12f, 0.2f];
 
@@ -645,7 +651,6 @@ public sealed class JumpAnimator : IJumpAnimator
             }
         }
 
-        var angles = new float[times.Length][];
         var limbDof = new bool[rig.DofCount];
         foreach (RigLimb limb in Model.Limbs)
         {
@@ -656,20 +661,28 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         // Trunk angles (in no limb): takeoff → apex → landing.
-        for (int k = 0; k < times.Length; k++)
+        float[][] TrunkAngles(int[] at)
         {
-            int i = times[k];
-            angles[k] = new float[rig.DofCount];
-            for (int d = 0; d < rig.DofCount; d++)
+            var trunk = new float[at.Length][];
+            for (int k = 0; k < at.Length; k++)
             {
-                if (!limbDof[d])
+                int i = at[k];
+                trunk[k] = new float[rig.DofCount];
+                for (int d = 0; d < rig.DofCount; d++)
                 {
-                    angles[k][d] = i <= apex
-                        ? float.Lerp(takeoff.Angles[d], apexAngles[d], i / (float)apex)
-                        : float.Lerp(apexAngles[d], landing.Angles[d], (i - apex) / (float)(steps - apex));
+                    if (!limbDof[d])
+                    {
+                        trunk[k][d] = i <= apex
+                            ? float.Lerp(takeoff.Angles[d], apexAngles[d], i / (float)apex)
+                            : float.Lerp(apexAngles[d], landing.Angles[d], (i - apex) / (float)(steps - apex));
+                    }
                 }
             }
+
+            return trunk;
         }
+
+        float[][] angles = TrunkAngles(times);
 
         // Each limb: held angles in its contact phases; in flight, break → apex → make, re-sampling the apex pose of
         // every limb that would put a bone through the level. Every fine step is checked (angles between frames are
@@ -683,6 +696,18 @@ public sealed class JumpAnimator : IJumpAnimator
         {
             limbApex[l] = (float[])apexAngles.Clone();
             pending.Add(l);
+        }
+
+        // A limb that passes through the level whatever its apex pose may be retracted quickly: it reaches its apex
+        // pose Retract of the way from letting go to the apex and leaves it as late before taking hold (a leg lifted
+        // clear of a ledge's face right after takeoff, put down onto the ledge only as the body comes over it).
+        var quickUp = new int[limbs];
+        var quickDown = new int[limbs];
+        var quick = new bool[limbs];
+        for (int l = 0; l < limbs; l++)
+        {
+            quickUp[l] = Math.Min(apex, breaks[l] + Math.Max(1, (int)MathF.Round(Retract * (apex - breaks[l]))));
+            quickDown[l] = Math.Max(apex, makes[l] - Math.Max(1, (int)MathF.Round(Retract * (makes[l] - apex))));
         }
 
         bool Airborne(int l, int i) => !(held[l].ContainsKey(i) && (i <= breaks[l] || i >= makes[l]));
@@ -703,6 +728,19 @@ public sealed class JumpAnimator : IJumpAnimator
             float[] from = held[l][breaks[l]];
             float[] to = held[l][makes[l]];
             float[] top = limbApex[l];
+            if (quick[l] && apex > breaks[l] && apex < makes[l])
+            {
+                float u = i <= apex
+                    ? Math.Clamp((i - breaks[l]) / (float)(quickUp[l] - breaks[l]), 0f, 1f)
+                    : Math.Clamp((i - quickDown[l]) / (float)(makes[l] - quickDown[l]), 0f, 1f);
+                foreach (int d in limb.ChainDofs)
+                {
+                    target[d] = i <= apex ? float.Lerp(from[d], top[d], u) : float.Lerp(top[d], to[d], u);
+                }
+
+                return;
+            }
+
             foreach (int d in limb.ChainDofs)
             {
                 target[d] = apex > breaks[l] && apex < makes[l]
@@ -713,9 +751,21 @@ public sealed class JumpAnimator : IJumpAnimator
 
         float[] probe = new float[rig.DofCount];
         var hit = new bool[limbs];
-        for (int attempt = 0; attempt <= MaxResamples && pending.Count > 0; attempt++)
+        int attempts = (2 * MaxResamples) + 2;
+        for (int n = 0; n < attempts && pending.Count > 0; n++)
         {
-            // Re-sampling: the tucked and contact poses first, then random samples of the limb's database.
+            // Re-sampling: the tucked and contact poses first, then random samples of the limb's database; the
+            // limbs none of them keeps clear try them again retracted quickly.
+            int attempt = n % (MaxResamples + 1);
+            if (n == MaxResamples + 1)
+            {
+                foreach (int l in pending)
+                {
+                    quick[l] = true;
+                    limbApex[l] = (float[])apexAngles.Clone();
+                }
+            }
+
             foreach (int l in pending)
             {
                 hit[l] = false;
@@ -772,6 +822,23 @@ public sealed class JumpAnimator : IJumpAnimator
             }
 
             pending.RemoveAll(l => !hit[l]);
+        }
+
+        if (quick.Any(q => q))
+        {
+            // The quick limbs' corners become frames, so that the clip's linear interpolation between frames moves
+            // them as was checked.
+            for (int l = 0; l < limbs; l++)
+            {
+                if (quick[l])
+                {
+                    grid.Add(quickUp[l]);
+                    grid.Add(quickDown[l]);
+                }
+            }
+
+            times = [.. grid];
+            angles = TrunkAngles(times);
         }
 
         // The frames: every limb at its chosen poses.
