@@ -209,6 +209,17 @@ internal sealed class WalkGait
     /// </summary>
     private static readonly float[] Along = [0f, -0.25f, 0.25f, -0.5f, 0.5f, -0.75f, 0.75f, -1f];
 
+    /// <summary>
+    /// Shifts along the walk (shares of the step) tried at each sideways share when none of <see cref="Along"/>'s
+    /// is held: a leg reaching far ahead of or behind its hip (a spider's) stands with its trunk a short way from a
+    /// ledge's edge, its nominal foothold over the drop, and is set down up to two steps nearer the hip, on the ledge.
+    /// </summary>
+    private static readonly float[] FarAlong = [1f, 1.25f, -1.25f, 1.5f, -1.5f, 2f, -2f];
+
+    /// <summary>The (sideways share, shift along) pairs a foothold is tried at, in order.</summary>
+    private static readonly (float Share, float Shift)[] FootholdTries =
+        [.. Inward.SelectMany(i => Along.Select(a => (i, a))), .. Inward.SelectMany(i => FarAlong.Select(a => (i, a)))];
+
     /// <summary>Fine steps between the checks that a candidate foothold can be held, clear of the level, over the time it is held.</summary>
     private const int HoldCheck = 2 * Substeps;
 
@@ -2332,7 +2343,7 @@ internal sealed class WalkGait
 
             checks.Add(to);
             int[] steps = [.. checks];
-            foreach ((float share, float shift) in Inward.SelectMany(i => Along.Select(a => (i, a))))
+            foreach ((float share, float shift) in FootholdTries)
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
                 float reach = _stepHeight + (slope * new Vector2(column.X - ground.X, column.Z - ground.Z).Length());
