@@ -3,7 +3,7 @@ using Ballistic.Planner.IO;
 namespace Ballistic.Planner.Gltf;
 
 /// <summary>A glTF file cannot be read or written; the message names the file and what is wrong with it.</summary>
-public sealed class GltfException : BallisticInputException
+internal sealed class GltfException : BallisticInputException
 {
     /// <summary>Creates the exception with a message naming the problem.</summary>
     public GltfException(string message)

@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.IO;
 
 /// <summary>An output file cannot be written; the message names the file the user gave and why. Nothing was replaced.</summary>
-public sealed class OutputFileException : Exception
+internal sealed class OutputFileException : Exception
 {
     /// <summary>Creates the exception with a message naming the file and the problem.</summary>
     public OutputFileException(string message)

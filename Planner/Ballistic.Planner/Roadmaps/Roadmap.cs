@@ -133,7 +133,7 @@ public sealed class Roadmap
     }
 
     /// <summary>The walks (directed), in insertion order; empty for a roadmap baked without walking.</summary>
-    public IReadOnlyList<RoadmapWalk> Walks { get; }
+    internal IReadOnlyList<RoadmapWalk> Walks { get; }
 
     /// <summary>Compressed rows of the outgoing walks, as <see cref="OutgoingOffsets"/> for jumps: node i's walks are entries <c>WalkOffsets[i]</c> to <c>WalkOffsets[i + 1] − 1</c>.</summary>
     public ReadOnlySpan<int> WalkOffsets => _walkOffsets;

@@ -8,4 +8,4 @@ namespace Ballistic.Planner.Roadmaps;
 /// <param name="To">Node walked to.</param>
 /// <param name="Length">Length of the ground path, metres.</param>
 /// <param name="Duration">Length over the character's walking speed, seconds.</param>
-public readonly record struct RoadmapWalk(int From, int To, float Length, float Duration);
+internal readonly record struct RoadmapWalk(int From, int To, float Length, float Duration);

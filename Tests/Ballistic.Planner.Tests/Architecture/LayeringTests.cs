@@ -32,10 +32,12 @@ public sealed class LayeringTests
 
     /// <summary>
     /// The public surface only shrinks (issue 22: a game needs about 15–20 types): a type made public again, or a new
-    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; helpers the
+    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; planner 69 on
+    /// 2026-12-02 (the glTF level loader and its exception, the output-file exception, roadmap walk records and steering
+    /// failure counters are the CLI's and the runtime's, not a game's); helpers the
     /// tools and tests use are internal, visible to them by <c>InternalsVisibleTo</c>.
     /// </summary>
-    [TestCase("planner", 74)]
+    [TestCase("planner", 69)]
     [TestCase("runtime", 61)]
     public void ThePublicSurfaceDoesNotGrow(string library, int most)
     {
