@@ -24,9 +24,25 @@ public static class GltfLevelWriter
             if (!materials.TryGetValue((mesh.Material, mesh.Color), out Material? material))
             {
                 material = GltfWrite.Material(root, mesh.Material.Name, mesh.Color, roughness: 0.9f);
+                var extras = new JsonObject();
                 if (mesh.Material.Friction is float friction)
                 {
-                    material.Extras = new JsonObject { ["friction"] = friction };
+                    extras["friction"] = friction;
+                }
+
+                if (mesh.Material.TravelCost != 1f)
+                {
+                    extras["travelCost"] = mesh.Material.TravelCost;
+                }
+
+                if (mesh.Material.EnterCost != 0f)
+                {
+                    extras["enterCost"] = mesh.Material.EnterCost;
+                }
+
+                if (extras.Count > 0)
+                {
+                    material.Extras = extras;
                 }
 
                 materials.Add((mesh.Material, mesh.Color), material);

@@ -12,7 +12,9 @@ namespace Ballistic.Planner.Levels;
 /// <summary>
 /// Reads a level from a glTF 2.0 file (<c>.glb</c> or <c>.gltf</c>): every triangle mesh of the default scene with
 /// its node transforms applied. A material sets its surface friction with <c>"extras": {"friction": μ}</c>, or with
-/// <c>mu=μ</c> or <c>friction=μ</c> in its name; otherwise the character's default applies. The file is read and
+/// <c>mu=μ</c> or <c>friction=μ</c> in its name; otherwise the character's default applies. Its
+/// <c>"extras": {"travelCost": c, "enterCost": s}</c> set what crossing it costs a search (<see cref="LevelMaterial.TravelCost"/>,
+/// <see cref="LevelMaterial.EnterCost"/>). The file is read and
 /// validated by SharpGLTF (<see cref="GltfModel"/>: what it repaired is <see cref="Level.Repaired"/>); the scene is
 /// walked once (a node a scene reaches twice is an error naming it), and the vertices and triangles are counted
 /// against <see cref="GltfLoadOptions"/> before they are read.
@@ -44,7 +46,7 @@ internal static partial class GltfLevelLoader
     /// <summary>Builds a level from an already read model, within the model's <see cref="GltfModel.Options"/>.</summary>
     /// <param name="model">The glTF, read and validated.</param>
     /// <param name="source">Where the level comes from, for messages and <see cref="Level.Source"/>.</param>
-    /// <exception cref="GltfException">The scene lists a node twice, a friction is not a finite number ≥ 0, or the meshes exceed a limit.</exception>
+    /// <exception cref="GltfException">The scene lists a node twice, a friction is not a finite number ≥ 0, a travel or enter cost is out of range, or the meshes exceed a limit.</exception>
     /// <exception cref="LevelException">A vertex is not finite or lies beyond <see cref="LevelBuilder.MaxCoordinate"/>, an index is out of range, or no triangle is left.</exception>
     internal static Level Build(GltfModel model, string source)
     {
@@ -169,8 +171,23 @@ internal static partial class GltfLevelLoader
             throw new GltfException($"{model.Name}: material '{MessageText.Printable(name)}' sets friction {f.ToString(CultureInfo.InvariantCulture)}; friction must be a finite number ≥ 0.");
         }
 
-        return new LevelMaterial(name, friction);
+        float travelCost = ExtraNumber(model, material, name, "travelCost") ?? 1f;
+        float enterCost = ExtraNumber(model, material, name, "enterCost") ?? 0f;
+        if (LevelMaterial.CostProblem(travelCost, enterCost) is string problem)
+        {
+            throw new GltfException($"{model.Name}: material '{MessageText.Printable(name)}': its {problem}.");
+        }
+
+        return new LevelMaterial(name, friction) { TravelCost = travelCost, EnterCost = enterCost };
     }
+
+    /// <summary>The number a material's <c>extras</c> give under <paramref name="key"/>, or null when they give none; anything but a number is refused in one line.</summary>
+    private static float? ExtraNumber(GltfModel model, Material material, string name, string key) =>
+        material.Extras is JsonObject extras && extras[key] is JsonNode extra
+            ? extra is JsonValue v && v.GetValueKind() == JsonValueKind.Number
+                ? (float)v.GetValue<double>()
+                : throw new GltfException($"{model.Name}: material '{MessageText.Printable(name)}' sets extras.{key} to {Describe(extra)}, not a number.")
+            : null;
 
     /// <summary>A short description of a JSON value for messages: "the string \"x\"", "the number 2.0", "a list of 3", "an object", "null".</summary>
     private static string Describe(JsonNode node)

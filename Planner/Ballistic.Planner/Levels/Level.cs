@@ -22,6 +22,7 @@ public sealed class Level
         Materials = materials;
         DroppedDegenerateTriangles = droppedDegenerate;
         Source = source;
+        HasSurfaceCosts = Array.Exists(materials, m => m.HasCost);
         Bounds = Aabb.Empty;
         foreach (Triangle t in triangles)
         {
@@ -65,6 +66,9 @@ public sealed class Level
     /// on this level (the level never changes). Thread-safe: two threads asking at once may both build it; one is kept.
     /// </summary>
     internal TriangleBvh Bvh => LazyInitializer.EnsureInitialized(ref _bvh, () => new TriangleBvh(Triangles));
+
+    /// <summary>True when some material costs more than plain ground to cross or enter (<see cref="LevelMaterial.TravelCost"/>, <see cref="LevelMaterial.EnterCost"/>).</summary>
+    internal bool HasSurfaceCosts { get; }
 
     /// <summary>The friction of triangle <paramref name="triangle"/>: its material's override, else <paramref name="defaultFriction"/>.</summary>
     public float FrictionOf(int triangle, float defaultFriction) =>

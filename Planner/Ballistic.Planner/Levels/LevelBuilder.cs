@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Numerics;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.IO;
 
 namespace Ballistic.Planner.Levels;
 
@@ -41,7 +42,7 @@ public sealed class LevelBuilder
     /// <param name="indices">Three vertex indices per triangle, counter-clockwise seen from the front.</param>
     /// <param name="toWorld">Local-to-world transform (System.Numerics row-vector convention).</param>
     /// <param name="material">Material of every triangle of the mesh.</param>
-    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>, an index is out of range, or the index count is not a multiple of three.</exception>
+    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>, an index is out of range, the index count is not a multiple of three, or the material's costs are out of range.</exception>
     public LevelBuilder AddMesh(string meshName, ReadOnlySpan<Vector3> positions, ReadOnlySpan<int> indices, Matrix4x4 toWorld, LevelMaterial material)
     {
         ArgumentNullException.ThrowIfNull(material);
@@ -86,7 +87,7 @@ public sealed class LevelBuilder
     }
 
     /// <summary>Adds one world-space triangle.</summary>
-    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>.</exception>
+    /// <exception cref="LevelException">A vertex is NaN or infinite or lies beyond ±<see cref="MaxCoordinate"/>, or the material's costs are out of range.</exception>
     public LevelBuilder AddTriangle(Triangle triangle, LevelMaterial material)
     {
         ArgumentNullException.ThrowIfNull(material);
@@ -136,6 +137,11 @@ public sealed class LevelBuilder
     {
         if (!_materialIds.TryGetValue(material, out int index))
         {
+            if (LevelMaterial.CostProblem(material.TravelCost, material.EnterCost) is string problem)
+            {
+                throw new LevelException($"Material '{MessageText.Printable(material.Name)}' in {Source}: its {problem}.");
+            }
+
             index = _materials.Count;
             _materials.Add(material);
             _materialIds.Add(material, index);

@@ -20,7 +20,9 @@ namespace Ballistic.Planner.Query;
 /// jump, passing the request's <see cref="QuerySettings.CanStand"/>), and every new move is checked by the same
 /// steering methods as the roadmap's: the walks by <see cref="Walking.WalkSteering.Steer"/>, the jump by
 /// <see cref="ParabolaSteering.Steer"/> (friction cones, speed limits, trunk sweep). The first pair of takeoff and
-/// landing that passes, most ground walked first, replaces the jump; a jump with none is kept. Moves set aside by
+/// landing that passes, most ground walked first, replaces the jump; a jump with none is kept. On a level with surface
+/// costs (<see cref="Levels.LevelMaterial.TravelCost"/>) a jump is cut down only over ground of its stance's own
+/// material or of no cost. Moves set aside by
 /// the caller are never used. New stances get ids from a counter, in the order they are placed: deterministic for
 /// the same path and set-aside moves.
 /// </remarks>
@@ -62,6 +64,7 @@ internal sealed class JumpTightener
     private readonly PlanningScene _scene;
     private readonly ReachTest _reach;
     private readonly List<Vector3> _ground = [];
+    private readonly SurfaceCosts? _surfaces;
     private int _nextId;
 
     /// <summary>Creates the tightener of a scene's jumps.</summary>
@@ -69,6 +72,7 @@ internal sealed class JumpTightener
     {
         _scene = scene;
         _reach = new ReachTest(scene.Steering.Limits);
+        _surfaces = scene.Level.HasSurfaceCosts ? new SurfaceCosts(scene.Level, scene.Bvh) : null;
     }
 
     /// <summary>
@@ -358,6 +362,22 @@ internal sealed class JumpTightener
     {
         var result = new List<Vector3>();
         float walkable = MathF.Min(_scene.Walking.WalkableDistance(from, toward, _ground), distance - MinFlight);
+        if (_surfaces is not null && _ground.Count > 0)
+        {
+            // A jump is cut down over its stance's own material only: where the ground turns to another that costs
+            // something (mud, water), the search chose to fly over it, and a walk there would cost more than it saves.
+            int own = _surfaces.MaterialBelow(_ground[0]);
+            foreach (Vector3 p in _ground)
+            {
+                int m = _surfaces.MaterialBelow(p);
+                if (m != own && m >= 0 && _scene.Level.Materials[m].HasCost)
+                {
+                    walkable = MathF.Min(walkable, Along(from, p));
+                    break;
+                }
+            }
+        }
+
         for (float s = walkable - EdgeMargin; s >= minWalk && result.Count < CandidatesPerSide; s -= CandidateSpacing)
         {
             // The traced ground point nearest s along the line (the points are at most PathSpacing apart, in order).

@@ -61,6 +61,15 @@ public sealed class PathQuery
     /// <summary>An edge of one request only (start or goal off the roadmap): a jump's arc or a walk, with its search cost in seconds.</summary>
     private readonly record struct Extra(int From, int To, float Cost, BallisticArc Arc, Walk? Walk);
 
+    /// <summary>The level's surface costs, or <c>null</c> on a level without any (the plain costs, bit for bit).</summary>
+    private readonly SurfaceCosts? _surfaces;
+
+    /// <summary>Per roadmap walk, its cost with the surface costs (NaN until first needed); null without surface costs.</summary>
+    private readonly float[]? _walkCosts;
+
+    /// <summary>Per roadmap jump edge, the enter cost of its landing (NaN until first needed); null without surface costs.</summary>
+    private readonly float[]? _landingCosts;
+
     /// <summary>Creates a query over a roadmap baked for the scene's level and character.</summary>
     /// <exception cref="ArgumentException">The roadmap was baked for another level or character.</exception>
     public PathQuery(PlanningScene scene, Roadmap roadmap)
@@ -79,6 +88,15 @@ public sealed class PathQuery
 
         _scene = scene;
         _roadmap = roadmap;
+        if (scene.Level.HasSurfaceCosts)
+        {
+            _surfaces = new SurfaceCosts(scene.Level, scene.Bvh);
+            _walkCosts = new float[roadmap.Walks.Count];
+            _landingCosts = new float[roadmap.Edges.Count];
+            Array.Fill(_walkCosts, float.NaN);
+            Array.Fill(_landingCosts, float.NaN);
+        }
+
         _reach = new ReachTest(scene.Steering.Limits);
         int count = roadmap.Nodes.Count + 2;
         _cost = new float[count];
@@ -593,6 +611,7 @@ public sealed class PathQuery
         float effort = _effort;
         float heightEffort = _heightEffort;
         bool preferFaced = _preferFaced;
+        bool surfaces = _surfaces is not null;
         float[] cost = _cost;
         int[] reached = _reached;
         int[] closed = _closed;
@@ -626,14 +645,14 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
-                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
                 {
                     for (int i = walkOffsets[node], end = walkOffsets[node + 1]; i < end; i++)
                     {
-                        Relax(node, walkTargets[i], here + walkTimes[i], walkEntries[i], FromWalk, ref heuristic);
+                        Relax(node, walkTargets[i], here + (surfaces ? RoadmapWalkCost(walkEntries[i]) : walkTimes[i]), walkEntries[i], FromWalk, ref heuristic);
                     }
                 }
             }
@@ -832,7 +851,37 @@ public sealed class PathQuery
 
     /// <summary><see cref="JumpCost(in BallisticArc)"/> of a jump from <paramref name="from"/> to <paramref name="to"/>, plus <see cref="UnfacedJumpCost"/> when it does not face its way and will not be turned to.</summary>
     private float JumpCost(RoadmapNode from, RoadmapNode to, in BallisticArc arc) =>
-        JumpCost(arc) + (_preferFaced && !JumpFacer.Faces(from, to, arc) ? UnfacedJumpCost : 0f);
+        JumpCost(arc) + (_preferFaced && !JumpFacer.Faces(from, to, arc) ? UnfacedJumpCost : 0f) + (_surfaces?.Jump(from, to) ?? 0f);
+
+    /// <summary>The enter cost of roadmap edge <paramref name="edge"/>'s landing surface (<see cref="SurfaceCosts.Jump"/>), computed once per query object.</summary>
+    private float LandingCost(int edge)
+    {
+        float known = _landingCosts![edge];
+        if (float.IsNaN(known))
+        {
+            RoadmapEdge e = _roadmap.Edges[edge];
+            known = _landingCosts[edge] = _surfaces!.Jump(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To]);
+        }
+
+        return known;
+    }
+
+    /// <summary>
+    /// Roadmap walk <paramref name="walk"/>'s cost with the surface costs (<see cref="SurfaceCosts.Walk"/>), computed
+    /// once per query object: its duration, over the ground straight between its stances' contact centres.
+    /// </summary>
+    private float RoadmapWalkCost(int walk)
+    {
+        float known = _walkCosts![walk];
+        if (float.IsNaN(known))
+        {
+            RoadmapWalk w = _roadmap.Walk(walk);
+            RoadmapNode from = _roadmap.Nodes[w.From];
+            known = _walkCosts[walk] = _surfaces!.Walk([from.ContactCentre, _roadmap.Nodes[w.To].ContactCentre], w.Duration, _surfaces.MaterialOf(from));
+        }
+
+        return known;
+    }
 
     /// <summary>What roadmap edge <paramref name="edge"/> costs on top of its effort in a search whose jumps are not turned afterwards: <see cref="UnfacedJumpCost"/> when it does not face its way.</summary>
     private float FacingCost(int edge)
@@ -850,8 +899,12 @@ public sealed class PathQuery
     /// </summary>
     internal const float UnfacedJumpCost = 8f;
 
-    /// <summary>A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds; turning in place and speeding up are not counted.</summary>
-    private static float WalkCost(Walk walk) => walk.Length / walk.Speed;
+    /// <summary>
+    /// A walk's cost in the search: its length over its speed (the roadmap's walk durations), seconds, with the surface
+    /// costs of the ground along its path; turning in place and speeding up are not counted.
+    /// </summary>
+    private float WalkCost(Walk walk) =>
+        _surfaces is null ? walk.Length / walk.Speed : _surfaces.Walk([.. walk.Path], walk.Length / walk.Speed, _surfaces.MaterialOf(walk.From));
 
     /// <summary>
     /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that

@@ -99,11 +99,13 @@ public sealed class SourceGeometry
     /// <param name="toWorld">Local-to-world transform, row-vector convention (see <see cref="FromBasis"/>).</param>
     /// <param name="winding">Which way round the front faces run: <see cref="FaceWinding.Clockwise"/> for Godot's.</param>
     /// <param name="friction">Coulomb friction μ of these surfaces, or <c>null</c> for the character's default.</param>
+    /// <param name="travelCost">What a second walked on these surfaces costs a path search, in seconds of plain walking (<see cref="LevelMaterial.TravelCost"/>; 1 for none extra).</param>
+    /// <param name="enterCost">Seconds a path search adds for stepping or landing onto these surfaces from others (<see cref="LevelMaterial.EnterCost"/>; 0 for none).</param>
     /// <exception cref="LevelException">
     /// The vertex count is not a multiple of three, a vertex is not finite or lands beyond ±<see cref="LevelBuilder.MaxCoordinate"/>
-    /// metres, the transform is not finite, not affine or flattens space, or the friction is out of range; the message names the source.
+    /// metres, the transform is not finite, not affine or flattens space, or the friction or a cost is out of range; the message names the source.
     /// </exception>
-    public SourceGeometry AddFaces(string source, ReadOnlySpan<Vector3> faces, Matrix4x4 toWorld, FaceWinding winding, float? friction = null)
+    public SourceGeometry AddFaces(string source, ReadOnlySpan<Vector3> faces, Matrix4x4 toWorld, FaceWinding winding, float? friction = null, float travelCost = 1f, float enterCost = 0f)
     {
         ArgumentNullException.ThrowIfNull(source);
         string name = SourceName(source);
@@ -126,7 +128,7 @@ public sealed class SourceGeometry
             }
         }
 
-        LevelMaterial material = Material(name, friction);
+        LevelMaterial material = Material(name, friction, travelCost, enterCost);
         bool reverse = (winding == FaceWinding.Clockwise) ^ Mirrors(name, toWorld);
         int[] indices = new int[faces.Length];
         for (int i = 0; i < faces.Length; i += 3)
@@ -146,8 +148,10 @@ public sealed class SourceGeometry
     /// <param name="size">Full extents along the local X, Y and Z axes, metres (a <c>BoxShape3D</c>'s <c>Size</c>).</param>
     /// <param name="toWorld">Local-to-world transform, row-vector convention (see <see cref="FromBasis"/>).</param>
     /// <param name="friction">Coulomb friction μ of its faces, or <c>null</c> for the character's default.</param>
-    /// <exception cref="LevelException">The size is negative or not finite, the transform is not finite, not affine or flattens space, a corner lands too far, or the friction is out of range; the message names the source.</exception>
-    public SourceGeometry AddBox(string source, Vector3 size, Matrix4x4 toWorld, float? friction = null)
+    /// <param name="travelCost">What a second walked on its faces costs a path search, in seconds of plain walking (<see cref="LevelMaterial.TravelCost"/>; 1 for none extra).</param>
+    /// <param name="enterCost">Seconds a path search adds for stepping or landing onto its faces from others (<see cref="LevelMaterial.EnterCost"/>; 0 for none).</param>
+    /// <exception cref="LevelException">The size is negative or not finite, the transform is not finite, not affine or flattens space, a corner lands too far, or the friction or a cost is out of range; the message names the source.</exception>
+    public SourceGeometry AddBox(string source, Vector3 size, Matrix4x4 toWorld, float? friction = null, float travelCost = 1f, float enterCost = 0f)
     {
         ArgumentNullException.ThrowIfNull(source);
         string name = SourceName(source);
@@ -156,7 +160,7 @@ public sealed class SourceGeometry
             throw new LevelException($"Source '{name}' in {Name}: the box size ({Format(size)}) must be finite and not negative.");
         }
 
-        LevelMaterial material = Material(name, friction);
+        LevelMaterial material = Material(name, friction, travelCost, enterCost);
         bool reverse = Mirrors(name, toWorld);
         Vector3 h = size * 0.5f;
         Vector3[] corners =
@@ -231,11 +235,18 @@ public sealed class SourceGeometry
         return determinant < 0d;
     }
 
-    private LevelMaterial Material(string name, float? friction)
+    private LevelMaterial Material(string name, float? friction, float travelCost, float enterCost)
     {
+        if (LevelMaterial.CostProblem(travelCost, enterCost) is string problem)
+        {
+            throw new LevelException($"Source '{name}' in {Name}: its {problem}.");
+        }
+
+        bool costed = travelCost != 1f || enterCost != 0f;
+        string costs = costed ? string.Create(CultureInfo.InvariantCulture, $", travel cost {travelCost:R}, enter cost {enterCost:R}") : "";
         if (friction is not float mu)
         {
-            return DefaultMaterial;
+            return costed ? new LevelMaterial("default" + costs, null) { TravelCost = travelCost, EnterCost = enterCost } : DefaultMaterial;
         }
 
         if (!(mu >= 0f && mu <= MaxFriction))
@@ -243,7 +254,7 @@ public sealed class SourceGeometry
             throw new LevelException($"Source '{name}' in {Name}: friction {mu.ToString(CultureInfo.InvariantCulture)} must be finite and between 0 and {MaxFriction.ToString(CultureInfo.InvariantCulture)}.");
         }
 
-        return new LevelMaterial(string.Create(CultureInfo.InvariantCulture, $"friction {mu:R}"), mu);
+        return new LevelMaterial(string.Create(CultureInfo.InvariantCulture, $"friction {mu:R}") + costs, mu) { TravelCost = travelCost, EnterCost = enterCost };
     }
 
     private static string SourceName(string source) => source.Length == 0 ? "(unnamed)" : OneLine.Of(source);

@@ -126,6 +126,38 @@ public sealed class SourceGeometryTests
         Assert.That(icy, Is.Not.EqualTo(plain), "friction is part of the level fingerprint");
     }
 
+    /// <summary>
+    /// Costs per source, as the Godot node reads them from a node's <c>jump_travel_cost</c> and <c>jump_enter_cost</c>
+    /// metadata: each source's faces get a material with those costs; sources with equal costs and friction share one;
+    /// costs leave the fingerprint (and so a baked roadmap) as it was; out of range, refused naming the source.
+    /// </summary>
+    [Test]
+    public void SurfaceCostsArePerSourceAndLeaveTheFingerprint()
+    {
+        Level level = new SourceGeometry("swamp")
+            .AddFaces("Mud", GodotPlaneFaces, Matrix4x4.Identity, FaceWinding.Clockwise, travelCost: 4f)
+            .AddBox("Rock", Vector3.One, Matrix4x4.CreateTranslation(3f, 0.5f, 0f))
+            .AddBox("Pool", Vector3.One, Matrix4x4.CreateTranslation(-3f, 0.5f, 0f), friction: 0.1f, enterCost: 6f)
+            .Build();
+        LevelMaterial mud = level.Materials[level.MaterialIndices[0]];
+        LevelMaterial rock = level.Materials[level.MaterialIndices[2]];
+        LevelMaterial pool = level.Materials[level.MaterialIndices[14]];
+        Assert.Multiple(() =>
+        {
+            Assert.That((mud.TravelCost, mud.EnterCost, mud.Friction), Is.EqualTo((4f, 0f, (float?)null)));
+            Assert.That((rock.TravelCost, rock.EnterCost), Is.EqualTo((1f, 0f)));
+            Assert.That((pool.TravelCost, pool.EnterCost, pool.Friction), Is.EqualTo((1f, 6f, (float?)0.1f)));
+            Assert.That(level.Materials, Has.Count.EqualTo(3));
+        });
+
+        string plain = new SourceGeometry("swamp").AddFaces("Mud", GodotPlaneFaces, Matrix4x4.Identity, FaceWinding.Clockwise).Fingerprint;
+        string costly = new SourceGeometry("swamp").AddFaces("Mud", GodotPlaneFaces, Matrix4x4.Identity, FaceWinding.Clockwise, travelCost: 4f, enterCost: 2f).Fingerprint;
+        Assert.That(costly, Is.EqualTo(plain), "costs are not part of the level fingerprint: changing them needs no rebake");
+
+        LevelException refused = Assert.Throws<LevelException>(() => new SourceGeometry("swamp").AddBox("Level/Pool", Vector3.One, Matrix4x4.Identity, enterCost: -3f))!;
+        Assert.That(refused.Message, Is.EqualTo("Source 'Level/Pool' in swamp: its enter cost -3 must be a number of seconds from 0 to 10000."));
+    }
+
     private static readonly Matrix4x4 Flat = Matrix4x4.CreateScale(1f, 0f, 1f);
 
     private static readonly Matrix4x4 Projective = new(1f, 0f, 0f, 0.5f, 0f, 1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, 1f);

@@ -4,6 +4,7 @@ using System.Text.Json.Nodes;
 using Ballistic.Authoring.Gltf;
 using Ballistic.Authoring.Levels;
 using Ballistic.Planner.Gltf;
+using Ballistic.Planner.IO;
 using Ballistic.Planner.Levels;
 using SharpGLTF.Schema2;
 using SharpGLTF.Transforms;
@@ -78,6 +79,35 @@ public sealed class GltfLevelTests
         byte[] glb = GltfLevelWriter.ToBytes([named]);
         Level level = GltfLevelLoader.Build(GltfModel.Parse(glb, "n.glb", null), "n.glb");
         Assert.That(level.FrictionOf(0, 1f), Is.EqualTo(0.3f));
+    }
+
+    [Test]
+    public void SurfaceCostsInTheMaterialsExtrasAreWrittenAndRead()
+    {
+        var mud = Floor with { Material = new LevelMaterial("mud", 0.4f) { TravelCost = 3f, EnterCost = 2.5f } };
+        byte[] glb = GltfLevelWriter.ToBytes([mud, Ice]);
+        Level level = GltfLevelLoader.Build(GltfModel.Parse(glb, "c.glb", null), "c.glb");
+        LevelMaterial read = level.Materials[level.MaterialIndices[0]];
+        LevelMaterial ice = level.Materials[level.MaterialIndices[2]];
+        Assert.Multiple(() =>
+        {
+            Assert.That((read.Name, read.Friction, read.TravelCost, read.EnterCost), Is.EqualTo(("mud", (float?)0.4f, 3f, 2.5f)));
+            Assert.That((ice.TravelCost, ice.EnterCost), Is.EqualTo((1f, 0f)), "no extras, no cost");
+            Assert.That(level.Fingerprint, Is.EqualTo(GltfLevelLoader.Build(GltfModel.Parse(GltfLevelWriter.ToBytes([Floor with { Material = new LevelMaterial("mud", 0.4f) }, Ice]), "c.glb", null), "c.glb").Fingerprint),
+                "costs change no roadmap: the fingerprint leaves them out");
+        });
+    }
+
+    [TestCase("\"travelCost\": \"high\"", "c.glb: material 'sand' sets extras.travelCost to the string \"high\", not a number.")]
+    [TestCase("\"travelCost\": 0.5", "c.glb: material 'sand': its travel cost 0.5 must be a number from 1 to 1000.")]
+    [TestCase("\"enterCost\": -2", "c.glb: material 'sand': its enter cost -2 must be a number of seconds from 0 to 10000.")]
+    public void SurfaceCostsThatAreNotNumbersInRangeAreRefusedInOneLine(string extra, string message)
+    {
+        (JsonObject root, byte[] bin) = Fuzz.FuzzInputs.SplitGlb(GltfLevelWriter.ToBytes([Floor]));
+        root["buffers"] = new JsonArray(new JsonObject { ["byteLength"] = bin.Length, ["uri"] = "data:application/octet-stream;base64," + Convert.ToBase64String(bin) });
+        ((JsonObject)((JsonArray)root["materials"]!)[0]!)["extras"] = JsonNode.Parse("{" + extra + "}");
+        Assert.That(() => GltfLevelLoader.Build(GltfModel.Parse(Encoding.UTF8.GetBytes(root.ToJsonString()), "c.glb", null), "c.glb"),
+            Throws.InstanceOf<BallisticInputException>().With.Message.EqualTo(message));
     }
 
     [Test]

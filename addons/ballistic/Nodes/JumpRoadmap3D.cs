@@ -61,6 +61,18 @@ public partial class JumpRoadmap3D : Node3D
     /// <summary>Node metadata giving a source's Coulomb friction μ (a float); the character's default otherwise.</summary>
     public const string FrictionMeta = "jump_friction";
 
+    /// <summary>
+    /// Node metadata giving what a second walked on a source costs path searches, in seconds of plain walking (a
+    /// float ≥ 1, like a navigation region's travel cost; 1 otherwise). Costs change routes, not the baked roadmap.
+    /// </summary>
+    public const string TravelCostMeta = "jump_travel_cost";
+
+    /// <summary>
+    /// Node metadata giving the seconds path searches add for stepping or landing onto a source from other surfaces (a
+    /// float ≥ 0, like a navigation region's enter cost; 0 otherwise).
+    /// </summary>
+    public const string EnterCostMeta = "jump_enter_cost";
+
     private BakeJob? _job;
     private string _lastBakeError = "";
     private string? _staleness;
@@ -374,24 +386,31 @@ public partial class JumpRoadmap3D : Node3D
             return;
         }
 
-        float? friction = node.HasMeta(FrictionMeta) ? node.GetMeta(FrictionMeta).AsSingle() : null;
+        // The float metadata of a node, or null when it has none.
+        static float? Meta(Node source, string key) => source.HasMeta(key) ? source.GetMeta(key).AsSingle() : null;
+
+        float? friction = Meta(node, FrictionMeta);
+        float? travelCost = Meta(node, TravelCostMeta);
+        float? enterCost = Meta(node, EnterCostMeta);
         if (ParsedGeometryType != ParsedGeometry.StaticColliders && node is MeshInstance3D { Mesh: { } mesh } instance)
         {
-            geometry.AddFaces(instance.GetPath().ToString(), mesh.GetFaces().Select(GodotMath.ToNumerics).ToArray(), instance.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, friction);
+            geometry.AddFaces(instance.GetPath().ToString(), mesh.GetFaces().Select(GodotMath.ToNumerics).ToArray(), instance.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, friction, travelCost ?? 1f, enterCost ?? 0f);
         }
 
         if (ParsedGeometryType != ParsedGeometry.MeshInstances && node is CollisionShape3D { Disabled: false, Shape: { } shape } collision
             && collision.GetParent() is StaticBody3D body && (body.CollisionLayer & CollisionMask) != 0)
         {
             string name = collision.GetPath().ToString();
-            float? bodyFriction = friction ?? (body.HasMeta(FrictionMeta) ? body.GetMeta(FrictionMeta).AsSingle() : null);
+            float? bodyFriction = friction ?? Meta(body, FrictionMeta);
+            float bodyTravel = travelCost ?? Meta(body, TravelCostMeta) ?? 1f;
+            float bodyEnter = enterCost ?? Meta(body, EnterCostMeta) ?? 0f;
             switch (shape)
             {
                 case BoxShape3D box:
-                    geometry.AddBox(name, box.Size.ToNumerics(), collision.GlobalTransform.ToNumerics(), bodyFriction);
+                    geometry.AddBox(name, box.Size.ToNumerics(), collision.GlobalTransform.ToNumerics(), bodyFriction, bodyTravel, bodyEnter);
                     break;
                 case ConcavePolygonShape3D concave:
-                    geometry.AddFaces(name, concave.GetFaces().Select(GodotMath.ToNumerics).ToArray(), collision.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, bodyFriction);
+                    geometry.AddFaces(name, concave.GetFaces().Select(GodotMath.ToNumerics).ToArray(), collision.GlobalTransform.ToNumerics(), FaceWinding.Clockwise, bodyFriction, bodyTravel, bodyEnter);
                     break;
                 default:
                     GD.PushWarning($"{name}: {shape.GetClass()} is not parsed as jump source geometry (boxes and concave polygons are); give the level a mesh or one of those.");
