@@ -97,6 +97,8 @@ public sealed class SurfaceCostTests
             Assert.That(MudPoints(plain), Is.GreaterThan(0), "on plain ground the route walks straight across the strip");
             Assert.That(MudPoints(mud), Is.Zero, "with the mud costly no walk crosses it");
             Assert.That(mud.Jumps, Has.Count.EqualTo(1), "it jumps the strip");
+            Assert.That(WalkRefusals.Of(mudScene, mud.Moves).Single().Reason, Does.Contain("over 'mud' (travel cost 6, enter cost 0 s)"), "the report says why the jump was not walked");
+            Assert.That(WalkRefusals.Of(plainScene, mud.Moves).Single().Reason, Does.Not.Contain("over"), "no cost, no mention");
             Assert.That(round.Status, Is.EqualTo(PlannerStatus.Exact), round.Reason);
             Assert.That(round.Jumps, Is.Empty, "with jumps costly too, no jump");
             Assert.That(MudPoints(round), Is.Zero, "nor a walk through the mud");
