@@ -19,7 +19,7 @@ namespace Ballistic.Planner.Levels;
 /// walked once (a node a scene reaches twice is an error naming it), and the vertices and triangles are counted
 /// against <see cref="GltfLoadOptions"/> before they are read.
 /// </summary>
-internal static partial class GltfLevelLoader
+public static partial class GltfLevelLoader
 {
     /// <summary>Loads the level.</summary>
     /// <param name="path">The <c>.glb</c> or <c>.gltf</c> file.</param>

@@ -16,7 +16,7 @@ namespace Ballistic.Planner.Planning;
 public sealed record BakeResult(Roadmap Roadmap, PlannerStatus Status, string Reason, TimeSpan Elapsed, int? StartNode, int? GoalNode, long SteeringCalls, long SamplesDrawn)
 {
     /// <summary>How many steering calls failed, by reason (the original planner's failure counters).</summary>
-    internal IReadOnlyDictionary<SteeringFailure, long> SteeringRejections { get; init; } = new Dictionary<SteeringFailure, long>();
+    public IReadOnlyDictionary<SteeringFailure, long> SteeringRejections { get; init; } = new Dictionary<SteeringFailure, long>();
 
     /// <summary>Where the requested start put the start node (or why it could not), when a start was given.</summary>
     public EndpointPlacement? StartPlacement { get; init; }

@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.Steering;
 
 /// <summary>Why the parabola steering method found no jump between two root poses.</summary>
-internal enum SteeringFailure
+public enum SteeringFailure
 {
     /// <summary>No failure: a valid jump was found.</summary>
     None = 0,

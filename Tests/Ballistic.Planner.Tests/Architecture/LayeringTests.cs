@@ -32,12 +32,13 @@ public sealed class LayeringTests
 
     /// <summary>
     /// The public surface only shrinks (issue 22: a game needs about 15–20 types): a type made public again, or a new
-    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; planner 69 on
-    /// 2026-12-02 (the glTF level loader and its exception, the output-file exception, roadmap walk records and steering
-    /// failure counters are the CLI's and the runtime's, not a game's); helpers the
+    /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; planner 71 on
+    /// 2026-12-02 (the glTF loader's exception, the output-file exception and roadmap walk records are the CLI's and the
+    /// runtime's, not a game's; the loader itself stays public: a game outside Godot loads its level with it, as
+    /// .ci/game does); helpers the
     /// tools and tests use are internal, visible to them by <c>InternalsVisibleTo</c>.
     /// </summary>
-    [TestCase("planner", 69)]
+    [TestCase("planner", 71)]
     [TestCase("runtime", 61)]
     public void ThePublicSurfaceDoesNotGrow(string library, int most)
     {
