@@ -25,7 +25,7 @@ public static class PlaytestMapRenderer
     {
         ArgumentNullException.ThrowIfNull(result);
         (int width, int height, Func<Vector3, Vector2> map) = Frame(result);
-        byte[] rgb = SvgPlanRenderer.HeightMapRgb(result.Kind.Scene.Bvh, result.Kind.Scene.Level.Bounds, width, height);
+        byte[] rgb = SvgPlanRenderer.HeightMapRgb(result.Kind.Scene.Bvh, result.Kind.Scene.Level.Bounds, width, height, result.Kind.Scene.Level);
         string png = Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, rgb));
         var svg = new StringBuilder();
         svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height + 40}\" viewBox=\"0 0 {width} {height + 40}\" font-family=\"sans-serif\" font-size=\"13\">\n"));

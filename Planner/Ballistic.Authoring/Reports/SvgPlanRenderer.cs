@@ -5,6 +5,7 @@ using Ballistic.Planner.Animation;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;
+using Ballistic.Planner.Levels;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
@@ -122,8 +123,10 @@ public static class SvgPlanRenderer
         svg.Append(Invariant($"<text x=\"{Margin}\" y=\"62\">{result.Jumps.Count} jumps, {result.TotalFlightTime:0.00} s of flight; {walkCount} walks, {result.Walks.Sum(w => w.Length):0.0} m; {result.TotalDuration:0.00} s in all; roadmap {report.RoadmapNodes} nodes, {report.RoadmapEdges} jumps (seed {report.Seed})</text>\n"));
 
         // Top view.
-        svg.Append(Invariant($"<text x=\"{topX}\" y=\"{topY - 8}\" font-weight=\"bold\">Top view (X right, Z down; shading = height {bounds.Min.Y:0.0}…{bounds.Max.Y:0.0} m)</text>\n"));
-        string map = HeightMapPng(bvh, bounds, Math.Max(2, (int)MathF.Min(topW, 480f)), Math.Max(2, (int)(MathF.Min(topW, 480f) * topH / topW)));
+        Level level = report.Scene.Level;
+        string costly = level.HasSurfaceCosts ? "; red: surfaces with a travel or enter cost" : "";
+        svg.Append(Invariant($"<text x=\"{topX}\" y=\"{topY - 8}\" font-weight=\"bold\">Top view (X right, Z down; shading = height {bounds.Min.Y:0.0}…{bounds.Max.Y:0.0} m{costly})</text>\n"));
+        string map = HeightMapPng(bvh, bounds, Math.Max(2, (int)MathF.Min(topW, 480f)), Math.Max(2, (int)(MathF.Min(topW, 480f) * topH / topW)), level);
         svg.Append(Invariant($"<image x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{map}\"/>\n"));
         svg.Append(Invariant($"<rect x=\"{topX:0.#}\" y=\"{topY:0.#}\" width=\"{topW:0.#}\" height=\"{topH:0.#}\" fill=\"none\" stroke=\"#555\"/>\n"));
         string roadmapLegend = "roadmap jumps";
@@ -500,14 +503,19 @@ public static class SvgPlanRenderer
         return depth > 0f && bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit hit) ? hit.Point.Y : null;
     }
 
-    private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height) =>
-        Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, HeightMapRgb(bvh, bounds, width, height)));
+    private static string HeightMapPng(TriangleBvh bvh, Aabb bounds, int width, int height, Level level) =>
+        Convert.ToBase64String(PngEncoder.EncodeRgb(width, height, HeightMapRgb(bvh, bounds, width, height, level)));
 
-    /// <summary>The level seen from above, shaded by height and slope: RGB bytes, row by row, world X → right, world Z → down.</summary>
-    internal static byte[] HeightMapRgb(TriangleBvh bvh, Aabb bounds, int width, int height)
+    /// <summary>
+    /// The level seen from above, shaded by height and slope: RGB bytes, row by row, world X → right, world Z → down;
+    /// with <paramref name="level"/> (whose triangles <paramref name="bvh"/> holds) having surface costs, the surfaces
+    /// with a travel or enter cost tinted red (<see cref="LevelMaterial.TravelCost"/>).
+    /// </summary>
+    internal static byte[] HeightMapRgb(TriangleBvh bvh, Aabb bounds, int width, int height, Level? level = null)
     {
         var heights = new float[width * height];
         var normals = new Vector3[width * height];
+        bool[]? costly = level is { HasSurfaceCosts: true } ? new bool[width * height] : null;
         float top = bounds.Max.Y + 1f;
         float depth = top - bounds.Min.Y + 2f;
         for (int j = 0; j < height; j++)
@@ -519,6 +527,10 @@ public static class SvgPlanRenderer
                 bool hit = bvh.Raycast(new Vector3(x, top, z), new Vector3(0f, -depth, 0f), 1f, out RayHit result);
                 heights[(j * width) + i] = hit ? result.Point.Y : float.NaN;
                 normals[(j * width) + i] = hit ? result.Normal : Vector3.UnitY;
+                if (costly is not null && hit)
+                {
+                    costly[(j * width) + i] = level!.Materials[level.MaterialIndices[result.Triangle]].HasCost;
+                }
             }
         }
 
@@ -539,6 +551,10 @@ public static class SvgPlanRenderer
                 Vector3 high = new(0.96f, 0.9f, 0.78f);
                 float shade = 0.55f + (0.45f * MathF.Max(0f, Vector3.Dot(normals[p], light)));
                 color = Vector3.Lerp(low, high, t) * shade;
+                if (costly?[p] == true)
+                {
+                    color = Vector3.Lerp(color, new Vector3(0.85f, 0.25f, 0.2f) * shade, 0.55f);
+                }
             }
 
             rgb[3 * p] = (byte)Math.Clamp(color.X * 255f, 0f, 255f);

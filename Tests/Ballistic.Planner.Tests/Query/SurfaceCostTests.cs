@@ -112,6 +112,34 @@ public sealed class SurfaceCostTests
         }
     }
 
+    /// <summary>The plan picture's top view tints the costly surfaces red (and only on a level with costs).</summary>
+    [Test]
+    public void TheTopViewTintsCostlySurfacesRed()
+    {
+        Level plain = MudFloor(new LevelMaterial("mud", null));
+        Level mud = MudFloor(new LevelMaterial("mud", null) { EnterCost = 3f });
+        const int size = 48;
+        byte[] untinted = Ballistic.Authoring.Reports.SvgPlanRenderer.HeightMapRgb(plain.Bvh, plain.Bounds, size, size);
+        byte[] plainToo = Ballistic.Authoring.Reports.SvgPlanRenderer.HeightMapRgb(plain.Bvh, plain.Bounds, size, size, plain);
+        byte[] tinted = Ballistic.Authoring.Reports.SvgPlanRenderer.HeightMapRgb(mud.Bvh, mud.Bounds, size, size, mud);
+
+        // Pixel columns run over x from −6 to 6 m, rows over z: the middle pixel lies on the mud, one at x = −4 m beside it.
+        static (int R, int G, int B) At(byte[] rgb, float x, float z)
+        {
+            int i = (int)((x + 6f) / 12f * size);
+            int j = (int)((z + 6f) / 12f * size);
+            int p = 3 * ((j * size) + i);
+            return (rgb[p], rgb[p + 1], rgb[p + 2]);
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(plainToo, Is.EqualTo(untinted), "a level without costs is drawn as before");
+            Assert.That(At(tinted, 0f, 0f).R - At(tinted, 0f, 0f).G, Is.GreaterThan(At(untinted, 0f, 0f).R - At(untinted, 0f, 0f).G + 40), "the mud is drawn redder");
+            Assert.That(At(tinted, -4f, 0f), Is.EqualTo(At(untinted, -4f, 0f)), "plain ground is drawn as before");
+        });
+    }
+
     [TestCase(0.5f, 0f, "travel cost 0.5 must be a number from 1 to 1000")]
     [TestCase(float.NaN, 0f, "travel cost NaN must be a number from 1 to 1000")]
     [TestCase(1f, -1f, "enter cost -1 must be a number of seconds from 0 to 10000")]
