@@ -31,7 +31,7 @@ public static class PlaytestMapRenderer
         svg.Append(Invariant($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height + 40}\" viewBox=\"0 0 {width} {height + 40}\" font-family=\"sans-serif\" font-size=\"13\">\n"));
         svg.Append(Invariant($"<rect width=\"{width}\" height=\"{height + 40}\" fill=\"#ffffff\"/>\n"));
         svg.Append(Invariant($"<text x=\"8\" y=\"18\">{Escape(Title(result))}</text>\n"));
-        svg.Append(Invariant($"<text x=\"8\" y=\"34\" fill=\"#555\">blue: jumps taken · dashed teal: walks · white: spawns · green: targets reached · red ×: targets failed (line from where the agent stood)</text>\n"));
+        svg.Append(Invariant($"<text x=\"8\" y=\"34\" fill=\"#555\">{Escape(Legend(result.Kind.Scene.Level))}</text>\n"));
         svg.Append(Invariant($"<image x=\"0\" y=\"40\" width=\"{width}\" height=\"{height}\" href=\"data:image/png;base64,{png}\"/>\n"));
         svg.Append("<g transform=\"translate(0,40)\">\n");
         foreach (PlaytestAgent agent in result.Agents)
@@ -72,6 +72,11 @@ public static class PlaytestMapRenderer
         svg.Append("</g>\n</svg>\n");
         return svg.ToString();
     }
+
+    /// <summary>The map's legend: its marks, and the red tint of surfaces with a travel or enter cost on a level that has them.</summary>
+    internal static string Legend(Ballistic.Planner.Levels.Level level) =>
+        "blue: jumps taken · dashed teal: walks · white: spawns · green: targets reached · red ×: targets failed (line from where the agent stood)"
+        + (level.HasSurfaceCosts ? " · red ground: a travel or enter cost" : "");
 
     /// <summary>The map as a PNG image: the SVG, title and legend included, drawn by <see cref="SvgRaster"/>.</summary>
     public static byte[] Png(PlaytestResult result) => Png(Svg(result));

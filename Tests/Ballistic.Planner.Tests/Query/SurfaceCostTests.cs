@@ -134,6 +134,8 @@ public sealed class SurfaceCostTests
 
         Assert.Multiple(() =>
         {
+            Assert.That(Ballistic.Authoring.Playtest.PlaytestMapRenderer.Legend(mud), Does.EndWith(" · red ground: a travel or enter cost"), "the playtest map's legend says what red ground is");
+            Assert.That(Ballistic.Authoring.Playtest.PlaytestMapRenderer.Legend(plain), Does.Not.Contain("red ground"));
             Assert.That(plainToo, Is.EqualTo(untinted), "a level without costs is drawn as before");
             Assert.That(At(tinted, 0f, 0f).R - At(tinted, 0f, 0f).G, Is.GreaterThan(At(untinted, 0f, 0f).R - At(untinted, 0f, 0f).G + 40), "the mud is drawn redder");
             Assert.That(At(tinted, -4f, 0f), Is.EqualTo(At(untinted, -4f, 0f)), "plain ground is drawn as before");
