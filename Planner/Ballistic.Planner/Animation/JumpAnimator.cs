@@ -728,7 +728,7 @@ public sealed class JumpAnimator : IJumpAnimator
             float[] from = held[l][breaks[l]];
             float[] to = held[l][makes[l]];
             float[] top = limbApex[l];
-            if (quick[l] && apex > breaks[l] && apex < makes[l])
+            if (quick[l])
             {
                 float u = i <= apex
                     ? Math.Clamp((i - breaks[l]) / (float)(quickUp[l] - breaks[l]), 0f, 1f)
@@ -752,6 +752,7 @@ public sealed class JumpAnimator : IJumpAnimator
         float[] probe = new float[rig.DofCount];
         var hit = new bool[limbs];
         int attempts = (2 * MaxResamples) + 2;
+        var stuck = new List<int>();
         for (int n = 0; n < attempts && pending.Count > 0; n++)
         {
             // Re-sampling: the tucked and contact poses first, then random samples of the limb's database; the
@@ -759,6 +760,9 @@ public sealed class JumpAnimator : IJumpAnimator
             int attempt = n % (MaxResamples + 1);
             if (n == MaxResamples + 1)
             {
+                // Only a limb in the air on both sides of the apex can be retracted; the others have failed.
+                stuck.AddRange(pending.Where(l => !(apex > breaks[l] && apex < makes[l])));
+                pending.RemoveAll(stuck.Contains);
                 foreach (int l in pending)
                 {
                     quick[l] = true;
@@ -850,7 +854,7 @@ public sealed class JumpAnimator : IJumpAnimator
             }
         }
 
-        foreach (int l in pending)
+        foreach (int l in pending.Concat(stuck).Order())
         {
             colliding++;
             problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} passes through the level in flight ({firstHit[l]:0.000} s after takeoff) whatever pose it takes"));

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace Ballistic.Planner.Levels;
 
 /// <summary>
@@ -34,7 +36,7 @@ public sealed record LevelMaterial(string Name, float? Friction)
 
     /// <summary>Null when <paramref name="travelCost"/> and <paramref name="enterCost"/> are accepted, else what is wrong with them.</summary>
     internal static string? CostProblem(float travelCost, float enterCost) =>
-        !(travelCost >= 1f && travelCost <= MaxTravelCost) ? $"travel cost {travelCost.ToString(System.Globalization.CultureInfo.InvariantCulture)} must be a number from 1 to {MaxTravelCost.ToString(System.Globalization.CultureInfo.InvariantCulture)}"
-        : !(enterCost >= 0f && enterCost <= MaxEnterCost) ? $"enter cost {enterCost.ToString(System.Globalization.CultureInfo.InvariantCulture)} must be a number of seconds from 0 to {MaxEnterCost.ToString(System.Globalization.CultureInfo.InvariantCulture)}"
+        !(travelCost >= 1f && travelCost <= MaxTravelCost) ? $"travel cost {travelCost.ToString(CultureInfo.InvariantCulture)} must be a number from 1 to {MaxTravelCost.ToString(CultureInfo.InvariantCulture)}"
+        : !(enterCost >= 0f && enterCost <= MaxEnterCost) ? $"enter cost {enterCost.ToString(CultureInfo.InvariantCulture)} must be a number of seconds from 0 to {MaxEnterCost.ToString(CultureInfo.InvariantCulture)}"
         : null;
 }

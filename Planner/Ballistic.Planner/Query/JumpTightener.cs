@@ -72,7 +72,7 @@ internal sealed class JumpTightener
     {
         _scene = scene;
         _reach = new ReachTest(scene.Steering.Limits);
-        _surfaces = scene.Level.HasSurfaceCosts ? new SurfaceCosts(scene.Level, scene.Bvh) : null;
+        _surfaces = SurfaceCosts.Of(scene);
     }
 
     /// <summary>

@@ -88,9 +88,9 @@ public sealed class PathQuery
 
         _scene = scene;
         _roadmap = roadmap;
-        if (scene.Level.HasSurfaceCosts)
+        _surfaces = SurfaceCosts.Of(scene);
+        if (_surfaces is not null)
         {
-            _surfaces = new SurfaceCosts(scene.Level, scene.Bvh);
             _walkCosts = new float[roadmap.Walks.Count];
             _landingCosts = new float[roadmap.Edges.Count];
             Array.Fill(_walkCosts, float.NaN);
@@ -904,7 +904,7 @@ public sealed class PathQuery
     /// costs of the ground along its path; turning in place and speeding up are not counted.
     /// </summary>
     private float WalkCost(Walk walk) =>
-        _surfaces is null ? walk.Length / walk.Speed : _surfaces.Walk([.. walk.Path], walk.Length / walk.Speed, _surfaces.MaterialOf(walk.From));
+        _surfaces is null ? walk.Length / walk.Speed : _surfaces.Walk(walk.Path, walk.Length / walk.Speed, _surfaces.MaterialOf(walk.From));
 
     /// <summary>
     /// Shortcutting: from each pose of the path, the farthest later pose reached by one direct walk, or failing that

@@ -55,42 +55,51 @@ internal sealed class SurfaceCosts(Level level, TriangleBvh bvh)
     /// seconds, starting on material <paramref name="start"/> (−1 for unknown): the time on each material times its
     /// travel cost, plus the enter cost of each material stepped onto.
     /// </summary>
-    public float Walk(ReadOnlySpan<Vector3> path, float time, int start)
+    public float Walk(IReadOnlyList<Vector3> path, float time, int start)
     {
         float length = 0f;
-        for (int i = 1; i < path.Length; i++)
-        {
-            length += Vector3.Distance(path[i - 1], path[i]);
-        }
-
-        if (!(length > 1e-6f))
-        {
-            return time;
-        }
-
         float weighted = 0f;
         float entered = 0f;
         int current = start;
-        for (int i = 1; i < path.Length; i++)
+        foreach ((int m, float stretch) in Ground(path))
+        {
+            length += stretch;
+            weighted += stretch * (m >= 0 ? level.Materials[m].TravelCost : 1f);
+            if (m >= 0 && m != current)
+            {
+                if (current >= 0)
+                {
+                    entered += level.Materials[m].EnterCost;
+                }
+
+                current = m;
+            }
+        }
+
+        return length > 1e-6f ? (time * weighted / length) + entered : time;
+    }
+
+    /// <summary>The costly materials (<see cref="LevelMaterial.HasCost"/>) under <paramref name="path"/> (world metres, on the ground), each once, in index order.</summary>
+    public IEnumerable<LevelMaterial> Costly(IReadOnlyList<Vector3> path) =>
+        Ground(path).Select(g => g.Material).Where(m => m >= 0 && level.Materials[m].HasCost).Distinct().Order().Select(m => level.Materials[m]);
+
+    /// <summary>
+    /// The ground along <paramref name="path"/>, read every <see cref="Spacing"/> at most: for each stretch in order,
+    /// the material below its middle (−1 for none) and its length, metres.
+    /// </summary>
+    private IEnumerable<(int Material, float Length)> Ground(IReadOnlyList<Vector3> path)
+    {
+        for (int i = 1; i < path.Count; i++)
         {
             float segment = Vector3.Distance(path[i - 1], path[i]);
             int samples = Math.Max(1, (int)MathF.Ceiling(segment / Spacing));
             for (int k = 0; k < samples; k++)
             {
-                int m = MaterialBelow(Vector3.Lerp(path[i - 1], path[i], (k + 0.5f) / samples));
-                weighted += segment / samples * (m >= 0 ? level.Materials[m].TravelCost : 1f);
-                if (m >= 0 && m != current)
-                {
-                    if (current >= 0)
-                    {
-                        entered += level.Materials[m].EnterCost;
-                    }
-
-                    current = m;
-                }
+                yield return (MaterialBelow(Vector3.Lerp(path[i - 1], path[i], (k + 0.5f) / samples)), segment / samples);
             }
         }
-
-        return (time * weighted / length) + entered;
     }
+
+    /// <summary>The surface costs of <paramref name="scene"/>'s level, or <c>null</c> when it has none.</summary>
+    public static SurfaceCosts? Of(Planning.PlanningScene scene) => scene.Level.HasSurfaceCosts ? new SurfaceCosts(scene.Level, scene.Bvh) : null;
 }

@@ -41,31 +41,10 @@ internal static class WalkRefusals
     /// ", over MATERIAL (travel cost c, enter cost s)" for each costly material (<see cref="Levels.LevelMaterial.TravelCost"/>,
     /// <see cref="Levels.LevelMaterial.EnterCost"/>) the ground under <paramref name="walk"/> is made of; empty on a level without such costs.
     /// </summary>
-    private static string Costly(PlanningScene scene, Walk walk)
-    {
-        if (!scene.Level.HasSurfaceCosts)
-        {
-            return "";
-        }
-
-        var costs = new SurfaceCosts(scene.Level, scene.Bvh);
-        var seen = new SortedSet<int>();
-        IReadOnlyList<System.Numerics.Vector3> path = walk.Path;
-        for (int i = 1; i < path.Count; i++)
-        {
-            int samples = Math.Max(1, (int)MathF.Ceiling(System.Numerics.Vector3.Distance(path[i - 1], path[i]) / SurfaceCosts.Spacing));
-            for (int k = 0; k < samples; k++)
-            {
-                int material = costs.MaterialBelow(System.Numerics.Vector3.Lerp(path[i - 1], path[i], (k + 0.5f) / samples));
-                if (material >= 0 && scene.Level.Materials[material].HasCost)
-                {
-                    seen.Add(material);
-                }
-            }
-        }
-
-        return string.Concat(seen.Select(m => scene.Level.Materials[m]).Select(m => Text($", over '{IO.MessageText.Printable(m.Name)}' (travel cost {m.TravelCost:0.##}, enter cost {m.EnterCost:0.##} s)")));
-    }
+    private static string Costly(PlanningScene scene, Walk walk) =>
+        SurfaceCosts.Of(scene) is { } costs
+            ? string.Concat(costs.Costly(walk.Path).Select(m => Text($", over '{IO.MessageText.Printable(m.Name)}' (travel cost {m.TravelCost:0.##}, enter cost {m.EnterCost:0.##} s)")))
+            : "";
 
     /// <summary>Why the walking steering refused a walk, in words with <paramref name="limits"/>' numbers.</summary>
     public static string Reason(WalkFailure failure, WalkingLimits limits)

@@ -242,7 +242,7 @@ public sealed class SourceGeometry
             throw new LevelException($"Source '{name}' in {Name}: its {problem}.");
         }
 
-        bool costed = travelCost != 1f || enterCost != 0f;
+        bool costed = (DefaultMaterial with { TravelCost = travelCost, EnterCost = enterCost }).HasCost;
         string costs = costed ? string.Create(CultureInfo.InvariantCulture, $", travel cost {travelCost:R}, enter cost {enterCost:R}") : "";
         if (friction is not float mu)
         {
