@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -10,7 +11,7 @@ namespace Ballistic.Planner.Tests.Planning;
 
 /// <summary>
 /// The short hops a small jumper needs (issue 24's frog on a beam and on stair treads): a 1.7 m hop along a 0.3 m
-/// beam is one jump between the placed stances (end to end along the beam, not yet: see the test); a
+/// beam is one jump between the placed stances, and end to end along the beam every hop lands on it; a
 /// flight of eight 17.6 cm risers and 28 cm treads, 1.41 m high in all (above the frog's highest hop, 1.27 m at
 /// 5 m/s), is hopped up tread by tread. Each plan's hops pass the physics checks.
 /// </summary>
@@ -19,12 +20,7 @@ public sealed class ShortHopTests
     private const float Riser = 0.176f;
     private const float Tread = 0.28f;
 
-    private static readonly Lazy<PlanningScene> Beam = new(() => PlanningScene.Create(new LevelBuilder("beam")
-        .AddBox(new Vector3(-6f, 0f, -1.5f), new Vector3(-3f, 1f, 1.5f))
-        .AddBox(new Vector3(3f, 0f, -1.5f), new Vector3(6f, 1f, 1.5f))
-        .AddBox(new Vector3(-3f, 0.7f, -0.15f), new Vector3(3f, 1f, 0.15f))
-        .AddFloor(-10f, -10f, 10f, 10f, 0f)
-        .Build(), CharacterPresets.Frog()));
+    private static readonly Lazy<PlanningScene> Beam = new(() => BeamWith(b => b));
 
     private static readonly Lazy<PlanningScene> Stairs = new(() =>
     {
@@ -61,21 +57,72 @@ public sealed class ShortHopTests
     }
 
     /// <summary>
-    /// Not yet: from one end of the beam to the other (5.6 m) the frog hops down to the floor (3.1 m), across it in
-    /// short hops and back up, though hops along the beam exist (<see cref="AHopAlongABeamIsOneJump"/>): samples are
-    /// drawn by area, the 1.8 m² beam is under half a percent of this level's surfaces, and the bake stops at its
-    /// first connection, which runs over the floor. (Tried: half of a focused corridor's samples drawn per contact
-    /// surface, the beam as often as the floor: the first connection still ran over the floor.) This test fails once
-    /// every hop lands on the beam: then make it assert that.
+    /// From one end of the beam to the other (5.6 m) the frog hops along the beam, every hop landing on it, in three
+    /// hops. Before, it hopped down to the floor (3.1 m), across it in short hops and back up, six hops in all: random
+    /// samples are drawn by area, the 1.8 m² beam is under half a percent of this level's surfaces (4 of the first 82
+    /// nodes, none between −2.8 and 1.9 m), and the bake stops at its first connection, which ran over the floor. Now
+    /// the bake, once connected, adds the stances of the straight line from start to goal where it runs on open
+    /// ground (<see cref="RoadmapBaker.LineStances"/>), and the hops along the beam cost less.
     /// </summary>
     [Test]
-    public void NotYetABeamIsHoppedAlongFromEndToEnd()
+    public void ABeamIsHoppedAlongFromEndToEnd()
     {
         PlanResult plan = Plan(Beam.Value, new Vector3(-2.8f, 1f, 0f), new Vector3(2.8f, 1f, 0f));
-        bool onBeam = plan.Jumps.All(j => j.Landing.ContactCentre.Y > 0.9f && MathF.Abs(j.Landing.ContactCentre.Z) < 0.2f);
-        Assert.That(onBeam, Is.False, "every hop lands on the beam now: assert it instead");
-        Assert.That(plan.Jumps.Min(j => j.Landing.ContactCentre.Y), Is.LessThan(0.1f), "down to the floor, as measured");
+        Assert.That(plan.Jumps.Select(j => j.Landing.ContactCentre), Has.All.Matches<Vector3>(c => c.Y > 0.9f && MathF.Abs(c.Z) < 0.2f), "every hop lands on the beam");
+        Assert.That(plan.Jumps, Has.Count.InRange(3, 4), "hops of 1.4-1.9 m along 5.6 m of beam");
     }
+
+    /// <summary>
+    /// The straight line's stances (<see cref="RoadmapBaker.LineStances"/>): along the beam, one every neighbour cell
+    /// of the frog, each on the beam and facing along it; none where the line does not run on open ground all along
+    /// (a 0.4 m post standing on the beam's middle; the beam cut by a 0.4 m gap), and none on a line shorter than two cells.
+    /// </summary>
+    [Test]
+    public void StancesAreAddedAlongAStraightLineOnlyWhereItRunsOnOpenGround()
+    {
+        var from = new Vector3(-2.8f, 1f, 0f);
+        var to = new Vector3(2.8f, 1f, 0f);
+        PoseEvaluation[] beam = LineStances(Beam.Value, from, to);
+        Assert.That(beam, Has.Length.EqualTo(2), "5.6 m in spans of at most a cell");
+        foreach (PoseEvaluation stance in beam)
+        {
+            Vector3 centre = Contact.Centre(stance.Contacts, stance.Pose.Position);
+            Assert.That(centre.Y, Is.EqualTo(1f).Within(0.05f), "on the beam's top");
+            Assert.That(MathF.Abs(centre.Z), Is.LessThan(0.15f), "on the beam");
+            Assert.That(stance.Pose.Forward.X, Is.GreaterThan(0.95f), "facing along the line, toward the goal");
+        }
+
+        Assert.That(beam.Select(s => s.Pose.Position.X), Is.Ordered, "from start to goal");
+
+        PlanningScene post = BeamWith(b => b.AddBox(new Vector3(-0.1f, 1f, -0.15f), new Vector3(0.1f, 1.4f, 0.15f)));
+        Assert.That(LineStances(post, from, to), Is.Empty, "a post stands on the line");
+        PlanningScene gap = PlanningScene.Create(new LevelBuilder("gap")
+            .AddBox(new Vector3(-6f, 0f, -1.5f), new Vector3(-3f, 1f, 1.5f))
+            .AddBox(new Vector3(3f, 0f, -1.5f), new Vector3(6f, 1f, 1.5f))
+            .AddBox(new Vector3(-3f, 0.7f, -0.15f), new Vector3(-0.2f, 1f, 0.15f))
+            .AddBox(new Vector3(0.2f, 0.7f, -0.15f), new Vector3(3f, 1f, 0.15f))
+            .AddFloor(-10f, -10f, 10f, 10f, 0f)
+            .Build(), CharacterPresets.Frog());
+        Assert.That(LineStances(gap, from, to), Is.Empty, "a gap cuts the line");
+        Assert.That(LineStances(Beam.Value, from, new Vector3(-1.5f, 1f, 0f)), Is.Empty, "1.3 m: under two cells");
+    }
+
+    /// <summary>The stances <see cref="RoadmapBaker.LineStances"/> adds between the stances placed at <paramref name="from"/> and <paramref name="to"/> in <paramref name="scene"/>.</summary>
+    private static PoseEvaluation[] LineStances(PlanningScene scene, Vector3 from, Vector3 to)
+    {
+        var settings = new BakeSettings { Start = from, Goal = to, StopWhenConnected = true };
+        PoseEvaluation start = scene.Sampler.Place(from, settings.Tolerance).Pose!;
+        PoseEvaluation goal = scene.Sampler.Place(to, settings.Tolerance).Pose!;
+        return new RoadmapBaker(scene).LineStances(start, goal, settings);
+    }
+
+    /// <summary>The beam level with something more built on it.</summary>
+    private static PlanningScene BeamWith(Func<LevelBuilder, LevelBuilder> more) => PlanningScene.Create(more(new LevelBuilder("beam")
+        .AddBox(new Vector3(-6f, 0f, -1.5f), new Vector3(-3f, 1f, 1.5f))
+        .AddBox(new Vector3(3f, 0f, -1.5f), new Vector3(6f, 1f, 1.5f))
+        .AddBox(new Vector3(-3f, 0.7f, -0.15f), new Vector3(3f, 1f, 0.15f))
+        .AddFloor(-10f, -10f, 10f, 10f, 0f))
+        .Build(), CharacterPresets.Frog());
 
     [Test]
     public void AFlightTooHighForOneHopIsHoppedUpTreadByTread()
