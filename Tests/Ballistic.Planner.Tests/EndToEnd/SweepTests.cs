@@ -37,7 +37,7 @@ public sealed class SweepTests
     [
         ("thin-slabs", "skeleton"), ("curved", "skeleton"), ("stairs", "skeleton"), ("block", "skeleton"),
         ("holes-debris", "skeleton"), ("cave", "skeleton"), ("thin-slabs", "frog"), ("stairs", "ant"), ("curved", "ant"),
-        ("field", "skeleton"), ("field", "frog"), ("doorway", "skeleton"),
+        ("field", "skeleton"), ("field", "frog"), ("doorway", "skeleton"), ("beam", "frog"), ("beam", "skeleton"),
     ];
 
     /// <summary>Rigs exported in other tools' shapes (limbs-only specs), on levels with the requests a user would make.</summary>

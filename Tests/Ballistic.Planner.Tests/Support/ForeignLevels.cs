@@ -10,7 +10,7 @@ namespace Ballistic.Planner.Tests.Support;
 /// </summary>
 internal static class ForeignLevels
 {
-    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway"];
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway", "beam"];
 
     /// <summary>A level and the start/goal pairs a user would try on it.</summary>
     public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
@@ -23,6 +23,7 @@ internal static class ForeignLevels
         "cave" => Cave(),
         "field" => Field(),
         "doorway" => Doorway(),
+        "beam" => Beam(),
         _ => throw new ArgumentException($"no foreign level '{name}'"),
     };
 
@@ -152,6 +153,27 @@ internal static class ForeignLevels
             (new Vector3(-2f, 0f, 2f), new Vector3(3.35f, 0.68f, 0f)),
             (new Vector3(6.5f, 1.36f, 1.5f), new Vector3(-4f, 0f, -2f)),
             (new Vector3(0f, 0f, -2f), new Vector3(2.75f, 0.51f, 0.5f)),
+        ]);
+    }
+
+    /// <summary>
+    /// Two 1 m platforms 6 m apart joined by a 0.3 m beam whose top is level with theirs, the whole turned 20° about Y
+    /// by a node transform, over open ground (a parkour course's beam): along the beam end to end, from platform to
+    /// platform, and from the ground up onto the beam's middle.
+    /// </summary>
+    private static (Level, (Vector3, Vector3)[]) Beam()
+    {
+        var b = new LevelBuilder("beam (foreign)");
+        AddSoupQuad(b, "ground", new Vector3(-10f, 0f, -10f), new Vector3(10f, 0f, -10f), new Vector3(10f, 0f, 10f), new Vector3(-10f, 0f, 10f), 2);
+        Matrix4x4 place = Matrix4x4.CreateRotationY(20f * MathF.PI / 180f);
+        AddSoupBox(b, "platform_west", new Vector3(-6f, 0f, -1.5f), new Vector3(-3f, 1f, 1.5f), place);
+        AddSoupBox(b, "platform_east", new Vector3(3f, 0f, -1.5f), new Vector3(6f, 1f, 1.5f), place);
+        AddSoupBox(b, "beam", new Vector3(-3f, 0.7f, -0.15f), new Vector3(3f, 1f, 0.15f), place);
+        Vector3 At(float x, float y, float z) => Vector3.Transform(new Vector3(x, y, z), place);
+        return (b.Build(), [
+            (At(-2.8f, 1f, 0f), At(2.8f, 1f, 0f)),
+            (At(-5f, 1f, 0.5f), At(5f, 1f, -0.5f)),
+            (At(0f, 0f, 3f), At(0.5f, 1f, 0f)),
         ]);
     }
 
