@@ -2,6 +2,7 @@ using System.Diagnostics;
 using System.Numerics;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Steering;
@@ -134,7 +135,7 @@ public sealed class RoadmapBaker
                 // (tried first: stances added at the start, and on any ground, connected the desert demo sooner, on a poorer
                 // roadmap: 12 jumps and no walk).
                 lined = true;
-                PoseEvaluation[] line = LineStances(leaving, arriving, settings);
+                PoseEvaluation[] line = [.. LineStances(leaving, arriving, settings), .. NarrowStances(leaving, arriving, settings)];
                 if (settings.MaxNodes is int most)
                 {
                     line = line[..Math.Min(line.Length, Math.Max(0, most - roadmap.Nodes.Count))];
@@ -370,6 +371,125 @@ public sealed class RoadmapBaker
 
         return [.. stances];
     }
+
+    /// <summary>
+    /// Stances along the narrow surfaces that run the request's way (a beam, a ledge, a walkway: a contact surface
+    /// facing up, at least two neighbour cells long and at most <see cref="NarrowShare"/> as wide as long, its long axis
+    /// within <see cref="NarrowTurn"/> of the way from <paramref name="start"/> to <paramref name="goal"/> and its
+    /// middle within the request's first corridor, <see cref="RequestFocus"/>): along the middle of its long axis,
+    /// inset half a cell from its ends, one every neighbour cell or closer, and one more a span beyond either end (where
+    /// the surface leads on at its height, as a beam's platforms do), each placed facing the goal's way where
+    /// something stands (<see cref="TrunkSampler.PlaceFacing"/>), the axis running on open ground
+    /// (<see cref="LineIsClear"/>). Random samples drawn by area reach such a surface a few times at most: from one
+    /// platform to the other across a beam the frog hopped down, across the floor and back up. Deterministic.
+    /// </summary>
+    internal PoseEvaluation[] NarrowStances(PoseEvaluation start, PoseEvaluation goal, BakeSettings settings)
+    {
+        Vector3 from = ToNode(start, 0).ContactCentre;
+        Vector3 to = ToNode(goal, 0).ContactCentre;
+        var way = new Vector2(to.X - from.X, to.Z - from.Z);
+        float across = way.Length();
+        float cell = NodeIndex.CellSizeFor(_scene.Steering.Limits);
+        if (!(across > 1e-3f) || !float.IsFinite(across))
+        {
+            return [];
+        }
+
+        way /= across;
+        float corridor = MathF.Max(cell, 0.1f * across);
+        var a = new Vector2(from.X, from.Z);
+        float Off(Vector2 p) => Vector2.Distance(p, a + (way * Math.Clamp(Vector2.Dot(p - a, way), 0f, across)));
+
+        // The corners of each upward surface's triangles near the way, surface by surface in id order.
+        var corners = new SortedDictionary<int, List<Vector3>>();
+        IReadOnlyList<Triangle> triangles = _scene.Level.Triangles;
+        for (int t = 0; t < triangles.Count; t++)
+        {
+            int surface = _scene.Surfaces.SurfaceOf(t);
+            Triangle triangle = triangles[t];
+            if (surface < 0 || _scene.Surfaces.Surfaces[surface].Normal.Y < NarrowUp
+                || Off(new Vector2(triangle.Centroid.X, triangle.Centroid.Z)) > corridor + (2f * cell))
+            {
+                continue;
+            }
+
+            if (!corners.TryGetValue(surface, out List<Vector3>? points))
+            {
+                corners[surface] = points = [];
+            }
+
+            points.AddRange([triangle.A, triangle.B, triangle.C]);
+        }
+
+        var stances = new List<PoseEvaluation>();
+        float facing = MathF.Atan2(way.X, way.Y);
+        foreach (List<Vector3> points in corners.Values)
+        {
+            // The long axis: the principal direction of the corners seen from above, toward the goal.
+            Vector3 mean = points.Aggregate(Vector3.Zero, (sum, p) => sum + p) / points.Count;
+            (float xx, float xz, float zz) = (0f, 0f, 0f);
+            foreach (Vector3 p in points)
+            {
+                (float dx, float dz) = (p.X - mean.X, p.Z - mean.Z);
+                (xx, xz, zz) = (xx + (dx * dx), xz + (dx * dz), zz + (dz * dz));
+            }
+
+            float angle = 0.5f * MathF.Atan2(2f * xz, xx - zz);
+            var axis = new Vector2(MathF.Cos(angle), MathF.Sin(angle));
+            if (Vector2.Dot(axis, way) < 0f)
+            {
+                axis = -axis;
+            }
+
+            var side = new Vector2(-axis.Y, axis.X);
+            var centre = new Vector2(mean.X, mean.Z);
+            (float lo, float hi, float left, float right) = (float.MaxValue, float.MinValue, float.MaxValue, float.MinValue);
+            foreach (Vector3 p in points)
+            {
+                var d = new Vector2(p.X, p.Z) - centre;
+                (lo, hi) = (MathF.Min(lo, Vector2.Dot(d, axis)), MathF.Max(hi, Vector2.Dot(d, axis)));
+                (left, right) = (MathF.Min(left, Vector2.Dot(d, side)), MathF.Max(right, Vector2.Dot(d, side)));
+            }
+
+            float length = hi - lo;
+            Vector2 middle = centre + (side * (0.5f * (left + right))) + (axis * (0.5f * (lo + hi)));
+            if (length < 2f * cell || right - left > NarrowShare * length || Vector2.Dot(axis, way) < MathF.Cos(NarrowTurn) || Off(middle) > corridor)
+            {
+                continue;
+            }
+
+            // Along the middle of the long axis at the surface's height, inset half a cell from its ends.
+            Vector2 first = middle - (axis * ((0.5f * length) - (0.5f * cell)));
+            Vector2 last = middle + (axis * ((0.5f * length) - (0.5f * cell)));
+            var head = new Vector3(first.X, mean.Y, first.Y);
+            var tail = new Vector3(last.X, mean.Y, last.Y);
+            if (!LineIsClear(head, tail, settings.Tolerance))
+            {
+                continue;
+            }
+
+            // And a cell beyond either end, where the surface leads on at its height (a beam's platforms).
+            int spans = Math.Max(1, (int)MathF.Ceiling(Vector3.Distance(head, tail) / cell));
+            for (int k = -1; k <= spans + 1; k++)
+            {
+                if (_scene.Sampler.PlaceFacing(Vector3.Lerp(head, tail, (float)k / spans), settings.Tolerance, facing, settings.CanStand).Pose is { } pose)
+                {
+                    stances.Add(pose);
+                }
+            }
+        }
+
+        return [.. stances];
+    }
+
+    /// <summary>Least up component of a surface's normal for <see cref="NarrowStances"/> (about 25°).</summary>
+    private const float NarrowUp = 0.9f;
+
+    /// <summary>Greatest width of a narrow surface (<see cref="NarrowStances"/>) as a share of its length.</summary>
+    private const float NarrowShare = 0.25f;
+
+    /// <summary>Greatest angle (radians) between a narrow surface's long axis and the request's way (<see cref="NarrowStances"/>).</summary>
+    private const float NarrowTurn = MathF.PI / 6f;
 
     /// <summary>
     /// True when the line from <paramref name="from"/> to <paramref name="to"/> (world metres) runs on open ground:

@@ -107,6 +107,56 @@ public sealed class ShortHopTests
         Assert.That(LineStances(Beam.Value, from, new Vector3(-1.5f, 1f, 0f)), Is.Empty, "1.3 m: under two cells");
     }
 
+    /// <summary>
+    /// From one platform's far side to the other's (10 m, the straight line off the beam's ends) the frog crosses on
+    /// the beam, every hop landing on a platform or on the beam, never on the floor 1 m below. Before, it hopped down,
+    /// across the floor and back up, 11 hops: no random sample had landed on the beam's middle. Now the bake, once
+    /// connected, adds stances along the narrow surfaces that run the request's way (<see cref="RoadmapBaker.NarrowStances"/>).
+    /// </summary>
+    [Test]
+    public void FromPlatformToPlatformTheFrogCrossesOnTheBeam()
+    {
+        PlanResult plan = Plan(Beam.Value, new Vector3(-5f, 1f, 0.5f), new Vector3(5f, 1f, -0.5f));
+        Assert.That(plan.Jumps.Select(j => j.Landing.ContactCentre.Y), Has.All.GreaterThan(0.9f), "no hop lands on the floor");
+        Assert.That(plan.Jumps.Select(j => j.Landing.ContactCentre), Has.Some.Matches<Vector3>(c => MathF.Abs(c.X) < 2f && MathF.Abs(c.Z) < 0.2f), "a hop lands on the beam's middle");
+    }
+
+    /// <summary>
+    /// The narrow surfaces' stances (<see cref="RoadmapBaker.NarrowStances"/>): for a request along the beam's way, on
+    /// the beam's top along its middle (and a span beyond its ends, on the platforms), facing the goal's way; none for a request across it (its long axis 90° off the way), and
+    /// none on a beam a post stands on.
+    /// </summary>
+    [Test]
+    public void StancesAreAddedAlongANarrowSurfaceThatRunsTheRequestsWay()
+    {
+        PoseEvaluation[] along = NarrowStances(Beam.Value, new Vector3(-5f, 1f, 0.5f), new Vector3(5f, 1f, -0.5f));
+        Vector3[] centres = [.. along.Select(a => Contact.Centre(a.Contacts, a.Pose.Position))];
+        Assert.That(centres.Count(c => MathF.Abs(c.X) < 3f), Is.GreaterThanOrEqualTo(3), "6 m of beam, a stance every cell or closer");
+        Assert.That(centres.Count(c => MathF.Abs(c.X) >= 3f), Is.InRange(1, 2), "and one a span beyond an end, on a platform");
+        Assert.Multiple(() =>
+        {
+            foreach ((Vector3 centre, PoseEvaluation stance) in centres.Zip(along))
+            {
+                Assert.That(centre.Y, Is.EqualTo(1f).Within(0.05f), "on the beam's or a platform's top");
+                Assert.That(MathF.Abs(centre.Z), Is.LessThan(0.15f), "along the beam's middle");
+                Assert.That(stance.Pose.Forward.X, Is.GreaterThan(0.9f), "facing the goal's way");
+            }
+        });
+
+        Assert.That(NarrowStances(Beam.Value, new Vector3(0f, 0f, -4f), new Vector3(0f, 0f, 4f)), Is.Empty, "a request across the beam");
+        PlanningScene post = BeamWith(b => b.AddBox(new Vector3(-0.1f, 1f, -0.15f), new Vector3(0.1f, 1.4f, 0.15f)));
+        Assert.That(NarrowStances(post, new Vector3(-5f, 1f, 0.5f), new Vector3(5f, 1f, -0.5f)), Is.Empty, "a post stands on the beam");
+    }
+
+    /// <summary>The stances <see cref="RoadmapBaker.NarrowStances"/> adds for a request between the stances placed at <paramref name="from"/> and <paramref name="to"/> in <paramref name="scene"/>.</summary>
+    private static PoseEvaluation[] NarrowStances(PlanningScene scene, Vector3 from, Vector3 to)
+    {
+        var settings = new BakeSettings { Start = from, Goal = to, StopWhenConnected = true };
+        PoseEvaluation start = scene.Sampler.Place(from, settings.Tolerance).Pose!;
+        PoseEvaluation goal = scene.Sampler.Place(to, settings.Tolerance).Pose!;
+        return new RoadmapBaker(scene).NarrowStances(start, goal, settings);
+    }
+
     /// <summary>The stances <see cref="RoadmapBaker.LineStances"/> adds between the stances placed at <paramref name="from"/> and <paramref name="to"/> in <paramref name="scene"/>.</summary>
     private static PoseEvaluation[] LineStances(PlanningScene scene, Vector3 from, Vector3 to)
     {
