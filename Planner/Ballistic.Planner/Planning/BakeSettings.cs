@@ -30,7 +30,11 @@ public sealed record BakeSettings
     /// <summary>Optional goal point (world metres): placed as the node after the start before sampling.</summary>
     public Vector3? Goal { get; init; }
 
-    /// <summary>Stop as soon as the start reaches the goal (needs both).</summary>
+    /// <summary>
+    /// Stop as soon as the start reaches the goal (needs both). With <see cref="FocusOnRequest"/>, the bake first adds,
+    /// once, stances along the straight line between them where it runs on open ground and along narrow surfaces (a
+    /// beam, a ledge) that run their way, which random samples rarely reach; the roadmap keeps every node it had.
+    /// </summary>
     public bool StopWhenConnected { get; init; }
 
     /// <summary>

@@ -52,9 +52,15 @@ internal sealed class RequestFocus
     {
         float cell = NodeIndex.CellSizeFor(limits);
         float across = new Vector2(to.X - from.X, to.Z - from.Z).Length();
-        SampleRegion region = sampler.Region(from, to, MathF.Max(cell, 0.1f * across));
+        SampleRegion region = sampler.Region(from, to, FirstRadius(cell, across));
         return region.Share >= LevelShare ? null : new RequestFocus(sampler, from, to, cell, region, nodes);
     }
+
+    /// <summary>
+    /// Half width (metres) of a request's first corridor: the larger of the neighbour cell <paramref name="cell"/> and a
+    /// tenth of the distance <paramref name="across"/> (metres, seen from above) between its start and goal.
+    /// </summary>
+    public static float FirstRadius(float cell, float across) => MathF.Max(cell, 0.1f * across);
 
     /// <summary>The corridor the next round samples when the roadmap holds <paramref name="nodes"/> nodes, or <c>null</c> for the whole level.</summary>
     public SampleRegion? RegionAt(int nodes)

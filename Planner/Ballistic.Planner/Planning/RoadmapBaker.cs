@@ -128,9 +128,10 @@ public sealed class RoadmapBaker
             if (stopping && !lined && status == PlannerStatus.Exact && settings.StopWhenConnected && settings.FocusOnRequest && state.StartReachesGoal
                 && startPlacement?.Pose is { } leaving && goalPlacement?.Pose is { } arriving)
             {
-                // Connected: before stopping, the straight route's stances join the roadmap once (LineStances:
-                // where the line runs on open ground), so the query can take it when it costs less than the route
-                // the random samples connected (a beam's hops, not the floor below). Added after the connection, not
+                // Connected: before stopping, the straight route's stances (LineStances: where the line runs on open
+                // ground) and those along narrow surfaces that run the request's way (NarrowStances) join the roadmap
+                // once, so the query can take them when they cost less than the route the random samples connected
+                // (a beam's hops, not the floor below). Added after the connection, not
                 // before, so the roadmap holds every node it held before: the route found costs no more than before
                 // (tried first: stances added at the start, and on any ground, connected the desert demo sooner, on a poorer
                 // roadmap: 12 jumps and no walk).
@@ -342,8 +343,8 @@ public sealed class RoadmapBaker
     /// </summary>
     internal PoseEvaluation[] LineStances(PoseEvaluation start, PoseEvaluation goal, BakeSettings settings)
     {
-        Vector3 from = ToNode(start, 0).ContactCentre;
-        Vector3 to = ToNode(goal, 0).ContactCentre;
+        Vector3 from = Contact.Centre(start.Contacts, start.Pose.Position);
+        Vector3 to = Contact.Centre(goal.Contacts, goal.Pose.Position);
         var flat = new Vector2(to.X - from.X, to.Z - from.Z);
         float across = flat.Length();
         int spans = (int)MathF.Ceiling(across / NodeIndex.CellSizeFor(_scene.Steering.Limits));
@@ -385,8 +386,8 @@ public sealed class RoadmapBaker
     /// </summary>
     internal PoseEvaluation[] NarrowStances(PoseEvaluation start, PoseEvaluation goal, BakeSettings settings)
     {
-        Vector3 from = ToNode(start, 0).ContactCentre;
-        Vector3 to = ToNode(goal, 0).ContactCentre;
+        Vector3 from = Contact.Centre(start.Contacts, start.Pose.Position);
+        Vector3 to = Contact.Centre(goal.Contacts, goal.Pose.Position);
         var way = new Vector2(to.X - from.X, to.Z - from.Z);
         float across = way.Length();
         float cell = NodeIndex.CellSizeFor(_scene.Steering.Limits);
@@ -396,7 +397,7 @@ public sealed class RoadmapBaker
         }
 
         way /= across;
-        float corridor = MathF.Max(cell, 0.1f * across);
+        float corridor = RequestFocus.FirstRadius(cell, across);
         var a = new Vector2(from.X, from.Z);
         float Off(Vector2 p) => Vector2.Distance(p, a + (way * Math.Clamp(Vector2.Dot(p - a, way), 0f, across)));
 
