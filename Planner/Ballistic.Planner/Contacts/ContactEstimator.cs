@@ -188,6 +188,7 @@ internal sealed class ContactEstimator
 
             Vector3 aim = limb.Home is { } home ? pose.ToWorld(home) : parts[p].Moment / parts[p].Area;
             (Vector3 Position, Vector3 Normal) onMesh = PointOn(parts[p].Surface, aim, workspace, pieces);
+            onMesh = OffTheLedge(parts[p].Surface, aim, onMesh, parts[p].Moment / parts[p].Area, workspace, pieces);
 
             // A surface hidden from the trunk (the floor under a crate the workspace reaches into) cannot be reached.
             Vector3 seen = onMesh.Position + (onMesh.Normal * 0.01f);
@@ -236,6 +237,54 @@ internal sealed class ContactEstimator
 
         return best;
     }
+
+    /// <summary>
+    /// The contact moved in from a ledge's brink: where the limb's <paramref name="aim"/> lies beyond a surface facing
+    /// up (a platform's edge, a beam's side), the nearest point of the surface is on its very edge, where a foot would
+    /// stand half over the drop; when no ground facing up lies just past that edge within the character's step height
+    /// above or below it (a drop, or a wall), the contact is moved <see cref="LedgeInset"/> (at most half the way)
+    /// toward <paramref name="centre"/>, the centre of the surface's patch inside the workspace, and put back on the
+    /// mesh, if still inside the workspace. Elsewhere (the aim over the surface, a stair's nosing with its tread below,
+    /// its riser with the next tread above) it is kept.
+    /// </summary>
+    private (Vector3 Position, Vector3 Normal) OffTheLedge(int surface, Vector3 aim, (Vector3 Position, Vector3 Normal) onMesh, Vector3 centre, in OrientedBox workspace, List<Piece> pieces)
+    {
+        Vector3 n = onMesh.Normal;
+        Vector3 off = aim - onMesh.Position;
+        Vector3 beyond = off - (Vector3.Dot(off, n) * n);
+        if (!(n.Y >= 0.7f) || !(beyond.LengthSquared() > EdgeSlack * EdgeSlack))
+        {
+            return onMesh;
+        }
+
+        float stepDown = _character.Walking.StepHeight > 0f ? _character.Walking.StepHeight : 0.25f * _character.StanceLift.Max;
+        Vector3 past = onMesh.Position + (Vector3.Normalize(beyond) * EdgeProbe) + (Vector3.UnitY * stepDown);
+        if (_bvh.Raycast(past, -Vector3.UnitY, 2f * stepDown, out RayHit ground) && ground.Normal.Y > 0f)
+        {
+            return onMesh;
+        }
+
+        Vector3 inward = centre - onMesh.Position;
+        inward -= Vector3.Dot(inward, n) * n;
+        float room = inward.Length();
+        if (!(room > EdgeSlack))
+        {
+            return onMesh;
+        }
+
+        Vector3 moved = onMesh.Position + (inward * (MathF.Min(LedgeInset, 0.5f * room) / room));
+        (Vector3 Position, Vector3 Normal) inside = PointOn(surface, moved, workspace, pieces);
+        return workspace.Contains(inside.Position) ? inside : onMesh;
+    }
+
+    /// <summary>How far (metres) a contact whose limb aims past a ledge's brink is moved in from it (<see cref="OffTheLedge"/>).</summary>
+    public const float LedgeInset = 0.05f;
+
+    /// <summary>How far past a surface's edge (metres) the ground is looked for (<see cref="OffTheLedge"/>).</summary>
+    private const float EdgeProbe = 0.02f;
+
+    /// <summary>How far (metres, along the surface) the aim may lie from its nearest surface point and still count as over the surface (rounding).</summary>
+    private const float EdgeSlack = 1e-3f;
 
     /// <summary>
     /// True when a face of unit normal <paramref name="normal"/> at <paramref name="point"/> is turned toward the

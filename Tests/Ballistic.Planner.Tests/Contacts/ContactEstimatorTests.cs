@@ -164,6 +164,44 @@ public sealed class ContactEstimatorTests
     }
 
     /// <summary>
+    /// A foot whose home lies past a ledge's brink (a 0.6 m platform, its face at x = 1, the home 10 cm beyond it over
+    /// the drop) touches the platform <see cref="ContactEstimator.LedgeInset"/> in from the edge, not on the edge line
+    /// (before: x = 1.000, half the foot over nothing); past a stair's nosing, with the floor below within the step
+    /// height, it stays at the edge the home is nearest (the foot steps down there); a home over the platform is
+    /// touched straight below, as before.
+    /// </summary>
+    [Test]
+    public void AFootAimingPastALedgesBrinkStandsOnTheLedgeFiveCentimetresInNotOnItsEdge()
+    {
+        Vector3 Touch(Level level, Vector3 trunk, Vector3 home)
+        {
+            var limb = new Limb("foot", LimbKind.Foot, new Vector3(0f, -0.3f, 0f), new Vector3(0.3f, 0.1f, 0.3f), Quaternion.Identity, NormalFilter.None) { Home = home };
+            var character = new ReducedCharacter("one-legged", new Vector3(0.15f, 0.1f, 0.15f), [limb], 1, 5f, 5f, 1f)
+            {
+                Walking = new WalkingLimits(1f, 30f, 0.2f),
+            };
+            Assert.That(Estimator(level, character).TryEstimate(0, new RootPose(trunk, Quaternion.Identity), [], out Contact contact), Is.True, $"a contact for the home {home} at {trunk}");
+            return contact.Position;
+        }
+
+        Level ledge = new LevelBuilder("ledge").AddFloor(-3f, -3f, 1f, 3f, 0f).AddBox(new Vector3(1f, 0f, -2f), new Vector3(3f, 0.6f, 2f)).Build();
+        Level step = new LevelBuilder("step").AddFloor(-3f, -3f, 1f, 3f, 0f).AddBox(new Vector3(1f, 0f, -2f), new Vector3(3f, 0.15f, 2f)).Build();
+        var onLedge = new Vector3(1.15f, 0.9f, 0f);
+        var onStep = new Vector3(1.15f, 0.45f, 0f);
+        Vector3 overDrop = Touch(ledge, onLedge, new Vector3(-0.25f, -0.3f, 0f));
+        Vector3 overTread = Touch(step, onStep, new Vector3(-0.25f, -0.3f, 0f));
+        Vector3 over = Touch(ledge, onLedge, new Vector3(0.1f, -0.3f, 0.05f));
+        Assert.Multiple(() =>
+        {
+            Assert.That(overDrop.Y, Is.EqualTo(0.6f).Within(1e-4f), "on the platform's top");
+            Assert.That(overDrop.X, Is.EqualTo(1f + ContactEstimator.LedgeInset).Within(1e-3f), "moved in from the brink");
+            Assert.That(overTread.X, Is.EqualTo(1f).Within(1e-3f), "a stair's nosing, the floor 15 cm below: at the edge");
+            Assert.That(overTread.Y, Is.EqualTo(0.15f).Within(1e-4f), "on the first tread");
+            Assert.That(Vector3.Distance(over, new Vector3(1.25f, 0.6f, 0.05f)), Is.LessThan(1e-3f), "a home over the platform: straight below it");
+        });
+    }
+
+    /// <summary>
     /// A rig's derived limbs have their homes where its contact pose holds each contact point (the human rig whose
     /// pelvis and legs carry 90° rest rotations, as assimp and FBX converters write them): over a floor at the height
     /// of its feet's workspaces' centres, each foot's contact is estimated within 1 cm of straight above where the
