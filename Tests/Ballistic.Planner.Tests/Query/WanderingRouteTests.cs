@@ -1,0 +1,63 @@
+using System.Numerics;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Tests.Support;
+
+namespace Ballistic.Planner.Tests.Query;
+
+/// <summary>
+/// A route found on the first connection's sparse roadmap may wander: <see cref="AnimatedPlanner.BakeAndPlan"/> bakes
+/// on and plans again while the route runs more than <see cref="AnimatedPlanner.DetourLimit"/> times the straight
+/// distance between its ends and a larger roadmap shortens it (issue 24: the frog from the floor up onto a beam's
+/// middle hopped round the beam's end and under it, 9 hops).
+/// </summary>
+[Category("EndToEnd")]
+public sealed class WanderingRouteTests
+{
+    private static readonly Lazy<Sweep.Setup> BeamFrog = new(() => Sweep.Prepare("beam", ForeignLevels.Get("beam").Level, "frog"));
+
+    private static readonly BakeSettings Settings = new() { Seed = 1, Threads = 2, MaxNodes = 600 };
+
+    /// <summary>
+    /// The sweep's beam request from the floor 3 m off the beam up onto its middle: planned on the roadmap baked until
+    /// it first connects, the frog hops 9 times, 2.4 times the straight distance; baked on, 5 hops, at most 1.7 times,
+    /// fully right by the audit.
+    /// </summary>
+    [Test]
+    public void AWanderingRouteIsPlannedAgainOnALargerRoadmap()
+    {
+        Sweep.Setup setup = BeamFrog.Value;
+        (Vector3 from, Vector3 to) = ForeignLevels.Get("beam").Requests[2];
+        BakeResult first = new RoadmapBaker(setup.Scene).Bake(Settings with { Start = from, Goal = to, StopWhenConnected = true, CanStand = setup.Planner.Animator.CanStand });
+        AnimatedPlan sparse = setup.Planner.Plan(first.Roadmap, from, to, new QuerySettings { Tolerance = Settings.Tolerance });
+        Assert.That(sparse.Result.Status, Is.EqualTo(PlannerStatus.Exact), sparse.Result.Reason);
+        float wandered = AnimatedPlanner.Detour(sparse.Result);
+
+        (AnimatedPlan plan, BakeResult bake) = setup.Planner.BakeAndPlan(from, to, Settings);
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        float detour = AnimatedPlanner.Detour(plan.Result);
+        TestContext.Out.WriteLine($"first connection: {first.Roadmap.Nodes.Count} nodes, {sparse.Result.Moves.Count} moves, {wandered:0.00} × the straight distance; baked on: {bake.Roadmap.Nodes.Count} nodes, {plan.Result.Moves.Count} moves, {detour:0.00} ×");
+        Assert.Multiple(() =>
+        {
+            Assert.That(wandered, Is.GreaterThan(AnimatedPlanner.DetourLimit), "the first connection's route wanders");
+            Assert.That(bake.Roadmap.Nodes.Count, Is.GreaterThan(first.Roadmap.Nodes.Count), "the roadmap was baked on");
+            Assert.That(detour, Is.LessThan(wandered - 0.5f), "the route planned again is shorter");
+            Assert.That(plan.Result.Moves.Count, Is.LessThan(sparse.Result.Moves.Count), "in fewer hops");
+        });
+        AuditReport audit = PlanAudit.Check("beam frog baked on", setup.Scene, from, to, plan.Result, plan.Animation);
+        Assert.That(audit.FullyRight, Is.True, audit.ToString());
+    }
+
+    /// <summary>A route that runs straight (along the beam end to end) is planned on the first connection's roadmap: nothing is baked on.</summary>
+    [Test]
+    public void AStraightRouteIsNotBakedOn()
+    {
+        Sweep.Setup setup = BeamFrog.Value;
+        (Vector3 from, Vector3 to) = ForeignLevels.Get("beam").Requests[0];
+        BakeResult first = new RoadmapBaker(setup.Scene).Bake(Settings with { Start = from, Goal = to, StopWhenConnected = true, CanStand = setup.Planner.Animator.CanStand });
+        (AnimatedPlan plan, BakeResult bake) = setup.Planner.BakeAndPlan(from, to, Settings);
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(AnimatedPlanner.Detour(plan.Result), Is.LessThanOrEqualTo(AnimatedPlanner.DetourLimit));
+        Assert.That(bake.Roadmap.Nodes.Count, Is.EqualTo(first.Roadmap.Nodes.Count), "the first connection's roadmap");
+    }
+}
