@@ -58,6 +58,9 @@ public sealed class JumpAnimator : IJumpAnimator
     private readonly StanceDip _dip;
     private readonly FreeBones _free;
 
+    /// <summary>How high (metres) a foot leaving its takeoff contact is lifted straight off it (<see cref="LiftOff"/>): the character's step height.</summary>
+    private readonly float _liftHeight;
+
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
     {
@@ -71,6 +74,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _refiner = new HoldRefiner(model, _collision);
         _free = _gait.FreeBones;
         _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
+        _liftHeight = scene.Character.Walking.StepHeight > 0f ? scene.Character.Walking.StepHeight : 0.25f * scene.Character.StanceLift.Max;
         Model = model;
     }
 
@@ -704,6 +708,12 @@ public sealed class JumpAnimator : IJumpAnimator
         var quickUp = new int[limbs];
         var quickDown = new int[limbs];
         var quick = new bool[limbs];
+
+        // A limb that still passes through the level, retracted quickly or not, is lifted straight off its takeoff
+        // contact first (LiftOff), then retracted quickly from there: a foot on a stair's tread, a riser just ahead of
+        // its toes, rises above the riser before the body's forward motion carries it on.
+        var lifted = new Dictionary<int, float[]>[limbs];
+        var leaves = (int[])breaks.Clone();
         for (int l = 0; l < limbs; l++)
         {
             quickUp[l] = Math.Min(apex, breaks[l] + Math.Max(1, (int)MathF.Round(Retract * (apex - breaks[l]))));
@@ -711,6 +721,7 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         bool Airborne(int l, int i) => !(held[l].ContainsKey(i) && (i <= breaks[l] || i >= makes[l]));
+        float[] Leaving(int l) => leaves[l] > breaks[l] ? lifted[l][leaves[l]] : held[l][breaks[l]];
         void LimbAt(int l, int i, float[] target)
         {
             RigLimb limb = Model.Limbs[l];
@@ -725,13 +736,23 @@ public sealed class JumpAnimator : IJumpAnimator
                 return;
             }
 
-            float[] from = held[l][breaks[l]];
+            if (lifted[l] is { } lift && lift.TryGetValue(i, out float[]? up))
+            {
+                foreach (int d in limb.ChainDofs)
+                {
+                    target[d] = up[d];
+                }
+
+                return;
+            }
+
+            float[] from = Leaving(l);
             float[] to = held[l][makes[l]];
             float[] top = limbApex[l];
             if (quick[l])
             {
                 float u = i <= apex
-                    ? Math.Clamp((i - breaks[l]) / (float)(quickUp[l] - breaks[l]), 0f, 1f)
+                    ? Math.Clamp((i - leaves[l]) / (float)(quickUp[l] - leaves[l]), 0f, 1f)
                     : Math.Clamp((i - quickDown[l]) / (float)(makes[l] - quickDown[l]), 0f, 1f);
                 foreach (int d in limb.ChainDofs)
                 {
@@ -751,7 +772,7 @@ public sealed class JumpAnimator : IJumpAnimator
 
         float[] probe = new float[rig.DofCount];
         var hit = new bool[limbs];
-        int attempts = (2 * MaxResamples) + 2;
+        int attempts = 3 * (MaxResamples + 1);
         var stuck = new List<int>();
         for (int n = 0; n < attempts && pending.Count > 0; n++)
         {
@@ -768,6 +789,26 @@ public sealed class JumpAnimator : IJumpAnimator
                     quick[l] = true;
                     limbApex[l] = (float[])apexAngles.Clone();
                 }
+            }
+            else if (n == 2 * (MaxResamples + 1))
+            {
+                // Only a limb leaving a takeoff contact can be lifted off it; the others have failed.
+                foreach (int l in pending)
+                {
+                    if (LiftOff(arc, takeoff, l, breaks[l], apex, held[l][breaks[l]], h, steps) is { Count: > 0 } lift)
+                    {
+                        lifted[l] = lift;
+                        leaves[l] = lift.Keys.Max();
+                        quickUp[l] = Math.Min(apex, leaves[l] + Math.Max(1, (int)MathF.Round(Retract * (apex - leaves[l]))));
+                        limbApex[l] = (float[])apexAngles.Clone();
+                    }
+                    else
+                    {
+                        stuck.Add(l);
+                    }
+                }
+
+                pending.RemoveAll(stuck.Contains);
             }
 
             foreach (int l in pending)
@@ -838,6 +879,11 @@ public sealed class JumpAnimator : IJumpAnimator
                 {
                     grid.Add(quickUp[l]);
                     grid.Add(quickDown[l]);
+                }
+
+                if (lifted[l] is { } lift)
+                {
+                    grid.UnionWith(lift.Keys);
                 }
             }
 
@@ -1030,6 +1076,42 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         return true;
+    }
+
+    /// <summary>
+    /// Limb <paramref name="l"/>'s angles on the fine steps after it lets go of its takeoff contact (step
+    /// <paramref name="from"/>, angles <paramref name="leaving"/>), its effector held by IK over that contact point and
+    /// raised along the contact's normal as far as the trunk has risen, up to the character's step height, until the
+    /// apex or until the IK no longer reaches; empty when the limb holds no takeoff contact or cannot rise at all.
+    /// </summary>
+    private Dictionary<int, float[]> LiftOff(BallisticArc arc, ContactConfiguration config, int l, int from, int apex, float[] leaving, float h, int steps)
+    {
+        var lift = new Dictionary<int, float[]>();
+        if (config.ContactOf(l) is not LimbContact contact)
+        {
+            return lift;
+        }
+
+        RigLimb limb = Model.Limbs[l];
+        float[] q = (float[])leaving.Clone();
+        float start = arc.PoseAt(from * h).Position.Y;
+        for (int i = from + 1; i < apex; i++)
+        {
+            RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
+            float up = MathF.Min(_liftHeight, MathF.Max(0f, root.Position.Y - start));
+            if (!_holdIk.Solve(root, q, limb, contact.Position + (contact.Normal * up), -contact.Normal).Success)
+            {
+                break;
+            }
+
+            lift[i] = (float[])q.Clone();
+            if (up >= _liftHeight)
+            {
+                break;
+            }
+        }
+
+        return lift;
     }
 
     /// <summary>

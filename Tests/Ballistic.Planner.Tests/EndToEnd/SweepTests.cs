@@ -167,7 +167,10 @@ public sealed class SweepTests
     /// level in flight 0.004 s after takeoff", too soon for any retraction), and jumps turned to face up the flight
     /// fail like that. With legs retracted quickly in flight, a jump from a tread halfway up to the top landing now
     /// animates, so the path is found sooner (6 jumps and 3 walks set aside, was 12 and 2) and its walk across the top
-    /// landing cruises upright (0.910 L, was 0.864 L), but that jump takes off 112° and lands 154° off its way.</item>
+    /// landing cruises upright (0.910 L, was 0.864 L), but that jump took off 112° and landed 154° off its way. With
+    /// feet lifted straight off their tread before they swing, 2 jumps and 2 walks are set aside, and the path hops onto
+    /// the flight's second tread and jumps from there to the landing, landing facing its way but taking off 68° off it:
+    /// the jump turned to face the landing from that tread has an upper arm in the level at takeoff.</item>
     /// </list>
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
