@@ -48,6 +48,41 @@ public sealed class WanderingRouteTests
         Assert.That(audit.FullyRight, Is.True, audit.ToString());
     }
 
+    /// <summary>
+    /// A request cancelled while the roadmap is baked on for a wandering route keeps the exact plan already found on
+    /// the first connection's roadmap: the cancellation stops the refinement, not the answer.
+    /// </summary>
+    [Test]
+    public void ARefinementCancelledKeepsTheExactPlanFound()
+    {
+        Sweep.Setup setup = BeamFrog.Value;
+        (Vector3 from, Vector3 to) = ForeignLevels.Get("beam").Requests[2];
+        BakeResult first = new RoadmapBaker(setup.Scene).Bake(Settings with { Start = from, Goal = to, StopWhenConnected = true, CanStand = setup.Planner.Animator.CanStand });
+        int connected = first.Roadmap.Nodes.Count;
+        using var cancel = new CancellationTokenSource();
+        var progress = new Reported(state =>
+        {
+            if (state.Nodes > connected)
+            {
+                cancel.Cancel();
+            }
+        });
+        (AnimatedPlan plan, BakeResult bake) = setup.Planner.BakeAndPlan(from, to, Settings, TerminationCondition.Cancellation(cancel.Token), progress);
+        Assert.Multiple(() =>
+        {
+            Assert.That(cancel.IsCancellationRequested, Is.True, "the roadmap was being baked on when the request was cancelled");
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(bake.Roadmap.Nodes, Has.Count.EqualTo(connected), "the first connection's roadmap");
+            Assert.That(AnimatedPlanner.Detour(plan.Result), Is.GreaterThan(AnimatedPlanner.DetourLimit), "its wandering route");
+        });
+    }
+
+    /// <summary>Progress reported on the baking thread as it happens (<see cref="Progress{T}"/> posts it later, elsewhere).</summary>
+    private sealed class Reported(Action<BakeState> report) : IProgress<BakeState>
+    {
+        public void Report(BakeState value) => report(value);
+    }
+
     /// <summary>A route that runs straight (along the beam end to end) is planned on the first connection's roadmap: nothing is baked on.</summary>
     [Test]
     public void AStraightRouteIsNotBakedOn()
