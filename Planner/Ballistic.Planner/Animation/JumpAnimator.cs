@@ -74,7 +74,7 @@ public sealed class JumpAnimator : IJumpAnimator
         _refiner = new HoldRefiner(model, _collision);
         _free = _gait.FreeBones;
         _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
-        _liftHeight = scene.Character.Walking.StepHeight > 0f ? scene.Character.Walking.StepHeight : 0.25f * scene.Character.StanceLift.Max;
+        _liftHeight = scene.Character.StepReach;
         Model = model;
     }
 
@@ -721,7 +721,6 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         bool Airborne(int l, int i) => !(held[l].ContainsKey(i) && (i <= breaks[l] || i >= makes[l]));
-        float[] Leaving(int l) => leaves[l] > breaks[l] ? lifted[l][leaves[l]] : held[l][breaks[l]];
         void LimbAt(int l, int i, float[] target)
         {
             RigLimb limb = Model.Limbs[l];
@@ -746,7 +745,7 @@ public sealed class JumpAnimator : IJumpAnimator
                 return;
             }
 
-            float[] from = Leaving(l);
+            float[] from = leaves[l] > breaks[l] ? lifted[l][leaves[l]] : held[l][breaks[l]];
             float[] to = held[l][makes[l]];
             float[] top = limbApex[l];
             if (quick[l])

@@ -144,6 +144,14 @@ public sealed class ReducedCharacter
     }
 
     /// <summary>
+    /// The highest step (metres) the character's feet take in their stride: its <see cref="Walking"/> step height, or
+    /// for a character that does not walk, <see cref="WalkingLimits.StepShare"/> of its highest stance. Where a
+    /// ledge's brink counts as a drop (<see cref="Contacts.ContactEstimator"/>) and how high a foot is lifted off its
+    /// tread as it leaves it (<see cref="Animation.JumpAnimator"/>).
+    /// </summary>
+    internal float StepReach => Walking.StepHeight > 0f ? Walking.StepHeight : WalkingLimits.StepShare * StanceLift.Max;
+
+    /// <summary>
     /// How the character walks (speed, steepest slope, highest step); <see cref="WalkingLimits.None"/> (the default):
     /// it only jumps. Derived from the rig's legs by <see cref="Rigs.ReducedModelBuilder"/>, overridable in the limb spec.
     /// </summary>

@@ -257,7 +257,7 @@ internal sealed class ContactEstimator
             return onMesh;
         }
 
-        float stepDown = _character.Walking.StepHeight > 0f ? _character.Walking.StepHeight : 0.25f * _character.StanceLift.Max;
+        float stepDown = _character.StepReach;
         Vector3 past = onMesh.Position + (Vector3.Normalize(beyond) * EdgeProbe) + (Vector3.UnitY * stepDown);
         if (_bvh.Raycast(past, -Vector3.UnitY, 2f * stepDown, out RayHit ground) && ground.Normal.Y > 0f)
         {

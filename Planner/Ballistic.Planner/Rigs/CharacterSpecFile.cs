@@ -436,7 +436,7 @@ public static class CharacterSpecFile
         {
             WalkingLimits derived = reduced.Walking;
             float speed = spec.WalkSpeed ?? derived.Speed;
-            float step = spec.StepHeight ?? (derived.StepHeight > 0f ? derived.StepHeight : WalkingLimits.StepShare * reduced.StanceLift.Max);
+            float step = spec.StepHeight ?? reduced.StepReach;
             float slope = spec.MaxSlope ?? derived.MaxSlopeDegrees;
 
             // A spec that sets maxSlope alone gets one limit whichever way the ground falls.
