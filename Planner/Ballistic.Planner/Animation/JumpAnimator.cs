@@ -85,11 +85,39 @@ public sealed class JumpAnimator : IJumpAnimator
     internal ContactGenerator Contacts => _contacts;
 
     /// <inheritdoc />
+    /// <remarks>
+    /// The contact pose's limbs are kept clear of the level by the contact generator; the bones of no limb (the links
+    /// from the chest to the shoulders, the spine, head and a tail bent clear where it can be) are checked here: a
+    /// quadruped standing on a tread facing up a flight has its chest in the riser ahead.
+    /// </remarks>
     public bool CanStand(PoseEvaluation pose)
     {
         ArgumentNullException.ThrowIfNull(pose);
         ContactConfiguration stance = _contacts.Generate(pose.Pose, pose.Contacts, pose.Cone.Axis);
-        return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count);
+        return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count) && !BodyInLevel(stance);
+    }
+
+    /// <summary>True when a bone of no limb of <paramref name="stance"/> passes through the level, a free chain (a tail) bent clear first where it can be.</summary>
+    private bool BodyInLevel(ContactConfiguration stance)
+    {
+        Rig rig = Model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(stance.Root, stance.Angles, positions, rotations);
+        if (_collision.OtherBoneColliding(positions, rotations) < 0)
+        {
+            return false;
+        }
+
+        if (!_free.Any)
+        {
+            return true;
+        }
+
+        float[][] bent = [(float[])stance.Angles.Clone()];
+        _free.Clear([0f], _ => stance.Root, bent);
+        rig.Solve(stance.Root, bent[0], positions, rotations);
+        return _collision.OtherBoneColliding(positions, rotations) >= 0;
     }
 
     /// <inheritdoc />

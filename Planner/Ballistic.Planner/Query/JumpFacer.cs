@@ -280,7 +280,7 @@ internal sealed class JumpFacer
         // Where no turned takeoff links (ground too steep to turn on) after a jump landing here, the jump before may
         // land turned part of the way instead, facing as far toward this jump as its own landing allows.
         _relanded = null;
-        Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) && Far(b) ? b : null;
+        Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) && (Far(b) || Searched(b)) ? b : null;
         var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut)).Concat(Relandings(landed, current, facing, rejected))) : []);
 
         // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
@@ -457,12 +457,14 @@ internal sealed class JumpFacer
 
     /// <summary>
     /// Takeoffs for a jump whose own turned takeoffs do not link, when the jump <paramref name="before"/> it (one
-    /// travelling <see cref="MinDistance"/> or more, not a turn hop, which has checks of its own) lands where the
-    /// path stands (<paramref name="current"/>): stances placed there facing the jump's way
-    /// (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way (<see cref="RelandYaws"/>), to
-    /// which <paramref name="before"/> is steered again and lands at most <see cref="StillOffLanding"/> off its way;
-    /// each with no turn in (the jump before lands on it: <see cref="_relanded"/>). The two jumps then turn the body
-    /// between them.
+    /// travelling <see cref="MinDistance"/> or more, or a shorter one of the searched path, not a turn hop, which has
+    /// checks of its own) lands where the path stands (<paramref name="current"/>): stances placed there facing the
+    /// jump's way (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way
+    /// (<see cref="RelandYaws"/>; after a short hop, whose own way no viewer judges, nearest the jump's way first:
+    /// <see cref="Yaws"/>, then <see cref="WideYaws"/>), to which <paramref name="before"/> is steered again and lands
+    /// at most <see cref="StillOffLanding"/> off its way; each with no turn in (the jump before lands on it:
+    /// <see cref="_relanded"/>). The two jumps then turn the body between them (a quadruped hopping onto a stair's
+    /// tread lands facing up the flight, where it could not turn round on the tread).
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected)
     {
@@ -473,7 +475,7 @@ internal sealed class JumpFacer
 
         float toward = MathF.IEEERemainder(Way(before.Arc) - facing, 2f * MathF.PI);
         float sign = toward >= 0f ? 1f : -1f;
-        float[] yaws = [.. RelandYaws.Select(y => y * sign)];
+        float[] yaws = Far(before) ? [.. RelandYaws.Select(y => y * sign)] : [.. Yaws, .. WideYaws];
         EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(current.ContactCentre, Placement, facing, yaws, _canStand, Height(current));
         if (placed.Pose is not { } pose || Refused(pose.Pose))
         {
@@ -647,6 +649,9 @@ internal sealed class JumpFacer
     /// </summary>
     private List<Move> TurnBack(RoadmapNode from, RoadmapNode to, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut) =>
         _turnBack is { } back && ReferenceEquals(back.From, from) ? back.Moves : Link(from, to, rejected, cut)!;
+
+    /// <summary>Whether <paramref name="jump"/> joins two stances this facer did not place (a jump of the searched path, not a turn hop).</summary>
+    private bool Searched(Jump jump) => jump.From.Id < _firstPlaced && jump.To.Id < _firstPlaced;
 
     /// <summary>Whether two stances are the same one (a goal placed again keeps its id, not its pose).</summary>
     private static bool Same(RoadmapNode a, RoadmapNode b) => a.Id == b.Id && a.Pose == b.Pose;

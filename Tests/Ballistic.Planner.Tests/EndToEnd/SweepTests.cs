@@ -162,21 +162,11 @@ public sealed class SweepTests
     /// shortened to 0.85 around there, and its last level steps shorten for the stairs ahead. The walk onto a tread
     /// halfway up (request 1) passes since walks slow on stairs and shorten their steps by as much (before, its
     /// upright walk swung a foot two treads up at full speed and fell back to 4.4 short steps a second).</item>
-    /// <item>facing: the tailed quadruped from the floor onto the stairs' top landing (request 0). Its body cannot jump
-    /// up the flight facing it: its front legs meet the riser ahead as it takes off ("left_front passes through the
-    /// level in flight 0.004 s after takeoff", too soon for any retraction), and jumps turned to face up the flight
-    /// fail like that. With legs retracted quickly in flight, a jump from a tread halfway up to the top landing now
-    /// animates, so the path is found sooner (6 jumps and 3 walks set aside, was 12 and 2) and its walk across the top
-    /// landing cruises upright (0.910 L, was 0.864 L), but that jump took off 112° and landed 154° off its way. With
-    /// feet lifted straight off their tread before they swing, 2 jumps and 2 walks are set aside, and the path hops onto
-    /// the flight's second tread and jumps from there to the landing, landing facing its way but taking off 68° off it:
-    /// the jump turned to face the landing from that tread has an upper arm in the level at takeoff.</item>
     /// </list>
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
         ["cadence"] = ["foreign level/stairs/skeleton/3"],
-        ["facing"] = ["foreign rig/stairs/tailed/0"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
