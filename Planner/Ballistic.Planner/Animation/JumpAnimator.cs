@@ -604,14 +604,17 @@ public sealed class JumpAnimator : IJumpAnimator
         ContactConfiguration takeoff = takeoffPose ?? Pose(arc.Takeoff, jump.Takeoff.Contacts, arc.TakeoffVelocity, dips);
         ContactConfiguration landing = Pose(arc.Landing, jump.Landing.Contacts, -arc.LandingVelocity, dips);
         var problems = new List<JumpProblem>();
+
+        // A stance no limb reaches from is one every jump from (to) it fails on, whatever its velocity: a problem of
+        // the stance, which the repair then sets aside as a takeoff (landing) for every jump at once.
         if (!takeoff.Valid)
         {
-            problems.Add(new JumpProblem(index, $"takeoff: {takeoff.Reason}"));
+            problems.Add(new JumpProblem(index, $"takeoff: {takeoff.Reason}") { Stance = takeoff.Contacts.Count == 0 ? ProblemStance.Takeoff : ProblemStance.None });
         }
 
         if (!landing.Valid)
         {
-            problems.Add(new JumpProblem(index, $"landing: {landing.Reason}"));
+            problems.Add(new JumpProblem(index, $"landing: {landing.Reason}") { Stance = landing.Contacts.Count == 0 ? ProblemStance.Landing : ProblemStance.None });
         }
 
         Rig rig = Model.Rig;

@@ -14,7 +14,7 @@ public readonly record struct JumpProblem(int Jump, string Reason, float Along =
 
     /// <summary>
     /// The stance the problem belongs to rather than the jump: the body cannot crouch on the jump's takeoff stance, or
-    /// absorb its landing on the landing stance, whichever jump it makes there (every jump from or to that stance has
+    /// absorb its landing on the landing stance, or no limb reaches the level from it, whichever jump it makes there (every jump from or to that stance has
     /// the same contact pose there).
     /// </summary>
     internal ProblemStance Stance { get; init; }

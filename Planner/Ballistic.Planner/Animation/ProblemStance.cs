@@ -6,9 +6,9 @@ internal enum ProblemStance
     /// <summary>A problem of the move itself.</summary>
     None,
 
-    /// <summary>The body cannot crouch on the takeoff stance.</summary>
+    /// <summary>The body cannot crouch on the takeoff stance, or no limb reaches the level from it.</summary>
     Takeoff,
 
-    /// <summary>The body cannot absorb a landing on the landing stance.</summary>
+    /// <summary>The body cannot absorb a landing on the landing stance, or no limb reaches the level from it.</summary>
     Landing,
 }

@@ -16,8 +16,8 @@ namespace Ballistic.Planner.Query;
 /// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned. A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
 /// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
-/// crouch on (or absorb a landing on) is set aside as a takeoff (a landing) for every jump, since each would have the
-/// same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it. Not thread-safe.
+/// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
+/// every jump, since each would have the same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it. Not thread-safe.
 /// </summary>
 public sealed class JumpRepair
 {

@@ -1,9 +1,11 @@
+using System.Numerics;
 using Ballistic.Authoring.Characters;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Animation;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Query;
@@ -86,6 +88,31 @@ public sealed class StanceRepairTests
             Assert.That(plan.Rejected, Has.Count.EqualTo(1));
             Assert.That(plan.Result.Jumps.Select(j => stance == ProblemStance.Takeoff ? j.From.Id : j.To.Id), Has.No.Member(node));
             Assert.That(plan.Result.Reason, Does.Contain("after setting aside 1 jump"));
+        });
+    }
+
+    /// <summary>
+    /// A stance no limb reaches from (here a landing whose trunk stands 1.5 m above the contacts it reports on the
+    /// platform: a roadmap node that the reduced character's estimates accepted and the whole body cannot stand on) fails every jump to it, whatever the jump's
+    /// velocity: the animator reports it as a problem of the landing stance, which the repair sets aside for every jump
+    /// at once (<see cref="AStanceTheBodyCannotDipOnIsSetAsideInOneRound"/>), not one jump per search. Before, such a
+    /// node beside a door's wall cost a user's human rig 13 searches and 23 jumps set aside, two by two.
+    /// </summary>
+    [Test]
+    public void AStanceNoLimbReachesIsAProblemOfTheStanceForEveryJump()
+    {
+        WalkWorld world = WalkWorld.Create(WalkWorld.GapCourse(), "skeleton");
+        RoadmapNode from = world.Stance(new Vector3(-7.3f, 0f, 0.5f), 0, Vector3.UnitX);
+        RoadmapNode ground = world.Stance(new Vector3(-5.5f, 0f, 0f), 1, Vector3.UnitX);
+        var lift = new Vector3(0f, 1.5f, 0f);
+        var floating = new RoadmapNode(1, ground.Pose with { Position = ground.Pose.Position + lift }, ground.Cone, ground.Contacts);
+        JumpAnimation animation = world.Animator.Animate([world.Jump(from, floating)]);
+        JumpProblem[] landing = [.. animation.Problems.Where(p => p.Reason.StartsWith("landing: no limb could reach a surface", StringComparison.Ordinal))];
+        Assert.Multiple(() =>
+        {
+            Assert.That(landing, Has.Length.EqualTo(1), () => string.Join("; ", animation.Problems.Select(p => p.Reason)));
+            Assert.That(landing.Select(p => p.Stance), Has.All.EqualTo(ProblemStance.Landing), "a problem of the landing stance");
+            Assert.That(animation.Problems.Where(p => p.Reason.StartsWith("takeoff:", StringComparison.Ordinal)), Is.Empty, "the takeoff stands");
         });
     }
 
