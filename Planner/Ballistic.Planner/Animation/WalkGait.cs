@@ -1513,8 +1513,9 @@ internal sealed class WalkGait
         /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed.
         /// Where the swinging arm would touch the level (a door's jamb, a corridor's wall), it is held in over
         /// <see cref="ArmDrop"/> either side: the hand drawn toward the front of the thigh (<see cref="HeldIn"/>) and its
-        /// swing faded out, as a walker squeezing through a doorway keeps their arms in; where even that touches (or the
-        /// arm cannot reach) it keeps its last pose, and the free limb's check reports it.
+        /// swing faded out, as a walker squeezing through a doorway keeps their arms in; where that still touches, in
+        /// front of the hips (<see cref="SqueezedIn"/>); where even that touches (or the arm cannot reach) it keeps its
+        /// last pose, and the free limb's check reports it.
         /// </summary>
         private void SwingArm(int l, int from, int to)
         {
@@ -1550,7 +1551,7 @@ internal sealed class WalkGait
                 }
             }
 
-            bool[] touched = SwingPass(l, foot, from, to, null);
+            bool[] touched = SwingPass(l, foot, from, to, null, HeldIn);
             if (!touched.Any(t => t))
             {
                 return;
@@ -1572,15 +1573,28 @@ internal sealed class WalkGait
                 }
             }
 
-            for (int k = 0; k < tuck.Length; k++)
+            Restore(from, dofs, hanging);
+            if (!SwingPass(l, foot, from, to, tuck, HeldIn).Any(t => t))
+            {
+                return;
+            }
+
+            // Still touching (an opening barely wider than the shoulders): held in further, the hands in front of the
+            // hips, as a walker squeezing through a narrow door keeps them.
+            Restore(from, dofs, hanging);
+            SwingPass(l, foot, from, to, tuck, SqueezedIn);
+        }
+
+        /// <summary>The arm's chain angles (<paramref name="dofs"/>) put back, from fine step <paramref name="from"/> on, to <paramref name="hanging"/> (one array, per fine step).</summary>
+        private void Restore(int from, IReadOnlyList<int> dofs, float[] hanging)
+        {
+            for (int k = 0; k < hanging.Length / dofs.Count; k++)
             {
                 for (int c = 0; c < dofs.Count; c++)
                 {
                     _angles[from + k][dofs[c]] = hanging[(k * dofs.Count) + c];
                 }
             }
-
-            SwingPass(l, foot, from, to, tuck);
         }
 
         /// <summary>
@@ -1589,13 +1603,16 @@ internal sealed class WalkGait
         /// </summary>
         private const float HeldIn = 0.2f;
 
+        /// <summary>Share of the arm's length by which a hand is held in where <see cref="HeldIn"/> still touches: in front of the hips.</summary>
+        private const float SqueezedIn = 0.4f;
+
         /// <summary>
         /// One pass of <see cref="SwingArm"/> over fine steps <paramref name="from"/> to <paramref name="to"/> (the
         /// arm's chain starting at each step from its hanging pose there), the arm held in by <paramref name="tuck"/>
-        /// (0 to 1 per step; <c>null</c>: nowhere): the steps (from <paramref name="from"/>) at which the swung hand's
+        /// (0 to 1 per step; <c>null</c>: nowhere) times <paramref name="heldIn"/> of its length: the steps (from <paramref name="from"/>) at which the swung hand's
         /// pose touched the level.
         /// </summary>
-        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck)
+        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck, float heldIn)
         {
             RigLimb limb = _model.Limbs[l];
             _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
@@ -1622,8 +1639,8 @@ internal sealed class WalkGait
                 // The hand drops from its hanging pose to beside the thigh (the arm down, elbow a little bent, clear of
                 // the body sideways), drawn in front of the thigh as far as it is held in, then swings about the shoulder.
                 float reach = _gait._bones[l];
-                float inward = (0.06f - (held * HeldIn)) * reach;
-                Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * ((0.08f + (held * HeldIn)) * reach)) + (left * (side * inward));
+                float inward = (0.06f - (held * heldIn)) * reach;
+                Vector3 down = shoulder + (-Vector3.UnitY * (0.96f * reach)) + (forward * ((0.08f + (held * heldIn)) * reach)) + (left * (side * inward));
                 Vector3 hand = Vector3.Lerp(hangingHand, down, Smooth(fade));
                 Vector3 target = shoulder + Vector3.Transform(hand - shoulder, Quaternion.CreateFromAxisAngle(left, -angle));
                 // Into whichever buffer the last kept angles are not in (no array per fine step).

@@ -25,13 +25,21 @@ public sealed class DoorwayWalkTests
     [OneTimeTearDown]
     public void RemoveTheRigFiles() => RigFolders.Remove(RigFolder);
 
-    [TestCase(0.9f, TestName = "A user's human rig walks through an interior door, 0.9 m wide")]
-    [TestCase(1.2f, TestName = "A user's human rig walks through a front door, 1.2 m wide")]
-    public void AUsersHumanRigWalksThroughADoor(float width)
+    /// <summary>
+    /// A user's human rig walks through doors as wide as a front door and as narrow as a cupboard's (0.6 m, its trunk
+    /// box 0.36 m wide; at 600 nodes the roadmap does not yet reach through an opening that narrow).
+    /// Through the 0.6 m door its hands, held in front of the thighs, still met the jambs ("right_hand passes through
+    /// the level, first 1.46 m along the walk"), its walk turned into a hop over the door that failed too, and the
+    /// request ended AnimationFailed: the hands are now held in front of the hips where that still touches.
+    /// </summary>
+    [TestCase(0.6f, 1500, TestName = "A user's human rig walks through a cupboard door, 0.6 m wide, its hands held in front of its hips")]
+    [TestCase(0.9f, 600, TestName = "A user's human rig walks through an interior door, 0.9 m wide")]
+    [TestCase(1.2f, 600, TestName = "A user's human rig walks through a front door, 1.2 m wide")]
+    public void AUsersHumanRigWalksThroughADoor(float width, int nodes)
     {
         (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(RigFolder);
         Sweep.Setup setup = Sweep.Prepare($"doorway-{width}", ForeignLevels.DoorwayLevel(width), model, reduced);
-        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f));
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f), maxNodes: nodes);
         SweepTests.AssertOneCleanWalk(plan, report);
     }
 
