@@ -84,6 +84,27 @@ internal sealed class FreeBones
         return changed.Count(c => c);
     }
 
+    /// <summary>
+    /// One pose (root <paramref name="root"/>, angles <paramref name="angles"/>) checked for bones of no limb in the
+    /// level, its free chains bent clear first where one is (<see cref="Clear"/>): the first such bone still in the
+    /// level (−1 for none) and the angles checked (<paramref name="angles"/> itself when nothing was bent).
+    /// <paramref name="positions"/> and <paramref name="rotations"/> are left holding the pose as checked.
+    /// </summary>
+    public (int Bone, float[] Angles) Colliding(RootPose root, float[] angles, Vector3[] positions, Quaternion[] rotations)
+    {
+        _rig.Solve(root, angles, positions, rotations);
+        int bone = _collision.OtherBoneColliding(positions, rotations);
+        if (bone < 0 || !Any)
+        {
+            return (bone, angles);
+        }
+
+        float[][] one = [angles];
+        Clear([0f], _ => root, one);
+        _rig.Solve(root, one[0], positions, rotations);
+        return (_collision.OtherBoneColliding(positions, rotations), one[0]);
+    }
+
     /// <summary>The topmost free joint the bone <paramref name="bone"/> (its segment from its parent joint, or its skin) hangs from, or −1.</summary>
     private int ChainOf(int bone)
     {

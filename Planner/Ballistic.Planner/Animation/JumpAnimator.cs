@@ -94,30 +94,14 @@ public sealed class JumpAnimator : IJumpAnimator
     {
         ArgumentNullException.ThrowIfNull(pose);
         ContactConfiguration stance = _contacts.Generate(pose.Pose, pose.Contacts, pose.Cone.Axis);
-        return stance.Contacts.Count >= Math.Min(_requiredContacts, Model.Limbs.Count) && !BodyInLevel(stance);
-    }
-
-    /// <summary>True when a bone of no limb of <paramref name="stance"/> passes through the level, a free chain (a tail) bent clear first where it can be.</summary>
-    private bool BodyInLevel(ContactConfiguration stance)
-    {
-        Rig rig = Model.Rig;
-        var positions = new Vector3[rig.Joints.Count];
-        var rotations = new Quaternion[rig.Joints.Count];
-        rig.Solve(stance.Root, stance.Angles, positions, rotations);
-        if (_collision.OtherBoneColliding(positions, rotations) < 0)
+        if (stance.Contacts.Count < Math.Min(_requiredContacts, Model.Limbs.Count))
         {
             return false;
         }
 
-        if (!_free.Any)
-        {
-            return true;
-        }
-
-        float[][] bent = [(float[])stance.Angles.Clone()];
-        _free.Clear([0f], _ => stance.Root, bent);
-        rig.Solve(stance.Root, bent[0], positions, rotations);
-        return _collision.OtherBoneColliding(positions, rotations) >= 0;
+        var positions = new Vector3[Model.Rig.Joints.Count];
+        var rotations = new Quaternion[Model.Rig.Joints.Count];
+        return _free.Colliding(stance.Root, stance.Angles, positions, rotations).Bone < 0;
     }
 
     /// <inheritdoc />

@@ -40,12 +40,12 @@ internal sealed class StanceDip
     private readonly CharacterModel _model;
     private readonly LimbIk _ik;
     private readonly BodyCollision _collision;
-    private readonly FreeBones? _free;
+    private readonly FreeBones _free;
     private readonly float _restLeg;
     private readonly Vector3 _pivot;
 
     /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>, free bones (a tail) bent clear by <paramref name="free"/>.</summary>
-    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision, FreeBones? free = null)
+    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision, FreeBones free)
     {
         _model = model;
         _ik = ik;
@@ -190,17 +190,9 @@ internal sealed class StanceDip
 
             if (stop is null)
             {
-                rig.Solve(root, next, positions, rotations);
-                if (_collision.OtherBoneColliding(positions, rotations) >= 0 && _free is not null)
-                {
-                    // A tail behind the sinking body bends up out of the step it would enter.
-                    float[][] one = [next];
-                    _free.Clear([0f], _ => root, one);
-                    next = one[0];
-                    rig.Solve(root, next, positions, rotations);
-                }
-
-                if (_collision.OtherBoneColliding(positions, rotations) is int bone and >= 0)
+                // A tail behind the sinking body bends up out of the step it would enter.
+                (int bone, next) = _free.Colliding(root, next, positions, rotations);
+                if (bone >= 0)
                 {
                     stop ??= $"bone '{rig.Joints[bone].Name}' enters the level {depth * 100f:0.0} cm down";
                 }
