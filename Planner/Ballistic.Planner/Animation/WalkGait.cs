@@ -132,6 +132,9 @@ internal sealed class WalkGait
     /// <summary>Half a sole's length, as a share of the rest leg (0.15: a 27 cm foot for a 0.9 m leg), fitted wholly on a stair's tread (<see cref="Run"/>).</summary>
     private const float HalfSole = 0.15f;
 
+    /// <summary>Half a sole's width, as a share of <see cref="HalfSole"/> (0.35: 9.5 cm wide for a 27 cm foot), fitted wholly on a stair's tread where the foot is set down turned along it (<see cref="Run"/>).</summary>
+    private const float HalfSoleWidth = 0.35f;
+
     /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
 
@@ -879,6 +882,9 @@ internal sealed class WalkGait
         private float _stepHeight;
         private float _step;
         private float _stepLow;
+
+        /// <summary>The step (metres) measured at the stances' height on whichever stance the legs reach farther: on a flight of steps, once the walk is under way (<see cref="Boundaries"/>).</summary>
+        private float _stepLowCruise;
         private float _halfCycle = MinHalfCycle;
         private float[] _times = [];
         private float[] _cost = [0f, 1f];
@@ -1041,17 +1047,24 @@ internal sealed class WalkGait
             float step = MathF.Max(natural, 2f * _walk.Speed * _halfCycle);
             _step = MathF.Max(MathF.Min(step, fits), MathF.Max(0.05f * _leg, 1e-3f));
             _stepLow = _step;
+            _stepLowCruise = _step;
             if (cruising)
             {
                 // Steps shorten as the trunk slows and sinks toward the stances at either end (or where the ground
                 // is not level): there the step, and where the feet are centred, are those measured at the stances'
-                // own height (a crouched leg reaches farther ahead than behind).
+                // own height (a crouched leg reaches farther ahead than behind): as far as the legs reach on both
+                // stances, but on a flight of steps the walk slows for (Walk.PaceAt), once it is under way, on
+                // whichever stance they reach farther (a stance cramped by its ground, feet on one 0.3 m stair
+                // tread, does not shorten every step of the flight up to it: those came 3.3-4.3 a second, a tread
+                // each, at the walk's pace on the stairs; steps that do not fit near it are shortened there,
+                // Troubles).
                 Footing[] startLow = Footings(_start, Forward(_start.Root), 0f, _start.Angles);
                 Footing[] endLow = Footings(_end, Forward(_end.Root), 0f, _end.Angles);
                 _startLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startLow[l]))];
                 _endLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endLow[l]))];
-                float low = Reach(startLow, endLow, either: false);
-                _stepLow = MathF.Max(MathF.Min(step, margin * low / (0.5f + Overlap)), MathF.Max(0.05f * _leg, 1e-3f));
+                float least = MathF.Max(0.05f * _leg, 1e-3f);
+                _stepLow = MathF.Max(MathF.Min(step, margin * Reach(startLow, endLow, either: false) / (0.5f + Overlap)), least);
+                _stepLowCruise = MathF.Max(MathF.Min(step, margin * Reach(startLow, endLow, either: true) / (0.5f + Overlap)), least);
             }
 
             // Feet in two groups; the group whose feet can stay least on the start contacts steps first.
@@ -2076,9 +2089,15 @@ internal sealed class WalkGait
                 float moved = Vector3.Distance(previous.Position, pose.Position);
                 // Steps shorten by the walk's pace where the trunk is or where the foot lands, half a step ahead:
                 // the last step before a flight is already the flight's (a full step down onto it does not reach).
+                // Climbing, the walk itself goes at the flight's pace Walk.ClimbLead before it, so the foot looks only
+                // as far further ahead as its half step reaches beyond that: the step onto the flight is taken as
+                // slowly as it is shortened.
                 float along = _walk.DistanceAt(duration * (i - 0.5f) / samples);
-                float pace = MathF.Min(_walk.PaceAt(along), _walk.PaceAt(along + (0.5f * _step)));
-                float stepHere = float.Lerp(_stepLow, _step, Weight(duration * (i - 0.5f) / samples, StepAveraging)) * Shortened(duration * (i - 0.5f) / samples) * pace;
+                float ahead = _walk.ClimbsAt(along + (0.5f * _step)) ? MathF.Max(0f, (0.5f * _step) - (_walk.Speed * Walk.ClimbLead)) : 0.5f * _step;
+                float pace = MathF.Min(_walk.PaceAt(along), _walk.PaceAt(along + ahead));
+                float t = duration * (i - 0.5f) / samples;
+                float low = _walk.PaceAt(along) < 1f ? float.Lerp(_stepLow, _stepLowCruise, Cruising(t)) : _stepLow;
+                float stepHere = float.Lerp(low, _step, Weight(t, StepAveraging)) * Shortened(t) * pace;
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
                 previous = pose;
@@ -2376,7 +2395,8 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
-                if (OnTread(hit.Point, heading) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                bool turning = _walk.SlowsForSteps && (time < _walk.StartTurn || time > _walk.StartTurn + _walk.WalkTime);
+                if (OnTread(hit.Point, heading, turning) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
                 {
                     return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
                 }
@@ -2399,44 +2419,57 @@ internal sealed class WalkGait
 
         /// <summary>
         /// Where a foot set down at <paramref name="point"/> (world metres, on the level) lies wholly on the flat it is
-        /// on, along <paramref name="heading"/>: a stair tread, a step's top. Null where the ground is even within
-        /// <see cref="HalfSole"/> of the rest leg either way (the foot fits where it is), or the flat is too short for
-        /// the sole (the foot is then kept where it was); otherwise the point moved along the walk to the flat's middle,
-        /// or just far enough for the sole to clear its riser and its nosing, with the ground's normal there.
+        /// on, along <paramref name="heading"/> and across it: a stair tread, a step's top. Null where the ground is even
+        /// within <see cref="HalfSole"/> of the rest leg either way along and, re-stepped as the trunk turns in place at
+        /// either end of a walk over stairs (<paramref name="turning"/>: the foot may stand turned along a tread, 1.6 cm
+        /// from its nosing before), <see cref="HalfSoleWidth"/> of that
+        /// across (the foot fits where it is), or the flat is too short for the sole (the foot is then kept where it
+        /// was); otherwise the point moved to the flat's middle, or just far enough for the sole to clear its riser and
+        /// its nosing, with the ground's normal there.
         /// </summary>
-        private (Vector3 Point, Vector3 Normal)? OnTread(Vector3 point, Vector3 heading)
+        private (Vector3 Point, Vector3 Normal)? OnTread(Vector3 point, Vector3 heading, bool turning)
         {
             float half = HalfSole * _gait._restLeg;
-            float step = MathF.Max(0.01f, 0.1f * half);
             float rise = MathF.Max(0.02f, 0.5f * _stepHeight);
             float? Height(Vector3 p) =>
                 _gait._scene.Bvh.Raycast(p + (Vector3.UnitY * (2f * rise)), -Vector3.UnitY, 4f * rise, out RayHit h) && h.Normal.Y > 0f ? h.Point.Y : null;
-            bool Flat(float along) => Height(point + (heading * along)) is float y && MathF.Abs(y - point.Y) <= rise;
-            if (Flat(half) && Flat(-half))
+            bool Flat(Vector3 direction, float along) => Height(point + (direction * along)) is float y && MathF.Abs(y - point.Y) <= rise;
+
+            // How far the sole moves along direction to lie on the flat (0 where it fits, or the flat is too short).
+            float Shift(Vector3 direction, float halfLength)
+            {
+                if (Flat(direction, halfLength) && Flat(direction, -halfLength))
+                {
+                    return 0f;
+                }
+
+                // The flat's extent along direction, from the point, in steps of a tenth of the half sole.
+                float step = MathF.Max(0.01f, 0.1f * half);
+                float front = 0f;
+                while (front < 3f * halfLength && Flat(direction, front + step))
+                {
+                    front += step;
+                }
+
+                float back = 0f;
+                while (back < 3f * halfLength && Flat(direction, -(back + step)))
+                {
+                    back += step;
+                }
+
+                return front + back < 2f * halfLength ? 0f : front < halfLength ? front - halfLength : back < halfLength ? halfLength - back : 0f;
+            }
+
+            Vector3 side = new(-heading.Z, 0f, heading.X);
+            side = side.LengthSquared() > 1e-8f ? Vector3.Normalize(side) : Vector3.UnitX;
+            float along = Shift(heading, half);
+            float across = turning ? Shift(side, HalfSoleWidth * half) : 0f;
+            if (along == 0f && across == 0f)
             {
                 return null;
             }
 
-            // The flat's extent along the walk, from the point, in steps of a tenth of the half sole.
-            float front = 0f;
-            while (front < 3f * half && Flat(front + step))
-            {
-                front += step;
-            }
-
-            float back = 0f;
-            while (back < 3f * half && Flat(-(back + step)))
-            {
-                back += step;
-            }
-
-            if (front + back < 2f * half)
-            {
-                return null;
-            }
-
-            float shift = front < half ? front - half : back < half ? half - back : 0f;
-            Vector3 column = point + (heading * shift);
+            Vector3 column = point + (heading * along) + (side * across);
             return _gait._scene.Bvh.Raycast(column + (Vector3.UnitY * (2f * rise)), -Vector3.UnitY, 4f * rise, out RayHit hit) && hit.Normal.Y > 0f
                 ? (hit.Point, hit.Normal) : null;
         }

@@ -13,7 +13,8 @@ namespace Ballistic.Planner.Roadmaps;
 /// slows down to rest over <see cref="RampTime"/> (a shorter walk never reaches full speed), and turns in place to
 /// the second stance's orientation. On stepped ground (stairs, a kerb: rises steeper than the walker's
 /// <see cref="MaxGrade"/>) it slows so that the trunk climbs or descends the steps no faster than
-/// <see cref="ClimbShare"/> of the walking speed, as people slow on stairs. Immutable.
+/// <see cref="ClimbShare"/> of the walking speed, as people slow on stairs, climbing from a quarter of a step cycle
+/// before the first step (<see cref="ClimbLead"/>: the foot set down on it is the first step taken slowly). Immutable.
 /// </summary>
 public sealed record Walk : Move
 {
@@ -37,6 +38,14 @@ public sealed record Walk : Move
     /// <summary>Path distance (metres) either way over which the steps' rise that slows a walk (<see cref="ClimbShare"/>) is measured: two treads and risers of a stair.</summary>
     public const float ClimbWindow = 0.5f;
 
+    /// <summary>
+    /// Time (seconds at the walking speed) before a flight of steps from which the walk already goes at the flight's
+    /// pace (<see cref="ClimbShare"/>): about the time the trunk takes to follow its leading foot's half step (a
+    /// quarter of a natural step cycle), so the step set down on the first tread is taken as slowly as it is
+    /// shortened, like the steps up the flight, not at full speed.
+    /// </summary>
+    internal const float ClimbLead = 0.22f;
+
     private readonly Vector3[] _path;
     private readonly float[] _distances;
 
@@ -52,8 +61,21 @@ public sealed record Walk : Move
     private readonly float _ramp;
 
     /// <summary>
-    /// Paced distance (metres walked at full speed in the same time) at each path point, where the walk slows
-    /// somewhere (<see cref="ClimbShare"/>); <c>null</c> where it never does (then it is <see cref="_distances"/>).
+    /// Path distances (metres, ascending, from 0 to <see cref="Length"/>) between which the pace is constant, where the
+    /// walk slows somewhere (<see cref="ClimbShare"/>): the path points and, <see cref="ClimbLead"/> before each
+    /// slower stretch, where the trunk starts going at its pace; <c>null</c> where the walk never slows.
+    /// </summary>
+    private readonly float[]? _paceKeys;
+
+    /// <summary>Per path segment (from its second point): the walk slows there for steps that climb (a flight up, not down); <c>null</c> where it never slows.</summary>
+    private readonly bool[]? _climbing;
+
+    /// <summary>Finds the stretch under a path distance in <see cref="_paceKeys"/>.</summary>
+    private readonly SortedLookup? _paceLookup;
+
+    /// <summary>
+    /// Paced distance (metres walked at full speed in the same time) at each of <see cref="_paceKeys"/>, where the
+    /// walk slows somewhere (<see cref="ClimbShare"/>); <c>null</c> where it never does (then it is the path distance).
     /// </summary>
     private readonly float[]? _paced;
 
@@ -125,7 +147,8 @@ public sealed record Walk : Move
         MaxGrade = maxGrade;
         Length = _distances[^1];
         _lookup = new SortedLookup(_distances);
-        _paced = Stepped() is float[] stepped ? Paced(stepped) : null;
+        (_paceKeys, _paced, _climbing) = Stepped() is float[] stepped ? Paced(stepped) : (null, null, null);
+        _paceLookup = _paceKeys is null ? null : new SortedLookup(_paceKeys);
         _pacedLookup = _paced is null ? null : new SortedLookup(_paced);
         _pacedLength = _paced is null ? Length : _paced[^1];
         StartOffset = from.Pose.Position - _path[0];
@@ -146,33 +169,67 @@ public sealed record Walk : Move
     }
 
     /// <summary>
-    /// The paced distance at each path point: each segment counted 1 / pace times, its pace the most of 1 and
-    /// <see cref="ClimbShare"/> over the steps' grade (their net rise or fall, from <paramref name="stepped"/>, over
-    /// the whole 2 × <see cref="ClimbWindow"/> either way of its middle, also near either end: one step down off a crate
-    /// as the walk starts is no flight of stairs); <c>null</c> when every pace is 1.
+    /// The stretches of constant pace and the paced distance at each stretch's start (<see cref="_paceKeys"/>,
+    /// <see cref="_paced"/>): each path segment's pace is the most of 1 and <see cref="ClimbShare"/> over the steps'
+    /// grade (their net rise or fall, from <paramref name="stepped"/>, over the whole 2 × <see cref="ClimbWindow"/>
+    /// either way of its middle, also near either end: one step down off a crate as the walk starts is no flight of
+    /// stairs), and the walk already goes at a slower climbing segment's pace <see cref="ClimbLead"/> of its speed
+    /// before it (going down, the gait's steps look ahead for it: <see cref="ClimbsAt"/>). Each stretch counted
+    /// 1 / pace times; whether each segment climbs; <c>(null, null, null)</c> when every pace is 1.
     /// </summary>
-    private float[]? Paced(float[] stepped)
+    private (float[]? Keys, float[]? Paced, bool[]? Climbing) Paced(float[] stepped)
     {
-        float[]? paced = null;
+        var paces = new float[_distances.Length];
+        var climbing = new bool[_distances.Length];
+        bool slows = false;
         for (int i = 1; i < _distances.Length; i++)
         {
             float middle = 0.5f * (_distances[i - 1] + _distances[i]);
             float rise = Along(_lookup, _distances, stepped, MathF.Min(Length, middle + ClimbWindow)) - Along(_lookup, _distances, stepped, MathF.Max(0f, middle - ClimbWindow));
             float grade = MathF.Abs(rise) / (2f * ClimbWindow);
-            float pace = grade > ClimbShare ? ClimbShare / grade : 1f;
-            if (pace < 1f && paced is null)
-            {
-                paced = new float[_distances.Length];
-                Array.Copy(_distances, paced, i);
-            }
+            paces[i] = grade > ClimbShare ? ClimbShare / grade : 1f;
+            climbing[i] = paces[i] < 1f && rise > 0f;
+            slows |= paces[i] < 1f;
+        }
 
-            if (paced is not null)
+        if (!slows)
+        {
+            return (null, null, null);
+        }
+
+        // The stretches: the path points, and the lead ahead of each climbing segment slower than the one before it.
+        float lead = Speed * ClimbLead;
+        var keys = new List<float>(_distances);
+        for (int i = 2; i < _distances.Length; i++)
+        {
+            if (climbing[i] && paces[i] < paces[i - 1] && _distances[i - 1] - lead > 0f)
             {
-                paced[i] = paced[i - 1] + ((_distances[i] - _distances[i - 1]) / pace);
+                keys.Add(_distances[i - 1] - lead);
             }
         }
 
-        return paced;
+        keys.Sort();
+        float[] k = [.. keys.Distinct()];
+        var paced = new float[k.Length];
+        int first = 1;
+        for (int s = 1; s < k.Length; s++)
+        {
+            // The slowest segment the stretch overlaps or comes within the lead of.
+            while (first < _distances.Length - 1 && _distances[first] <= k[s - 1])
+            {
+                first++;
+            }
+
+            float pace = 1f;
+            for (int i = first; i < _distances.Length && _distances[i - 1] < k[s] + lead; i++)
+            {
+                pace = _distances[i - 1] < k[s] || climbing[i] ? MathF.Min(pace, paces[i]) : pace;
+            }
+
+            paced[s] = paced[s - 1] + ((k[s] - k[s - 1]) / pace);
+        }
+
+        return (k, paced, climbing);
     }
 
     /// <summary>
@@ -218,10 +275,10 @@ public sealed record Walk : Move
     }
 
     /// <summary>The distance along the path (metres) at paced distance <paramref name="paced"/> (clamped).</summary>
-    private float FromPaced(float paced) => _paced is null ? paced : Along(_pacedLookup!, _paced, _distances, paced);
+    private float FromPaced(float paced) => _paced is null ? paced : Along(_pacedLookup!, _paced, _paceKeys!, paced);
 
     /// <summary>The paced distance (metres) at <paramref name="distance"/> metres along the path (clamped).</summary>
-    private float ToPaced(float distance) => _paced is null ? distance : Along(_lookup, _distances, _paced, distance);
+    private float ToPaced(float distance) => _paced is null ? distance : Along(_paceLookup!, _paceKeys!, _paced, distance);
 
 
     /// <inheritdoc />
@@ -364,9 +421,35 @@ public sealed record Walk : Move
             return 1f;
         }
 
-        int i = Math.Max(1, _lookup.FirstAtOrAbove(distance));
+        int i = Math.Max(1, _paceLookup!.FirstAtOrAbove(distance));
         float paced = _paced[i] - _paced[i - 1];
-        return paced > 0f ? (_distances[i] - _distances[i - 1]) / paced : 1f;
+        return paced > 0f ? (_paceKeys![i] - _paceKeys[i - 1]) / paced : 1f;
+    }
+
+    /// <summary>True when the walk slows somewhere for steps (a flight of stairs, <see cref="ClimbShare"/>).</summary>
+    internal bool SlowsForSteps => _paced is not null;
+
+    /// <summary>
+    /// True where the walk at <paramref name="distance"/> metres along the path goes at the pace of steps that climb
+    /// (up a flight), on them or within <see cref="ClimbLead"/> of its speed before them (<see cref="PaceAt"/>).
+    /// </summary>
+    internal bool ClimbsAt(float distance)
+    {
+        if (_climbing is null)
+        {
+            return false;
+        }
+
+        float to = distance + (Speed * ClimbLead);
+        for (int i = Math.Max(1, _lookup.FirstAtOrAbove(Math.Clamp(distance, 0f, Length))); i < _distances.Length && _distances[i - 1] < to; i++)
+        {
+            if (_climbing[i])
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>The ground point at <paramref name="distance"/> metres along the path (clamped), world metres.</summary>

@@ -90,6 +90,24 @@ public sealed class WalkPaceTests
         });
     }
 
+    /// <summary>
+    /// The walk goes at the flight's pace from <see cref="Walk.ClimbLead"/> of its speed before the first riser (the
+    /// leading foot is set down on the first tread while the trunk is still on the floor: before, that step was
+    /// shortened for the flight and taken at full speed, 0.26-0.32 s where the steps on the floor take 0.42-0.44 s),
+    /// and at full speed before that.
+    /// </summary>
+    [Test]
+    public void AWalkUpAFlightOfStairsSlowsAQuarterStepBeforeItsFirstRiser()
+    {
+        Walk walk = Along(Stairs(), MaxGrade);
+        float lead = Speed * Walk.ClimbLead;
+        Assert.Multiple(() =>
+        {
+            Assert.That(SpeedWhere(walk, 3f - lead - 0.1f), Is.EqualTo(Speed).Within(1e-4f), "before the lead");
+            Assert.That(SpeedWhere(walk, 3f - (0.5f * lead)), Is.LessThan(0.8f * Speed), "within the lead, the trunk still on the floor");
+        });
+    }
+
     [Test]
     public void AWalkNeverSlowsOnARampItWalksOnACrateItStepsOverOrWithoutAGrade()
     {
