@@ -2092,11 +2092,12 @@ internal sealed class WalkGait
                 // Climbing, the walk itself goes at the flight's pace Walk.ClimbLead before it, so the foot looks only
                 // as far further ahead as its half step reaches beyond that: the step onto the flight is taken as
                 // slowly as it is shortened.
-                float along = _walk.DistanceAt(duration * (i - 0.5f) / samples);
-                float ahead = _walk.ClimbsAt(along + (0.5f * _step)) ? MathF.Max(0f, (0.5f * _step) - (_walk.Speed * Walk.ClimbLead)) : 0.5f * _step;
-                float pace = MathF.Min(_walk.PaceAt(along), _walk.PaceAt(along + ahead));
                 float t = duration * (i - 0.5f) / samples;
-                float low = _walk.PaceAt(along) < 1f ? float.Lerp(_stepLow, _stepLowCruise, Cruising(t)) : _stepLow;
+                float along = _walk.DistanceAt(t);
+                float paceHere = _walk.PaceAt(along);
+                float ahead = _walk.SlowsForSteps && _walk.ClimbsAt(along + (0.5f * _step)) ? MathF.Max(0f, (0.5f * _step) - (_walk.Speed * Walk.ClimbLead)) : 0.5f * _step;
+                float pace = MathF.Min(paceHere, _walk.PaceAt(along + ahead));
+                float low = paceHere < 1f ? float.Lerp(_stepLow, _stepLowCruise, Cruising(t)) : _stepLow;
                 float stepHere = float.Lerp(low, _step, Weight(t, StepAveraging)) * Shortened(t) * pace;
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
@@ -2379,6 +2380,9 @@ internal sealed class WalkGait
 
             checks.Add(to);
             int[] steps = [.. checks];
+
+            // Re-stepped as the trunk turns in place on stairs, a foot may stand turned along a tread.
+            bool fitAcross = _walk.SlowsForSteps && (time < _walk.StartTurn || time > _walk.StartTurn + _walk.WalkTime);
             foreach ((float share, float shift) in FootholdTries)
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
@@ -2395,8 +2399,7 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
-                bool turning = _walk.SlowsForSteps && (time < _walk.StartTurn || time > _walk.StartTurn + _walk.WalkTime);
-                if (OnTread(hit.Point, heading, turning) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
                 {
                     return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
                 }
@@ -2420,14 +2423,14 @@ internal sealed class WalkGait
         /// <summary>
         /// Where a foot set down at <paramref name="point"/> (world metres, on the level) lies wholly on the flat it is
         /// on, along <paramref name="heading"/> and across it: a stair tread, a step's top. Null where the ground is even
-        /// within <see cref="HalfSole"/> of the rest leg either way along and, re-stepped as the trunk turns in place at
-        /// either end of a walk over stairs (<paramref name="turning"/>: the foot may stand turned along a tread, 1.6 cm
-        /// from its nosing before), <see cref="HalfSoleWidth"/> of that
+        /// within <see cref="HalfSole"/> of the rest leg either way along and, with <paramref name="fitAcross"/> (a foot
+        /// re-stepped as the trunk turns in place at either end of a walk over stairs: it may stand turned along a tread,
+        /// 1.6 cm from its nosing before), <see cref="HalfSoleWidth"/> of that
         /// across (the foot fits where it is), or the flat is too short for the sole (the foot is then kept where it
         /// was); otherwise the point moved to the flat's middle, or just far enough for the sole to clear its riser and
         /// its nosing, with the ground's normal there.
         /// </summary>
-        private (Vector3 Point, Vector3 Normal)? OnTread(Vector3 point, Vector3 heading, bool turning)
+        private (Vector3 Point, Vector3 Normal)? OnTread(Vector3 point, Vector3 heading, bool fitAcross)
         {
             float half = HalfSole * _gait._restLeg;
             float rise = MathF.Max(0.02f, 0.5f * _stepHeight);
@@ -2463,7 +2466,7 @@ internal sealed class WalkGait
             Vector3 side = new(-heading.Z, 0f, heading.X);
             side = side.LengthSquared() > 1e-8f ? Vector3.Normalize(side) : Vector3.UnitX;
             float along = Shift(heading, half);
-            float across = turning ? Shift(side, HalfSoleWidth * half) : 0f;
+            float across = fitAcross ? Shift(side, HalfSoleWidth * half) : 0f;
             if (along == 0f && across == 0f)
             {
                 return null;

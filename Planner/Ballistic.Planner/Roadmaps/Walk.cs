@@ -63,7 +63,7 @@ public sealed record Walk : Move
     /// <summary>
     /// Path distances (metres, ascending, from 0 to <see cref="Length"/>) between which the pace is constant, where the
     /// walk slows somewhere (<see cref="ClimbShare"/>): the path points and, <see cref="ClimbLead"/> before each
-    /// slower stretch, where the trunk starts going at its pace; <c>null</c> where the walk never slows.
+    /// slower climbing stretch, where the trunk starts going at its pace; <c>null</c> where the walk never slows.
     /// </summary>
     private readonly float[]? _paceKeys;
 
