@@ -1,6 +1,6 @@
 #nullable enable
 using System.Reflection;
-using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Levels;
 
 namespace Ballistic.Addon;
 
@@ -9,7 +9,7 @@ public static class BallisticAddonInfo
 {
     /// <summary>The informational version of the loaded <c>Ballistic.Planner</c> assembly.</summary>
     public static string PlannerVersion =>
-        typeof(Aabb).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
-        ?? typeof(Aabb).Assembly.GetName().Version?.ToString()
+        typeof(Level).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
+        ?? typeof(Level).Assembly.GetName().Version?.ToString()
         ?? "unknown";
 }

@@ -16,7 +16,7 @@ namespace Ballistic.Planner.Characters;
 public sealed record Limb(string Name, LimbKind Kind, Vector3 WorkspaceCenter, Vector3 WorkspaceHalfExtents, Quaternion WorkspaceRotation, NormalFilter Filter)
 {
     /// <summary>The workspace Wk in world space for the root pose <paramref name="root"/>.</summary>
-    public OrientedBox WorkspaceAt(in RootPose root) =>
+    internal OrientedBox WorkspaceAt(in RootPose root) =>
         new(root.ToWorld(WorkspaceCenter), WorkspaceHalfExtents, root.Rotation * WorkspaceRotation);
 
     /// <summary>

@@ -63,13 +63,16 @@ public sealed class TriangleBvh : ICollisionWorld
     public int NodeCount => _nodes.Length;
 
     /// <summary>Bounds of the whole level.</summary>
-    public Aabb Bounds => _nodes.Length > 0 ? _nodes[0].Bounds : Aabb.Empty;
+    internal Aabb Bounds => _nodes.Length > 0 ? _nodes[0].Bounds : Aabb.Empty;
+
+    /// <summary>True when <paramref name="box"/> (world space) touches any triangle of the level.</summary>
+    internal bool Overlaps(in OrientedBox box) => Visit(box, results: null);
 
     /// <inheritdoc />
-    public bool Overlaps(in OrientedBox box) => Visit(box, results: null);
+    bool ICollisionWorld.Overlaps(in OrientedBox box) => Overlaps(box);
 
     /// <summary>Adds to <paramref name="results"/> the index of every triangle that <paramref name="box"/> touches.</summary>
-    public void OverlappingTriangles(in OrientedBox box, List<int> results)
+    internal void OverlappingTriangles(in OrientedBox box, List<int> results)
     {
         ArgumentNullException.ThrowIfNull(results);
         Visit(box, results);
@@ -133,7 +136,7 @@ public sealed class TriangleBvh : ICollisionWorld
     /// Adds to <paramref name="results"/> every triangle whose bounding box meets <paramref name="box"/>: a quick,
     /// conservative gathering (it may include triangles that only come near the box).
     /// </summary>
-    public void TrianglesNear(Aabb box, List<int> results)
+    internal void TrianglesNear(Aabb box, List<int> results)
     {
         ArgumentNullException.ThrowIfNull(results);
         if (_nodes.Length == 0 || box.IsEmpty)
@@ -171,7 +174,7 @@ public sealed class TriangleBvh : ICollisionWorld
     }
 
     /// <summary>Adds to <paramref name="results"/> every triangle that touches the axis-aligned box.</summary>
-    public void TrianglesInBox(Aabb box, List<int> results)
+    internal void TrianglesInBox(Aabb box, List<int> results)
     {
         if (box.IsEmpty)
         {

@@ -8,7 +8,7 @@ namespace Ballistic.Planner.Geometry;
 /// </summary>
 /// <param name="Min">Smallest x, y and z of the box, in metres.</param>
 /// <param name="Max">Largest x, y and z of the box, in metres.</param>
-public readonly record struct Aabb(Vector3 Min, Vector3 Max)
+internal readonly record struct Aabb(Vector3 Min, Vector3 Max)
 {
     /// <summary>The empty box: contains nothing, and is the identity of <see cref="Union(Aabb, Aabb)"/>.</summary>
     public static Aabb Empty => new(new Vector3(float.PositiveInfinity), new Vector3(float.NegativeInfinity));

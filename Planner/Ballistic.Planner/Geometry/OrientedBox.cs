@@ -7,7 +7,7 @@ namespace Ballistic.Planner.Geometry;
 /// workspaces Wk are such boxes. Its local frame is centred on <see cref="Center"/> and rotated by
 /// <see cref="Rotation"/> (local to world); in that frame the box is [−<see cref="HalfExtents"/>, +<see cref="HalfExtents"/>].
 /// </summary>
-public readonly struct OrientedBox : IEquatable<OrientedBox>
+internal readonly struct OrientedBox : IEquatable<OrientedBox>
 {
     /// <summary>Creates a box.</summary>
     /// <param name="center">Centre of the box, world metres.</param>

@@ -3,7 +3,7 @@ using System.Numerics;
 namespace Ballistic.Planner.Geometry;
 
 /// <summary>Rotations built from directions (Y up) and taken out of transforms.</summary>
-public static class Rotations
+internal static class Rotations
 {
     /// <summary>The shortest rotation taking +Y to <paramref name="up"/>.</summary>
     internal static Quaternion AlignUp(Vector3 up)

@@ -32,7 +32,7 @@ public readonly record struct Triangle(Vector3 A, Vector3 B, Vector3 C)
     public Vector3 Centroid => (A + B + C) / 3f;
 
     /// <summary>Axis-aligned bounds of the three vertices.</summary>
-    public Aabb Bounds => new(Vector3.Min(Vector3.Min(A, B), C), Vector3.Max(Vector3.Max(A, B), C));
+    internal Aabb Bounds => new(Vector3.Min(Vector3.Min(A, B), C), Vector3.Max(Vector3.Max(A, B), C));
 
     /// <summary>True when every vertex coordinate is a finite number (no NaN, no infinity).</summary>
     public bool IsFinite =>

@@ -53,7 +53,7 @@ public sealed class Level
     public string? Repaired { get; internal set; }
 
     /// <summary>World bounds of all triangles.</summary>
-    public Aabb Bounds { get; }
+    internal Aabb Bounds { get; }
 
     /// <summary>
     /// A hex SHA-256 of the triangles and their friction overrides: two levels with the same fingerprint plan the

@@ -35,10 +35,12 @@ public sealed class LayeringTests
     /// one, fails here until it is counted on purpose. Planner 74 (from 101) and runtime 61 types (NavigationStatus added) on 2026-12-01; planner 71 on
     /// 2026-12-02 (the glTF loader's exception, the output-file exception and roadmap walk records are the CLI's and the
     /// runtime's, not a game's; the loader itself stays public: a game outside Godot loads its level with it, as
-    /// .ci/game does); helpers the
+    /// .ci/game does); planner 68
+    /// on 2026-12-03 (Aabb, OrientedBox and Rotations are the collision checks' and the IK's geometry; the level's,
+    /// triangles' and BVH's members that take or give them are internal too); helpers the
     /// tools and tests use are internal, visible to them by <c>InternalsVisibleTo</c>.
     /// </summary>
-    [TestCase("planner", 71)]
+    [TestCase("planner", 68)]
     [TestCase("runtime", 61)]
     public void ThePublicSurfaceDoesNotGrow(string library, int most)
     {

@@ -112,8 +112,11 @@ public sealed class AddonCompilation
         var options = new CSharpParseOptions(LanguageVersion.CSharp12, DocumentationMode.Diagnose, SourceCodeKind.Regular, symbols);
         List<(string Path, string Text)> list = sources.ToList();
         SyntaxTree[] trees = list.Select(s => CSharpSyntaxTree.ParseText(s.Text, options, s.Path)).ToArray();
+        // Not the game's own assembly name (Ballistic): the libraries' InternalsVisibleTo("ballistic"), for the CLI,
+        // matches it (assembly names compare ignoring case), so the real build sees their internal types; the addon
+        // must not lean on that (a game whose assembly is named otherwise sees only the public surface).
         var compilation = CSharpCompilation.Create(
-            "Ballistic",
+            "Ballistic.AddonCheck",
             trees,
             References.Value,
             new CSharpCompilationOptions(
@@ -167,6 +170,12 @@ public sealed class AddonCompilation
             if (UnknownName.Contains(d.Id))
             {
                 string name = NameIn(d);
+                if (OurInternalTypes.Value.Contains(name) && !(GodotTypeNames.InGodot.Contains(name) && ImportsGodot(d)))
+                {
+                    problems.Add($"{Where(d.Location)}: {d.Id}: '{name}' is internal to the Ballistic libraries: the addon sees only their public types");
+                    continue;
+                }
+
                 string[] namespaces = _systemTypes[name].ToArray();
                 if (namespaces.Length > 0 && !GodotTypeNames.InGodot.Contains(name))
                 {
@@ -353,6 +362,16 @@ public sealed class AddonCompilation
         }
     }
 
+    /// <summary>
+    /// Names of the types of the engine-free Ballistic libraries that the addon cannot see (internal, or nested in
+    /// one): a name of ours that does not resolve in the addon is one of them, and the real build fails on it (Roslyn
+    /// imports no internal type from a reference, so it reports the name as unknown, which for other names is Godot's).
+    /// </summary>
+    private static readonly Lazy<HashSet<string>> OurInternalTypes = new(() =>
+        [.. new[] { typeof(Ballistic.Planner.Levels.Level).Assembly, typeof(Ballistic.Runtime.JumpWorld).Assembly }
+            .SelectMany(a => a.GetTypes()).Where(t => !t.IsVisible && !t.IsNested && !t.Name.StartsWith('<'))
+            .Select(t => t.Name.Split('`')[0])]);
+
     private static readonly Lazy<ImmutableArray<MetadataReference>> References = new(() =>
     {
         string[] platform = ((string)AppContext.GetData("TRUSTED_PLATFORM_ASSEMBLIES")!).Split(Path.PathSeparator)
@@ -360,7 +379,7 @@ public sealed class AddonCompilation
             .ToArray();
         IEnumerable<string> ours = new[]
         {
-            typeof(Ballistic.Planner.Geometry.Aabb).Assembly,
+            typeof(Ballistic.Planner.Levels.Level).Assembly,
             typeof(Ballistic.Runtime.JumpWorld).Assembly,
             typeof(MathNet.Numerics.Constants).Assembly,
         }.Select(a => a.Location);

@@ -73,6 +73,36 @@ public sealed class AddonCompilationTests
         });
     }
 
+    /// <summary>
+    /// A type internal to the Ballistic libraries used by the addon is reported (the addon read its version off the
+    /// planner's Aabb, made internal in the public-surface cut; the real build still compiled it only because the
+    /// game's assembly name matches the CLI's InternalsVisibleTo), and a public one beside it is not.
+    /// </summary>
+    [Test]
+    public void ATypeInternalToTheLibrariesIsReported()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Info.cs", """
+            #nullable enable
+            using System.Reflection;
+            using Ballistic.Planner.Geometry;
+
+            namespace X;
+
+            /// <summary>Versions.</summary>
+            public static class Info
+            {
+                public static Assembly Internal => typeof(Aabb).Assembly;
+
+                public static Assembly Public => typeof(Triangle).Assembly;
+            }
+            """)], editor: false).Problems();
+        Assert.Multiple(() =>
+        {
+            Assert.That(problems, Has.Member("addons/x/Info.cs:10: CS0122: 'Aabb' is internal to the Ballistic libraries: the addon sees only their public types"));
+            Assert.That(problems, Has.None.Contains(":12:"), "Triangle is public");
+        });
+    }
+
     [Test]
     public void AnAliasOrAGlobalUsingIsFollowed()
     {
