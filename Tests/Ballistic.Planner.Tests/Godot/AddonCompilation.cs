@@ -161,6 +161,12 @@ public sealed class AddonCompilation
                 continue;
             }
 
+            if (MemberNotFound.Contains(d.Id) && OurReceiver(d) is { } ours)
+            {
+                problems.Add($"{Where(d.Location)}: {d.Id}: '{NameIn(d)}' is no public member of {ours.ToDisplayString()}: the addon sees only the Ballistic libraries' public API");
+                continue;
+            }
+
             if ((MemberNotFound.Contains(d.Id) && (ReceiverExtendsGodot(d) || ImportsGodot(d)))
                 || (ConversionOfGodotTypes.Contains(d.Id) && ConvertsGodotTypes(d)))
             {
@@ -274,6 +280,25 @@ public sealed class AddonCompilation
             ? node?.AncestorsAndSelf().OfType<TypeDeclarationSyntax>().FirstOrDefault() is { } declaration ? Compilation.GetSemanticModel(tree).GetDeclaredSymbol(declaration) : null
             : Compilation.GetSemanticModel(tree).GetTypeInfo(receiver).Type;
         return ExtendsUnknown(type);
+    }
+
+    /// <summary>
+    /// The type of the expression whose member <paramref name="d"/> does not find, when one of the Ballistic libraries
+    /// the addon references defines it (Godot adds no members to it, so the member is missing or not public there), not
+    /// the addon itself (its nodes extend Godot's); otherwise <c>null</c>.
+    /// </summary>
+    private ITypeSymbol? OurReceiver(Diagnostic d)
+    {
+        if (d.Location.SourceTree is not { } tree)
+        {
+            return null;
+        }
+
+        SyntaxNode? node = tree.GetRoot().FindNode(d.Location.SourceSpan, getInnermostNodeForTie: true);
+        ExpressionSyntax? receiver = node?.AncestorsAndSelf().OfType<MemberAccessExpressionSyntax>().FirstOrDefault()?.Expression;
+        ITypeSymbol? type = receiver is null ? null : Compilation.GetSemanticModel(tree).GetTypeInfo(receiver).Type;
+        return type is { TypeKind: not TypeKind.Error } && !SymbolEqualityComparer.Default.Equals(type.ContainingAssembly, Compilation.Assembly)
+            && type.ContainingAssembly?.Name.StartsWith("Ballistic.", StringComparison.Ordinal) == true ? type : null;
     }
 
     /// <summary>

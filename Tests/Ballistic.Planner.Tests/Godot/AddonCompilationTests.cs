@@ -103,6 +103,36 @@ public sealed class AddonCompilationTests
         });
     }
 
+    /// <summary>
+    /// A member internal to the Ballistic libraries (the level's bounds) used by a node script that imports Godot is
+    /// reported (Godot's unknown extension methods excuse a missing member on other types there, not on ours), and a
+    /// public one beside it is not.
+    /// </summary>
+    [Test]
+    public void AMemberInternalToTheLibrariesIsReportedInAGodotScript()
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Bounds.cs", """
+            #nullable enable
+            using Ballistic.Planner.Levels;
+            using Godot;
+
+            namespace X;
+
+            /// <summary>Level facts.</summary>
+            public partial class Bounds : Node
+            {
+                public static object Box(Level level) => level.Bounds;
+
+                public static int Count(Level level) => level.Triangles.Count;
+            }
+            """)], editor: false).Problems();
+        Assert.Multiple(() =>
+        {
+            Assert.That(problems, Has.Member("addons/x/Bounds.cs:10: CS1061: 'Bounds' is no public member of Ballistic.Planner.Levels.Level: the addon sees only the Ballistic libraries' public API"));
+            Assert.That(problems, Has.None.Contains(":12:"), "Level.Triangles is public");
+        });
+    }
+
     [Test]
     public void AnAliasOrAGlobalUsingIsFollowed()
     {
