@@ -388,9 +388,9 @@ public sealed class AddonCompilation
     }
 
     /// <summary>
-    /// Names of the types of the engine-free Ballistic libraries that the addon cannot see (internal, or nested in
-    /// one): a name of ours that does not resolve in the addon is one of them, and the real build fails on it (Roslyn
-    /// imports no internal type from a reference, so it reports the name as unknown, which for other names is Godot's).
+    /// Names of the engine-free Ballistic libraries' internal types (namespace level): such a name in the addon does not
+    /// resolve (Roslyn reports it inaccessible, CS0122, or unknown, which for other names means Godot's), and a user's
+    /// game, whose assembly the libraries give no <c>InternalsVisibleTo</c>, fails to build on it.
     /// </summary>
     private static readonly Lazy<HashSet<string>> OurInternalTypes = new(() =>
         [.. new[] { typeof(Ballistic.Planner.Levels.Level).Assembly, typeof(Ballistic.Runtime.JumpWorld).Assembly }
