@@ -79,9 +79,8 @@ public sealed class AddonCompilationTests
     /// game's assembly name matches the CLI's InternalsVisibleTo), and a public one beside it is not.
     /// </summary>
     [Test]
-    public void ATypeInternalToTheLibrariesIsReported()
-    {
-        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Info.cs", """
+    public void ATypeInternalToTheLibrariesIsReported() =>
+        AssertReportedBesideAPublicUse("addons/x/Info.cs", """
             #nullable enable
             using System.Reflection;
             using Ballistic.Planner.Geometry;
@@ -95,13 +94,10 @@ public sealed class AddonCompilationTests
 
                 public static Assembly Public => typeof(Triangle).Assembly;
             }
-            """)], editor: false).Problems();
-        Assert.Multiple(() =>
-        {
-            Assert.That(problems, Has.Member("addons/x/Info.cs:10: CS0122: 'Aabb' is internal to the Ballistic libraries: the addon sees only their public types"));
-            Assert.That(problems, Has.None.Contains(":12:"), "Triangle is public");
-        });
-    }
+            """,
+            "addons/x/Info.cs:10: CS0122: 'Aabb' is internal to the Ballistic libraries: the addon sees only their public types",
+            publicLine: 12,
+            "Triangle is public");
 
     /// <summary>
     /// A member internal to the Ballistic libraries (the level's bounds) used by a node script that imports Godot is
@@ -109,9 +105,8 @@ public sealed class AddonCompilationTests
     /// public one beside it is not.
     /// </summary>
     [Test]
-    public void AMemberInternalToTheLibrariesIsReportedInAGodotScript()
-    {
-        IReadOnlyList<string> problems = AddonCompilation.Of([("addons/x/Bounds.cs", """
+    public void AMemberInternalToTheLibrariesIsReportedInAGodotScript() =>
+        AssertReportedBesideAPublicUse("addons/x/Bounds.cs", """
             #nullable enable
             using Ballistic.Planner.Levels;
             using Godot;
@@ -125,11 +120,23 @@ public sealed class AddonCompilationTests
 
                 public static int Count(Level level) => level.Triangles.Count;
             }
-            """)], editor: false).Problems();
+            """,
+            "addons/x/Bounds.cs:10: CS1061: 'Bounds' is no public member of Ballistic.Planner.Levels.Level: the addon sees only the Ballistic libraries' public API",
+            publicLine: 12,
+            "Level.Triangles is public");
+
+    /// <summary>
+    /// Compiles one planted addon file (an export build) and asserts that its use of something internal to the
+    /// Ballistic libraries is reported as <paramref name="expected"/> and that the public use on line
+    /// <paramref name="publicLine"/> is not reported.
+    /// </summary>
+    private static void AssertReportedBesideAPublicUse(string path, string source, string expected, int publicLine, string because)
+    {
+        IReadOnlyList<string> problems = AddonCompilation.Of([(path, source)], editor: false).Problems();
         Assert.Multiple(() =>
         {
-            Assert.That(problems, Has.Member("addons/x/Bounds.cs:10: CS1061: 'Bounds' is no public member of Ballistic.Planner.Levels.Level: the addon sees only the Ballistic libraries' public API"));
-            Assert.That(problems, Has.None.Contains(":12:"), "Level.Triangles is public");
+            Assert.That(problems, Has.Member(expected));
+            Assert.That(problems, Has.None.Contains($":{publicLine}:"), because);
         });
     }
 
