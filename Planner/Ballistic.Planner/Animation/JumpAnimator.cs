@@ -199,6 +199,7 @@ public sealed class JumpAnimator : IJumpAnimator
         // Each walk: from the previous move's landing (or walk's end) pose, or the first stance's, to the next jump's
         // takeoff pose, or the last stance's.
         var walks = new WalkGait.Clip?[moves.Count];
+        Move[] animated = [.. moves];
         ContactConfiguration? left = null;
         for (int m = 0; m < moves.Count; m++)
         {
@@ -210,11 +211,15 @@ public sealed class JumpAnimator : IJumpAnimator
 
             ContactConfiguration start = left ?? Stand(m, walk.From, "start", problems);
             ContactConfiguration end = m + 1 < moves.Count && clips[m + 1] is Clip next ? next.Takeoff : Stand(m, walk.To, "end", problems);
-            WalkGait.Clip animated = _gait.Animate(m, walk, start, end, frameRate);
-            problems.AddRange(animated.Problems);
-            walks[m] = animated;
+            WalkGait.Clip walked = _gait.Animate(m, walk, start, end, frameRate);
+            problems.AddRange(walked.Problems);
+            walks[m] = walked;
+            animated[m] = walked.Walked(walk);
             left = end;
         }
+
+        // A walk whose steps shorten around rough ground slows there (WalkGait): the moves as animated.
+        moves = animated;
 
         // Assemble: moves, and on the ground around each jump its crouch and landing with the steps between them;
         // contact phases along the way.

@@ -71,11 +71,22 @@ internal sealed class WalkGait
     /// <summary>Least share of the step <see cref="ManyFeetHips"/> leaves for it to apply.</summary>
     private const float ManyFeetShare = 0.75f;
 
-    /// <summary>Grade (rise over run) up to which the ground counts as level for cruising (tan 5°).</summary>
+    /// <summary>Grade (rise over run) up to which the ground counts as level for cruising: the steps' length (tan 5°).</summary>
     private const float LevelGrade = 0.0875f;
 
-    /// <summary>Grade from which the trunk does not cruise at all (tan 12°).</summary>
+    /// <summary>Grade from which the steps are those of the stances' height (tan 12°).</summary>
     private const float SteepGrade = 0.2126f;
+
+    /// <summary>
+    /// Grade up to which the hips cruise at their full lift (tan 7°): wider than the steps' <see cref="LevelGrade"/>, so
+    /// the hips stay up over the gentle rolls of a dune field (the desert demo's last walk cruised 0.868 L on ground of
+    /// 5-7°, the steps there at their level length). Where that keeps a foot from reaching its foothold, the walk
+    /// slows there and its steps shorten (<see cref="Run"/>), at the same cadence.
+    /// </summary>
+    private const float HipsLevelGrade = 0.1228f;
+
+    /// <summary>Grade from which the hips do not cruise at all (tan 13°).</summary>
+    private const float HipsSteepGrade = 0.2309f;
 
     /// <summary>Distance (metres) along the path either way over which the ground's grade is measured.</summary>
     private const float LevelWindow = 0.5f;
@@ -392,6 +403,15 @@ internal sealed class WalkGait
 
         /// <summary>How far (metres, world up) the run lifted its roots at each fine step: where a run walked again judges its footholds.</summary>
         public float[] Lifts { get; init; } = [];
+
+        /// <summary>Stretches (metres along the walk, from and to) where the walk animated slows so that its shortened steps keep its cadence (<see cref="Walk.Slowed"/>); empty where it does not.</summary>
+        public (float From, float To)[] SlowedAt { get; init; } = [];
+
+        /// <summary>The pace (0 to 1) the walk slows to over <see cref="SlowedAt"/>.</summary>
+        public float SlowedPace { get; init; } = 1f;
+
+        /// <summary><paramref name="walk"/> (the walk this clip was asked to animate, or one the same) as animated: slowed where <see cref="SlowedAt"/> says.</summary>
+        public Walk Walked(Walk walk) => SlowedAt.Length > 0 ? walk.Slowed(SlowedAt, SlowedPace) : walk;
     }
 
     /// <summary>
@@ -452,7 +472,9 @@ internal sealed class WalkGait
     /// far as the held feet allow (<see cref="KneeMargin"/>), the hands down beside the thighs swinging
     /// <see cref="ArmSwing"/> against the legs. Where that walk has problems: walked again with steps shortened to
     /// <see cref="ShortStep"/> only around them (first within <see cref="NarrowSpan"/> of them, kept where that clears the walk; then within
-    /// <see cref="ShortSpan"/>, further where the same troubles come back), then lifted with the classic steps, then at the
+    /// <see cref="ShortSpan"/>, further where the same troubles come back), the walk slowed there by as much so that
+    /// they keep its cadence (<see cref="Clip.Walked"/>: it then takes longer; a walker picks its way over rough
+    /// ground, it does not scurry), then lifted with the classic steps, then at the
     /// stances' own height; the first clean one is kept, else the one with the fewest problems.
     /// </summary>
     /// <param name="move">Index of the walk in the path, for problems.</param>
@@ -540,7 +562,9 @@ internal sealed class WalkGait
         }
 
         // Where the upright walk met trouble, it is walked again with shorter steps there (ShortenRounds times at
-        // most), the rest of it unchanged: one hollow or a cramped end stance does not shorten every step. Shortening
+        // most), the rest of it unchanged: one hollow or a cramped end stance does not shorten every step. The walk
+        // slows there by as much (Run), so the steps keep their cadence: shortened at full speed, the skeleton's steps
+        // came 3.0 a second over the debris of a foreign level, and they now come 2.5, a person's 1.9 to 2.6. Shortening
         // steps moves the footholds after them, so a walk may meet a new trouble further on: it is shortened there
         // too, the earlier places kept, until a walk does worse than the best yet. A walk that meets only the same
         // troubles again is shortened further there (ShortStep again each time, down to LeastShortStep: a foot
@@ -861,7 +885,6 @@ internal sealed class WalkGait
         private readonly List<JumpProblem> _problems = [];
         private readonly List<ContactPhase> _phases = [];
         private readonly List<float> _troubles = [];
-        private readonly float[] _shortAt;
 
         /// <summary>An earlier run's lifts per fine step (<see cref="Clip.Lifts"/>, metres, world up), added to the roots while the footholds are chosen; <c>null</c>: chosen at the unlifted roots.</summary>
         private readonly float[]? _raised;
@@ -869,11 +892,25 @@ internal sealed class WalkGait
         /// <summary>What this run's lift raised its roots by at each fine step (metres, world up); empty without a lift.</summary>
         private float[] _lifts = [];
         private readonly float[] _lowAt;
-        private readonly float _shortShare;
-        private readonly float _shortSpan;
 
         /// <summary>How many places (times on the walk's clock, to the nearest 0.05 s) <paramref name="times"/> names.</summary>
         public static int Places(float[] times) => Rounded(times).Length;
+
+        /// <summary>
+        /// <paramref name="time"/> (seconds on walk <paramref name="from"/>'s clock) on the clock of <paramref name="to"/>,
+        /// the same walk slowed elsewhere (<see cref="Walk.Slowed"/>): the same distance along it, or the same time into
+        /// either turn in place.
+        /// </summary>
+        private static float OnClock(float time, Walk from, Walk to)
+        {
+            if (ReferenceEquals(from, to) || time <= from.StartTurn)
+            {
+                return time;
+            }
+
+            float walked = from.StartTurn + from.WalkTime;
+            return time >= walked ? to.StartTurn + to.WalkTime + (time - walked) : to.TimeAtDistance(from.DistanceAt(time));
+        }
 
         /// <summary><paramref name="times"/> to the nearest 0.05 s, each once: where a walk is shortened.</summary>
         private static float[] Rounded(float[] times) => [.. times.Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
@@ -905,14 +942,33 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
+        /// <summary>The walk this run was asked to animate: <see cref="_walk"/> unless it slows around troubles (<see cref="Walk.Slowed"/>).</summary>
+        private readonly Walk _given;
+
+        /// <summary>Where (metres along the walk) and to what pace the walk slows around the troubles an earlier run met (<see cref="Clip.SlowedAt"/>).</summary>
+        private readonly (float From, float To)[] _slowedAt = [];
+
+        private readonly float _slowedPace = 1f;
+
         public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan, float[]? raised = null)
         {
             _raised = raised;
-            _shortShare = shortShare;
-            _shortSpan = shortSpan;
             _roll = roll;
-            _shortAt = Rounded(shortAt ?? []);
-            _lowAt = Rounded(lowAt ?? []);
+            _given = walk;
+            if (shortAt is { Length: > 0 } && gait._restLeg > 0f && walk.Speed > 0f)
+            {
+                // Steps shortened around the troubles are taken at the walk's cadence: the walk slows there by as much
+                // (Walk.PaceAt shortens the steps), over the span of steps either way and half a step more, in the
+                // step of this leg at this speed.
+                float leg = gait._restLeg;
+                float natural = longSteps ? 1.15f * leg * MathF.Pow(walk.Speed * walk.Speed / (9.81f * leg), 0.3f) : StepShare * leg;
+                float reach = (shortSpan + 0.5f) * natural;
+                _slowedAt = [.. shortAt.Select(t => walk.DistanceAt(t)).Select(d => (d - reach, d + reach))];
+                _slowedPace = shortShare;
+                walk = walk.Slowed(_slowedAt, shortShare);
+            }
+
+            _lowAt = Rounded([.. (lowAt ?? []).Select(t => OnClock(t, _given, walk))]);
             _cruise = cruise;
             _arms = gait._restLeg > 0f && walk.Speed > 0f;
             _lift = lift && _arms;
@@ -1228,7 +1284,7 @@ internal sealed class WalkGait
                 _problems.Add(new JumpProblem(_move, $"{_model.Limbs[limb].Name} {kind} ({where})", distance));
             }
 
-            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n) { Troubles = [.. _troubles], Lifts = _lifts };
+            return new Clip(frames, _phases, _colliding.Count(c => c), _problems, _step, n) { Troubles = [.. _troubles.Select(t => OnClock(t, _walk, _given))], Lifts = _lifts, SlowedAt = _slowedAt, SlowedPace = _slowedPace };
         }
 
         /// <summary>The roots on the walk at every fine step; the trunk's angles (in no limb) going smoothly from the start pose's to the end pose's; limbs as at the start.</summary>
@@ -1768,7 +1824,7 @@ internal sealed class WalkGait
                 cruise = float.Lerp(_cruiseStart, _cruiseEnd, s);
             }
 
-            cruise *= Weight(t);
+            cruise *= Weight(t, hips: true);
             return cruise > 0f ? new RootPose(pose.Position + (Vector3.UnitY * cruise), pose.Rotation) : pose;
         }
 
@@ -1801,9 +1857,10 @@ internal sealed class WalkGait
         /// How far into its cruise the walk is at <paramref name="t"/> seconds, 0 to 1: its speed over the walking
         /// speed, times the share of the path within <see cref="LevelWindow"/> either way that is level
         /// (<see cref="LevelShare"/>: on stairs and slopes a straight leg reaches less far down and up: the steps and
-        /// the hips stay as at the stances), averaged over <paramref name="averaging"/> metres of travel either way.
+        /// the hips stay as at the stances), averaged over <paramref name="averaging"/> metres of travel either way;
+        /// for the <paramref name="hips"/>' lift, level by the hips' wider grades (<see cref="HipsLevelGrade"/>).
         /// </summary>
-        private float Weight(float t, float averaging = LevelWindow)
+        private float Weight(float t, float averaging = LevelWindow, bool hips = false)
         {
             float w = Cruising(t);
             if (!(w > 0f))
@@ -1817,7 +1874,7 @@ internal sealed class WalkGait
             float level = 0f;
             for (int k = -LevelSamples; k <= LevelSamples; k++)
             {
-                level += LevelShare(distance + (k * averaging / LevelSamples));
+                level += LevelShare(distance + (k * averaging / LevelSamples), hips);
             }
 
             return w * level / ((2 * LevelSamples) + 1) * Lowered(t);
@@ -1844,13 +1901,14 @@ internal sealed class WalkGait
             return clear;
         }
 
-        /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/>, fading to 0 by <see cref="SteepGrade"/>.</summary>
-        private float LevelShare(float distance)
+        /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/> (<see cref="HipsLevelGrade"/> for the <paramref name="hips"/>), fading to 0 by <see cref="SteepGrade"/> (<see cref="HipsSteepGrade"/>).</summary>
+        private float LevelShare(float distance, bool hips = false)
         {
             Vector3 d = _walk.PointAt(distance + LevelWindow) - _walk.PointAt(distance - LevelWindow);
             float across = new Vector2(d.X, d.Z).Length();
             float grade = across > 1e-3f ? MathF.Abs(d.Y) / across : 0f;
-            return Math.Clamp((SteepGrade - grade) / (SteepGrade - LevelGrade), 0f, 1f);
+            (float level, float steep) = hips ? (HipsLevelGrade, HipsSteepGrade) : (LevelGrade, SteepGrade);
+            return Math.Clamp((steep - grade) / (steep - level), 0f, 1f);
         }
 
         /// <summary>
@@ -2098,7 +2156,7 @@ internal sealed class WalkGait
                 float ahead = _walk.SlowsForSteps && _walk.ClimbsAt(along + (0.5f * _step)) ? MathF.Max(0f, (0.5f * _step) - (_walk.Speed * Walk.ClimbLead)) : 0.5f * _step;
                 float pace = MathF.Min(paceHere, _walk.PaceAt(along + ahead));
                 float low = paceHere < 1f ? float.Lerp(_stepLow, _stepLowCruise, Cruising(t)) : _stepLow;
-                float stepHere = float.Lerp(low, _step, Weight(t, StepAveraging)) * Shortened(t) * pace;
+                float stepHere = float.Lerp(low, _step, Weight(t, StepAveraging)) * pace;
                 float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
                 cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
                 previous = pose;
@@ -2149,15 +2207,6 @@ internal sealed class WalkGait
                 }
             }
         }
-
-        /// <summary>
-        /// The share of the step taken at <paramref name="time"/>: this run's shortened share (<see cref="ShortStep"/>,
-        /// or less where the same troubles came back) within this run's span (<see cref="NarrowSpan"/> or
-        /// <see cref="ShortSpan"/> steps' time) of a trouble the previous run met (on a hollow, a bump or a stance's
-        /// cramped ground the legs reach less far), rising smoothly to 1 a step beyond.
-        /// </summary>
-        private float Shortened(float time) =>
-            _shortAt.Length == 0 ? 1f : float.Lerp(_shortShare, 1f, Clear(time, _shortAt, _shortSpan * StepTime, StepTime));
 
         /// <summary>
         /// The walk's speed at <paramref name="t"/> seconds over its walking speed at its pace there, 0 to 1 (0 outside

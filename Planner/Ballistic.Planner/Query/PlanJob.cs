@@ -61,7 +61,8 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult
             JumpAnimation animation = animator.Animate(result.Moves, frameRate);
             if (animation.IsClean)
             {
-                return (result with { Reason = result.Reason + repair.SuccessNote(), Elapsed = clock.Elapsed }, animation, round);
+                // The moves as animated: a walk slowed where its steps shorten takes longer (JumpAnimator).
+                return (result with { Reason = result.Reason + repair.SuccessNote(), Moves = animation.Moves, Elapsed = clock.Elapsed }, animation, round);
             }
 
             repair.Reject(result.Moves, animation);

@@ -102,6 +102,28 @@ public sealed record Walk : Move
     /// </param>
     /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, or a negative grade.</exception>
     public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity)
+        : this(from, to, path, speed, via, turnRate, maxGrade, [], 1f)
+    {
+    }
+
+    /// <summary>
+    /// This walk slowed to <paramref name="pace"/> (0 to 1) of its speed over <paramref name="stretches"/> (metres
+    /// along its path, from and to), as well as for any steps it slows for: the gait shortens its steps there by as
+    /// much, at the cadence of the rest of the walk (<see cref="PaceAt"/>). Same stances, path, speed and limits; it
+    /// takes longer.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">A pace not above 0 or above 1.</exception>
+    internal Walk Slowed(IReadOnlyList<(float From, float To)> stretches, float pace)
+    {
+        if (!(pace > 0f && pace <= 1f))
+        {
+            throw new ArgumentOutOfRangeException(nameof(pace), pace, "A walk slows to a pace above 0 and at most 1.");
+        }
+
+        return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, stretches, pace);
+    }
+
+    private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, IReadOnlyList<(float From, float To)> slowed, float slowPace)
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
@@ -147,7 +169,9 @@ public sealed record Walk : Move
         MaxGrade = maxGrade;
         Length = _distances[^1];
         _lookup = new SortedLookup(_distances);
-        (_paceKeys, _paced, _climbing) = Stepped() is float[] stepped ? Paced(stepped) : (null, null, null);
+        float[]? stepped = Stepped();
+        bool slowedSomewhere = slowPace < 1f && slowed.Any(s => s.To > 0f && s.From < Length && s.To > s.From);
+        (_paceKeys, _paced, _climbing, SlowsForSteps) = stepped is not null || slowedSomewhere ? Paced(stepped, slowedSomewhere ? slowed : [], slowPace) : (null, null, null, false);
         _paceLookup = _paceKeys is null ? null : new SortedLookup(_paceKeys);
         _pacedLookup = _paced is null ? null : new SortedLookup(_paced);
         _pacedLength = _paced is null ? Length : _paced[^1];
@@ -173,17 +197,25 @@ public sealed record Walk : Move
     /// <see cref="_paced"/>): each path segment's pace is the most of 1 and <see cref="ClimbShare"/> over the steps'
     /// grade (their net rise or fall, from <paramref name="stepped"/>, over the whole 2 × <see cref="ClimbWindow"/>
     /// either way of its middle, also near either end: one step down off a crate as the walk starts is no flight of
-    /// stairs), and the walk already goes at a slower climbing segment's pace <see cref="ClimbLead"/> of its speed
-    /// before it (going down, the gait's steps look ahead for it: <see cref="ClimbsAt"/>). Each stretch counted
-    /// 1 / pace times; whether each segment climbs; <c>(null, null, null)</c> when every pace is 1.
+    /// stairs; 1 without <paramref name="stepped"/>), and the walk already goes at a slower climbing segment's pace
+    /// <see cref="ClimbLead"/> of its speed before it (going down, the gait's steps look ahead for it:
+    /// <see cref="ClimbsAt"/>); times <paramref name="slowPace"/> within any of the <paramref name="slowed"/>
+    /// stretches (metres along the path: <see cref="Slowed"/>). Each stretch counted 1 / pace times; whether each
+    /// segment climbs; whether the steps slow the walk anywhere; <c>(null, null, null, false)</c> when every pace is 1.
     /// </summary>
-    private (float[]? Keys, float[]? Paced, bool[]? Climbing) Paced(float[] stepped)
+    private (float[]? Keys, float[]? Paced, bool[]? Climbing, bool Stairs) Paced(float[]? stepped, IReadOnlyList<(float From, float To)> slowed, float slowPace)
     {
         var paces = new float[_distances.Length];
         var climbing = new bool[_distances.Length];
         bool slows = false;
         for (int i = 1; i < _distances.Length; i++)
         {
+            if (stepped is null)
+            {
+                paces[i] = 1f;
+                continue;
+            }
+
             float middle = 0.5f * (_distances[i - 1] + _distances[i]);
             float rise = Along(_lookup, _distances, stepped, MathF.Min(Length, middle + ClimbWindow)) - Along(_lookup, _distances, stepped, MathF.Max(0f, middle - ClimbWindow));
             float grade = MathF.Abs(rise) / (2f * ClimbWindow);
@@ -192,14 +224,21 @@ public sealed record Walk : Move
             slows |= paces[i] < 1f;
         }
 
-        if (!slows)
+        if (!slows && slowed.Count == 0)
         {
-            return (null, null, null);
+            return (null, null, null, false);
         }
 
-        // The stretches: the path points, and the lead ahead of each climbing segment slower than the one before it.
+        // The stretches: the path points, the lead ahead of each climbing segment slower than the one before it, and
+        // the ends of the stretches slowed for the gait.
         float lead = Speed * ClimbLead;
         var keys = new List<float>(_distances);
+        foreach ((float from, float to) in slowed)
+        {
+            keys.Add(Math.Clamp(from, 0f, Length));
+            keys.Add(Math.Clamp(to, 0f, Length));
+        }
+
         for (int i = 2; i < _distances.Length; i++)
         {
             if (climbing[i] && paces[i] < paces[i - 1] && _distances[i - 1] - lead > 0f)
@@ -226,10 +265,19 @@ public sealed record Walk : Move
                 pace = _distances[i - 1] < k[s] || climbing[i] ? MathF.Min(pace, paces[i]) : pace;
             }
 
+            foreach ((float from, float to) in slowed)
+            {
+                if (k[s - 1] < to && k[s] > from)
+                {
+                    pace *= slowPace;
+                    break;
+                }
+            }
+
             paced[s] = paced[s - 1] + ((k[s] - k[s - 1]) / pace);
         }
 
-        return (k, paced, climbing);
+        return (k, paced, climbing, slows);
     }
 
     /// <summary>
@@ -427,7 +475,7 @@ public sealed record Walk : Move
     }
 
     /// <summary>True when the walk slows somewhere for steps (a flight of stairs, <see cref="ClimbShare"/>).</summary>
-    internal bool SlowsForSteps => _paced is not null;
+    internal bool SlowsForSteps { get; }
 
     /// <summary>
     /// True where the walk at <paramref name="distance"/> metres along the path goes at the pace of steps that climb

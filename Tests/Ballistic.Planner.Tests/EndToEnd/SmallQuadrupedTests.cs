@@ -96,7 +96,8 @@ public sealed class SmallQuadrupedTests
                 {
                     air.Add(ordered[i].From - ordered[i - 1].To);
                 }
-                if (walk.SpeedAt(ordered[i].From - start) >= 0.99f * walk.Speed && walk.SpeedAt(ordered[i - 1].To - start) >= 0.99f * walk.Speed)
+                // Cruising: sped up from rest (where the gait slows the walk for shorter steps, at its pace there).
+                if (walk.CruiseAt(ordered[i].From - start) >= 0.99f && walk.CruiseAt(ordered[i - 1].To - start) >= 0.99f)
                 {
                     steps.Add(Vector3.Distance(ordered[i].Position, ordered[i - 1].Position));
                 }

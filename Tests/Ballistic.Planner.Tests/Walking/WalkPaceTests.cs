@@ -13,7 +13,7 @@ namespace Ballistic.Planner.Tests.Walking;
 /// <summary>
 /// A walk slows on stepped ground (stairs, rises steeper than the walker walks: <see cref="Walk.ClimbShare"/>) and
 /// nowhere else: up a flight of 17 cm risers at about half its speed, at full speed on the floor before and the landing
-/// after, on a ramp it walks, and over a crate it steps onto and off.
+/// after, on a ramp it walks, and over a crate it steps onto and off; and where the gait slows it to shorten its steps.
 /// </summary>
 public sealed class WalkPaceTests
 {
@@ -127,6 +127,52 @@ public sealed class WalkPaceTests
         });
 
         Assert.That(() => Along(ramp, -1f), Throws.ArgumentException.With.Message.Contains("grade"));
+    }
+
+    /// <summary>
+    /// A walk the gait slows where it shortens its steps (<see cref="Walk.Slowed"/>) goes at that pace there and at full
+    /// speed elsewhere, takes as much longer as the stretch walked slower, and keeps its stances, path and speed.
+    /// </summary>
+    [Test]
+    public void AWalkSlowedForShorterStepsGoesAtThatPaceThereAndTakesLongerByAsMuch()
+    {
+        Vector3[] floor = [.. Enumerable.Range(0, 201).Select(i => new Vector3(0.05f * i, 0f, 0f))];
+        Walk walk = Along(floor, MaxGrade);
+        Walk slowed = walk.Slowed([(4f, 6f)], 0.5f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(slowed.PaceAt(5f), Is.EqualTo(0.5f).Within(1e-5f), "in the stretch");
+            Assert.That(slowed.PaceAt(2f), Is.EqualTo(1f).Within(1e-4f), "before it");
+            Assert.That(slowed.PaceAt(8f), Is.EqualTo(1f).Within(1e-4f), "after it");
+            Assert.That(SpeedWhere(slowed, 5f), Is.EqualTo(0.5f * Speed).Within(1e-3f), "speed in the stretch");
+            Assert.That(SpeedWhere(slowed, 2f), Is.EqualTo(Speed).Within(1e-3f), "speed before it");
+
+            // Two metres at half speed take 2 / 1.5 s more than at full speed.
+            Assert.That(slowed.Duration - walk.Duration, Is.EqualTo(2f / Speed).Within(1e-3f), "the time it adds");
+            Assert.That(slowed.SlowsForSteps, Is.False, "no steps slow it");
+            Assert.That((slowed.From, slowed.To, slowed.Speed, slowed.Length), Is.EqualTo((walk.From, walk.To, walk.Speed, walk.Length)));
+            Assert.That(slowed.Path, Is.EqualTo(walk.Path));
+            Assert.That(slowed.PoseAt(slowed.Duration).Position, Is.EqualTo(walk.To.Pose.Position));
+            foreach (float t in Enumerable.Range(1, 40).Select(i => slowed.Duration * i / 41f))
+            {
+                Assert.That(slowed.TimeAtDistance(slowed.DistanceAt(t)), Is.EqualTo(t).Within(2e-3f), $"at {t} s");
+            }
+        });
+    }
+
+    /// <summary>On a flight of stairs the gait's slowing comes on top of the flight's pace: shorter steps there too keep the cadence.</summary>
+    [Test]
+    public void OnAFlightTheGaitsSlowingComesOnTopOfTheFlightsPace()
+    {
+        Walk walk = Along(Stairs(), MaxGrade);
+        float middle = Enumerable.Range(0, 2001).Select(i => walk.Length * i / 2000f).MinBy(d => MathF.Abs(walk.PointAt(d).X - 4.2f));
+        Walk slowed = walk.Slowed([(middle - 0.3f, middle + 0.3f)], 0.85f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(walk.PaceAt(middle), Is.LessThan(0.8f), "the flight slows the walk");
+            Assert.That(slowed.PaceAt(middle), Is.EqualTo(0.85f * walk.PaceAt(middle)).Within(1e-4f), "both slow it");
+            Assert.That(slowed.SlowsForSteps, Is.True, "the steps slow it still");
+        });
     }
 
     [Test]
