@@ -471,7 +471,9 @@ public sealed record Walk : Move
 
         int i = Math.Max(1, _paceLookup!.FirstAtOrAbove(distance));
         float paced = _paced[i] - _paced[i - 1];
-        return paced > 0f ? (_paceKeys![i] - _paceKeys[i - 1]) / paced : 1f;
+        // At most 1: a stretch at full pace divides two sums of the same lengths, which rounding leaves 1e-5 apart
+        // (the walk would go faster than its speed there).
+        return paced > 0f ? MathF.Min(1f, (_paceKeys![i] - _paceKeys[i - 1]) / paced) : 1f;
     }
 
     /// <summary>True when the walk slows somewhere for steps (a flight of stairs, <see cref="ClimbShare"/>).</summary>
