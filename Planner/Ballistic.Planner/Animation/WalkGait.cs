@@ -912,6 +912,9 @@ internal sealed class WalkGait
             return time >= walked ? to.StartTurn + to.WalkTime + (time - walked) : to.TimeAtDistance(from.DistanceAt(time));
         }
 
+        /// <summary>The step (metres) a walker of leg <paramref name="leg"/> (metres) takes at <paramref name="speed"/> (m/s): Alexander's stride 2.3·L·Fr^0.3 halved, Fr = v²/(g·L).</summary>
+        private static float UprightStep(float leg, float speed) => 1.15f * leg * MathF.Pow(speed * speed / (9.81f * leg), 0.3f);
+
         /// <summary><paramref name="times"/> to the nearest 0.05 s, each once: where a walk is shortened.</summary>
         private static float[] Rounded(float[] times) => [.. times.Select(t => MathF.Round(t * 20f) / 20f).Distinct()];
         private readonly int _limbs;
@@ -960,8 +963,7 @@ internal sealed class WalkGait
                 // Steps shortened around the troubles are taken at the walk's cadence: the walk slows there by as much
                 // (Walk.PaceAt shortens the steps), over the span of steps either way and half a step more, in the
                 // step of this leg at this speed.
-                float leg = gait._restLeg;
-                float natural = longSteps ? 1.15f * leg * MathF.Pow(walk.Speed * walk.Speed / (9.81f * leg), 0.3f) : StepShare * leg;
+                float natural = longSteps ? UprightStep(gait._restLeg, walk.Speed) : StepShare * gait._restLeg;
                 float reach = (shortSpan + 0.5f) * natural;
                 _slowedAt = [.. shortAt.Select(t => walk.DistanceAt(t)).Select(d => (d - reach, d + reach))];
                 _slowedPace = shortShare;
@@ -1075,9 +1077,7 @@ internal sealed class WalkGait
             {
                 // Upright: the step a walker of this leg takes at this speed (Alexander's stride 2.3·L·Fr^0.3, Fr =
                 // v²/(g·L): about 0.75 L at a relaxed walk), as much of the reach as the hips dipping between steps allows.
-                float leg = _gait._restLeg;
-                float froude = _walk.Speed * _walk.Speed / (9.81f * leg);
-                natural = 1.15f * leg * MathF.Pow(froude, 0.3f);
+                natural = UprightStep(_gait._restLeg, _walk.Speed);
                 margin = UprightReachMargin;
             }
 
