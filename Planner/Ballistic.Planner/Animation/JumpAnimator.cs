@@ -133,7 +133,9 @@ public sealed class JumpAnimator : IJumpAnimator
     /// Animates the moves at <paramref name="frameRate"/> frames per second: jumps as flights between contact poses,
     /// walks with a gait (<see cref="WalkGait"/>) from where the previous move left the feet to the contact pose the
     /// next one needs. Frames during a walk and on the ground around a jump come at every fine step
-    /// (<see cref="ContactSubsteps"/> per frame interval) since feet hold contacts throughout.
+    /// (<see cref="ContactSubsteps"/> per frame interval) since feet hold contacts throughout. The animation's
+    /// <see cref="JumpAnimation.Moves"/> are the moves as animated: walks slowed where their steps shorten, and each
+    /// jump's takeoff and landing stance without an estimated contact the animation cannot hold.
     /// </summary>
     /// <exception cref="ArgumentException">No moves, a null move, or a non-positive frame rate.</exception>
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
@@ -218,8 +220,9 @@ public sealed class JumpAnimator : IJumpAnimator
             left = end;
         }
 
-        // A walk whose steps shorten around rough ground slows there (WalkGait): the moves as animated.
-        moves = animated;
+        // A walk whose steps shorten around rough ground slows there (WalkGait), and a jump's stances are those its
+        // takeoff and landing stand on: the moves as animated.
+        moves = HeldStances(animated, clips);
 
         // Assemble: moves, and on the ground around each jump its crouch and landing with the steps between them;
         // contact phases along the way.
@@ -582,6 +585,85 @@ public sealed class JumpAnimator : IJumpAnimator
     }
 
     /// <summary>One jump animated on its own: frames from takeoff (t = 0) to landing, the contact poses, when each limb's contact breaks and is made.</summary>
+    /// <summary>
+    /// The moves with each jump's takeoff and landing stance as the animation stands on it: a contact the planner
+    /// estimated whose limb the generated contact pose cannot hold (a spider's hind foot aimed at a ledge's brink
+    /// under its body, where no flat foot reaches) is left out of the stance the plan reports, with the cone of the
+    /// contacts left, when those still number the required contacts and their cone still contains the jump's
+    /// velocity (every use of the stance: a landing that pushes off again); otherwise the stance stays as planned.
+    /// Walks that end or start on a changed stance get the same record of it.
+    /// </summary>
+    private Move[] HeldStances(Move[] moves, Clip?[] clips)
+    {
+        var uses = new Dictionary<(int Id, RootPose Pose), List<(RoadmapNode Node, ContactConfiguration Pose, Vector3 Velocity)>>();
+        for (int m = 0; m < moves.Length; m++)
+        {
+            if (moves[m] is Jump jump && clips[m] is Clip clip)
+            {
+                Use(jump.Takeoff, clip.Takeoff, jump.Arc.TakeoffVelocity);
+                Use(jump.Landing, clip.Landing, -jump.Arc.LandingVelocity);
+            }
+        }
+
+        var held = new Dictionary<(int Id, RootPose Pose), RoadmapNode>();
+        foreach (((int Id, RootPose Pose) key, List<(RoadmapNode Node, ContactConfiguration Pose, Vector3 Velocity)> list) in uses)
+        {
+            RoadmapNode node = list[0].Node;
+            if (list.Exists(u => !u.Pose.Valid))
+            {
+                continue;
+            }
+
+            Contact[] kept = [.. node.Contacts.Where(c => list.TrueForAll(u => u.Pose.Contacts.Any(h => h.Limb == c.Limb)))];
+            if (kept.Length == node.Contacts.Count || kept.Length < _requiredContacts)
+            {
+                continue;
+            }
+
+            Vector3 sum = Vector3.Zero;
+            float mu = float.PositiveInfinity;
+            foreach (Contact c in kept)
+            {
+                sum += c.Normal;
+                mu = MathF.Min(mu, c.Mu);
+            }
+
+            if (!(sum.Length() >= ContactEstimator.ForceClosureThreshold))
+            {
+                continue;
+            }
+
+            var cone = new FrictionCone(sum, mu);
+            if (list.TrueForAll(u => cone.Contains(u.Velocity, 1e-3f)))
+            {
+                held[key] = node with { Contacts = kept, Cone = cone };
+            }
+        }
+
+        if (held.Count == 0)
+        {
+            return moves;
+        }
+
+        RoadmapNode Held(RoadmapNode node) => held.GetValueOrDefault((node.Id, node.Pose), node);
+        return [.. moves.Select(move => move switch
+        {
+            Jump jump => jump with { Takeoff = Held(jump.Takeoff), Landing = Held(jump.Landing) },
+            Walk walk => walk.Between(Held(walk.From), Held(walk.To)),
+            _ => move,
+        })];
+
+        void Use(RoadmapNode node, ContactConfiguration pose, Vector3 velocity)
+        {
+            if (!uses.TryGetValue((node.Id, node.Pose), out List<(RoadmapNode, ContactConfiguration, Vector3)>? list))
+            {
+                uses[(node.Id, node.Pose)] = list = [];
+            }
+
+            list.Add((node, pose, velocity));
+        }
+    }
+
     private sealed record Clip(AnimationFrame[] Frames, ContactConfiguration Takeoff, ContactConfiguration Landing, float[] Breaks, float[] Makes, int CollidingFrames, List<JumpProblem> Problems);
 
     /// <summary>A stance between two jumps: frames from 0 to its duration, and each step (limb, start time, the contact it steps to).</summary>

@@ -61,7 +61,8 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult
             JumpAnimation animation = animator.Animate(result.Moves, frameRate);
             if (animation.IsClean)
             {
-                // The moves as animated: a walk slowed where its steps shorten takes longer (JumpAnimator).
+                // The moves as animated: a walk slowed where its steps shorten takes longer, and a jump's stances are
+                // those its takeoff and landing stand on (JumpAnimator).
                 return (result with { Reason = result.Reason + repair.SuccessNote(), Moves = animation.Moves, Elapsed = clock.Elapsed }, animation, round);
             }
 

@@ -47,6 +47,8 @@ public sealed record Walk : Move
     internal const float ClimbLead = 0.22f;
 
     private readonly Vector3[] _path;
+    private RoadmapNode _from;
+    private RoadmapNode _to;
     private readonly float[] _distances;
 
     /// <summary>Finds the segment under a distance in <see cref="_distances"/> (<see cref="PointAt"/>).</summary>
@@ -123,6 +125,26 @@ public sealed record Walk : Move
         return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, stretches, pace);
     }
 
+    /// <summary>
+    /// This walk between other records of its two stances: the same root poses (the path, timing and poses are
+    /// unchanged), other contacts (the stances an animation stands on: <see cref="Animation.JumpAnimator"/>).
+    /// </summary>
+    /// <exception cref="ArgumentException">A stance at another root pose.</exception>
+    internal Walk Between(RoadmapNode from, RoadmapNode to)
+    {
+        ArgumentNullException.ThrowIfNull(from);
+        ArgumentNullException.ThrowIfNull(to);
+        if (from.Pose != From.Pose || to.Pose != To.Pose)
+        {
+            throw new ArgumentException("A walk's stances are replaced only by stances at the same root poses.");
+        }
+
+        Walk copy = this with { };
+        copy._from = from;
+        copy._to = to;
+        return copy;
+    }
+
     private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, IReadOnlyList<(float From, float To)> slowed, float slowPace)
     {
         ArgumentNullException.ThrowIfNull(from);
@@ -161,8 +183,8 @@ public sealed record Walk : Move
             _distances[i] = i == 0 ? 0f : _distances[i - 1] + Vector3.Distance(_path[i - 1], p);
         }
 
-        From = from;
-        To = to;
+        _from = from;
+        _to = to;
         Via = via is null ? [] : [.. via];
         Speed = speed;
         TurnRate = turnRate;
@@ -330,10 +352,10 @@ public sealed record Walk : Move
 
 
     /// <inheritdoc />
-    public override RoadmapNode From { get; }
+    public override RoadmapNode From => _from;
 
     /// <inheritdoc />
-    public override RoadmapNode To { get; }
+    public override RoadmapNode To => _to;
 
     /// <summary>The stances passed through without stopping, in order (empty for a walk from one stance straight to the next).</summary>
     public IReadOnlyList<RoadmapNode> Via { get; }

@@ -95,9 +95,9 @@ public sealed class EightLegTests
     /// no leg could swing from such a foothold when the body turned ("l2 cannot swing to its next foothold within reach
     /// and clear of the level"): it walked, hopped three times (the last taking off 99° off its way, its limbs 9.3° from
     /// rest at the apex) and walked on. Now a foot aiming past a ledge's brink stands <see cref="ContactEstimator.LedgeInset"/>
-    /// in from it. Not yet: the walk's end before the jump puts l1 0.70 L sideways of where the contact pose holds it,
-    /// and on landing r4 finds no foothold it can hold on the platform (it is left free, 0.41 m from the contact the
-    /// plan reports).
+    /// in from it. Not yet: the walk's end before the jump puts l1 0.70 L sideways of where the contact pose holds it.
+    /// (Footholds passed once the plan reported the stance its landing stands on: before, r4 was left free 0.41 m from
+    /// the contact the plan reported, see <see cref="OnThePlatformThePlanReportsTheStanceTheSpiderLandsOn"/>.)
     /// </summary>
     [Test]
     public void NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants()
@@ -108,8 +108,41 @@ public sealed class EightLegTests
         SweepTests.AssertEveryCriterion(look, "the spider's platform", NotYet.Contains, nameof(NotYet));
     }
 
+    /// <summary>
+    /// Landing on the platform, the spider's hind leg r4 aims past the brink: the planner estimates its foot on the
+    /// brink under the body, where no flat foot of that leg reaches (its IK stalls 0.28 m short), and the landing
+    /// leaves r4 free. The plan reports the stance the landing stands on: the seven held contacts (r4 left out), whose
+    /// cone still contains the landing velocity, the same node (id and root pose) the walk on starts from, and the
+    /// landing holds each reported contact where it is reported. Before, the plan reported all eight contacts and the
+    /// animation held r4 0.41 m from its reported contact.
+    /// </summary>
+    [Test]
+    public void OnThePlatformThePlanReportsTheStanceTheSpiderLandsOn()
+    {
+        (AnimatedPlan plan, _) = Plan("platform", Platform(), new(-2.5f, 0f, 0.5f), new(2.5f, 0.6f, -0.5f));
+        Move[] moves = [.. plan.Result.Moves];
+        Assert.That(moves.Select(m => m.GetType().Name), Is.EqualTo(new[] { nameof(Walk), nameof(Jump), nameof(Walk) }));
+        var jump = (Jump)moves[1];
+        int r4 = Spider.Value.Model.Limbs.ToList().FindIndex(l => l.Name == "r4");
+        Assert.That(jump.Landing.Contacts.Select(c => c.Limb), Does.Not.Contain(r4), "r4 holds no foothold on landing");
+        Assert.That(jump.Landing.Contacts, Has.Count.EqualTo(7));
+        Assert.That(jump.Landing.Cone.Contains(-jump.Arc.LandingVelocity, 1e-3f), Is.True, "the held contacts' cone absorbs the landing");
+        Assert.That(moves[2].From, Is.SameAs(jump.Landing), "the walk on starts on the stance the jump reports");
+        Assert.That(moves[0].To, Is.SameAs(jump.Takeoff), "the walk before ends on the stance the jump reports");
+
+        JumpAnimation animation = plan.Animation!;
+        float landed = animation.MoveEnd(1);
+        foreach (Contact c in jump.Landing.Contacts)
+        {
+            Assert.That(
+                animation.ContactPhases.Any(p => p.Limb == c.Limb && p.From <= landed + 0.05f && p.To >= landed && Vector3.Distance(p.Position, c.Position) <= AnimatorEye.FootholdTolerance),
+                Is.True,
+                $"limb {c.Limb} is held on landing within {AnimatorEye.FootholdTolerance} m of its reported contact");
+        }
+    }
+
     /// <summary>The criteria the spider's jumps onto the platform do not pass yet (see <see cref="NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants"/>).</summary>
-    private static readonly string[] NotYet = ["under hips", "footholds"];
+    private static readonly string[] NotYet = ["under hips"];
 
     /// <summary>A 6 × 8 m floor with a 3 m deep platform 0.6 m high along its +X end (its face at x = 1).</summary>
     private static Level Platform() => new LevelBuilder("platform")

@@ -161,6 +161,34 @@ public sealed class WalkPaceTests
         });
     }
 
+    /// <summary>
+    /// A walk between other records of its stances (the stances an animation stands on) keeps its path, pace, timing
+    /// and poses, and refuses a stance at another root pose.
+    /// </summary>
+    [Test]
+    public void AWalkBetweenOtherRecordsOfItsStancesKeepsItsTimingAndRefusesOtherPoses()
+    {
+        Vector3[] floor = [.. Enumerable.Range(0, 101).Select(i => new Vector3(0.05f * i, 0f, 0f))];
+        Walk walk = Along(floor, MaxGrade).Slowed([(1f, 2f)], 0.5f);
+        var contact = new Contact(0, floor[^1], Vector3.UnitY, 1f, 0);
+        RoadmapNode to = walk.To with { Contacts = [contact] };
+        Walk between = walk.Between(walk.From, to);
+        Assert.Multiple(() =>
+        {
+            Assert.That(between.To, Is.SameAs(to));
+            Assert.That(between.From, Is.SameAs(walk.From));
+            Assert.That(walk.To.Contacts, Is.Empty, "the walk itself is unchanged");
+            Assert.That((between.Duration, between.Length, between.PaceAt(1.5f)), Is.EqualTo((walk.Duration, walk.Length, walk.PaceAt(1.5f))));
+            foreach (float t in Enumerable.Range(0, 20).Select(i => walk.Duration * i / 19f))
+            {
+                Assert.That(between.PoseAt(t), Is.EqualTo(walk.PoseAt(t)), $"at {t} s");
+            }
+
+            RoadmapNode moved = walk.To with { Pose = new RootPose(walk.To.Pose.Position + Vector3.UnitX, walk.To.Pose.Rotation) };
+            Assert.That(() => walk.Between(walk.From, moved), Throws.ArgumentException);
+        });
+    }
+
     /// <summary>On a flight of stairs the gait's slowing comes on top of the flight's pace: shorter steps there too keep the cadence.</summary>
     [Test]
     public void OnAFlightTheGaitsSlowingComesOnTopOfTheFlightsPace()
