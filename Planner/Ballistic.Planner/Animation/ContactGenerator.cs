@@ -33,6 +33,25 @@ internal sealed class ContactGenerator
     /// </summary>
     private const float EstimateSidewaysLeg = 0.2f;
 
+    /// <summary>
+    /// How far (metres, at most <see cref="DrawBackShare"/> of the stretched limb) each try draws a jump's estimated
+    /// contact that the limb cannot hold back toward the limb's root, along the trunk's forward axis, keeping its
+    /// sideways place (<see cref="DrawBackTries"/> tries): a foot estimated at the foot of a wall, its toes in the wall.
+    /// </summary>
+    private const float DrawBack = 0.05f;
+
+    /// <summary>The most each draw-back try (<see cref="DrawBack"/>) moves a contact, as a share of the stretched limb.</summary>
+    private const float DrawBackShare = 0.1f;
+
+    /// <summary>Draw-back tries of an estimated contact (<see cref="DrawBack"/>): at most 0.2 m back, within the footholds' 0.25 m.</summary>
+    private const int DrawBackTries = 4;
+
+    /// <summary>How far (share of the standing leg) to the side of its place a fallback must stand a foot before the estimate is drawn back instead (<see cref="DrawBack"/>).</summary>
+    private const float DrawBackSideways = 0.3f;
+
+    /// <summary>Most (metres) a drawn-back contact (<see cref="DrawBack"/>) lies above or below the estimate: on the same ground, not a lower stair tread.</summary>
+    private const float DrawBackRise = 0.02f;
+
     /// <summary>A contact solve that ends farther than this (metres) from its point missed it; nearer, it stalled and is solved again for the point alone.</summary>
     private const float StallDistance = 0.01f;
 
@@ -336,98 +355,148 @@ internal sealed class ContactGenerator
 
             float side = Vector3.Dot(c.Position - reference, left);
             Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
+
             if (NearestSurfacePoint(target, limb, root.Position, 0.2f, near) is not { } onSurface
                 || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l])
             {
                 continue;
             }
 
-            Array.Copy(q, trial, q.Length);
-            if (TrySolve(root, trial, limb, onSurface.Point, onSurface.Normal, crouch, positions, rotations)
-                || SolveFromNearest(root, q, trial, l, onSurface.Point, onSurface.Normal, crouch, positions, rotations))
+            if (Holds(root, q, trial, l, onSurface.Point, onSurface.Normal, crouch, positions, rotations))
             {
-                Array.Copy(trial, q, q.Length);
                 contact = new LimbContact(l, onSurface.Point, onSurface.Normal, c.Mu);
                 return true;
             }
         }
 
-        // The surface point nearest the reference effector position, from the contact pose itself (the limb as the
-        // rig holds it, bending the way it bends there), then from the flexion pose: a rig whose contact pose is its
-        // straight-legged bind pose cannot be solved from there to a foot under the lowered hip (a straight chain is
-        // a singular start for IK), and would otherwise stand on a database sample's foothold far ahead or behind.
-        if (candidates.Count > 0 && Vector3.Distance(candidates[0].Point, limbRoot) <= _reach[l])
+        // Otherwise the fallbacks below; where they stand a foot far to the side of its place (a spider's foot
+        // estimated at the foot of a wall, its toes in the wall, stood 0.16 m inside it), the estimate drawn back
+        // toward the limb's root along the trunk's forward axis on the same ground, keeping its sideways place, if the
+        // limb holds it there.
+        RootPose at = root;
+        if (!Fallbacks(out contact))
         {
-            foreach (float[] from in new[] { Model.ContactPose, Model.FlexionPose })
-            {
-                Array.Copy(q, trial, q.Length);
-                PoseChain(trial, limb, from);
+            return false;
+        }
 
-                if (TrySolve(root, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
+        if (limb.Kind != LimbKind.Foot || !(MathF.Abs(Vector3.Dot(contact.Position - reference, left)) > DrawBackSideways * _standing))
+        {
+            return true;
+        }
+
+        Vector3 forward = Vector3.Transform(Vector3.UnitZ, root.Rotation) with { Y = 0f };
+        forward = forward.LengthSquared() > 1e-8f ? Vector3.Normalize(forward) : Vector3.Zero;
+        float each = MathF.Min(DrawBack, DrawBackShare * _reach[l]);
+        foreach (Contact c in onEstimates ? estimated : [])
+        {
+            if (c.Limb != l)
+            {
+                continue;
+            }
+
+            float side = Vector3.Dot(c.Position - reference, left);
+            Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
+            Vector3 back = Vector3.Dot(target - limbRoot, forward) >= 0f ? -forward : forward;
+            for (int k = 1; k <= DrawBackTries; k++)
+            {
+                if (NearestSurfacePoint(target + (back * (k * each)), limb, root.Position, 0.2f, near) is not { } onSurface
+                    || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l]
+                    || MathF.Abs(onSurface.Point.Y - c.Position.Y) > DrawBackRise)
                 {
-                    Array.Copy(trial, q, q.Length);
-                    contact = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
+                    continue;
+                }
+
+                if (Holds(root, q, trial, l, onSurface.Point, onSurface.Normal, crouch, positions, rotations))
+                {
+                    contact = new LimbContact(l, onSurface.Point, onSurface.Normal, c.Mu);
                     return true;
                 }
             }
         }
 
-        int tried = 0;
-        for (int s = 0; s < Math.Min(database.Count, DatabaseScan) && tried < CandidatesPerLimb; s++)
+        return true;
+
+        bool Fallbacks(out LimbContact held)
         {
-            Vector3 world = root.ToWorld(database.PointOf(s));
-            if (!surfaceNear.Contains(world) || MathF.Abs(Vector3.Dot(world - slabCentre, slabAxis)) > slabHalf || !workspace.Contains(world))
+            held = default;
+
+            // The surface point nearest the reference effector position, from the contact pose itself (the limb as the
+            // rig holds it, bending the way it bends there), then from the flexion pose: a rig whose contact pose is its
+            // straight-legged bind pose cannot be solved from there to a foot under the lowered hip (a straight chain is
+            // a singular start for IK), and would otherwise stand on a database sample's foothold far ahead or behind.
+            if (candidates.Count > 0 && Vector3.Distance(candidates[0].Point, limbRoot) <= _reach[l])
             {
-                continue;
+                foreach (float[] from in new[] { Model.ContactPose, Model.FlexionPose })
+                {
+                    Array.Copy(q, trial, q.Length);
+                    PoseChain(trial, limb, from);
+
+                    if (TrySolve(at, trial, limb, candidates[0].Point, candidates[0].Normal, crouch, positions, rotations))
+                    {
+                        Array.Copy(trial, q, q.Length);
+                        held = new LimbContact(l, candidates[0].Point, candidates[0].Normal, candidates[0].Mu);
+                        return true;
+                    }
+                }
             }
 
-            (Vector3 Point, Vector3 Normal, float Mu)? best = NearestSurfacePoint(world, limb, root.Position, 0.06f, near);
-            if (best is not { } found)
+            int tried = 0;
+            for (int s = 0; s < Math.Min(database.Count, DatabaseScan) && tried < CandidatesPerLimb; s++)
             {
-                continue;
+                Vector3 world = at.ToWorld(database.PointOf(s));
+                if (!surfaceNear.Contains(world) || MathF.Abs(Vector3.Dot(world - slabCentre, slabAxis)) > slabHalf || !workspace.Contains(world))
+                {
+                    continue;
+                }
+
+                (Vector3 Point, Vector3 Normal, float Mu)? best = NearestSurfacePoint(world, limb, at.Position, 0.06f, near);
+                if (best is not { } found)
+                {
+                    continue;
+                }
+
+                tried++;
+                Array.Copy(q, trial, q.Length);
+                database.Apply(s, trial);
+                if (TrySolve(at, trial, limb, found.Point, found.Normal, crouch, positions, rotations))
+                {
+                    Array.Copy(trial, q, q.Length);
+                    held = new LimbContact(l, found.Point, found.Normal, found.Mu);
+                    return true;
+                }
             }
 
-            tried++;
-            Array.Copy(q, trial, q.Length);
-            database.Apply(s, trial);
-            if (TrySolve(root, trial, limb, found.Point, found.Normal, crouch, positions, rotations))
+            Vector3? previous = null;
+            tried = 0;
+            foreach ((_, Vector3 point, Vector3 normal, float mu) in candidates)
             {
-                Array.Copy(trial, q, q.Length);
-                contact = new LimbContact(l, found.Point, found.Normal, found.Mu);
-                return true;
+                if (tried >= CandidatesPerLimb)
+                {
+                    break;
+                }
+
+                if (previous is Vector3 p && Vector3.Distance(p, point) < 0.02f)
+                {
+                    continue; // neighbouring triangles give the same closest point
+                }
+
+                previous = point;
+                if (Vector3.Distance(point, limbRoot) > _reach[l])
+                {
+                    continue; // farther than the stretched limb: no IK can get there
+                }
+
+                tried++;
+                if (SolveFromNearest(at, q, trial, l, point, normal, crouch, positions, rotations))
+                {
+                    Array.Copy(trial, q, q.Length);
+                    held = new LimbContact(l, point, normal, mu);
+                    return true;
+                }
             }
+
+            return false;
         }
-
-        Vector3? previous = null;
-        tried = 0;
-        foreach ((_, Vector3 point, Vector3 normal, float mu) in candidates)
-        {
-            if (tried >= CandidatesPerLimb)
-            {
-                break;
-            }
-
-            if (previous is Vector3 p && Vector3.Distance(p, point) < 0.02f)
-            {
-                continue; // neighbouring triangles give the same closest point
-            }
-
-            previous = point;
-            if (Vector3.Distance(point, limbRoot) > _reach[l])
-            {
-                continue; // farther than the stretched limb: no IK can get there
-            }
-
-            tried++;
-            if (SolveFromNearest(root, q, trial, l, point, normal, crouch, positions, rotations))
-            {
-                Array.Copy(trial, q, q.Length);
-                contact = new LimbContact(l, point, normal, mu);
-                return true;
-            }
-        }
-
-        return false;
     }
 
     /// <summary>
@@ -459,6 +528,23 @@ internal sealed class ContactGenerator
         }
 
         return best;
+    }
+
+    /// <summary>
+    /// Limb <paramref name="l"/> on a surface point, solved from <paramref name="q"/> itself, then as
+    /// <see cref="SolveFromNearest"/> does; <paramref name="q"/> takes the solution when the limb holds the point.
+    /// </summary>
+    private bool Holds(in RootPose root, float[] q, float[] trial, int l, Vector3 point, Vector3 normal, float crouch, Vector3[] positions, Quaternion[] rotations)
+    {
+        Array.Copy(q, trial, q.Length);
+        if (TrySolve(root, trial, Model.Limbs[l], point, normal, crouch, positions, rotations)
+            || SolveFromNearest(root, q, trial, l, point, normal, crouch, positions, rotations))
+        {
+            Array.Copy(trial, q, q.Length);
+            return true;
+        }
+
+        return false;
     }
 
     /// <summary>

@@ -2,6 +2,7 @@ using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -95,9 +96,11 @@ public sealed class EightLegTests
     /// no leg could swing from such a foothold when the body turned ("l2 cannot swing to its next foothold within reach
     /// and clear of the level"): it walked, hopped three times (the last taking off 99° off its way, its limbs 9.3° from
     /// rest at the apex) and walked on. Now a foot aiming past a ledge's brink stands <see cref="ContactEstimator.LedgeInset"/>
-    /// in from it. Not yet: the walk's end before the jump puts l1 0.70 L sideways of where the contact pose holds it.
-    /// (Footholds passed once the plan reported the stance its landing stands on: before, r4 was left free 0.41 m from
-    /// the contact the plan reported, see <see cref="OnThePlatformThePlanReportsTheStanceTheSpiderLandsOn"/>.)
+    /// in from it. Not yet: it lands with its right feet on the brink, 0.58 L inside their places, and turning in place
+    /// to walk on, r3 steps 0.65 L inside its place. (Footholds passed once the plan reported the stance its landing
+    /// stands on: before, r4 was left free 0.41 m from the contact the plan reported, see
+    /// <see cref="OnThePlatformThePlanReportsTheStanceTheSpiderLandsOn"/>; before its takeoff beside the face was
+    /// fixed, <see cref="BesideThePlatformsFaceTheSpiderTakesOffWithItsFeetInTheirPlaces"/>, l1 was 0.70 L sideways.)
     /// </summary>
     [Test]
     public void NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants()
@@ -139,6 +142,39 @@ public sealed class EightLegTests
                 Is.True,
                 $"limb {c.Limb} is held on landing within {AnimatorEye.FootholdTolerance} m of its reported contact");
         }
+    }
+
+    /// <summary>
+    /// Beside the platform's face the spider takes off with every foot within 0.35 L sideways (along the trunk's left)
+    /// of where its contact pose holds it under its hip. The planner estimates l1 at the foot of the face, 1.4 cm
+    /// from it, where its toes would be in the face; the contact pose's fallbacks stood it 0.16 m inside its place
+    /// (0.44 L). Now the estimate is drawn back toward the hip on the same ground, and l1 stands in its place.
+    /// </summary>
+    [Test]
+    public void BesideThePlatformsFaceTheSpiderTakesOffWithItsFeetInTheirPlaces()
+    {
+        (AnimatedPlan plan, _) = Plan("platform", Platform(), new(-2.5f, 0f, 0.5f), new(2.5f, 0.6f, -0.5f));
+        JumpAnimation animation = plan.Animation!;
+        CharacterModel model = Spider.Value.Model;
+        Rig rig = model.Rig;
+        var positions = new Vector3[rig.Joints.Count];
+        var rotations = new Quaternion[rig.Joints.Count];
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        float[] rest = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations).X - positions[l.RootJoint].X)];
+        float leg = StanceDip.RestLegLength(model);
+
+        float takeoff = animation.MoveStart(1);
+        animation.Joints(takeoff, positions, rotations);
+        Vector3 left = Vector3.Transform(Vector3.UnitX, animation.RootAt(takeoff).Rotation);
+        Assert.Multiple(() =>
+        {
+            for (int l = 0; l < model.Limbs.Count; l++)
+            {
+                RigLimb limb = model.Limbs[l];
+                float side = Vector3.Dot(limb.EffectorPosition(positions, rotations) - positions[limb.RootJoint], left);
+                Assert.That(MathF.Abs(side - rest[l]) / leg, Is.LessThanOrEqualTo(0.35f), $"{limb.Name} at takeoff, sideways of its place in leg lengths");
+            }
+        });
     }
 
     /// <summary>The criteria the spider's jumps onto the platform do not pass yet (see <see cref="NotYetASpiderJumpsOntoAPlatformAsAnAnimatorWants"/>).</summary>
