@@ -34,19 +34,20 @@ internal sealed class ContactGenerator
     private const float EstimateSidewaysLeg = 0.2f;
 
     /// <summary>
-    /// How far (metres, at most <see cref="DrawBackShare"/> of the stretched limb) each try draws a jump's estimated
-    /// contact that the limb cannot hold back toward the limb's root, along the trunk's forward axis, keeping its
-    /// sideways place (<see cref="DrawBackTries"/> tries): a foot estimated at the foot of a wall, its toes in the wall.
+    /// How far (metres, at most <see cref="DrawBackShare"/> of the stretched limb) each try moves a jump's estimated
+    /// contact that the limb cannot hold along the trunk's forward axis, toward the limb's root and away from it,
+    /// keeping its sideways place (<see cref="DrawBackTries"/> tries each way): a foot estimated at the foot of a wall,
+    /// its toes in the wall; a foot under the hip of a low stance, its ankle folded too far.
     /// </summary>
     private const float DrawBack = 0.05f;
 
     /// <summary>The most each draw-back try (<see cref="DrawBack"/>) moves a contact, as a share of the stretched limb.</summary>
     private const float DrawBackShare = 0.1f;
 
-    /// <summary>Draw-back tries of an estimated contact (<see cref="DrawBack"/>): at most 0.2 m back, within the footholds' 0.25 m.</summary>
+    /// <summary>Draw-back tries of an estimated contact each way (<see cref="DrawBack"/>): at most 0.2 m, within the footholds' 0.25 m.</summary>
     private const int DrawBackTries = 4;
 
-    /// <summary>How far (share of the standing leg) to the side of its place a fallback must stand a foot before the estimate is drawn back instead (<see cref="DrawBack"/>).</summary>
+    /// <summary>How far (share of the standing leg) to the side of its place a fallback must stand a foot before the estimate is moved instead (<see cref="DrawBack"/>).</summary>
     private const float DrawBackSideways = 0.3f;
 
     /// <summary>Most (metres) a drawn-back contact (<see cref="DrawBack"/>) lies above or below the estimate: on the same ground, not a lower stair tread.</summary>
@@ -369,25 +370,31 @@ internal sealed class ContactGenerator
             }
         }
 
-        // Otherwise the fallbacks below; where they stand a foot far to the side of its place (a spider's foot
-        // estimated at the foot of a wall, its toes in the wall, stood 0.16 m inside it), the estimate drawn back
-        // toward the limb's root along the trunk's forward axis on the same ground, keeping its sideways place, if the
-        // limb holds it there.
+        // Otherwise the fallbacks below. Where they stand a foot out of its place, far to its side (a spider's foot
+        // estimated at the foot of a wall, its toes in the wall, stood 0.16 m inside it) or farther from the estimate
+        // than the tries below reach (a human's foot under its hip on a low stance, its ankle folded past
+        // MaxEffectorFold, stood 0.58 m ahead in a lunge), the estimate is moved along the trunk's forward axis on the
+        // same ground instead, keeping its sideways place: toward the limb's root first, then away, a step further
+        // each time, if the limb holds it there.
         RootPose at = root;
         if (!Fallbacks(out contact))
         {
             return false;
         }
 
-        if (limb.Kind != LimbKind.Foot || !(MathF.Abs(Vector3.Dot(contact.Position - reference, left)) > DrawBackSideways * _standing))
+        float each = MathF.Min(DrawBack, DrawBackShare * _reach[l]);
+        float far = (DrawBackTries + 1) * each;
+        Vector3 fallback = contact.Position;
+        bool outOfPlace = MathF.Abs(Vector3.Dot(fallback - reference, left)) > DrawBackSideways * _standing
+            || estimated.Any(c => c.Limb == l && Vector3.Distance(fallback, c.Position) > far);
+        if (limb.Kind != LimbKind.Foot || !onEstimates || !outOfPlace)
         {
             return true;
         }
 
         Vector3 forward = Vector3.Transform(Vector3.UnitZ, root.Rotation) with { Y = 0f };
         forward = forward.LengthSquared() > 1e-8f ? Vector3.Normalize(forward) : Vector3.Zero;
-        float each = MathF.Min(DrawBack, DrawBackShare * _reach[l]);
-        foreach (Contact c in onEstimates ? estimated : [])
+        foreach (Contact c in estimated)
         {
             if (c.Limb != l)
             {
@@ -397,9 +404,10 @@ internal sealed class ContactGenerator
             float side = Vector3.Dot(c.Position - reference, left);
             Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
             Vector3 back = Vector3.Dot(target - limbRoot, forward) >= 0f ? -forward : forward;
-            for (int k = 1; k <= DrawBackTries; k++)
+            for (int k = 1; k <= 2 * DrawBackTries; k++)
             {
-                if (NearestSurfacePoint(target + (back * (k * each)), limb, root.Position, 0.2f, near) is not { } onSurface
+                Vector3 moved = target + (back * (((k + 1) / 2) * each * (k % 2 == 1 ? 1f : -1f)));
+                if (NearestSurfacePoint(moved, limb, root.Position, 0.2f, near) is not { } onSurface
                     || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l]
                     || MathF.Abs(onSurface.Point.Y - c.Position.Y) > DrawBackRise)
                 {
