@@ -347,6 +347,7 @@ internal sealed class ContactGenerator
         Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
         float most = MathF.Min(EstimateSideways * _reach[l], EstimateSidewaysLeg * _standing);
         var near = new List<int>();
+        var targets = new List<(Vector3 Target, Contact Estimate)>();
         foreach (Contact c in onEstimates ? estimated : [])
         {
             if (c.Limb != l)
@@ -356,7 +357,7 @@ internal sealed class ContactGenerator
 
             float side = Vector3.Dot(c.Position - reference, left);
             Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
-
+            targets.Add((target, c));
             if (NearestSurfacePoint(target, limb, root.Position, 0.2f, near) is not { } onSurface
                 || Vector3.Distance(onSurface.Point, limbRoot) > _reach[l])
             {
@@ -386,23 +387,16 @@ internal sealed class ContactGenerator
         float far = (DrawBackTries + 1) * each;
         Vector3 fallback = contact.Position;
         bool outOfPlace = MathF.Abs(Vector3.Dot(fallback - reference, left)) > DrawBackSideways * _standing
-            || estimated.Any(c => c.Limb == l && Vector3.Distance(fallback, c.Position) > far);
-        if (limb.Kind != LimbKind.Foot || !onEstimates || !outOfPlace)
+            || targets.Exists(t => Vector3.Distance(fallback, t.Estimate.Position) > far);
+        if (limb.Kind != LimbKind.Foot || !outOfPlace)
         {
             return true;
         }
 
-        Vector3 forward = Vector3.Transform(Vector3.UnitZ, root.Rotation) with { Y = 0f };
+        Vector3 forward = root.Forward with { Y = 0f };
         forward = forward.LengthSquared() > 1e-8f ? Vector3.Normalize(forward) : Vector3.Zero;
-        foreach (Contact c in estimated)
+        foreach ((Vector3 target, Contact c) in targets)
         {
-            if (c.Limb != l)
-            {
-                continue;
-            }
-
-            float side = Vector3.Dot(c.Position - reference, left);
-            Vector3 target = c.Position - (left * (side - Math.Clamp(side, -most, most)));
             Vector3 back = Vector3.Dot(target - limbRoot, forward) >= 0f ? -forward : forward;
             for (int k = 1; k <= 2 * DrawBackTries; k++)
             {

@@ -584,7 +584,6 @@ public sealed class JumpAnimator : IJumpAnimator
         return stance;
     }
 
-    /// <summary>One jump animated on its own: frames from takeoff (t = 0) to landing, the contact poses, when each limb's contact breaks and is made.</summary>
     /// <summary>
     /// The moves with each jump's takeoff and landing stance as the animation stands on it: a contact the planner
     /// estimated whose limb the generated contact pose cannot hold (a spider's hind foot aimed at a ledge's brink
@@ -595,7 +594,7 @@ public sealed class JumpAnimator : IJumpAnimator
     /// </summary>
     private Move[] HeldStances(Move[] moves, Clip?[] clips)
     {
-        var uses = new Dictionary<(int Id, RootPose Pose), List<(RoadmapNode Node, ContactConfiguration Pose, Vector3 Velocity)>>();
+        var uses = new Dictionary<(int Id, RootPose Pose), List<(RoadmapNode Node, ContactConfiguration Config, Vector3 Velocity)>>();
         for (int m = 0; m < moves.Length; m++)
         {
             if (moves[m] is Jump jump && clips[m] is Clip clip)
@@ -606,35 +605,21 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         var held = new Dictionary<(int Id, RootPose Pose), RoadmapNode>();
-        foreach (((int Id, RootPose Pose) key, List<(RoadmapNode Node, ContactConfiguration Pose, Vector3 Velocity)> list) in uses)
+        foreach (((int Id, RootPose Pose) key, List<(RoadmapNode Node, ContactConfiguration Config, Vector3 Velocity)> list) in uses)
         {
             RoadmapNode node = list[0].Node;
-            if (list.Exists(u => !u.Pose.Valid))
+            if (list.Exists(u => !u.Config.Valid))
             {
                 continue;
             }
 
-            Contact[] kept = [.. node.Contacts.Where(c => list.TrueForAll(u => u.Pose.Contacts.Any(h => h.Limb == c.Limb)))];
+            Contact[] kept = [.. node.Contacts.Where(c => list.TrueForAll(u => u.Config.ContactOf(c.Limb) is not null))];
             if (kept.Length == node.Contacts.Count || kept.Length < _requiredContacts)
             {
                 continue;
             }
 
-            Vector3 sum = Vector3.Zero;
-            float mu = float.PositiveInfinity;
-            foreach (Contact c in kept)
-            {
-                sum += c.Normal;
-                mu = MathF.Min(mu, c.Mu);
-            }
-
-            if (!(sum.Length() >= ContactEstimator.ForceClosureThreshold))
-            {
-                continue;
-            }
-
-            var cone = new FrictionCone(sum, mu);
-            if (list.TrueForAll(u => cone.Contains(u.Velocity, 1e-3f)))
+            if (Contact.ConeOf(kept) is { } cone && list.TrueForAll(u => cone.Contains(u.Velocity, 1e-3f)))
             {
                 held[key] = node with { Contacts = kept, Cone = cone };
             }
@@ -653,17 +638,18 @@ public sealed class JumpAnimator : IJumpAnimator
             _ => move,
         })];
 
-        void Use(RoadmapNode node, ContactConfiguration pose, Vector3 velocity)
+        void Use(RoadmapNode node, ContactConfiguration config, Vector3 velocity)
         {
             if (!uses.TryGetValue((node.Id, node.Pose), out List<(RoadmapNode, ContactConfiguration, Vector3)>? list))
             {
                 uses[(node.Id, node.Pose)] = list = [];
             }
 
-            list.Add((node, pose, velocity));
+            list.Add((node, config, velocity));
         }
     }
 
+    /// <summary>One jump animated on its own: frames from takeoff (t = 0) to landing, the contact poses, when each limb's contact breaks and is made.</summary>
     private sealed record Clip(AnimationFrame[] Frames, ContactConfiguration Takeoff, ContactConfiguration Landing, float[] Breaks, float[] Makes, int CollidingFrames, List<JumpProblem> Problems);
 
     /// <summary>A stance between two jumps: frames from 0 to its duration, and each step (limb, start time, the contact it steps to).</summary>

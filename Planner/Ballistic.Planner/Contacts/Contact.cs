@@ -21,4 +21,21 @@ public readonly record struct Contact(int Limb, Vector3 Position, Vector3 Normal
 
         return contacts.Count > 0 ? sum / contacts.Count : none;
     }
+
+    /// <summary>
+    /// The centroidal cone of <paramref name="contacts"/>: the normalised sum of their normals as axis, the least
+    /// friction as μ; <c>null</c> when the normals cancel out (|Σ nᵢ| under <see cref="ContactEstimator.ForceClosureThreshold"/>).
+    /// </summary>
+    internal static FrictionCone? ConeOf(IReadOnlyList<Contact> contacts)
+    {
+        Vector3 sum = Vector3.Zero;
+        float mu = float.PositiveInfinity;
+        for (int i = 0; i < contacts.Count; i++)
+        {
+            sum += contacts[i].Normal;
+            mu = MathF.Min(mu, contacts[i].Mu);
+        }
+
+        return sum.Length() < ContactEstimator.ForceClosureThreshold ? null : new FrictionCone(sum, mu);
+    }
 }

@@ -82,20 +82,12 @@ internal sealed class ContactEstimator
             return new PoseEvaluation(pose, PoseValidity.TooFewContacts, contacts, default);
         }
 
-        Vector3 sum = Vector3.Zero;
-        float mu = float.PositiveInfinity;
-        foreach (Contact c in contacts)
-        {
-            sum += c.Normal;
-            mu = MathF.Min(mu, c.Mu);
-        }
-
-        if (sum.Length() < ForceClosureThreshold)
+        if (Contact.ConeOf(contacts) is not { } cone)
         {
             return new PoseEvaluation(pose, PoseValidity.ForceClosure, contacts, default);
         }
 
-        var valid = new PoseEvaluation(pose, PoseValidity.Valid, contacts, new FrictionCone(sum, mu));
+        var valid = new PoseEvaluation(pose, PoseValidity.Valid, contacts, cone);
         return PoseValidator is null || PoseValidator.IsValid(valid)
             ? valid
             : valid with { Validity = PoseValidity.Rejected };
