@@ -1189,7 +1189,7 @@ internal sealed class WalkGait
                     Perform(l, plan, checkFree: !swings);
                     if (swings)
                     {
-                        SwingArm(l, _swingStart[0], _swingEnd[n - 1]);
+                        SwingArm(l, _swingStart[0], _swingEnd[n - 1], plans);
                         CheckFree(l, plan);
                     }
                 }
@@ -1579,27 +1579,36 @@ internal sealed class WalkGait
         /// <paramref name="to"/> (the first swing's start to the last swing's end: a short walk's arms swing fully while
         /// it cruises): by IK, its effector brought down beside the thigh over
         /// <see cref="ArmDrop"/> (a rig hanging its arms out in a T stays so no longer) and turned about the trunk's left axis by up to
-        /// <see cref="ArmSwing"/>, forward as the foot on its side is behind its hip, in proportion to the walk's speed.
+        /// <see cref="ArmSwing"/>, forward as the foot on its side lifts and back as it lands (<see cref="Phases"/>), in proportion to the walk's speed.
         /// Where the swinging arm would touch the level (a door's jamb, a corridor's wall), it is held in over
         /// <see cref="ArmDrop"/> either side: the hand drawn toward the front of the thigh (<see cref="HeldIn"/>) and its
         /// swing faded out, as a walker squeezing through a doorway keeps their arms in; where that still touches, in
         /// front of the hips (<see cref="SqueezedIn"/>); where even that touches (or the arm cannot reach) it keeps its
         /// last pose, and the free limb's check reports it.
         /// </summary>
-        private void SwingArm(int l, int from, int to)
+        private void SwingArm(int l, int from, int to, List<Segment>?[] plans)
         {
             RigLimb limb = _model.Limbs[l];
             _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
             Vector3 shoulderLocal = ToLocal(_roots[from], _positions[limb.RootJoint]);
+            // The foot on the arm's side and its partner on the other side (nearest the shoulder's mirror image).
             int foot = -1;
+            int other = -1;
             float nearest = float.PositiveInfinity;
+            float nearestOther = float.PositiveInfinity;
+            Vector3 mirror = shoulderLocal with { X = -shoulderLocal.X };
             for (int o = 0; o < _limbs; o++)
             {
                 Vector3 hip = ToLocal(_roots[from], _positions[_model.Limbs[o].RootJoint]);
                 float d = Vector3.Distance(hip, shoulderLocal);
+                float m = Vector3.Distance(hip, mirror);
                 if (IsFoot(o) && hip.X * shoulderLocal.X > 0f && d < nearest)
                 {
                     (nearest, foot) = (d, o);
+                }
+                else if (IsFoot(o) && hip.X * shoulderLocal.X < 0f && m < nearestOther)
+                {
+                    (nearestOther, other) = (m, o);
                 }
             }
 
@@ -1607,6 +1616,8 @@ internal sealed class WalkGait
             {
                 return;
             }
+
+            float[]? phase = other >= 0 ? Phases(plans[foot], plans[other], from, to) : null;
 
             // The arm's free pose before the swing (the walk's own hanging pose), its chain's angles kept per fine step
             // (one array): a second pass holding the arm in starts from it again.
@@ -1620,7 +1631,7 @@ internal sealed class WalkGait
                 }
             }
 
-            bool[] touched = SwingPass(l, foot, from, to, null, HeldIn);
+            bool[] touched = SwingPass(l, foot, phase, from, to, null, HeldIn);
             if (!touched.Any(t => t))
             {
                 return;
@@ -1643,7 +1654,7 @@ internal sealed class WalkGait
             }
 
             Restore(from, dofs, hanging);
-            if (!SwingPass(l, foot, from, to, tuck, HeldIn).Any(t => t))
+            if (!SwingPass(l, foot, phase, from, to, tuck, HeldIn).Any(t => t))
             {
                 return;
             }
@@ -1651,7 +1662,7 @@ internal sealed class WalkGait
             // Still touching (an opening barely wider than the shoulders): held in further, the hands in front of the
             // hips, as a walker squeezing through a narrow door keeps them.
             Restore(from, dofs, hanging);
-            SwingPass(l, foot, from, to, tuck, SqueezedIn);
+            SwingPass(l, foot, phase, from, to, tuck, SqueezedIn);
         }
 
         /// <summary>The arm's chain angles (<paramref name="dofs"/>) put back, from fine step <paramref name="from"/> on, to <paramref name="hanging"/> (one array, per fine step).</summary>
@@ -1681,7 +1692,7 @@ internal sealed class WalkGait
         /// (0 to 1 per step; <c>null</c>: nowhere) times <paramref name="heldIn"/> of its length: the steps (from <paramref name="from"/>) at which the swung hand's
         /// pose touched the level.
         /// </summary>
-        private bool[] SwingPass(int l, int foot, int from, int to, float[]? tuck, float heldIn)
+        private bool[] SwingPass(int l, int foot, float[]? phase, int from, int to, float[]? tuck, float heldIn)
         {
             RigLimb limb = _model.Limbs[l];
             _rig.Solve(_roots[from], _angles[from], _positions, _rotations);
@@ -1697,9 +1708,8 @@ internal sealed class WalkGait
                 _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
                 Vector3 shoulder = _positions[limb.RootJoint];
                 Vector3 hangingHand = limb.EffectorPosition(_positions, _rotations);
-                RigLimb leg = _model.Limbs[foot];
-                float behind = -ToLocal(_roots[i], _positions[leg.EffectorJoint]).Z + ToLocal(_roots[i], _positions[leg.RootJoint]).Z;
-                float share = Math.Clamp(behind / MathF.Max(0.5f * _step, 1e-3f), -1f, 1f);
+                // In time with the steps (Phases); with no partner foot, against its own foot about its hip.
+                float share = phase?[i - from] ?? Math.Clamp(Behind(i, foot) / MathF.Max(0.5f * _step, 1e-3f), -1f, 1f);
                 float fade = MathF.Min(1f, MathF.Min(i - from, to - i) / (float)ramp);
                 float angle = ArmSwing * share * Smooth(fade) * Cruising(Time(i)) * (1f - held);
                 Vector3 left = Vector3.Transform(Vector3.UnitX, _roots[i].Rotation);
@@ -1745,6 +1755,63 @@ internal sealed class WalkGait
             }
 
             return touched;
+        }
+
+        /// <summary>
+        /// Where an arm is in its swing (+1 forward, −1 back) at each fine step from <paramref name="from"/> to
+        /// <paramref name="to"/>, in time with the steps: from forward to back as the foot on its side swings
+        /// (<paramref name="own"/>: it lifts from behind the hip and lands ahead), from back to forward as its partner
+        /// swings (<paramref name="partner"/>), held while both feet are down; <c>null</c> when either foot has no plan.
+        /// Timed by the steps, not read from where the feet stand: the swing keeps its amplitude whatever stands the
+        /// feet ahead of or behind the hips (the user's human rig, its right foot cruising behind its hip toward a
+        /// staggered stance, swung its right arm 4–20°, never back) and however uneven the steps (a short walk of
+        /// steps 0.50 m, 0.17 m and 0.73 m apart swung it ±14°, then ±5°).
+        /// </summary>
+        private static float[]? Phases(List<Segment>? own, List<Segment>? partner, int from, int to)
+        {
+            if (own is null || partner is null)
+            {
+                return null;
+            }
+
+            float[] phase = new float[to - from + 1];
+            float last = 0f;
+            for (int i = from; i <= to; i++)
+            {
+                if (SwingingAt(own, i) is Swinging mine)
+                {
+                    last = MathF.Cos(MathF.PI * (i - mine.From) / Math.Max(1, mine.To - mine.From));
+                }
+                else if (SwingingAt(partner, i) is Swinging theirs)
+                {
+                    last = -MathF.Cos(MathF.PI * (i - theirs.From) / Math.Max(1, theirs.To - theirs.From));
+                }
+
+                phase[i - from] = last;
+            }
+
+            return phase;
+        }
+
+        /// <summary>The swing of <paramref name="plan"/> under way at fine step <paramref name="i"/>, or <c>null</c>.</summary>
+        private static Swinging? SwingingAt(List<Segment> plan, int i)
+        {
+            foreach (Segment segment in plan)
+            {
+                if (segment is Swinging swing && i >= swing.From && i <= swing.To)
+                {
+                    return swing;
+                }
+            }
+
+            return null;
+        }
+
+        /// <summary>How far (metres, along the trunk's forward at fine step <paramref name="i"/>, as last solved) foot <paramref name="leg"/> is behind its hip.</summary>
+        private float Behind(int i, int leg)
+        {
+            RigLimb limb = _model.Limbs[leg];
+            return ToLocal(_roots[i], _positions[limb.RootJoint]).Z - ToLocal(_roots[i], _positions[limb.EffectorJoint]).Z;
         }
 
         private void Fail(int limb, string kind, int step)
