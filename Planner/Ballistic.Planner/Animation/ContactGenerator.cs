@@ -383,6 +383,14 @@ internal sealed class ContactGenerator
             return false;
         }
 
+        // A walk's stance moves its nearest surface point the same way (a walk from a low stance stood the human's
+        // right foot 0.70 m ahead of its root, and could not turn on it).
+        if (!onEstimates && candidates.Count > 0)
+        {
+            (_, Vector3 point, Vector3 normal, float mu) = candidates[0];
+            targets.Add((point, new Contact(l, point, normal, mu, -1)));
+        }
+
         float each = MathF.Min(DrawBack, DrawBackShare * _reach[l]);
         float far = (DrawBackTries + 1) * each;
         Vector3 fallback = contact.Position;

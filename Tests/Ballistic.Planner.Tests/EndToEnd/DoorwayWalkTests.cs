@@ -1,8 +1,12 @@
 using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
+using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -41,6 +45,55 @@ public sealed class DoorwayWalkTests
         Sweep.Setup setup = Sweep.Prepare($"doorway-{width}", ForeignLevels.DoorwayLevel(width), model, reduced);
         (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(-4f, 0f, 0f), new Vector3(4f, 0f, 0f), maxNodes: nodes);
         SweepTests.AssertOneCleanWalk(plan, report);
+    }
+
+    /// <summary>
+    /// From a corner of one room to the far corner of the other, the route bending through the 0.9 m door, the user's
+    /// human rig walks: walks only, no jump. Before, it took two jumps on the flat floor (one through the door, taking
+    /// off 123° off its way): every walk from its low stance by the door (root 0.89 m, 0.12 m under its standing) was
+    /// set aside ("right_foot cannot hold its foothold, 0.00 m along the walk"), the walk's stance having stood that
+    /// foot 0.70 m ahead of the root, in a lunge it could not turn on.
+    /// </summary>
+    [Test]
+    public void AUsersHumanRigWalksARouteThatBendsThroughTheDoor()
+    {
+        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(RigFolder);
+        Sweep.Setup setup = Sweep.Prepare("doorway-0.9", ForeignLevels.DoorwayLevel(0.9f), model, reduced);
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(2.5f, 0f, -3f), new Vector3(-2.5f, 0f, -1f));
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves, Has.All.InstanceOf<Walk>(), plan.Result.Reason);
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+    }
+
+    /// <summary>
+    /// A walk's stance on the human rig's lowest stance (root 0.89 m, where a foot under the hip needs its ankle
+    /// folded past <see cref="StanceDip.MaxEffectorFold"/>) stands each foot within 0.25 m (along the trunk) of its
+    /// hip, as a jump's does: the surface point nearest the contact pose's foot is moved along the trunk until the
+    /// leg holds it. Before, the fallback on the limb's database stood the right foot 0.70 m ahead.
+    /// </summary>
+    [Test]
+    public void OnItsLowestStanceAUsersHumanRigsWalkStandsItsFeetUnderItsHips()
+    {
+        (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named("human").Load(RigFolder);
+        Sweep.Setup setup = Sweep.Prepare("doorway-0.9", ForeignLevels.DoorwayLevel(0.9f), model, reduced);
+        Vector3 forward = Vector3.Normalize(new Vector3(0.455f, 0f, -0.890f));
+        var root = new RootPose(new Vector3(0.894f, reduced.StanceLift.Min, -0.191f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(forward.X, forward.Z)));
+        PoseEvaluation pose = setup.Scene.Estimator.Evaluate(root);
+        Assume.That(pose.IsValid, Is.True, pose.Validity.ToString());
+
+        ContactConfiguration stance = new ContactGenerator(setup.Scene, model).Generate(root, pose.Contacts, pose.Cone.Axis);
+        Assert.That(stance.Valid, Is.True, stance.Reason);
+        var positions = new Vector3[model.Rig.Joints.Count];
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(stance.Root, stance.Angles, positions, rotations);
+        RigLimb[] feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
+        Assert.That(stance.Contacts.Select(c => model.Limbs[c.Limb].Name), Is.EquivalentTo(feet.Select(f => f.Name)));
+        foreach (LimbContact contact in stance.Contacts)
+        {
+            float ahead = Vector3.Dot(contact.Position - positions[model.Limbs[contact.Limb].RootJoint], forward);
+            TestContext.Out.WriteLine($"{model.Limbs[contact.Limb].Name} stands {ahead:0.00} m ahead of its hip");
+            Assert.That(MathF.Abs(ahead), Is.LessThanOrEqualTo(0.25f), $"{model.Limbs[contact.Limb].Name} stands {ahead:0.00} m ahead of its hip");
+        }
     }
 
     /// <summary>
