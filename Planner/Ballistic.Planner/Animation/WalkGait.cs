@@ -17,7 +17,7 @@ namespace Ballistic.Planner.Animation;
 /// other holds, both holding for <see cref="Overlap"/> of the half-cycle at each of its ends. The trunk's motion is
 /// costed in steps (<see cref="StepShare"/> of the leg, shortened to <see cref="ReachMargin"/> of what the legs reach
 /// by IK with the sole flat), a turn adding what it moves the farthest foot under the trunk (never more than a step
-/// per <see cref="MaxTurn"/>), no half-cycle turning more than <see cref="MaxTurn"/> (less for a rig whose feet stand
+/// per <see cref="MaxTurn"/>), no half-cycle turning more than <see cref="MaxTurn"/> in place, <see cref="MaxWalkingTurn"/> at full speed (less for a rig whose feet stand
 /// far ahead of or behind its trunk: <see cref="TurnDrift"/>); a half-cycle covers at most one step and lasts at least
 /// <see cref="MinHalfCycle"/>, so no swing is shorter than <see cref="MinSwing"/>. The first lasts as long as the
 /// feet left on the start contacts can hold them (probed by IK), the last starts once the feet can hold the end
@@ -146,8 +146,16 @@ internal sealed class WalkGait
     /// <summary>Half a sole's width, as a share of <see cref="HalfSole"/> (0.35: 9.5 cm wide for a 27 cm foot), fitted wholly on a stair's tread where the foot is set down turned along it (<see cref="Run"/>).</summary>
     private const float HalfSoleWidth = 0.35f;
 
-    /// <summary>Most the trunk turns during one half-cycle, radians (20°): half-cycles are shortened where the walk turns.</summary>
+    /// <summary>Most the trunk turns during one half-cycle in place, radians (20°): half-cycles are shortened where the walk turns.</summary>
     public const float MaxTurn = MathF.PI / 9f;
+
+    /// <summary>
+    /// Most the trunk turns during one half-cycle at full walking speed, radians (40°; between the two, in proportion
+    /// to the speed): a walker rounding a bend sets each swinging foot down turned on its way, at the cadence of the
+    /// straight (the user's human rig, bending 22° through a doorway over half a metre, stepped 3.4 times a second
+    /// there, at a 20° limit).
+    /// </summary>
+    public const float MaxWalkingTurn = 2f * MaxTurn;
 
     /// <summary>Share of the upright step taken near where a first run met trouble (<see cref="Animate"/>).</summary>
     private const float ShortStep = 0.85f;
@@ -264,8 +272,11 @@ internal sealed class WalkGait
     /// <summary>The farthest any foot stands from the trunk's centre horizontally in the contact pose (metres): how far a turn moves it per radian.</summary>
     private readonly float _footRadius;
 
-    /// <summary>Most this rig's trunk turns during one half-cycle, radians: <see cref="MaxTurn"/>, less for feet far ahead of or behind the trunk's centre (<see cref="TurnDrift"/>).</summary>
+    /// <summary>Most this rig's trunk turns during one half-cycle in place, radians: <see cref="MaxTurn"/>, less for feet far ahead of or behind the trunk's centre (<see cref="TurnDrift"/>).</summary>
     private readonly float _maxTurn;
+
+    /// <summary>Most this rig's trunk turns during one half-cycle at full walking speed, radians: <see cref="MaxWalkingTurn"/>, less for feet far ahead of or behind the trunk's centre (<see cref="TurnDrift"/>).</summary>
+    private readonly float _maxWalkingTurn;
 
     /// <summary>Per limb: where the contact pose holds its effector's contact point in the trunk's frame (metres, +X the trunk's left, +Z its forward): where a cruising foot is set down.</summary>
     private readonly Vector3[] _poseFeet;
@@ -319,6 +330,7 @@ internal sealed class WalkGait
         _poseFeet = Paired(model, [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations))]);
 
         _maxTurn = model.TurnLimit(TurnDrift, MaxTurn);
+        _maxWalkingTurn = model.TurnLimit(TurnDrift, MaxWalkingTurn);
 
         _manyFeetReach = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > 2 ? FlatReach(ManyFeetHips) : float.PositiveInfinity;
     }
@@ -2224,8 +2236,9 @@ internal sealed class WalkGait
                 float pace = MathF.Min(paceHere, _walk.PaceAt(along + ahead));
                 float low = paceHere < 1f ? float.Lerp(_stepLow, _stepLowCruise, Cruising(t)) : _stepLow;
                 float stepHere = float.Lerp(low, _step, Weight(t, StepAveraging)) * pace;
-                float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / _gait._maxTurn);
-                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / _gait._maxTurn), dt / _halfCycle);
+                float maxTurn = float.Lerp(_gait._maxTurn, _gait._maxWalkingTurn, Cruising(t));
+                float turnCost = turn * MathF.Min(_gait._footRadius / stepHere, 1f / maxTurn);
+                cost[i] = cost[i - 1] + MathF.Min(MathF.Max((moved / stepHere) + turnCost, turn / maxTurn), dt / _halfCycle);
                 previous = pose;
             }
 

@@ -447,4 +447,39 @@ public sealed class WalkGaitTests
         TestContext.Out.WriteLine($"{look.Upright}; {look.Bob}; {look.Cadence}; {look.ArmSwing}");
         return look;
     }
+
+    /// <summary>
+    /// A walk that bends 22° (the heading turning over half a metre, as the walk's path turns) keeps the cadence of
+    /// the straight: no interval between foot placements while it cruises is under 0.8 of their median, and biped
+    /// cadence stays at most <see cref="AnimatorEye.MostCadence"/>. Before, the half-cycles were cut to 20° of turn
+    /// each (<see cref="WalkGait.MaxTurn"/>, the limit of a turn in place) and the user's human rig stepped 0.29 s
+    /// apart at the bend, 0.43–0.52 s on the straight, 2.64 steps a second through a doorway.
+    /// </summary>
+    [TestCase("human")]
+    [TestCase("skeleton")]
+    public void AWalkRoundingABendKeepsTheCadenceOfTheStraight(string character)
+    {
+        Level level = new LevelBuilder("flat").AddFloor(-8f, -8f, 8f, 8f, 0f).Build();
+        WalkWorld world = WalkWorld.Create(level, character);
+        Vector3 bend = new(3f * MathF.Cos(22f * MathF.PI / 180f), 0f, -3f * MathF.Sin(22f * MathF.PI / 180f));
+        RoadmapNode from = world.Stance(new Vector3(-3f, 0f, 0f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(bend, 1, Vector3.Normalize(bend));
+        Vector3[] path = [.. world.GroundPath(WalkWorld.Centre(from), Vector3.Zero), .. world.GroundPath(Vector3.Zero, WalkWorld.Centre(to)).Skip(1)];
+        var walk = new Walk(from, to, path, world.Scene.Character.Walking.Speed, turnRate: world.Scene.Character.Walking.TurnRate);
+        JumpAnimation animation = world.Animator.Animate([walk]);
+        Assert.That(animation.Problems, Is.Empty, string.Join("; ", animation.Problems.Select(p => p.Reason)));
+
+        float cruiseFrom = walk.StartTurn + Walk.RampTime;
+        float cruiseTo = walk.StartTurn + walk.WalkTime - Walk.RampTime;
+        float[] placed = [.. animation.ContactPhases
+            .Where(p => !p.OnBall && world.Model.Limbs[p.Limb].Kind == LimbKind.Foot && p.From >= cruiseFrom && p.From <= cruiseTo)
+            .Select(p => p.From).Order()];
+        float[] intervals = [.. placed.Skip(1).Zip(placed, (b, a) => b - a)];
+        Assume.That(intervals, Has.Length.GreaterThanOrEqualTo(3), "the walk cruises over several steps");
+        float median = intervals.Order().ElementAt(intervals.Length / 2);
+        float cadence = intervals.Length / (placed[^1] - placed[0]);
+        TestContext.Out.WriteLine($"{character}: placements {string.Join(", ", placed.Select(t => t.ToString("0.00")))}; {cadence:0.00} steps per second");
+        Assert.That(intervals.Min(), Is.GreaterThanOrEqualTo(0.8f * median), $"intervals {string.Join(", ", intervals.Select(i => i.ToString("0.00")))} s");
+        Assert.That(cadence, Is.LessThanOrEqualTo(AnimatorEye.MostCadence));
+    }
 }
