@@ -38,6 +38,14 @@ public sealed record BakeSettings
     public bool StopWhenConnected { get; init; }
 
     /// <summary>
+    /// With a start and a goal, one of them raised above the other by more than the step height (up on a beam or a
+    /// ledge): once they connect, add stances on the ground within a jump's reach of the raised one
+    /// (<see cref="RoadmapBaker.ApproachStances"/>). Set by <see cref="Query.AnimatedPlanner.BakeAndPlan"/> when it
+    /// bakes on for a wandering route.
+    /// </summary>
+    internal bool ApproachRaisedEnds { get; init; }
+
+    /// <summary>
     /// With a start and a goal: sample a corridor between them first, widening it as it fills, then the whole level
     /// (on a level much larger than the request: a request on a large level costs what its route costs); the whole
     /// level from the start where the first corridor is a quarter of it or more. <c>true</c> by default; without a

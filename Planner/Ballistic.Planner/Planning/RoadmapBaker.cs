@@ -114,10 +114,27 @@ public sealed class RoadmapBaker
         int rounds = 0;
         int emptyRounds = 0;
         bool lined = false;
+        bool approached = false;
         while (true)
         {
             var state = new BakeState(roadmap.Nodes.Count, roadmap.Edges.Count, clock.Elapsed, Connected(roadmap, startNode, goalNode), rounds);
             progress?.Report(state);
+            if (settings.ApproachRaisedEnds && !approached && state.StartReachesGoal && startPlacement?.Pose is { } low && goalPlacement?.Pose is { } high)
+            {
+                // Connected while baking on for a wandering route: the ground within a hop of a raised end joins once.
+                approached = true;
+                PoseEvaluation[] near = ApproachStances(low, high, settings);
+                if (settings.MaxNodes is int most)
+                {
+                    near = near[..Math.Min(near.Length, Math.Max(0, most - roadmap.Nodes.Count))];
+                }
+
+                if (near.Length > 0 && Insert(roadmap, index, reach, near, settings, counters, CancelledNow) is not null)
+                {
+                    continue;
+                }
+            }
+
             bool stopping = stop.ShouldStop(state, out PlannerStatus status, out string reason);
             if (!stopping && cut is { } verdict)
             {
@@ -372,6 +389,56 @@ public sealed class RoadmapBaker
 
         return [.. stances];
     }
+
+    /// <summary>
+    /// Stances on the ground within a jump's reach of whichever of <paramref name="start"/> and <paramref name="goal"/>
+    /// is raised above the other by more than the step height (up on a beam or a ledge, the other on the floor): under
+    /// the straight line from the raised end back toward the other, at a quarter, a half, three quarters and one
+    /// neighbour cell (<see cref="NodeIndex.CellSizeFor"/>: half the jump reach) from it, each placed facing the raised
+    /// end within the request's tolerance of the ground straight below the line. Random samples drawn by area rarely
+    /// land within a hop of a raised goal's side: the frog going from the floor up onto a beam's middle hopped under
+    /// the beam, round to its far side and up from there (5 hops, 1.6 times the straight distance), every stance of the
+    /// near side too far to jump up from (its takeoff speed). Deterministic.
+    /// </summary>
+    internal PoseEvaluation[] ApproachStances(PoseEvaluation start, PoseEvaluation goal, BakeSettings settings)
+    {
+        Vector3 from = Contact.Centre(start.Contacts, start.Pose.Position);
+        Vector3 to = Contact.Centre(goal.Contacts, goal.Pose.Position);
+        float across = new Vector2(to.X - from.X, to.Z - from.Z).Length();
+        float cell = NodeIndex.CellSizeFor(_scene.Steering.Limits);
+        if (!(across > 0.25f * cell) || !float.IsFinite(across))
+        {
+            return [];
+        }
+
+        var stances = new List<PoseEvaluation>();
+        foreach ((Vector3 end, Vector3 other) in new[] { (to, from), (from, to) })
+        {
+            if (!(end.Y - other.Y > _scene.Character.StepReach))
+            {
+                continue; // not raised: walked or hopped up to as any stance is
+            }
+
+            var back = new Vector2(other.X - end.X, other.Z - end.Z) / across;
+            float facing = MathF.Atan2(-back.X, -back.Y);
+            for (int k = 1; k <= ApproachSteps && k * cell / ApproachSteps < across; k++)
+            {
+                Vector3 point = Vector3.Lerp(end, other, k * cell / ApproachSteps / across);
+                float top = end.Y + _scene.Character.StanceLift.Max;
+                if (_scene.Bvh.Raycast(point with { Y = top }, -Vector3.UnitY, top - other.Y + settings.Tolerance.UpDown, out RayHit ground)
+                    && ground.Normal.Y > 0f && ground.Point.Y < end.Y - _scene.Character.StepReach
+                    && _scene.Sampler.PlaceFacing(ground.Point, settings.Tolerance, facing, settings.CanStand).Pose is { } pose)
+                {
+                    stances.Add(pose);
+                }
+            }
+        }
+
+        return [.. stances];
+    }
+
+    /// <summary>How many stances <see cref="ApproachStances"/> places toward the other end, over one neighbour cell.</summary>
+    private const int ApproachSteps = 4;
 
     /// <summary>
     /// Stances along the narrow surfaces that run the request's way (a beam, a ledge, a walkway: a contact surface
