@@ -1786,37 +1786,36 @@ internal sealed class WalkGait
                 return null;
             }
 
+            // Each swing sets the arm's phase over its steps (the partner's first: a step both swing is the own foot's);
+            // between swings the phase holds where the last one left it.
             float[] phase = new float[to - from + 1];
-            float last = 0f;
-            for (int i = from; i <= to; i++)
+            bool[] set = new bool[phase.Length];
+            foreach ((List<Segment> plan, float sign) in new[] { (partner, -1f), (own, 1f) })
             {
-                if (SwingingAt(own, i) is Swinging mine)
+                foreach (Segment segment in plan)
                 {
-                    last = MathF.Cos(MathF.PI * (i - mine.From) / Math.Max(1, mine.To - mine.From));
-                }
-                else if (SwingingAt(partner, i) is Swinging theirs)
-                {
-                    last = -MathF.Cos(MathF.PI * (i - theirs.From) / Math.Max(1, theirs.To - theirs.From));
-                }
+                    if (segment is not Swinging swing)
+                    {
+                        continue;
+                    }
 
-                phase[i - from] = last;
+                    for (int i = Math.Max(from, swing.From); i <= Math.Min(to, swing.To); i++)
+                    {
+                        phase[i - from] = sign * MathF.Cos(MathF.PI * (i - swing.From) / Math.Max(1, swing.To - swing.From));
+                        set[i - from] = true;
+                    }
+                }
+            }
+
+            for (int k = 1; k < phase.Length; k++)
+            {
+                if (!set[k])
+                {
+                    phase[k] = phase[k - 1];
+                }
             }
 
             return phase;
-        }
-
-        /// <summary>The swing of <paramref name="plan"/> under way at fine step <paramref name="i"/>, or <c>null</c>.</summary>
-        private static Swinging? SwingingAt(List<Segment> plan, int i)
-        {
-            foreach (Segment segment in plan)
-            {
-                if (segment is Swinging swing && i >= swing.From && i <= swing.To)
-                {
-                    return swing;
-                }
-            }
-
-            return null;
         }
 
         /// <summary>How far (metres, along the trunk's forward at fine step <paramref name="i"/>, as last solved) foot <paramref name="leg"/> is behind its hip.</summary>

@@ -115,6 +115,18 @@ public sealed class RoadmapBaker
         int emptyRounds = 0;
         bool lined = false;
         bool approached = false;
+
+        // Stances placed on purpose (not sampled) join the roadmap within the node budget; true when some did.
+        bool AddedOnce(PoseEvaluation[] stances)
+        {
+            if (settings.MaxNodes is int most)
+            {
+                stances = stances[..Math.Min(stances.Length, Math.Max(0, most - roadmap.Nodes.Count))];
+            }
+
+            return stances.Length > 0 && Insert(roadmap, index, reach, stances, settings, counters, CancelledNow) is not null;
+        }
+
         while (true)
         {
             var state = new BakeState(roadmap.Nodes.Count, roadmap.Edges.Count, clock.Elapsed, Connected(roadmap, startNode, goalNode), rounds);
@@ -123,13 +135,7 @@ public sealed class RoadmapBaker
             {
                 // Connected while baking on for a wandering route: the ground within a hop of a raised end joins once.
                 approached = true;
-                PoseEvaluation[] near = ApproachStances(low, high, settings);
-                if (settings.MaxNodes is int most)
-                {
-                    near = near[..Math.Min(near.Length, Math.Max(0, most - roadmap.Nodes.Count))];
-                }
-
-                if (near.Length > 0 && Insert(roadmap, index, reach, near, settings, counters, CancelledNow) is not null)
+                if (AddedOnce(ApproachStances(low, high, settings)))
                 {
                     continue;
                 }
@@ -153,13 +159,7 @@ public sealed class RoadmapBaker
                 // (tried first: stances added at the start, and on any ground, connected the desert demo sooner, on a poorer
                 // roadmap: 12 jumps and no walk).
                 lined = true;
-                PoseEvaluation[] line = [.. LineStances(leaving, arriving, settings), .. NarrowStances(leaving, arriving, settings)];
-                if (settings.MaxNodes is int most)
-                {
-                    line = line[..Math.Min(line.Length, Math.Max(0, most - roadmap.Nodes.Count))];
-                }
-
-                if (line.Length > 0 && Insert(roadmap, index, reach, line, settings, counters, CancelledNow) is not null)
+                if (AddedOnce([.. LineStances(leaving, arriving, settings), .. NarrowStances(leaving, arriving, settings)]))
                 {
                     continue;
                 }
