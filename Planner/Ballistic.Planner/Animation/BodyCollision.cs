@@ -188,10 +188,13 @@ internal sealed class BodyCollision
         // The skin of bones that belong to no limb: those that carry none and hang from none (a tail's tip reaches past
         // its last joint, a head) and the trunk's (a pelvis, a spine, the root bone too: the desert skeleton's pelvis
         // sank 3.3 cm into a dune as it crouched to jump).
+        // A loaded rig's are also points spread over that skin: a door's jamb entered a box-shaped head 9.7 cm between
+        // its extremes.
         int[] hips = [.. model.Limbs.Select(l => l.Chain[0])];
+        IReadOnlyList<Vector3[]> spread = triangles is null ? [] : model.Source?.SpreadProbes ?? [];
         _freeSkins = skin.Count != rig.Joints.Count ? [] :
             [.. Enumerable.Range(0, rig.Joints.Count).Where(j => skin[j].Length > 0 && (j == 0 || others.Contains(j)) && !hips.Contains(j))
-                .Select(j => (j, skin[j].Select(p => (j, p, (SkinBlend[]?)null)).ToArray()))];
+                .Select(j => (j, skin[j].Concat(spread.Count == rig.Joints.Count ? spread[j] : []).Distinct().Select(p => (j, p, (SkinBlend[]?)null)).ToArray()))];
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>

@@ -67,6 +67,14 @@ internal sealed class CharacterSource
     internal IReadOnlyList<Vector3[]> SkinProbes { get; init; } = [];
 
     /// <summary>
+    /// For each joint, points spread over the skinned mesh around its bone (<see cref="MeshDefaults.Spread"/>), in the
+    /// bone's rest frame (metres): the skin of a bone that carries no limb (a head, a tail's tip) is kept out of the
+    /// level by these as well as by <see cref="SkinProbes"/>, since a level's edge may enter its face between the
+    /// extremes. Empty: none.
+    /// </summary>
+    internal IReadOnlyList<Vector3[]> SpreadProbes { get; init; } = [];
+
+    /// <summary>
     /// For each joint, points of the skinned mesh weighted to it and to other bones (a knee's back, carried partly by
     /// the thigh), with each bone's share (<see cref="SkinBlend"/>): of the vertices skinned mostly to it with at most
     /// <see cref="GltfSkeleton.BlendedShare"/> of their weight, the farthest along the 14 directions of

@@ -402,6 +402,7 @@ public static class CharacterSpecFile
             DerivedRadii = derivedRadii,
             BodyBones = bodyBones,
             SkinProbes = [.. skeleton.Points.Select(MeshDefaults.Extremes)],
+            SpreadProbes = [.. skeleton.Points.Select(MeshDefaults.Spread)],
             BlendProbes = [.. skeleton.Points.Select((points, j) => MeshDefaults.BlendedExtremes(points, skeleton.Blends[j]))],
         };
         // Flight poses the spec does not give are derived from the limbs' workspaces, not left in the bind pose.

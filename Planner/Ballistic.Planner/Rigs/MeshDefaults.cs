@@ -101,6 +101,43 @@ internal static class MeshDefaults
         return [.. found];
     }
 
+    /// <summary>
+    /// Of <paramref name="points"/>, one in each occupied cell of a grid <see cref="SpreadSpacing"/> metres wide (the
+    /// first met, in order), the grid widened by half again until at most <see cref="SpreadCap"/> remain: points spread
+    /// over the whole skin of a bone, not only its hull's extremes. A level's edge that enters a flat face of the skin
+    /// (a door's jamb into a box-shaped head) passes between the extremes; one entering more than about half the
+    /// spacing deep has a spread point inside it.
+    /// </summary>
+    public static Vector3[] Spread(IReadOnlyList<Vector3> points)
+    {
+        ArgumentNullException.ThrowIfNull(points);
+        var kept = new List<Vector3>();
+        var cells = new HashSet<(int, int, int)>();
+        for (float spacing = SpreadSpacing; ; spacing *= 1.5f)
+        {
+            kept.Clear();
+            cells.Clear();
+            foreach (Vector3 p in points)
+            {
+                if (cells.Add(((int)MathF.Floor(p.X / spacing), (int)MathF.Floor(p.Y / spacing), (int)MathF.Floor(p.Z / spacing))))
+                {
+                    kept.Add(p);
+                }
+            }
+
+            if (kept.Count <= SpreadCap)
+            {
+                return [.. kept];
+            }
+        }
+    }
+
+    /// <summary>Width (metres) of the grid cells of <see cref="Spread"/>: a level edge 1.5 cm into a flat skin face (the body check's depth) reaches a point.</summary>
+    public const float SpreadSpacing = 0.03f;
+
+    /// <summary>Most points <see cref="Spread"/> keeps of one bone's skin.</summary>
+    public const int SpreadCap = 240;
+
     /// <summary>Slices along a bone over which <see cref="BlendedExtremes"/> looks for blended skin's extremes.</summary>
     public const int BlendSlices = 3;
 

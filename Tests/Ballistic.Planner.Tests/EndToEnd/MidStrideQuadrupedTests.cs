@@ -1,8 +1,10 @@
 using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.EndToEnd;
@@ -48,5 +50,33 @@ public sealed class MidStrideQuadrupedTests
         (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, new Vector3(x0, 0f, z0), new Vector3(x1, 0f, z1));
         TestContext.Out.WriteLine(string.Join("; ", report.Look?.All.Select(c => $"{c.Name}: {c.Criterion}") ?? []));
         SweepTests.AssertOneCleanWalk(plan, report);
+    }
+
+    /// <summary>
+    /// From a corner of one room to the far corner of the other, the route bending through a 0.9 m door, the panda walks
+    /// (no jump), exact, fully right by the audit and every criterion of the animator's eye: no vertex of its head in
+    /// the jamb. Its box-shaped head's skin was checked by its hull's extremes only (its corners and a vertex of each
+    /// face), and the jamb's edge entered its face between them: a vertex 9.7 cm inside the level, in a walk reported
+    /// exact. The skin of bones that carry no limb is now also probed by points spread over it
+    /// (<see cref="MeshDefaults.Spread"/>).
+    /// </summary>
+    [Test]
+    public void APandaWalksRoundTheDoorsJambWithItsHeadOutOfIt()
+    {
+        (CharacterModel model, ReducedCharacter reduced) = Panda.Value;
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Doorway();
+        Sweep.Setup setup = Sweep.Prepare("doorway", level, model, reduced);
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[2].From, requests[2].To);
+        TestContext.Out.WriteLine(string.Join("; ", report.Look?.All.Select(c => $"{c.Name}: {c.Criterion}") ?? []));
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(plan.Result.Moves, Has.All.InstanceOf<Walk>(), "walks through the door, no jump");
+        Assert.That(report.FullyRight, Is.True, report.ToString());
+        Assert.Multiple(() =>
+        {
+            foreach ((string name, AnimatorEye.Criterion criterion) in report.Look!.All)
+            {
+                Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+            }
+        });
     }
 }
