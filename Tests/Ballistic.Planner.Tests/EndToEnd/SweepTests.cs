@@ -45,6 +45,7 @@ public sealed class SweepTests
     [
         ("human", "block"), ("human", "stairs"), ("human-zup", "thin-slabs"), ("dog", "block"), ("dog", "curved"),
         ("tailed", "stairs"), ("tailed", "holes-debris"), ("dog", "doorway"), ("human", "doorway"),
+        ("panda", "block"), ("panda", "holes-debris"), ("panda", "doorway"), ("panda", "stairs"),
     ];
 
     /// <summary>The reports of every case run, by case name, for the whole-sweep share.</summary>
@@ -170,10 +171,18 @@ public sealed class SweepTests
     /// stance by the door stood its right foot 0.70 m ahead and was set aside, and the second route took two jumps on
     /// the flat floor, one 123° off its way); and since a walking half-cycle may turn the trunk up to 40°
     /// (<see cref="Planner.Animation.WalkGait.MaxWalkingTurn"/>), its walk rounding the bend in the door keeps its cadence
-    /// (2.38 steps a second; 2.64 before). Empty again since, the same day.
+    /// (2.38 steps a second; 2.64 before). Empty again since, the same day. Since the Rigify panda joined the sweep
+    /// (the same day), it lists three of its plans. Through the doorway on the route that bends through it, it walks
+    /// to the door and hops through it backwards (170° off its way at takeoff, 151° at landing): the turned hops were
+    /// set aside, the head or the right upper arm in a jamb. Up the stairs (17 cm risers, above its 13 cm step) it hops
+    /// from the floor onto the flight taking off backwards (180°), and its right forefoot lands 0.25–0.26 m from the
+    /// stance contact the plan reports on a tread, where the left forefoot stands 0.45 L sideways of its place.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
+        ["facing"] = ["foreign rig/doorway/panda/1", "foreign rig/stairs/panda/0"],
+        ["footholds"] = ["foreign rig/stairs/panda/0", "foreign rig/stairs/panda/1"],
+        ["under hips"] = ["foreign rig/stairs/panda/1"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
