@@ -15,7 +15,8 @@ namespace Ballistic.Benchmarks;
 /// <summary>
 /// The runtime's systems on the generated desert with the skeleton (39 degrees of freedom) and a 1,000-node roadmap:
 /// one tick of 1,000 agents spread along their paths, the pose fill of 100 agents, serving 100 path requests under a
-/// budget of 25 searches per tick, and the tick in which 50 path requests start while 1,000 agents move.
+/// budget of 25 searches per tick, and the tick in which 50 path requests start while 1,000 agents move (the requests
+/// run in the background, or on the tick thread: whole, or in slices under the default planning budget).
 /// </summary>
 /// <remarks>
 /// The agents follow 20 distinct long paths (each shared by 50 agents, as agents sent between the same stances share
@@ -58,6 +59,10 @@ public class RuntimeBenchmarks
     private JumpWorld? _requests;
     private List<(RoadmapNode From, RoadmapNode To)> _pairs = null!;
     private readonly List<AgentHandle> _askers = [];
+    private JumpWorld _inline = null!;
+    private JumpWorld _inlineWhole = null!;
+    private readonly List<AgentHandle> _inlineAskers = [];
+    private readonly List<AgentHandle> _inlineWholeAskers = [];
     private int _round;
 
     /// <summary>Bakes the roadmap (once) and sends 1,000 + 100 + 1,000 agents along long paths (every path animated before measuring).</summary>
@@ -71,9 +76,22 @@ public class RuntimeBenchmarks
 
         // The default budget (MaxSearchesPerTick 16) and one background thread; 50 more agents stand, to be sent off.
         _busy = Moving(1_000, poses: false, new WorldSettings { TickRate = 10_000, AnimationThreads = 1 }, out KindHandle kind);
+        AddAskers(_busy, kind, _askers);
+
+        // The same on the tick thread (no background threads): requests advanced in slices under the default planning
+        // budget (WorldSettings.PlanningTimePerTick, 2 ms), and solved whole on the tick they start (no budget).
+        _inline = Moving(1_000, poses: false, new WorldSettings { TickRate = 10_000, AnimationThreads = 0 }, out kind);
+        AddAskers(_inline, kind, _inlineAskers);
+        _inlineWhole = Moving(1_000, poses: false, new WorldSettings { TickRate = 10_000, AnimationThreads = 0, PlanningTimePerTick = null }, out kind);
+        AddAskers(_inlineWhole, kind, _inlineWholeAskers);
+    }
+
+    /// <summary>Adds 50 standing agents to <paramref name="world"/>, one on each pair's start in turn, to be sent off.</summary>
+    private void AddAskers(JumpWorld world, KindHandle kind, List<AgentHandle> askers)
+    {
         for (int i = 0; i < 50; i++)
         {
-            _askers.Add(_busy.AddAgent(kind, _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].From.Id]).Agent);
+            askers.Add(world.AddAgent(kind, _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].From.Id]).Agent);
         }
     }
 
@@ -237,11 +255,13 @@ public class RuntimeBenchmarks
     /// searched anew, its animation the one the crowd's agents share).
     /// </summary>
     [IterationSetup(Target = nameof(TickStartingRequests))]
-    public void SendFifty()
+    public void SendFifty() => Send(_busy, _askers);
+
+    private void Send(JumpWorld world, List<AgentHandle> askers)
     {
-        for (int i = 0; i < _askers.Count; i++)
+        for (int i = 0; i < askers.Count; i++)
         {
-            _busy.SetTarget(_askers[i], _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].To.Id]);
+            world.SetTarget(askers[i], _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].To.Id]);
         }
     }
 
@@ -254,15 +274,74 @@ public class RuntimeBenchmarks
 
     /// <summary>The 50 agents' requests are let finish; each is put back on its start, without a target.</summary>
     [IterationCleanup(Target = nameof(TickStartingRequests))]
-    public void SettleFifty()
+    public void SettleFifty() => Return(_busy, _askers);
+
+    private void Return(JumpWorld world, List<AgentHandle> askers)
     {
-        Settle(_busy);
-        for (int i = 0; i < _askers.Count; i++)
+        Settle(world);
+        for (int i = 0; i < askers.Count; i++)
         {
-            _busy.ClearTarget(_askers[i]);
-            _busy.Warp(_askers[i], _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].From.Id]);
+            world.ClearTarget(askers[i]);
+            world.Warp(askers[i], _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].From.Id]);
         }
     }
+
+    /// <summary>The 50 standing agents of the sliced on-tick world are sent off, and its first tick taken (the requests started).</summary>
+    [IterationSetup(Target = nameof(TickAdvancingRequestsInSlices))]
+    public void SendFiftyInline()
+    {
+        Send(_inline, _inlineAskers);
+        _inline.Step();
+    }
+
+    /// <summary>
+    /// One tick of 1,000 moving agents on the tick thread while 16 started requests are advanced in slices under the
+    /// default planning budget (2 ms), the tick after they started (none due yet). The worst such tick is the Max column.
+    /// </summary>
+    [Benchmark]
+    public void TickAdvancingRequestsInSlices() => _inline.Step();
+
+    /// <summary>The sliced on-tick world's requests are let finish and the agents put back.</summary>
+    [IterationCleanup(Target = nameof(TickAdvancingRequestsInSlices))]
+    public void SettleFiftyInline() => Return(_inline, _inlineAskers);
+
+    /// <summary>The 50 standing agents of the sliced on-tick world are sent off, and the ticks before the first requests' due tick taken.</summary>
+    [IterationSetup(Target = nameof(TickFinishingRequestsOnTheirDueTick))]
+    public void SendFiftyInlineToTheirDueTick()
+    {
+        Send(_inline, _inlineAskers);
+        for (int i = 0; i < _inline.Settings.PathLatencyTicks; i++)
+        {
+            _inline.Step();
+        }
+    }
+
+    /// <summary>
+    /// The due tick of the 16 requests started first in the sliced on-tick world: what their slices left is finished
+    /// here (deterministic arrival, <see cref="WorldSettings.WaitForAnimation"/>), so the work the budget spread is
+    /// paid on this tick unless the slices before it covered it.
+    /// </summary>
+    [Benchmark]
+    public void TickFinishingRequestsOnTheirDueTick() => _inline.Step();
+
+    /// <summary>The sliced on-tick world's requests are let finish and the agents put back.</summary>
+    [IterationCleanup(Target = nameof(TickFinishingRequestsOnTheirDueTick))]
+    public void SettleFiftyInlineAfterTheirDueTick() => Return(_inline, _inlineAskers);
+
+    /// <summary>The 50 standing agents of the whole-request on-tick world are sent off.</summary>
+    [IterationSetup(Target = nameof(TickSolvingRequestsWhole))]
+    public void SendFiftyWhole() => Send(_inlineWhole, _inlineWholeAskers);
+
+    /// <summary>
+    /// One tick of 1,000 moving agents on the tick thread in which 16 requests start and are solved whole (no planning
+    /// budget): what a tick cost on the tick thread before requests were sliced.
+    /// </summary>
+    [Benchmark]
+    public void TickSolvingRequestsWhole() => _inlineWhole.Step();
+
+    /// <summary>The whole-request on-tick world's requests are let finish and the agents put back.</summary>
+    [IterationCleanup(Target = nameof(TickSolvingRequestsWhole))]
+    public void SettleFiftyWhole() => Return(_inlineWhole, _inlineWholeAskers);
 
     /// <summary>Stops the worlds.</summary>
     [GlobalCleanup]
@@ -271,5 +350,7 @@ public class RuntimeBenchmarks
         _crowd?.Dispose();
         _posed.Dispose();
         _busy.Dispose();
+        _inline.Dispose();
+        _inlineWhole.Dispose();
     }
 }

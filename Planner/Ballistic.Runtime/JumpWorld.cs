@@ -269,6 +269,12 @@ public sealed class JumpWorld : IDisposable
     public int LastTickSearches => _requests.LastTickSearches;
 
     /// <summary>
+    /// Steps the tick thread took during the last tick advancing path requests in slices (a world with no background
+    /// threads, <see cref="WorldSettings.PlanningTimePerTick"/>; the steps taken finishing a due request not counted).
+    /// </summary>
+    public int LastTickPlanningSteps => _requests.LastTickSteps;
+
+    /// <summary>
     /// Path requests a tick stopped waiting for, since the world began: their animation was late on their due tick and
     /// <see cref="WorldSettings.MaxAnimationWait"/> was spent, so they were delivered at the first tick they were ready
     /// (the run then depends on machine speed). Zero on a machine that keeps up, and always with no wait limit.

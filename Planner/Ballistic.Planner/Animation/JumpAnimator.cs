@@ -21,7 +21,7 @@ namespace Ballistic.Planner.Animation;
 /// (no contact pose passing the no-slip test, a bone through the level) is reported per jump in
 /// <see cref="JumpAnimation.Problems"/>, never hidden.
 /// </summary>
-public sealed class JumpAnimator : IJumpAnimator
+public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
 {
     /// <summary>Duration of one limb's step between two jumps, seconds.</summary>
     public const float StepDuration = 0.3f;
@@ -140,6 +140,20 @@ public sealed class JumpAnimator : IJumpAnimator
     /// <exception cref="ArgumentException">No moves, a null move, or a non-positive frame rate.</exception>
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
     {
+        Check(moves, frameRate);
+        return Stepwise.Last(Steps(moves, frameRate));
+    }
+
+    /// <inheritdoc />
+    IEnumerable<JumpAnimation?> IStepwiseAnimator.AnimateSteps(IReadOnlyList<Move> moves, float frameRate)
+    {
+        Check(moves, frameRate);
+        return Steps(moves, frameRate);
+    }
+
+    /// <summary>Refuses what <see cref="Animate"/> cannot animate.</summary>
+    private static void Check(IReadOnlyList<Move> moves, float frameRate)
+    {
         ArgumentNullException.ThrowIfNull(moves);
         if (moves.Count == 0)
         {
@@ -158,7 +172,11 @@ public sealed class JumpAnimator : IJumpAnimator
         {
             throw new ArgumentException("The frame rate must be positive.", nameof(frameRate));
         }
+    }
 
+    /// <summary><see cref="Animate"/>'s body in steps: a pause after each jump's clip and each walk's gait.</summary>
+    private IEnumerable<JumpAnimation?> Steps(IReadOnlyList<Move> moves, float frameRate)
+    {
         // Each jump: its contact poses and flight. The landing contacts push off again when they can; a jump after a
         // walk takes off from the contact pose generated for it, which the walk ends on.
         var clips = new Clip?[moves.Count];
@@ -196,6 +214,7 @@ public sealed class JumpAnimator : IJumpAnimator
             failed += (clip.Takeoff.Valid ? 0 : 1) + (clip.Landing.Valid ? 0 : 1);
             problems.AddRange(clip.Problems);
             clips[m] = clip;
+            yield return null;
         }
 
         // Each walk: from the previous move's landing (or walk's end) pose, or the first stance's, to the next jump's
@@ -218,6 +237,7 @@ public sealed class JumpAnimator : IJumpAnimator
             walks[m] = walked;
             animated[m] = walked.Walked(walk);
             left = end;
+            yield return null;
         }
 
         // A walk whose steps shorten around rough ground slows there (WalkGait), and a jump's stances are those its
@@ -369,7 +389,8 @@ public sealed class JumpAnimator : IJumpAnimator
         if (refined.Count == frames.Count && slips.Count == 0)
         {
             problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-            return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding, leadIn, leadOut);
+            yield return new JumpAnimation(Model, moves, stances, frames, phases, problems, failed, colliding, leadIn, leadOut);
+            yield break;
         }
 
         foreach ((int limb, float time) in slips.GroupBy(s => s.Limb).Select(g => g.First()))
@@ -380,7 +401,7 @@ public sealed class JumpAnimator : IJumpAnimator
         }
 
         problems.Sort((a, b) => a.Jump.CompareTo(b.Jump));
-        return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count, leadIn, leadOut);
+        yield return new JumpAnimation(Model, moves, stances, refined, phases, problems, failed, colliding + slips.Count, leadIn, leadOut);
     }
 
     /// <summary>

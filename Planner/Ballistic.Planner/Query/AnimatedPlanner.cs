@@ -171,7 +171,7 @@ public sealed class AnimatedPlanner
         var query = new PathQuery(_scene, roadmap);
         settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
         var repair = new JumpRepair(roadmap.Nodes.Count + 2);
-        var job = new PlanJob((r, stop) => query.Plan(from, to, r.Adjust(settings), r.Excluded, stop), Animator, repair, rounds, frameRate) { Termination = termination };
+        using var job = new PlanJob((r, stop) => query.PlanSteps(from, to, r.Adjust(settings), r.Excluded, stop), Animator, repair, rounds, frameRate) { Termination = termination };
         (PlanResult result, JumpAnimation? animation, int round) = job.Run();
         return new AnimatedPlan(result, animation, repair.SetAside, round);
     }

@@ -22,8 +22,10 @@ namespace Ballistic.Planner.Query;
 /// </remarks>
 public sealed class PathQuery
 {
-    /// <summary>A* polls the termination condition every this many expansions.</summary>
+    /// <summary>A* polls the termination condition, and pauses when run in steps, every this many expansions by default (<see cref="SliceExpansions"/>).</summary>
     private const int PollEvery = 1024;
+
+    private readonly int _sliceExpansions = PollEvery;
 
     private readonly PlanningScene _scene;
     private readonly Roadmap _roadmap;
@@ -113,6 +115,13 @@ public sealed class PathQuery
     /// <summary>The roadmap searched.</summary>
     public Roadmap Roadmap => _roadmap;
 
+    /// <summary>A* expansions between two pauses of a search run in steps, where the termination condition is polled (<see cref="PollEvery"/> by default); positive.</summary>
+    internal int SliceExpansions
+    {
+        get => _sliceExpansions;
+        init => _sliceExpansions = value > 0 ? value : throw new ArgumentOutOfRangeException(nameof(value), value, "The slice must be positive.");
+    }
+
     /// <summary>The request's settings (the defaults for <c>null</c>), refused with one line when their jump costs are negative or not finite.</summary>
     private static QuerySettings Checked(QuerySettings? settings)
     {
@@ -143,40 +152,58 @@ public sealed class PathQuery
     /// <see cref="PlannerStatus.Cancelled"/>) and reason. <c>null</c> for none.
     /// </param>
     /// <exception cref="ArgumentException">The settings' jump costs are negative or not finite.</exception>
-    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination = null)
+    public PlanResult Plan(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination = null) =>
+        Stepwise.Last(PlanSteps(from, to, Checked(settings), rejected, termination));
+
+    /// <summary>
+    /// <see cref="Plan(Vector3, Vector3, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>
+    /// in steps, for a caller that spreads one request over several frames: <c>null</c> at each pause point (after
+    /// each placement, each steering call, every <see cref="SliceExpansions"/> A* expansions and each stage of the path's
+    /// post-processing), then the result, the same as the whole call gives. The query is the request's until the
+    /// steps end or are disposed.
+    /// </summary>
+    internal IEnumerable<PlanResult?> PlanSteps(Vector3 from, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination)
     {
         settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         if (Stopped(termination, clock, null, null) is { } early)
         {
-            return early;
+            yield return early;
+            yield break;
         }
 
         EndpointPlacement startPlacement = Locate(from, settings, out RoadmapNode? reused);
         bool startReused = reused is not null;
         if (startPlacement.Pose is not { } startPose)
         {
-            return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
+            yield return Fail(PlannerStatus.InvalidStart, startPlacement.Failure("start", settings.Tolerance)!, null, null, clock) with { StartPlacement = startPlacement };
+            yield break;
         }
 
         int n = _roadmap.Nodes.Count;
         RoadmapNode start = reused ?? Existing(startPose.Pose) ?? new RoadmapNode(n, startPose.Pose, startPose.Cone, startPose.Contacts);
         if (Stopped(termination, clock, start, null) is { } stopped)
         {
-            return stopped with { StartPlacement = startPlacement };
+            yield return stopped with { StartPlacement = startPlacement };
+            yield break;
         }
 
+        yield return null;
         EndpointPlacement goalPlacement = Locate(to, settings, out reused);
         if (goalPlacement.Pose is not { } goalPose)
         {
-            return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, start, null, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+            yield return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, start, null, clock) with { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+            yield break;
         }
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (startPose.Pose == goalPose.Pose ? start : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         _goalPoint = reused is null ? to : null;
         _startPoint = startReused ? null : from;
-        PlanResult result = Connect(start, goal, settings, rejected, termination, clock);
-        return result with { StartPlacement = result.StartPlacement ?? startPlacement, GoalPlacement = result.GoalPlacement ?? goalPlacement };
+        yield return null;
+        foreach (PlanResult? step in ConnectSteps(start, goal, settings, rejected, termination, clock))
+        {
+            yield return step is null ? null : step with { StartPlacement = step.StartPlacement ?? startPlacement, GoalPlacement = step.GoalPlacement ?? goalPlacement };
+        }
     }
 
     /// <summary>
@@ -196,26 +223,41 @@ public sealed class PathQuery
     public PlanResult Plan(RoadmapNode start, Vector3 to, QuerySettings? settings = null, IReadOnlySet<(int From, int To)>? rejected = null, TerminationCondition? termination = null)
     {
         ArgumentNullException.ThrowIfNull(start);
+        return Stepwise.Last(PlanSteps(start, to, Checked(settings), rejected, termination));
+    }
+
+    /// <summary>
+    /// <see cref="Plan(RoadmapNode, Vector3, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>
+    /// in steps (see <see cref="PlanSteps(Vector3, Vector3, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>).
+    /// </summary>
+    internal IEnumerable<PlanResult?> PlanSteps(RoadmapNode start, Vector3 to, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination)
+    {
+        ArgumentNullException.ThrowIfNull(start);
         settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         int n = _roadmap.Nodes.Count;
         RoadmapNode from = Resolve(start, n);
         if (Stopped(termination, clock, from, null) is { } early)
         {
-            return early;
+            yield return early;
+            yield break;
         }
 
         EndpointPlacement goalPlacement = Locate(to, settings, out RoadmapNode? reused);
         if (goalPlacement.Pose is not { } goalPose)
         {
-            return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, from, null, clock) with { GoalPlacement = goalPlacement };
+            yield return Fail(PlannerStatus.InvalidGoal, goalPlacement.Failure("goal", settings.Tolerance)!, from, null, clock) with { GoalPlacement = goalPlacement };
+            yield break;
         }
 
         RoadmapNode goal = reused ?? Existing(goalPose.Pose) ?? (from.Pose == goalPose.Pose ? from : new RoadmapNode(n + 1, goalPose.Pose, goalPose.Cone, goalPose.Contacts));
         _goalPoint = reused is null ? to : null;
         _startPoint = null;
-        PlanResult result = Connect(from, goal, settings, rejected, termination, clock);
-        return result with { GoalPlacement = result.GoalPlacement ?? goalPlacement };
+        yield return null;
+        foreach (PlanResult? step in ConnectSteps(from, goal, settings, rejected, termination, clock))
+        {
+            yield return step is null ? null : step with { GoalPlacement = step.GoalPlacement ?? goalPlacement };
+        }
     }
 
     /// <summary>
@@ -234,6 +276,17 @@ public sealed class PathQuery
     {
         ArgumentNullException.ThrowIfNull(start);
         ArgumentNullException.ThrowIfNull(goal);
+        return Stepwise.Last(PlanSteps(start, goal, Checked(settings), rejected, termination));
+    }
+
+    /// <summary>
+    /// <see cref="Plan(RoadmapNode, RoadmapNode, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>
+    /// in steps (see <see cref="PlanSteps(Vector3, Vector3, QuerySettings?, IReadOnlySet{ValueTuple{int, int}}?, TerminationCondition?)"/>).
+    /// </summary>
+    internal IEnumerable<PlanResult?> PlanSteps(RoadmapNode start, RoadmapNode goal, QuerySettings? settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination)
+    {
+        ArgumentNullException.ThrowIfNull(start);
+        ArgumentNullException.ThrowIfNull(goal);
         settings = Checked(settings);
         var clock = Stopwatch.StartNew();
         int n = _roadmap.Nodes.Count;
@@ -244,7 +297,7 @@ public sealed class PathQuery
             : goal.Id == n + 1 ? goal : goal with { Id = n + 1 };
         _goalPoint = null;
         _startPoint = null;
-        return Connect(from, to, settings, rejected, termination, clock);
+        return ConnectSteps(from, to, settings, rejected, termination, clock);
     }
 
     /// <summary>
@@ -282,16 +335,18 @@ public sealed class PathQuery
     private RoadmapNode? Existing(in Geometry.RootPose pose) => _roadmap.FindPose(pose) is int id ? _roadmap.Node(id) : null;
 
     /// <summary>Links the start and goal to the roadmap (those not in it) and searches.</summary>
-    private PlanResult Connect(RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
+    private IEnumerable<PlanResult?> ConnectSteps(RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
     {
         if (Stopped(termination, clock, start, goal) is { } early)
         {
-            return early;
+            yield return early;
+            yield break;
         }
 
         if (goal.Id == start.Id)
         {
-            return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed);
+            yield return new PlanResult(PlannerStatus.Exact, "the start is the goal: no jump needed", start, goal, [], clock.Elapsed);
+            yield break;
         }
 
         // The request's costs: walking allowed when asked and the character walks.
@@ -318,6 +373,8 @@ public sealed class PathQuery
                     _extra.Add(new Extra(start.Id, goal.Id, JumpCost(start, goal, direct.Arc), direct.Arc, null));
                 }
 
+                yield return null;
+
                 if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
                 {
                     _extra.Add(new Extra(start.Id, goal.Id, WalkCost(walk), default, walk));
@@ -338,11 +395,13 @@ public sealed class PathQuery
 
                 if (Stopped(termination, clock, start, goal) is { } stopped)
                 {
-                    return stopped;
+                    yield return stopped;
+                    yield break;
                 }
 
                 RoadmapNode node = _roadmap.Node(j);
                 SteeringResult r = steering.Steer(start.Pose, start.Cone, node.Pose, node.Cone);
+                yield return null;
                 if (r.Succeeded)
                 {
                     _extra.Add(new Extra(start.Id, j, JumpCost(start, node, r.Arc), r.Arc, null));
@@ -353,9 +412,16 @@ public sealed class PathQuery
                 }
             }
 
-            if (_walking && AddWalks(start, goal, walkDistance, settings, rejected, fromNode: true, termination, clock) is { } stoppedWalking)
+            if (_walking)
             {
-                return stoppedWalking;
+                foreach (PlanResult? step in AddWalks(start, goal, walkDistance, settings, rejected, fromNode: true, termination, clock))
+                {
+                    yield return step;
+                    if (step is not null)
+                    {
+                        yield break;
+                    }
+                }
             }
         }
 
@@ -372,11 +438,13 @@ public sealed class PathQuery
 
                 if (Stopped(termination, clock, start, goal) is { } stopped)
                 {
-                    return stopped;
+                    yield return stopped;
+                    yield break;
                 }
 
                 RoadmapNode node = _roadmap.Node(j);
                 SteeringResult r = steering.Steer(node.Pose, node.Cone, goal.Pose, goal.Cone);
+                yield return null;
                 if (r.Succeeded)
                 {
                     _extra.Add(new Extra(j, goal.Id, JumpCost(node, goal, r.Arc), r.Arc, null));
@@ -387,26 +455,48 @@ public sealed class PathQuery
                 }
             }
 
-            if (_walking && AddWalks(goal, start, walkDistance, settings, rejected, fromNode: false, termination, clock) is { } stoppedWalking)
+            if (_walking)
             {
-                return stoppedWalking;
+                foreach (PlanResult? step in AddWalks(goal, start, walkDistance, settings, rejected, fromNode: false, termination, clock))
+                {
+                    yield return step;
+                    if (step is not null)
+                    {
+                        yield break;
+                    }
+                }
             }
         }
 
         _lostWalk = null;
-        List<Move>? path = AStar(start, goal, rejected, termination, clock, out int expansions, out PlanResult? cut);
-        if (cut is not null)
+        var search = new Search();
+        foreach (bool _ in AStar(start, goal, rejected, termination, clock, search))
         {
-            return cut with { Expansions = expansions };
+            yield return null;
+        }
+
+        List<Move>? path = search.Path;
+        int expansions = search.Expansions;
+        if (search.Cut is { } cut)
+        {
+            yield return cut with { Expansions = expansions };
+            yield break;
         }
 
         if (_lostWalk is (int lostFrom, int lostTo))
         {
-            return Fail(PlannerStatus.NoPath, $"the roadmap's walk from node {lostFrom} to node {lostTo} no longer finds its ground on this level: bake the roadmap again", start, goal, clock) with { Expansions = expansions };
+            yield return Fail(PlannerStatus.NoPath, $"the roadmap's walk from node {lostFrom} to node {lostTo} no longer finds its ground on this level: bake the roadmap again", start, goal, clock) with { Expansions = expansions };
+            yield break;
         }
 
         float searched = path?.Sum(CostOf) ?? 0f;
-        (path, EndpointPlacement? startPlacement, EndpointPlacement? goalPlacement, IReadOnlyList<(int From, int To)> unturned) = Finish(path, start, goal, settings, rejected, termination, clock);
+        var finished = new Finished();
+        foreach (bool _ in Finish(path, start, goal, settings, rejected, termination, clock, finished))
+        {
+            yield return null;
+        }
+
+        (path, EndpointPlacement? startPlacement, EndpointPlacement? goalPlacement, IReadOnlyList<(int From, int To)> unturned) = (finished.Path, finished.Start, finished.Goal, finished.Unturned);
         if (path is not null && unturned.Count > 0)
         {
             // Jumps the facer could not turn to face their way (the takeoff or landing on ground too steep to turn
@@ -417,14 +507,26 @@ public sealed class PathQuery
             {
                 avoided.UnionWith(unturned);
                 _lostWalk = null;
-                List<Move>? other = AStar(start, goal, avoided, termination, clock, out int more, out PlanResult? stopped);
-                expansions += more;
-                if (stopped is not null || _lostWalk is not null || other is null || other.Sum(CostOf) > FacingDetour * searched)
+                var research = new Search();
+                foreach (bool _ in AStar(start, goal, avoided, termination, clock, research))
+                {
+                    yield return null;
+                }
+
+                List<Move>? other = research.Path;
+                expansions += research.Expansions;
+                if (research.Cut is not null || _lostWalk is not null || other is null || other.Sum(CostOf) > FacingDetour * searched)
                 {
                     break;
                 }
 
-                (List<Move>? made, EndpointPlacement? madeStart, EndpointPlacement? madeGoal, IReadOnlyList<(int From, int To)> left) = Finish(other, start, goal, settings, avoided, termination, clock);
+                var refinished = new Finished();
+                foreach (bool _ in Finish(other, start, goal, settings, avoided, termination, clock, refinished))
+                {
+                    yield return null;
+                }
+
+                (List<Move>? made, EndpointPlacement? madeStart, EndpointPlacement? madeGoal, IReadOnlyList<(int From, int To)> left) = (refinished.Path, refinished.Start, refinished.Goal, refinished.Unturned);
                 if (made is not null && left.Count < fewest)
                 {
                     (path, startPlacement, goalPlacement, fewest) = (made, madeStart, madeGoal, left.Count);
@@ -449,7 +551,7 @@ public sealed class PathQuery
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
             : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
-        return result with { Expansions = expansions };
+        yield return result with { Expansions = expansions };
     }
 
     /// <summary>How many times at most a request searches again without the jumps it could not turn to face (<see cref="JumpFacer.Unturned"/>).</summary>
@@ -463,7 +565,7 @@ public sealed class PathQuery
     /// ground the body could not walk, jumps turned to face their way (as <paramref name="settings"/> ask), walks
     /// joined; with the start and goal placements made for facing and the jumps left unturned.
     /// </summary>
-    private (List<Move>? Path, EndpointPlacement? Start, EndpointPlacement? Goal, IReadOnlyList<(int From, int To)> Unturned) Finish(List<Move>? path, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock)
+    private IEnumerable<bool> Finish(List<Move>? path, RoadmapNode start, RoadmapNode goal, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, Finished finished)
     {
         int nextId = _roadmap.Nodes.Count + 2;
         EndpointPlacement? startPlacement = null;
@@ -474,24 +576,29 @@ public sealed class PathQuery
             if (settings.Shortcut)
             {
                 path = Shortcut(path, settings, rejected);
+                yield return true;
             }
 
             if (settings.TightenJumps)
             {
                 _tightener ??= new JumpTightener(_scene);
                 path = _tightener.Tighten(path, ref nextId, settings.MinCutWalk, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
+                yield return true;
                 path = Shortcut(path, settings, rejected, walksOnly: true);
+                yield return true;
             }
 
             if (settings.HopSpots is { Count: > 0 } spots)
             {
                 _tightener ??= new JumpTightener(_scene);
                 path = _tightener.Hop(path, spots, ref nextId, 0.5f * settings.MinCutWalk, rejected, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
+                yield return true;
             }
 
             if (settings.FaceJumps)
             {
                 path = Face(path, walking: true, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement, out unturned);
+                yield return true;
             }
 
             path = JoinWalks(path, _scene.Walking);
@@ -499,9 +606,19 @@ public sealed class PathQuery
         else if (path is not null && settings.FaceJumps)
         {
             path = Face(path, walking: false, ref nextId, start, goal, settings, rejected, termination, clock, out startPlacement, out goalPlacement, out unturned);
+            yield return true;
         }
 
-        return (path, startPlacement, goalPlacement, unturned);
+        (finished.Path, finished.Start, finished.Goal, finished.Unturned) = (path, startPlacement, goalPlacement, unturned);
+    }
+
+    /// <summary>What <see cref="Finish"/> made of a searched path: the path ready to perform (<c>null</c> when none was found), the start and goal placed again for facing, the jumps left unturned.</summary>
+    private sealed class Finished
+    {
+        public List<Move>? Path;
+        public EndpointPlacement? Start;
+        public EndpointPlacement? Goal;
+        public IReadOnlyList<(int From, int To)> Unturned = [];
     }
 
     /// <summary>
@@ -558,11 +675,14 @@ public sealed class PathQuery
     /// nodes jumping to it), which also prune nodes that cannot reach the goal. With walking, the distance bound alone,
     /// over the faster of the fastest jump and the walking speed (landmarks know jumps only).
     /// </summary>
-    private List<Move>? AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, out int expansions, out PlanResult? cut)
+    /// <remarks>
+    /// In steps: a pause (<c>true</c>) every <see cref="SliceExpansions"/> expansions, where the termination condition is
+    /// polled; the search's state stays in this query's scratch between them, so a search in steps expands the same
+    /// nodes in the same order as one run whole. Its outcome goes in <paramref name="search"/>.
+    /// </remarks>
+    private IEnumerable<bool> AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, Search search)
     {
         int generation = NextGeneration();
-        expansions = 0;
-        cut = null;
         float fastest = _roadmap.MaxHorizontalSpeed;
         if (_walking)
         {
@@ -597,7 +717,41 @@ public sealed class PathQuery
             }
         }
 
-        var heuristic = new Heuristic(this, goal, fastest > 0f ? 1f / fastest : 0f, generation, landmarks: !_walking);
+        float inverseSpeed = fastest > 0f ? 1f / fastest : 0f;
+        _open.Clear();
+        _cost[start.Id] = 0f;
+        _reached[start.Id] = generation;
+        _open.Enqueue(start.Id, 0f);
+        int paused = -1;
+        while (Expand(start, goal, rejected, generation, inverseSpeed, ref paused, search))
+        {
+            if (Stopped(termination, clock, start, goal) is { } stopped)
+            {
+                search.Cut = stopped;
+                yield break;
+            }
+
+            yield return true;
+        }
+    }
+
+    /// <summary>What <see cref="AStar"/> found: the path (<c>null</c> for none, or when stopped), the nodes expanded, the failure it was stopped with.</summary>
+    private sealed class Search
+    {
+        public List<Move>? Path;
+        public int Expansions;
+        public PlanResult? Cut;
+    }
+
+    /// <summary>
+    /// Expands <see cref="AStar"/>'s open nodes, first the one it paused before (<paramref name="paused"/>, or -1),
+    /// until the goal is reached or the open list empties (false: <paramref name="search"/> holds the outcome), or until
+    /// the next node would be the <see cref="SliceExpansions"/>-th expanded since the last pause (true, that node in
+    /// <paramref name="paused"/>).
+    /// </summary>
+    private bool Expand(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, int generation, float inverseSpeed, ref int paused, Search search)
+    {
+        var heuristic = new Heuristic(this, goal, inverseSpeed, generation, landmarks: !_walking);
         ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
         ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
@@ -607,6 +761,7 @@ public sealed class PathQuery
         ReadOnlySpan<int> walkTargets = _roadmap.WalkTargets;
         ReadOnlySpan<float> walkTimes = _roadmap.WalkDurations;
         ReadOnlySpan<int> walkEntries = _roadmap.WalkEntries;
+        int roadmapCount = _roadmap.Nodes.Count;
         bool walks = _walking && _roadmap.Walks.Count > 0;
         float effort = _effort;
         float heightEffort = _heightEffort;
@@ -616,28 +771,36 @@ public sealed class PathQuery
         int[] reached = _reached;
         int[] closed = _closed;
         PriorityQueue<int, float> open = _open;
-        open.Clear();
-        cost[start.Id] = 0f;
-        reached[start.Id] = generation;
-        open.Enqueue(start.Id, 0f);
-        while (open.TryDequeue(out int node, out _))
+        int node = paused;
+        paused = -1;
+        while (true)
         {
-            if (closed[node] == generation)
+            if (node < 0)
             {
-                continue;
-            }
+                if (!open.TryDequeue(out node, out _))
+                {
+                    return false;
+                }
 
-            closed[node] = generation;
-            if (node == goal.Id)
-            {
-                expansions++;
-                return Reconstruct(start, goal);
-            }
+                if (closed[node] == generation)
+                {
+                    node = -1;
+                    continue;
+                }
 
-            if (++expansions % PollEvery == 0 && Stopped(termination, clock, start, goal) is { } stopped)
-            {
-                cut = stopped;
-                return null;
+                closed[node] = generation;
+                if (node == goal.Id)
+                {
+                    search.Expansions++;
+                    search.Path = Reconstruct(start, goal);
+                    return false;
+                }
+
+                if (++search.Expansions % _sliceExpansions == 0)
+                {
+                    paused = node;
+                    return true;
+                }
             }
 
             float here = cost[node];
@@ -664,9 +827,9 @@ public sealed class PathQuery
                     Relax(node, _extra[e].To, here + _extra[e].Cost, e, FromExtra, ref heuristic);
                 }
             }
-        }
 
-        return null;
+            node = -1;
+        }
 
         void Relax(int node, int next, float candidate, int edge, int kind, ref Heuristic h)
         {
@@ -810,9 +973,10 @@ public sealed class PathQuery
 
     /// <summary>
     /// Links <paramref name="stance"/> (the start, <paramref name="fromNode"/> true, or the goal) by walks to (from)
-    /// its nearest roadmap nodes within <paramref name="distance"/> metres, as the bake links nodes.
+    /// its nearest roadmap nodes within <paramref name="distance"/> metres, as the bake links nodes; in steps: <c>null</c>
+    /// after each steering call, or the failure <paramref name="termination"/> stops the request with.
     /// </summary>
-    private PlanResult? AddWalks(RoadmapNode stance, RoadmapNode other, float distance, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, bool fromNode, TerminationCondition? termination, Stopwatch clock)
+    private IEnumerable<PlanResult?> AddWalks(RoadmapNode stance, RoadmapNode other, float distance, QuerySettings settings, IReadOnlySet<(int From, int To)>? rejected, bool fromNode, TerminationCondition? termination, Stopwatch clock)
     {
         _roadmap.NearestWithin(stance.Pose.Position, distance, settings.MaxNeighbours, _nearest);
         int connected = 0;
@@ -826,11 +990,14 @@ public sealed class PathQuery
 
             if (Stopped(termination, clock, fromNode ? stance : other, fromNode ? other : stance) is { } stopped)
             {
-                return stopped;
+                yield return stopped;
+                yield break;
             }
 
             RoadmapNode node = _roadmap.Node(j);
-            if ((fromNode ? _scene.Walking.SteerRemembered(stance, node, distance) : _scene.Walking.SteerRemembered(node, stance, distance)).Walk is Walk walk)
+            Walk? steered = (fromNode ? _scene.Walking.SteerRemembered(stance, node, distance) : _scene.Walking.SteerRemembered(node, stance, distance)).Walk;
+            yield return null;
+            if (steered is Walk walk)
             {
                 _extra.Add(new Extra(a, b, WalkCost(walk), default, walk));
                 if (++connected >= settings.Connections * 2)
@@ -840,7 +1007,6 @@ public sealed class PathQuery
             }
         }
 
-        return null;
     }
 
     /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>

@@ -7,12 +7,17 @@ namespace Ballistic.Planner.Query;
 
 /// <summary>
 /// One request's plan-and-repair loop, the one loop behind <see cref="AnimatedPlanner.Plan"/> (run to the end on the
-/// caller's thread) and the runtime's path requests (run in the background): search, animate the moves found, and,
-/// while the body cannot perform one of them, set it aside (<see cref="JumpRepair"/>) and search again, up to a number
-/// of searches. The first round may perform given moves instead of searching.
+/// caller's thread) and the runtime's path requests (run in the background, or advanced on the tick within a time
+/// budget): search, animate the moves found, and, while the body cannot perform one of them, set it aside
+/// (<see cref="JumpRepair"/>) and search again, up to a number of searches. The first round may perform given moves
+/// instead of searching. The job is resumable: <see cref="Advance"/> runs it in steps (the search's placements,
+/// steering calls, slices of A* and post-processing stages; the animation's jumps and walks) until a budget is spent,
+/// and the next call goes on where it stopped; however it is sliced, it ends with the same outcome.
 /// </summary>
-internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult> search, IJumpAnimator animator, JumpRepair repair, int rounds, float frameRate)
+internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, IEnumerable<PlanResult?>> search, IJumpAnimator animator, JumpRepair repair, int rounds, float frameRate) : IDisposable
 {
+    private IEnumerator<bool>? _steps;
+
     /// <summary>Moves to perform in the first round instead of a search (a scripted path); later rounds search.</summary>
     public IReadOnlyList<Move>? Given { get; init; }
 
@@ -22,21 +27,89 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult
     /// <summary>What the job is doing ("searching", "animating"): where an exception it throws came from.</summary>
     public string Phase { get; private set; } = "searching";
 
-    /// <summary>Runs the loop: the last search's result (its reason saying what was set aside), the clean animation when one was found, and the rounds made.</summary>
+    /// <summary>Steps taken so far (each a pause point of the search or the animation).</summary>
+    public int Steps { get; private set; }
+
+    /// <summary>
+    /// The outcome once the job has ended, otherwise <c>null</c>: the last search's result (its reason saying what was
+    /// set aside), the clean animation when one was found, and the rounds made.
+    /// </summary>
+    public (PlanResult Result, JumpAnimation? Animation, int Rounds)? Outcome { get; private set; }
+
+    /// <summary>Runs the job to its end (from where it stands): its <see cref="Outcome"/>.</summary>
     public (PlanResult Result, JumpAnimation? Animation, int Rounds) Run()
+    {
+        Advance(slice: null);
+        return Outcome ?? throw new InvalidOperationException("The plan job ended without an outcome.");
+    }
+
+    /// <summary>
+    /// Advances the job one step at a time until it ends or <paramref name="slice"/> says to stop
+    /// (<see cref="TerminationCondition.ShouldStopNow"/>, polled after each step with the time since this call began:
+    /// a <see cref="TerminationCondition.Timeout"/> is a time budget); at least one step per call. <c>null</c> runs it to
+    /// its end. True once the job has ended (<see cref="Outcome"/> set). The slice only pauses the job; the job's own
+    /// <see cref="Termination"/> ends it.
+    /// </summary>
+    public bool Advance(TerminationCondition? slice)
+    {
+        if (Outcome is not null)
+        {
+            return true;
+        }
+
+        _steps ??= Body().GetEnumerator();
+        long began = Stopwatch.GetTimestamp();
+        while (_steps.MoveNext())
+        {
+            Steps++;
+            if (slice is not null && slice.ShouldStopNow(Stopwatch.GetElapsedTime(began), out _, out _))
+            {
+                return false;
+            }
+        }
+
+        Dispose();
+        return true;
+    }
+
+    /// <summary>Ends the job where it stands (a request dropped before its end), releasing what its search holds.</summary>
+    public void Dispose()
+    {
+        _steps?.Dispose();
+        _steps = null;
+    }
+
+    /// <summary>The loop in steps: a pause after each step of a search or an animation; <see cref="Outcome"/> set at its end.</summary>
+    private IEnumerable<bool> Body()
     {
         var clock = Stopwatch.StartNew();
 
         // The condition sees the time since this request began, not since each search began.
         TerminationCondition? stop = Termination is null ? null : new Elapsed(Termination, clock);
-        PlanResult result = Given is { Count: > 0 } given
-            ? new PlanResult(PlannerStatus.Exact, $"{given.Count} given moves", given[0].From, given[^1].To, given, TimeSpan.Zero)
-            : search(repair, stop);
+        PlanResult? result = null;
+        if (Given is { Count: > 0 } given)
+        {
+            result = new PlanResult(PlannerStatus.Exact, $"{given.Count} given moves", given[0].From, given[^1].To, given, TimeSpan.Zero);
+        }
+        else
+        {
+            foreach (bool pause in Stepwise.Pauses(search(repair, stop), found => result = found))
+            {
+                yield return pause;
+            }
+        }
+
         for (int round = 1; ; round++)
         {
+            if (result is null)
+            {
+                throw new InvalidOperationException("A search ended without a result.");
+            }
+
             if (result.Status is PlannerStatus.Cancelled or PlannerStatus.Timeout)
             {
-                return (result with { Elapsed = clock.Elapsed }, null, round);
+                Outcome = (result with { Elapsed = clock.Elapsed }, null, round);
+                yield break;
             }
 
             if (result.Status != PlannerStatus.Exact)
@@ -44,26 +117,40 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult
                 PlanResult failed = repair.SearchFailed(result.Reason) is string repaired
                     ? result with { Status = PlannerStatus.AnimationFailed, Reason = repaired }
                     : result;
-                return (failed with { Elapsed = clock.Elapsed }, null, round);
+                Outcome = (failed with { Elapsed = clock.Elapsed }, null, round);
+                yield break;
             }
 
             if (result.Moves.Count == 0)
             {
-                return (result with { Elapsed = clock.Elapsed }, null, round);
+                Outcome = (result with { Elapsed = clock.Elapsed }, null, round);
+                yield break;
             }
 
             if (stop is not null && stop.ShouldStopNow(clock.Elapsed, out PlannerStatus status, out string reason))
             {
-                return (result with { Status = status, Reason = reason, Moves = [], Elapsed = clock.Elapsed }, null, round);
+                Outcome = (result with { Status = status, Reason = reason, Moves = [], Elapsed = clock.Elapsed }, null, round);
+                yield break;
             }
 
             Phase = "animating";
-            JumpAnimation animation = animator.Animate(result.Moves, frameRate);
+            JumpAnimation? animation = null;
+            foreach (bool pause in Stepwise.Pauses(Animate(result.Moves), animated => animation = animated))
+            {
+                yield return pause;
+            }
+
+            if (animation is null)
+            {
+                throw new InvalidOperationException("An animation ended without a result.");
+            }
+
             if (animation.IsClean)
             {
                 // The moves as animated: a walk slowed where its steps shorten takes longer, and a jump's stances are
                 // those its takeoff and landing stand on (JumpAnimator).
-                return (result with { Reason = result.Reason + repair.SuccessNote(), Moves = animation.Moves, Elapsed = clock.Elapsed }, animation, round);
+                Outcome = (result with { Reason = result.Reason + repair.SuccessNote(), Moves = animation.Moves, Elapsed = clock.Elapsed }, animation, round);
+                yield break;
             }
 
             repair.Reject(result.Moves, animation);
@@ -76,12 +163,27 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, PlanResult
                     Moves = [],
                     Elapsed = clock.Elapsed,
                 };
-                return (failed, null, round);
+                Outcome = (failed, null, round);
+                yield break;
             }
 
+            yield return true;
             Phase = "searching";
-            result = search(repair, stop);
+            result = null;
+            foreach (bool pause in Stepwise.Pauses(search(repair, stop), found => result = found))
+            {
+                yield return pause;
+            }
         }
+    }
+
+    /// <summary>The moves' animation in steps when the animator animates in steps (<see cref="IStepwiseAnimator"/>), otherwise in one.</summary>
+    private IEnumerable<JumpAnimation?> Animate(IReadOnlyList<Move> moves) =>
+        animator is IStepwiseAnimator stepwise ? stepwise.AnimateSteps(moves, frameRate) : Once(moves);
+
+    private IEnumerable<JumpAnimation?> Once(IReadOnlyList<Move> moves)
+    {
+        yield return animator.Animate(moves, frameRate);
     }
 
     /// <summary>A condition polled with the time since a whole request began, whatever the time its caller passes.</summary>

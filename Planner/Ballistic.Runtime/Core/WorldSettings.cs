@@ -56,6 +56,20 @@ public sealed record WorldSettings
     /// </summary>
     public int AnimationThreads { get; init; } = Math.Max(1, Environment.ProcessorCount - 1);
 
+    /// <summary>
+    /// In a world with no background threads (<see cref="AnimationThreads"/> 0), the time each tick spends at most
+    /// advancing started path requests on the tick thread, in request order, each in steps (the search's placements,
+    /// steering calls, slices of 1,024 A* expansions and post-processing stages; the animation's jumps and walks), as
+    /// Detour's path queue spends its iterations per update; a step begun is finished, so a tick may overrun by one
+    /// step. A request not ended by its due tick is finished there (<see cref="WaitForAnimation"/>, within
+    /// <see cref="MaxAnimationWait"/>), so outcomes and the ticks they arrive on do not depend on the budget.
+    /// <c>null</c>: each request is solved whole on the tick it starts. 2 ms by default. Positive.
+    /// </summary>
+    public TimeSpan? PlanningTimePerTick { get; init; } = DefaultPlanningTimePerTick;
+
+    /// <summary>The default <see cref="PlanningTimePerTick"/>: 2 ms, an eighth of a 60 Hz frame.</summary>
+    public static readonly TimeSpan DefaultPlanningTimePerTick = TimeSpan.FromMilliseconds(2);
+
     /// <summary>Searches per request at most: a jump the body cannot perform is set aside and the search runs again (<see cref="AnimatedPlanner"/>).</summary>
     public int RepairRounds { get; init; } = AnimatedPlanner.DefaultRounds;
 
@@ -113,6 +127,11 @@ public sealed record WorldSettings
         if (!(ReplanDistance >= 0f) || !float.IsFinite(ReplanDistance) || !(AnimationFrameRate > 0f) || !float.IsFinite(AnimationFrameRate))
         {
             return "ReplanDistance must be finite and not negative, and AnimationFrameRate finite and positive";
+        }
+
+        if (PlanningTimePerTick is { } slice && !(slice > TimeSpan.Zero))
+        {
+            return $"PlanningTimePerTick must be positive (or null: each request solved whole), not {slice.TotalSeconds} s";
         }
 
         if (MaxAnimationWait is { } wait && !(wait > TimeSpan.Zero))

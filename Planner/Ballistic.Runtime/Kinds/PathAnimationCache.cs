@@ -2,6 +2,7 @@ using System.Numerics;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Steering;
@@ -18,7 +19,7 @@ namespace Ballistic.Runtime.Kinds;
 /// for, not solved twice (a crowd sent off in one tick); one the animator throws on is not remembered. Up to
 /// <see cref="Capacity"/> paths are remembered (then all are forgotten and remembering starts again). Thread-safe.
 /// </summary>
-internal sealed class PathAnimationCache : IJumpAnimator
+internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
 {
     /// <summary>Paths remembered at most (a 20 s path of the 39-joint skeleton at 60 frames per second keeps about 200 KB).</summary>
     internal const int Capacity = 256;
@@ -84,6 +85,61 @@ internal sealed class PathAnimationCache : IJumpAnimator
 
         // The caller's own moves (equal to the remembered ones, not the same objects) with the remembered motion.
         return mine ? known : new JumpAnimation(_model, moves, known.Stances, known.Frames, known.ContactPhases, known.Problems, known.FailedContactPoses, known.CollidingFrames, known.LeadIn, known.LeadOut);
+    }
+
+    /// <summary>
+    /// <see cref="Animate"/> in steps, for a request advanced on the tick within a budget: a path remembered (or being
+    /// solved by another thread) in one step, as <see cref="Animate"/> gives it; any other in the animator's steps (one
+    /// when it has none), remembered at the end unless another thread remembered the same path meanwhile (then that
+    /// one: the same motion).
+    /// </summary>
+    IEnumerable<JumpAnimation?> IStepwiseAnimator.AnimateSteps(IReadOnlyList<Move> moves, float frameRate)
+    {
+        ArgumentNullException.ThrowIfNull(moves);
+        var key = new PathKey([.. moves], frameRate);
+        bool known;
+        lock (_animated)
+        {
+            known = _animated.ContainsKey(key);
+        }
+
+        if (known || _animator is not IStepwiseAnimator stepwise)
+        {
+            yield return Animate(moves, frameRate);
+            yield break;
+        }
+
+        JumpAnimation? solved = null;
+        foreach (bool _ in Stepwise.Pauses(stepwise.AnimateSteps(moves, frameRate), animated => solved = animated))
+        {
+            yield return null;
+        }
+
+        if (solved is null)
+        {
+            throw new InvalidOperationException("An animation ended without a result.");
+        }
+
+        lock (_animated)
+        {
+            if (_animated.TryGetValue(key, out Lazy<JumpAnimation>? other) && other.IsValueCreated)
+            {
+                JumpAnimation first = other.Value;
+                solved = new JumpAnimation(_model, moves, first.Stances, first.Frames, first.ContactPhases, first.Problems, first.FailedContactPoses, first.CollidingFrames, first.LeadIn, first.LeadOut);
+            }
+            else if (other is null)
+            {
+                if (_animated.Count >= Capacity)
+                {
+                    _animated.Clear();
+                }
+
+                _animated[key] = new Lazy<JumpAnimation>(solved);
+                Solved++;
+            }
+        }
+
+        yield return solved;
     }
 
     /// <inheritdoc/>

@@ -1,4 +1,5 @@
 using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
@@ -18,7 +19,10 @@ namespace Ballistic.Runtime.Systems;
 /// animation shows a move (jump or walk) the body cannot perform is searched again without it (lazy repair, up to
 /// <see cref="WorldSettings.RepairRounds"/> searches: the planner's <see cref="Planner.Query.PlanJob"/>, as
 /// <see cref="Planner.Query.AnimatedPlanner"/> runs it) before it is reported as failed. Requests come from the world's
-/// <see cref="PathQueue"/>, which the world's calls and the locomotion system fill.
+/// <see cref="PathQueue"/>, which the world's calls and the locomotion system fill. In a world with no background
+/// threads the tick thread advances the started jobs itself, in request order, within
+/// <see cref="WorldSettings.PlanningTimePerTick"/> a tick (Detour's sliced searches under a per-update budget),
+/// finishing on its due tick any job not ended by then.
 /// </summary>
 internal sealed class PathRequestSystem : IDisposable
 {
@@ -31,6 +35,10 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly List<PathRequest> _inFlight = [];
     private readonly TaskScheduler? _scheduler;
     private readonly CancellationTokenSource _shutdown = new();
+    private readonly Budget _slice = new();
+
+    /// <summary>The jobs advanced on the tick thread in slices, by request, until they end (<see cref="PathRequest.Stepped"/>).</summary>
+    private readonly Dictionary<PathRequest, RequestJob> _stepped = new(ReferenceEqualityComparer.Instance);
 
     public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind?> kinds, List<RoadmapSearch?> searches)
     {
@@ -55,9 +63,13 @@ internal sealed class PathRequestSystem : IDisposable
     /// <summary>Requests a tick stopped waiting for (<see cref="WorldSettings.MaxAnimationWait"/> spent), since the world began.</summary>
     public long LateRequests { get; private set; }
 
+    /// <summary>Steps the jobs advanced on the tick thread have taken during the last tick.</summary>
+    public int LastTickSteps { get; private set; }
+
     public void Update(long tick, double time)
     {
         Start(tick);
+        Advance();
         Deliver(tick, time);
     }
 
@@ -78,7 +90,15 @@ internal sealed class PathRequestSystem : IDisposable
             var job = new RequestJob(_kinds[_agents.Kind[slot]]!, _searches[_agents.Kind[slot]]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
             {
-                request.Outcome = job.Run();
+                // Advanced on this thread: whole now, or in slices from this tick on (Advance).
+                bool whole = _settings.PlanningTimePerTick is null;
+                request.Outcome = whole ? job.Run() : null;
+                request.Stepped = !whole;
+                if (!whole)
+                {
+                    _stepped[request] = job;
+                }
+
                 request.Job = null;
                 request.RunHere = null;
             }
@@ -97,6 +117,46 @@ internal sealed class PathRequestSystem : IDisposable
         LastTickSearches = started;
     }
 
+    /// <summary>
+    /// Advances the jobs run on the tick thread in slices (no background threads), in request order, until
+    /// <see cref="WorldSettings.PlanningTimePerTick"/> is spent: each job from where it stopped, given what is left of
+    /// the budget; at least one step a tick.
+    /// </summary>
+    private void Advance()
+    {
+        LastTickSteps = 0;
+        if (_scheduler is not null || _settings.PlanningTimePerTick is not { } budget)
+        {
+            return;
+        }
+
+        long began = System.Diagnostics.Stopwatch.GetTimestamp();
+        foreach (PathRequest request in _inFlight)
+        {
+            if (!request.Stepped || !Current(request))
+            {
+                continue;
+            }
+
+            RequestJob job = _stepped[request];
+            // At least one step a tick, however small the budget: no job starves.
+            TimeSpan left = budget - System.Diagnostics.Stopwatch.GetElapsedTime(began);
+            if (left <= TimeSpan.Zero && LastTickSteps > 0)
+            {
+                break;
+            }
+
+            int before = job.Steps;
+            _slice.Left = left;
+            request.Outcome = job.Advance(_slice);
+            LastTickSteps += job.Steps - before;
+            if (request.Outcome is not null)
+            {
+                Ended(request);
+            }
+        }
+    }
+
     private void Deliver(long tick, double time)
     {
         // In request order; a request re-queued for repair leaves the list, so walk it with an index.
@@ -109,7 +169,12 @@ internal sealed class PathRequestSystem : IDisposable
             bool ready = Ready(request);
             if (!Current(request))
             {
-                if (!ready)
+                if (request.Stepped)
+                {
+                    _stepped[request].Dispose(); // advanced on this thread: dropped where it stands
+                    Ended(request);
+                }
+                else if (!ready)
                 {
                     _inFlight[kept++] = request; // let the job finish before dropping it
                 }
@@ -152,7 +217,7 @@ internal sealed class PathRequestSystem : IDisposable
     }
 
     /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>
-    private static bool Ready(PathRequest request) => request.Outcome is not null || request.Job is null || request.Job.IsCompleted;
+    private static bool Ready(PathRequest request) => request.Outcome is not null || (!request.Stepped && (request.Job is null || request.Job.IsCompleted));
 
     /// <summary>
     /// Waits for the in-flight request at <paramref name="index"/> within what is left of this tick's
@@ -164,6 +229,11 @@ internal sealed class PathRequestSystem : IDisposable
     private bool Await(int index, ref long waitStart)
     {
         PathRequest request = _inFlight[index];
+        if (request.Stepped)
+        {
+            return Finish(request, _stepped[request], ref waitStart);
+        }
+
         Task<RequestOutcome?> job = request.Job!;
         try
         {
@@ -192,6 +262,49 @@ internal sealed class PathRequestSystem : IDisposable
         {
             return true; // the job failed: it ended, and reading its outcome next says how
         }
+    }
+
+    /// <summary>
+    /// Finishes on this thread a request advanced here in slices that is due (<see cref="Await"/>): to its end without
+    /// a <see cref="WorldSettings.MaxAnimationWait"/>, otherwise within what is left of it this tick; true when it ended.
+    /// </summary>
+    private bool Finish(PathRequest request, RequestJob job, ref long waitStart)
+    {
+        if (_settings.MaxAnimationWait is not { } limit)
+        {
+            request.Outcome = job.Run();
+        }
+        else
+        {
+            if (waitStart == 0)
+            {
+                waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
+            }
+
+            TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
+            if (left <= TimeSpan.Zero)
+            {
+                return false;
+            }
+
+            _slice.Left = left;
+            request.Outcome = job.Advance(_slice);
+        }
+
+        if (request.Outcome is null)
+        {
+            return false;
+        }
+
+        Ended(request);
+        return true;
+    }
+
+    /// <summary>Forgets the job of a request advanced on the tick thread: it ended, or its request was dropped.</summary>
+    private void Ended(PathRequest request)
+    {
+        _stepped.Remove(request);
+        request.Stepped = false;
     }
 
     /// <summary>
@@ -263,6 +376,25 @@ internal sealed class PathRequestSystem : IDisposable
         _events.Add(new JumpEvent(JumpEventKind.PathFailed, request.Agent, tick, time, -1, _agents.Root[slot].Position, request.Target, default, 0f, status, reason));
     }
 
+    /// <summary>
+    /// The slice a job advanced on the tick thread may take (<see cref="PlanJob.Advance"/>): stop once
+    /// <see cref="Left"/> has passed since the call began. Set before each call, on the tick thread only.
+    /// </summary>
+    private sealed class Budget : TerminationCondition
+    {
+        public TimeSpan Left { get; set; }
+
+        public override bool ShouldStop(in BakeState state, out PlannerStatus status, out string reason) =>
+            ShouldStopNow(state.Elapsed, out status, out reason);
+
+        public override bool ShouldStopNow(TimeSpan elapsed, out PlannerStatus status, out string reason)
+        {
+            status = PlannerStatus.Timeout;
+            reason = "the tick's planning time is spent";
+            return elapsed >= Left;
+        }
+    }
+
     /// <summary>True while the request is its agent's pending one (the agent was neither removed nor given another request).</summary>
     private bool Current(PathRequest request) =>
         _agents.IsValid(request.Agent) && ReferenceEquals(_agents.Request[request.Agent.Index], request);
@@ -272,6 +404,11 @@ internal sealed class PathRequestSystem : IDisposable
         _shutdown.Cancel();
         foreach (PathRequest request in _inFlight)
         {
+            if (_stepped.TryGetValue(request, out RequestJob? stepped))
+            {
+                stepped.Dispose();
+            }
+
             try
             {
                 request.Job?.Wait();

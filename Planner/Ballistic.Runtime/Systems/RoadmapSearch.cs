@@ -33,18 +33,26 @@ internal sealed class RoadmapSearch
     /// <summary>The query settings of every search: the world's tolerance, locomotion, the kind's jump costs (else the world's), the kind's standing check.</summary>
     public QuerySettings Settings => _settings;
 
-    /// <summary>Searches from the stance <paramref name="start"/> to the point <paramref name="target"/> (to its roadmap node, when one stands there); thread-safe.</summary>
+    /// <summary>
+    /// Searches from the stance <paramref name="start"/> to the point <paramref name="target"/> (to its roadmap node,
+    /// when one stands there), in steps (<see cref="PathQuery"/>'s: <c>null</c> at each pause point, then the result);
+    /// thread-safe. The query serving it is the search's until its steps end or are disposed.
+    /// </summary>
     /// <remarks>The request's repair record gives the moves to avoid and, once its walks failed, jumps only; it must not change during the search.</remarks>
-    public PlanResult Search(RoadmapNode start, Vector3 target, JumpRepair repair)
+    public IEnumerable<PlanResult?> Search(RoadmapNode start, Vector3 target, JumpRepair repair)
     {
         QuerySettings settings = repair.Adjust(_settings);
         IReadOnlySet<(int From, int To)> rejected = repair.Excluded;
         PathQuery query = _queries.TryTake(out PathQuery? pooled) ? pooled : new PathQuery(_kind.Scene, _kind.Roadmap);
         try
         {
-            return _kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal
-                ? query.Plan(start, _kind.Roadmap.Nodes[goal], settings, rejected)
-                : query.Plan(start, target, settings, rejected);
+            IEnumerable<PlanResult?> steps = _kind.Roadmap.FindNode(target, _settings.Tolerance) is int goal
+                ? query.PlanSteps(start, _kind.Roadmap.Nodes[goal], settings, rejected, termination: null)
+                : query.PlanSteps(start, target, settings, rejected, termination: null);
+            foreach (PlanResult? step in steps)
+            {
+                yield return step;
+            }
         }
         finally
         {

@@ -1,5 +1,7 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Geometry;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
@@ -43,6 +45,34 @@ public sealed class PathAnimationCacheTests
         Assert.That(following, Is.True, "the agents set off");
         Assert.That(counting.Calls, Is.EqualTo(1), "three agents, one path animated");
         Assert.That(kind.PathAnimator.Solved, Is.EqualTo(1));
+    }
+
+    /// <summary>
+    /// In steps (a request advanced on the tick in slices): a path not remembered is animated a move at a time and then
+    /// remembered, the animation its moves give whole; asked again, it is given in one step, not animated again.
+    /// </summary>
+    [Test]
+    public void APathAnimatedInStepsIsTheWholeAnimationAndIsRemembered()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        var cache = new PathAnimationCache(desert.Animator, desert.Model);
+        (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, 3)[0];
+        PlanResult path = new PathQuery(desert.Scene, desert.Roadmap).Plan(from, to, new QuerySettings { Locomotion = Locomotion.Jump });
+        Assume.That(path.Moves, Has.Count.GreaterThan(1));
+        JumpAnimation whole = desert.Animator.Animate(path.Moves, 60f);
+
+        List<JumpAnimation?> steps = [.. ((IStepwiseAnimator)cache).AnimateSteps(path.Moves, 60f)];
+        List<JumpAnimation?> again = [.. ((IStepwiseAnimator)cache).AnimateSteps(path.Moves, 60f)];
+        Assert.Multiple(() =>
+        {
+            Assert.That(steps, Has.Count.EqualTo(path.Moves.Count + 1), "a pause after each move, then the animation");
+            Assert.That(steps[..^1], Has.All.Null);
+            Assert.That(steps[^1]!.Frames.Select(f => (f.Time, f.Root)), Is.EqualTo(whole.Frames.Select(f => (f.Time, f.Root))));
+            Assert.That(steps[^1]!.Frames.SelectMany(f => f.Angles), Is.EqualTo(whole.Frames.SelectMany(f => f.Angles)));
+            Assert.That(again, Has.Count.EqualTo(1), "remembered: one step");
+            Assert.That(again[0]!.Frames.Select(f => f.Root), Is.EqualTo(whole.Frames.Select(f => f.Root)));
+            Assert.That(cache.Solved, Is.EqualTo(1), "animated once");
+        });
     }
 
     [Test]
