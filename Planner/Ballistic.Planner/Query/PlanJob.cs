@@ -18,6 +18,9 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, IEnumerabl
 {
     private IEnumerator<bool>? _steps;
 
+    /// <summary>True while the current <see cref="Advance"/> call runs the job to its end (no slice).</summary>
+    private bool _whole;
+
     /// <summary>Moves to perform in the first round instead of a search (a scripted path); later rounds search.</summary>
     public IReadOnlyList<Move>? Given { get; init; }
 
@@ -57,6 +60,7 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, IEnumerabl
             return true;
         }
 
+        _whole = slice is null;
         _steps ??= Body().GetEnumerator();
         long began = Stopwatch.GetTimestamp();
         while (_steps.MoveNext())
@@ -177,9 +181,13 @@ internal sealed class PlanJob(Func<JumpRepair, TerminationCondition?, IEnumerabl
         }
     }
 
-    /// <summary>The moves' animation in steps when the animator animates in steps (<see cref="IStepwiseAnimator"/>), otherwise in one.</summary>
+    /// <summary>
+    /// The moves' animation: in steps when the job is advanced in slices and the animator animates in steps
+    /// (<see cref="IStepwiseAnimator"/>), otherwise in one (a job run whole takes the animator's own call: a path cache
+    /// then lets requests for the same path wait for the one solving it instead of solving it again).
+    /// </summary>
     private IEnumerable<JumpAnimation?> Animate(IReadOnlyList<Move> moves) =>
-        animator is IStepwiseAnimator stepwise ? stepwise.AnimateSteps(moves, frameRate) : Once(moves);
+        !_whole && animator is IStepwiseAnimator stepwise ? stepwise.AnimateSteps(moves, frameRate) : Once(moves);
 
     private IEnumerable<JumpAnimation?> Once(IReadOnlyList<Move> moves)
     {

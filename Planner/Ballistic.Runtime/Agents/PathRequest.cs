@@ -41,12 +41,6 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// </summary>
     public Func<RequestOutcome?>? RunHere { get; set; }
 
-    /// <summary>
-    /// True while the request's job is advanced on the tick thread in slices (a world with no background threads,
-    /// <see cref="Core.WorldSettings.PlanningTimePerTick"/>) and has not ended.
-    /// </summary>
-    public bool Stepped { get; set; }
-
     /// <summary>The outcome of the search and animation run on the tick thread.</summary>
     public RequestOutcome? Outcome { get; set; }
 

@@ -44,7 +44,12 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
     {
         ArgumentNullException.ThrowIfNull(moves);
-        var key = new PathKey([.. moves], frameRate);
+        return Animate(new PathKey([.. moves], frameRate), moves, frameRate);
+    }
+
+    /// <summary><see cref="Animate(IReadOnlyList{Move}, float)"/> for the moves' key, made once by the caller.</summary>
+    private JumpAnimation Animate(PathKey key, IReadOnlyList<Move> moves, float frameRate)
+    {
         Lazy<JumpAnimation>? entry;
         bool mine = false;
         lock (_animated)
@@ -52,15 +57,9 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
             if (!_animated.TryGetValue(key, out entry))
             {
                 // Solved once: an agent asking while another agent's same path is being solved waits for it.
-                if (_animated.Count >= Capacity)
-                {
-                    _animated.Clear();
-                }
-
                 entry = new Lazy<JumpAnimation>(() => _animator.Animate(moves, frameRate), LazyThreadSafetyMode.ExecutionAndPublication);
-                _animated[key] = entry;
+                Remember(key, entry);
                 mine = true;
-                Solved++;
             }
         }
 
@@ -83,15 +82,15 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
             throw;
         }
 
-        // The caller's own moves (equal to the remembered ones, not the same objects) with the remembered motion.
-        return mine ? known : new JumpAnimation(_model, moves, known.Stances, known.Frames, known.ContactPhases, known.Problems, known.FailedContactPoses, known.CollidingFrames, known.LeadIn, known.LeadOut);
+        return mine ? known : Rebound(known, moves);
     }
 
     /// <summary>
-    /// <see cref="Animate"/> in steps, for a request advanced on the tick within a budget: a path remembered (or being
-    /// solved by another thread) in one step, as <see cref="Animate"/> gives it; any other in the animator's steps (one
-    /// when it has none), remembered at the end unless another thread remembered the same path meanwhile (then that
-    /// one: the same motion).
+    /// <see cref="Animate(IReadOnlyList{Move}, float)"/> in steps, for a request advanced on the tick within a budget:
+    /// a path remembered (or being solved by another thread) in one step, as <see cref="Animate(IReadOnlyList{Move}, float)"/>
+    /// gives it; any other in the animator's steps (one when it has none), remembered at the end unless the same path
+    /// was remembered meanwhile (then that one: the same motion). A path solved in steps is not waited for: another
+    /// request for it meanwhile solves it too.
     /// </summary>
     IEnumerable<JumpAnimation?> IStepwiseAnimator.AnimateSteps(IReadOnlyList<Move> moves, float frameRate)
     {
@@ -101,11 +100,15 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
         lock (_animated)
         {
             known = _animated.ContainsKey(key);
+            if (!known && _animator is IStepwiseAnimator)
+            {
+                Solved++;
+            }
         }
 
         if (known || _animator is not IStepwiseAnimator stepwise)
         {
-            yield return Animate(moves, frameRate);
+            yield return Animate(key, moves, frameRate);
             yield break;
         }
 
@@ -115,32 +118,39 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
             yield return null;
         }
 
-        if (solved is null)
-        {
-            throw new InvalidOperationException("An animation ended without a result.");
-        }
-
         lock (_animated)
         {
             if (_animated.TryGetValue(key, out Lazy<JumpAnimation>? other) && other.IsValueCreated)
             {
-                JumpAnimation first = other.Value;
-                solved = new JumpAnimation(_model, moves, first.Stances, first.Frames, first.ContactPhases, first.Problems, first.FailedContactPoses, first.CollidingFrames, first.LeadIn, first.LeadOut);
+                solved = Rebound(other.Value, moves);
             }
             else if (other is null)
             {
-                if (_animated.Count >= Capacity)
-                {
-                    _animated.Clear();
-                }
-
-                _animated[key] = new Lazy<JumpAnimation>(solved);
-                Solved++;
+                Remember(key, new Lazy<JumpAnimation>(solved!));
             }
         }
 
         yield return solved;
     }
+
+    /// <summary>Keeps <paramref name="entry"/> for <paramref name="key"/>, forgetting every path first when <see cref="Capacity"/> are kept; under the lock.</summary>
+    private void Remember(PathKey key, Lazy<JumpAnimation> entry)
+    {
+        if (_animated.Count >= Capacity)
+        {
+            _animated.Clear();
+        }
+
+        _animated[key] = entry;
+        if (!entry.IsValueCreated)
+        {
+            Solved++;
+        }
+    }
+
+    /// <summary>The caller's own moves (equal to the remembered ones, not the same objects) with the remembered motion.</summary>
+    private JumpAnimation Rebound(JumpAnimation known, IReadOnlyList<Move> moves) =>
+        new(_model, moves, known.Stances, known.Frames, known.ContactPhases, known.Problems, known.FailedContactPoses, known.CollidingFrames, known.LeadIn, known.LeadOut);
 
     /// <inheritdoc/>
     public bool CanStand(PoseEvaluation pose) => _animator.CanStand(pose);

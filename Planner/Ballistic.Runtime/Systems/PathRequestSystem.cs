@@ -37,7 +37,7 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly CancellationTokenSource _shutdown = new();
     private readonly Budget _slice = new();
 
-    /// <summary>The jobs advanced on the tick thread in slices, by request, until they end (<see cref="PathRequest.Stepped"/>).</summary>
+    /// <summary>The jobs advanced on the tick thread in slices (no background threads), by request, until they end.</summary>
     private readonly Dictionary<PathRequest, RequestJob> _stepped = new(ReferenceEqualityComparer.Instance);
 
     public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind?> kinds, List<RoadmapSearch?> searches)
@@ -93,7 +93,6 @@ internal sealed class PathRequestSystem : IDisposable
                 // Advanced on this thread: whole now, or in slices from this tick on (Advance).
                 bool whole = _settings.PlanningTimePerTick is null;
                 request.Outcome = whole ? job.Run() : null;
-                request.Stepped = !whole;
                 if (!whole)
                 {
                     _stepped[request] = job;
@@ -133,12 +132,11 @@ internal sealed class PathRequestSystem : IDisposable
         long began = System.Diagnostics.Stopwatch.GetTimestamp();
         foreach (PathRequest request in _inFlight)
         {
-            if (!request.Stepped || !Current(request))
+            if (!_stepped.TryGetValue(request, out RequestJob? job) || !Current(request))
             {
                 continue;
             }
 
-            RequestJob job = _stepped[request];
             // At least one step a tick, however small the budget: no job starves.
             TimeSpan left = budget - System.Diagnostics.Stopwatch.GetElapsedTime(began);
             if (left <= TimeSpan.Zero && LastTickSteps > 0)
@@ -169,10 +167,9 @@ internal sealed class PathRequestSystem : IDisposable
             bool ready = Ready(request);
             if (!Current(request))
             {
-                if (request.Stepped)
+                if (_stepped.Remove(request, out RequestJob? dropped))
                 {
-                    _stepped[request].Dispose(); // advanced on this thread: dropped where it stands
-                    Ended(request);
+                    dropped.Dispose(); // advanced on this thread: dropped where it stands
                 }
                 else if (!ready)
                 {
@@ -217,7 +214,7 @@ internal sealed class PathRequestSystem : IDisposable
     }
 
     /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>
-    private static bool Ready(PathRequest request) => request.Outcome is not null || (!request.Stepped && (request.Job is null || request.Job.IsCompleted));
+    private bool Ready(PathRequest request) => request.Outcome is not null || (!_stepped.ContainsKey(request) && (request.Job is null || request.Job.IsCompleted));
 
     /// <summary>
     /// Waits for the in-flight request at <paramref name="index"/> within what is left of this tick's
@@ -229,9 +226,9 @@ internal sealed class PathRequestSystem : IDisposable
     private bool Await(int index, ref long waitStart)
     {
         PathRequest request = _inFlight[index];
-        if (request.Stepped)
+        if (_stepped.TryGetValue(request, out RequestJob? stepped))
         {
-            return Finish(request, _stepped[request], ref waitStart);
+            return Finish(request, stepped, ref waitStart);
         }
 
         Task<RequestOutcome?> job = request.Job!;
@@ -250,12 +247,7 @@ internal sealed class PathRequestSystem : IDisposable
                 return true;
             }
 
-            if (waitStart == 0)
-            {
-                waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
-            }
-
-            TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
+            TimeSpan left = WaitLeft(limit, ref waitStart);
             return left > TimeSpan.Zero && job.Wait(left);
         }
         catch (AggregateException)
@@ -276,12 +268,7 @@ internal sealed class PathRequestSystem : IDisposable
         }
         else
         {
-            if (waitStart == 0)
-            {
-                waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
-            }
-
-            TimeSpan left = limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
+            TimeSpan left = WaitLeft(limit, ref waitStart);
             if (left <= TimeSpan.Zero)
             {
                 return false;
@@ -300,11 +287,18 @@ internal sealed class PathRequestSystem : IDisposable
         return true;
     }
 
-    /// <summary>Forgets the job of a request advanced on the tick thread: it ended, or its request was dropped.</summary>
-    private void Ended(PathRequest request)
+    /// <summary>Forgets the job of a request advanced on the tick thread once it ended.</summary>
+    private void Ended(PathRequest request) => _stepped.Remove(request);
+
+    /// <summary>What is left this tick of <see cref="WorldSettings.MaxAnimationWait"/> (<paramref name="limit"/>), counted from the tick's first wait (<paramref name="waitStart"/>, set by the first call).</summary>
+    private static TimeSpan WaitLeft(TimeSpan limit, ref long waitStart)
     {
-        _stepped.Remove(request);
-        request.Stepped = false;
+        if (waitStart == 0)
+        {
+            waitStart = System.Diagnostics.Stopwatch.GetTimestamp();
+        }
+
+        return limit - System.Diagnostics.Stopwatch.GetElapsedTime(waitStart);
     }
 
     /// <summary>

@@ -34,11 +34,7 @@ internal sealed class RequestJob(CharacterKind kind, RoadmapSearch search, PathR
     public RequestOutcome? TryRun() => Interlocked.Exchange(ref _claimed, 1) == 0 ? Advance(slice: null) : null;
 
     /// <summary>Runs the job here, to its end (a world with no background threads); its outcome.</summary>
-    public RequestOutcome Run()
-    {
-        _claimed = 1;
-        return Advance(slice: null)!;
-    }
+    public RequestOutcome Run() => Advance(slice: null)!;
 
     /// <summary>
     /// Advances the job on this thread until it ends or <paramref name="slice"/> says to stop (<see cref="PlanJob.Advance"/>;

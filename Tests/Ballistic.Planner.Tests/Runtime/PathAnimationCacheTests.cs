@@ -1,4 +1,5 @@
 using Ballistic.Planner.Animation;
+using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
@@ -45,6 +46,72 @@ public sealed class PathAnimationCacheTests
         Assert.That(following, Is.True, "the agents set off");
         Assert.That(counting.Calls, Is.EqualTo(1), "three agents, one path animated");
         Assert.That(kind.PathAnimator.Solved, Is.EqualTo(1));
+    }
+
+    /// <summary>A path animator that animates in steps too, counting the calls of each kind.</summary>
+    private sealed class CountingStepwise(JumpAnimator inner) : IJumpAnimator, IStepwiseAnimator
+    {
+        private int _whole;
+        private int _stepwise;
+
+        public int Whole => _whole;
+
+        public int InSteps => _stepwise;
+
+        public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
+        {
+            Interlocked.Increment(ref _whole);
+            return inner.Animate(moves, frameRate);
+        }
+
+        public IEnumerable<JumpAnimation?> AnimateSteps(IReadOnlyList<Move> moves, float frameRate)
+        {
+            Interlocked.Increment(ref _stepwise);
+            return ((IStepwiseAnimator)inner).AnimateSteps(moves, frameRate);
+        }
+
+        public bool CanStand(PoseEvaluation pose) => inner.CanStand(pose);
+    }
+
+    /// <summary>
+    /// Three agents sent the same way in one tick, their requests run whole on two background threads: the path is
+    /// animated once, the others wait for it (a request run whole takes the cache's shared solve, never the steps,
+    /// which nobody waits for); on the tick thread in slices, the same path is animated in steps.
+    /// </summary>
+    [Test]
+    public void RequestsRunWholeShareOneSolveAndOnlySlicedOnesAnimateInSteps()
+    {
+        CharacterKind desert = RuntimeWorlds.DesertSkeleton;
+        (RoadmapNode from, RoadmapNode to) = RuntimeWorlds.ConnectedPairs(desert.Roadmap, 1, 11)[0];
+        foreach (int threads in new[] { 2, 0 })
+        {
+            var counting = new CountingStepwise(desert.Animator);
+            var kind = new CharacterKind(desert.Scene, desert.Roadmap, desert.Animator, counting);
+            using var world = new JumpWorld(desert.Scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = threads });
+            KindHandle handle = world.AddKind(kind).Kind;
+            AgentHandle[] agents = [.. Enumerable.Range(0, 3).Select(_ => world.AddAgent(handle, RuntimeWorlds.Point(from)).Agent)];
+            foreach (AgentHandle agent in agents)
+            {
+                Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(to)).Ok, Is.True);
+            }
+
+            for (int tick = 0; tick < 30 && agents.Any(world.IsPathPending); tick++)
+            {
+                world.Step();
+            }
+
+            Assert.That(agents.Select(a => world.GetPath(a) is not null), Has.All.True, $"{threads} threads: every agent has its path");
+            if (threads > 0)
+            {
+                Assert.That((counting.Whole, counting.InSteps), Is.EqualTo((1, 0)), "run whole: one solve, shared");
+                Assert.That(kind.PathAnimator.Solved, Is.EqualTo(1));
+            }
+            else
+            {
+                Assert.That(counting.InSteps, Is.GreaterThanOrEqualTo(1), "in slices: animated in steps");
+                Assert.That(kind.PathAnimator.Solved, Is.EqualTo(counting.Whole + counting.InSteps), "each path given to the animator counted");
+            }
+        }
     }
 
     /// <summary>
