@@ -50,6 +50,12 @@ internal sealed class ContactGenerator
     /// <summary>How far (share of the standing leg) to the side of its place a fallback must stand a foot before the estimate is moved instead (<see cref="DrawBack"/>).</summary>
     private const float DrawBackSideways = 0.3f;
 
+    /// <summary>Rigs of more feet than this may leave a foot free in a stance where its contact would stand it far out of its place (<see cref="Spared"/>): a hexapod or a spider stands without it.</summary>
+    private const int ManyFeet = 4;
+
+    /// <summary>How far (share of the standing leg) to the side of its place a foot of a many-footed rig stands before it is left free where the stance can spare it (<see cref="Spared"/>).</summary>
+    private const float HangSideways = 0.3f;
+
     /// <summary>Most (metres) a drawn-back contact (<see cref="DrawBack"/>) lies above or below the estimate: on the same ground, not a lower stair tread.</summary>
     private const float DrawBackRise = 0.02f;
 
@@ -185,11 +191,12 @@ internal sealed class ContactGenerator
         rig.Solve(root, q, positions, rotations);
         var contacts = new List<LimbContact>();
         var nearby = new List<int>();
+        var references = new Vector3[Model.Limbs.Count];
         for (int l = 0; l < Model.Limbs.Count; l++)
         {
             RigLimb limb = Model.Limbs[l];
-            Vector3 reference = limb.EffectorPosition(positions, rotations);
-            if (TryContact(root, q, l, reference, estimated, crouch, onEstimates, nearby, out LimbContact contact))
+            references[l] = limb.EffectorPosition(positions, rotations);
+            if (TryContact(root, q, l, references[l], estimated, crouch, onEstimates, nearby, out LimbContact contact))
             {
                 contacts.Add(contact);
             }
@@ -199,7 +206,47 @@ internal sealed class ContactGenerator
             }
         }
 
-        return Finish(root, q, contacts, velocity);
+        ContactConfiguration made = Finish(root, q, contacts, velocity);
+        return made.Valid ? Spared(made, references, velocity) : made;
+    }
+
+    /// <summary>
+    /// A valid stance of a rig of many feet (more than <see cref="ManyFeet"/>) with the feet that stand
+    /// more than <see cref="HangSideways"/> of the standing leg sideways of their places (along the trunk's left, from
+    /// <paramref name="references"/>, where the contact pose holds each effector) left free, where the others still
+    /// number the required contacts and their cone still accepts <paramref name="velocity"/>: a spider landing by a
+    /// ledge, its hind feet's places over the drop, holds them on the brink under its body otherwise. Else
+    /// <paramref name="made"/> itself.
+    /// </summary>
+    private ContactConfiguration Spared(ContactConfiguration made, Vector3[] references, Vector3 velocity)
+    {
+        if (Model.Limbs.Count(l => l.Kind == LimbKind.Foot) <= ManyFeet)
+        {
+            return made;
+        }
+
+        Vector3 left = Vector3.Transform(Vector3.UnitX, made.Root.Rotation);
+        bool OutOfPlace(LimbContact c) =>
+            Model.Limbs[c.Limb].Kind == LimbKind.Foot && MathF.Abs(Vector3.Dot(c.Position - references[c.Limb], left)) > HangSideways * _standing;
+        if (!made.Contacts.Any(OutOfPlace))
+        {
+            return made;
+        }
+
+        List<LimbContact> kept = [.. made.Contacts.Where(c => !OutOfPlace(c))];
+        if (kept.Count < _scene.Character.RequiredContacts)
+        {
+            return made;
+        }
+
+        float[] q = (float[])made.Angles.Clone();
+        foreach (LimbContact c in made.Contacts.Where(OutOfPlace))
+        {
+            KeepFree(made.Root, q, c.Limb);
+        }
+
+        ContactConfiguration spared = Finish(made.Root, q, kept, velocity);
+        return spared.Valid ? spared : made;
     }
 
     private static ContactConfiguration Finish(in RootPose root, float[] q, List<LimbContact> contacts, Vector3 velocity)

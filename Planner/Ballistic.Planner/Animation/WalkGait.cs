@@ -220,6 +220,12 @@ internal sealed class WalkGait
     /// <summary>Lifts of a swinging foot above the higher of its two footholds, as shares of the step height, tried in order.</summary>
     private static readonly float[] Lifts = [0.35f, 0.6f, 1f, 1.5f, 2.2f];
 
+    /// <summary>
+    /// Farthest a foothold is first looked for sideways of where the contact pose holds the foot under the trunk, in
+    /// rest legs (<c>Run.InPlace</c>): farther, a foot stands under the body or splayed out, not under its hip.
+    /// </summary>
+    public const float OutOfPlace = 0.35f;
+
     /// <summary>Shares of a foothold's sideways offset from the walk's path tried, nominal first.</summary>
     private static readonly float[] Inward = [1f, 0.75f, 0.5f, 0.25f, 0f];
 
@@ -2475,12 +2481,12 @@ internal sealed class WalkGait
         /// <summary>
         /// The foothold of foot <paramref name="l"/> in half-cycle <paramref name="k"/>, held from fine step
         /// <paramref name="from"/> to <paramref name="to"/>: its centred stance offset at the trunk pose mid-half-cycle,
-        /// dropped on the ground, moved toward the path's centre line until the ground is there and the leg holds it;
+        /// dropped on the ground, moved toward the path's centre line until the ground is there and the leg holds it
+        /// (first only as far as keeps it within <see cref="OutOfPlace"/> of its place under the trunk);
         /// on a stair's tread, moved along the walk first until the whole sole lies on the tread (<see cref="OnTread"/>).
         /// </summary>
         private Holding Foothold(int l, int k, int from, int to)
         {
-            RigLimb limb = _model.Limbs[l];
             float time = TimeAtCost((CostAt(Time(from)) + CostAt(Time(to))) * 0.5f);
             float distance = _walk.DistanceAt(time);
             RootPose pose = _walk.PoseAt(time);
@@ -2511,6 +2517,37 @@ internal sealed class WalkGait
 
             // Re-stepped as the trunk turns in place on stairs, a foot may stand turned along a tread.
             bool fitAcross = _walk.SlowsForSteps && (time < _walk.StartTurn || time > _walk.StartTurn + _walk.WalkTime);
+
+            // A foothold is first looked for within OutOfPlace of where the contact pose holds the foot under the
+            // trunk, over the whole time it is held (a spider's foot whose place is over a ledge's drop was set down on
+            // the brink under its body, 0.45 L inside its place); where there is none, the nearest one it can hold.
+            foreach (bool inPlace in (bool[])[true, false])
+            {
+                if (Foothold(l, from, to, steps, ground, along, lateral, heading, slope, walkable, fitAcross, inPlace, ref grounded) is Holding found)
+                {
+                    return found;
+                }
+            }
+
+            if (grounded is (Vector3 point, Vector3 normal))
+            {
+                Fail(l, "reaches no foothold it can stand on", mid);
+                return new Holding(from, to, point, normal, Settle: false);
+            }
+
+            Fail(l, "finds no ground to step on", mid);
+            return new Holding(from, to, new Vector3(nominal.X, ground.Y, nominal.Z), Vector3.UnitY, Settle: false);
+        }
+
+        /// <summary>
+        /// The first of <see cref="FootholdTries"/> foot <paramref name="l"/> can hold from fine step
+        /// <paramref name="from"/> to <paramref name="to"/> (see <see cref="Foothold(int, int, int, int)"/>); with
+        /// <paramref name="inPlace"/>, only those that stay within <see cref="OutOfPlace"/> of where the contact pose
+        /// holds the foot under the trunk at every check. <paramref name="grounded"/> is set to the first ground found.
+        /// </summary>
+        private Holding? Foothold(int l, int from, int to, int[] steps, Vector3 ground, Vector3 along, Vector3 lateral, Vector3 heading, float slope, GroundSlopeTest walkable, bool fitAcross, bool inPlace, ref (Vector3 Point, Vector3 Normal)? grounded)
+        {
+            RigLimb limb = _model.Limbs[l];
             foreach ((float share, float shift) in FootholdTries)
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
@@ -2527,25 +2564,38 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
-                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && (!inPlace || InPlace(l, onTread, steps)) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
                 {
                     return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
                 }
 
-                if (CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
+                if ((!inPlace || InPlace(l, hit.Point, steps)) && CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
                 {
                     return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
                 }
             }
 
-            if (grounded is (Vector3 point, Vector3 normal))
+            return null;
+        }
+
+        /// <summary>
+        /// True when a foothold of foot <paramref name="l"/> at <paramref name="point"/> (world metres) lies within
+        /// <see cref="OutOfPlace"/> rest legs, along the trunk's left, of where the contact pose holds the foot, at each
+        /// of the fine steps given (the trunk moves and turns over it).
+        /// </summary>
+        private bool InPlace(int l, Vector3 point, int[] steps)
+        {
+            foreach (int i in steps)
             {
-                Fail(l, "reaches no foothold it can stand on", mid);
-                return new Holding(from, to, point, normal, Settle: false);
+                RootPose root = _roots[i];
+                float side = Vector3.Dot(point - root.Position, Vector3.Transform(Vector3.UnitX, root.Rotation));
+                if (MathF.Abs(side - _gait._poseFeet[l].X) > OutOfPlace * _gait._restLeg)
+                {
+                    return false;
+                }
             }
 
-            Fail(l, "finds no ground to step on", mid);
-            return new Holding(from, to, new Vector3(nominal.X, ground.Y, nominal.Z), Vector3.UnitY, Settle: false);
+            return true;
         }
 
         /// <summary>
