@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Collision;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
@@ -49,6 +50,12 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
     /// <summary>Farthest (metres) a limb may stand from the contact the plan reports for it when a push is checked (<see cref="CanPush"/>).</summary>
     private const float ReportedFoothold = 0.25f;
 
+    /// <summary>A jump's contact held farther than this (metres) from the planner's estimate is reported where it is held (<see cref="HeldStances"/>).</summary>
+    private const float MovedFoothold = 0.1f;
+
+    /// <summary>How close (metres) the uses of one stance hold a moved contact for it to be reported there (<see cref="HeldStances"/>), and how far off its surface the point is looked for.</summary>
+    private const float HeldTogether = 0.01f;
+
     private readonly ContactGenerator _contacts;
     private readonly LimbIk _holdIk;
     private readonly BodyCollision _collision;
@@ -60,6 +67,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
 
     /// <summary>How high (metres) a foot leaving its takeoff contact is lifted straight off it (<see cref="LiftOff"/>): the character's step height.</summary>
     private readonly float _liftHeight;
+
+    private readonly PlanningScene _scene;
 
     /// <summary>Creates an animator for a character model on a planning scene of its reduced model.</summary>
     public JumpAnimator(PlanningScene scene, CharacterModel model)
@@ -75,6 +84,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         _free = _gait.FreeBones;
         _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
         _liftHeight = scene.Character.StepReach;
+        _scene = scene;
         Model = model;
     }
 
@@ -608,7 +618,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
     /// <summary>
     /// The moves with each jump's takeoff and landing stance as the animation stands on it: a contact the planner
     /// estimated whose limb the generated contact pose cannot hold (a spider's hind foot aimed at a ledge's brink
-    /// under its body, where no flat foot reaches) is left out of the stance the plan reports, with the cone of the
+    /// under its body, where no flat foot reaches) is left out of the stance the plan reports, and one held farther
+    /// than <see cref="MovedFoothold"/> from its estimate is reported where it is held, with the cone of the
     /// contacts left, when those still number the required contacts and their cone still contains the jump's
     /// velocity (every use of the stance: a landing that pushes off again); otherwise the stance stays as planned.
     /// Walks that end or start on a changed stance get the same record of it.
@@ -634,8 +645,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 continue;
             }
 
-            Contact[] kept = [.. node.Contacts.Where(c => list.TrueForAll(u => u.Config.ContactOf(c.Limb) is not null))];
-            if (kept.Length == node.Contacts.Count || kept.Length < _requiredContacts)
+            Contact[] kept = [.. node.Contacts.Where(c => list.TrueForAll(u => u.Config.ContactOf(c.Limb) is not null)).Select(c => Moved(c, list))];
+            if ((kept.Length == node.Contacts.Count && kept.SequenceEqual(node.Contacts)) || kept.Length < _requiredContacts)
             {
                 continue;
             }
@@ -658,6 +669,23 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             Walk walk => walk.Between(Held(walk.From), Held(walk.To)),
             _ => move,
         })];
+
+        // A contact every use holds at one point (within HeldTogether) farther than MovedFoothold from the estimate
+        // (a panda's forefoot estimated on a tread its leg cannot fold up to, set down on the tread below) is reported
+        // where it is held, on that point's surface.
+        Contact Moved(Contact c, List<(RoadmapNode Node, ContactConfiguration Config, Vector3 Velocity)> list)
+        {
+            LimbContact first = list[0].Config.ContactOf(c.Limb)!.Value;
+            if (Vector3.Distance(first.Position, c.Position) <= MovedFoothold
+                || !list.TrueForAll(u => Vector3.Distance(u.Config.ContactOf(c.Limb)!.Value.Position, first.Position) <= HeldTogether)
+                || !_scene.Bvh.Raycast(first.Position + (first.Normal * HeldTogether), -first.Normal, 2f * HeldTogether, out RayHit hit)
+                || _scene.Surfaces.SurfaceOf(hit.Triangle) is not (>= 0 and int surface))
+            {
+                return c;
+            }
+
+            return new Contact(c.Limb, first.Position, first.Normal, first.Mu, surface);
+        }
 
         void Use(RoadmapNode node, ContactConfiguration config, Vector3 velocity)
         {

@@ -79,4 +79,53 @@ public sealed class MidStrideQuadrupedTests
             }
         });
     }
+
+    /// <summary>
+    /// Up the stairs (17 cm risers, above its 13 cm step) the panda hops from the floor onto the flight's lower treads.
+    /// The planner estimated its right forefoot on a tread higher than its leg folds to, and the landing holds it on the
+    /// tread below; the plan now reports each contact of a jump's takeoff and landing where the animation holds it
+    /// (every reported contact within 2 cm of the contact phase that holds its limb then), the cone of the contacts
+    /// reported still containing the jump's velocity. Before, the plan reported the right forefoot 0.25 m from where
+    /// the panda stood it.
+    /// </summary>
+    [Test]
+    public void UpTheStairsThePlanReportsTheTreadsThePandaLandsOn()
+    {
+        string folder = RigFolders.For("panda-stairs");
+        try
+        {
+            (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("stairs", "panda", folder);
+            (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[1].From, requests[1].To);
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(report.FullyRight, Is.True, report.ToString());
+            Move[] moves = [.. plan.Result.Moves];
+            Assert.That(moves.OfType<Jump>(), Is.Not.Empty, "it hops onto the flight");
+            Planner.Animation.JumpAnimation animation = plan.Animation!;
+            Assert.Multiple(() =>
+            {
+                for (int m = 0; m < moves.Length; m++)
+                {
+                    if (moves[m] is not Jump jump)
+                    {
+                        continue;
+                    }
+
+                    foreach ((RoadmapNode stance, float at, Vector3 velocity) in new[] { (jump.Takeoff, animation.MoveStart(m), jump.Arc.TakeoffVelocity), (jump.Landing, animation.MoveEnd(m), -jump.Arc.LandingVelocity) })
+                    {
+                        Assert.That(stance.Cone.Contains(velocity, 1e-3f), Is.True, $"move {m}: the reported contacts' cone");
+                        foreach (Planner.Contacts.Contact c in stance.Contacts)
+                        {
+                            float nearest = animation.ContactPhases.Where(p => p.Limb == c.Limb && p.From <= at + 0.05f && p.To >= at - 0.05f)
+                                .Select(p => Vector3.Distance(p.Position, c.Position)).DefaultIfEmpty(float.PositiveInfinity).Min();
+                            Assert.That(nearest, Is.LessThanOrEqualTo(0.02f), $"move {m}: {setup.Model.Limbs[c.Limb].Name}'s reported contact, metres from where it is held");
+                        }
+                    }
+                }
+            });
+        }
+        finally
+        {
+            RigFolders.Remove(folder);
+        }
+    }
 }
