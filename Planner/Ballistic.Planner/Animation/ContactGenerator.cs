@@ -50,6 +50,12 @@ internal sealed class ContactGenerator
     /// <summary>How far (share of the standing leg) to the side of its place a fallback must stand a foot before the estimate is moved instead (<see cref="DrawBack"/>).</summary>
     private const float DrawBackSideways = 0.3f;
 
+    /// <summary>How far (share of the standing leg) sideways of its place a free foot is first posed (<see cref="KeepFree"/>).</summary>
+    private const float FreeSideways = 0.3f;
+
+    /// <summary>Most database samples tried as a free foot's pose within <see cref="FreeSideways"/> of its place before any other (<see cref="KeepFree"/>).</summary>
+    private const int InPlaceFreeTries = 64;
+
     /// <summary>Rigs of more feet than this may leave a foot free in a stance where its contact would stand it far out of its place (<see cref="Spared"/>): a hexapod or a spider stands without it.</summary>
     private const int ManyFeet = 4;
 
@@ -274,36 +280,72 @@ internal sealed class ContactGenerator
         return new ContactConfiguration(root, q, contacts, cone, accepts, accepts ? null : "the generated contacts' cone does not contain the jump's velocity");
     }
 
-    /// <summary>Puts limb <paramref name="l"/> in a free pose that does not pass through the level: the contact pose, the flexion pose, or a database sample.</summary>
+    /// <summary>
+    /// Puts limb <paramref name="l"/> in a free pose that does not pass through the level: the contact pose, the
+    /// flexion pose, the extending pose or a database sample (nearest the contact pose first). For a foot, first only
+    /// those that keep it within <see cref="FreeSideways"/> of the standing leg sideways (along the trunk's left) of
+    /// where the contact pose holds it: a panda's forefoot left free on a flight, its place in the riser ahead, was
+    /// splayed 0.45 L aside in the flexion pose.
+    /// </summary>
     public void KeepFree(in RootPose root, float[] q, int l)
     {
         RigLimb limb = Model.Limbs[l];
         Rig rig = Model.Rig;
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
-        foreach (float[] pose in new[] { Model.ContactPose, Model.FlexionPose, Model.ExtendingPose })
+        PoseChain(q, limb, Model.ContactPose);
+        rig.Solve(root, q, positions, rotations);
+        if (!_collision.LimbCollides(limb, positions, rotations, null))
         {
-            PoseChain(q, limb, pose);
-
-            rig.Solve(root, q, positions, rotations);
-            if (!_collision.LimbCollides(limb, positions, rotations, null))
-            {
-                return;
-            }
+            return;
         }
 
-        LimbSampleDatabase database = _databases[l];
-        for (int s = 0; s < database.Count; s++)
+        Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
+        Vector3 place = limb.EffectorPosition(positions, rotations);
+        float placeSide = Vector3.Dot(place - root.Position, left);
+        float most = FreeSideways * _standing;
+        RootPose at = root;
+        if ((limb.Kind == LimbKind.Foot && float.IsFinite(most) && Free(inPlace: true)) || Free(inPlace: false))
         {
-            database.Apply(s, q);
-            rig.Solve(root, q, positions, rotations);
-            if (!_collision.LimbCollides(limb, positions, rotations, null))
-            {
-                return;
-            }
+            return;
         }
 
         PoseChain(q, limb, Model.ContactPose);
+
+        // The first free pose (with inPlace, within most of the place sideways) clear of the level, set in q.
+        bool Free(bool inPlace)
+        {
+            foreach (float[] pose in new[] { Model.FlexionPose, Model.ExtendingPose })
+            {
+                PoseChain(q, limb, pose);
+                rig.Solve(at, q, positions, rotations);
+                if ((!inPlace || MathF.Abs(Vector3.Dot(limb.EffectorPosition(positions, rotations) - place, left)) <= most)
+                    && !_collision.LimbCollides(limb, positions, rotations, null))
+                {
+                    return true;
+                }
+            }
+
+            LimbSampleDatabase database = _databases[l];
+            int tried = 0;
+            for (int s = 0; s < database.Count && (!inPlace || tried < InPlaceFreeTries); s++)
+            {
+                if (inPlace && MathF.Abs(database.PointOf(s).X - placeSide) > most)
+                {
+                    continue;
+                }
+
+                tried++;
+                database.Apply(s, q);
+                rig.Solve(at, q, positions, rotations);
+                if (!_collision.LimbCollides(limb, positions, rotations, null))
+                {
+                    return true;
+                }
+            }
+
+            return false;
+        }
     }
 
     /// <summary>Sets <paramref name="limb"/>'s angles in <paramref name="q"/> to those of <paramref name="pose"/>.</summary>

@@ -85,11 +85,13 @@ public sealed class MidStrideQuadrupedTests
     /// The planner estimated its right forefoot on a tread higher than its leg folds to, and the landing holds it on the
     /// tread below; the plan now reports each contact of a jump's takeoff and landing where the animation holds it
     /// (every reported contact within 2 cm of the contact phase that holds its limb then), the cone of the contacts
-    /// reported still containing the jump's velocity. Before, the plan reported the right forefoot 0.25 m from where
-    /// the panda stood it.
+    /// reported still containing the jump's velocity; and the plan passes every criterion of the animator's eye. Before,
+    /// the plan reported the right forefoot 0.25 m from where the panda stood it, and the left forefoot, free on
+    /// landing (its place in the riser ahead), was splayed 0.45 L sideways of its place in the flexion pose; a free
+    /// foot is now first posed within 0.3 L of its place (<c>ContactGenerator.KeepFree</c>).
     /// </summary>
     [Test]
-    public void UpTheStairsThePlanReportsTheTreadsThePandaLandsOn()
+    public void UpTheStairsThePandaLandsOnTheTreadsThePlanReportsWithItsFeetInPlace()
     {
         string folder = RigFolders.For("panda-stairs");
         try
@@ -98,6 +100,7 @@ public sealed class MidStrideQuadrupedTests
             (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[1].From, requests[1].To);
             Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
             Assert.That(report.FullyRight, Is.True, report.ToString());
+            SweepTests.AssertEveryCriterion(report.Look!, "the panda up the stairs", _ => false, "none");
             Move[] moves = [.. plan.Result.Moves];
             Assert.That(moves.OfType<Jump>(), Is.Not.Empty, "it hops onto the flight");
             Planner.Animation.JumpAnimation animation = plan.Animation!;
