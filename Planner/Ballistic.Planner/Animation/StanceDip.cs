@@ -56,7 +56,20 @@ internal sealed class StanceDip
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, new Quaternion[model.Rig.Joints.Count]);
         _pivot = positions[0];
         _restLeg = RestLegLength(model);
+        var rotations = new Quaternion[model.Rig.Joints.Count];
+        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        _placeSide = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations).X)];
     }
+
+    /// <summary>Per limb: how far (metres) along the trunk's left the contact pose holds its effector from the root: its place.</summary>
+    private readonly float[] _placeSide;
+
+    /// <summary>
+    /// Farthest (share of the standing leg) a free foot folding toward the flexion pose as the body sinks may stand
+    /// sideways of its place (<see cref="_placeSide"/>); farther, it keeps its pose (a spider's flexion pose draws its
+    /// feet 0.4 L in under its body).
+    /// </summary>
+    private const float FoldSideways = 0.3f;
 
     /// <summary>
     /// The standing leg (metres): a foot's root joint's greatest height above its contact point with every angle at
@@ -211,7 +224,8 @@ internal sealed class StanceDip
                     continue;
                 }
 
-                // Half-way to the flexion pose at the deepest; else as it was; else tucked up fully.
+                // Half-way to the flexion pose at the deepest (a foot no farther than FoldSideways from its place);
+                // else as it was; else tucked up fully.
                 RigLimb limb = _model.Limbs[l];
                 bool clear = false;
                 foreach (float share in (float[])[0.5f * fold, -1f, 1f])
@@ -223,6 +237,12 @@ internal sealed class StanceDip
                     }
 
                     rig.Solve(root, folded, positions, rotations);
+                    if (share > 0f && share < 1f && limb.Kind == LimbKind.Foot && _restLeg > 0f
+                        && MathF.Abs(Vector3.Dot(limb.EffectorPosition(positions, rotations) - root.Position, Vector3.Transform(Vector3.UnitX, root.Rotation)) - _placeSide[l]) > FoldSideways * _restLeg)
+                    {
+                        continue;
+                    }
+
                     if (!_collision.LimbCollides(limb, positions, rotations, null))
                     {
                         Array.Copy(folded, next, next.Length);

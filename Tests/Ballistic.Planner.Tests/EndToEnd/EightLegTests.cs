@@ -52,14 +52,19 @@ public sealed class EightLegTests
     /// pose, so they are retracted quickly (in the first quarter of the rise) and put down late. Before, every such
     /// jump was set aside ("l2 passes through the level in flight (0.083 s after takeoff) whatever pose it takes"):
     /// from (0.3, −0.3) the plan leapt 44° off its way after setting aside 2 jumps; from (−0.5, 0) it took 5 jumps
-    /// after setting aside 5 (now 4, none).
+    /// after setting aside 5 (now 4, none). Its feet stay under its hips: landing on the platform facing its brink,
+    /// its front legs free over the drop, and beside the face, its front legs free where their places are in the face,
+    /// they folded halfway to the flexion pose as the body absorbed, which draws a spider's feet in under it
+    /// (0.43–0.51 L sideways of their places); a free foot now folds only as far as keeps it within 0.3 L of its place
+    /// (<c>StanceDip</c>), and is first posed within 0.3 L (<c>ContactGenerator.KeepFree</c>).
     /// </summary>
     [TestCase(0.3f, -0.3f, 1.6f, 0.4f)]
     [TestCase(-0.5f, 0f, 1.8f, 0f)]
     public void ASpiderLeapsUpAPlatformsFaceWithItsLegsLiftedClear(float x0, float z0, float x1, float z1)
     {
-        (AnimatedPlan plan, _) = Plan("platform", Platform(), new(x0, 0f, z0), new(x1, 0.6f, z1), Locomotion.Jump);
+        (AnimatedPlan plan, AnimatorEye.Look look) = Plan("platform", Platform(), new(x0, 0f, z0), new(x1, 0.6f, z1), Locomotion.Jump);
         Assert.That(plan.Rejected, Is.Empty, () => "no jump set aside: " + string.Join("; ", plan.Rejected.Select(r => r.Reason)));
+        Assert.That(look.UnderHips.Passes, Is.True, look.UnderHips.ToString());
         Jump up = plan.Result.Moves.OfType<Jump>().First(j => j.Landing.ContactCentre.Y > 0.5f);
         Assert.That(up.Takeoff.ContactCentre.Y, Is.LessThan(0.1f), "the jump up leaves from the floor");
         var way = Vector2.Normalize(new Vector2(up.Arc.TakeoffVelocity.X, up.Arc.TakeoffVelocity.Z));
