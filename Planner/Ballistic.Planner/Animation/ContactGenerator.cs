@@ -96,13 +96,21 @@ internal sealed class ContactGenerator
         float standing = StanceDip.RestLegLength(model);
         _standing = standing > 0f ? standing : float.PositiveInfinity; // no feet: the reach alone bounds the sideways shift
         _collision = new BodyCollision(scene.Bvh, model, scene.Level.Triangles);
+        Places = new FootPlaces(model);
+        _manyFeet = model.Limbs.Count(l => l.Kind == LimbKind.Foot) > ManyFeet;
     }
+
+    /// <summary>Whether the rig has more than <see cref="ManyFeet"/> feet (<see cref="Spared"/>).</summary>
+    private readonly bool _manyFeet;
 
     /// <summary>The whole character.</summary>
     public CharacterModel Model { get; }
 
     /// <summary>The IK used for projections.</summary>
     public LimbIk Ik { get; }
+
+    /// <summary>Where the contact pose holds each limb's effector across the trunk: its place.</summary>
+    public FootPlaces Places { get; }
 
     /// <summary>Bone collision checks.</summary>
     public BodyCollision Collision => _collision;
@@ -197,12 +205,11 @@ internal sealed class ContactGenerator
         rig.Solve(root, q, positions, rotations);
         var contacts = new List<LimbContact>();
         var nearby = new List<int>();
-        var references = new Vector3[Model.Limbs.Count];
         for (int l = 0; l < Model.Limbs.Count; l++)
         {
             RigLimb limb = Model.Limbs[l];
-            references[l] = limb.EffectorPosition(positions, rotations);
-            if (TryContact(root, q, l, references[l], estimated, crouch, onEstimates, nearby, out LimbContact contact))
+            Vector3 reference = limb.EffectorPosition(positions, rotations);
+            if (TryContact(root, q, l, reference, estimated, crouch, onEstimates, nearby, out LimbContact contact))
             {
                 contacts.Add(contact);
             }
@@ -213,27 +220,26 @@ internal sealed class ContactGenerator
         }
 
         ContactConfiguration made = Finish(root, q, contacts, velocity);
-        return made.Valid ? Spared(made, references, velocity) : made;
+        return made.Valid ? Spared(made, velocity) : made;
     }
 
     /// <summary>
     /// A valid stance of a rig of many feet (more than <see cref="ManyFeet"/>) with the feet that stand
-    /// more than <see cref="HangSideways"/> of the standing leg sideways of their places (along the trunk's left, from
-    /// <paramref name="references"/>, where the contact pose holds each effector) left free, where the others still
+    /// more than <see cref="HangSideways"/> of the standing leg sideways of their places (<see cref="Places"/>) left
+    /// free, where the others still
     /// number the required contacts and their cone still accepts <paramref name="velocity"/>: a spider landing by a
     /// ledge, its hind feet's places over the drop, holds them on the brink under its body otherwise. Else
     /// <paramref name="made"/> itself.
     /// </summary>
-    private ContactConfiguration Spared(ContactConfiguration made, Vector3[] references, Vector3 velocity)
+    private ContactConfiguration Spared(ContactConfiguration made, Vector3 velocity)
     {
-        if (Model.Limbs.Count(l => l.Kind == LimbKind.Foot) <= ManyFeet)
+        if (!_manyFeet)
         {
             return made;
         }
 
-        Vector3 left = Vector3.Transform(Vector3.UnitX, made.Root.Rotation);
         bool OutOfPlace(LimbContact c) =>
-            Model.Limbs[c.Limb].Kind == LimbKind.Foot && MathF.Abs(Vector3.Dot(c.Position - references[c.Limb], left)) > HangSideways * _standing;
+            Model.Limbs[c.Limb].Kind == LimbKind.Foot && Places.Off(c.Limb, made.Root, c.Position) > HangSideways * _standing;
         if (!made.Contacts.Any(OutOfPlace))
         {
             return made;
@@ -300,12 +306,12 @@ internal sealed class ContactGenerator
             return;
         }
 
-        Vector3 left = Vector3.Transform(Vector3.UnitX, root.Rotation);
-        Vector3 place = limb.EffectorPosition(positions, rotations);
-        float placeSide = Vector3.Dot(place - root.Position, left);
-        float most = FreeSideways * _standing;
+        // A foot first takes only the poses within most of its place sideways; the second pass skips those (tried:
+        // they pass through the level) among the first scanned samples.
+        float most = limb.Kind == LimbKind.Foot ? FreeSideways * _standing : float.PositiveInfinity;
         RootPose at = root;
-        if ((limb.Kind == LimbKind.Foot && float.IsFinite(most) && Free(inPlace: true)) || Free(inPlace: false))
+        int scanned = 0;
+        if ((float.IsFinite(most) && Free(inPlace: true)) || Free(inPlace: false))
         {
             return;
         }
@@ -319,10 +325,13 @@ internal sealed class ContactGenerator
             {
                 PoseChain(q, limb, pose);
                 rig.Solve(at, q, positions, rotations);
-                if ((!inPlace || MathF.Abs(Vector3.Dot(limb.EffectorPosition(positions, rotations) - place, left)) <= most)
-                    && !_collision.LimbCollides(limb, positions, rotations, null))
+                bool near = Places.Off(l, at, limb.EffectorPosition(positions, rotations)) <= most;
+                if (near == inPlace || (!inPlace && !float.IsFinite(most)))
                 {
-                    return true;
+                    if (!_collision.LimbCollides(limb, positions, rotations, null))
+                    {
+                        return true;
+                    }
                 }
             }
 
@@ -330,12 +339,14 @@ internal sealed class ContactGenerator
             int tried = 0;
             for (int s = 0; s < database.Count && (!inPlace || tried < InPlaceFreeTries); s++)
             {
-                if (inPlace && MathF.Abs(database.PointOf(s).X - placeSide) > most)
+                bool near = MathF.Abs(database.PointOf(s).X - Places.Side(l)) <= most;
+                if (inPlace ? !near : (near && s < scanned && float.IsFinite(most)))
                 {
                     continue;
                 }
 
                 tried++;
+                scanned = inPlace ? s + 1 : scanned;
                 database.Apply(s, q);
                 rig.Solve(at, q, positions, rotations);
                 if (!_collision.LimbCollides(limb, positions, rotations, null))

@@ -56,17 +56,15 @@ internal sealed class StanceDip
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, new Quaternion[model.Rig.Joints.Count]);
         _pivot = positions[0];
         _restLeg = RestLegLength(model);
-        var rotations = new Quaternion[model.Rig.Joints.Count];
-        model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
-        _placeSide = [.. model.Limbs.Select(l => l.EffectorPosition(positions, rotations).X)];
+        _places = new FootPlaces(model);
     }
 
-    /// <summary>Per limb: how far (metres) along the trunk's left the contact pose holds its effector from the root: its place.</summary>
-    private readonly float[] _placeSide;
+    /// <summary>Where the contact pose holds each limb's effector across the trunk: its place.</summary>
+    private readonly FootPlaces _places;
 
     /// <summary>
     /// Farthest (share of the standing leg) a free foot folding toward the flexion pose as the body sinks may stand
-    /// sideways of its place (<see cref="_placeSide"/>); farther, it keeps its pose (a spider's flexion pose draws its
+    /// sideways of its place (<see cref="FootPlaces"/>); farther, it keeps its pose (a spider's flexion pose draws its
     /// feet 0.4 L in under its body).
     /// </summary>
     private const float FoldSideways = 0.3f;
@@ -238,7 +236,7 @@ internal sealed class StanceDip
 
                     rig.Solve(root, folded, positions, rotations);
                     if (share > 0f && share < 1f && limb.Kind == LimbKind.Foot && _restLeg > 0f
-                        && MathF.Abs(Vector3.Dot(limb.EffectorPosition(positions, rotations) - root.Position, Vector3.Transform(Vector3.UnitX, root.Rotation)) - _placeSide[l]) > FoldSideways * _restLeg)
+                        && _places.Off(l, root, limb.EffectorPosition(positions, rotations)) > FoldSideways * _restLeg)
                     {
                         continue;
                     }

@@ -2541,9 +2541,10 @@ internal sealed class WalkGait
 
         /// <summary>
         /// The first of <see cref="FootholdTries"/> foot <paramref name="l"/> can hold from fine step
-        /// <paramref name="from"/> to <paramref name="to"/> (see <see cref="Foothold(int, int, int, int)"/>); with
+        /// <paramref name="from"/> to <paramref name="to"/> (see <see cref="Foothold(int, int, int, int)"/>): with
         /// <paramref name="inPlace"/>, only those that stay within <see cref="OutOfPlace"/> of where the contact pose
-        /// holds the foot under the trunk at every check. <paramref name="grounded"/> is set to the first ground found.
+        /// holds the foot under the trunk at every check, else only the others (the first pass tried those).
+        /// <paramref name="grounded"/> is set to the first ground found.
         /// </summary>
         private Holding? Foothold(int l, int from, int to, int[] steps, Vector3 ground, Vector3 along, Vector3 lateral, Vector3 heading, float slope, GroundSlopeTest walkable, bool fitAcross, bool inPlace, ref (Vector3 Point, Vector3 Normal)? grounded)
         {
@@ -2564,12 +2565,12 @@ internal sealed class WalkGait
                 }
 
                 grounded ??= (hit.Point, hit.Normal);
-                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && (!inPlace || InPlace(l, onTread, steps)) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && InPlace(l, onTread, steps) == inPlace && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
                 {
                     return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
                 }
 
-                if ((!inPlace || InPlace(l, hit.Point, steps)) && CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
+                if (InPlace(l, hit.Point, steps) == inPlace && CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
                 {
                     return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
                 }
@@ -2587,9 +2588,7 @@ internal sealed class WalkGait
         {
             foreach (int i in steps)
             {
-                RootPose root = _roots[i];
-                float side = Vector3.Dot(point - root.Position, Vector3.Transform(Vector3.UnitX, root.Rotation));
-                if (MathF.Abs(side - _gait._poseFeet[l].X) > OutOfPlace * _gait._restLeg)
+                if (_gait._contacts.Places.Off(l, _roots[i], point) > OutOfPlace * _gait._restLeg)
                 {
                     return false;
                 }
