@@ -56,8 +56,8 @@ internal sealed class ContactGenerator
     /// <summary>Most database samples tried as a free foot's pose within <see cref="FreeSideways"/> of its place before any other (<see cref="KeepFree"/>).</summary>
     private const int InPlaceFreeTries = 64;
 
-    /// <summary>Rigs of more feet than this may leave a foot free in a stance where its contact would stand it far out of its place (<see cref="Spared"/>): a hexapod or a spider stands without it.</summary>
-    private const int ManyFeet = 4;
+    /// <summary>Rigs of more feet than this may leave a foot free in a stance where its contact would stand it far out of its place (<see cref="Spared"/>): a quadruped, a hexapod or a spider stands without it, a biped does not stand on one foot.</summary>
+    private const int ManyFeet = 3;
 
     /// <summary>How far (share of the standing leg) to the side of its place a foot of a many-footed rig stands before it is left free where the stance can spare it (<see cref="Spared"/>).</summary>
     private const float HangSideways = 0.3f;
@@ -228,7 +228,8 @@ internal sealed class ContactGenerator
     /// more than <see cref="HangSideways"/> of the standing leg sideways of their places (<see cref="Places"/>) left
     /// free, where the others still
     /// number the required contacts and their cone still accepts <paramref name="velocity"/>: a spider landing by a
-    /// ledge, its hind feet's places over the drop, holds them on the brink under its body otherwise. Else
+    /// ledge, its hind feet's places over the drop, holds them on the brink under its body otherwise; a panda taking
+    /// off sideways at the foot of a flight, its right forefoot's place in the riser, held it 0.41 L aside. Else
     /// <paramref name="made"/> itself.
     /// </summary>
     private ContactConfiguration Spared(ContactConfiguration made, Vector3 velocity)

@@ -462,7 +462,9 @@ internal sealed class JumpFacer
     /// jump's way (<paramref name="facing"/>) turned toward <paramref name="before"/>'s own way
     /// (<see cref="RelandYaws"/>; after a short hop, whose own way no viewer judges, nearest the jump's way first:
     /// <see cref="Yaws"/>, then <see cref="WideYaws"/>), to which <paramref name="before"/> is steered again and lands
-    /// at most <see cref="StillOffLanding"/> off its way; each with no turn in (the jump before lands on it:
+    /// at most <see cref="StillOffLanding"/> off its way and, when it then travels <see cref="MinDistance"/> or more,
+    /// takes off at most <see cref="StillOffTakeoff"/> off it unless it did before (a short hop steered onto a stance
+    /// a little farther must not become a jump leaving backwards); each with no turn in (the jump before lands on it:
     /// <see cref="_relanded"/>). The two jumps then turn the body between them (a quadruped hopping onto a stair's
     /// tread lands facing up the flight, where it could not turn round on the tread).
     /// </summary>
@@ -485,8 +487,10 @@ internal sealed class JumpFacer
         var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         if (rejected?.Contains((before.From.Id, node.Id)) == true
             || _scene.Steering.SteerRemembered(before.From.Pose, before.From.Cone, node.Pose, node.Cone) is not { Succeeded: true } r
-            || Off(node, Way(r.Arc)) > StillOffLanding)
+            || Off(node, Way(r.Arc)) > StillOffLanding
+            || (Far(r.Arc) && Off(before.From, Way(r.Arc)) > StillOffTakeoff && Faces(before.From, before.To, before.Arc)))
         {
+            // Not made: a jump landing off its way, or a hop (any way) lengthened into a jump taking off off its way.
             yield break;
         }
 

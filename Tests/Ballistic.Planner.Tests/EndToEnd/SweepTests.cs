@@ -174,16 +174,19 @@ public sealed class SweepTests
     /// (2.38 steps a second; 2.64 before). Empty again since, the same day. Since the Rigify panda joined the sweep
     /// (the same day), it lists three of its plans. Through the doorway on the route that bends through it, it walks
     /// to the door and hops through it backwards (170° off its way at takeoff, 151° at landing): the turned hops were
-    /// set aside, the head or the right upper arm in a jamb. Up the stairs (17 cm risers, above its 13 cm step) it hops
+    /// set aside, the head or the right upper arm in a jamb. Up the stairs (17 cm risers, above its 13 cm step) it hopped
     /// from the floor onto the flight taking off backwards (180°). (Both stairs routes held the right forefoot on the
     /// tread below the one its contact was estimated on, 0.25–0.26 m from the stance contact the plan reported, until
     /// the plan reported a jump's contacts where the animation holds them; and on the route landing on the flight's
     /// lower treads the left forefoot, free, was splayed 0.45 L sideways of its place in the flexion pose until a free
-    /// foot was first posed within 0.3 L of its place, 2026-12-04.)
+    /// foot was first posed within 0.3 L of its place, 2026-12-04.) Up the stairs it no longer leaves backwards since a
+    /// hop steered again onto a turned takeoff may not become a jump leaving off its way (and its sideways takeoff at
+    /// the flight's foot leaves the forefoot whose place is in the riser free, as a many-footed rig's stance does,
+    /// rather than hold it 0.41 L aside), the same day.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
-        ["facing"] = ["foreign rig/doorway/panda/1", "foreign rig/stairs/panda/0"],
+        ["facing"] = ["foreign rig/doorway/panda/1"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
