@@ -10,7 +10,8 @@ namespace Ballistic.Planner.Animation;
 /// to its joint, tested as a box around the segment: a limb's bones (its chain and everything below its effector,
 /// such as toes, plus the segment from the effector to its contact point) are thin, since feet rest on the
 /// surface; every other bone (spine, neck, head, tail, ears) is as thick as half its radius
-/// (<see cref="CharacterModel.BoneRadii"/>), since it should not even touch the level. Within
+/// (<see cref="CharacterModel.BoneRadii"/>), since it should not even touch the level, unless its parent's skin is
+/// probed over its faces (a loaded rig's: that skin is the bone's flesh, checked point by point). Within
 /// <see cref="ContactClearance"/> of a held contact point a bone may touch. Helper bones of a loaded rig that are no
 /// body part (<see cref="CharacterSource.BodyBones"/>) are not checked. A loaded rig's limbs are also checked by
 /// points of their skinned mesh (<see cref="CharacterSource.SkinProbes"/>: toes and heels reach beyond the segments
@@ -137,7 +138,6 @@ internal sealed class BodyCollision
         }
 
         _otherBones = [.. others];
-        _otherThickness = [.. others.Select(j => MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
 
         // The skin points of each limb (a loaded rig's skinned mesh, the corners of a built character's bone boxes): its
         // chain's bones and those below its effector (a foot's toes and heel, a hand's fingers reach beyond the
@@ -195,6 +195,14 @@ internal sealed class BodyCollision
         _freeSkins = skin.Count != rig.Joints.Count ? [] :
             [.. Enumerable.Range(0, rig.Joints.Count).Where(j => skin[j].Length > 0 && (j == 0 || others.Contains(j)) && !hips.Contains(j))
                 .Select(j => (j, skin[j].Concat(spread.Count == rig.Joints.Count ? spread[j] : []).Distinct().Select(p => (j, p, (SkinBlend[]?)null)).ToArray()))];
+
+        // A bone's radius is measured over its parent's skin (the flesh around the segment). Where that skin is probed
+        // point by point, spread over its faces (a loaded rig's), the segment is checked thin: half its radius around
+        // it would stand out of the skin it stands for where the segment runs near that skin's side (a Rigify panda's
+        // link from its chest to its shoulder, 0.16 m out on a chest 0.24 m wide, measured 0.25 m from the chest's
+        // skin: 4 cm beyond the body, in a door's jamb the body cleared).
+        var probed = new HashSet<int>(spread.Count == rig.Joints.Count ? _freeSkins.Select(f => f.Joint) : []);
+        _otherThickness = [.. others.Select(j => probed.Contains(rig.Joints[j].Parent) ? Thickness : MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>

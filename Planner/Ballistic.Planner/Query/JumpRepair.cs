@@ -153,7 +153,8 @@ public sealed class JumpRepair
     /// <summary>
     /// Sets aside every move (jump or walk) of <paramref name="path"/> that <paramref name="animation"/> reports a
     /// problem with; for a jump cut from jumps (<see cref="Move.CutFrom"/>) whose takeoff (landing) was placed for it
-    /// and cannot crouch (absorb), refuses that stance instead, once (<see cref="RefusedTurns"/>); for any other move cut from
+    /// and cannot crouch (absorb), refuses that stance instead, once (<see cref="RefusedTurns"/>), and a walk made from
+    /// the same jumps into or out of that stance is not given back for failing with it; for any other move cut from
     /// jumps, keeps those jumps whole instead (and, for jumps already kept whole by an earlier animation, leaves them
     /// unturned: <see cref="Unfaced"/>; several moves of one jump failing in this animation are one failure); for a
     /// walk whose every problem has a place on its path, adds those places to <see cref="HopSpots"/> instead (while
@@ -174,19 +175,39 @@ public sealed class JumpRepair
         bool cutFailed = false;
         bool hopped = false;
 
+        // Stances placed for a cut or faced jump on which the body cannot crouch (absorb), refused now: the next search
+        // places another, and a walk made from the same jumps into (out of) one is made again with it.
+        IGrouping<int, JumpProblem>[] groups = [.. animation.Problems.GroupBy(p => p.Jump)];
+        var refusedNow = new HashSet<int>();
+        var refusing = new HashSet<int>();
+        foreach (IGrouping<int, JumpProblem> problems in groups)
+        {
+            Move move = path[problems.Key];
+            if (move is Jump && move.CutFrom.Count > 0 && RefuseTurns(move, problems, refusedNow))
+            {
+                refusing.Add(problems.Key);
+            }
+        }
+
         // Jumps given back by this animation: several of the moves made from one jump failing are one failure of it.
         var givenNow = new HashSet<(int From, int To)>();
-        foreach (IGrouping<int, JumpProblem> problems in animation.Problems.GroupBy(p => p.Jump))
+        foreach (IGrouping<int, JumpProblem> problems in groups)
         {
             Move move = path[problems.Key];
             if (move.CutFrom.Count > 0)
             {
                 cutFailed = true;
-                if (move is Jump && RefuseTurns(move, problems))
+                if (refusing.Contains(problems.Key))
                 {
                     // The body cannot crouch (absorb) on a stance placed for this jump: the next search turns it another way.
                     Record(move, problems.First().Reason);
                     added++;
+                    continue;
+                }
+
+                if (move is Walk && move.CutFrom.All(j => refusing.Any(r => path[r].CutFrom.Contains(j))) && (refusedNow.Contains(move.To.Id) || refusedNow.Contains(move.From.Id)))
+                {
+                    // A walk into (out of) a stance refused now, made from the same jumps: not given back for it.
                     continue;
                 }
 
@@ -269,14 +290,24 @@ public sealed class JumpRepair
     /// <summary>
     /// Adds the ends of <paramref name="move"/> the animator blames (the takeoff or landing its stance problems name:
     /// the body cannot crouch or absorb there) that were placed for the request after its search (by the facer or the
-    /// tightener) to <see cref="RefusedTurns"/>; true when one is new.
+    /// tightener) to <see cref="RefusedTurns"/>, and the new ones' ids to <paramref name="refused"/>; true when one is new.
     /// </summary>
-    private bool RefuseTurns(Move move, IEnumerable<JumpProblem> problems)
+    private bool RefuseTurns(Move move, IEnumerable<JumpProblem> problems, HashSet<int> refused)
     {
         bool takeoff = problems.Any(p => p.Stance == ProblemStance.Takeoff);
         bool landing = problems.Any(p => p.Stance == ProblemStance.Landing);
         bool refusedTakeoff = takeoff && move.From.Id >= _placedFrom && RefuseTurn(move.From.Pose);
         bool refusedLanding = landing && move.To.Id >= _placedFrom && RefuseTurn(move.To.Pose);
+        if (refusedTakeoff)
+        {
+            refused.Add(move.From.Id);
+        }
+
+        if (refusedLanding)
+        {
+            refused.Add(move.To.Id);
+        }
+
         return refusedTakeoff || refusedLanding;
     }
 
