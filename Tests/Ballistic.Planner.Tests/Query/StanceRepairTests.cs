@@ -168,4 +168,34 @@ public sealed class StanceRepairTests
             Assert.That(repair.Unfaced, Does.Contain(id), "a second failing animation does");
         });
     }
+
+    /// <summary>
+    /// A walk into a turned takeoff, made from the same jump as the jump from it, failing in the animation in which the
+    /// body cannot crouch on that takeoff: the takeoff is refused (the next search places another, and the walk is
+    /// made again to it), and the jump is not given back whole for the walk. Given back, it was flown as searched (a
+    /// tailed quadruped's jump onto a tread landed 48° off its way). A walk failing beside a jump that fails otherwise
+    /// still gives the jump back.
+    /// </summary>
+    [TestCase(true, TestName = "A walk into a turned takeoff refused in the same animation does not give its jump back")]
+    [TestCase(false, TestName = "A walk into a turned takeoff failing beside a jump that fails otherwise gives its jump back")]
+    public void AWalkIntoATakeoffRefusedNowDoesNotGiveItsJumpBack(bool crouch)
+    {
+        PlanResult best = BestAsSearched();
+        Jump jump = best.Jumps[0];
+        (int, int) id = (jump.From.Id, jump.To.Id);
+        int placed = 1000;
+        var repair = new JumpRepair(placed);
+        var takeoff = new RoadmapNode(placed, jump.From.Pose, jump.From.Cone, jump.From.Contacts);
+        Vector3 start = jump.From.ContactCentre - new Vector3(1f, 0f, 0f);
+        var before = new RoadmapNode(5, new Ballistic.Planner.Geometry.RootPose(jump.From.Pose.Position - new Vector3(1f, 0f, 0f), jump.From.Pose.Rotation), jump.From.Cone, jump.From.Contacts);
+        Move[] path = [new Walk(before, takeoff, [start, jump.From.ContactCentre], 1f) { CutFrom = [id] }, new Jump(takeoff, jump.To, jump.Arc) { CutFrom = [id] }];
+        JumpProblem jumping = crouch ? new JumpProblem(1, "the body cannot crouch before takeoff (test)") { Stance = ProblemStance.Takeoff } : new JumpProblem(1, "bone 'tail_1' passes through the level (test)");
+        var animation = new JumpAnimation(CharacterPresets.Model("skeleton"), path, new float[path.Length - 1], [], [], [new JumpProblem(0, "left_foot cannot hold its foothold (test)", 0.9f), jumping], 0, 0);
+        repair.Reject(path, animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(repair.RefusedTurns.Any(r => JumpRepair.IsRefused(r, takeoff.Pose)), Is.EqualTo(crouch), "the turned takeoff refused");
+            Assert.That(repair.Uncut.Contains(id), Is.EqualTo(!crouch), "the jump given back whole");
+        });
+    }
 }
