@@ -82,7 +82,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         _gait = new WalkGait(scene, model, _contacts);
         _refiner = new HoldRefiner(model, _collision);
         _free = _gait.FreeBones;
-        _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free);
+        _dip = new StanceDip(model, new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24 }), _collision, _free, _contacts.Places);
         _liftHeight = scene.Character.StepReach;
         _scene = scene;
         Model = model;

@@ -44,10 +44,11 @@ internal sealed class StanceDip
     private readonly float _restLeg;
     private readonly Vector3 _pivot;
 
-    /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>, free bones (a tail) bent clear by <paramref name="free"/>.</summary>
-    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision, FreeBones free)
+    /// <summary>A dip solver for <paramref name="model"/>, its contacts held by <paramref name="ik"/>, bones checked by <paramref name="collision"/>, free bones (a tail) bent clear by <paramref name="free"/>, free feet kept near their <paramref name="places"/>.</summary>
+    public StanceDip(CharacterModel model, LimbIk ik, BodyCollision collision, FreeBones free, FootPlaces places)
     {
         _model = model;
+        _places = places;
         _ik = ik;
         _collision = collision;
         _free = free;
@@ -56,7 +57,6 @@ internal sealed class StanceDip
         model.Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.Rig.Neutral(), positions, new Quaternion[model.Rig.Joints.Count]);
         _pivot = positions[0];
         _restLeg = RestLegLength(model);
-        _places = new FootPlaces(model);
     }
 
     /// <summary>Where the contact pose holds each limb's effector across the trunk: its place.</summary>

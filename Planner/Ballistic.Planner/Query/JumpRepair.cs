@@ -180,12 +180,14 @@ public sealed class JumpRepair
         IGrouping<int, JumpProblem>[] groups = [.. animation.Problems.GroupBy(p => p.Jump)];
         var refusedNow = new HashSet<int>();
         var refusing = new HashSet<int>();
+        var refusingCut = new HashSet<(int From, int To)>();
         foreach (IGrouping<int, JumpProblem> problems in groups)
         {
             Move move = path[problems.Key];
             if (move is Jump && move.CutFrom.Count > 0 && RefuseTurns(move, problems, refusedNow))
             {
                 refusing.Add(problems.Key);
+                refusingCut.UnionWith(move.CutFrom);
             }
         }
 
@@ -205,7 +207,7 @@ public sealed class JumpRepair
                     continue;
                 }
 
-                if (move is Walk && move.CutFrom.All(j => refusing.Any(r => path[r].CutFrom.Contains(j))) && (refusedNow.Contains(move.To.Id) || refusedNow.Contains(move.From.Id)))
+                if (move is Walk && move.CutFrom.All(refusingCut.Contains) && (refusedNow.Contains(move.To.Id) || refusedNow.Contains(move.From.Id)))
                 {
                     // A walk into (out of) a stance refused now, made from the same jumps: not given back for it.
                     continue;
