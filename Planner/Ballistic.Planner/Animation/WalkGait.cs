@@ -2559,7 +2559,8 @@ internal sealed class WalkGait
                     || _gait._scene.Surfaces.SurfaceOf(hit.Triangle) < 0
                     || !limb.Filter.Accepts(hit.Normal)
                     || hit.Normal.Y <= 0f
-                    || !walkable.Accepts(hit.Normal, heading))
+                    || !walkable.Accepts(hit.Normal, heading)
+                    || !Reachable(ground, hit.Point, slope))
                 {
                     continue;
                 }
@@ -2578,6 +2579,59 @@ internal sealed class WalkGait
 
             return null;
         }
+
+        /// <summary>
+        /// True when the ground from <paramref name="ground"/> (the walk's, under the trunk) out to a foothold at
+        /// <paramref name="point"/> (world metres, on the level) rises or falls by no more than a step
+        /// (<see cref="_stepHeight"/>) plus the walkable grade (<paramref name="slope"/>) between samples every
+        /// <see cref="ReachSample"/> across: a foot walks up a slope or a stair's riser beside the path, not onto a
+        /// platform's top beside the floor walked (a spider turning in place at the foot of a 0.6 m face set a foot on
+        /// its top, 0.6 m above the floor and above its own hip, the sole tipped 2.7 cm off the ground). Where a
+        /// sample finds no ground (a gap stepped across) it is skipped.
+        /// </summary>
+        private bool Reachable(Vector3 ground, Vector3 point, float slope)
+        {
+            var across = new Vector2(point.X - ground.X, point.Z - ground.Z);
+            int samples = (int)MathF.Ceiling(across.Length() / ReachSample);
+            if (samples <= 1)
+            {
+                return true;
+            }
+
+            float top = MathF.Max(ground.Y, point.Y) + _stepHeight + 0.05f;
+            float depth = top - MathF.Min(ground.Y, point.Y) + _stepHeight + 0.05f;
+            float last = ground.Y;
+            float gap = 0f;
+            for (int i = 1; i <= samples; i++)
+            {
+                gap += ReachSample;
+                float y;
+                if (i == samples)
+                {
+                    y = point.Y;
+                }
+                else if (_gait._scene.Bvh.Raycast(new Vector3(ground.X + (across.X * i / samples), top, ground.Z + (across.Y * i / samples)), -Vector3.UnitY, depth, out RayHit hit))
+                {
+                    y = hit.Point.Y;
+                }
+                else
+                {
+                    continue;
+                }
+
+                if (MathF.Abs(y - last) > _stepHeight + (slope * gap))
+                {
+                    return false;
+                }
+
+                (last, gap) = (y, 0f);
+            }
+
+            return true;
+        }
+
+        /// <summary>The spacing (metres, across) of the ground samples <see cref="Reachable"/> checks between the walk's ground and a foothold.</summary>
+        private const float ReachSample = 0.05f;
 
         /// <summary>
         /// True when a foothold of foot <paramref name="l"/> at <paramref name="point"/> (world metres) lies within
