@@ -36,7 +36,7 @@ internal static class FlightPoses
         float spread = feet.Length < 2 ? 0f : feet.Max(l => positions[l.RootJoint].Z) - feet.Min(l => positions[l.RootJoint].Z);
         float meanReach = feet.Length == 0 ? 1f : feet.Average(l => Vector3.Distance(positions[l.RootJoint], l.EffectorPosition(positions, rotations)));
         float middle = feet.Length == 0 ? 0f : 0.5f * (feet.Max(l => positions[l.RootJoint].Z) + feet.Min(l => positions[l.RootJoint].Z));
-        bool frontAndBack = spread > FrontAndBack * meanReach;
+        bool frontAndBack = spread > FrontAndBack * meanReach || Fanned(feet, positions, rotations);
 
         float[] flexion = (float[])contact.Clone();
         float[] extending = (float[])contact.Clone();
@@ -75,6 +75,30 @@ internal static class FlightPoses
 
         return (flexion, extending);
     }
+
+    /// <summary>
+    /// Whether <paramref name="feet"/> fan out around the body (a spider's: their roots close together along it, some
+    /// feet reaching ahead of their roots by more than <see cref="FanShare"/> of their reach and some as far behind),
+    /// so that they too have a front and a back: treated as one walker's feet, a spider's eight legs all swung a
+    /// little back for its stretched pose, 10° from its rest on average, and read as no flight pose.
+    /// </summary>
+    private static bool Fanned(RigLimb[] feet, Vector3[] positions, Quaternion[] rotations)
+    {
+        bool ahead = false;
+        bool behind = false;
+        foreach (RigLimb foot in feet)
+        {
+            Vector3 reach = foot.EffectorPosition(positions, rotations) - positions[foot.RootJoint];
+            float along = reach.Length() < 1e-4f ? 0f : reach.Z / reach.Length();
+            ahead |= along > FanShare;
+            behind |= along < -FanShare;
+        }
+
+        return ahead && behind;
+    }
+
+    /// <summary>Share of a foot's reach (root to effector at rest) it must lie ahead of or behind its root, along the body, for its rig's feet to fan out (<see cref="Fanned"/>).</summary>
+    private const float FanShare = 0.4f;
 
     /// <summary>
     /// Moves <paramref name="limb"/> in <paramref name="q"/> so that its effector lies at <paramref name="hip"/> plus

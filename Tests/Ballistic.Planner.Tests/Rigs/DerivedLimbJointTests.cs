@@ -115,6 +115,39 @@ public sealed class DerivedLimbJointTests
         });
     }
 
+    /// <summary>
+    /// A spider's eight legs fan out around its body from roots close together along it: its front legs stretch ahead
+    /// and its hind legs behind for the flight, as a quadruped's do, and the stretched pose turns the legs' joints well
+    /// away from rest. Before, the rig's feet were taken for one walker's (their roots 0.19 m apart along the body,
+    /// under half their 0.67 m reach): every leg swung a little back, the front feet 0.19 m behind their rest places,
+    /// 10.0° from rest on average, and the animator's eye saw no flight pose on 12 of the spider's 26 plans on levels in
+    /// other tools' shapes (9° at the apex).
+    /// </summary>
+    [Test]
+    public void AFannedRigsFrontLegsStretchAheadAndItsHindLegsBehind()
+    {
+        (CharacterModel model, _) = ForeignCharacters.Spider().Load();
+        Rig rig = model.Rig;
+        int[] limbJoints = [.. model.Limbs.SelectMany(l => l.Chain)];
+        float away = limbJoints.Average(j =>
+            2f * MathF.Acos(MathF.Min(1f, MathF.Abs(Quaternion.Dot(rig.LocalRotation(j, model.ExtendingPose), rig.LocalRotation(j, model.ContactPose))))) * 180f / MathF.PI);
+        Assert.Multiple(() =>
+        {
+            foreach (RigLimb limb in model.Limbs.Where(l => l.Name is "l1" or "r1"))
+            {
+                Assert.That(End(rig, limb, model.ExtendingPose).Z, Is.GreaterThan(End(rig, limb, model.ContactPose).Z + 0.05f), $"{limb.Name} stretches ahead");
+            }
+
+            foreach (RigLimb limb in model.Limbs.Where(l => l.Name is "l4" or "r4"))
+            {
+                Assert.That(End(rig, limb, model.ExtendingPose).Z, Is.LessThan(End(rig, limb, model.ContactPose).Z - 0.05f), $"{limb.Name} stretches behind");
+            }
+
+            Assert.That(away, Is.GreaterThan(12f), "the stretched legs' joints, from rest on average (degrees)");
+            Assert.That(rig.WithinLimits(model.ExtendingPose), Is.True, "within the joints' limits");
+        });
+    }
+
     private static Vector3 At(Rig rig, int joint, float[] q)
     {
         var positions = new Vector3[rig.Joints.Count];
