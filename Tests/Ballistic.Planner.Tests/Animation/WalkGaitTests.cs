@@ -440,6 +440,28 @@ public sealed class WalkGaitTests
         });
     }
 
+    /// <summary>
+    /// A spider walking up to the foot of a 0.6 m face and turning in place there to face along it, its right front
+    /// legs swung toward the face, sets every foot on the floor it walks, its soles on the ground. Before, the turn set
+    /// r1 and r2 down on the platform's top, 0.6 m above the floor and above their own hips (a climb, where its walk
+    /// steps 9 cm), their soles tipped 2.5–2.7 cm off the ground: a foothold's height was checked against the walk's
+    /// ground only as a step plus the walkable grade times the distance out, which a leg reaching 0.55 m sideways
+    /// passes at any height. Now the ground from the walk's path out to the foothold may rise by no more than a step
+    /// (plus the grade) between samples 5 cm apart.
+    /// </summary>
+    [Test]
+    public void ASpiderTurningAtTheFootOfAFaceKeepsItsFeetOnTheFloorItWalks()
+    {
+        Level level = new LevelBuilder("platform").AddFloor(-4f, -3f, 4f, 3f, 0f).AddBox(new Vector3(1f, 0f, -3f), new Vector3(4f, 0.6f, 3f)).Build();
+        WalkWorld world = WalkWorld.Create(level, "spider");
+        RoadmapNode from = world.Stance(new Vector3(0.1f, 0f, 1.4f), 0, new Vector3(0.6f, 0f, -0.8f));
+        RoadmapNode to = world.Stance(new Vector3(0.55f, 0f, 0.83f), 1, new Vector3(0.95f, 0f, 0.31f));
+        JumpAnimation animation = world.Animator.Animate([world.Walk(from, to)]);
+        AnimatorEye.Look look = Seen(world, animation);
+        Assert.That(animation.ContactPhases.Where(p => p.Position.Y > 0.1f).Select(p => $"{world.Model.Limbs[p.Limb].Name} at {p.From:0.00} s, {p.Position.Y:0.00} m up"), Is.Empty, "every foothold is on the floor");
+        Assert.That(look.Soles.Passes, Is.True, look.Soles.ToString());
+    }
+
     private static AnimatorEye.Look Seen(WalkWorld world, JumpAnimation animation)
     {
         Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);

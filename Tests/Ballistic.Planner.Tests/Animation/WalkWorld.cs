@@ -30,11 +30,11 @@ internal sealed record WalkWorld(PlanningScene Scene, CharacterModel Model, Jump
 
     /// <summary>
     /// The character on the level: a bundled one ("skeleton" biped, "ant" hexapod, …) or a foreign rig loaded through
-    /// its limbs-only spec ("dog", "human", "human-zup", "tailed").
+    /// its limbs-only spec ("dog", "human", "human-zup", "tailed", "spider").
     /// </summary>
     public static WalkWorld Create(Level level, string character)
     {
-        (CharacterModel model, ReducedCharacter reduced) = character is "dog" or "human" or "human-zup" or "tailed"
+        (CharacterModel model, ReducedCharacter reduced) = character is "dog" or "human" or "human-zup" or "tailed" or "spider"
             ? Foreign.GetOrAdd(character, name => new Lazy<(CharacterModel, ReducedCharacter)>(() => LoadForeign(name))).Value
             : (CharacterPresets.Model(character), CharacterPresets.Get(character));
         var scene = PlanningScene.Create(level, reduced);

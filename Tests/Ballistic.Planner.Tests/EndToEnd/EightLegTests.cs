@@ -185,30 +185,6 @@ public sealed class EightLegTests
         });
     }
 
-    /// <summary>
-    /// Walking to a takeoff at the foot of the platform's 0.6 m face, the spider turns in place there, its right
-    /// front legs toward the face, and re-steps every foot on the floor it walks, every criterion of the eye passing.
-    /// Before, such a turn set r1 and r2 down on the platform's top, 0.6 m above that floor and above their own hips
-    /// (a climb, where its walk steps 9 cm): from (0.11, 1.42) their soles were tipped 2.5–2.7 cm off the ground;
-    /// from this request the plan left the floor by another way and took off 179° off its way. A walk's foothold now
-    /// lies where the ground from the walk's path out to it rises by no more than a step (plus the walkable grade)
-    /// between any two samples 5 cm apart.
-    /// </summary>
-    [Test]
-    public void TurningAtTheFootOfAFaceTheSpiderKeepsItsFeetOnTheFloorItWalks()
-    {
-        (AnimatedPlan plan, AnimatorEye.Look look) = Plan("platform", Platform(), new(0.1f, 0f, 1.4f), new(2.4f, 0.6f, 1.7f));
-        Move[] moves = [.. plan.Result.Moves];
-        Assert.That(moves[0], Is.InstanceOf<Walk>(), "it walks to the face first");
-        Assert.That(moves[0].To.ContactCentre.Y, Is.LessThan(0.1f), "the walk ends on the floor");
-        JumpAnimation animation = plan.Animation!;
-        float walked = animation.MoveEnd(0);
-        ContactPhase[] walking = [.. animation.ContactPhases.Where(p => p.From < walked - 0.05f)];
-        Assert.That(walking, Is.Not.Empty);
-        Assert.That(walking.Where(p => p.Position.Y > 0.1f).Select(p => $"{Spider.Value.Model.Limbs[p.Limb].Name} at {p.From:0.00} s, {p.Position.Y:0.00} m up"), Is.Empty, "every foothold of the walk is on the floor");
-        SweepTests.AssertEveryCriterion(look, "the spider's turn at the face", _ => false, "none");
-    }
-
     /// <summary>A 6 × 8 m floor with a 3 m deep platform 0.6 m high along its +X end (its face at x = 1).</summary>
     private static Level Platform() => new LevelBuilder("platform")
         .AddFloor(-4f, -3f, 4f, 3f, 0f)
