@@ -185,6 +185,33 @@ public sealed class EightLegTests
         });
     }
 
+    /// <summary>
+    /// Across the holes-and-debris level (issue 24's foreign level, 10 m across) the spider's route is fully right by
+    /// the independent audit, every bone clear of the level at every sample. Before, it was reported exact while the
+    /// audit found "l4 sole in the level at 17.491 s": a limb's pose was checked at every fine step of a flight, but
+    /// the clip interpolates between the frame where a foot lets go (or takes hold) and the next, and a foot whipped
+    /// off the ground swept along it there (on the platform, 4 cm and 1 mm deep in the 2 ms after a hop took off).
+    /// Half a fine step from a limb's letting go and to its taking hold is now checked too, its contact's clearance
+    /// cut, and such a limb is lifted off its contact first.
+    /// </summary>
+    [Test]
+    public void AcrossTheHolesAndDebrisNoFootSweepsThroughTheGround()
+    {
+        string folder = RigFolders.For("eight-legs-holes");
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("holes-debris", "spider", folder);
+        try
+        {
+            (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[0].From, requests[0].To);
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(plan.Result.Moves.OfType<Jump>(), Is.Not.Empty, "it hops and jumps on its way");
+            Assert.That(report.FullyRight, Is.True, report.ToString());
+        }
+        finally
+        {
+            RigFolders.Remove(folder);
+        }
+    }
+
     /// <summary>A 6 × 8 m floor with a 3 m deep platform 0.6 m high along its +X end (its face at x = 1).</summary>
     private static Level Platform() => new LevelBuilder("platform")
         .AddFloor(-4f, -3f, 4f, 3f, 0f)
