@@ -5,6 +5,7 @@ using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Walking;
 
 namespace Ballistic.Planner.Animation;
 
@@ -2584,7 +2585,7 @@ internal sealed class WalkGait
         /// True when the ground from <paramref name="ground"/> (the walk's, under the trunk) out to a foothold at
         /// <paramref name="point"/> (world metres, on the level) rises or falls by no more than a step
         /// (<see cref="_stepHeight"/>) plus the walkable grade (<paramref name="slope"/>) between samples every
-        /// <see cref="ReachSample"/> across: a foot walks up a slope or a stair's riser beside the path, not onto a
+        /// <see cref="WalkSteering.SampleSpacing"/> across, as the walk's own ground is sampled: a foot walks up a slope or a stair's riser beside the path, not onto a
         /// platform's top beside the floor walked (a spider turning in place at the foot of a 0.6 m face set a foot on
         /// its top, 0.6 m above the floor and above its own hip, the sole tipped 2.7 cm off the ground). Where a
         /// sample finds no ground (a gap stepped across) it is skipped.
@@ -2592,7 +2593,7 @@ internal sealed class WalkGait
         private bool Reachable(Vector3 ground, Vector3 point, float slope)
         {
             var across = new Vector2(point.X - ground.X, point.Z - ground.Z);
-            int samples = (int)MathF.Ceiling(across.Length() / ReachSample);
+            int samples = (int)MathF.Ceiling(across.Length() / WalkSteering.SampleSpacing);
             if (samples <= 1)
             {
                 return true;
@@ -2604,7 +2605,7 @@ internal sealed class WalkGait
             float gap = 0f;
             for (int i = 1; i <= samples; i++)
             {
-                gap += ReachSample;
+                gap += WalkSteering.SampleSpacing;
                 float y;
                 if (i == samples)
                 {
@@ -2629,9 +2630,6 @@ internal sealed class WalkGait
 
             return true;
         }
-
-        /// <summary>The spacing (metres, across) of the ground samples <see cref="Reachable"/> checks between the walk's ground and a foothold.</summary>
-        private const float ReachSample = 0.05f;
 
         /// <summary>
         /// True when a foothold of foot <paramref name="l"/> at <paramref name="point"/> (world metres) lies within
