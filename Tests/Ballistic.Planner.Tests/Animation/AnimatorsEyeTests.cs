@@ -132,6 +132,36 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// A foot gathered in on a perch narrower than the rig's stance is measured from where the perch ends: the spider
+    /// (legs 1.3 m across) jumping onto a 0.8 m crate, turned 23° to the crate's sides, holds all eight feet on the top
+    /// by its edges, some more than <see cref="AnimatorEye.SidewaysShare"/> L in from where its contact pose holds them
+    /// yet within that of the edge, and passes; the same clip read on a 3 m table of the crate's height (the ground
+    /// going on to every foot's place) fails, its feet drawn in for nothing.
+    /// </summary>
+    [Test]
+    public void AFootGatheredOnAPerchIsMeasuredFromWhereThePerchEnds()
+    {
+        LevelBuilder Floor() => new LevelBuilder("perch").AddFloor(-4f, -4f, 4f, 4f, 0f);
+        WalkWorld world = WalkWorld.Create(Floor().AddBox(new Vector3(-0.4f, 0f, -0.4f), new Vector3(0.4f, 0.5f, 0.4f)).Build(), "spider");
+        Vector3 way = new(MathF.Cos(0.4f), 0f, MathF.Sin(0.4f));
+        RoadmapNode floor = world.Stance(-1.3f * way, 0, way);
+        RoadmapNode crate = world.Stance(new Vector3(0f, 0.5f, 0f), 1, way);
+        JumpAnimation animation = world.Animator.Animate([world.Jump(floor, crate)]);
+        Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
+        PlanningScene table = PlanningScene.Create(Floor().AddBox(new Vector3(-1.5f, 0f, -1.5f), new Vector3(1.5f, 0.5f, 1.5f)).Build(), world.Scene.Character);
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), world.Model);
+        AnimatorEye.Look onCrate = eye.Measure(animation, world.Scene);
+        AnimatorEye.Look onTable = eye.Measure(animation, table);
+        Assert.Multiple(() =>
+        {
+            Assert.That(onCrate.UnderHips.Passes, Is.True, onCrate.UnderHips.ToString());
+            Assert.That(onTable.UnderHips.Passes, Is.False, "feet drawn in on ground that goes on");
+            Assert.That(onTable.UnderHips.ToString(), Does.Contain("where its contact pose holds it"));
+            TestContext.Out.WriteLine($"{onCrate.UnderHips} / {onTable.UnderHips}");
+        });
+    }
+
+    /// <summary>
     /// The eye sees a body sunk into the ground: the same clip with the root 5 cm lower all along has vertices of the
     /// standing feet about 5 cm inside the level, where the clip as animated has none beyond the tolerance.
     /// </summary>

@@ -64,6 +64,9 @@ internal sealed class AnimatorEye
     /// <summary>Farthest a foot may move sideways of its own hip from where the contact pose holds it, in leg lengths.</summary>
     public const float SidewaysShare = 0.35f;
 
+    /// <summary>Spacing (metres) at which the ground between a foot and its place is read (<see cref="GroundEnds"/>).</summary>
+    public const float BrinkStep = 0.02f;
+
     /// <summary>Deepest (metres) any skinned vertex of the body may be inside the level at any frame.</summary>
     public const float InsideTolerance = 0.02f;
 
@@ -536,7 +539,7 @@ internal sealed class AnimatorEye
         TriangleBvh level = scene.Bvh;
         MeasureSoles(animation, level, look);
         MeasureInside(animation, scene.Level.Triangles, level, look);
-        MeasureLegs(animation, look);
+        MeasureLegs(animation, level, look);
         MeasureFootholds(animation, look);
         MeasureWalks(animation, level, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
@@ -774,9 +777,12 @@ internal sealed class AnimatorEye
     /// <summary>
     /// Legs under the body, on the ground (every 1/30 s outside flights): in the trunk's frame (along its own left,
     /// rolling with it) no left foot more than <see cref="CrossTolerance"/> right of its right partner, and each foot
-    /// within <see cref="SidewaysShare"/> L sideways of its own hip, counted from where the spec's contact pose holds it.
+    /// within <see cref="SidewaysShare"/> L sideways of its own hip, counted from where the spec's contact pose holds it,
+    /// or, where the ground the foot stands on ends short of that place (<see cref="GroundEnds"/>: a perch narrower than
+    /// the rig's stance, a wall beside it), within as much of where it ends: a spider on a crate smaller than its legs'
+    /// span gathers its feet on the top, as far out as the top goes.
     /// </summary>
-    private void MeasureLegs(JumpAnimation animation, Look look)
+    private void MeasureLegs(JumpAnimation animation, TriangleBvh level, Look look)
     {
         if (_legs.Length == 0)
         {
@@ -814,11 +820,20 @@ internal sealed class AnimatorEye
 
             foreach ((string name, Node hip, Node ankle, float rest) in _legs)
             {
-                float off = MathF.Abs(Vector3.Dot(WorldAt(ankle, t).Translation - WorldAt(hip, t).Translation, left) - rest) / Leg;
+                Vector3 foot = WorldAt(ankle, t).Translation;
+                float signed = Vector3.Dot(foot - WorldAt(hip, t).Translation, left) - rest;
+                float off = MathF.Abs(signed) / Leg;
+                string seen = $"{name} is {off:0.00} L sideways of where its contact pose holds it at {t:0.00} s{During(animation, t)}";
+                if (off > SidewaysShare && GroundEnds(level, foot, foot - (left * signed)) is { } brink)
+                {
+                    off = brink / Leg;
+                    seen = $"{name} is {off:0.00} L sideways of where the ground toward its place ends at {t:0.00} s{During(animation, t)}";
+                }
+
                 if (off > sideWorst)
                 {
                     sideWorst = off;
-                    sideSeen = $"{name} is {off:0.00} L sideways of where its contact pose holds it at {t:0.00} s{During(animation, t)}";
+                    sideSeen = seen;
                 }
             }
         }
@@ -829,6 +844,45 @@ internal sealed class AnimatorEye
         }
 
         look.UnderHips.Add(SidewaysShare / MathF.Max(sideWorst, 1e-6f), sideSeen.Length > 0 ? sideSeen : "the feet stay under the hips");
+    }
+
+    /// <summary>
+    /// How far (metres, on the ground plane) from <paramref name="foot"/> toward <paramref name="place"/> the ground the
+    /// foot stands on ends, or <c>null</c> when it goes on to the place: read every <see cref="BrinkStep"/> m, it ends
+    /// where a wall rises in the way (a ray at a tenth of a leg above the ground hits the level) or where the ground
+    /// below drops or rises by more than a tenth of a leg from the last sample (an edge, a gap).
+    /// </summary>
+    private float? GroundEnds(TriangleBvh level, Vector3 foot, Vector3 place)
+    {
+        Vector3 across = place - foot;
+        across.Y = 0f;
+        float distance = across.Length();
+        float lift = 0.1f * Leg;
+        if (distance < 1e-4f || !level.Raycast(foot + new Vector3(0f, lift, 0f), -Vector3.UnitY, 2f * Leg, out RayHit under))
+        {
+            return null;
+        }
+
+        across /= distance;
+        float ground = under.Point.Y;
+        float reach = distance;
+        if (level.Raycast(new Vector3(foot.X, ground + lift, foot.Z), across, distance, out RayHit wall))
+        {
+            reach = wall.Distance;
+        }
+
+        for (float s = BrinkStep; s < reach; s += BrinkStep)
+        {
+            Vector3 at = foot + (across * s);
+            if (!level.Raycast(new Vector3(at.X, ground + lift, at.Z), -Vector3.UnitY, 2f * lift, out RayHit hit) || MathF.Abs(hit.Point.Y - ground) > lift)
+            {
+                return s - BrinkStep;
+            }
+
+            ground = hit.Point.Y;
+        }
+
+        return reach < distance ? reach : null;
     }
 
     /// <summary>
