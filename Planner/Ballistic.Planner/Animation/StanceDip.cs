@@ -223,24 +223,40 @@ internal sealed class StanceDip
                 }
 
                 // Half-way to the flexion pose at the deepest (a foot no farther than FoldSideways from its place);
-                // else as it was; else tucked up fully.
+                // else as it was; else tucked up fully; else half or a quarter of the way on from where it was to the
+                // flexion pose. Each clear at this depth and half-way between its angles and the last depth's at the
+                // depth between, as a player interpolates the rows: a spider's free leg, raised for its landing,
+                // tucked fully in one row and swept through a plank between them.
                 RigLimb limb = _model.Limbs[l];
+                RootPose between = Dipped(config.Root, up, pitch, _pivot, depth - (0.5f * deepest / Samples));
                 bool clear = false;
-                foreach (float share in (float[])[0.5f * fold, -1f, 1f])
+                foreach ((bool onFromLast, float share) in ((bool, float)[])[(false, 0.5f * fold), (true, 0f), (true, 1f), (true, 0.5f), (true, 0.25f)])
                 {
                     float[] folded = (float[])next.Clone();
                     foreach (int d in limb.ChainDofs)
                     {
-                        folded[d] = share < 0f ? next[d] : float.Lerp(config.Angles[d], _model.FlexionPose[d], share);
+                        folded[d] = float.Lerp(onFromLast ? next[d] : config.Angles[d], _model.FlexionPose[d], share);
                     }
 
                     rig.Solve(root, folded, positions, rotations);
-                    if (share > 0f && share < 1f && limb.Kind == LimbKind.Foot && _restLeg > 0f
+                    if (!onFromLast && share > 0f && limb.Kind == LimbKind.Foot && _restLeg > 0f
                         && _places.Off(l, root, limb.EffectorPosition(positions, rotations)) > FoldSideways * _restLeg)
                     {
                         continue;
                     }
 
+                    if (_collision.LimbCollides(limb, positions, rotations, null))
+                    {
+                        continue;
+                    }
+
+                    float[] half = (float[])folded.Clone();
+                    foreach (int d in limb.ChainDofs)
+                    {
+                        half[d] = 0.5f * (next[d] + folded[d]);
+                    }
+
+                    rig.Solve(between, half, positions, rotations);
                     if (!_collision.LimbCollides(limb, positions, rotations, null))
                     {
                         Array.Copy(folded, next, next.Length);
