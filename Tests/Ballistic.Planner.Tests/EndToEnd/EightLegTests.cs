@@ -217,6 +217,32 @@ public sealed class EightLegTests
         }
     }
 
+    /// <summary>
+    /// Across the curved terrain (issue 24's foreign level, modelled Z-up in centimetres) from (0, 0.23, −6) to
+    /// (0, −0.23, 6) the spider walks with its whole body out of the ground: no skinned vertex more than 2 cm inside it,
+    /// as the eye reads the GLB. Before, its abdomen (skinned a third to the cephalothorax) was drawn 4.7 cm into a
+    /// rise while the plan was exact: the animator kept out of the level the skin points of bones of no limb as each
+    /// bone carries them alone (1.2 cm in, within its 1.5 cm), not the skin blended between two of them where linear
+    /// blend skinning draws it. Those blended points are now checked too.
+    /// </summary>
+    [Test]
+    public void OverCurvedGroundItsAbdomenStaysOutOfTheGround()
+    {
+        string folder = RigFolders.For("eight-legs-curved");
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("curved", "spider", folder);
+        try
+        {
+            (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[2].From, requests[2].To);
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(report.FullyRight, Is.True, report.ToString());
+            Assert.That(report.Look!.Inside.Passes, Is.True, report.Look.Inside.ToString());
+        }
+        finally
+        {
+            RigFolders.Remove(folder);
+        }
+    }
+
     /// <summary>A 6 × 8 m floor with a 3 m deep platform 0.6 m high along its +X end (its face at x = 1).</summary>
     private static Level Platform() => new LevelBuilder("platform")
         .AddFloor(-4f, -3f, 4f, 3f, 0f)
