@@ -190,7 +190,7 @@ internal sealed class BodyCollision
         // sank 3.3 cm into a dune as it crouched to jump).
         // A loaded rig's are also points spread over that skin: a door's jamb entered a box-shaped head 9.7 cm between
         // its extremes. And its skin blended between such bones, where linear blend skinning puts it: a spider's
-        // abdomen, weighted a third to its cephalothorax and bent up clear of a dune's rise, was drawn 4.7 cm into it
+        // abdomen, weighted 30 % to its cephalothorax and bent up clear of a dune's rise, was drawn 4.7 cm into it
         // where the abdomen's own points stood 1.2 cm in.
         int[] hips = [.. model.Limbs.Select(l => l.Chain[0])];
         IReadOnlyList<Vector3[]> spread = triangles is null ? [] : model.Source?.SpreadProbes ?? [];

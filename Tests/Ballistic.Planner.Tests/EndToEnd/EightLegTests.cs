@@ -220,7 +220,7 @@ public sealed class EightLegTests
     /// <summary>
     /// Across the curved terrain (issue 24's foreign level, modelled Z-up in centimetres) from (0, 0.23, −6) to
     /// (0, −0.23, 6) the spider walks with its whole body out of the ground: no skinned vertex more than 2 cm inside it,
-    /// as the eye reads the GLB. Before, its abdomen (skinned a third to the cephalothorax) was drawn 4.7 cm into a
+    /// as the eye reads the GLB. Before, its abdomen (skinned 30 % to the cephalothorax) was drawn 4.7 cm into a
     /// rise while the plan was exact: the animator kept out of the level the skin points of bones of no limb as each
     /// bone carries them alone (1.2 cm in, within its 1.5 cm), not the skin blended between two of them where linear
     /// blend skinning draws it. Those blended points are now checked too.
