@@ -1066,7 +1066,11 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         foreach (int l in pending.Concat(stuck).Order())
         {
             colliding++;
-            problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} passes through the level in flight ({firstHit[l]:0.000} s after takeoff) whatever pose it takes"));
+            float share = firstHit[l] / arc.FlightTime;
+            problems.Add(new JumpProblem(index, $"{Model.Limbs[l].Name} passes through the level in flight ({firstHit[l]:0.000} s after takeoff) whatever pose it takes")
+            {
+                Near = share <= JumpProblem.NearShare ? ProblemStance.Takeoff : share >= 1f - JumpProblem.NearShare ? ProblemStance.Landing : ProblemStance.None,
+            });
         }
 
         // Bones of no limb (spine, head, tail…) follow the trunk; a free chain (a tail) bends out of the level where

@@ -18,4 +18,15 @@ public readonly record struct JumpProblem(int Jump, string Reason, float Along =
     /// the same contact pose there).
     /// </summary>
     internal ProblemStance Stance { get; init; }
+
+    /// <summary>
+    /// For a problem of the move, the stance it shows next to: a limb that hits the level in the first (last)
+    /// <see cref="NearShare"/> of the flight, when it has just left (is about to reach) its takeoff (landing) stance.
+    /// Other jumps from (to) that stance may pass, so a roadmap stance is not set aside for it; a stance placed to turn
+    /// or cut a jump is placed again elsewhere (<see cref="Query.JumpRepair.RefusedTurns"/>).
+    /// </summary>
+    internal ProblemStance Near { get; init; }
+
+    /// <summary>Share of a flight, from either end, within which a limb's hit is <see cref="Near"/> that end's stance.</summary>
+    internal const float NearShare = 0.1f;
 }

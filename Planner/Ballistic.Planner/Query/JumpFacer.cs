@@ -16,7 +16,10 @@ namespace Ballistic.Planner.Query;
 /// facing the jump (<see cref="TrunkSampler.PlaceFacingWithin"/>: contacts on the level, within
 /// <see cref="Placement"/> of the old ones, the request's <see cref="QuerySettings.CanStand"/>), and the jump is
 /// steered again between the stances it uses (friction cones of the contacts it actually stands on, speed limits,
-/// trunk sweep). The character turns in place into the new takeoff and out of the new landing: a walker by a turn
+/// trunk sweep). A new landing is placed only where the character can turn back into the old one, or, when the
+/// jump after travels <see cref="MinDistance"/> or more and would leave the old one off its way, where that jump
+/// can be steered from and then faces its way (it goes on from the new landing). The character turns in place into
+/// the new takeoff and out of the new landing: a walker by a turn
 /// walk (<see cref="Walking.WalkSteering.Turn"/>, its feet re-stepping) or, when the walk before the jump can be
 /// steered to the new takeoff directly (the walk after it from the new landing), by that walk's own turn; a
 /// character that does not walk, a request that only jumps, or a walker on ground too steep to walk, by a hop in
@@ -127,7 +130,7 @@ internal sealed class JumpFacer
                 _hops = !_walking || Given(given, uncut);
             }
 
-            if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == 0 ? placeStart : null, i == path.Count - 1 ? placeGoal : null) is RoadmapNode landed)
+            if (move is Jump jump && Far(jump) && !Given(jump, unfaced) && !stop() && FaceOne(jump, current, result, rejected, i == 0 ? placeStart : null, i == path.Count - 1 ? placeGoal : null, i + 1 < path.Count ? path[i + 1] : null) is RoadmapNode landed)
             {
                 current = landed;
             }
@@ -258,7 +261,7 @@ internal sealed class JumpFacer
     /// out of it, and returns its landing; <c>null</c> (and <paramref name="result"/> unchanged) when no faced jump
     /// passes the checks.
     /// </summary>
-    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal)
+    private RoadmapNode? FaceOne(Jump jump, RoadmapNode current, List<Move> result, IReadOnlySet<(int From, int To)>? rejected, Func<float, float[], RoadmapNode?>? placeStart, Func<float, float[], RoadmapNode?>? placeGoal, Move? next)
     {
         float facing = Way(jump.Arc);
         bool turnOff = Off(current, facing) > TakeoffTurn;
@@ -271,9 +274,9 @@ internal sealed class JumpFacer
         IReadOnlyList<(int From, int To)> cut = Cut(jump);
 
         // The landing: the goal placed again (no moves: the path ends there), else turned where the old one stands
-        // (only if the path can turn back into the old one from it), else the old one. Each further landing is
-        // placed only when no takeoff steers to the ones before it.
-        var landings = new Candidates(turnOn ? Ends(placeGoal, facing, () => Placements(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut))) : []);
+        // (only if the path can turn back into the old one from it, or the jump after it can be steered from it
+        // instead), else the old one. Each further landing is placed only when no takeoff steers to the ones before it.
+        var landings = new Candidates(turnOn ? Ends(placeGoal, facing, () => Placements(jump.To, facing, -1f, node => Link(node, jump.To, rejected, cut)).Concat(GoingOn(jump.To, facing, next, rejected))) : []);
 
         // The takeoff: the start placed again (no moves: the path starts there), else turned where the old one stands
         // (or a little ahead, for a hop) such that the path can turn into it, else where the path stands.
@@ -646,6 +649,26 @@ internal sealed class JumpFacer
             ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }]
             : null;
     }
+
+    /// <summary>
+    /// No moves (<c>[]</c>) when <paramref name="next"/>, the move after a jump whose landing is turned to
+    /// <paramref name="landing"/>, is a jump that can be steered from there instead of from its own takeoff
+    /// (<see cref="Restart"/>: cones, speed limits, trunk sweep) and then reads as facing its way
+    /// (<see cref="Faces"/>): the path goes on from the turned landing without turning back. Otherwise <c>null</c>.
+    /// A landing at a brink may be one the body cannot absorb a hop in place onto, where the jump on from it passes.
+    /// </summary>
+    private List<Move>? GoOn(RoadmapNode landing, Move? next, IReadOnlySet<(int From, int To)>? rejected) =>
+        next is Jump && Restart(next, landing, rejected) is Jump restarted && Faces(landing, next.To, restarted.Arc) ? [] : null;
+
+    /// <summary>
+    /// Landings placed where <paramref name="old"/> stands (<see cref="Placements"/>) from which the jump after,
+    /// <paramref name="next"/>, goes on (<see cref="GoOn"/>), when that jump travels <see cref="MinDistance"/> or more
+    /// and would take off from <paramref name="old"/> more than <see cref="StillOffTakeoff"/> off its way: a landing
+    /// turned to face this jump then also serves the next. Tried once no landing that turns back into the old one
+    /// steers, since a jump going on from a new stance may not animate where the turn back would.
+    /// </summary>
+    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> GoingOn(RoadmapNode old, float facing, Move? next, IReadOnlySet<(int From, int To)>? rejected) =>
+        next is Jump after && Far(after) && Off(old, Way(after.Arc)) > StillOffTakeoff ? Placements(old, facing, -1f, node => GoOn(node, next, rejected)) : [];
 
     /// <summary>
     /// The moves turning from the turned landing <paramref name="from"/> back into the stance <paramref name="to"/> it

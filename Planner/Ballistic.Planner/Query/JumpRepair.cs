@@ -62,7 +62,8 @@ public sealed class JumpRepair
 
     /// <summary>
     /// Stances placed for the request after its search (root poses) on which the body could not crouch for a cut or
-    /// faced jump's takeoff, or absorb its landing: the next searches' facer places its next stance instead
+    /// faced jump's takeoff, or absorb its landing, or next to which a limb hit the level in flight (a spider's front
+    /// leg, free against a face it jumps up): the next searches' facer places its next stance instead
     /// (<see cref="QuerySettings.RefusedTurns"/>).
     /// </summary>
     public IReadOnlyList<RootPose> RefusedTurns => _refusedTurns;
@@ -291,13 +292,14 @@ public sealed class JumpRepair
 
     /// <summary>
     /// Adds the ends of <paramref name="move"/> the animator blames (the takeoff or landing its stance problems name:
-    /// the body cannot crouch or absorb there) that were placed for the request after its search (by the facer or the
+    /// the body cannot crouch or absorb there; or the one a limb hits the level next to, just after leaving it or
+    /// just before reaching it, <see cref="JumpProblem.Near"/>) that were placed for the request after its search (by the facer or the
     /// tightener) to <see cref="RefusedTurns"/>, and the new ones' ids to <paramref name="refused"/>; true when one is new.
     /// </summary>
     private bool RefuseTurns(Move move, IEnumerable<JumpProblem> problems, HashSet<int> refused)
     {
-        bool takeoff = problems.Any(p => p.Stance == ProblemStance.Takeoff);
-        bool landing = problems.Any(p => p.Stance == ProblemStance.Landing);
+        bool takeoff = problems.Any(p => p.Stance == ProblemStance.Takeoff || p.Near == ProblemStance.Takeoff);
+        bool landing = problems.Any(p => p.Stance == ProblemStance.Landing || p.Near == ProblemStance.Landing);
         bool refusedTakeoff = takeoff && move.From.Id >= _placedFrom && RefuseTurn(move.From.Pose);
         bool refusedLanding = landing && move.To.Id >= _placedFrom && RefuseTurn(move.To.Pose);
         if (refusedTakeoff)

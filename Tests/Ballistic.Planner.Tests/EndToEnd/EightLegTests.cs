@@ -74,6 +74,29 @@ public sealed class EightLegTests
     }
 
     /// <summary>
+    /// Jumping only from farther out, the spider hops to the platform's face and leaps up it, each jump of 1 m or more
+    /// taking off within 30° and landing within 45° of its way, as the animator's eye reads the GLB. Two changes were
+    /// needed. Its front legs, free beside the face at a takeoff turned toward it, hit the face in the first hundredth
+    /// of a second of the leap ("l1 passes through the level in flight (0.008 s after takeoff)"); such a hit, in the
+    /// first tenth of a flight, is now the takeoff's (<c>JumpProblem.Near</c>), so that turned takeoff is refused and
+    /// the next one placed, where before the jump was given back whole and, failing again, flown as searched: leaving
+    /// 171° off its way, its landing as far off. And the leap's landing on the platform, where no hop in place turns the
+    /// body back into the stance it replaces (the absorb fails at the brink), is now placed where the jump after it can
+    /// be steered from instead, when that jump would otherwise leave off its way (<c>JumpFacer.GoingOn</c>): before,
+    /// the last jump along the platform took off 107° off its way.
+    /// </summary>
+    [TestCase(-0.4f, 0.3f, 1.9f, -0.1f)]
+    [TestCase(-1.3f, 0.9f, 3.1f, -0.8f)]
+    public void JumpingOnlyFromFartherOutTheSpiderFacesEveryJumpUpAndAlongThePlatform(float x0, float z0, float x1, float z1)
+    {
+        (AnimatedPlan plan, AnimatorEye.Look look) = Plan("platform", Platform(), new(x0, 0f, z0), new(x1, 0.6f, z1), Locomotion.Jump);
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.That(look.Facing.Seen, Is.Not.Empty, "jumps of 1 m or more are read");
+        Assert.That(look.Facing.Passes, Is.True, look.Facing.ToString());
+        Assert.That(plan.Result.Moves.OfType<Jump>().Any(j => j.Takeoff.ContactCentre.Y < 0.1f && j.Landing.ContactCentre.Y > 0.5f), Is.True, "it leaps up the face");
+    }
+
+    /// <summary>
     /// Up onto the platform and a short walk on: the spider lands with its trunk 0.22 m past the edge, where its hind
     /// legs, reaching 0.6 m behind their hips, have their nominal footholds over the floor below; they are set down
     /// nearer the hip, on the platform (<c>WalkGait.FarAlong</c>), so the walk is animated and nothing is set aside.

@@ -180,12 +180,7 @@ public sealed class StanceRepairTests
     [TestCase(false, TestName = "A walk into a turned takeoff failing beside a jump that fails otherwise gives its jump back")]
     public void AWalkIntoATakeoffRefusedNowDoesNotGiveItsJumpBack(bool crouch)
     {
-        PlanResult best = BestAsSearched();
-        Jump jump = best.Jumps[0];
-        (int, int) id = (jump.From.Id, jump.To.Id);
-        int placed = 1000;
-        var repair = new JumpRepair(placed);
-        var takeoff = new RoadmapNode(placed, jump.From.Pose, jump.From.Cone, jump.From.Contacts);
+        (Jump jump, (int, int) id, JumpRepair repair, RoadmapNode takeoff) = TurnedTakeoff();
         Vector3 start = jump.From.ContactCentre - new Vector3(1f, 0f, 0f);
         var before = new RoadmapNode(5, new Ballistic.Planner.Geometry.RootPose(jump.From.Pose.Position - new Vector3(1f, 0f, 0f), jump.From.Pose.Rotation), jump.From.Cone, jump.From.Contacts);
         Move[] path = [new Walk(before, takeoff, [start, jump.From.ContactCentre], 1f) { CutFrom = [id] }, new Jump(takeoff, jump.To, jump.Arc) { CutFrom = [id] }];
@@ -197,5 +192,40 @@ public sealed class StanceRepairTests
             Assert.That(repair.RefusedTurns.Any(r => JumpRepair.IsRefused(r, takeoff.Pose)), Is.EqualTo(crouch), "the turned takeoff refused");
             Assert.That(repair.Uncut.Contains(id), Is.EqualTo(!crouch), "the jump given back whole");
         });
+    }
+
+    /// <summary>
+    /// A faced jump from a placed takeoff on which a limb hits the level in flight: when the hit is next to the takeoff
+    /// (in the first tenth of the flight: a spider's front leg, free against the face it jumps up, swept into it as the
+    /// body rises), the takeoff is refused and the next search's facer places another, the jump not given back whole;
+    /// a hit mid-flight is the jump's own and gives the jump back, the takeoff not refused. Before, every such hit
+    /// gave the jump back and the spider, after two rounds, leapt up the face as searched, backwards.
+    /// </summary>
+    [TestCase(true, TestName = "A limb hitting the level just after a turned takeoff refuses that takeoff")]
+    [TestCase(false, TestName = "A limb hitting the level mid-flight gives the turned jump back whole")]
+    public void ALimbHittingTheLevelNextToATurnedTakeoffRefusesIt(bool nearTakeoff)
+    {
+        (Jump jump, (int, int) id, JumpRepair repair, RoadmapNode takeoff) = TurnedTakeoff();
+        Move[] path = [new Jump(takeoff, jump.To, jump.Arc) { CutFrom = [id] }];
+        var hit = new JumpProblem(0, "l1 passes through the level in flight (test) whatever pose it takes") { Near = nearTakeoff ? ProblemStance.Takeoff : ProblemStance.None };
+        var animation = new JumpAnimation(CharacterPresets.Model("skeleton"), path, [], [], [], [hit], 0, 0);
+        repair.Reject(path, animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(repair.RefusedTurns.Any(r => JumpRepair.IsRefused(r, takeoff.Pose)), Is.EqualTo(nearTakeoff), "the turned takeoff refused");
+            Assert.That(repair.Uncut.Contains(id), Is.EqualTo(!nearTakeoff), "the jump given back whole");
+            Assert.That(repair.NoTakeoffs, Is.Empty, "no stance set aside for every jump");
+        });
+    }
+
+    /// <summary>
+    /// The first jump of the best path as searched, its id, a repair whose placed stances start at id 1000, and a
+    /// takeoff placed there (id 1000) standing where the jump's own does, as the facer places a turned one.
+    /// </summary>
+    private static (Jump Jump, (int, int) Id, JumpRepair Repair, RoadmapNode Takeoff) TurnedTakeoff()
+    {
+        Jump jump = BestAsSearched().Jumps[0];
+        const int placed = 1000;
+        return (jump, (jump.From.Id, jump.To.Id), new JumpRepair(placed), new RoadmapNode(placed, jump.From.Pose, jump.From.Cone, jump.From.Contacts));
     }
 }
