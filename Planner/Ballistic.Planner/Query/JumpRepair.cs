@@ -13,7 +13,8 @@ namespace Ballistic.Planner.Query;
 /// walks and jumps falls back to jumps only once its walks failed to animate in <see cref="WalkRounds"/> rounds: walking
 /// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds. Likewise
 /// a move cut from a jump (<see cref="Move.CutFrom"/>: cut down, or turned to face its way) that does not animate
-/// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned. A walk whose problems the animator places on its path keeps
+/// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned
+/// (counted afresh once the request searches jumps only). A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
 /// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
 /// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
@@ -89,8 +90,15 @@ public sealed class JumpRepair
     /// <summary>Rounds so far in which a move cut from a jump did not animate cleanly.</summary>
     public int CutFailures { get; private set; }
 
-    /// <summary>False once moves cut from jumps failed to animate in <see cref="CutRounds"/> rounds: the next searches cut no jump.</summary>
-    public bool CuttingAllowed => CutFailures < CutRounds;
+    /// <summary>
+    /// False once moves cut from jumps failed to animate in <see cref="CutRounds"/> rounds: the next searches cut no
+    /// jump. Rounds counted while the request still walked do not count once it searches jumps only
+    /// (<see cref="WalksAllowed"/> false): its jumps are turned to face their way again, by hops, for as many rounds.
+    /// </summary>
+    public bool CuttingAllowed => CutFailures - _cutFailuresWalking < CutRounds;
+
+    /// <summary>The rounds whose cut moves failed before the request searched jumps only (0 while it walks).</summary>
+    private int _cutFailuresWalking;
 
     /// <summary>Ground points (world metres) where a walk's body could not walk, in the order found: the next searches hop over them.</summary>
     public IReadOnlyList<Vector3> HopSpots => _spots;
@@ -284,8 +292,15 @@ public sealed class JumpRepair
             }
         }
 
+        bool walked = WalksAllowed;
         WalkFailures += walkFailed ? 1 : 0;
         CutFailures += cutFailed ? 1 : 0;
+        if (walked && !WalksAllowed)
+        {
+            // From now on jumps only: the cut and turned moves that failed were made for walks.
+            _cutFailuresWalking = CutFailures;
+        }
+
         HopFailures += hopped ? 1 : 0;
         return added;
     }

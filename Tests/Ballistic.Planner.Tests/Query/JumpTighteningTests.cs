@@ -158,4 +158,51 @@ public sealed class JumpTighteningTests
         Assert.That(repair.Adjust(settings).PreferFacedJumps, Is.True, "the searches prefer jumps that already face their way instead");
         Assert.That(repair.IsExhausted(JumpRepair.CutRounds, 1), Is.False, "cut rounds do not count against the searches");
     }
+
+    /// <summary>
+    /// A walking request whose cut and turned moves failed in <see cref="JumpRepair.CutRounds"/> rounds stops cutting and
+    /// turning; once its walks have failed too and it searches jumps only, its jumps are turned to face their way again
+    /// (by hops) for as many rounds, since the moves that failed were made for walks. Before, a spider on thin slabs fell
+    /// back to jumps only with facing off, and its first jump left 43° off its way.
+    /// </summary>
+    [Test]
+    public void AfterFallingBackToJumpsOnlyTheJumpsAreTurnedAgainForTheirOwnRounds()
+    {
+        (PlanningScene scene, Vector3 from, Vector3 to, Roadmap roadmap, JumpAnimator real) = Desert.Value;
+        PlanResult path = new PathQuery(scene, roadmap).Plan(from, to, new QuerySettings { CanStand = real.CanStand });
+        Assume.That(path.Moves.Where(m => m.CutFrom.Count > 0), Is.Not.Empty);
+        Assume.That(path.Moves.Where(m => m is Walk && m.CutFrom.Count == 0), Is.Not.Empty);
+        var repair = new JumpRepair();
+        var settings = new QuerySettings();
+        JumpAnimation cutRefused = new RefusingAnimator(new SimpleMoveAnimator(real), m => m.CutFrom.Count > 0, "cannot cut here").Animate(path.Moves);
+        JumpAnimation walkRefused = new RefusingAnimator(new SimpleMoveAnimator(real), m => m is Walk && m.CutFrom.Count == 0, "cannot walk here").Animate(path.Moves);
+        for (int round = 0; round < JumpRepair.CutRounds; round++)
+        {
+            repair.Reject(path.Moves, cutRefused);
+        }
+
+        bool whileWalking = repair.CuttingAllowed;
+        for (int round = 0; round < JumpRepair.WalkRounds; round++)
+        {
+            repair.Reject(path.Moves, walkRefused);
+        }
+
+        QuerySettings jumping = repair.Adjust(settings);
+        bool jumpsOnlyFirst = repair.CuttingAllowed;
+        for (int round = 0; round < JumpRepair.CutRounds; round++)
+        {
+            repair.Reject(path.Moves, cutRefused);
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(whileWalking, Is.False, "cutting stops while the request walks");
+            Assert.That(repair.WalksAllowed, Is.False);
+            Assert.That(jumping.Locomotion, Is.EqualTo(Locomotion.Jump));
+            Assert.That(jumpsOnlyFirst, Is.True, "jumps only: turned again");
+            Assert.That(jumping.FaceJumps, Is.True);
+            Assert.That(repair.CuttingAllowed, Is.False, "until its own rounds fail too");
+            Assert.That(repair.Adjust(settings).FaceJumps, Is.False);
+        });
+    }
 }
