@@ -651,14 +651,14 @@ internal sealed class JumpFacer
     }
 
     /// <summary>
-    /// No moves (<c>[]</c>) when <paramref name="next"/>, the move after a jump whose landing is turned to
-    /// <paramref name="landing"/>, is a jump that can be steered from there instead of from its own takeoff
+    /// No moves (<c>[]</c>) when <paramref name="next"/>, the jump after one whose landing is turned to
+    /// <paramref name="landing"/>, can be steered from there instead of from its own takeoff
     /// (<see cref="Restart"/>: cones, speed limits, trunk sweep) and then reads as facing its way
     /// (<see cref="Faces"/>): the path goes on from the turned landing without turning back. Otherwise <c>null</c>.
     /// A landing at a brink may be one the body cannot absorb a hop in place onto, where the jump on from it passes.
     /// </summary>
-    private List<Move>? GoOn(RoadmapNode landing, Move? next, IReadOnlySet<(int From, int To)>? rejected) =>
-        next is Jump && Restart(next, landing, rejected) is Jump restarted && Faces(landing, next.To, restarted.Arc) ? [] : null;
+    private List<Move>? GoOn(RoadmapNode landing, Jump next, IReadOnlySet<(int From, int To)>? rejected) =>
+        Restart(next, landing, rejected) is Jump restarted && Faces(landing, next.To, restarted.Arc) ? [] : null;
 
     /// <summary>
     /// Landings placed where <paramref name="old"/> stands (<see cref="Placements"/>) from which the jump after,
@@ -668,7 +668,7 @@ internal sealed class JumpFacer
     /// steers, since a jump going on from a new stance may not animate where the turn back would.
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> GoingOn(RoadmapNode old, float facing, Move? next, IReadOnlySet<(int From, int To)>? rejected) =>
-        next is Jump after && Far(after) && Off(old, Way(after.Arc)) > StillOffTakeoff ? Placements(old, facing, -1f, node => GoOn(node, next, rejected)) : [];
+        next is Jump after && Far(after) && Off(old, Way(after.Arc)) > StillOffTakeoff ? Placements(old, facing, -1f, node => GoOn(node, after, rejected)) : [];
 
     /// <summary>
     /// The moves turning from the turned landing <paramref name="from"/> back into the stance <paramref name="to"/> it
