@@ -14,7 +14,9 @@ namespace Ballistic.Planner.Query;
 /// is an improvement of the route, never a reason for a request to fail where the jump planner alone succeeds. Likewise
 /// a move cut from a jump (<see cref="Move.CutFrom"/>: cut down, or turned to face its way) that does not animate
 /// gives the jump back whole and as searched, and after <see cref="CutRounds"/> such rounds no jump is cut or turned
-/// (counted afresh once the request searches jumps only). A walk whose problems the animator places on its path keeps
+/// (counted afresh once the request searches jumps only); but a walk between a stance placed for a turned jump and one
+/// the search gave, failing only far from the placed one, hops over where it failed and keeps the jump turned
+/// (the searched walk would step there alike). A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
 /// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
 /// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
@@ -205,6 +207,15 @@ public sealed class JumpRepair
         foreach (IGrouping<int, JumpProblem> problems in groups)
         {
             Move move = path[problems.Key];
+            if (move is Walk away && move.CutFrom.Count > 0 && HoppingAllowed && AwayFromTurn(away, problems) && AddSpots(away, problems))
+            {
+                // A walk made from a turned stance that fails far from it, toward a stance the search gave: the same
+                // walk would fail there whatever the turn; it hops over the spot, and its jump stays turned.
+                hopped = true;
+                added++;
+                continue;
+            }
+
             if (move.CutFrom.Count > 0)
             {
                 cutFailed = true;
@@ -353,6 +364,30 @@ public sealed class JumpRepair
     }
 
     /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="HopSpots"/>; true when each is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
+    /// <summary>
+    /// True when <paramref name="walk"/> leaves (reaches) a stance placed for the request and ends (starts) on one the
+    /// search gave, and every one of its problems lies on its path at least <see cref="AwayShare"/> of its length and
+    /// <see cref="AwayLeast"/> from the placed end: near the other end, where the walk steps as the searched one would.
+    /// </summary>
+    private bool AwayFromTurn(Walk walk, IEnumerable<JumpProblem> problems)
+    {
+        bool placedStart = walk.From.Id >= _placedFrom;
+        bool placedEnd = walk.To.Id >= _placedFrom;
+        if (placedStart == placedEnd)
+        {
+            return false;
+        }
+
+        float least = MathF.Max(AwayLeast, AwayShare * walk.Length);
+        return problems.All(p => p.IsLocated && (placedStart ? p.Along : walk.Length - p.Along) >= least);
+    }
+
+    /// <summary>Least share of a walk's length between its problems and the placed stance it leaves or reaches, for <see cref="AwayFromTurn"/>.</summary>
+    private const float AwayShare = 0.5f;
+
+    /// <summary>Least distance (metres, along the walk) between its problems and the placed stance it leaves or reaches, for <see cref="AwayFromTurn"/>.</summary>
+    private const float AwayLeast = 0.5f;
+
     private bool AddSpots(Walk walk, IEnumerable<JumpProblem> problems)
     {
         Vector3[] found = [.. problems.Select(p => walk.PointAt(p.Along))];

@@ -219,6 +219,37 @@ public sealed class StanceRepairTests
     }
 
     /// <summary>
+    /// A walk from a turned stance (placed for a faced jump, so made from that jump) to a stance the search gave,
+    /// failing far along it (past half its length and 0.5 m), where it steps as the searched walk would: it hops over
+    /// that spot and the jump stays turned. Before, the jump was given back whole for it, and the spider on the
+    /// holes-and-debris level, whose walk into its goal failed in its last centimetre whichever stance it left, leapt
+    /// 157° off its way. Failing near the turned stance, the walk still gives its jump back.
+    /// </summary>
+    [TestCase(1.9f, true, TestName = "A walk from a turned stance failing far from it hops over the spot and keeps its jump turned")]
+    [TestCase(0.3f, false, TestName = "A walk from a turned stance failing next to it gives its jump back whole")]
+    public void AWalkFromATurnedStanceFailingFarFromItHopsOverTheSpot(float along, bool far)
+    {
+        (Jump jump, (int, int) id, JumpRepair repair, RoadmapNode turned) = TurnedTakeoff();
+        Vector3 start = turned.ContactCentre;
+        var searched = new RoadmapNode(5, new Ballistic.Planner.Geometry.RootPose(turned.Pose.Position + new Vector3(2f, 0f, 0f), turned.Pose.Rotation), turned.Cone, turned.Contacts);
+        var walk = new Walk(turned, searched, [start, start + new Vector3(2f, 0f, 0f)], 1f) { CutFrom = [id] };
+        Move[] path = [walk];
+        var animation = new JumpAnimation(CharacterPresets.Model("skeleton"), path, [], [], [], [new JumpProblem(0, "l2 cannot swing to its next foothold (test)", along)], 0, 0);
+        repair.Reject(path, animation);
+        Assert.Multiple(() =>
+        {
+            Assert.That(repair.HopSpots, Has.Count.EqualTo(far ? 1 : 0), "the spot hopped over");
+            Assert.That(repair.Uncut.Contains(id), Is.EqualTo(!far), "the jump given back whole");
+            Assert.That(repair.CutFailures, Is.EqualTo(far ? 0 : 1), "a round that cut rounds count");
+            Assert.That(repair.Excluded, Is.Empty, "nothing set aside for every search");
+        });
+        if (far)
+        {
+            Assert.That(Vector3.Distance(repair.HopSpots[0], walk.PointAt(along)), Is.LessThan(1e-4f), "where it failed");
+        }
+    }
+
+    /// <summary>
     /// The first jump of the best path as searched, its id, a repair whose placed stances start at id 1000, and a
     /// takeoff placed there (id 1000) standing where the jump's own does, as the facer places a turned one.
     /// </summary>
