@@ -284,7 +284,7 @@ internal sealed class JumpFacer
         // land turned part of the way instead, facing as far toward this jump as its own landing allows.
         _relanded = null;
         Jump? landed = result.Count > 0 && result[^1] is Jump b && Same(b.To, current) && (Far(b) || Searched(b)) ? b : null;
-        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut)).Concat(Relandings(landed, current, facing, rejected))) : []);
+        var takeoffs = new Candidates(turnOff ? Ends(placeStart, facing, () => Placements(jump.From, facing, 1f, node => Link(current, node, rejected, cut)).Concat(Relandings(landed, current, facing, rejected, cut))) : []);
 
         // Steer the faced jump: the most turned pair first, a turned end given up only when no pair with it steers.
         Jump? faced = null;
@@ -468,10 +468,11 @@ internal sealed class JumpFacer
     /// at most <see cref="StillOffLanding"/> off its way and, when it then travels <see cref="MinDistance"/> or more,
     /// takes off at most <see cref="StillOffTakeoff"/> off it unless it did before (a short hop steered onto a stance
     /// a little farther must not become a jump leaving backwards); each with no turn in (the jump before lands on it:
-    /// <see cref="_relanded"/>). The two jumps then turn the body between them (a quadruped hopping onto a stair's
+    /// <see cref="_relanded"/>), made from both jumps (<paramref name="cut"/>: the jump being faced), so that a repair
+    /// giving it back gives back the turn too, not only the jump before. The two jumps then turn the body between them (a quadruped hopping onto a stair's
     /// tread lands facing up the flight, where it could not turn round on the tread).
     /// </summary>
-    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected)
+    private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
     {
         if (before is null)
         {
@@ -497,7 +498,8 @@ internal sealed class JumpFacer
             yield break;
         }
 
-        Jump landing = new Jump(before.From, node, r.Arc) with { CutFrom = before.CutFrom.Count > 0 ? before.CutFrom : [(before.From.Id, before.To.Id)], HoppedFrom = before.HoppedFrom };
+        IReadOnlyList<(int From, int To)> own = before.CutFrom.Count > 0 ? before.CutFrom : [(before.From.Id, before.To.Id)];
+        Jump landing = new Jump(before.From, node, r.Arc) with { CutFrom = [.. own.Union(cut)], HoppedFrom = before.HoppedFrom };
 
         _relanded = (node, landing);
         yield return (node, []);
