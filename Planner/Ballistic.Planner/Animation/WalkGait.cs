@@ -2550,36 +2550,74 @@ internal sealed class WalkGait
         private Holding? Foothold(int l, int from, int to, int[] steps, Vector3 ground, Vector3 along, Vector3 lateral, Vector3 heading, float slope, GroundSlopeTest walkable, bool fitAcross, bool inPlace, ref (Vector3 Point, Vector3 Normal)? grounded)
         {
             RigLimb limb = _model.Limbs[l];
+            var brinks = new Dictionary<float, float>();
             foreach ((float share, float shift) in FootholdTries)
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
+                if (At(column, false, ref grounded, out bool noGround) is Holding found)
+                {
+                    // Set down inward of a spot with no ground (past a ledge's edge, over a hole): nearer that edge,
+                    // as near as a foothold is found by halving the way out to it, the foot stands closer to its place.
+                    if (brinks.TryGetValue(shift, out float outer) && outer > share)
+                    {
+                        float inner = share;
+                        for (int k = 0; k < BrinkHalvings; k++)
+                        {
+                            float middle = 0.5f * (inner + outer);
+                            if (At(ground + along + (lateral * middle) + (heading * (shift * _step)), true, ref grounded, out _) is Holding nearer)
+                            {
+                                (found, inner) = (nearer, middle);
+                            }
+                            else
+                            {
+                                outer = middle;
+                            }
+                        }
+                    }
+
+                    return found;
+                }
+
+                if (noGround)
+                {
+                    brinks[shift] = share;
+                }
+            }
+
+            return null;
+
+            // The foothold at the ground under column, if the foot can hold it (in place as asked, or either way with
+            // anyPlace); noGround: no ground the foot could reach there.
+            Holding? At(Vector3 column, bool anyPlace, ref (Vector3 Point, Vector3 Normal)? seen, out bool noGround)
+            {
                 float reach = _stepHeight + (slope * new Vector2(column.X - ground.X, column.Z - ground.Z).Length());
                 float top = ground.Y + reach + 0.05f;
-                if (!_gait._scene.Bvh.Raycast(new Vector3(column.X, top, column.Z), -Vector3.UnitY, (2f * reach) + 0.1f, out RayHit hit)
-                    || MathF.Abs(hit.Point.Y - ground.Y) > reach
+                noGround = !_gait._scene.Bvh.Raycast(new Vector3(column.X, top, column.Z), -Vector3.UnitY, (2f * reach) + 0.1f, out RayHit hit)
+                    || MathF.Abs(hit.Point.Y - ground.Y) > reach;
+                if (noGround
                     || _gait._scene.Surfaces.SurfaceOf(hit.Triangle) < 0
                     || !limb.Filter.Accepts(hit.Normal)
                     || hit.Normal.Y <= 0f
                     || !walkable.Accepts(hit.Normal, heading)
                     || !Reachable(ground, hit.Point, slope))
                 {
-                    continue;
+                    return null;
                 }
 
-                grounded ??= (hit.Point, hit.Normal);
-                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && InPlace(l, onTread, steps) == inPlace && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
+                seen ??= (hit.Point, hit.Normal);
+                if (OnTread(hit.Point, heading, fitAcross) is (Vector3 onTread, Vector3 treadNormal) && (anyPlace || InPlace(l, onTread, steps) == inPlace) && CanHold(l, onTread, treadNormal, steps) is float[] fitted)
                 {
                     return new Holding(from, to, onTread, treadNormal, Settle: false, fitted);
                 }
 
-                if (InPlace(l, hit.Point, steps) == inPlace && CanHold(l, hit.Point, hit.Normal, steps) is float[] seed)
-                {
-                    return new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed);
-                }
+                return (anyPlace || InPlace(l, hit.Point, steps) == inPlace) && CanHold(l, hit.Point, hit.Normal, steps) is float[] seed
+                    ? new Holding(from, to, hit.Point, hit.Normal, Settle: false, seed)
+                    : null;
             }
-
-            return null;
         }
+
+        /// <summary>Times the way from a foothold found inward of a spot with no ground out to that spot is halved, looking for one nearer the edge (<c>Foothold</c>).</summary>
+        private const int BrinkHalvings = 2;
 
         /// <summary>
         /// True when the ground from <paramref name="ground"/> (the walk's, under the trunk) out to a foothold at

@@ -162,6 +162,40 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// The spider walking 4 m beside a gap 0.45 m to its right (its right legs' places over it) sets its right feet
+    /// down near the gap's edge, and the eye passes its feet under its hips: held, within
+    /// <see cref="AnimatorEye.SidewaysShare"/> L of where the ground toward their places ends (0.33 L at worst); a foot
+    /// swinging over a gap with no ground at its place either is not measured against that place. Before, the gait
+    /// tried footholds a quarter of the foot's sideways reach apart and set one 0.51 L in from the edge (on the
+    /// holes-and-debris level, 13 cm from a hole where 3 cm held), and the eye took a foot over a hole for one that
+    /// should stand at its place (0.63 L off there). The same clip read with the gap filled fails, its feet drawn in
+    /// for nothing.
+    /// </summary>
+    [Test]
+    public void ASpiderWalkingBesideAGapKeepsItsFeetAtTheEdge()
+    {
+        const float Edge = 0.45f;
+        Level Floors(bool gap) => (gap
+            ? new LevelBuilder("gap").AddFloor(-4f, -4f, 4f, Edge, 0f).AddFloor(-4f, 1.5f, 4f, 4f, 0f)
+            : new LevelBuilder("filled").AddFloor(-4f, -4f, 4f, 4f, 0f)).Build();
+        WalkWorld world = WalkWorld.Create(Floors(gap: true), "spider");
+        RoadmapNode from = world.Stance(new Vector3(-2f, 0f, 0f), 0, Vector3.UnitX);
+        RoadmapNode to = world.Stance(new Vector3(2f, 0f, 0f), 1, Vector3.UnitX);
+        JumpAnimation animation = world.Animator.Animate([world.Walk(from, to)]);
+        Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
+        AnimatorEye eye = AnimatorEye.Read(AnimatedGlbWriter.ToBytes(animation), world.Model);
+        AnimatorEye.Look beside = eye.Measure(animation, world.Scene);
+        AnimatorEye.Look filled = eye.Measure(animation, PlanningScene.Create(Floors(gap: false), world.Scene.Character));
+        TestContext.Out.WriteLine($"{beside.UnderHips} / {filled.UnderHips}");
+        Assert.Multiple(() =>
+        {
+            Assert.That(animation.ContactPhases.Select(p => p.Position.Z), Has.All.LessThanOrEqualTo(Edge + 0.001f), "every foothold short of the gap");
+            Assert.That(beside.UnderHips.Passes, Is.True, beside.UnderHips.ToString());
+            Assert.That(filled.UnderHips.Passes, Is.False, "feet drawn in on ground that goes on");
+        });
+    }
+
+    /// <summary>
     /// The eye sees a body sunk into the ground: the same clip with the root 5 cm lower all along has vertices of the
     /// standing feet about 5 cm inside the level, where the clip as animated has none beyond the tolerance.
     /// </summary>

@@ -850,7 +850,8 @@ internal sealed class AnimatorEye
     /// How far (metres, on the ground plane) from <paramref name="foot"/> toward <paramref name="place"/> the ground the
     /// foot stands on ends, or <c>null</c> when it goes on to the place: read every <see cref="BrinkStep"/> m, it ends
     /// where a wall rises in the way (a ray at a tenth of a leg above the ground hits the level) or where the ground
-    /// below drops or rises by more than a tenth of a leg from the last sample (an edge, a gap).
+    /// below drops or rises by more than a tenth of a leg from the last sample (an edge, a gap). A foot over no ground
+    /// (swinging across a gap) whose place is over no ground either: 0 (its place is nowhere to stand).
     /// </summary>
     private float? GroundEnds(TriangleBvh level, Vector3 foot, Vector3 place)
     {
@@ -858,9 +859,16 @@ internal sealed class AnimatorEye
         across.Y = 0f;
         float distance = across.Length();
         float lift = 0.1f * Leg;
-        if (distance < 1e-4f || !level.Raycast(foot + new Vector3(0f, lift, 0f), -Vector3.UnitY, 2f * Leg, out RayHit under))
+        if (distance < 1e-4f)
         {
             return null;
+        }
+
+        if (!level.Raycast(foot + new Vector3(0f, lift, 0f), -Vector3.UnitY, 2f * Leg, out RayHit under))
+        {
+            // A foot swinging over a gap: where its place is over the gap too (no ground within two legs below it
+            // either), there is no ground there for it to stand on, and the foot may be anywhere short of it.
+            return level.Raycast(new Vector3(place.X, foot.Y + lift, place.Z), -Vector3.UnitY, 2f * Leg, out _) ? null : 0f;
         }
 
         across /= distance;
