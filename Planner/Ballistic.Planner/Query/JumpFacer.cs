@@ -469,8 +469,8 @@ internal sealed class JumpFacer
     /// takes off at most <see cref="StillOffTakeoff"/> off it unless it did before (a short hop steered onto a stance
     /// a little farther must not become a jump leaving backwards); each with no turn in (the jump before lands on it:
     /// <see cref="_relanded"/>), made from both jumps (<paramref name="cut"/>: the jump being faced), so that a repair
-    /// giving it back gives back the turn too, not only the jump before. The two jumps then turn the body between them (a quadruped hopping onto a stair's
-    /// tread lands facing up the flight, where it could not turn round on the tread).
+    /// giving it back gives back the turn too, not only the jump before. The two jumps then turn the body between them
+    /// (a quadruped hopping onto a stair's tread lands facing up the flight, where it could not turn round on the tread).
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Relandings(Jump? before, RoadmapNode current, float facing, IReadOnlySet<(int From, int To)>? rejected, IReadOnlyList<(int From, int To)> cut)
     {

@@ -363,7 +363,6 @@ public sealed class JumpRepair
         _walksSetAside += move is Walk ? 1 : 0;
     }
 
-    /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="HopSpots"/>; true when each is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
     /// <summary>
     /// True when <paramref name="walk"/> leaves (reaches) a stance placed for the request and ends (starts) on one the
     /// search gave, and every one of its problems lies on its path at least <see cref="AwayShare"/> of its length and
@@ -388,6 +387,7 @@ public sealed class JumpRepair
     /// <summary>Least distance (metres, along the walk) between its problems and the placed stance it leaves or reaches, for <see cref="AwayFromTurn"/>.</summary>
     private const float AwayLeast = 0.5f;
 
+    /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="HopSpots"/>; true when each is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
     private bool AddSpots(Walk walk, IEnumerable<JumpProblem> problems)
     {
         Vector3[] found = [.. problems.Select(p => walk.PointAt(p.Along))];
