@@ -2550,7 +2550,7 @@ internal sealed class WalkGait
         private Holding? Foothold(int l, int from, int to, int[] steps, Vector3 ground, Vector3 along, Vector3 lateral, Vector3 heading, float slope, GroundSlopeTest walkable, bool fitAcross, bool inPlace, ref (Vector3 Point, Vector3 Normal)? grounded)
         {
             RigLimb limb = _model.Limbs[l];
-            var brinks = new Dictionary<float, float>();
+            Dictionary<float, float>? brinks = null; // per shift along, the last share tried there with no ground (made only near a drop)
             foreach ((float share, float shift) in FootholdTries)
             {
                 Vector3 column = ground + along + (lateral * share) + (heading * (shift * _step));
@@ -2558,7 +2558,7 @@ internal sealed class WalkGait
                 {
                     // Set down inward of a spot with no ground (past a ledge's edge, over a hole): nearer that edge,
                     // as near as a foothold is found by halving the way out to it, the foot stands closer to its place.
-                    if (brinks.TryGetValue(shift, out float outer) && outer > share)
+                    if (brinks is not null && brinks.TryGetValue(shift, out float outer) && outer > share)
                     {
                         float inner = share;
                         for (int k = 0; k < BrinkHalvings; k++)
@@ -2580,7 +2580,7 @@ internal sealed class WalkGait
 
                 if (noGround)
                 {
-                    brinks[shift] = share;
+                    (brinks ??= [])[shift] = share;
                 }
             }
 
