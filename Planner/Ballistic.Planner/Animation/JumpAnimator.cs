@@ -35,6 +35,13 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
     /// </summary>
     private const float Retract = 0.25f;
 
+    /// <summary>
+    /// A limb that passes the apex within this share of its time in the air from letting go or from taking hold (or
+    /// is in the air on one side of the apex only) steps across from its takeoff to its landing contact instead of
+    /// reaching its flight pose (<see cref="StepAcross"/>).
+    /// </summary>
+    private const float AcrossShare = 0.25f;
+
     /// <summary>Heights (metres) the effector is lifted by at mid-step, tried in order until the swing is clear.</summary>
     private static readonly float[] StepLifts = [0.06f, 0.12f, 0.2f];
 
@@ -849,7 +856,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         // A limb that still passes through the level, retracted quickly or not, is lifted straight off its takeoff
         // contact first (LiftOff), then retracted quickly from there: a foot on a stair's tread, a riser just ahead of
         // its toes, rises above the riser before the body's forward motion carries it on.
-        var lifted = new Dictionary<int, float[]>[limbs];
+        var lifted = new Dictionary<int, float[]>?[limbs];
         var leaves = (int[])breaks.Clone();
         for (int l = 0; l < limbs; l++)
         {
@@ -882,7 +889,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 return;
             }
 
-            float[] from = leaves[l] > breaks[l] ? lifted[l][leaves[l]] : held[l][breaks[l]];
+            float[] from = leaves[l] > breaks[l] ? lifted[l]![leaves[l]] : held[l][breaks[l]];
             float[] to = held[l][makes[l]];
             float[] top = limbApex[l];
             if (quick[l])
@@ -913,6 +920,24 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         var hit = new bool[limbs];
         int attempts = 3 * (MaxResamples + 1);
         var stuck = new List<int>();
+
+        // A limb in the air on one side of the apex only, holding its takeoff contact until the apex or taking its
+        // landing contact before it (a spider's leg on a low hop), or passing the apex in the first or last
+        // AcrossShare of its time in the air, steps across: its effector on a lifted curve from the one contact to the
+        // other (StepAcross), as a walking foot swings, neither swept low between the two nor flung up to its flight
+        // pose and back down within a few hundredths of a second. Where that passes through the level, it moves as
+        // any other limb.
+        var steppingAcross = new bool[limbs];
+        for (int l = 0; l < limbs; l++)
+        {
+            float share = (apex - breaks[l]) / (float)Math.Max(1, makes[l] - breaks[l]);
+            if ((share <= AcrossShare || share >= 1f - AcrossShare) && StepAcross(arc, takeoff, landing, l, breaks[l], makes[l], held[l], h, steps) is { } across)
+            {
+                lifted[l] = across;
+                steppingAcross[l] = true;
+            }
+        }
+
         for (int n = 0; n < attempts && pending.Count > 0; n++)
         {
             // Re-sampling: the tucked and contact poses first, then random samples of the limb's database; the
@@ -1029,10 +1054,16 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 }
             }
 
+            // A limb stepping across that hits the level moves as any other instead, from the next attempt on.
+            foreach (int l in pending.Where(l => steppingAcross[l] && hit[l]))
+            {
+                (lifted[l], steppingAcross[l]) = (null, false);
+            }
+
             pending.RemoveAll(l => !hit[l]);
         }
 
-        if (quick.Any(q => q))
+        if (quick.Any(q => q) || steppingAcross.Any(a => a))
         {
             // The quick limbs' corners become frames, so that the clip's linear interpolation between frames moves
             // them as was checked.
@@ -1279,6 +1310,53 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         return lift;
+    }
+
+    /// <summary>
+    /// Limb <paramref name="l"/>'s angles on every fine step between letting go of its takeoff contact (step
+    /// <paramref name="from"/>) and taking its landing contact (step <paramref name="to"/>), for a limb in the air on
+    /// one side of the apex only (or passing it near one end: <see cref="AcrossShare"/>): its effector by IK on a curve
+    /// from the one contact point to the other, rising off the one surface and coming down onto the other, at most the
+    /// character's step height above the higher of the two (less on a short step: at most half its length), the sole
+    /// turning from the one surface to the other. <c>null</c> when the limb lacks either contact, the two are within
+    /// 2 cm, or the IK does not reach a point of the curve.
+    /// </summary>
+    private Dictionary<int, float[]>? StepAcross(BallisticArc arc, ContactConfiguration takeoff, ContactConfiguration landing, int l, int from, int to, Dictionary<int, float[]> held, float h, int steps)
+    {
+        if (takeoff.ContactOf(l) is not LimbContact up || landing.ContactOf(l) is not LimbContact down || to - from < 2 || !held.TryGetValue(from, out float[]? leaving)
+            || Vector3.Distance(up.Position, down.Position) <= 0.02f)
+        {
+            return null;
+        }
+
+        // As a walking foot swings (WalkGait): straight up off the one surface and down onto the other, a step height
+        // above the higher of the two at most (half the step's length on a short one).
+        RigLimb limb = Model.Limbs[l];
+        Vector3 lift = Vector3.Normalize(up.Normal + down.Normal);
+        float height = MathF.Min(_liftHeight, 0.5f * Vector3.Distance(up.Position, down.Position));
+        float h0 = Vector3.Dot(up.Position, lift);
+        float h1 = Vector3.Dot(down.Position, lift);
+        float top = MathF.Max(h0, h1) + height;
+        float c0 = (top - h0) * 4f / 3f;
+        float c1 = (top - h1) * 4f / 3f;
+        float[] q = (float[])leaving.Clone();
+        var across = new Dictionary<int, float[]>();
+        for (int i = from + 1; i < to; i++)
+        {
+            float u = (i - from) / (float)(to - from);
+            float s = u * u * (3f - (2f * u));
+            Vector3 point = Vector3.Lerp(up.Position, down.Position, s) + (lift * ((c0 * 3f * u * (1f - u) * (1f - u)) + (c1 * 3f * u * u * (1f - u))));
+            Vector3 normal = -Vector3.Normalize(Vector3.Lerp(up.Normal, down.Normal, s));
+            RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
+            if (!_holdIk.Solve(root, q, limb, point, normal).Success && !_holdIk.Solve(root, q, limb, point, null).Success)
+            {
+                return null;
+            }
+
+            across[i] = (float[])q.Clone();
+        }
+
+        return across;
     }
 
     /// <summary>
