@@ -1329,24 +1329,17 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             return null;
         }
 
-        // As a walking foot swings (WalkGait): straight up off the one surface and down onto the other, a step height
-        // above the higher of the two at most (half the step's length on a short one).
+        // As a walking foot swings: a step height above the higher of the two surfaces at most (half the step's
+        // length on a short one).
         RigLimb limb = Model.Limbs[l];
-        Vector3 lift = Vector3.Normalize(up.Normal + down.Normal);
-        float height = MathF.Min(_liftHeight, 0.5f * Vector3.Distance(up.Position, down.Position));
-        float h0 = Vector3.Dot(up.Position, lift);
-        float h1 = Vector3.Dot(down.Position, lift);
-        float top = MathF.Max(h0, h1) + height;
-        float c0 = (top - h0) * 4f / 3f;
-        float c1 = (top - h1) * 4f / 3f;
+        var curve = new SwingCurve(up.Position, down.Position, Vector3.Normalize(up.Normal + down.Normal), MathF.Min(_liftHeight, 0.5f * Vector3.Distance(up.Position, down.Position)));
         float[] q = (float[])leaving.Clone();
         var across = new Dictionary<int, float[]>();
         for (int i = from + 1; i < to; i++)
         {
             float u = (i - from) / (float)(to - from);
-            float s = u * u * (3f - (2f * u));
-            Vector3 point = Vector3.Lerp(up.Position, down.Position, s) + (lift * ((c0 * 3f * u * (1f - u) * (1f - u)) + (c1 * 3f * u * u * (1f - u))));
-            Vector3 normal = -Vector3.Normalize(Vector3.Lerp(up.Normal, down.Normal, s));
+            Vector3 point = curve.At(u);
+            Vector3 normal = -Vector3.Normalize(Vector3.Lerp(up.Normal, down.Normal, Easing.Smooth(u)));
             RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
             if (!_holdIk.Solve(root, q, limb, point, normal).Success && !_holdIk.Solve(root, q, limb, point, null).Success)
             {

@@ -3171,8 +3171,6 @@ internal sealed class WalkGait
             }
 
             Vector3 up = Vector3.Normalize(ground0 + ground1);
-            float h0 = Vector3.Dot(p0, up);
-            float h1 = Vector3.Dot(p1, up);
 
             float[][]? best = null;
             int bestFailures = int.MaxValue;
@@ -3181,15 +3179,11 @@ internal sealed class WalkGait
             {
                 // Each try's angles go into one of two reused pools, the best try's kept in the other.
                 float[][] keys = SwingPool(pool, b - a + 1);
-                float top = MathF.Max(h0, h1) + (share * _stepHeight);
-                float c0 = (top - h0) * 4f / 3f;
-                float c1 = (top - h1) * 4f / 3f;
-
-                // The cubic Bézier through p0, p0 + c0·up, p1 + c1·up, p1: straight up off the ground, straight down
-                // onto it; its time warped (slower at both ends) so that the effector moves at most FirstMove in the
-                // swing's first and last fine steps: still touching then, and already clear of the ground.
-                Vector3 Curve(float s) =>
-                    p0 + ((p1 - p0) * Smooth(s)) + (up * ((c0 * 3f * s * (1f - s) * (1f - s)) + (c1 * 3f * s * s * (1f - s))));
+                // Straight up off the ground, straight down onto it (SwingCurve); its time warped (slower at both
+                // ends) so that the effector moves at most FirstMove in the swing's first and last fine steps: still
+                // touching then, and already clear of the ground.
+                var curve = new SwingCurve(p0, p1, up, share * _stepHeight);
+                Vector3 Curve(float s) => curve.At(s);
                 float Warp(float tau, float slow) => tau - (slow * MathF.Sin(2f * MathF.PI * tau) / (2f * MathF.PI));
                 float first = 1f / (b - a);
                 float slow = 0f;
