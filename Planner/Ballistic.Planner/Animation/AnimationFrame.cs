@@ -6,4 +6,4 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Time">Clip time, seconds.</param>
 /// <param name="Root">Root pose: on the jump's parabola.</param>
 /// <param name="Angles">One angle per degree of freedom of the rig, radians.</param>
-public sealed record AnimationFrame(float Time, RootPose Root, float[] Angles);
+internal sealed record AnimationFrame(float Time, RootPose Root, float[] Angles);

@@ -8,7 +8,7 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Position">The contact point held, world metres.</param>
 /// <param name="From">Start of the phase, seconds of clip time.</param>
 /// <param name="To">End of the phase, seconds of clip time.</param>
-public readonly record struct ContactPhase(int Limb, Vector3 Position, float From, float To)
+internal readonly record struct ContactPhase(int Limb, Vector3 Position, float From, float To)
 {
     /// <summary>
     /// True when the limb holds <see cref="Position"/> with the ball of its foot, heel raised (a walker's trailing

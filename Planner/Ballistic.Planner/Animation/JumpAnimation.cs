@@ -33,7 +33,7 @@ public sealed class JumpAnimation
     /// <param name="collidingFrames">Frames with a bone through the level.</param>
     /// <param name="leadIn">Seconds of stance before the first move starts (a crouch before a first jump).</param>
     /// <param name="leadOut">Seconds of stance after the last move ends (a landing absorbed).</param>
-    public JumpAnimation(CharacterModel model, IReadOnlyList<Move> moves, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames, float leadIn = 0f, float leadOut = 0f)
+    internal JumpAnimation(CharacterModel model, IReadOnlyList<Move> moves, IReadOnlyList<float> stances, IReadOnlyList<AnimationFrame> frames, IReadOnlyList<ContactPhase> contactPhases, IReadOnlyList<JumpProblem> problems, int failedContactPoses, int collidingFrames, float leadIn = 0f, float leadOut = 0f)
     {
         ArgumentNullException.ThrowIfNull(model);
         ArgumentNullException.ThrowIfNull(moves);
@@ -115,7 +115,7 @@ public sealed class JumpAnimation
     public IReadOnlyList<float> Stances { get; }
 
     /// <summary>What could not be animated cleanly; empty when every jump animates with held contacts and no bone in the level.</summary>
-    public IReadOnlyList<JumpProblem> Problems { get; }
+    internal IReadOnlyList<JumpProblem> Problems { get; }
 
     /// <summary>True when nothing went wrong: every contact pose passes the no-slip test and no bone passes through the level.</summary>
     public bool IsClean => Problems.Count == 0;
@@ -130,10 +130,10 @@ public sealed class JumpAnimation
     public IReadOnlyList<BallisticArc> Arcs { get; }
 
     /// <summary>The frames, in time order.</summary>
-    public IReadOnlyList<AnimationFrame> Frames { get; }
+    internal IReadOnlyList<AnimationFrame> Frames { get; }
 
     /// <summary>When each limb holds which contact point.</summary>
-    public IReadOnlyList<ContactPhase> ContactPhases { get; }
+    internal IReadOnlyList<ContactPhase> ContactPhases { get; }
 
     /// <summary>Duration of the clip, seconds: the lead-in, the moves' durations, the stances between them and the lead-out.</summary>
     public float Duration => _moveStarts[^1];

@@ -7,7 +7,7 @@ namespace Ballistic.Planner.Animation;
 /// For a walk's problem, where it first shows: metres along the walk's ground path (<see cref="Roadmaps.Walk.PointAt"/>);
 /// <see cref="float.NaN"/> when it has no place on the path (a jump's problem, or a walk's stance that cannot be stood in).
 /// </param>
-public readonly record struct JumpProblem(int Jump, string Reason, float Along = float.NaN)
+internal readonly record struct JumpProblem(int Jump, string Reason, float Along = float.NaN)
 {
     /// <summary>True when the problem has a place along a walk (<see cref="Along"/> is a number).</summary>
     public bool IsLocated => !float.IsNaN(Along);

@@ -102,7 +102,7 @@ public sealed class ReducedCharacter
     public float Friction { get; }
 
     /// <summary>Speed limits and gravity for the steering method.</summary>
-    public SteeringLimits Limits { get; }
+    internal SteeringLimits Limits { get; }
 
     /// <summary>
     /// How far below the root (along the trunk's −Y, metres) the limbs reach: the lowest point of any workspace.
@@ -129,7 +129,7 @@ public sealed class ReducedCharacter
     /// to 100 % (legs near straight) of its rest-pose height; when not set, from the trunk's half height to
     /// <see cref="Reach"/>.
     /// </summary>
-    public HeightRange StanceLift
+    internal HeightRange StanceLift
     {
         get => _stanceLift ?? new HeightRange(TrunkHalfExtents.Y + 0.02f, MathF.Max(TrunkHalfExtents.Y + 0.02f, Reach));
         init

@@ -4,7 +4,7 @@ namespace Ballistic.Planner.Characters;
 /// The character's jump abilities and the steering method's tolerances. Speeds in metres per second, angles in
 /// radians, heights in world metres (Y up).
 /// </summary>
-public sealed record SteeringLimits
+internal sealed record SteeringLimits
 {
     /// <summary>Creates limits, checking every value.</summary>
     /// <param name="takeoffSpeedMax">Largest takeoff speed |ċ_t|, m/s, &gt; 0.</param>

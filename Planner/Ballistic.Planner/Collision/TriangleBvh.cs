@@ -9,7 +9,7 @@ namespace Ballistic.Planner.Collision;
 /// level, the triangles a box touches, and the first hit of a segment. Immutable once built; safe to query from
 /// many threads at once.
 /// </summary>
-public sealed class TriangleBvh : ICollisionWorld
+internal sealed class TriangleBvh : ICollisionWorld
 {
     /// <summary>Largest number of triangles in a leaf.</summary>
     public const int MaxLeafSize = 4;

@@ -9,7 +9,7 @@ namespace Ballistic.Planner.Geometry;
 /// <param name="A">First vertex, world metres.</param>
 /// <param name="B">Second vertex, world metres.</param>
 /// <param name="C">Third vertex, world metres.</param>
-public readonly record struct Triangle(Vector3 A, Vector3 B, Vector3 C)
+internal readonly record struct Triangle(Vector3 A, Vector3 B, Vector3 C)
 {
     /// <summary>Twice the area times the unit normal: (B − A) × (C − A), in square metres.</summary>
     public Vector3 ScaledNormal => Vector3.Cross(B - A, C - A);

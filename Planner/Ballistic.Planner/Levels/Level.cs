@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Security.Cryptography;
+using System.Numerics;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;
@@ -7,8 +8,9 @@ using Ballistic.Planner.IO;
 namespace Ballistic.Planner.Levels;
 
 /// <summary>
-/// A level as the planner sees it: a soup of world-space triangles (metres, Y up), each with a material. Build one
-/// with <see cref="LevelBuilder"/> (raw arrays) or load a glTF file; both check the input.
+/// A level as the planner sees it: a soup of world-space triangles (metres, Y up), each with a material. Load one from
+/// a glTF file (<see cref="GltfLevelLoader"/>) or build one from mesh arrays (the runtime's <c>SourceGeometry</c>);
+/// both check the input.
 /// </summary>
 public sealed class Level
 {
@@ -31,7 +33,7 @@ public sealed class Level
     }
 
     /// <summary>The triangles, world space; none is degenerate and every coordinate is finite.</summary>
-    public IReadOnlyList<Triangle> Triangles { get; }
+    internal IReadOnlyList<Triangle> Triangles { get; }
 
     /// <summary>For each triangle, the index of its material in <see cref="Materials"/>.</summary>
     public IReadOnlyList<int> MaterialIndices { get; }
@@ -66,6 +68,17 @@ public sealed class Level
     /// on this level (the level never changes). Thread-safe: two threads asking at once may both build it; one is kept.
     /// </summary>
     internal TriangleBvh Bvh => LazyInitializer.EnsureInitialized(ref _bvh, () => new TriangleBvh(Triangles));
+
+    /// <summary>
+    /// The first triangle met by the segment <c>origin + t·direction</c>, <c>t ∈ [0, maxT]</c> (world metres; both faces
+    /// count), as the planner sees the level: no physics bodies needed. Thread-safe.
+    /// </summary>
+    /// <param name="origin">Start of the segment, world metres.</param>
+    /// <param name="direction">Direction of the segment (any length; <paramref name="maxT"/> is in units of it).</param>
+    /// <param name="maxT">Largest ray parameter: 1 with <c>direction = to − origin</c> tests the segment to <c>to</c>.</param>
+    /// <param name="hit">The hit, when there is one.</param>
+    /// <returns>True when the segment meets the level.</returns>
+    public bool Raycast(Vector3 origin, Vector3 direction, float maxT, out RayHit hit) => Bvh.Raycast(origin, direction, maxT, out hit);
 
     /// <summary>True when some material costs more than plain ground to cross or enter (<see cref="LevelMaterial.TravelCost"/>, <see cref="LevelMaterial.EnterCost"/>).</summary>
     internal bool HasSurfaceCosts { get; }

@@ -10,7 +10,7 @@ namespace Ballistic.Planner.Levels;
 /// placed beyond ±<see cref="MaxCoordinate"/> metres, is an error naming its mesh and vertex; zero-area triangles are
 /// dropped and counted; a level without triangles is an error.
 /// </summary>
-public sealed class LevelBuilder
+internal sealed class LevelBuilder
 {
     /// <summary>How far from the origin, in metres along each axis, a level may reach: 1,000 km.</summary>
     public const float MaxCoordinate = 1e6f;

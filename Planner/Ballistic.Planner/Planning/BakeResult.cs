@@ -19,8 +19,8 @@ public sealed record BakeResult(Roadmap Roadmap, PlannerStatus Status, string Re
     public IReadOnlyDictionary<SteeringFailure, long> SteeringRejections { get; init; } = new Dictionary<SteeringFailure, long>();
 
     /// <summary>Where the requested start put the start node (or why it could not), when a start was given.</summary>
-    public EndpointPlacement? StartPlacement { get; init; }
+    internal EndpointPlacement? StartPlacement { get; init; }
 
     /// <summary>Where the requested goal put the goal node (or why it could not), when a goal was given.</summary>
-    public EndpointPlacement? GoalPlacement { get; init; }
+    internal EndpointPlacement? GoalPlacement { get; init; }
 }

@@ -38,7 +38,7 @@ public sealed class PlanningScene
     public ReducedCharacter Character { get; }
 
     /// <summary>Collision hierarchy over the level's triangles.</summary>
-    public TriangleBvh Bvh { get; }
+    internal TriangleBvh Bvh { get; }
 
     /// <summary>Contact surfaces of the level.</summary>
     internal SurfaceSet Surfaces { get; }
@@ -61,8 +61,6 @@ public sealed class PlanningScene
     /// <param name="maxApexAboveLevel">
     /// How far above the level's highest point (metres) the trunk may rise at a jump's apex; <c>null</c> for no bound.
     /// </param>
-    /// <param name="sampler">Sampler settings; defaults when <c>null</c>.</param>
-    /// <param name="surfaces">Surface grouping settings; defaults when <c>null</c>.</param>
     /// <param name="poseValidator">
     /// An extra test every node, start and goal pose must pass after the built-in ones; <c>null</c> for none. A roadmap
     /// baked with one is only valid with the same test: its file does not record it.
@@ -75,8 +73,6 @@ public sealed class PlanningScene
         Level level,
         ReducedCharacter character,
         float? maxApexAboveLevel = 4f,
-        SamplerSettings? sampler = null,
-        SurfaceSettings? surfaces = null,
         IPoseValidator? poseValidator = null,
         IArcValidator? arcValidator = null)
     {
@@ -88,9 +84,9 @@ public sealed class PlanningScene
         }
 
         TriangleBvh bvh = level.Bvh;
-        SurfaceSet surfaceSet = SurfaceSet.Build(level, surfaces);
+        SurfaceSet surfaceSet = SurfaceSet.Build(level);
         var estimator = new ContactEstimator(level, bvh, surfaceSet, character, poseValidator);
-        var trunkSampler = new TrunkSampler(level, bvh, surfaceSet, character, estimator, sampler);
+        var trunkSampler = new TrunkSampler(level, bvh, surfaceSet, character, estimator);
         SteeringLimits limits = maxApexAboveLevel is float margin
             ? character.Limits with { MaxApexHeight = level.Bounds.Max.Y + margin }
             : character.Limits;

@@ -22,7 +22,7 @@ namespace Ballistic.Planner.Query;
 /// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
 /// every jump, since each would have the same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it. Not thread-safe.
 /// </summary>
-public sealed class JumpRepair
+internal sealed class JumpRepair
 {
     /// <summary>Rounds with a walk that did not animate cleanly after which a request searches jumps only.</summary>
     public const int WalkRounds = 2;

@@ -17,10 +17,10 @@ public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode
     private (IReadOnlyList<Move>? Of, IReadOnlyList<Jump> Jumps) _jumps;
 
     /// <summary>Where the requested start put the start stance (distances included), when the query got that far.</summary>
-    public EndpointPlacement? StartPlacement { get; init; }
+    internal EndpointPlacement? StartPlacement { get; init; }
 
     /// <summary>Where the requested goal put the goal stance (distances included), when the query got that far.</summary>
-    public EndpointPlacement? GoalPlacement { get; init; }
+    internal EndpointPlacement? GoalPlacement { get; init; }
 
     /// <summary>
     /// How many nodes the A* search expanded (0 when the request ended before searching): a measure of the search's

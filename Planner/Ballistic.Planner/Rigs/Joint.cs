@@ -11,4 +11,4 @@ namespace Ballistic.Planner.Rigs;
 /// <param name="Offset">Position of the joint in its parent's frame at rest, metres.</param>
 /// <param name="RestRotation">Rotation of the joint's frame relative to its parent's at rest.</param>
 /// <param name="Axes">The joint's degrees of freedom, applied in order.</param>
-public sealed record Joint(string Name, int Parent, Vector3 Offset, Quaternion RestRotation, IReadOnlyList<JointAxis> Axes);
+internal sealed record Joint(string Name, int Parent, Vector3 Offset, Quaternion RestRotation, IReadOnlyList<JointAxis> Axes);

@@ -9,7 +9,7 @@ namespace Ballistic.Planner.Rigs;
 /// <param name="Axis">Unit rotation axis in the joint's rest frame.</param>
 /// <param name="Min">Lower limit, radians.</param>
 /// <param name="Max">Upper limit, radians (≥ <paramref name="Min"/>).</param>
-public readonly record struct JointAxis(Vector3 Axis, float Min, float Max)
+internal readonly record struct JointAxis(Vector3 Axis, float Min, float Max)
 {
     /// <summary>Clamps an angle to the limits.</summary>
     public float Clamp(float angle) => Math.Clamp(angle, Min, Max);

@@ -19,7 +19,7 @@ public sealed class Rig
     /// <param name="joints">Joints, parents before children; joint 0 is the root (parent −1).</param>
     /// <param name="rootOffset">The root joint's position in the trunk frame (relative to the trunk box centre), metres.</param>
     /// <exception cref="RigException">Names repeat, a parent comes after its child, an axis is not unit, or a limit is inverted.</exception>
-    public Rig(IReadOnlyList<Joint> joints, Vector3 rootOffset)
+    internal Rig(IReadOnlyList<Joint> joints, Vector3 rootOffset)
     {
         ArgumentNullException.ThrowIfNull(joints);
         if (joints.Count == 0 || joints[0].Parent != -1)
@@ -65,13 +65,13 @@ public sealed class Rig
     }
 
     /// <summary>The joints, parents before children.</summary>
-    public IReadOnlyList<Joint> Joints => _joints;
+    internal IReadOnlyList<Joint> Joints => _joints;
 
     /// <summary>Number of rotational degrees of freedom.</summary>
     public int DofCount => _dofs.Length;
 
     /// <summary>The degrees of freedom in configuration order.</summary>
-    public IReadOnlyList<JointAxis> Dofs => _dofs;
+    internal IReadOnlyList<JointAxis> Dofs => _dofs;
 
     /// <summary>The root joint's position in the trunk frame, metres.</summary>
     public Vector3 RootOffset { get; }

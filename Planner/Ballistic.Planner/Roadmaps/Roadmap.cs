@@ -166,7 +166,7 @@ public sealed class Roadmap
     public IReadOnlyList<RoadmapNode> Nodes { get; }
 
     /// <summary>The edges, in insertion order.</summary>
-    public IReadOnlyList<RoadmapEdge> Edges { get; }
+    internal IReadOnlyList<RoadmapEdge> Edges { get; }
 
     /// <summary>The fastest horizontal speed (m/s) of any edge: flight time ≥ horizontal distance / this, an admissible A* bound.</summary>
     public float MaxHorizontalSpeed { get; }
@@ -267,7 +267,7 @@ public sealed class Roadmap
     /// <param name="limits">The character's steering limits.</param>
     /// <param name="count">How many nodes to keep at most.</param>
     /// <param name="nearest">Cleared, then filled with (distance in metres, node id).</param>
-    public void Nearest(Vector3 point, SteeringLimits limits, int count, List<(float Distance, int Id)> nearest)
+    internal void Nearest(Vector3 point, SteeringLimits limits, int count, List<(float Distance, int Id)> nearest)
     {
         ArgumentNullException.ThrowIfNull(limits);
         Nearest(point, new ReachTest(limits), count, nearest);

@@ -6,4 +6,4 @@ namespace Ballistic.Planner.Roadmaps;
 /// <param name="From">Takeoff node id.</param>
 /// <param name="To">Landing node id.</param>
 /// <param name="Arc">The jump: takeoff and landing velocities, flight time, arc length.</param>
-public readonly record struct RoadmapEdge(int From, int To, BallisticArc Arc);
+internal readonly record struct RoadmapEdge(int From, int To, BallisticArc Arc);

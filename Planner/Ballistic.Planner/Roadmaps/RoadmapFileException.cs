@@ -3,7 +3,7 @@ using Ballistic.Planner.IO;
 namespace Ballistic.Planner.Roadmaps;
 
 /// <summary>A roadmap file cannot be used: truncated, corrupt, of an unknown version, or baked for another level or character.</summary>
-public sealed class RoadmapFileException : BallisticInputException
+internal sealed class RoadmapFileException : BallisticInputException
 {
     /// <summary>Creates the exception with one sentence naming the file and the problem.</summary>
     public RoadmapFileException(string message)

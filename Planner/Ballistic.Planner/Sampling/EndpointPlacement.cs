@@ -16,7 +16,7 @@ namespace Ballistic.Planner.Sampling;
 /// When no pose was placed: the distance (metres) from the requested point to the contact centre of the nearest
 /// valid pose found beyond the tolerance, or <c>null</c> when the search found none at all.
 /// </param>
-public sealed record EndpointPlacement(Vector3 Requested, PoseEvaluation? Pose, Vector3 ContactCentre, float Across, float UpDown, float? NearestValid)
+internal sealed record EndpointPlacement(Vector3 Requested, PoseEvaluation? Pose, Vector3 ContactCentre, float Across, float UpDown, float? NearestValid)
 {
     /// <summary>True when a valid pose was placed within the tolerance.</summary>
     public bool Placed => Pose is not null;

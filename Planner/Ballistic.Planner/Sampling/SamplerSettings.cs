@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.Sampling;
 
 /// <summary>How root poses are drawn near the level's surfaces.</summary>
-public sealed record SamplerSettings
+internal sealed record SamplerSettings
 {
     /// <summary>Attempts (draw, repair, check) before one sample is given up.</summary>
     public int MaxAttempts { get; init; } = 1_000;

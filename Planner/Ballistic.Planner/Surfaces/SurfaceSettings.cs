@@ -1,7 +1,7 @@
 namespace Ballistic.Planner.Surfaces;
 
 /// <summary>How triangles are grouped into contact surfaces (defaults after the original affordance extraction).</summary>
-public sealed record SurfaceSettings
+internal sealed record SurfaceSettings
 {
     /// <summary>
     /// Largest squared distance |n_seed − n|² between a surface's first triangle's unit normal and another

@@ -92,12 +92,12 @@ public sealed class AddonCompilationTests
             {
                 public static Assembly Internal => typeof(Aabb).Assembly;
 
-                public static Assembly Public => typeof(Triangle).Assembly;
+                public static Assembly Public => typeof(RootPose).Assembly;
             }
             """,
             "addons/x/Info.cs:10: CS0122: 'Aabb' is internal to the Ballistic libraries: the addon sees only their public types",
             publicLine: 12,
-            "Triangle is public");
+            "RootPose is public");
 
     /// <summary>
     /// A member internal to the Ballistic libraries (the level's bounds) used by a node script that imports Godot is
@@ -118,12 +118,12 @@ public sealed class AddonCompilationTests
             {
                 public static object Box(Level level) => level.Bounds;
 
-                public static int Count(Level level) => level.Triangles.Count;
+                public static int Count(Level level) => level.MaterialIndices.Count;
             }
             """,
             "addons/x/Bounds.cs:10: CS1061: 'Bounds' is no public member of Ballistic.Planner.Levels.Level: the addon sees only the Ballistic libraries' public API",
             publicLine: 12,
-            "Level.Triangles is public");
+            "Level.MaterialIndices is public");
 
     /// <summary>
     /// Compiles one planted addon file (an export build) and asserts that its use of something internal to the

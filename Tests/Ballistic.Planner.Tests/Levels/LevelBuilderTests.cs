@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Levels;
 
@@ -20,6 +21,30 @@ public sealed class LevelBuilderTests
             Assert.That(level.Triangles, Has.Count.EqualTo(2));
             Assert.That(level.Bounds.Min.Y, Is.EqualTo(2f));
             Assert.That(Vector3.Distance(level.Triangles[0].Normal, Vector3.UnitY), Is.LessThan(1e-6f));
+        });
+    }
+
+    /// <summary>
+    /// The level's public raycast (what the Godot roadmap node's IntersectLevel uses): a segment down onto a raised
+    /// floor hits it where it crosses, with the floor's normal; one ending above it, or passing beside it, misses.
+    /// </summary>
+    [Test]
+    public void ASegmentMeetsTheLevelWhereItCrossesIt()
+    {
+        Vector3[] quad = [new(0f, 0f, 0f), new(1f, 0f, 0f), new(1f, 0f, 1f), new(0f, 0f, 1f)];
+        Level level = new LevelBuilder("test")
+            .AddMesh("floor", quad, [0, 2, 1, 0, 3, 2], Matrix4x4.CreateTranslation(0f, 2f, 0f), Stone)
+            .Build();
+        var from = new Vector3(0.25f, 5f, 0.75f);
+        bool met = level.Raycast(from, new Vector3(0f, -5f, 0f), 1f, out RayHit hit);
+        Assert.Multiple(() =>
+        {
+            Assert.That(met, Is.True);
+            Assert.That(Vector3.Distance(hit.Point, new Vector3(0.25f, 2f, 0.75f)), Is.LessThan(1e-5f));
+            Assert.That(hit.Distance, Is.EqualTo(0.6f).Within(1e-5f), "3 m down a 5 m segment");
+            Assert.That(Vector3.Distance(hit.Normal, Vector3.UnitY), Is.LessThan(1e-6f));
+            Assert.That(level.Raycast(from, new Vector3(0f, -2.9f, 0f), 1f, out _), Is.False, "the segment ends 0.1 m above the floor");
+            Assert.That(level.Raycast(new Vector3(1.5f, 5f, 0.5f), new Vector3(0f, -5f, 0f), 1f, out _), Is.False, "beside the floor");
         });
     }
 

@@ -566,7 +566,7 @@ public partial class JumpRoadmap3D : Node3D
     /// the planner sees it (no physics bodies needed); <c>null</c> when it misses or the roadmap is not loaded yet.
     /// </summary>
     public Vector3? IntersectLevel(Vector3 from, Vector3 to) =>
-        _kind is not null && _kind.Scene.Bvh.Raycast(from.ToNumerics(), (to - from).ToNumerics(), 1f, out Planner.Collision.RayHit hit)
+        _kind is not null && _kind.Scene.Level.Raycast(from.ToNumerics(), (to - from).ToNumerics(), 1f, out Planner.Collision.RayHit hit)
             ? hit.Point.ToGodot()
             : null;
 
