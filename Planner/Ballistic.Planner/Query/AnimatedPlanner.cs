@@ -157,7 +157,7 @@ public sealed class AnimatedPlanner
     /// <param name="from">Requested start point, on or near a surface, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
     /// <param name="settings">Query settings (endpoint tolerance, connections).</param>
-    /// <param name="rounds">Searches made at most, besides those (at most <see cref="JumpRepair.WalkRounds"/>) whose walks did not animate cleanly.</param>
+    /// <param name="rounds">Searches made at most, besides those (at most two) whose walks did not animate cleanly.</param>
     /// <param name="frameRate">Animation frames per second.</param>
     /// <param name="termination">
     /// Stops the request early (its time and cancellation parts, measured from the request's start), checked before

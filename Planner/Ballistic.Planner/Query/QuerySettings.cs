@@ -158,27 +158,27 @@ public sealed record QuerySettings
 
     /// <summary>
     /// Jumps (takeoff id, landing id, as searched) <see cref="TightenJumps"/> must leave whole: those whose cut-down
-    /// moves did not animate (<see cref="JumpRepair"/> fills it); <c>null</c> for none.
+    /// moves did not animate (the animated planner's repair fills it); <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<(int From, int To)>? UncutJumps { get; init; }
 
     /// <summary>
     /// Jumps (takeoff id, landing id, as searched) <see cref="FaceJumps"/> must leave as searched: those given back
-    /// whole (<see cref="UncutJumps"/>) whose moves turned by hops did not animate either (<see cref="JumpRepair"/>
-    /// fills it); <c>null</c> for none.
+    /// whole (<see cref="UncutJumps"/>) whose moves turned by hops did not animate either (the animated
+    /// planner's repair fills it); <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<(int From, int To)>? UnfacedJumps { get; init; }
 
     /// <summary>
     /// Stances placed for the request after its search (their root poses, world frame) on which the body could not
-    /// crouch for a faced jump's takeoff or absorb its landing (<see cref="JumpRepair"/> fills it): the
+    /// crouch for a faced jump's takeoff or absorb its landing (the animated planner's repair fills it): the
     /// <see cref="FaceJumps"/> facer places its next stance instead (facing further round, or a little along the
     /// jump), not one within 2 cm and 2° of these. <c>null</c> for none.
     /// </summary>
     public IReadOnlyList<RootPose>? RefusedTurns { get; init; }
 
     /// <summary>
-    /// Ground points (world metres) where the body could not walk: <see cref="JumpRepair"/> fills it from where the
+    /// Ground points (world metres) where the body could not walk: the animated planner's repair fills it from where the
     /// animator located a walk's problem. When walking is allowed, after the search (and cutting), a walk passing
     /// within <see cref="JumpTightener.SpotRadius"/> of one (seen from above) hops over it: it walks to a takeoff
     /// before the spot, jumps, and walks on from a landing after it, each move checked like the roadmap's. A walk
@@ -187,14 +187,14 @@ public sealed record QuerySettings
     public IReadOnlyList<Vector3>? HopSpots { get; init; }
 
     /// <summary>
-    /// Stances (node ids, as searched) no jump takes off from: the body cannot crouch on them (<see cref="JumpRepair"/>
-    /// fills it); walks still leave them. <c>null</c> for none.
+    /// Stances (node ids, as searched) no jump takes off from: the body cannot crouch on them (the animated
+    /// planner's repair fills it); walks still leave them. <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<int>? NoTakeoffs { get; init; }
 
     /// <summary>
-    /// Stances (node ids, as searched) no jump lands on: the body cannot absorb a landing there (<see cref="JumpRepair"/>
-    /// fills it); walks still reach them. <c>null</c> for none.
+    /// Stances (node ids, as searched) no jump lands on: the body cannot absorb a landing there (the
+    /// animated planner's repair fills it); walks still reach them. <c>null</c> for none.
     /// </summary>
     public IReadOnlySet<int>? NoLandings { get; init; }
 }
