@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
-using System.Security.Cryptography;
 using System.Numerics;
+using System.Security.Cryptography;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.IO;

@@ -12,10 +12,7 @@ public sealed class LevelBuilderTests
     [Test]
     public void TransformsMeshesIntoWorldSpace()
     {
-        Vector3[] quad = [new(0f, 0f, 0f), new(1f, 0f, 0f), new(1f, 0f, 1f), new(0f, 0f, 1f)];
-        Level level = new LevelBuilder("test")
-            .AddMesh("floor", quad, [0, 2, 1, 0, 3, 2], Matrix4x4.CreateTranslation(0f, 2f, 0f), Stone)
-            .Build();
+        Level level = RaisedFloor();
         Assert.Multiple(() =>
         {
             Assert.That(level.Triangles, Has.Count.EqualTo(2));
@@ -31,10 +28,7 @@ public sealed class LevelBuilderTests
     [Test]
     public void ASegmentMeetsTheLevelWhereItCrossesIt()
     {
-        Vector3[] quad = [new(0f, 0f, 0f), new(1f, 0f, 0f), new(1f, 0f, 1f), new(0f, 0f, 1f)];
-        Level level = new LevelBuilder("test")
-            .AddMesh("floor", quad, [0, 2, 1, 0, 3, 2], Matrix4x4.CreateTranslation(0f, 2f, 0f), Stone)
-            .Build();
+        Level level = RaisedFloor();
         var from = new Vector3(0.25f, 5f, 0.75f);
         bool met = level.Raycast(from, new Vector3(0f, -5f, 0f), 1f, out RayHit hit);
         Assert.Multiple(() =>
@@ -46,6 +40,15 @@ public sealed class LevelBuilderTests
             Assert.That(level.Raycast(from, new Vector3(0f, -2.9f, 0f), 1f, out _), Is.False, "the segment ends 0.1 m above the floor");
             Assert.That(level.Raycast(new Vector3(1.5f, 5f, 0.5f), new Vector3(0f, -5f, 0f), 1f, out _), Is.False, "beside the floor");
         });
+    }
+
+    /// <summary>A 1 × 1 m floor mesh, built at the origin and moved 2 m up by its transform.</summary>
+    private static Level RaisedFloor()
+    {
+        Vector3[] quad = [new(0f, 0f, 0f), new(1f, 0f, 0f), new(1f, 0f, 1f), new(0f, 0f, 1f)];
+        return new LevelBuilder("test")
+            .AddMesh("floor", quad, [0, 2, 1, 0, 3, 2], Matrix4x4.CreateTranslation(0f, 2f, 0f), Stone)
+            .Build();
     }
 
     [Test]
