@@ -1287,7 +1287,7 @@ public sealed class JumpWorld : IDisposable
     /// <summary>What the agent does this tick (<see cref="AgentState.Idle"/> for an unknown agent).</summary>
     public AgentState GetState(AgentHandle agent) => _agents.IsValid(agent) ? _agents.State[agent.Index] : AgentState.Idle;
 
-    /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight and on the walk's <see cref="Walk.PoseAt"/> while walking.</summary>
+    /// <summary>The agent's root pose this tick: trunk centre (world metres) and trunk orientation; exactly on the arc in flight and on the walk's <see cref="Walk.PoseAt(float)"/> while walking.</summary>
     public RootPose GetRootPose(AgentHandle agent) => _agents.IsValid(agent) ? _agents.Root[agent.Index] : default;
 
     /// <summary>

@@ -60,6 +60,7 @@ public sealed class JumpAnimation
         _frames = [.. frames];
         Frames = Array.AsReadOnly(_frames);
         _frameTimes = [.. _frames.Select(f => f.Time)];
+        _frameRoots = [.. _frames.Select(f => f.Root)];
         _frameLookup = new SortedLookup(_frameTimes);
         ContactPhases = [.. contactPhases];
         Problems = [.. problems];
@@ -96,10 +97,13 @@ public sealed class JumpAnimation
     /// <summary>Each frame's time (seconds), contiguous: the per-tick samplers search it for the frames around a time.</summary>
     private readonly float[] _frameTimes;
 
+    /// <summary>Each frame's root, contiguous: read every tick for agents standing between moves (<see cref="FrameRoot"/>).</summary>
+    private readonly RootPose[] _frameRoots;
+
     /// <summary>Finds the frames around a time in <see cref="_frameTimes"/> (<see cref="FrameAtOrAfter"/>).</summary>
     private readonly SortedLookup _frameLookup;
 
-    /// <summary>Whether any frame's root is lifted above its walk's path (else <see cref="WalkLift"/> is 0 everywhere).</summary>
+    /// <summary>Whether any frame's root is lifted above its walk's path (else <see cref="WalkLift(float)"/> is 0 everywhere).</summary>
     private readonly bool _lifted;
 
     /// <summary>Per frame: how far (metres, world up) its root is above its walk's path; 0 outside walks.</summary>
@@ -158,41 +162,61 @@ public sealed class JumpAnimation
 
     /// <summary>
     /// The root pose at clip time <paramref name="time"/> (seconds): exactly on the current jump's parabola in flight,
-    /// on the current walk's path while walking (<see cref="Walk.PoseAt"/>), raised by the walk's <see cref="WalkLift"/>;
+    /// on the current walk's path while walking (<see cref="Walk.PoseAt(float)"/>), raised by the walk's <see cref="WalkLift(float)"/>;
     /// on the ground between moves (and in the
     /// lead-in and lead-out) interpolated between the frames' roots, the body sinking and rising on its contacts.
     /// </summary>
     public RootPose RootAt(float time)
     {
+        int frame = -1;
+        return RootAt(time, ref frame);
+    }
+
+    /// <summary>
+    /// <see cref="RootAt(float)"/> with the frames found from <paramref name="frame"/>, the index returned for a
+    /// moment before (an agent's last tick): the same pose to the bit whatever it is; set to this moment's.
+    /// </summary>
+    internal RootPose RootAt(float time, ref int frame)
+    {
         int m = MoveIndex(time);
         float t = time - _moveStarts[m];
         if (!(t >= 0f && t <= _moves[m].Duration) && _frames.Length > 0)
         {
-            return FrameRoot(time);
+            return FrameRoot(time, ref frame);
         }
 
         t = Math.Clamp(t, 0f, _moves[m].Duration);
         return _moves[m] switch
         {
             Jump jump => jump.Arc.PoseAt(t),
-            Walk walk => Lifted(walk.PoseAt(t), WalkLift(time)),
+            Walk walk => Lifted(walk.PoseAt(t), WalkLift(time, ref frame)),
             _ => throw new InvalidOperationException("Unknown move kind."),
         };
     }
 
     /// <summary>
-    /// How far (metres, world up) the walking trunk is above its walk's path (<see cref="Walk.PoseAt"/>) at clip time
+    /// How far (metres, world up) the walking trunk is above its walk's path (<see cref="Walk.PoseAt(float)"/>) at clip time
     /// <paramref name="time"/> (seconds): an upright walk's hips rising over the held feet and dipping between steps,
     /// none while it turns in place or stands; interpolated between frames; 0 outside walks.
     /// </summary>
     public float WalkLift(float time)
+    {
+        int frame = -1;
+        return WalkLift(time, ref frame);
+    }
+
+    /// <summary>
+    /// <see cref="WalkLift(float)"/> with the frames found from <paramref name="frame"/>, the index returned for a
+    /// moment before: the same lift whatever it is; set to this moment's.
+    /// </summary>
+    internal float WalkLift(float time, ref int frame)
     {
         if (!_lifted)
         {
             return 0f;
         }
 
-        int hi = FrameAtOrAfter(time);
+        int hi = _frameLookup.FirstAtOrAbove(time, ref frame);
         int lo = Math.Max(0, hi - 1);
         float span = _frameTimes[hi] - _frameTimes[lo];
         float w = span > 0f ? Math.Clamp((time - _frameTimes[lo]) / span, 0f, 1f) : 1f;
@@ -204,14 +228,15 @@ public sealed class JumpAnimation
         lift == 0f ? pose : new RootPose(pose.Position + new Vector3(0f, lift, 0f), pose.Rotation);
 
     /// <summary>The root interpolated between the frames around <paramref name="time"/> (position linearly, rotation by slerp).</summary>
-    private RootPose FrameRoot(float time)
+    private RootPose FrameRoot(float time, ref int frame)
     {
-        int hi = FrameAtOrAfter(time);
-        AnimationFrame after = _frames[hi];
-        AnimationFrame before = _frames[Math.Max(0, hi - 1)];
-        float span = after.Time - before.Time;
-        float w = span > 0f ? Math.Clamp((time - before.Time) / span, 0f, 1f) : 1f;
-        return new RootPose(Vector3.Lerp(before.Root.Position, after.Root.Position, w), Quaternion.Slerp(before.Root.Rotation, after.Root.Rotation, w));
+        int hi = _frameLookup.FirstAtOrAbove(time, ref frame);
+        int lo = Math.Max(0, hi - 1);
+        ref readonly RootPose after = ref _frameRoots[hi];
+        ref readonly RootPose before = ref _frameRoots[lo];
+        float span = _frameTimes[hi] - _frameTimes[lo];
+        float w = span > 0f ? Math.Clamp((time - _frameTimes[lo]) / span, 0f, 1f) : 1f;
+        return new RootPose(Vector3.Lerp(before.Position, after.Position, w), Quaternion.Slerp(before.Rotation, after.Rotation, w));
     }
 
     /// <summary>Index of the first frame at or after <paramref name="time"/> (the last frame when none is).</summary>

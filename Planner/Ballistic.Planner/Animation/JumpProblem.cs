@@ -4,7 +4,7 @@ namespace Ballistic.Planner.Animation;
 /// <param name="Jump">Index of the move in the path.</param>
 /// <param name="Reason">One sentence: which pose, limb or bone, and what is wrong.</param>
 /// <param name="Along">
-/// For a walk's problem, where it first shows: metres along the walk's ground path (<see cref="Roadmaps.Walk.PointAt"/>);
+/// For a walk's problem, where it first shows: metres along the walk's ground path (<see cref="Roadmaps.Walk.PointAt(float)"/>);
 /// <see cref="float.NaN"/> when it has no place on the path (a jump's problem, or a walk's stance that cannot be stood in).
 /// </param>
 internal readonly record struct JumpProblem(int Jump, string Reason, float Along = float.NaN)

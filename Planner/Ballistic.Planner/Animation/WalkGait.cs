@@ -10,7 +10,7 @@ using Ballistic.Planner.Walking;
 namespace Ballistic.Planner.Animation;
 
 /// <summary>
-/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt"/> (turning in place,
+/// The procedural gait of one walk (issue 11). The root follows <see cref="Walk.PoseAt(float)"/> (turning in place,
 /// speeding up, walking, slowing down, turning in place), raised while walking by an upright walk's lift (issue 21:
 /// see <see cref="Animate"/>); the feet (<see cref="LimbKind.Foot"/> limbs) form two
 /// groups that alternate, split by side and rank front to back (a biped's left and right, a quadruped's diagonal
@@ -543,7 +543,7 @@ internal sealed class WalkGait
         Problems = [.. clip.Problems.Select(p => p with { Jump = move })],
     };
 
-    /// <summary>What a walk's clip is animated from: the walk's ground path, speed and stances' poses (all <see cref="Walk.PoseAt"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
+    /// <summary>What a walk's clip is animated from: the walk's ground path, speed and stances' poses (all <see cref="Walk.PoseAt(float)"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
     private sealed record WalkKey(Walk Walk, ContactConfiguration Start, ContactConfiguration End, float FrameRate)
     {
         private readonly int _hash = HashCode.Combine(Walk.Speed, Walk.Path.Count, Walk.Path[0], Walk.Path[^1], Start.Root, End.Root, FrameRate);

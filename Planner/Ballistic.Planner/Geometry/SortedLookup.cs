@@ -75,4 +75,37 @@ internal sealed class SortedLookup
 
         return i;
     }
+
+    /// <summary>
+    /// <see cref="FirstAtOrAbove(float)"/> searched from <paramref name="hint"/>, the answer for a nearby value (an
+    /// agent's last tick), stepping a few values from it instead of finding the slice: the same answer whatever the
+    /// hint (out of range, or more than a few values away, it searches as usual). Sets <paramref name="hint"/> to it.
+    /// </summary>
+    public int FirstAtOrAbove(float value, ref int hint)
+    {
+        const int Steps = 4;
+        int last = _values.Length - 1;
+        int i = hint;
+        if ((uint)i <= (uint)last && last > 0 && value > _values[0] && value <= _values[last])
+        {
+            // As in FirstAtOrAbove: back while the value before is at or above, on while this one is below.
+            int steps = 0;
+            while (i > 0 && _values[i - 1] >= value && steps++ < Steps)
+            {
+                i--;
+            }
+
+            while (_values[i] < value && steps++ < Steps)
+            {
+                i++;
+            }
+
+            if ((i == 0 || _values[i - 1] < value) && _values[i] >= value)
+            {
+                return hint = i;
+            }
+        }
+
+        return hint = FirstAtOrAbove(value);
+    }
 }

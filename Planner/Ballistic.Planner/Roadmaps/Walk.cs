@@ -51,7 +51,7 @@ public sealed record Walk : Move
     private RoadmapNode _to;
     private readonly float[] _distances;
 
-    /// <summary>Finds the segment under a distance in <see cref="_distances"/> (<see cref="PointAt"/>).</summary>
+    /// <summary>Finds the segment under a distance in <see cref="_distances"/> (<see cref="PointAt(float)"/>).</summary>
     private readonly SortedLookup _lookup;
 
     private readonly Quaternion _startHeading;
@@ -411,7 +411,7 @@ public sealed record Walk : Move
 
     /// <summary>
     /// The horizontal distance (metres) the trunk centre moves while it turns in place at either end, summed: a stance
-    /// whose trunk leans with a slope stands up over its contacts as it turns to walk (<see cref="PoseAt"/>).
+    /// whose trunk leans with a slope stands up over its contacts as it turns to walk (<see cref="PoseAt(float)"/>).
     /// </summary>
     internal float TurnTravel => Horizontal(StartOffset - _startUpright).Length() + Horizontal(EndOffset - _endUpright).Length();
 
@@ -527,8 +527,18 @@ public sealed record Walk : Move
     /// <summary>The ground point at <paramref name="distance"/> metres along the path (clamped), world metres.</summary>
     public Vector3 PointAt(float distance)
     {
+        int segment = -1;
+        return PointAt(distance, ref segment);
+    }
+
+    /// <summary>
+    /// <see cref="PointAt(float)"/> found from <paramref name="segment"/>, the path index returned for a nearby
+    /// distance (the same point whatever it is); set to this distance's.
+    /// </summary>
+    internal Vector3 PointAt(float distance, ref int segment)
+    {
         distance = Math.Clamp(distance, 0f, Length);
-        int i = _lookup.FirstAtOrAbove(distance);
+        int i = _lookup.FirstAtOrAbove(distance, ref segment);
         if (_distances[i] == distance)
         {
             return _path[i];
@@ -544,8 +554,16 @@ public sealed record Walk : Move
     /// </summary>
     public Vector3 HeadingAt(float distance)
     {
+        int segment = -1;
+        return HeadingAt(distance, segment);
+    }
+
+    /// <summary><see cref="HeadingAt(float)"/> with its points found from <paramref name="segment"/> (the path index near <paramref name="distance"/>).</summary>
+    private Vector3 HeadingAt(float distance, int segment)
+    {
         const float window = 0.25f;
-        Vector3 d = PointAt(distance + window) - PointAt(distance - window);
+        int ahead = segment;
+        Vector3 d = PointAt(distance + window, ref ahead) - PointAt(distance - window, ref segment);
         d.Y = 0f;
         if (d.LengthSquared() < 1e-8f)
         {
@@ -564,30 +582,47 @@ public sealed record Walk : Move
 
     /// <summary>
     /// The trunk's walking pose <paramref name="distance"/> metres along the path (clamped): the ground point plus the
-    /// upright trunk's offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt"/> upright.
+    /// upright trunk's offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt(float)"/> upright.
     /// The upright offset of a stance is its own offset turned as the stance's trunk stands up (the shortest rotation
     /// bringing its up axis to the world's), at the stance's height above the ground point: a trunk leaning with a
     /// slope stands over its contacts to walk, not beside them. It is the stance's offset itself when the trunk does
     /// not lean, so the position is exactly <see cref="From"/>'s at 0 and <see cref="To"/>'s at the end of a walk
-    /// between such stances. Turns in place are in <see cref="PoseAt"/>.
+    /// between such stances. Turns in place are in <see cref="PoseAt(float)"/>.
     /// </summary>
     public RootPose PoseAtDistance(float distance)
     {
+        int segment = -1;
+        return PoseAtDistance(distance, ref segment);
+    }
+
+    /// <summary><see cref="PoseAtDistance(float)"/> with its points found from <paramref name="segment"/>, the path index near <paramref name="distance"/>; set to this distance's.</summary>
+    private RootPose PoseAtDistance(float distance, ref int segment)
+    {
         distance = Math.Clamp(distance, 0f, Length);
         float u = Length > 0f ? distance / Length : 1f;
-        Vector3 position = PointAt(distance) + Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
-        Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance));
+        Vector3 position = PointAt(distance, ref segment) + Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
+        Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance, segment));
         return new RootPose(position, rotation);
     }
 
     /// <summary>
     /// The trunk's pose <paramref name="time"/> seconds after the walk starts (clamped to the walk): turning in place
-    /// during <see cref="StartTurn"/> from <see cref="From"/>'s pose to <see cref="PoseAtDistance"/> at 0 (standing
-    /// up over the contacts as it turns), then <see cref="PoseAtDistance"/> at <see cref="DistanceAt"/>, then turning
+    /// during <see cref="StartTurn"/> from <see cref="From"/>'s pose to <see cref="PoseAtDistance(float)"/> at 0 (standing
+    /// up over the contacts as it turns), then <see cref="PoseAtDistance(float)"/> at <see cref="DistanceAt"/>, then turning
     /// in place to <see cref="To"/>'s pose. Exactly <see cref="From"/>'s pose at 0 and <see cref="To"/>'s at
     /// <see cref="Duration"/>.
     /// </summary>
     public RootPose PoseAt(float time)
+    {
+        int segment = -1;
+        return PoseAt(time, ref segment);
+    }
+
+    /// <summary>
+    /// <see cref="PoseAt(float)"/> with its points found from <paramref name="segment"/>, the path index returned for
+    /// a moment before (an agent's last tick): the same pose to the bit whatever it is; set to this moment's.
+    /// </summary>
+    internal RootPose PoseAt(float time, ref int segment)
     {
         if (!(time > 0f))
         {
@@ -612,7 +647,7 @@ public sealed record Walk : Move
             return new RootPose(Vector3.Lerp(_path[^1] + _endUpright, To.Pose.Position, s), Quaternion.Normalize(Quaternion.Slerp(_endHeading, To.Pose.Rotation, s)));
         }
 
-        return PoseAtDistance(DistanceAt(time));
+        return PoseAtDistance(DistanceAt(time), ref segment);
     }
 
     /// <summary>

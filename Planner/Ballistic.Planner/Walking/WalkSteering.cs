@@ -14,7 +14,7 @@ namespace Ballistic.Planner.Walking;
 /// from one sample to the next beyond what its slope allows (stairs are fine, a ledge is not), is never steeper than
 /// the character walks on in the walk's direction (<see cref="WalkingLimits.IsWalkable"/>, over two samples in a row,
 /// so a ray grazing a stair's edge does not count), nothing stands between the ground and the
-/// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAt"/>, its turns in place included) never touches the level.
+/// trunk, and the trunk box carried along the walk (<see cref="Walk.PoseAt(float)"/>, its turns in place included) never touches the level.
 /// Deterministic and thread-safe.
 /// </summary>
 /// <remarks>
@@ -270,7 +270,7 @@ internal sealed class WalkSteering
     }
 
     /// <summary>
-    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAt"/>: turning in place at
+    /// True when the trunk box carried along <paramref name="walk"/> (<see cref="Walk.PoseAt(float)"/>: turning in place at
     /// both ends, walking between) never touches the level: the check <see cref="Steer"/> makes, for walks joined
     /// from several (their trunk follows the joined path, not each part's).
     /// </summary>

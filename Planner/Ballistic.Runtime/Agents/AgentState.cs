@@ -18,6 +18,6 @@ public enum AgentState
     /// <summary>In a jump, the root on its parabola, from the moment the first limb touches its landing contact.</summary>
     Landing,
 
-    /// <summary>Walking: the root moves along the walk's ground path at its speed (<see cref="Planner.Roadmaps.Walk.PoseAt"/>) while the legs step.</summary>
+    /// <summary>Walking: the root moves along the walk's ground path at its speed (<see cref="Planner.Roadmaps.Walk.PoseAt(float)"/>) while the legs step.</summary>
     Walking,
 }

@@ -65,6 +65,13 @@ internal sealed class AgentStore
     public double[] PathStart = [];
     public int[] Cursor = [];
 
+    /// <summary>
+    /// Where the last tick found the agent in its path, as search hints (any value gives the same answers, near ones
+    /// fewer steps): the walk's segment under the trunk (<see cref="Walk"/>'s path index) and the animation's frame.
+    /// </summary>
+    public int[] WalkSegment = [];
+    public int[] Frame = [];
+
     /// <summary>Stop at the next stance of the path (a new target or a cleared one).</summary>
     public bool[] StopAtStance = [];
 
@@ -147,6 +154,8 @@ internal sealed class AgentStore
         Path[slot] = null;
         PathStart[slot] = 0;
         Cursor[slot] = 0;
+        WalkSegment[slot] = 0;
+        Frame[slot] = 0;
         StopAtStance[slot] = false;
         Request[slot] = null;
         PoseEnabled[slot] = true;
@@ -233,6 +242,8 @@ internal sealed class AgentStore
         Array.Resize(ref Path, capacity);
         Array.Resize(ref PathStart, capacity);
         Array.Resize(ref Cursor, capacity);
+        Array.Resize(ref WalkSegment, capacity);
+        Array.Resize(ref Frame, capacity);
         Array.Resize(ref StopAtStance, capacity);
         Array.Resize(ref Request, capacity);
         Array.Resize(ref PoseEnabled, capacity);

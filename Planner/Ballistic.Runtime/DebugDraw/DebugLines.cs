@@ -96,7 +96,7 @@ public sealed class DebugLines
     /// <summary>
     /// A walk as the path of its trunk centre, from the first stance's trunk centre to the last's: where the trunk
     /// moves as it turns in place at either end (standing up over its contacts from a stance leaning with a slope), a
-    /// straight segment; along the ground path (<see cref="Walk.PoseAtDistance"/>), dashed: the path cut into an odd
+    /// straight segment; along the ground path (<see cref="Walk.PoseAtDistance(float)"/>), dashed: the path cut into an odd
     /// number of equal lengths of about <see cref="DebugDrawSettings.WalkDashLength"/>, every other one drawn as a
     /// straight segment between its ends, the first and the last included (at most
     /// <see cref="DebugDrawSettings.MaxSegmentsPerWalk"/> dashes). With a dash length of 0, a solid polyline of about

@@ -131,8 +131,11 @@ public sealed class AgentPath
     /// The body point and its velocity <paramref name="t"/> seconds after the start of walk move
     /// <paramref name="index"/>: <see cref="BodyMotion.InWalk(in PathMove, float)"/> to the bit, from the ends computed once.
     /// </summary>
-    internal (Vector3 Position, Vector3 Velocity) BodyInWalk(int index, float t) =>
-        BodyMotion.InWalk(_moves[index].Walk!, _walkEnds[index], t);
+    /// <param name="index">The walk's move index.</param>
+    /// <param name="t">Seconds since the walk's start.</param>
+    /// <param name="segment">A path index of the walk near the trunk (a search hint: the same answer whatever it is).</param>
+    internal (Vector3 Position, Vector3 Velocity) BodyInWalk(int index, float t, int segment = -1) =>
+        BodyMotion.InWalk(_moves[index].Walk!, _walkEnds[index], t, segment);
 
     /// <summary>Number of moves.</summary>
     public int Count => _moves.Length;

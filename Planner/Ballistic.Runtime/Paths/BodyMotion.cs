@@ -46,7 +46,7 @@ internal static class BodyMotion
 
     /// <summary>
     /// The body point and its velocity <paramref name="t"/> seconds after the start of the walk of
-    /// <paramref name="move"/> (clamped to the walk): the walk's ground point <see cref="Walk.PointAt"/> at
+    /// <paramref name="move"/> (clamped to the walk): the walk's ground point <see cref="Walk.PointAt(float)"/> at
     /// <see cref="Walk.DistanceAt"/> plus the offset from the path's ends to the stances' contact centres,
     /// interpolated along the path; exactly the first stance's contact centre at 0 and the last one's at the end. The
     /// velocity is the walk's speed then (<see cref="Walk.SpeedAt"/>: zero while it turns in place, ramping up and
@@ -63,14 +63,18 @@ internal static class BodyMotion
     /// <see cref="InWalk(in PathMove, float)"/> on <paramref name="walk"/> between the contact centres and offsets of
     /// <paramref name="ends"/> (computed once per path: <see cref="AgentPath.BodyInWalk"/>): the one formula.
     /// </summary>
-    internal static (Vector3 Position, Vector3 Velocity) InWalk(Walk walk, in WalkEnds ends, float t)
+    /// <param name="walk">The walk.</param>
+    /// <param name="ends">Its contact centres and offsets.</param>
+    /// <param name="t">Seconds since the walk's start.</param>
+    /// <param name="segment">A path index of the walk near the point (a search hint: the same answer whatever it is).</param>
+    internal static (Vector3 Position, Vector3 Velocity) InWalk(Walk walk, in WalkEnds ends, float t, int segment = -1)
     {
         (Vector3 fromCentre, Vector3 toCentre, Vector3 startShift, Vector3 endShift) = ends;
         float length = walk.Length;
         float d = walk.DistanceAt(t);
         Vector3 position = d <= 0f ? fromCentre
             : d >= length ? toCentre
-            : walk.PointAt(d) + Vector3.Lerp(startShift, endShift, d / length);
+            : walk.PointAt(d, ref segment) + Vector3.Lerp(startShift, endShift, d / length);
         if (!(t >= 0f && t <= walk.Duration) || length <= 0f)
         {
             return (position, Vector3.Zero);
@@ -80,7 +84,8 @@ internal static class BodyMotion
         const float h = 0.005f;
         float a = MathF.Max(0f, d - h);
         float b = MathF.Min(length, d + h);
-        Vector3 along = b > a ? (walk.PointAt(b) - walk.PointAt(a)) / (b - a) : Vector3.Zero;
+        int before = segment;
+        Vector3 along = b > a ? (walk.PointAt(b, ref segment) - walk.PointAt(a, ref before)) / (b - a) : Vector3.Zero;
         Vector3 velocity = walk.SpeedAt(t) * (along + ((endShift - startShift) / length));
         return (position, velocity);
     }

@@ -8,7 +8,7 @@ namespace Ballistic.Runtime.Paths;
 /// One move of an agent's path with its place on the path's clock (seconds from the moment the agent started
 /// following the path). For a jump: the trunk centre leaves <see cref="From"/> at <see cref="Start"/>, flies exactly
 /// on <see cref="Arc"/> and lands on <see cref="To"/> at <see cref="End"/>. For a walk: the trunk leaves
-/// <see cref="From"/> at <see cref="Start"/> and moves exactly as <see cref="Walk"/>'s <see cref="Planner.Roadmaps.Walk.PoseAt"/>
+/// <see cref="From"/> at <see cref="Start"/> and moves exactly as <see cref="Walk"/>'s <see cref="Planner.Roadmaps.Walk.PoseAt(float)"/>
 /// at the time since <see cref="Start"/>, reaching <see cref="To"/> at <see cref="End"/>. Either way the stance after
 /// it lasts until <see cref="StanceEnd"/> while limbs re-step for the next move.
 /// </summary>
@@ -48,7 +48,7 @@ public readonly record struct PathMove(
 
     /// <summary>
     /// The trunk's pose <paramref name="t"/> seconds after <see cref="Start"/> (clamped to the move): exactly
-    /// <see cref="BallisticArc.PoseAt"/> for a jump, <see cref="Planner.Roadmaps.Walk.PoseAt"/> for a walk.
+    /// <see cref="BallisticArc.PoseAt"/> for a jump, <see cref="Planner.Roadmaps.Walk.PoseAt(float)"/> for a walk.
     /// </summary>
     public RootPose PoseAt(float t) => Walk is { } walk ? walk.PoseAt(t) : Arc.PoseAt(Math.Clamp(t, 0f, Arc.FlightTime));
 

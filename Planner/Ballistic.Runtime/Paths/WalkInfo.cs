@@ -7,7 +7,7 @@ namespace Ballistic.Runtime.Paths;
 /// A walk of an agent's path: the one it is walking now (<see cref="JumpWorld.TryGetCurrentWalk"/>) or the next one,
 /// known before it starts (<see cref="JumpWorld.TryGetNextWalk"/>). While walking, the agent's root is exactly
 /// <c>Walk.PoseAt((float)(Time − StartTime))</c> raised by the path animation's
-/// <see cref="Planner.Animation.JumpAnimation.WalkLift"/> (the trunk of an upright walk above its ground path). Positions are the trunk centre in world metres; times are world
+/// <see cref="Planner.Animation.JumpAnimation.WalkLift(float)"/> (the trunk of an upright walk above its ground path). Positions are the trunk centre in world metres; times are world
 /// seconds (<see cref="JumpWorld.Time"/>).
 /// </summary>
 /// <param name="Index">Index of the walk among the moves of the agent's path (jumps and walks counted together).</param>

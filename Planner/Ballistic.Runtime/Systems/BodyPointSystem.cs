@@ -52,7 +52,7 @@ internal sealed class BodyPointSystem(AgentStore agents)
                 ref readonly PathMove move = ref path.Move(cursor >> 1);
                 (position, velocity) = move.Walk is null
                     ? path.BodyInJump(cursor >> 1, LocomotionSystem.FlightTime(time, start, move))
-                    : path.BodyInWalk(cursor >> 1, LocomotionSystem.MoveTime(time, start, move));
+                    : path.BodyInWalk(cursor >> 1, LocomotionSystem.MoveTime(time, start, move), agents.WalkSegment[slot]);
             }
 
             agents.Body[slot] = new BodyPoint(position, velocity, Heading(agents.Root[slot], agents.Body[slot].Heading));

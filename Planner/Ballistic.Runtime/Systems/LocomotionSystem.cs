@@ -10,7 +10,7 @@ namespace Ballistic.Runtime.Systems;
 
 /// <summary>
 /// Advances every agent along its path on the path's clock: each jump's takeoff, flight exactly on its parabola and
-/// landing; each walk exactly along its ground path at its speed (<see cref="Walk.PoseAt"/>); the stance after each
+/// landing; each walk exactly along its ground path at its speed (<see cref="Walk.PoseAt(float)"/>); the stance after each
 /// move in which limbs re-step; and so on to the end of the last move. Emits each move's start and end as it is
 /// crossed (at its exact time, which may fall between ticks: <see cref="JumpEventKind.JumpStarted"/> and
 /// <see cref="JumpEventKind.Landed"/> for a jump, <see cref="JumpEventKind.WalkStarted"/> and
@@ -90,7 +90,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
             if (t < path.Duration && !agents.StopAtStance[slot])
             {
                 // Landed: the body absorbs the landing and stands up before the target counts as reached.
-                agents.Root[slot] = path.Animation.RootAt(t);
+                agents.Root[slot] = path.Animation.RootAt(t, ref agents.Frame[slot]);
                 agents.State[slot] = AgentState.Stance;
                 return;
             }
@@ -114,13 +114,14 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
         {
             // On the ground before this move starts (the crouch before a first jump, or the stance after the previous
             // move): the root sinks and rises with the animation, over the same stance.
-            agents.Root[slot] = path.Animation.RootAt(t);
+            agents.Root[slot] = path.Animation.RootAt(t, ref agents.Frame[slot]);
             agents.State[slot] = AgentState.Stance;
         }
         else if (current.Walk is { } walk)
         {
             // Walking: exactly along the walk's path at its speed, the trunk raised by the animation's upright lift.
-            agents.Root[slot] = JumpAnimation.Lifted(walk.PoseAt(MoveTime(time, start, current)), path.Animation.WalkLift(t));
+            // The walk's segment and the animation's frame are searched from where the last tick found them.
+            agents.Root[slot] = JumpAnimation.Lifted(walk.PoseAt(MoveTime(time, start, current), ref agents.WalkSegment[slot]), path.Animation.WalkLift(t, ref agents.Frame[slot]));
             agents.State[slot] = AgentState.Walking;
         }
         else
@@ -148,7 +149,7 @@ internal sealed class LocomotionSystem(AgentStore agents, EventBuffer events, Pa
     /// Seconds since the start of <paramref name="move"/> (a walk's first step), from world time: the formula every
     /// reader of the runtime's walks uses (<see cref="Paths.WalkInfo.StartTime"/> is <c>pathStart + move.Start</c>), so
     /// that an agent's root equals <c>walk.PoseAt((float)(time − startTime))</c> bit for bit, raised by the path's
-    /// <see cref="JumpAnimation.WalkLift"/>.
+    /// <see cref="JumpAnimation.WalkLift(float)"/>.
     /// </summary>
     public static float MoveTime(double time, double pathStart, in PathMove move) => (float)(time - (pathStart + move.Start));
 

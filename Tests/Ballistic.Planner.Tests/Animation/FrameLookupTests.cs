@@ -10,10 +10,11 @@ using Ballistic.Planner.Steering;
 namespace Ballistic.Planner.Tests.Animation;
 
 /// <summary>
-/// The clip's samplers (<see cref="JumpAnimation.Sample(float, Span{float})"/>, <see cref="JumpAnimation.RootAt"/>)
+/// The clip's samplers (<see cref="JumpAnimation.Sample(float, Span{float})"/>, <see cref="JumpAnimation.RootAt(float)"/>)
 /// find the frames around a time by slices of the clip (they run for every moving agent every tick): on frames
 /// spaced unevenly (clusters, gaps, repeated times, as re-sampling leaves them) they interpolate between exactly the
-/// frames a scan from the first would find, at frame times, between them, before the first and after the last.
+/// frames a scan from the first would find, at frame times, between them, before the first and after the last; and
+/// the root found from a hint (the frame of an agent's last tick) is the same to the bit whatever the hint.
 /// </summary>
 public sealed class FrameLookupTests
 {
@@ -47,10 +48,19 @@ public sealed class FrameLookupTests
 
         float[] sampled = new float[model.Rig.DofCount];
         var probes = times.Concat(times.Zip(times.Skip(1), (a, b) => 0.5f * (a + b))).Concat(Enumerable.Range(0, 2_000).Select(_ => (float)((random.NextDouble() * 1.2 * end) - (0.1 * end)))).Append(-1f).Append(end + 1f).ToList();
+        int carried = 0;
         Assert.Multiple(() =>
         {
             foreach (float t in probes)
             {
+                RootPose root = animation.RootAt(t);
+                Assert.That(animation.RootAt(t, ref carried), Is.EqualTo(root), $"the root at {t} s from the last probe's frame");
+                foreach (int h in new[] { -1, 0, times.Count / 2, times.Count - 1, times.Count, int.MaxValue, random.Next(-2, times.Count + 2) })
+                {
+                    int hint = h;
+                    Assert.That(animation.RootAt(t, ref hint), Is.EqualTo(root), $"the root at {t} s from frame {h}");
+                }
+
                 // The reference: the first frame at or after t by a scan (the last one when none is), and the one before it.
                 int hi = times.FindIndex(f => f >= t);
                 hi = hi < 0 ? times.Count - 1 : hi;

@@ -7,8 +7,8 @@ namespace Ballistic.Planner.Tests.Runtime;
 
 /// <summary>
 /// A test double of the whole-body animator that animates walks as well as jumps, simply: a fixed stance between
-/// moves, frames at the frame rate with the root exactly on the moves (<see cref="JumpAnimation.RootAt"/>: the arc in
-/// flight, <see cref="Walk.PoseAt"/> while walking) and the character's contact pose angles; no problems. Standing
+/// moves, frames at the frame rate with the root exactly on the moves (<see cref="JumpAnimation.RootAt(float)"/>: the arc in
+/// flight, <see cref="Walk.PoseAt(float)"/> while walking) and the character's contact pose angles; no problems. Standing
 /// checks are the real animator's. With a <c>lift</c>, walking frames have their root that far above the walk's path
 /// halfway through each walk, rising and falling as a sine of the walk's time (an upright walk's lift, simply).
 /// </summary>

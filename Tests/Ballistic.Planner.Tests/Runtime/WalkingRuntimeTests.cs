@@ -237,7 +237,7 @@ public sealed class WalkingRuntimeTests
     }
 
     /// <summary>
-    /// An upright walk's trunk rises above the walk's path in the animation (<see cref="Planner.Animation.JumpAnimation.WalkLift"/>);
+    /// An upright walk's trunk rises above the walk's path in the animation (<see cref="Planner.Animation.JumpAnimation.WalkLift(float)"/>);
     /// the agent's root follows it (the skeleton is posed from the root and the animation's angles, solved for the
     /// lifted trunk): exactly the walk's pose raised by the lift, the lift up to the animation's own.
     /// </summary>

@@ -146,7 +146,7 @@ internal static class PlanAudit
     /// A walk as its promises say: ground path points at most 0.25 m apart, each on the ground (within 2 cm, found by
     /// a ray of our own), from one stance's contacts to the other's; no rise or drop between neighbouring points
     /// beyond the step height plus the steepest slope over their distance; no ground steeper than the slope at two
-    /// neighbouring points; the trunk box as it moves (<see cref="Walk.PoseAt"/>, turning in place included) clear
+    /// neighbouring points; the trunk box as it moves (<see cref="Walk.PoseAt(float)"/>, turning in place included) clear
     /// of the level every 2 cm and 2°; the trunk exactly on the stances at both ends; the trunk never faster than
     /// the walking speed (so the duration at least the length at that speed), never turning faster than twice
     /// the character's <see cref="WalkingLimits.TurnRate"/>.
