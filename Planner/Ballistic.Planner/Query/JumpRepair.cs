@@ -41,6 +41,13 @@ internal sealed class JumpRepair
     private readonly List<RejectedJump> _setAside = [];
     private readonly HashSet<int> _noTakeoffs = [];
     private readonly HashSet<int> _noLandings = [];
+
+    /// <summary>Why each stance of <see cref="_noTakeoffs"/> and <see cref="_noLandings"/> was set aside (the animator's first problem there), by node id.</summary>
+    private readonly Dictionary<int, string> _takeoffReasons = [];
+    private readonly Dictionary<int, string> _landingReasons = [];
+
+    /// <summary>Stances set aside before the first search (<see cref="Remember"/>), in order: what the request knew from others.</summary>
+    private readonly List<(int Node, ProblemStance Stance, string Reason)> _remembered = [];
     private readonly List<RootPose> _refusedTurns = [];
     private readonly int _placedFrom;
 
@@ -258,6 +265,7 @@ internal sealed class JumpRepair
                 foreach (JumpProblem p in problems)
                 {
                     stance |= p.Stance == ProblemStance.Takeoff ? _noTakeoffs.Add(move.From.Id) : _noLandings.Add(move.To.Id);
+                    (p.Stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons).TryAdd(p.Stance == ProblemStance.Takeoff ? move.From.Id : move.To.Id, p.Reason);
                 }
 
                 if (stance)
@@ -405,7 +413,53 @@ internal sealed class JumpRepair
     /// <c>null</c> when none were (the search's own status and reason then stand).
     /// </summary>
     public string? SearchFailed(string searchReason) =>
-        _setAside.Count == 0 ? null : $"no path animates cleanly: {SetAsideCount()} set aside ({First()}) and then {searchReason}";
+        _setAside.Count > 0 ? $"no path animates cleanly: {SetAsideCount()} set aside ({First()}) and then {searchReason}"
+        : _remembered.Count > 0 ? $"no path animates cleanly: {Remembered()} and then {searchReason}"
+        : null;
+
+    /// <summary>
+    /// Sets aside, before the first search, a stance an earlier request found the body cannot crouch on
+    /// (<paramref name="stance"/> <see cref="ProblemStance.Takeoff"/>: no jump takes off from it) or absorb a landing on
+    /// (<see cref="ProblemStance.Landing"/>), with the animator's <paramref name="reason"/>: the stance's contact pose
+    /// is the same for every jump and every request, so the request need not animate a path to find it again. Only for
+    /// stances of the roadmap searched (node ids below its node count), whose ids every request shares.
+    /// </summary>
+    /// <param name="node">The stance's node id.</param>
+    /// <param name="stance">Set aside as a takeoff or as a landing.</param>
+    /// <param name="reason">The animator's reason.</param>
+    internal void Remember(int node, ProblemStance stance, string reason)
+    {
+        bool added = stance == ProblemStance.Takeoff ? _noTakeoffs.Add(node) : stance == ProblemStance.Landing && _noLandings.Add(node);
+        if (added)
+        {
+            (stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons)[node] = reason;
+            _remembered.Add((node, stance, reason));
+        }
+    }
+
+    /// <summary>The node id of the stance the request searches from (−1: unknown), named first among the stances it was told of (<see cref="Remember"/>) when it is one.</summary>
+    internal int Start { get; set; } = -1;
+
+    /// <summary>
+    /// The stances this request set aside as takeoffs (<paramref name="stance"/> <see cref="ProblemStance.Takeoff"/>)
+    /// or landings, by node id, with the animator's reason: those it found itself and those it was told
+    /// (<see cref="Remember"/>).
+    /// </summary>
+    internal IReadOnlyDictionary<int, string> StancesSetAside(ProblemStance stance) => stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons;
+
+    /// <summary>"jumps were not searched from 1 stance the body cannot crouch on (stance 12: …), as earlier requests found".</summary>
+    private string Remembered()
+    {
+        int takeoffs = _remembered.Count(r => r.Stance == ProblemStance.Takeoff);
+        int landings = _remembered.Count - takeoffs;
+        string Stances(int n) => n == 1 ? "1 stance" : $"{n} stances";
+        string which = takeoffs == 0 ? $"onto {Stances(landings)} the body cannot absorb a landing on"
+            : landings == 0 ? $"from {Stances(takeoffs)} the body cannot crouch on"
+            : $"from {Stances(takeoffs)} the body cannot crouch on or onto {Stances(landings)} it cannot absorb a landing on";
+        // The request's own start first, when it is one: the reason its agent cannot leave.
+        (int node, _, string reason) = _remembered.Find(r => r.Node == Start && r.Stance == ProblemStance.Takeoff) is { Reason: not null } own ? own : _remembered[0];
+        return $"no jump was searched {which}, as earlier requests found (stance {node}: {reason}{(_remembered.Count > 1 ? "; …" : "")})";
+    }
 
     /// <summary>The reason of a request whose every search, <paramref name="rounds"/> of them, gave a path that did not animate cleanly.</summary>
     public string RoundsExhausted(int rounds) => $"no path animated cleanly in {rounds} searches: {SetAsideCount()} set aside ({First()})";

@@ -26,6 +26,9 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// <summary>The stance searched from.</summary>
     public RoadmapNode? Start { get; set; }
 
+    /// <summary>The roadmap searched (its kind's when the request started).</summary>
+    public Roadmap? Roadmap { get; set; }
+
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }
 

@@ -1,5 +1,6 @@
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
@@ -39,6 +40,9 @@ internal sealed class PathRequestSystem : IDisposable
 
     /// <summary>The jobs advanced on the tick thread in slices (no background threads), by request, until they end.</summary>
     private readonly Dictionary<PathRequest, RequestJob> _stepped = new(ReferenceEqualityComparer.Instance);
+
+    /// <summary>Per kind slot: the stances its delivered requests found the body cannot crouch on or absorb a landing on (<see cref="StanceLessons"/>).</summary>
+    private readonly List<StanceLessons?> _lessons = [];
 
     public PathRequestSystem(WorldSettings settings, AgentStore agents, PathQueue queue, EventBuffer events, List<CharacterKind?> kinds, List<RoadmapSearch?> searches)
     {
@@ -86,6 +90,10 @@ internal sealed class PathRequestSystem : IDisposable
 
             started++;
             request.Start = _agents.Stance[slot]!;
+            StanceLessons lessons = Lessons(_agents.Kind[slot]);
+            request.Roadmap = lessons.Roadmap;
+            request.Repair.Start = request.Start.Id;
+            lessons.Teach(request.Repair);
             request.DueTick = tick + _settings.PathLatencyTicks;
             var job = new RequestJob(_kinds[_agents.Kind[slot]]!, _searches[_agents.Kind[slot]]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
@@ -207,10 +215,35 @@ internal sealed class PathRequestSystem : IDisposable
                 outcome = new RequestOutcome(null, [], null, e, Searching: false);
             }
 
+            // What the request found about its roadmap's stances, for the requests started from the next tick on.
+            int kind = _agents.Kind[slot];
+            if (outcome.Error is null && request.Roadmap is { } searched && _kinds[kind] is { } owner && ReferenceEquals(owner.Roadmap, searched))
+            {
+                Lessons(kind).Learn(request.Repair);
+            }
+
             Conclude(slot, request, outcome, tick, time);
         }
 
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
+    }
+
+    /// <summary>Stances the body cannot crouch on or absorb a landing on found so far on the roadmap of the kind in slot <paramref name="kind"/>: anew when its roadmap changed.</summary>
+    private StanceLessons Lessons(int kind)
+    {
+        while (_lessons.Count <= kind)
+        {
+            _lessons.Add(null);
+        }
+
+        Roadmap roadmap = _kinds[kind]!.Roadmap;
+        if (_lessons[kind] is not { } lessons || !ReferenceEquals(lessons.Roadmap, roadmap))
+        {
+            lessons = new StanceLessons(roadmap);
+            _lessons[kind] = lessons;
+        }
+
+        return lessons;
     }
 
     /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>

@@ -1,0 +1,54 @@
+using Ballistic.Planner.Animation;
+using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
+
+namespace Ballistic.Runtime.Systems;
+
+/// <summary>
+/// What one world's delivered path requests found about one kind's roadmap stances: those the body cannot crouch on
+/// (no jump takes off from them) or absorb a landing on (none lands on them), each with the animator's reason. Each
+/// request the world starts afterwards sets them aside before its first search (<see cref="JumpRepair.Remember"/>),
+/// so that an agent standing where it cannot crouch is told so after one search instead of animating and repairing
+/// a path for every target it is sent to. Learned and taught on the tick thread, in delivery and start order, so that
+/// the world stays deterministic whatever its threads. Of one roadmap: forgotten when the kind's roadmap changes.
+/// </summary>
+internal sealed class StanceLessons(Roadmap roadmap)
+{
+    private readonly SortedDictionary<int, string> _noTakeoffs = [];
+    private readonly SortedDictionary<int, string> _noLandings = [];
+
+    /// <summary>The roadmap whose node ids the lessons name.</summary>
+    public Roadmap Roadmap { get; } = roadmap;
+
+    /// <summary>Keeps the roadmap stances <paramref name="repair"/> (a delivered request's) set aside, with their reasons; placed stances (ids past the roadmap's) are the request's own and are not kept.</summary>
+    public void Learn(JumpRepair repair)
+    {
+        Learn(repair.StancesSetAside(ProblemStance.Takeoff), _noTakeoffs);
+        Learn(repair.StancesSetAside(ProblemStance.Landing), _noLandings);
+    }
+
+    /// <summary>Sets aside in <paramref name="repair"/> (a request about to start) every stance learned, in node order.</summary>
+    public void Teach(JumpRepair repair)
+    {
+        foreach ((int node, string reason) in _noTakeoffs)
+        {
+            repair.Remember(node, ProblemStance.Takeoff, reason);
+        }
+
+        foreach ((int node, string reason) in _noLandings)
+        {
+            repair.Remember(node, ProblemStance.Landing, reason);
+        }
+    }
+
+    private void Learn(IReadOnlyDictionary<int, string> found, SortedDictionary<int, string> into)
+    {
+        foreach ((int node, string reason) in found)
+        {
+            if (node >= 0 && node < Roadmap.Nodes.Count)
+            {
+                into.TryAdd(node, reason);
+            }
+        }
+    }
+}
