@@ -1,6 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Agents;
 
@@ -26,8 +27,8 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// <summary>The stance searched from.</summary>
     public RoadmapNode? Start { get; set; }
 
-    /// <summary>The roadmap searched (its kind's when the request started).</summary>
-    public Roadmap? Roadmap { get; set; }
+    /// <summary>The kind whose roadmap was searched and whose animator animated (the agent's when the request started).</summary>
+    public CharacterKind? Character { get; set; }
 
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }

@@ -1,6 +1,5 @@
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
-using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
@@ -91,7 +90,7 @@ internal sealed class PathRequestSystem : IDisposable
             started++;
             request.Start = _agents.Stance[slot]!;
             StanceLessons lessons = Lessons(_agents.Kind[slot]);
-            request.Roadmap = lessons.Roadmap;
+            request.Character = lessons.Kind;
             request.Repair.Start = request.Start.Id;
             lessons.Teach(request.Repair);
             request.DueTick = tick + _settings.PathLatencyTicks;
@@ -217,7 +216,7 @@ internal sealed class PathRequestSystem : IDisposable
 
             // What the request found about its roadmap's stances, for the requests started from the next tick on.
             int kind = _agents.Kind[slot];
-            if (outcome.Error is null && request.Roadmap is { } searched && _kinds[kind] is { } owner && ReferenceEquals(owner.Roadmap, searched))
+            if (outcome.Error is null && _kinds[kind] is { } owner && ReferenceEquals(owner, request.Character))
             {
                 Lessons(kind).Learn(request.Repair);
             }
@@ -228,7 +227,7 @@ internal sealed class PathRequestSystem : IDisposable
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
     }
 
-    /// <summary>Stances the body cannot crouch on or absorb a landing on found so far on the roadmap of the kind in slot <paramref name="kind"/>: anew when its roadmap changed.</summary>
+    /// <summary>Stances the body cannot crouch on or absorb a landing on found so far by the kind in slot <paramref name="kind"/>: anew when another kind (a rebake) took the slot.</summary>
     private StanceLessons Lessons(int kind)
     {
         while (_lessons.Count <= kind)
@@ -236,10 +235,10 @@ internal sealed class PathRequestSystem : IDisposable
             _lessons.Add(null);
         }
 
-        Roadmap roadmap = _kinds[kind]!.Roadmap;
-        if (_lessons[kind] is not { } lessons || !ReferenceEquals(lessons.Roadmap, roadmap))
+        CharacterKind owner = _kinds[kind]!;
+        if (_lessons[kind] is not { } lessons || !ReferenceEquals(lessons.Kind, owner))
         {
-            lessons = new StanceLessons(roadmap);
+            lessons = new StanceLessons(owner);
             _lessons[kind] = lessons;
         }
 

@@ -1,6 +1,7 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Systems;
 
@@ -10,15 +11,18 @@ namespace Ballistic.Runtime.Systems;
 /// request the world starts afterwards sets them aside before its first search (<see cref="JumpRepair.Remember"/>),
 /// so that an agent standing where it cannot crouch is told so after one search instead of animating and repairing
 /// a path for every target it is sent to. Learned and taught on the tick thread, in delivery and start order, so that
-/// the world stays deterministic whatever its threads. Of one roadmap: forgotten when the kind's roadmap changes.
+/// the world stays deterministic whatever its threads. Of one kind (its body and its roadmap): forgotten when the
+/// world's kind changes (a rebake, or another kind in its slot).
 /// </summary>
-internal sealed class StanceLessons(Roadmap roadmap)
+internal sealed class StanceLessons(CharacterKind kind)
 {
     private readonly SortedDictionary<int, string> _noTakeoffs = [];
     private readonly SortedDictionary<int, string> _noLandings = [];
 
-    /// <summary>The roadmap whose node ids the lessons name.</summary>
-    public Roadmap Roadmap { get; } = roadmap;
+    /// <summary>The kind whose body the lessons are about, on whose roadmap's node ids.</summary>
+    public CharacterKind Kind { get; } = kind;
+
+    private Roadmap Roadmap => Kind.Roadmap;
 
     /// <summary>Keeps the roadmap stances <paramref name="repair"/> (a delivered request's) set aside, with their reasons; placed stances (ids past the roadmap's) are the request's own and are not kept.</summary>
     public void Learn(JumpRepair repair)

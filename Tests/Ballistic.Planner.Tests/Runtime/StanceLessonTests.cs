@@ -12,7 +12,8 @@ namespace Ballistic.Planner.Tests.Runtime;
 /// A stance the body cannot crouch on, found by one path request, is set aside by every request the world starts
 /// after it: an agent standing there is told so after one search, not after animating and repairing a path for every
 /// target it is sent to (the playtest's agent spawned on a block top it could not crouch on failed 85 targets in 10 s
-/// that way, each a full plan and repair). The same outcomes whatever the threads.
+/// that way, each a full plan and repair). The lessons are the kind's: another kind in its slot starts afresh. The same
+/// outcomes whatever the threads.
 /// </summary>
 public sealed class StanceLessonTests
 {
@@ -69,7 +70,16 @@ public sealed class StanceLessonTests
             JumpEvent found = run.Single(e => e.Agent == third && e.Kind is JumpEventKind.PathFailed or JumpEventKind.PathFound);
             Assert.That(found.Kind, Is.EqualTo(JumpEventKind.PathFound), found.Reason);
             Assert.That(world.GetPath(third)!.Moves.Select(m => m.From.Id), Has.No.Member(trap.Id));
-            told.Add($"{first} | {again} | {newcomer} | {string.Join(",", world.GetPath(third)!.Moves.Select(m => m.To.Id))}");
+
+            // Another kind in the slot (a body that can crouch there, on the same roadmap): the lessons were the old body's.
+            var able = new CharacterKind(desert.Scene, roadmap, desert.Animator, new SimpleMoveAnimator(desert.Animator));
+            Assert.That(world.ReplaceKind(handle, able).Ok, Is.True);
+            Assert.That(world.SetTarget(agent, RuntimeWorlds.Point(other)).Ok, Is.True);
+            List<JumpEvent> freed = RuntimeWorlds.Run(world, 200, (_, s) => s.Any(e => e.Agent == agent && e.Kind is JumpEventKind.PathFailed or JumpEventKind.PathFound));
+            JumpEvent leaving = freed.Single(e => e.Agent == agent && e.Kind is JumpEventKind.PathFailed or JumpEventKind.PathFound);
+            Assert.That(leaving.Kind, Is.EqualTo(JumpEventKind.PathFound), leaving.Reason);
+            Assert.That(world.GetPath(agent)!.Moves[0].From.Id, Is.EqualTo(trap.Id), "it takes off from the trap, which the new body can crouch on");
+            told.Add($"{first} | {again} | {newcomer} | {string.Join(",", world.GetPath(agent)!.Moves.Select(m => m.To.Id))}");
         }
 
         Assert.That(told[1], Is.EqualTo(told[0]), "the same outcomes at 0 and 2 threads");
