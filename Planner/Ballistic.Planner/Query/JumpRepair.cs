@@ -20,7 +20,9 @@ namespace Ballistic.Planner.Query;
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
 /// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
 /// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
-/// every jump, since each would have the same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it. Not thread-safe.
+/// every jump, since each would have the same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it.
+/// Such stances found by earlier requests can be set aside before the first search (<see cref="Remember"/>: the
+/// runtime's worlds do). Not thread-safe.
 /// </summary>
 internal sealed class JumpRepair
 {
@@ -447,7 +449,7 @@ internal sealed class JumpRepair
     /// </summary>
     internal IReadOnlyDictionary<int, string> StancesSetAside(ProblemStance stance) => stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons;
 
-    /// <summary>"jumps were not searched from 1 stance the body cannot crouch on (stance 12: …), as earlier requests found".</summary>
+    /// <summary>"no jump was searched from 1 stance the body cannot crouch on, as earlier requests found (stance 12: …)".</summary>
     private string Remembered()
     {
         int takeoffs = _remembered.Count(r => r.Stance == ProblemStance.Takeoff);
