@@ -62,18 +62,7 @@ internal sealed class SortedLookup
 
         // Every value before the slice's first lies below the slice's start, so below value: step on from it (and
         // back, where rounding put value a hair below its slice's start).
-        int i = _slices[Math.Min(_slices.Length - 1, (int)((value - _values[0]) / _width))];
-        while (i > 0 && _values[i - 1] >= value)
-        {
-            i--;
-        }
-
-        while (_values[i] < value)
-        {
-            i++;
-        }
-
-        return i;
+        return StepTo(_slices[Math.Min(_slices.Length - 1, (int)((value - _values[0]) / _width))], value, int.MaxValue);
     }
 
     /// <summary>
@@ -83,29 +72,43 @@ internal sealed class SortedLookup
     /// </summary>
     public int FirstAtOrAbove(float value, ref int hint)
     {
-        const int Steps = 4;
         int last = _values.Length - 1;
-        int i = hint;
-        if ((uint)i <= (uint)last && last > 0 && value > _values[0] && value <= _values[last])
+        if ((uint)hint <= (uint)last && last > 0 && value > _values[0] && value <= _values[last] && StepTo(hint, value, 4) is >= 0 and int near)
         {
-            // As in FirstAtOrAbove: back while the value before is at or above, on while this one is below.
-            int steps = 0;
-            while (i > 0 && _values[i - 1] >= value && steps++ < Steps)
-            {
-                i--;
-            }
-
-            while (_values[i] < value && steps++ < Steps)
-            {
-                i++;
-            }
-
-            if ((i == 0 || _values[i - 1] < value) && _values[i] >= value)
-            {
-                return hint = i;
-            }
+            return hint = near;
         }
 
         return hint = FirstAtOrAbove(value);
+    }
+
+    /// <summary>
+    /// The first index at or above <paramref name="value"/> (above the first value, at most the last), stepped to from
+    /// <paramref name="i"/>: back while the value before is at or above, on while this one is below; −1 when that
+    /// takes more than <paramref name="budget"/> steps.
+    /// </summary>
+    private int StepTo(int i, float value, int budget)
+    {
+        int steps = 0;
+        while (i > 0 && _values[i - 1] >= value)
+        {
+            if (steps++ == budget)
+            {
+                return -1;
+            }
+
+            i--;
+        }
+
+        while (_values[i] < value)
+        {
+            if (steps++ == budget)
+            {
+                return -1;
+            }
+
+            i++;
+        }
+
+        return i;
     }
 }

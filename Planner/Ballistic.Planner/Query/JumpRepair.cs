@@ -266,8 +266,7 @@ internal sealed class JumpRepair
                 bool stance = false;
                 foreach (JumpProblem p in problems)
                 {
-                    stance |= p.Stance == ProblemStance.Takeoff ? _noTakeoffs.Add(move.From.Id) : _noLandings.Add(move.To.Id);
-                    (p.Stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons).TryAdd(p.Stance == ProblemStance.Takeoff ? move.From.Id : move.To.Id, p.Reason);
+                    stance |= SetStanceAside(p.Stance == ProblemStance.Takeoff ? move.From.Id : move.To.Id, p.Stance, p.Reason);
                 }
 
                 if (stance)
@@ -431,12 +430,23 @@ internal sealed class JumpRepair
     /// <param name="reason">The animator's reason.</param>
     internal void Remember(int node, ProblemStance stance, string reason)
     {
-        bool added = stance == ProblemStance.Takeoff ? _noTakeoffs.Add(node) : stance == ProblemStance.Landing && _noLandings.Add(node);
-        if (added)
+        if (stance != ProblemStance.None && SetStanceAside(node, stance, reason))
         {
-            (stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons)[node] = reason;
             _remembered.Add((node, stance, reason));
         }
+    }
+
+    /// <summary>Sets stance <paramref name="node"/> aside as a takeoff or a landing (<paramref name="stance"/>) with the animator's first <paramref name="reason"/> there; false when it already was.</summary>
+    private bool SetStanceAside(int node, ProblemStance stance, string reason)
+    {
+        bool takeoff = stance == ProblemStance.Takeoff;
+        if (!(takeoff ? _noTakeoffs : _noLandings).Add(node))
+        {
+            return false;
+        }
+
+        (takeoff ? _takeoffReasons : _landingReasons)[node] = reason;
+        return true;
     }
 
     /// <summary>The node id of the stance the request searches from (−1: unknown), named first among the stances it was told of (<see cref="Remember"/>) when it is one.</summary>
