@@ -8,14 +8,15 @@ using Ballistic.Runtime;
 using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
+using Ballistic.Runtime.Paths;
 using BenchmarkDotNet.Attributes;
 
 namespace Ballistic.Benchmarks;
 
 /// <summary>
 /// The runtime's systems on the generated desert with the skeleton (39 degrees of freedom) and a 1,000-node roadmap:
-/// one tick of 1,000 agents spread along their paths, the pose fill of 100 agents, serving 100 path requests under a
-/// budget of 25 searches per tick, and the tick in which 50 path requests start while 1,000 agents move (the requests
+/// one tick of 1,000 agents spread along their paths (walking and jumping, or jumping only), the pose fill of 100
+/// agents, serving 100 path requests under a budget of 25 searches per tick, and the tick in which 50 path requests start while 1,000 agents move (the requests
 /// run in the background, or on the tick thread: whole, or in slices under the default planning budget).
 /// </summary>
 /// <remarks>
@@ -141,9 +142,9 @@ public class RuntimeBenchmarks
     /// (standing between moves, walking, taking off, flying, landing) when the tick is measured; every path animated
     /// before it returns. The same world every time it is made.
     /// </summary>
-    private JumpWorld Staggered()
+    private JumpWorld Staggered(Locomotion locomotion, List<List<Move>> moves, float shortest)
     {
-        var world = new JumpWorld(_kind.Scene.Level, new WorldSettings { MaxSearchesPerTick = 1_000, AnimationThreads = 2 });
+        var world = new JumpWorld(_kind.Scene.Level, new WorldSettings { MaxSearchesPerTick = 1_000, AnimationThreads = 2, Locomotion = locomotion });
         KindHandle kind = world.AddKind(_kind).Kind;
         var agents = new List<AgentHandle>();
         for (int i = 0; i < CrowdSize; i++)
@@ -154,12 +155,12 @@ public class RuntimeBenchmarks
         }
 
         int waves = CrowdSize / _pairs.Count;
-        int ticksApart = Math.Max(1, (int)(0.9f * _shortest / waves * world.Settings.TickRate));
+        int ticksApart = Math.Max(1, (int)(0.9f * shortest / waves * world.Settings.TickRate));
         for (int wave = 0; wave < waves; wave++)
         {
             for (int p = 0; p < _pairs.Count; p++)
             {
-                world.PerformMoves(agents[(wave * _pairs.Count) + p], _moves![p]);
+                world.PerformMoves(agents[(wave * _pairs.Count) + p], moves[p]);
             }
 
             for (int tick = 0; tick < ticksApart; tick++)
@@ -185,14 +186,96 @@ public class RuntimeBenchmarks
 
     /// <summary>The crowd made anew (<see cref="Staggered"/>): every iteration measures the same tick of the same world.</summary>
     [IterationSetup(Target = nameof(TickThousandAgents))]
-    public void SpreadCrowd()
+    public void SpreadCrowd() => MakeCrowd(Locomotion.WalkAndJump, _moves!, _shortest);
+
+    /// <summary>The crowd made anew on jump-only paths (<see cref="Staggered"/>).</summary>
+    [IterationSetup(Target = nameof(TickThousandJumpingAgents))]
+    public void SpreadJumpingCrowd()
     {
+        SearchJumpOnlyPaths();
+        MakeCrowd(Locomotion.Jump, _jumpMoves!, _jumpShortest);
+    }
+
+    /// <summary>
+    /// A 1,000 Hz world of 1,000 agents sent off together on the pairs' jump-only paths, 50 on each (the mix of the
+    /// first runtime benchmark, 2026-11-21: every agent at the same phase of one of 20 paths), its paths delivered.
+    /// </summary>
+    [IterationSetup(Target = nameof(TickThousandAgentsSentTogether))]
+    public void SendCrowdTogether()
+    {
+        SearchJumpOnlyPaths();
         _crowd?.Dispose();
-        _crowd = Staggered();
-        // The making's garbage collected now, not during the ticks measured.
+        _crowd = new JumpWorld(_kind.Scene.Level, new WorldSettings { TickRate = 1_000, MaxSearchesPerTick = 1_000, AnimationThreads = 2, Locomotion = Locomotion.Jump });
+        KindHandle kind = _crowd.AddKind(_kind).Kind;
+        for (int i = 0; i < CrowdSize; i++)
+        {
+            AgentHandle agent = _crowd.AddAgent(kind, _kind.Roadmap.ContactCentres[_pairs[i % _pairs.Count].From.Id]).Agent;
+            _crowd.SetPoseEnabled(agent, false);
+            _crowd.PerformMoves(agent, _jumpMoves![i % _pairs.Count]);
+        }
+
+        Settle(_crowd);
+        CollectGarbage();
+    }
+
+    /// <summary>
+    /// The mean tick over the first 7 s of <see cref="SendCrowdTogether"/>'s world (7,000 ticks at 1,000 Hz: takeoff
+    /// crouches, flights, landings and stances, all agents of a path at the same phase): today's code on the mix the
+    /// README's first runtime figure (78 µs, 2026-11-21) was measured on, before walks and body points.
+    /// </summary>
+    [Benchmark(OperationsPerInvoke = TogetherTicks)]
+    public void TickThousandAgentsSentTogether() => StepCrowd(TogetherTicks);
+
+    /// <summary>Ticks measured per iteration of <see cref="TickThousandAgentsSentTogether"/>: 7 s at 1,000 Hz.</summary>
+    private const int TogetherTicks = 7_000;
+
+    /// <summary>Searches and animates the pairs' jump-only paths, once.</summary>
+    private void SearchJumpOnlyPaths()
+    {
+        if (_jumpMoves is null)
+        {
+            // The pairs' jump-only paths, searched and animated once.
+            using var world = new JumpWorld(_kind.Scene.Level, new WorldSettings { MaxSearchesPerTick = 1_000, AnimationThreads = 2, Locomotion = Locomotion.Jump });
+            KindHandle kind = world.AddKind(_kind).Kind;
+            var agents = _pairs.Select(pair => world.AddAgent(kind, _kind.Roadmap.ContactCentres[pair.From.Id]).Agent).ToList();
+            for (int i = 0; i < agents.Count; i++)
+            {
+                world.SetTarget(agents[i], _kind.Roadmap.ContactCentres[_pairs[i].To.Id]);
+            }
+
+            Settle(world);
+            List<AgentPath> paths = [.. agents.Select(a => world.GetPath(a) ?? throw new InvalidOperationException("A benchmark pair found no jump-only path."))];
+            _jumpMoves = [.. paths.Select(path => path.Moves.Select(m => m.ToMove()).ToList())];
+            _jumpShortest = paths.Min(path => path.Duration);
+        }
+    }
+
+    /// <summary>The pairs' jump-only paths as moves, and the shortest one's duration, seconds (made by <see cref="SearchJumpOnlyPaths"/>).</summary>
+    private List<List<Move>>? _jumpMoves;
+    private float _jumpShortest;
+
+    /// <summary>The crowd's making's garbage collected now, not during the ticks measured.</summary>
+    private static void CollectGarbage()
+    {
         GC.Collect();
         GC.WaitForPendingFinalizers();
         GC.Collect();
+    }
+
+    /// <summary>Steps the crowd <paramref name="ticks"/> times.</summary>
+    private void StepCrowd(int ticks)
+    {
+        for (int i = 0; i < ticks; i++)
+        {
+            _crowd!.Step();
+        }
+    }
+
+    private void MakeCrowd(Locomotion locomotion, List<List<Move>> moves, float shortest)
+    {
+        _crowd?.Dispose();
+        _crowd = Staggered(locomotion, moves, shortest);
+        CollectGarbage();
     }
 
     /// <summary>
@@ -201,13 +284,15 @@ public class RuntimeBenchmarks
     /// cold).
     /// </summary>
     [Benchmark(OperationsPerInvoke = TicksMeasured)]
-    public void TickThousandAgents()
-    {
-        for (int i = 0; i < TicksMeasured; i++)
-        {
-            _crowd!.Step();
-        }
-    }
+    public void TickThousandAgents() => StepCrowd(TicksMeasured);
+
+    /// <summary>
+    /// <see cref="TickThousandAgents"/> on jump-only paths (the world's <see cref="WorldSettings.Locomotion"/> is
+    /// <see cref="Locomotion.Jump"/>: every move a jump, as every path was before walks): the agents stand, crouch, fly
+    /// and absorb their landings, and none walks.
+    /// </summary>
+    [Benchmark(OperationsPerInvoke = TicksMeasured)]
+    public void TickThousandJumpingAgents() => StepCrowd(TicksMeasured);
 
     /// <summary>Ticks measured per iteration of <see cref="TickThousandAgents"/>: a second at 60 Hz.</summary>
     private const int TicksMeasured = 60;
