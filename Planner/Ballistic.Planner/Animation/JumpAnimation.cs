@@ -61,6 +61,12 @@ public sealed class JumpAnimation
         Frames = Array.AsReadOnly(_frames);
         _frameTimes = [.. _frames.Select(f => f.Time)];
         _frameRoots = [.. _frames.Select(f => f.Root)];
+        _frameTurns = new RotationBlend[Math.Max(0, _frameRoots.Length - 1)];
+        for (int f = 0; f < _frameTurns.Length; f++)
+        {
+            _frameTurns[f] = RotationBlend.Between(_frameRoots[f].Rotation, _frameRoots[f + 1].Rotation);
+        }
+
         _frameLookup = new SortedLookup(_frameTimes);
         ContactPhases = [.. contactPhases];
         Problems = [.. problems];
@@ -99,6 +105,9 @@ public sealed class JumpAnimation
 
     /// <summary>Each frame's root, contiguous: read every tick for agents standing between moves (<see cref="FrameRoot"/>).</summary>
     private readonly RootPose[] _frameRoots;
+
+    /// <summary>The root's turn from each frame to the next (<c>_frameTurns[f]</c>: frame f to f + 1), its angle worked out once.</summary>
+    private readonly RotationBlend[] _frameTurns;
 
     /// <summary>Finds the frames around a time in <see cref="_frameTimes"/> (<see cref="FrameAtOrAfter"/>).</summary>
     private readonly SortedLookup _frameLookup;
@@ -236,7 +245,9 @@ public sealed class JumpAnimation
         ref readonly RootPose before = ref _frameRoots[lo];
         float span = _frameTimes[hi] - _frameTimes[lo];
         float w = span > 0f ? Math.Clamp((time - _frameTimes[lo]) / span, 0f, 1f) : 1f;
-        return new RootPose(Vector3.Lerp(before.Position, after.Position, w), Quaternion.Slerp(before.Rotation, after.Rotation, w));
+        // The frame itself before the first frame (lo = hi, w = 1): what the slerp of a rotation with itself gives there.
+        Quaternion rotation = hi == lo ? after.Rotation : _frameTurns[lo].At(before.Rotation, after.Rotation, w);
+        return new RootPose(Vector3.Lerp(before.Position, after.Position, w), rotation);
     }
 
     /// <summary>Index of the first frame at or after <paramref name="time"/> (the last frame when none is).</summary>

@@ -56,6 +56,10 @@ public sealed record Walk : Move
 
     private readonly Quaternion _startHeading;
     private readonly Quaternion _endHeading;
+
+    /// <summary>The turns in place at the start (from <see cref="From"/>'s rotation to the start heading) and at the end, their angles worked out once.</summary>
+    private readonly RotationBlend _startTurn;
+    private readonly RotationBlend _endTurn;
     private readonly Vector3 _startUpright;
     private readonly Vector3 _endUpright;
     private readonly float _acceleration;
@@ -201,6 +205,8 @@ public sealed record Walk : Move
         EndOffset = to.Pose.Position - _path[^1];
         _startHeading = Upright(HeadingAt(0f));
         _endHeading = Upright(HeadingAt(Length));
+        _startTurn = RotationBlend.Between(from.Pose.Rotation, _startHeading);
+        _endTurn = RotationBlend.Between(_endHeading, to.Pose.Rotation);
         StartTurn = TurnTime(Rotations.AngleBetween(from.Pose.Rotation, _startHeading));
         EndTurn = TurnTime(Rotations.AngleBetween(_endHeading, to.Pose.Rotation));
         _startUpright = StoodUp(StartOffset, from.Pose.Rotation);
@@ -637,14 +643,14 @@ public sealed record Walk : Move
         if (time < StartTurn)
         {
             float s = Smooth(time / StartTurn);
-            return new RootPose(Vector3.Lerp(From.Pose.Position, _path[0] + _startUpright, s), Quaternion.Normalize(Quaternion.Slerp(From.Pose.Rotation, _startHeading, s)));
+            return new RootPose(Vector3.Lerp(From.Pose.Position, _path[0] + _startUpright, s), Quaternion.Normalize(_startTurn.At(From.Pose.Rotation, _startHeading, s)));
         }
 
         float end = StartTurn + WalkTime;
         if (time > end && EndTurn > 0f)
         {
             float s = Smooth((time - end) / EndTurn);
-            return new RootPose(Vector3.Lerp(_path[^1] + _endUpright, To.Pose.Position, s), Quaternion.Normalize(Quaternion.Slerp(_endHeading, To.Pose.Rotation, s)));
+            return new RootPose(Vector3.Lerp(_path[^1] + _endUpright, To.Pose.Position, s), Quaternion.Normalize(_endTurn.At(_endHeading, To.Pose.Rotation, s)));
         }
 
         return PoseAtDistance(DistanceAt(time), ref segment);

@@ -20,7 +20,11 @@ public readonly record struct BallisticArc
         Gravity = gravity;
         LandingVelocity = takeoffVelocity - new Vector3(0f, gravity * flightTime, 0f);
         ArcLength = ComputeLength(takeoffVelocity, flightTime, gravity);
+        _turn = RotationBlend.Between(takeoff.Rotation, landing.Rotation);
     }
+
+    /// <summary>The trunk's turn from <see cref="StartRotation"/> to <see cref="EndRotation"/>, its angle worked out once (read at every flight time).</summary>
+    private readonly RotationBlend _turn;
 
     /// <summary>The root pose at takeoff (t = 0).</summary>
     public RootPose Takeoff { get; }
@@ -80,7 +84,7 @@ public readonly record struct BallisticArc
 
     /// <summary>Trunk orientation at time <paramref name="t"/>: slerp from takeoff to landing over the flight.</summary>
     public Quaternion RotationAt(float t) =>
-        Quaternion.Slerp(StartRotation, EndRotation, FlightTime > 0f ? Math.Clamp(t / FlightTime, 0f, 1f) : 1f);
+        _turn.At(StartRotation, EndRotation, FlightTime > 0f ? Math.Clamp(t / FlightTime, 0f, 1f) : 1f);
 
     /// <summary>The root pose at time <paramref name="t"/>.</summary>
     public RootPose PoseAt(float t) => new(PositionAt(t), RotationAt(t));
