@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
 using Ballistic.Planner.Collision;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
@@ -57,7 +58,7 @@ internal sealed class BodyCollision
     private readonly int[][] _limbBones;
     private readonly int[] _otherBones;
     private readonly float[] _otherThickness;
-    private readonly IReadOnlyList<Triangle>? _triangles;
+    private readonly Triangle[]? _triangles;
 
     /// <summary>Each level triangle's bounds and unit normal (<see cref="Inside"/> reads them for every skin point), computed once.</summary>
     private readonly (Aabb Bounds, Vector3 Normal)[] _shapes = [];
@@ -142,7 +143,7 @@ internal sealed class BodyCollision
         // The skin points of each limb (a loaded rig's skinned mesh, the corners of a built character's bone boxes): its
         // chain's bones and those below its effector (a foot's toes and heel, a hand's fingers reach beyond the
         // segments between joints; a shin's box is as wide as its radius).
-        _triangles = triangles;
+        _triangles = triangles is null ? null : triangles as Triangle[] ?? [.. triangles];
         if (triangles is not null)
         {
             _shapes = new (Aabb, Vector3)[triangles.Count];
@@ -363,18 +364,18 @@ internal sealed class BodyCollision
         List<(int Triangle, float Distance, float Front)> candidates = s_candidates ??= [];
         candidates.Clear();
         float nearest = SkinReach;
-        foreach (int t in near)
+        foreach (int t in CollectionsMarshal.AsSpan(near))
         {
-            (Aabb bounds, Vector3 normal) = _shapes[t];
+            ref readonly (Aabb Bounds, Vector3 Normal) shape = ref _shapes[t];
             float bound = (nearest + EdgeTie) * (nearest + EdgeTie);
-            Vector3 outside = Vector3.Max(Vector3.Max(bounds.Min - p, p - bounds.Max), Vector3.Zero);
+            Vector3 outside = Vector3.Max(Vector3.Max(shape.Bounds.Min - p, p - shape.Bounds.Max), Vector3.Zero);
             if (outside.LengthSquared() > bound)
             {
                 continue; // its box is already farther than the nearest triangle
             }
 
-            Triangle triangle = _triangles![t];
-            float plane = Vector3.Dot(p - triangle.A, normal);
+            ref readonly Triangle triangle = ref _triangles![t];
+            float plane = Vector3.Dot(p - triangle.A, shape.Normal);
             if (plane * plane > bound)
             {
                 continue; // its plane is already farther: so is every point of it
@@ -391,7 +392,7 @@ internal sealed class BodyCollision
 
             if (distance <= nearest + EdgeTie)
             {
-                candidates.Add((t, distance, Vector3.Dot(p - closest, normal)));
+                candidates.Add((t, distance, Vector3.Dot(p - closest, shape.Normal)));
                 nearest = MathF.Min(nearest, distance);
             }
         }

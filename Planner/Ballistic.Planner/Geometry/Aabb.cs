@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Ballistic.Planner.Geometry;
 
@@ -68,7 +69,8 @@ internal readonly record struct Aabb(Vector3 Min, Vector3 Max)
         p.Z >= Min.Z && p.Z <= Max.Z;
 
     /// <summary>True when the two boxes share at least one point (touching counts).</summary>
-    public bool Intersects(Aabb other) =>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool Intersects(in Aabb other) =>
         Min.X <= other.Max.X && Max.X >= other.Min.X &&
         Min.Y <= other.Max.Y && Max.Y >= other.Min.Y &&
         Min.Z <= other.Max.Z && Max.Z >= other.Min.Z;
@@ -82,6 +84,7 @@ internal readonly record struct Aabb(Vector3 Min, Vector3 Max)
     /// <param name="tMin">Smallest ray parameter considered.</param>
     /// <param name="tMax">Largest ray parameter considered.</param>
     /// <param name="tEnter">Parameter at which the ray enters the box, when it does.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool IntersectsRay(Vector3 origin, Vector3 inverseDirection, float tMin, float tMax, out float tEnter)
     {
         Vector3 t0 = (Min - origin) * inverseDirection;
