@@ -363,7 +363,7 @@ internal sealed class ContactGenerator
     /// <summary>Sets <paramref name="limb"/>'s angles in <paramref name="q"/> to those of <paramref name="pose"/>.</summary>
     private static void PoseChain(float[] q, RigLimb limb, float[] pose)
     {
-        foreach (int d in limb.ChainDofs)
+        foreach (int d in limb.ChainDofSpan)
         {
             q[d] = pose[d];
         }

@@ -802,7 +802,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         var limbDof = new bool[rig.DofCount];
         foreach (RigLimb limb in Model.Limbs)
         {
-            foreach (int d in limb.ChainDofs)
+            foreach (int d in limb.ChainDofSpan)
             {
                 limbDof[d] = true;
             }
@@ -871,7 +871,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             if (!Airborne(l, i))
             {
                 float[] holding = held[l][i];
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     target[d] = holding[d];
                 }
@@ -881,7 +881,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
 
             if (lifted[l] is { } lift && lift.TryGetValue(i, out float[]? up))
             {
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     target[d] = up[d];
                 }
@@ -897,7 +897,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 float u = i <= apex
                     ? Math.Clamp((i - leaves[l]) / (float)(quickUp[l] - leaves[l]), 0f, 1f)
                     : Math.Clamp((i - quickDown[l]) / (float)(makes[l] - quickDown[l]), 0f, 1f);
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     target[d] = i <= apex ? float.Lerp(from[d], top[d], u) : float.Lerp(top[d], to[d], u);
                 }
@@ -905,7 +905,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 return;
             }
 
-            foreach (int d in limb.ChainDofs)
+            foreach (int d in limb.ChainDofSpan)
             {
                 target[d] = apex > breaks[l] && apex < makes[l]
                     ? (i <= apex ? float.Lerp(from[d], top[d], (i - breaks[l]) / (float)(apex - breaks[l])) : float.Lerp(top[d], to[d], (i - apex) / (float)(makes[l] - apex)))
@@ -982,7 +982,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 if (attempt is 1 or 2)
                 {
                     float[] pose = attempt == 1 ? Model.FlexionPose : Model.ContactPose;
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         limbApex[l][d] = pose[d];
                     }
@@ -1175,7 +1175,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             // Mid-step: the effector lifted along the surface normal above the middle of its travel, by IK.
             float[] start = (float[])q.Clone();
             float[] end = (float[])q.Clone();
-            foreach (int d in limb.ChainDofs)
+            foreach (int d in limb.ChainDofSpan)
             {
                 end[d] = takeoff.Angles[d];
             }
@@ -1190,7 +1190,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             foreach (float lift in StepLifts)
             {
                 float[] mid = (float[])start.Clone();
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     mid[d] = float.Lerp(start[d], end[d], 0.5f);
                 }
@@ -1208,7 +1208,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             {
                 // No clear lifted swing: the tucked pose at mid-step, then give up honestly.
                 float[] tucked = (float[])start.Clone();
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     tucked[d] = Model.FlexionPose[d];
                 }
@@ -1250,7 +1250,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             float s = k / (float)count;
             s = s * s * (3f - (2f * s));
             float[] q = (float[])start.Clone();
-            foreach (int d in limb.ChainDofs)
+            foreach (int d in limb.ChainDofSpan)
             {
                 q[d] = s <= 0.5f ? float.Lerp(start[d], mid[d], s * 2f) : float.Lerp(mid[d], end[d], (s - 0.5f) * 2f);
             }

@@ -233,7 +233,7 @@ internal sealed class StanceDip
                 foreach ((bool onFromLast, float share) in ((bool, float)[])[(false, 0.5f * fold), (true, 0f), (true, 1f), (true, 0.5f), (true, 0.25f)])
                 {
                     float[] folded = (float[])next.Clone();
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         folded[d] = float.Lerp(onFromLast ? next[d] : config.Angles[d], _model.FlexionPose[d], share);
                     }
@@ -251,7 +251,7 @@ internal sealed class StanceDip
                     }
 
                     float[] half = (float[])folded.Clone();
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         half[d] = 0.5f * (next[d] + folded[d]);
                     }

@@ -1312,7 +1312,7 @@ internal sealed class WalkGait
             bool[] limbDof = new bool[_rig.DofCount];
             foreach (RigLimb limb in _model.Limbs)
             {
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     limbDof[d] = true;
                 }
@@ -1746,7 +1746,7 @@ internal sealed class WalkGait
                 _angles[i].CopyTo(trial, 0);
                 if (last is not null)
                 {
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         trial[d] = last[d];
                     }
@@ -1764,7 +1764,7 @@ internal sealed class WalkGait
                 float[]? keep = ok ? trial : last;
                 if (keep is not null)
                 {
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         _angles[i][d] = keep[d];
                     }
@@ -2757,7 +2757,7 @@ internal sealed class WalkGait
             float[] Seeded(int i, float[] chain)
             {
                 float[] trial = (float[])_angles[i].Clone();
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     trial[d] = chain[d];
                 }
@@ -2848,7 +2848,7 @@ internal sealed class WalkGait
                         for (int i = free.From; i <= free.To; i++)
                         {
                             float w = free.To > free.From ? Smooth((i - free.From) / (float)(free.To - free.From)) : 1f;
-                            foreach (int d in limb.ChainDofs)
+                            foreach (int d in limb.ChainDofSpan)
                             {
                                 _angles[i][d] = float.Lerp(free.Start[d], free.End[d], w);
                             }
@@ -2995,7 +2995,7 @@ internal sealed class WalkGait
             {
                 float[] trial = _angles[i];
                 float w = hold.Settle ? Pull(i - hold.From, hold.To - hold.From) : 0f;
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     trial[d] = float.Lerp(q[d], _end.Angles[d], w);
                 }
@@ -3014,7 +3014,7 @@ internal sealed class WalkGait
                 }
                 else
                 {
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         trial[d] = q[d];
                     }
@@ -3048,7 +3048,7 @@ internal sealed class WalkGait
                 }
 
                 float[] attempt = (float[])trial.Clone();
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     attempt[d] = seed[d];
                 }
@@ -3088,7 +3088,7 @@ internal sealed class WalkGait
         {
             float[] mid = _midway;
             after.CopyTo(mid, 0);
-            foreach (int d in limb.ChainDofs)
+            foreach (int d in limb.ChainDofSpan)
             {
                 mid[d] = float.Lerp(before[d], after[d], 0.5f);
             }
@@ -3160,7 +3160,7 @@ internal sealed class WalkGait
             {
                 endAngles = next is Free free ? free.Start : _end.Angles;
                 float[] q = (float[])_angles[b].Clone();
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     q[d] = endAngles[d];
                 }
@@ -3200,7 +3200,7 @@ internal sealed class WalkGait
                     float[] trial = keys[i - a];
                     _angles[i].CopyTo(trial, 0);
                     float w = Pull(i - a, b - a);
-                    foreach (int d in limb.ChainDofs)
+                    foreach (int d in limb.ChainDofSpan)
                     {
                         trial[d] = float.Lerp(q[d], endAngles[d], w);
                     }
@@ -3212,7 +3212,7 @@ internal sealed class WalkGait
                         Vector3 n = Vector3.Normalize(n1);
                         float[] along = _along;
                         trial.CopyTo(along, 0);
-                        foreach (int d in limb.ChainDofs)
+                        foreach (int d in limb.ChainDofSpan)
                         {
                             along[d] = q[d];
                         }
@@ -3274,7 +3274,7 @@ internal sealed class WalkGait
 
             for (int i = a; i <= b; i++)
             {
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     _angles[i][d] = best![i - a][d];
                 }

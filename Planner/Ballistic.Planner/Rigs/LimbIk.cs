@@ -56,7 +56,8 @@ internal sealed class LimbIk
     internal IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed, Span<float> nearest)
     {
         ArgumentNullException.ThrowIfNull(limb);
-        float[] trial = q.ToArray();
+        float[] trial = s_trial is { } scratch && scratch.Length == q.Length ? scratch : s_trial = new float[q.Length];
+        q.CopyTo(trial);
         int iterations = 0;
         IkResult best = new(false, float.PositiveInfinity, float.PositiveInfinity, 0);
         Random? random = null;
@@ -66,7 +67,7 @@ internal sealed class LimbIk
             {
                 random ??= new Random(seed);
                 q.CopyTo(trial);
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     JointAxis axis = Rig.Dofs[d];
                     trial[d] = axis.Min + ((float)random.NextDouble() * (axis.Max - axis.Min));
@@ -207,6 +208,10 @@ internal sealed class LimbIk
         bool success = positionError <= Settings.PositionTolerance && normalError <= Settings.NormalTolerance;
         return new IkResult(success, positionError, normalError, Settings.MaxIterations);
     }
+
+    /// <summary>The configuration a solve on this thread tries (one rig's degrees of freedom), kept between solves.</summary>
+    [ThreadStatic]
+    private static float[]? s_trial;
 
     /// <summary>One damped least-squares step, with the solver the settings choose.</summary>
     private void Solve(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n)

@@ -96,7 +96,7 @@ internal static class ReducedModelBuilder
             float[] q = (float[])model.ContactPose.Clone();
             for (int s = 0; s < samples * 8 && xs.Count < samples; s++)
             {
-                foreach (int d in limb.ChainDofs)
+                foreach (int d in limb.ChainDofSpan)
                 {
                     JointAxis axis = rig.Dofs[d];
                     q[d] = axis.Min + ((float)random.NextDouble() * (axis.Max - axis.Min));

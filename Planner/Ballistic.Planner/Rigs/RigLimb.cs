@@ -70,7 +70,8 @@ public sealed class RigLimb
         ContactNormal = Vector3.Normalize(contactNormal);
         Filter = filter;
         Chain = [.. chain];
-        ChainDofs = [.. dofs];
+        _chainDofs = [.. dofs];
+        ChainDofs = Array.AsReadOnly(_chainDofs);
         Ball = kind == LimbKind.Foot && FindBall(rig, effector, effectorOffset, ContactNormal) is Vector3 ball ? new RigLimb(this, ball) : null;
     }
 
@@ -85,6 +86,7 @@ public sealed class RigLimb
         ContactNormal = limb.ContactNormal;
         Filter = limb.Filter;
         Chain = limb.Chain;
+        _chainDofs = limb._chainDofs;
         ChainDofs = limb.ChainDofs;
     }
 
@@ -143,6 +145,11 @@ public sealed class RigLimb
 
     /// <summary>Indices of the degrees of freedom that move the effector.</summary>
     public IReadOnlyList<int> ChainDofs { get; }
+
+    /// <summary><see cref="ChainDofs"/> as a span: walked by the animation's inner loops without an enumerator.</summary>
+    internal ReadOnlySpan<int> ChainDofSpan => _chainDofs;
+
+    private readonly int[] _chainDofs;
 
     /// <summary>
     /// A foot touching at its ball instead of its contact point (the same chain, its effector offset the ball: the
