@@ -88,13 +88,14 @@ internal sealed class PathRequestSystem : IDisposable
             }
 
             started++;
+            int kind = _agents.Kind[slot];
             request.Start = _agents.Stance[slot]!;
-            StanceLessons lessons = Lessons(_agents.Kind[slot]);
+            StanceLessons lessons = Lessons(kind);
             request.Character = lessons.Kind;
             request.Repair.Start = request.Start.Id;
             lessons.Teach(request.Repair);
             request.DueTick = tick + _settings.PathLatencyTicks;
-            var job = new RequestJob(_kinds[_agents.Kind[slot]]!, _searches[_agents.Kind[slot]]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
+            var job = new RequestJob(lessons.Kind, _searches[kind]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_scheduler is null)
             {
                 // Advanced on this thread: whole now, or in slices from this tick on (Advance).
