@@ -15,7 +15,10 @@ namespace Ballistic.Planner.Steering;
 /// the interval, so that grown box being free proves the whole interval free. Where it is not, the interval is halved,
 /// down to a growth of the collision tolerance. A thin obstacle can therefore never be stepped over, and the trunk's
 /// corners cannot clip one between samples. Runs of intervals are first tested in one box that holds all their grown
-/// boxes, so an arc's stretch through open air costs one test; the verdict is the intervals' own, exactly.
+/// boxes, so an arc's stretch through open air costs one test; the verdict is the intervals' own, exactly. Before the
+/// sweep, a long arc's trunk is probed at a few evenly spaced instants (<see cref="TouchesAtProbes"/>): most arcs a
+/// bake tries pass through a wall or a roof somewhere, and a trunk touching the level at an instant is found in one
+/// test there, instead of after the sweep has proved every grazing interval before it free.
 /// </remarks>
 internal sealed class TrunkSweepValidator : IArcValidator
 {
@@ -59,7 +62,46 @@ internal sealed class TrunkSweepValidator : IArcValidator
         float cornerSpeed = arc.FlightTime > 0f ? turn / arc.FlightTime * TrunkHalfExtents.Length() : 0f;
         float pointSpeed = speed + cornerSpeed;
         int steps = Math.Max(1, (int)MathF.Ceiling(arc.FlightTime * pointSpeed / spacing));
+        if (TouchesAtProbes(arc, Math.Min(MaxProbes, steps / StepsPerProbe)))
+        {
+            return false;
+        }
+
         return new Sweep(this, arc, steps, pointSpeed, turn).RunIsFree(0, steps, grouped: steps >= GroupedArcSteps);
+    }
+
+    /// <summary>At most this many probes an arc (<see cref="TouchesAtProbes"/>): every 32nd of its flight.</summary>
+    private const int MaxProbes = 31;
+
+    /// <summary>One probe for every this many steps of an arc: a short hop, quick to sweep, is not probed.</summary>
+    private const int StepsPerProbe = 8;
+
+    /// <summary>
+    /// True when the trunk box itself (not grown) touches the level at one of <paramref name="probes"/> instants of the
+    /// flight, taken coarse to fine (a half, a quarter, three quarters, an eighth...) up to the 32nds. Such an arc is
+    /// one the sweep refuses too: the trunk at an instant lies inside the grown box of every interval holding that
+    /// instant, at every depth, so each of them touches the level down to the tolerance. Only the work changes.
+    /// </summary>
+    private bool TouchesAtProbes(in BallisticArc arc, int probes)
+    {
+        for (int k = 1; k <= probes; k++)
+        {
+            // k's bits mirrored about the binary point: 1 → 1/2, 2 → 1/4, 3 → 3/4, 4 → 1/8, ... (van der Corput).
+            float share = 0f;
+            float bit = 0.5f;
+            for (int rest = k; rest > 0; rest >>= 1, bit *= 0.5f)
+            {
+                share += (rest & 1) * bit;
+            }
+
+            RootPose pose = arc.PoseAt(share * arc.FlightTime);
+            if (_world.Overlaps(new OrientedBox(pose.Position, TrunkHalfExtents, pose.Rotation)))
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>Runs of fewer steps than this are tested step by step.</summary>
