@@ -5,9 +5,9 @@ using BenchmarkDotNet.Attributes;
 namespace Ballistic.Benchmarks;
 
 /// <summary>
-/// Whole-level bakes of 1,000 nodes with walks and jumps, seed 1, one thread per core, on each bundled level with a
-/// character that crosses it (issue 23's whole-level bake figures): the jumperman's long, fast rooftop leaps are the
-/// trunk sweep's heaviest work.
+/// Whole-level bakes of 1,000 nodes with walks and jumps, seed 1, on one thread and on one thread per core, on each
+/// bundled level with a character that crosses it (issue 23's whole-level bake figures; the roadmap is the same on any
+/// number of threads): the jumperman's long, fast rooftop leaps are the trunk sweep's heaviest work.
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]
@@ -18,6 +18,10 @@ public class LevelBakeBenchmarks
     /// <summary>Level and character, as "level/character".</summary>
     [Params("desert/skeleton", "gap-course/skeleton", "pond/frog", "rooftops/jumperman")]
     public string Case { get; set; } = "";
+
+    /// <summary>Bake threads: 1, or 0 for one per core.</summary>
+    [Params(1, 0)]
+    public int Threads { get; set; }
 
     /// <summary>Loads the level and builds the character's scene.</summary>
     [GlobalSetup]
@@ -30,5 +34,5 @@ public class LevelBakeBenchmarks
     /// <summary>A bake of 1,000 nodes; the edges it made.</summary>
     [Benchmark]
     public int Bake() =>
-        new RoadmapBaker(_scene).Bake(new BakeSettings { Locomotion = Locomotion.WalkAndJump, Seed = 1, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap.Edges.Count;
+        new RoadmapBaker(_scene).Bake(new BakeSettings { Locomotion = Locomotion.WalkAndJump, Seed = 1, MaxNodes = 1_000, Threads = Threads > 0 ? Threads : Environment.ProcessorCount }).Roadmap.Edges.Count;
 }
