@@ -507,33 +507,45 @@ internal sealed class WalkGait
         ArgumentNullException.ThrowIfNull(start);
         ArgumentNullException.ThrowIfNull(end);
         var key = new WalkKey(walk, start, end, frameRate);
-        lock (_animated)
+        Lazy<Clip> entry = _animated.GetOrAddLocked(
+            key,
+            (Gait: this, Move: move, Walk: walk, Start: start, End: end, FrameRate: frameRate),
+            static (_, s) => new Lazy<Clip>(() => s.Gait.AnimateAnew(s.Move, s.Walk, s.Start, s.End, s.FrameRate), LazyThreadSafetyMode.ExecutionAndPublication),
+            out bool added);
+        if (added)
         {
-            if (_animated.TryGetValue(key, out Clip? known))
-            {
-                return Copy(known, move);
-            }
+            Interlocked.Increment(ref _solved);
         }
 
-        Clip clip = AnimateAnew(move, walk, start, end, frameRate);
-        lock (_animated)
+        Clip clip;
+        try
         {
-            if (_animated.Count >= Remembered)
-            {
-                _animated.Clear();
-            }
-
-            _animated[key] = Copy(clip, move);
+            clip = entry.Value;
+        }
+        catch (Exception)
+        {
+            // Not remembered: the next request for this walk animates it again.
+            _animated.Forget(key, entry);
+            throw;
         }
 
-        return clip;
+        return Copy(clip, move);
     }
 
-    /// <summary>How many walks' clips <see cref="Animate"/> keeps: a plan's repair animates the same walk between the same poses again, and agents of one kind walk the same moves.</summary>
+    /// <summary>
+    /// How many walks' clips each generation of <see cref="Animate"/>'s memory keeps (64 to 128 in all, those asked for
+    /// last): a plan's repair animates the same walk between the same poses again, and agents of one kind walk the
+    /// same moves.
+    /// </summary>
     private const int Remembered = 64;
 
-    /// <summary>Clips animated, by everything they were animated from (the gait is a function of those).</summary>
-    private readonly Dictionary<WalkKey, Clip> _animated = [];
+    /// <summary>Clips animated or being animated, by everything they are animated from (the gait is a function of those): a walk asked for while another thread animates it is waited for, not animated twice.</summary>
+    private readonly RememberedResults<WalkKey, Lazy<Clip>> _animated = new(Remembered);
+
+    private int _solved;
+
+    /// <summary>Walks animated anew (not found among those remembered or being animated) since this gait was made.</summary>
+    internal int Solved => Volatile.Read(ref _solved);
 
     /// <summary><paramref name="clip"/> with its own frames' angles (callers may change them in place) and its problems placed on move <paramref name="move"/>.</summary>
     private static Clip Copy(Clip clip, int move) => clip with

@@ -29,14 +29,59 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
         TValue made = make(key, state);
         lock (_lock)
         {
-            if (_newer.Count >= capacity)
-            {
-                (_older, _newer) = (_newer, []);
-            }
-
-            _newer[key] = made;
+            Remember(key, made);
         }
 
         return made;
+    }
+
+    /// <summary>
+    /// The value for <paramref name="key"/>: remembered, or made by <paramref name="make"/> under the lock and
+    /// remembered (<paramref name="added"/>). For a cheap maker only, such as a <see cref="Lazy{T}"/> the callers then
+    /// solve: a second caller asking while the first solves finds the same one and waits for it, instead of solving it
+    /// again.
+    /// </summary>
+    public TValue GetOrAddLocked<TState>(TKey key, TState state, Func<TKey, TState, TValue> make, out bool added)
+    {
+        lock (_lock)
+        {
+            if (_newer.TryGetValue(key, out TValue? known) || _older.TryGetValue(key, out known))
+            {
+                _newer[key] = known;
+                added = false;
+                return known;
+            }
+
+            TValue made = make(key, state);
+            Remember(key, made);
+            added = true;
+            return made;
+        }
+    }
+
+    /// <summary>Forgets <paramref name="key"/> while it is still remembered as <paramref name="value"/> (a solve that failed), so the next call makes it again.</summary>
+    public void Forget(TKey key, TValue value)
+    {
+        lock (_lock)
+        {
+            foreach (Dictionary<TKey, TValue> generation in (Dictionary<TKey, TValue>[])[_newer, _older])
+            {
+                if (generation.TryGetValue(key, out TValue? known) && EqualityComparer<TValue>.Default.Equals(known, value))
+                {
+                    generation.Remove(key);
+                }
+            }
+        }
+    }
+
+    /// <summary>Keeps <paramref name="value"/> in the newer generation, which becomes the older when full; under the lock.</summary>
+    private void Remember(TKey key, TValue value)
+    {
+        if (_newer.Count >= capacity)
+        {
+            (_older, _newer) = (_newer, []);
+        }
+
+        _newer[key] = value;
     }
 }

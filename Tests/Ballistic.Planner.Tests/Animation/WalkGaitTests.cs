@@ -229,6 +229,37 @@ public sealed class WalkGaitTests
     }
 
     /// <summary>
+    /// Two agents of one kind asking for the same walk at once (two animation threads) get it animated once: the
+    /// second waits for the first's clip instead of animating it again, and each gets its own copy, on its own move.
+    /// </summary>
+    [Test]
+    public void AWalkAskedForByTwoThreadsAtOnceIsAnimatedOnce()
+    {
+        (WalkWorld world, Walk walk, ContactConfiguration start, ContactConfiguration end) = ShortFlatWalk();
+        var gait = new WalkGait(world.Scene, world.Model, world.Animator.Contacts);
+        using var together = new Barrier(2);
+        var clips = new WalkGait.Clip[2];
+        Parallel.For(0, 2, new ParallelOptions { MaxDegreeOfParallelism = 2 }, i =>
+        {
+            together.SignalAndWait();
+            clips[i] = gait.Animate(i + 1, walk, start, end, 60f);
+        });
+
+        WalkGait.Clip fresh = new WalkGait(world.Scene, world.Model, world.Animator.Contacts).Animate(1, walk, start, end, 60f);
+        Assert.Multiple(() =>
+        {
+            Assert.That(gait.Solved, Is.EqualTo(1), "walks animated anew");
+            for (int i = 0; i < 2; i++)
+            {
+                Assert.That(clips[i].Frames.SelectMany(f => f.Angles), Is.EqualTo(fresh.Frames.SelectMany(f => f.Angles)), $"thread {i}'s clip");
+                Assert.That(clips[i].Problems.Select(p => p.Jump), Has.All.EqualTo(i + 1), $"thread {i}'s problems are on its move");
+            }
+
+            Assert.That(clips[0].Frames[0].Angles, Is.Not.SameAs(clips[1].Frames[0].Angles), "each thread's clip has its own angles");
+        });
+    }
+
+    /// <summary>
     /// The hips' lift never rises or falls faster than a walker's (the desert skeleton's hips fell 9 cm in 0.07 s from
     /// a lift its next step did not allow): limited, each lift is the least of every measured lift plus the rate times
     /// the steps between them, never raised, the steps where no foot is held left alone. Seeded sweep against that

@@ -44,6 +44,41 @@ public sealed class RememberedResultsTests
     }
 
     [Test]
+    public void AValueMadeUnderTheLockIsFoundByEveryLaterCallerAndAFailedOneIsForgotten()
+    {
+        var memory = new RememberedResults<int, object>(2);
+        object first = memory.GetOrAddLocked(1, 0, static (_, _) => new object(), out bool added);
+        Assert.That(added, Is.True);
+        Assert.That(memory.GetOrAddLocked(1, 0, static (_, _) => new object(), out added), Is.SameAs(first), "remembered");
+        Assert.That(added, Is.False);
+
+        // Forgetting another value for the key keeps it; forgetting its own drops it from either generation.
+        memory.Forget(1, new object());
+        Assert.That(memory.GetOrAddLocked(1, 0, static (_, _) => new object(), out added), Is.SameAs(first));
+        memory.GetOrAddLocked(2, 0, static (_, _) => new object(), out _);
+        memory.GetOrAddLocked(3, 0, static (_, _) => new object(), out _); // 1 and 2 are now the older generation
+        memory.Forget(1, first);
+        Assert.That(memory.GetOrAddLocked(1, 0, static (_, _) => new object(), out added), Is.Not.SameAs(first), "made anew once forgotten");
+        Assert.That(added, Is.True);
+    }
+
+    [Test]
+    public void ThreadsAskingForOneKeyAtOnceShareTheOneValueMade()
+    {
+        var memory = new RememberedResults<int, Lazy<int>>(8);
+        int solved = 0;
+        var seen = new int[8];
+        Parallel.For(0, 8, new ParallelOptions { MaxDegreeOfParallelism = 8 }, thread =>
+        {
+            Lazy<int> entry = memory.GetOrAddLocked(5, 0, (_, _) => new Lazy<int>(() => Interlocked.Increment(ref solved) + 41, LazyThreadSafetyMode.ExecutionAndPublication), out _);
+            seen[thread] = entry.Value;
+        });
+
+        Assert.That(solved, Is.EqualTo(1));
+        Assert.That(seen, Has.All.EqualTo(42));
+    }
+
+    [Test]
     public void ThreadsAskingAtOnceOnlyEverSeeTheFunctionsOwnResults()
     {
         var memory = new RememberedResults<int, long>(64);
