@@ -9,9 +9,10 @@ using BenchmarkDotNet.Attributes;
 namespace Ballistic.Benchmarks;
 
 /// <summary>
-/// Path queries on a 1,000-node roadmap of the bundled desert with the skeleton (seed 7): from point to point
-/// (placement, steering into the roadmap, A*), between roadmap nodes (A* alone), from a node to a point, and the
-/// lookup of a roadmap node near a point. Each invocation takes the next of 256 fixed random requests.
+/// Path queries on a 1,000-node jump roadmap (seed 7) of the bundled desert with the skeleton and of the rooftops with
+/// the jumperman: from point to point (placement, steering into the roadmap, A*), between roadmap nodes (A* alone),
+/// from a node to a point, and the lookup of a roadmap node near a point. Each invocation takes the next of 256 fixed
+/// random requests.
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]
@@ -26,11 +27,16 @@ public class QueryBenchmarks
     private static readonly QuerySettings PreferNodes = new() { PreferRoadmapNodes = true, Locomotion = Locomotion.Jump };
     private static readonly QuerySettings JumpOnly = new() { Locomotion = Locomotion.Jump };
 
+    /// <summary>Level and character, as "level/character".</summary>
+    [Params("desert/skeleton", "rooftops/jumperman")]
+    public string Case { get; set; } = "desert/skeleton";
+
     /// <summary>Bakes the roadmap and draws 256 requests between random nodes (and their first contacts).</summary>
     [GlobalSetup]
     public void Setup()
     {
-        var scene = PlanningScene.Create(BundledLevels.Load("desert"), CharacterPresets.Skeleton());
+        string[] parts = Case.Split('/');
+        var scene = PlanningScene.Create(BundledLevels.Load(parts[0]), CharacterPresets.Get(parts[1]));
         _roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000 }).Roadmap;
         _query = new PathQuery(scene, _roadmap);
         var random = new Random(3);
