@@ -451,7 +451,7 @@ internal sealed class TrunkSampler
         Quaternion rotation = Rotations.AlignUp(normal) * Quaternion.CreateFromAxisAngle(Vector3.UnitY, yaw);
         Vector3 position = surfacePoint + (normal * lift);
 
-        var hits = new List<int>();
+        List<int> hits = s_overlapping ??= [];
         for (int step = 0; ; step++)
         {
             var trunk = new OrientedBox(position, _character.TrunkHalfExtents, rotation);
@@ -481,6 +481,10 @@ internal sealed class TrunkSampler
         PoseEvaluation evaluation = _estimator.EvaluateContacts(new RootPose(position, rotation));
         return evaluation.IsValid ? evaluation : null;
     }
+
+    /// <summary>The triangles a trial trunk overlaps (<see cref="TryPose(int, Vector3, float, float, ref long)"/>), kept per thread between trials.</summary>
+    [ThreadStatic]
+    private static List<int>? s_overlapping;
 
     private bool IsCandidate(int triangle)
     {
