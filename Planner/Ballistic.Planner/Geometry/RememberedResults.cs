@@ -1,3 +1,5 @@
+using System.Diagnostics.CodeAnalysis;
+
 namespace Ballistic.Planner.Geometry;
 
 /// <summary>
@@ -19,9 +21,8 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
     {
         lock (_lock)
         {
-            if (_newer.TryGetValue(key, out TValue? known) || _older.TryGetValue(key, out known))
+            if (Recall(key, out TValue? known))
             {
-                _newer[key] = known;
                 return known;
             }
         }
@@ -45,9 +46,8 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
     {
         lock (_lock)
         {
-            if (_newer.TryGetValue(key, out TValue? known) || _older.TryGetValue(key, out known))
+            if (Recall(key, out TValue? known))
             {
-                _newer[key] = known;
                 added = false;
                 return known;
             }
@@ -72,6 +72,27 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
                 }
             }
         }
+    }
+
+    /// <summary>True when <paramref name="key"/> is remembered (made, or being made: a <see cref="Lazy{T}"/> added under the lock and not yet solved).</summary>
+    public bool Contains(TKey key)
+    {
+        lock (_lock)
+        {
+            return _newer.ContainsKey(key) || _older.ContainsKey(key);
+        }
+    }
+
+    /// <summary>The value remembered for <paramref name="key"/>, kept in the newer generation; under the lock.</summary>
+    private bool Recall(TKey key, [MaybeNullWhen(false)] out TValue value)
+    {
+        if (_newer.TryGetValue(key, out value) || _older.TryGetValue(key, out value))
+        {
+            _newer[key] = value;
+            return true;
+        }
+
+        return false;
     }
 
     /// <summary>Keeps <paramref name="value"/> in the newer generation, which becomes the older when full; under the lock.</summary>

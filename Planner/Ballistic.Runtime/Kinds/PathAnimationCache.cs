@@ -16,17 +16,19 @@ namespace Ballistic.Runtime.Kinds;
 /// arcs; the walks' ground paths, speeds, turn rates and joined stances; what each move was cut or hopped from) at the
 /// same frame rate: the animator is a function of those alone, so a remembered animation is exactly the one solving
 /// them again gives, whichever agent or thread solved it first. A path asked for while it is being solved is waited
-/// for, not solved twice (a crowd sent off in one tick); one the animator throws on is not remembered. Up to
-/// <see cref="Capacity"/> paths are remembered (then all are forgotten and remembering starts again). Thread-safe.
+/// for, not solved twice (a crowd sent off in one tick); one the animator throws on is not remembered. The paths asked
+/// for last are remembered, two generations of <see cref="Generation"/> (<see cref="RememberedResults{TKey, TValue}"/>).
+/// Thread-safe.
 /// </summary>
 internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
 {
-    /// <summary>Paths remembered at most (a 20 s path of the 39-joint skeleton at 60 frames per second keeps about 200 KB).</summary>
-    internal const int Capacity = 256;
+    /// <summary>Paths each generation remembers, 128 to 256 in all (a 20 s path of the 39-joint skeleton at 60 frames per second keeps about 200 KB).</summary>
+    internal const int Generation = 128;
 
     private readonly IJumpAnimator _animator;
     private readonly CharacterModel _model;
-    private readonly Dictionary<PathKey, Lazy<JumpAnimation>> _animated = [];
+    private readonly RememberedResults<PathKey, Lazy<JumpAnimation>> _animated = new(Generation);
+    private int _solved;
 
     /// <summary>Remembers what <paramref name="animator"/> animates for <paramref name="model"/>.</summary>
     public PathAnimationCache(IJumpAnimator animator, CharacterModel model)
@@ -38,7 +40,7 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
     }
 
     /// <summary>Paths given to the animator (not found among those remembered or being solved) since this cache was made.</summary>
-    public int Solved { get; private set; }
+    public int Solved => Volatile.Read(ref _solved);
 
     /// <inheritdoc/>
     public JumpAnimation Animate(IReadOnlyList<Move> moves, float frameRate = 60f)
@@ -50,17 +52,15 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
     /// <summary><see cref="Animate(IReadOnlyList{Move}, float)"/> for the moves' key, made once by the caller.</summary>
     private JumpAnimation Animate(PathKey key, IReadOnlyList<Move> moves, float frameRate)
     {
-        Lazy<JumpAnimation>? entry;
-        bool mine = false;
-        lock (_animated)
+        // Solved once: an agent asking while another agent's same path is being solved waits for it.
+        Lazy<JumpAnimation> entry = _animated.GetOrAddLocked(
+            key,
+            (Animator: _animator, Moves: moves, FrameRate: frameRate),
+            static (_, s) => new Lazy<JumpAnimation>(() => s.Animator.Animate(s.Moves, s.FrameRate), LazyThreadSafetyMode.ExecutionAndPublication),
+            out bool mine);
+        if (mine)
         {
-            if (!_animated.TryGetValue(key, out entry))
-            {
-                // Solved once: an agent asking while another agent's same path is being solved waits for it.
-                entry = new Lazy<JumpAnimation>(() => _animator.Animate(moves, frameRate), LazyThreadSafetyMode.ExecutionAndPublication);
-                Remember(key, entry);
-                mine = true;
-            }
+            Interlocked.Increment(ref _solved);
         }
 
         JumpAnimation known;
@@ -71,14 +71,7 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
         catch (Exception) when (mine)
         {
             // Not remembered: the next request for these moves calls the animator again.
-            lock (_animated)
-            {
-                if (_animated.TryGetValue(key, out Lazy<JumpAnimation>? same) && ReferenceEquals(same, entry))
-                {
-                    _animated.Remove(key);
-                }
-            }
-
+            _animated.Forget(key, entry);
             throw;
         }
 
@@ -96,56 +89,21 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
     {
         ArgumentNullException.ThrowIfNull(moves);
         var key = new PathKey([.. moves], frameRate);
-        bool known;
-        lock (_animated)
-        {
-            known = _animated.ContainsKey(key);
-            if (!known && _animator is IStepwiseAnimator)
-            {
-                Solved++;
-            }
-        }
-
-        if (known || _animator is not IStepwiseAnimator stepwise)
+        if (_animated.Contains(key) || _animator is not IStepwiseAnimator stepwise)
         {
             yield return Animate(key, moves, frameRate);
             yield break;
         }
 
+        Interlocked.Increment(ref _solved);
         JumpAnimation? solved = null;
         foreach (bool _ in Stepwise.Pauses(stepwise.AnimateSteps(moves, frameRate), animated => solved = animated))
         {
             yield return null;
         }
 
-        lock (_animated)
-        {
-            if (_animated.TryGetValue(key, out Lazy<JumpAnimation>? other) && other.IsValueCreated)
-            {
-                solved = Rebound(other.Value, moves);
-            }
-            else if (other is null)
-            {
-                Remember(key, new Lazy<JumpAnimation>(solved!));
-            }
-        }
-
-        yield return solved;
-    }
-
-    /// <summary>Keeps <paramref name="entry"/> for <paramref name="key"/>, forgetting every path first when <see cref="Capacity"/> are kept; under the lock.</summary>
-    private void Remember(PathKey key, Lazy<JumpAnimation> entry)
-    {
-        if (_animated.Count >= Capacity)
-        {
-            _animated.Clear();
-        }
-
-        _animated[key] = entry;
-        if (!entry.IsValueCreated)
-        {
-            Solved++;
-        }
+        Lazy<JumpAnimation> other = _animated.GetOrAddLocked(key, solved!, static (_, s) => new Lazy<JumpAnimation>(s), out bool added);
+        yield return !added && other.IsValueCreated ? Rebound(other.Value, moves) : solved;
     }
 
     /// <summary>The caller's own moves (equal to the remembered ones, not the same objects) with the remembered motion.</summary>
