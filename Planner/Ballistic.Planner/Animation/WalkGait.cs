@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Collision;
@@ -547,6 +548,31 @@ internal sealed class WalkGait
     /// <summary>Walks animated anew (not found among those remembered or being animated) since this gait was made.</summary>
     internal int Solved => Volatile.Read(ref _solved);
 
+    private int _runsStopped;
+
+    /// <summary>Runs stopped early since this gait was made, as of no use (<see cref="AnimateAnew"/>).</summary>
+    internal int RunsStopped => Volatile.Read(ref _runsStopped);
+
+    /// <summary>Whether runs kept only with fewer problems than the best so far stop once they have as many (the default; off, every run is finished, for tests: the clips are the same).</summary>
+    internal bool StopsRunsOfNoUse { get; init; } = true;
+
+    /// <summary>A run kept only with fewer problems than <paramref name="best"/> animated, or <c>null</c> when it stopped with as many (<see cref="StopsRunsOfNoUse"/>).</summary>
+    private Clip? Unless(Run run, Clip best)
+    {
+        if (!StopsRunsOfNoUse)
+        {
+            return run.Animate();
+        }
+
+        Clip? clip = run.AnimateWithFewer(best.Problems.Count);
+        if (clip is null)
+        {
+            Interlocked.Increment(ref _runsStopped);
+        }
+
+        return clip;
+    }
+
     /// <summary><paramref name="clip"/> with its own frames' angles (callers may change them in place) and its problems placed on move <paramref name="move"/>.</summary>
     private static Clip Copy(Clip clip, int move) => clip with
     {
@@ -578,7 +604,9 @@ internal sealed class WalkGait
         // lifted toward UprightHips over each foot, as far as a trailing foot reaches rolled onto its ball, else as far
         // as it reaches flat); where the body cannot walk so on this ground, the step measured
         // at the stances' height; then lifted with steps the legs reach easily; then at the stances' own height. The
-        // first without problems is kept, else the one with fewest.
+        // first without problems is kept, else the one with fewest. A run whose clip is kept only when it has fewer
+        // problems than the best so far, and is otherwise of no use (not the shortening and lowering rounds, which
+        // go on from the places each run met trouble), stops as soon as it has as many (Unless).
         Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
         // How the best run so far was made (rolling, shortened and lowered where), to walk it again below.
         (bool Roll, float[]? ShortAt, float[]? LowAt, float Share) made = (true, null, null, ShortStep);
@@ -587,8 +615,8 @@ internal sealed class WalkGait
         {
             // The hips lifted as far as a trailing foot reaches rolled onto its ball, where the rig's foot cannot roll
             // so (its toes would go into the ground): lifted as far as the feet reach flat.
-            Clip flat = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false).Animate();
-            (best, roll) = flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
+            Clip? flat = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false), best);
+            (best, roll) = flat is not null && flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
             made = made with { Roll = roll };
         }
 
@@ -685,8 +713,8 @@ internal sealed class WalkGait
         // the hips. Judged where the lift holds the hips, the foot lands back on the tread and rolls there.
         if (best.Lifts.Length > 0)
         {
-            Clip raisedClip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, made.Roll, made.ShortAt, made.LowAt, made.Share, raised: best.Lifts).Animate();
-            if (raisedClip.Problems.Count < best.Problems.Count)
+            Clip? raisedClip = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, made.Roll, made.ShortAt, made.LowAt, made.Share, raised: best.Lifts), best);
+            if (raisedClip is not null && raisedClip.Problems.Count < best.Problems.Count)
             {
                 best = raisedClip;
             }
@@ -699,8 +727,8 @@ internal sealed class WalkGait
 
         foreach ((bool lift, bool longSteps) in ((bool, bool)[])[(true, true), (true, false), (false, false)])
         {
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift, longSteps, cruise: false).Animate();
-            if (clip.Problems.Count < best.Problems.Count)
+            Clip? clip = Unless(new Run(this, move, walk, start, end, frameRate, lift, longSteps, cruise: false), best);
+            if (clip is not null && clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
             }
@@ -913,6 +941,13 @@ internal sealed class WalkGait
         /// <summary>Two pools of angle arrays, one per fine step of a swing (<see cref="SwingPool"/>), reused by every swing.</summary>
         private readonly float[][][] _swingPools = [[], []];
         private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
+
+        /// <summary>The problems at which the run stops as of no use (<see cref="AnimateWithFewer"/>).</summary>
+        private int _limit = int.MaxValue;
+
+        /// <summary>Whether the run has met its limit of problems: one per limb and kind of failure (<see cref="Fail"/>), plus those reported outright.</summary>
+        private bool Enough => _problems.Count + _failures.Count >= _limit;
+
         private readonly List<JumpProblem> _problems = [];
         private readonly List<ContactPhase> _phases = [];
         private readonly List<float> _troubles = [];
@@ -1051,8 +1086,17 @@ internal sealed class WalkGait
 
         private bool IsFoot(int l) => _model.Limbs[l].Kind == LimbKind.Foot;
 
-        public Clip Animate()
+        /// <summary>The walk animated.</summary>
+        public Clip Animate() => AnimateWithFewer(int.MaxValue) ?? throw new UnreachableException("A run without a problem limit always finishes.");
+
+        /// <summary>
+        /// The walk animated, or <c>null</c> as soon as it has met <paramref name="limit"/> problems (a problem once
+        /// met stays: the clip could then only have as many or more). Stopped early, a run leaves nothing behind; the
+        /// clip it finishes is the one <see cref="Animate"/> makes.
+        /// </summary>
+        public Clip? AnimateWithFewer(int limit)
         {
+            _limit = limit;
             if (!(_walk.Duration > 1e-6f))
             {
                 _problems.Add(new JumpProblem(_move, "the walk has no length: its stances cannot be walked between"));
@@ -1189,6 +1233,10 @@ internal sealed class WalkGait
             for (int l = 0; l < _limbs; l++)
             {
                 plans[l] = IsFoot(l) ? FootPlan(l, group[l] == first ? 0 : 1, n) : null;
+                if (Enough)
+                {
+                    return null;
+                }
             }
 
             if (unlifted is not null)
@@ -1206,6 +1254,10 @@ internal sealed class WalkGait
                 if (plans[l] is List<Segment> plan)
                 {
                     Perform(l, plan);
+                    if (Enough)
+                    {
+                        return null;
+                    }
                 }
             }
 
@@ -1222,6 +1274,11 @@ internal sealed class WalkGait
                     {
                         SwingArm(l, _swingStart[0], _swingEnd[n - 1], plans);
                         CheckFree(l, plan);
+                    }
+
+                    if (Enough)
+                    {
+                        return null;
                     }
                 }
             }
@@ -1260,6 +1317,11 @@ internal sealed class WalkGait
                         break;
                     }
                 }
+            }
+
+            if (Enough)
+            {
+                return null;
             }
 
             // Frames at every fine step; a free chain (a tail) bends out of the level where it can, and bones of no
@@ -1306,6 +1368,11 @@ internal sealed class WalkGait
                         _colliding[i] = true;
                         Fail(l, "sole passes through the level", i);
                     }
+                }
+
+                if (Enough)
+                {
+                    return null;
                 }
             }
 
@@ -2850,6 +2917,11 @@ internal sealed class WalkGait
             var holds = new List<Holding>();
             for (int s = 0; s < plan.Count; s++)
             {
+                if (Enough)
+                {
+                    return; // the run stops (AnimateWithFewer)
+                }
+
                 switch (plan[s])
                 {
                     case Holding hold:
