@@ -46,7 +46,17 @@ public sealed class PathQuery
     private readonly List<(int Node, float FlightTime)> _goalEntries = [];
     private readonly float[] _heuristic;
     private readonly int[] _heuristicStamp;
+
+    /// <summary>Per roadmap jump slot (<see cref="Roadmap.OutgoingTargets"/>) and walk slot (<see cref="Roadmap.WalkTargets"/>), the generation whose search must not take it (a pair of the request's rejected set).</summary>
+    private readonly int[] _rejectedJump;
+    private readonly int[] _rejectedWalk;
+
+    /// <summary>Per request edge (<see cref="_extra"/>), whether the current search must not take it.</summary>
+    private readonly List<bool> _extraRejected = [];
     private int _generation;
+
+    /// <summary>The generation of the heuristic values in <see cref="_heuristic"/>: one per request, whose searches all head for the same goal over the same edges (<see cref="NextHeuristics"/>).</summary>
+    private int _heuristics;
 
     // The costs of the current request: a jump's flight time plus these efforts (0 without walking; QuerySettings.JumpCost); walks when allowed.
     private float _effort;
@@ -110,6 +120,8 @@ public sealed class PathQuery
         _extraStamp = new int[count];
         _heuristic = new float[count];
         _heuristicStamp = new int[count];
+        _rejectedJump = new int[roadmap.OutgoingTargets.Length];
+        _rejectedWalk = new int[roadmap.WalkTargets.Length];
     }
 
     /// <summary>The roadmap searched.</summary>
@@ -470,7 +482,8 @@ public sealed class PathQuery
 
         _lostWalk = null;
         var search = new Search();
-        foreach (bool _ in AStar(start, goal, rejected, termination, clock, search))
+        int heuristics = NextHeuristics();
+        foreach (bool _ in AStar(start, goal, rejected, heuristics, termination, clock, search))
         {
             yield return null;
         }
@@ -508,7 +521,7 @@ public sealed class PathQuery
                 avoided.UnionWith(unturned);
                 _lostWalk = null;
                 var research = new Search();
-                foreach (bool _ in AStar(start, goal, avoided, termination, clock, research))
+                foreach (bool _ in AStar(start, goal, avoided, heuristics, termination, clock, research))
                 {
                     yield return null;
                 }
@@ -680,7 +693,7 @@ public sealed class PathQuery
     /// polled; the search's state stays in this query's scratch between them, so a search in steps expands the same
     /// nodes in the same order as one run whole. Its outcome goes in <paramref name="search"/>.
     /// </remarks>
-    private IEnumerable<bool> AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, TerminationCondition? termination, Stopwatch clock, Search search)
+    private IEnumerable<bool> AStar(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, int heuristics, TerminationCondition? termination, Stopwatch clock, Search search)
     {
         int generation = NextGeneration();
         float fastest = _roadmap.MaxHorizontalSpeed;
@@ -690,12 +703,15 @@ public sealed class PathQuery
         }
 
         int roadmapCount = _roadmap.Nodes.Count;
+        Reject(rejected, generation);
         _extraNext.Clear();
+        _extraRejected.Clear();
         _goalEntries.Clear();
         for (int e = 0; e < _extra.Count; e++)
         {
             Extra extra = _extra[e];
             _extraNext.Add(-1);
+            _extraRejected.Add(rejected?.Contains((extra.From, extra.To)) == true);
             if (_extraStamp[extra.From] != generation)
             {
                 _extraStamp[extra.From] = generation;
@@ -723,7 +739,7 @@ public sealed class PathQuery
         _reached[start.Id] = generation;
         _open.Enqueue(start.Id, 0f);
         int paused = -1;
-        while (Expand(start, goal, rejected, generation, inverseSpeed, ref paused, search))
+        while (Expand(start, goal, generation, heuristics, inverseSpeed, ref paused, search))
         {
             if (Stopped(termination, clock, start, goal) is { } stopped)
             {
@@ -732,6 +748,47 @@ public sealed class PathQuery
             }
 
             yield return true;
+        }
+    }
+
+    /// <summary>
+    /// Marks the roadmap's jump and walk slots between the pairs of <paramref name="rejected"/> as not to be taken by
+    /// the search of <paramref name="generation"/>: a lookup per slot instead of one in the set per relaxed edge.
+    /// </summary>
+    private void Reject(IReadOnlySet<(int From, int To)>? rejected, int generation)
+    {
+        if (rejected is null)
+        {
+            return;
+        }
+
+        ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
+        ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
+        ReadOnlySpan<int> walkOffsets = _roadmap.WalkOffsets;
+        ReadOnlySpan<int> walkTargets = _roadmap.WalkTargets;
+        int roadmapCount = _roadmap.Nodes.Count;
+        foreach ((int from, int to) in rejected)
+        {
+            if (from < 0 || from >= roadmapCount)
+            {
+                continue;
+            }
+
+            for (int i = offsets[from], end = offsets[from + 1]; i < end; i++)
+            {
+                if (targets[i] == to)
+                {
+                    _rejectedJump[i] = generation;
+                }
+            }
+
+            for (int i = walkOffsets[from], end = walkOffsets[from + 1]; i < end; i++)
+            {
+                if (walkTargets[i] == to)
+                {
+                    _rejectedWalk[i] = generation;
+                }
+            }
         }
     }
 
@@ -749,9 +806,9 @@ public sealed class PathQuery
     /// the next node would be the <see cref="SliceExpansions"/>-th expanded since the last pause (true, that node in
     /// <paramref name="paused"/>).
     /// </summary>
-    private bool Expand(RoadmapNode start, RoadmapNode goal, IReadOnlySet<(int From, int To)>? rejected, int generation, float inverseSpeed, ref int paused, Search search)
+    private bool Expand(RoadmapNode start, RoadmapNode goal, int generation, int heuristics, float inverseSpeed, ref int paused, Search search)
     {
-        var heuristic = new Heuristic(this, goal, inverseSpeed, generation, landmarks: !_walking);
+        var heuristic = new Heuristic(this, goal, inverseSpeed, heuristics, landmarks: !_walking);
         ReadOnlySpan<int> offsets = _roadmap.OutgoingOffsets;
         ReadOnlySpan<int> targets = _roadmap.OutgoingTargets;
         ReadOnlySpan<float> times = _roadmap.OutgoingFlightTimes;
@@ -771,6 +828,8 @@ public sealed class PathQuery
         int[] reached = _reached;
         int[] closed = _closed;
         PriorityQueue<int, float> open = _open;
+        int[] rejectedJump = _rejectedJump;
+        int[] rejectedWalk = _rejectedWalk;
         int node = paused;
         paused = -1;
         while (true)
@@ -808,6 +867,11 @@ public sealed class PathQuery
             {
                 for (int i = offsets[node], end = offsets[node + 1]; i < end; i++)
                 {
+                    if (rejectedJump[i] == generation)
+                    {
+                        continue;
+                    }
+
                     Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
@@ -815,6 +879,11 @@ public sealed class PathQuery
                 {
                     for (int i = walkOffsets[node], end = walkOffsets[node + 1]; i < end; i++)
                     {
+                        if (rejectedWalk[i] == generation)
+                        {
+                            continue;
+                        }
+
                         Relax(node, walkTargets[i], here + (surfaces ? RoadmapWalkCost(walkEntries[i]) : walkTimes[i]), walkEntries[i], FromWalk, ref heuristic);
                     }
                 }
@@ -824,6 +893,11 @@ public sealed class PathQuery
             {
                 for (int e = _extraFirst[node]; e >= 0; e = _extraNext[e])
                 {
+                    if (_extraRejected[e])
+                    {
+                        continue;
+                    }
+
                     Relax(node, _extra[e].To, here + _extra[e].Cost, e, FromExtra, ref heuristic);
                 }
             }
@@ -833,7 +907,7 @@ public sealed class PathQuery
 
         void Relax(int node, int next, float candidate, int edge, int kind, ref Heuristic h)
         {
-            if (closed[next] != generation && (reached[next] != generation || candidate < cost[next]) && rejected?.Contains((node, next)) != true
+            if (closed[next] != generation && (reached[next] != generation || candidate < cost[next])
                 && (kind == FromWalk || (kind == FromExtra && _extra[edge].Walk is not null) || (_noTakeoffs?.Contains(node) != true && _noLandings?.Contains(next) != true)))
             {
                 float bound = h.At(next);
@@ -853,7 +927,7 @@ public sealed class PathQuery
     private const int FromWalk = 1;
     private const int FromExtra = 2;
 
-    /// <summary>The A* heuristic of one search, each node's value computed once (seconds; +∞: cannot reach the goal).</summary>
+    /// <summary>The A* heuristic of one request's searches, each node's value computed once (seconds; +∞: cannot reach the goal).</summary>
     private readonly ref struct Heuristic
     {
         private readonly PathQuery _query;
@@ -928,11 +1002,27 @@ public sealed class PathQuery
             Array.Clear(_reached);
             Array.Clear(_closed);
             Array.Clear(_extraStamp);
-            Array.Clear(_heuristicStamp);
+            Array.Clear(_rejectedJump);
+            Array.Clear(_rejectedWalk);
             _generation = 0;
         }
 
         return ++_generation;
+    }
+
+    /// <summary>
+    /// A fresh generation of heuristic values, for a request's searches: the first and those after facing (which set
+    /// jumps aside but keep the goal, the request's edges and so every bound) share each node's value.
+    /// </summary>
+    private int NextHeuristics()
+    {
+        if (_heuristics == int.MaxValue)
+        {
+            Array.Clear(_heuristicStamp);
+            _heuristics = 0;
+        }
+
+        return ++_heuristics;
     }
 
     /// <summary>The moves from the start to the goal by the search's back-pointers; <c>null</c> (with <see cref="_lostWalk"/> set) when a roadmap walk no longer traces.</summary>
