@@ -1,4 +1,6 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using Ballistic.Planner.Geometry;
 using MathNet.Numerics.LinearAlgebra;
 using DenseVector = MathNet.Numerics.LinearAlgebra.Vector<double>;
@@ -230,14 +232,24 @@ internal sealed class LimbIk
     internal static void SolveSmall(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n, double damping)
     {
         Span<double> a = stackalloc double[MaxRows * MaxRows];
+        if (j.Length < m * n || e.Length < m || dq.Length < n || m > MaxRows)
+        {
+            throw new ArgumentException($"A {m} × {n} step needs a Jacobian of {m * n}, an error of {m} and a step of {n} values, at most {MaxRows} rows.");
+        }
+
+        // The products J Jᵀ by references into the rows (no bounds check per term: the lengths are checked above), each
+        // sum in the same order as ever, so the step is the same to the last bit.
+        ref double first = ref MemoryMarshal.GetReference(j);
         for (int r = 0; r < m; r++)
         {
+            ref double row = ref Unsafe.Add(ref first, r * n);
             for (int c = 0; c <= r; c++)
             {
+                ref double other = ref Unsafe.Add(ref first, c * n);
                 double sum = 0;
                 for (int k = 0; k < n; k++)
                 {
-                    sum += j[(r * n) + k] * j[(c * n) + k];
+                    sum += Unsafe.Add(ref row, k) * Unsafe.Add(ref other, k);
                 }
 
                 a[(r * m) + c] = sum + (r == c ? damping * damping : 0);

@@ -195,6 +195,21 @@ public sealed class RigTests
         }
     }
 
+    /// <summary>The small solver reads its Jacobian by reference: spans too short for the step asked are refused, not read past.</summary>
+    [Test]
+    public void SmallSolverRefusesSpansTooShortForTheStep()
+    {
+        double[] e = [0.1, 0.2, 0.3];
+        double[] dq = new double[4];
+        Assert.Multiple(() =>
+        {
+            Assert.That(() => LimbIk.SolveSmall(new double[11], e, dq, 3, 4, 0.03), Throws.ArgumentException, "Jacobian of 11 for 3 × 4");
+            Assert.That(() => LimbIk.SolveSmall(new double[12], e.AsSpan(0, 2), dq, 3, 4, 0.03), Throws.ArgumentException, "error of 2 for 3 rows");
+            Assert.That(() => LimbIk.SolveSmall(new double[12], e, dq.AsSpan(0, 3), 3, 4, 0.03), Throws.ArgumentException, "step of 3 for 4 columns");
+            Assert.That(() => LimbIk.SolveSmall(new double[24], new double[6], dq, 6, 4, 0.03), Throws.ArgumentException, "6 rows");
+        });
+    }
+
     [Test]
     public void DerivedReducedModelPutsFeetBelowAndHandsBesideTheTrunk()
     {
