@@ -556,6 +556,14 @@ internal sealed class WalkGait
     /// <summary>Whether runs kept only with fewer problems than the best so far stop once they have as many (the default; off, every run is finished, for tests: the clips are the same).</summary>
     internal bool StopsRunsOfNoUse { get; init; } = true;
 
+    /// <summary>Whether the runs of one walk share what they measure on its stances (<see cref="Stances"/>; the default; off, each run measures them itself, for tests: the clips are the same).</summary>
+    internal bool SharesStanceMeasures { get; init; } = true;
+
+    private int _stanceMeasures;
+
+    /// <summary>Stance measures (a cruise or a foot's reach on a walk's start or end stance) made since this gait was made.</summary>
+    internal int StanceMeasures => Volatile.Read(ref _stanceMeasures);
+
     /// <summary>A run kept only with fewer problems than <paramref name="best"/> animated, or <c>null</c> when it stopped with as many (<see cref="StopsRunsOfNoUse"/>).</summary>
     private Clip? Unless(Run run, Clip best)
     {
@@ -607,7 +615,8 @@ internal sealed class WalkGait
         // first without problems is kept, else the one with fewest. A run whose clip is kept only when it has fewer
         // problems than the best so far, and is otherwise of no use (not the shortening and lowering rounds, which
         // go on from the places each run met trouble), stops as soon as it has as many (Unless).
-        Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true).Animate();
+        var stances = new Stances(this); // measured once for all the runs below
+        Clip best = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, stances: stances).Animate();
         // How the best run so far was made (rolling, shortened and lowered where), to walk it again below.
         (bool Roll, float[]? ShortAt, float[]? LowAt, float Share) made = (true, null, null, ShortStep);
         bool roll = true;
@@ -615,7 +624,7 @@ internal sealed class WalkGait
         {
             // The hips lifted as far as a trailing foot reaches rolled onto its ball, where the rig's foot cannot roll
             // so (its toes would go into the ground): lifted as far as the feet reach flat.
-            Clip? flat = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false), best);
+            Clip? flat = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll: false, stances: stances), best);
             (best, roll) = flat is not null && flat.Problems.Count < best.Problems.Count ? (flat, false) : (best, true);
             made = made with { Roll = roll };
         }
@@ -632,7 +641,7 @@ internal sealed class WalkGait
         float[] narrowAt = best.Troubles;
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && narrowAt.Length > 0; again++)
         {
-            Clip narrow = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, narrowAt, shortSpan: NarrowSpan).Animate();
+            Clip narrow = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, narrowAt, shortSpan: NarrowSpan, stances: stances).Animate();
             if (narrow.Problems.Count == 0)
             {
                 return narrow;
@@ -653,7 +662,7 @@ internal sealed class WalkGait
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && best.Troubles.Length > 0; again++)
         {
             float[] used = shortAt;
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, used, shortShare: share).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, used, shortShare: share, stances: stances).Animate();
             float[] more = [.. shortAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(shortAt);
             shortAt = more;
@@ -686,7 +695,7 @@ internal sealed class WalkGait
         for (int again = 0; again < ShortenRounds && best.Problems.Count > 0 && _restLeg > 0f && lowAt.Length > 0; again++)
         {
             float[] used = lowAt;
-            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, used, bestShare).Animate();
+            Clip clip = new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, roll, shortAt, used, bestShare, stances: stances).Animate();
             float[] more = [.. lowAt, .. clip.Troubles];
             bool news = Run.Places(more) > Run.Places(lowAt);
             lowAt = more;
@@ -713,7 +722,7 @@ internal sealed class WalkGait
         // the hips. Judged where the lift holds the hips, the foot lands back on the tread and rolls there.
         if (best.Lifts.Length > 0)
         {
-            Clip? raisedClip = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, made.Roll, made.ShortAt, made.LowAt, made.Share, raised: best.Lifts), best);
+            Clip? raisedClip = Unless(new Run(this, move, walk, start, end, frameRate, lift: true, longSteps: true, cruise: true, made.Roll, made.ShortAt, made.LowAt, made.Share, raised: best.Lifts, stances: stances), best);
             if (raisedClip is not null && raisedClip.Problems.Count < best.Problems.Count)
             {
                 best = raisedClip;
@@ -727,7 +736,7 @@ internal sealed class WalkGait
 
         foreach ((bool lift, bool longSteps) in ((bool, bool)[])[(true, true), (true, false), (false, false)])
         {
-            Clip? clip = Unless(new Run(this, move, walk, start, end, frameRate, lift, longSteps, cruise: false), best);
+            Clip? clip = Unless(new Run(this, move, walk, start, end, frameRate, lift, longSteps, cruise: false, stances: stances), best);
             if (clip is not null && clip.Problems.Count < best.Problems.Count)
             {
                 best = clip;
@@ -915,6 +924,43 @@ internal sealed class WalkGait
     private readonly record struct Footing(Vector3 Local, float Ahead, float Behind);
 
     /// <summary>One walk being animated: its fine grid, the angles at each fine step, and what went wrong.</summary>
+    /// <summary>
+    /// What the runs of one walk measure on its start and end stances, measured once: the hips' cruising lift and the
+    /// angles holding it (<c>Run.Cruise</c>), and how far each foot's hold reaches along the trunk with the hips at a
+    /// lift (<c>Run.Footings</c>; at the cruising lift the angles are those of the cruise, at none the stance's own).
+    /// Each is a function of the stance, the lift and the gait alone, so every run gets what it would measure itself;
+    /// each gets its own copy.
+    /// </summary>
+    private sealed class Stances(WalkGait gait)
+    {
+        private readonly Dictionary<bool, (float Lift, float[] Angles, Vector3 Hips)> _cruises = [];
+        private readonly Dictionary<(bool Start, float Lift), Footing[]> _footings = [];
+
+        public (float Lift, float[] Angles, Vector3 Hips) Cruise(bool start, Func<(float Lift, float[] Angles, Vector3 Hips)> measure)
+        {
+            if (!_cruises.TryGetValue(start, out (float Lift, float[] Angles, Vector3 Hips) cruise))
+            {
+                cruise = measure();
+                _cruises[start] = cruise;
+                Interlocked.Increment(ref gait._stanceMeasures);
+            }
+
+            return (cruise.Lift, (float[])cruise.Angles.Clone(), cruise.Hips);
+        }
+
+        public Footing[] Footings(bool start, float lift, Func<Footing[]> measure)
+        {
+            if (!_footings.TryGetValue((start, lift), out Footing[]? footings))
+            {
+                footings = measure();
+                _footings[(start, lift)] = footings;
+                Interlocked.Increment(ref gait._stanceMeasures);
+            }
+
+            return (Footing[])footings.Clone();
+        }
+    }
+
     private sealed class Run
     {
         private readonly WalkGait _gait;
@@ -1011,6 +1057,9 @@ internal sealed class WalkGait
         private readonly bool _roll;
         private readonly bool _arms;
 
+        /// <summary>What this run measured on its start and end stances, shared with the other runs of the same walk.</summary>
+        private readonly Stances _stances;
+
         /// <summary>The walk this run was asked to animate: <see cref="_walk"/> unless it slows around troubles (<see cref="Walk.Slowed"/>).</summary>
         private readonly Walk _given;
 
@@ -1019,8 +1068,9 @@ internal sealed class WalkGait
 
         private readonly float _slowedPace = 1f;
 
-        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan, float[]? raised = null)
+        public Run(WalkGait gait, int move, Walk walk, ContactConfiguration start, ContactConfiguration end, float frameRate, bool lift, bool longSteps, bool cruise, bool roll = true, float[]? shortAt = null, float[]? lowAt = null, float shortShare = ShortStep, float shortSpan = ShortSpan, float[]? raised = null, Stances? stances = null)
         {
+            _stances = gait.SharesStanceMeasures && stances is not null ? stances : new Stances(gait);
             _raised = raised;
             _roll = roll;
             _given = walk;
@@ -1114,8 +1164,8 @@ internal sealed class WalkGait
                 // Upright: at full speed the trunk cruises with its hips CruiseHips of the leg above the held feet
                 // (at the stances as far as their feet hold there, between them above the ground walked: RootAt), and
                 // the step is measured there.
-                (_cruiseStart, raisedStart, _hipsStart) = Cruise(_start);
-                (_cruiseEnd, raisedEnd, _hipsEnd) = Cruise(_end);
+                (_cruiseStart, raisedStart, _hipsStart) = _stances.Cruise(start: true, () => Cruise(_start));
+                (_cruiseEnd, raisedEnd, _hipsEnd) = _stances.Cruise(start: false, () => Cruise(_end));
                 _cruised = true;
             }
 
@@ -1123,8 +1173,8 @@ internal sealed class WalkGait
 
             // What each foot can do on the contacts the walk starts and ends on, along the trunk's forward axis: where
             // to centre the footholds (the trunk turns in place to face the way it walks, then walks straight ahead).
-            Footing[] startForward = Footings(_start, Forward(_start.Root), _cruiseStart, raisedStart);
-            Footing[] endForward = Footings(_end, Forward(_end.Root), _cruiseEnd, raisedEnd);
+            Footing[] startForward = _stances.Footings(start: true, _cruiseStart, () => Footings(_start, Forward(_start.Root), _cruiseStart, raisedStart));
+            Footing[] endForward = _stances.Footings(start: false, _cruiseEnd, () => Footings(_end, Forward(_end.Root), _cruiseEnd, raisedEnd));
             _startLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startForward[l]))];
             _endLocal = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endForward[l]))];
             (_startLocalLow, _endLocalLow) = ((Vector3[])_startLocal.Clone(), (Vector3[])_endLocal.Clone());
@@ -1189,8 +1239,8 @@ internal sealed class WalkGait
                 // tread, does not shorten every step of the flight up to it: those came 3.3-4.3 a second, a tread
                 // each, at the walk's pace on the stairs; steps that do not fit near it are shortened there,
                 // Troubles).
-                Footing[] startLow = Footings(_start, Forward(_start.Root), 0f, _start.Angles);
-                Footing[] endLow = Footings(_end, Forward(_end.Root), 0f, _end.Angles);
+                Footing[] startLow = _stances.Footings(start: true, 0f, () => Footings(_start, Forward(_start.Root), 0f, _start.Angles));
+                Footing[] endLow = _stances.Footings(start: false, 0f, () => Footings(_end, Forward(_end.Root), 0f, _end.Angles));
                 _startLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(startLow[l]))];
                 _endLocalLow = [.. Enumerable.Range(0, _limbs).Select(l => Centred(endLow[l]))];
                 float least = MathF.Max(0.05f * _leg, 1e-3f);

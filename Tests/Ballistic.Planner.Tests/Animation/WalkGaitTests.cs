@@ -229,25 +229,29 @@ public sealed class WalkGaitTests
     }
 
     /// <summary>
-    /// A run of the gait kept only when it has fewer problems than the best so far (the feet flat instead of rolled, the
-    /// hips judged where an earlier lift held them, the classic steps last) stops as soon as it has as many, and the
-    /// clip is the one a gait finishing every run makes: on the desert's walking roadmap (600 nodes, seed 1), three
+    /// Two shortcuts of the gait leave every clip as it was. A run kept only when it has fewer problems than the best
+    /// so far (the feet flat instead of rolled, the hips judged where an earlier lift held them, the classic steps last)
+    /// stops as soon as it has as many; and the runs of one walk measure its stances (the hips' cruising lift, each
+    /// foot's reach along the trunk) once between them. On the desert's walking roadmap (600 nodes, seed 1), three
     /// walks over the dunes whose upright run meets trouble, one of them clean only at the classic steps and one with
-    /// problems whatever the gait tries, have the same frames, contact phases and problems, and runs were stopped
-    /// (stopping a run one problem sooner changes the first two).
+    /// problems whatever the gait tries, have the same frames, contact phases and problems as with a gait finishing
+    /// every run and one measuring the stances in every run; runs were stopped, and the stances measured at most six
+    /// times a walk (stopping a run one problem sooner changes the first two clips).
     /// </summary>
     [Test]
-    public void RunsThatCannotDoBetterStopEarlyAndTheClipsAreTheSame()
+    public void TheGaitsShortcutsChangeNoClip()
     {
         WalkWorld world = WalkWorld.Create(SharedLevels.Bundled("desert"), "skeleton");
         Roadmap roadmap = new RoadmapBaker(world.Scene).Bake(new BakeSettings { Locomotion = Locomotion.WalkAndJump, Seed = 1, MaxNodes = 600, Threads = 2 }).Roadmap;
         ContactGenerator contacts = world.Animator.Contacts;
-        var stopping = new WalkGait(world.Scene, world.Model, contacts);
+        var shortcut = new WalkGait(world.Scene, world.Model, contacts);
         var finishing = new WalkGait(world.Scene, world.Model, contacts) { StopsRunsOfNoUse = false };
+        var measuring = new WalkGait(world.Scene, world.Model, contacts) { SharesStanceMeasures = false };
         var problems = new List<int>();
+        (int From, int To)[] walks = [(7, 32), (32, 21), (8, 23)];
         Assert.Multiple(() =>
         {
-            foreach ((int a, int b) in new[] { (7, 32), (32, 21), (8, 23) })
+            foreach ((int a, int b) in walks)
             {
                 Assert.That(roadmap.Walks.Any(w => w.From == a && w.To == b), Is.True, $"the bake has a walk from node {a} to node {b}");
                 RoadmapNode from = roadmap.Nodes[a];
@@ -255,19 +259,25 @@ public sealed class WalkGaitTests
                 Walk walk = world.Scene.Walking.SteerRemembered(from, to).Walk ?? throw new AssertionException($"walk {a} to {b} traces");
                 ContactConfiguration start = contacts.Generate(from.Pose, from.Contacts, from.Cone.Axis);
                 ContactConfiguration end = contacts.Generate(to.Pose, to.Contacts, to.Cone.Axis);
-                WalkGait.Clip stopped = stopping.Animate(0, walk, start, end, 60f);
-                WalkGait.Clip finished = finishing.Animate(0, walk, start, end, 60f);
-                string name = $"walk {a} to {b}";
-                Assert.That(stopped.Frames.Select(f => (f.Time, f.Root)), Is.EqualTo(finished.Frames.Select(f => (f.Time, f.Root))), name);
-                Assert.That(stopped.Frames.SelectMany(f => f.Angles), Is.EqualTo(finished.Frames.SelectMany(f => f.Angles)), name);
-                Assert.That(stopped.Phases, Is.EqualTo(finished.Phases), name);
-                Assert.That(stopped.Problems, Is.EqualTo(finished.Problems), name);
-                problems.Add(stopped.Problems.Count);
+                WalkGait.Clip clip = shortcut.Animate(0, walk, start, end, 60f);
+                foreach ((WalkGait other, string how) in new[] { (finishing, "finishing every run"), (measuring, "measuring the stances in every run") })
+                {
+                    WalkGait.Clip expected = other.Animate(0, walk, start, end, 60f);
+                    string name = $"walk {a} to {b}, against {how}";
+                    Assert.That(clip.Frames.Select(f => (f.Time, f.Root)), Is.EqualTo(expected.Frames.Select(f => (f.Time, f.Root))), name);
+                    Assert.That(clip.Frames.SelectMany(f => f.Angles), Is.EqualTo(expected.Frames.SelectMany(f => f.Angles)), name);
+                    Assert.That(clip.Phases, Is.EqualTo(expected.Phases), name);
+                    Assert.That(clip.Problems, Is.EqualTo(expected.Problems), name);
+                }
+
+                problems.Add(clip.Problems.Count);
             }
 
             Assert.That(problems, Is.EqualTo(new[] { 0, 0, 1 }), "problems per walk");
-            Assert.That(stopping.RunsStopped, Is.GreaterThan(0), "runs stopped early");
+            Assert.That(shortcut.RunsStopped, Is.GreaterThan(0), "runs stopped early");
             Assert.That(finishing.RunsStopped, Is.EqualTo(0), "every run finished");
+            Assert.That(shortcut.StanceMeasures, Is.LessThanOrEqualTo(6 * walks.Length), "stances measured once a walk");
+            Assert.That(measuring.StanceMeasures, Is.GreaterThan(2 * shortcut.StanceMeasures), "stances measured in every run");
         });
     }
 
