@@ -734,7 +734,7 @@ internal sealed class ContactGenerator
         }
 
         float[] position = stalled.ToArray();
-        if (!Ik.Solve(root, position, limb, point, null, seed: 1).Success)
+        if (!Ik.Reaches(root, position, limb, point, null, seed: 1))
         {
             return false;
         }

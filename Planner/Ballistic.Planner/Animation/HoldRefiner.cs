@@ -127,7 +127,7 @@ internal sealed class HoldRefiner
             // turned as at the first).
             float[] trial = (float[])angles.Clone();
             RigLimb touching = phase.TouchingLimb(limb);
-            bool solved = _ik.Solve(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]).Success;
+            bool solved = _ik.Reaches(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]);
             rig.Solve(root, trial, positions, rotations);
             if (!(solved && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)
             {

@@ -1297,7 +1297,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         {
             RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
             float up = MathF.Min(_liftHeight, MathF.Max(0f, root.Position.Y - start));
-            if (!_holdIk.Solve(root, q, limb, contact.Position + (contact.Normal * up), -contact.Normal).Success)
+            if (!_holdIk.Reaches(root, q, limb, contact.Position + (contact.Normal * up), -contact.Normal))
             {
                 break;
             }
@@ -1341,7 +1341,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             Vector3 point = curve.At(u);
             Vector3 normal = -Vector3.Normalize(Vector3.Lerp(up.Normal, down.Normal, Easing.Smooth(u)));
             RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
-            if (!_holdIk.Solve(root, q, limb, point, normal).Success && !_holdIk.Solve(root, q, limb, point, null).Success)
+            if (!_holdIk.Reaches(root, q, limb, point, normal) && !_holdIk.Reaches(root, q, limb, point, null))
             {
                 return null;
             }

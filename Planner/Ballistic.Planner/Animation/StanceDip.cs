@@ -296,7 +296,7 @@ internal sealed class StanceDip
     internal static string? Hold(LimbIk ik, CharacterModel model, BodyCollision collision, in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, float[] reference, Vector3[] positions, Quaternion[] rotations, int seed = 0)
     {
         bool skinned = model.Source is not null;
-        if (!ik.Solve(root, q, limb, point, -normal, seed).Success && (skinned || !ik.Solve(root, q, limb, point, null, seed).Success))
+        if (!ik.Reaches(root, q, limb, point, -normal, seed) && (skinned || !ik.Reaches(root, q, limb, point, null, seed)))
         {
             return "cannot hold its contact";
         }

@@ -1881,7 +1881,7 @@ internal sealed class WalkGait
                     }
                 }
 
-                bool ok = _gait._swingIk.Solve(_roots[i], trial, limb, target, null).Success;
+                bool ok = _gait._swingIk.Reaches(_roots[i], trial, limb, target, null);
                 if (ok)
                 {
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
@@ -3369,8 +3369,8 @@ internal sealed class WalkGait
                         // turning or slowing under it), the angles go straight on toward the foothold's.
                         Vector3 p = Curve(s);
                         Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
-                        onCurve = _gait._sole.Flat.Solve(_roots[i], trial, limb, p, n).Success || _gait._swingIk.Solve(_roots[i], trial, limb, p, n).Success
-                            || _gait._swingIk.Solve(_roots[i], trial, limb, p, null).Success;
+                        onCurve = _gait._sole.Flat.Reaches(_roots[i], trial, limb, p, n) || _gait._swingIk.Reaches(_roots[i], trial, limb, p, n)
+                            || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
                     }
 
                     _rig.Solve(_roots[i], trial, _positions, _rotations);

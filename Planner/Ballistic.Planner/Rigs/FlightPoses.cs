@@ -122,7 +122,7 @@ internal static class FlightPoses
                 trial[d] = ik.Rig.Dofs[d].Clamp(trial[d] + SeedBend);
             }
 
-            if (ik.Solve(root, trial, limb, hip + (reach * direction), Vector3.Transform(normal, turn)).Success)
+            if (ik.Reaches(root, trial, limb, hip + (reach * direction), Vector3.Transform(normal, turn)))
             {
                 Array.Copy(trial, q, q.Length);
                 return;

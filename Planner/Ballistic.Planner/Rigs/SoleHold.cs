@@ -60,9 +60,9 @@ internal sealed class SoleHold
     /// </summary>
     public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?>? groundUnder = null, Vector3? ball = null) =>
         (ball is not null && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
-        || Flat.Solve(root, q, limb, point, -groundNormal).Success
+        || Flat.Reaches(root, q, limb, point, -groundNormal)
         || (groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
-        || Loose.Solve(root, q, limb, point, -groundNormal).Success;
+        || Loose.Reaches(root, q, limb, point, -groundNormal);
 
     /// <summary>The heel raised, the ball held (<see cref="Hold"/>).</summary>
     private bool Roll(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?> groundUnder, Vector3? ball0)
@@ -115,7 +115,7 @@ internal sealed class SoleHold
         (float from, float by) = ball0 is null ? (least, RollStep) : (MathF.Max(now - least, least), least);
         for (float tilt = from; tilt <= MostRoll; tilt += by)
         {
-            if (Rolling.Solve(root, q, ball, target, Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, sign * tilt))).Success)
+            if (Rolling.Reaches(root, q, ball, target, Vector3.Transform(-up, Quaternion.CreateFromAxisAngle(side, sign * tilt))))
             {
                 return true;
             }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using Ballistic.Authoring.Characters;
 using Ballistic.Authoring.Rigs;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
@@ -193,6 +194,60 @@ public sealed class RigTests
                 Assert.That(a[k], Is.EqualTo(b[k]).Within(1e-9 + (1e-7 * Math.Abs(b[k]))));
             }
         }
+    }
+
+    /// <summary>
+    /// <see cref="LimbIk.Reaches"/> is <see cref="LimbIk.Solve(in RootPose, Span{float}, RigLimb, Vector3, Vector3?, int)"/>'s
+    /// success, leaving the same angles, for targets on both sides of what a chain reaches (0.5 to 1.5 times its reach
+    /// from the limb's first joint, with and without a normal, every limb of the humanoid and the ant, with the solver
+    /// settings the walk's sole uses and the default ones); and no pose of a chain puts its contact point farther from
+    /// its first joint than <see cref="LimbIk.ChainReach"/>, the bound past which <c>Reaches</c> fails at once.
+    /// </summary>
+    [Test]
+    public void ReachesIsTheSolvesSuccessAndItsBoundHoldsEveryPose()
+    {
+        var random = new Random(31);
+        var root = new RootPose(new Vector3(0.5f, 1f, -1f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.8f));
+        int outOfReach = 0;
+        int solved = 0;
+        foreach (CharacterModel model in new[] { Humanoid.Value, CharacterPresets.Model("ant") })
+        {
+            Rig rig = model.Rig;
+            var positions = new Vector3[rig.Joints.Count];
+            var rotations = new Quaternion[rig.Joints.Count];
+            foreach (IkSettings settings in new[] { new IkSettings(), new IkSettings { Restarts = 0, MaxIterations = 16, NormalTolerance = 0.1f, ReleaseLimits = true } })
+            {
+                var ik = new LimbIk(rig, settings);
+                foreach (RigLimb limb in model.Limbs)
+                {
+                    float reach = ik.ChainReach(limb);
+                    for (int trial = 0; trial < 24; trial++)
+                    {
+                        float[] pose = RandomPose(rig, limb, random, model.ContactPose);
+                        rig.Solve(root, pose, positions, rotations);
+                        Assert.That(Vector3.Distance(limb.EffectorPosition(positions, rotations), positions[limb.RootJoint]), Is.LessThanOrEqualTo(reach + 1e-4f), $"{model.Name}, {limb.Name}: a pose beyond the chain's reach");
+                        Vector3 direction = Vector3.Normalize(new Vector3((float)random.NextDouble() - 0.5f, (float)random.NextDouble() - 0.8f, (float)random.NextDouble() - 0.5f));
+                        float share = 0.5f + (float)random.NextDouble();
+                        Vector3 target = positions[limb.RootJoint] + (direction * (share * reach));
+                        Vector3? normal = trial % 2 == 0 ? -Vector3.UnitY : null;
+                        float[] solving = (float[])model.ContactPose.Clone();
+                        float[] reaching = (float[])model.ContactPose.Clone();
+                        bool success = ik.Solve(root, solving, limb, target, normal, seed: trial).Success;
+                        bool reaches = ik.Reaches(root, reaching, limb, target, normal, seed: trial);
+                        Assert.That(reaches, Is.EqualTo(success), $"{model.Name}, {limb.Name}, {share:0.00} of its reach");
+                        Assert.That(reaching, Is.EqualTo(solving), $"{model.Name}, {limb.Name}: the angles left");
+                        outOfReach += share * reach > reach + settings.PositionTolerance + LimbIk.ReachSlack ? 1 : 0;
+                        solved += success ? 1 : 0;
+                    }
+                }
+            }
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(outOfReach, Is.GreaterThan(50), "targets out of reach");
+            Assert.That(solved, Is.GreaterThan(50), "targets reached");
+        });
     }
 
     /// <summary>The small solver reads its Jacobian by reference: spans too short for the step asked are refused, not read past.</summary>
