@@ -507,29 +507,13 @@ internal sealed class WalkGait
         ArgumentNullException.ThrowIfNull(walk);
         ArgumentNullException.ThrowIfNull(start);
         ArgumentNullException.ThrowIfNull(end);
-        var key = new WalkKey(walk, start, end, frameRate);
-        Lazy<Clip> entry = _animated.GetOrAddLocked(
-            key,
+        // Animated once: a walk asked for while another thread animates it is waited for; one that throws is forgotten.
+        Clip clip = _animated.GetOrSolve(
+            new WalkKey(walk, start, end, frameRate),
             (Gait: this, Move: move, Walk: walk, Start: start, End: end, FrameRate: frameRate),
-            static (_, s) => new Lazy<Clip>(() => s.Gait.AnimateAnew(s.Move, s.Walk, s.Start, s.End, s.FrameRate), LazyThreadSafetyMode.ExecutionAndPublication),
-            out bool added);
-        if (added)
-        {
-            Interlocked.Increment(ref _solved);
-        }
-
-        Clip clip;
-        try
-        {
-            clip = entry.Value;
-        }
-        catch (Exception)
-        {
-            // Not remembered: the next request for this walk animates it again.
-            _animated.Forget(key, entry);
-            throw;
-        }
-
+            static s => s.Gait.AnimateAnew(s.Move, s.Walk, s.Start, s.End, s.FrameRate),
+            ref _solved,
+            out _);
         return Copy(clip, move);
     }
 

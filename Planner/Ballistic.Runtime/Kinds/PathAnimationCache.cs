@@ -52,29 +52,14 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
     /// <summary><see cref="Animate(IReadOnlyList{Move}, float)"/> for the moves' key, made once by the caller.</summary>
     private JumpAnimation Animate(PathKey key, IReadOnlyList<Move> moves, float frameRate)
     {
-        // Solved once: an agent asking while another agent's same path is being solved waits for it.
-        Lazy<JumpAnimation> entry = _animated.GetOrAddLocked(
+        // Solved once: an agent asking while another agent's same path is being solved waits for it; a path whose
+        // solve throws is forgotten, so the next request for these moves calls the animator again.
+        JumpAnimation known = _animated.GetOrSolve(
             key,
             (Animator: _animator, Moves: moves, FrameRate: frameRate),
-            static (_, s) => new Lazy<JumpAnimation>(() => s.Animator.Animate(s.Moves, s.FrameRate), LazyThreadSafetyMode.ExecutionAndPublication),
+            static s => s.Animator.Animate(s.Moves, s.FrameRate),
+            ref _solved,
             out bool mine);
-        if (mine)
-        {
-            Interlocked.Increment(ref _solved);
-        }
-
-        JumpAnimation known;
-        try
-        {
-            known = entry.Value;
-        }
-        catch (Exception) when (mine)
-        {
-            // Not remembered: the next request for these moves calls the animator again.
-            _animated.Forget(key, entry);
-            throw;
-        }
-
         return mine ? known : Rebound(known, moves);
     }
 

@@ -98,4 +98,39 @@ public sealed class RememberedResultsTests
 
         Assert.That(wrong, Is.Zero);
     }
+
+    /// <summary>
+    /// A solve remembered as a lazy value runs once however many threads ask at once (the others wait for it and get
+    /// its result), is counted once, and when it throws every caller sees the exception and the next call solves it
+    /// again.
+    /// </summary>
+    [Test]
+    public void ASolveIsRunOnceAcrossThreadsAndAFailedOneIsSolvedAgain()
+    {
+        var memory = new RememberedResults<int, Lazy<string>>(4);
+        int runs = 0;
+        int solves = 0;
+        using var together = new Barrier(8);
+        string[] got = new string[8];
+        bool[] here = new bool[8];
+        Parallel.For(0, 8, new ParallelOptions { MaxDegreeOfParallelism = 8 }, i =>
+        {
+            together.SignalAndWait();
+            got[i] = memory.GetOrSolve(1, "one", s => { Interlocked.Increment(ref runs); Thread.Sleep(20); return s; }, ref solves, out here[i]);
+        });
+
+        int failing = 0;
+        string Fail(string s) => Interlocked.Increment(ref failing) == 1 ? throw new InvalidOperationException("first") : s;
+        Assert.Multiple(() =>
+        {
+            Assert.That(got, Has.All.EqualTo("one"));
+            Assert.That(runs, Is.EqualTo(1), "solved once");
+            Assert.That(solves, Is.EqualTo(1), "counted once");
+            Assert.That(here.Count(h => h), Is.EqualTo(1), "solved here by one caller");
+            Assert.That(() => memory.GetOrSolve(2, "two", Fail, ref solves, out _), Throws.InvalidOperationException);
+            Assert.That(memory.GetOrSolve(2, "two", Fail, ref solves, out bool again), Is.EqualTo("two"), "solved again after it threw");
+            Assert.That(again, Is.True);
+            Assert.That(solves, Is.EqualTo(3));
+        });
+    }
 }
