@@ -204,6 +204,16 @@ internal sealed class WalkGait
     /// <summary>Interval (seconds) at which how long the feet can stay on the walk's start and end contacts is probed.</summary>
     private const float HoldProbe = 0.02f;
 
+    /// <summary>
+    /// Fastest a swinging leg's joint turns from one fine step to the next with its sole held flat on its curve, radians
+    /// per second (3,600°/s, 15° a fine step at 60 frames a second, 60° a frame): a flat-sole solve that turns one
+    /// faster has jumped to another solution of the leg (a hip held at its limit let go and twisting 42° in 1/240 s),
+    /// and the sole held along the curve's normal within its looser tolerance is taken instead when that solve does
+    /// not. Slower turns are left to the flat sole: preferring the looser sole from 1,200°/s halved such turns on the
+    /// desert's walks but left a user's human rig unable to walk down a staircase.
+    /// </summary>
+    public const float MaxJointTurn = 20f * MathF.PI;
+
     /// <summary>Fine steps per frame interval on which the feet are solved; each becomes a frame.</summary>
     public const int Substeps = 4;
 
@@ -968,6 +978,12 @@ internal sealed class WalkGait
         /// <summary>A touching-down foot's angles solved from the step before's (<see cref="Swing"/>), reused.</summary>
         private readonly float[] _along;
 
+        /// <summary>A swinging foot's angles before a solve on its curve (<see cref="Smoothly"/>), reused.</summary>
+        private readonly float[] _seed;
+
+        /// <summary>The first solve on a swing's curve that held the foot but turned a joint too fast (<see cref="Smoothly"/>), reused.</summary>
+        private readonly float[] _held;
+
         /// <summary>Two pools of angle arrays, one per fine step of a swing (<see cref="SwingPool"/>), reused by every swing.</summary>
         private readonly float[][][] _swingPools = [[], []];
         private readonly Dictionary<(int Limb, string Kind), (float Distance, int Count)> _failures = [];
@@ -1093,6 +1109,8 @@ internal sealed class WalkGait
             _rotations = new Quaternion[_rig.Joints.Count];
             _midway = new float[_rig.DofCount];
             _along = new float[_rig.DofCount];
+            _seed = new float[_rig.DofCount];
+            _held = new float[_rig.DofCount];
         }
 
         /// <summary>Pool <paramref name="pool"/> (0 or 1) of angle arrays, at least <paramref name="count"/> of them, grown as needed.</summary>
@@ -3239,6 +3257,42 @@ internal sealed class WalkGait
         }
 
         /// <summary>
+        /// Whether <paramref name="ik"/> holds <paramref name="limb"/>'s effector at <paramref name="point"/>, its sole
+        /// along <paramref name="normal"/>, at fine step <paramref name="i"/> from <paramref name="trial"/>, with no
+        /// joint of the chain turning faster than <see cref="MaxJointTurn"/> from <paramref name="before"/> (the fine
+        /// step before): true leaves the angles solved in <paramref name="trial"/>, false leaves it as it was; the first
+        /// solve that holds the foot but turns a joint faster is kept in <see cref="_held"/> (<paramref name="kept"/>
+        /// set), to be taken when no solve holds smoothly.
+        /// </summary>
+        private bool Smoothly(LimbIk ik, int i, float[] trial, float[] before, RigLimb limb, Vector3 point, Vector3 normal, ref bool kept)
+        {
+            float[] seed = _seed;
+            Array.Copy(trial, seed, trial.Length);
+            if (!ik.Reaches(_roots[i], trial, limb, point, normal))
+            {
+                return false;
+            }
+
+            float most = MaxJointTurn * _h;
+            foreach (int j in limb.Chain)
+            {
+                if (_rig.JointTurn(j, trial, before) > most)
+                {
+                    if (!kept)
+                    {
+                        Array.Copy(trial, _held, trial.Length);
+                        kept = true;
+                    }
+
+                    Array.Copy(seed, trial, trial.Length);
+                    return false;
+                }
+            }
+
+            return true;
+        }
+
+        /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
         /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
         /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
@@ -3353,8 +3407,18 @@ internal sealed class WalkGait
                         // turning or slowing under it), the angles go straight on toward the foothold's.
                         Vector3 p = Curve(s);
                         Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
-                        onCurve = _gait._sole.Flat.Reaches(_roots[i], trial, limb, p, n) || _gait._swingIk.Reaches(_roots[i], trial, limb, p, n)
-                            || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
+
+                        // The sole held flat, else along the curve's normal: the first solve that turns no joint faster
+                        // than MaxJointTurn from the step before, else the first that holds; else the sole left free.
+                        bool kept = false;
+                        onCurve = Smoothly(_gait._sole.Flat, i, trial, q, limb, p, n, ref kept) || Smoothly(_gait._swingIk, i, trial, q, limb, p, n, ref kept);
+                        if (!onCurve && kept)
+                        {
+                            Array.Copy(_held, trial, trial.Length);
+                            onCurve = true;
+                        }
+
+                        onCurve = onCurve || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
                     }
 
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
