@@ -257,48 +257,48 @@ internal sealed class TrunkSampler
 
     private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null, float[]? liftOrder = null)
     {
-        if (facing is not float yawFacing || searchBeyond)
-        {
-            return PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yawOffsets, liftOrder);
-        }
-
-        // A stance placed facing a way (a jump turned to face it, a takeoff moved along walkable ground): remembered.
-        return _placings.GetOrAdd(new Placing(point, tolerance, yawFacing, yawOffsets, liftOrder, canStand), this, static (k, sampler) => k.PlaceWith(sampler));
+        // A request's start or goal (placed again by every request to the same point: agents sent to one spot), or a
+        // stance placed facing a way (a jump turned to face it, a takeoff moved along walkable ground): remembered.
+        return _placings.GetOrAdd(new Placing(point, tolerance, facing, searchBeyond, yawOffsets, liftOrder, canStand), this, static (k, sampler) => k.PlaceWith(sampler));
     }
 
     /// <summary>
-    /// Placements facing a way that each generation of the remembered ones keeps (<see cref="PlaceNear"/>,
+    /// Placements that each generation of the remembered ones keeps (<see cref="PlaceNear"/>,
     /// <see cref="RememberedResults{TKey, TValue}"/>). A placement is a function of what it is asked (the point,
-    /// tolerance, yaws, lifts and the stance check, which <see cref="Query.QuerySettings.CanStand"/> documents as a
-    /// function of the pose), and queries place the same stances again and again (a roadmap jump turned to face its
-    /// way in every query whose path takes it, a repair placing them anew): what is remembered never changes a
-    /// result, only how soon it comes.
+    /// tolerance, facing, yaws, lifts, whether it searches beyond the tolerance and the stance check, which
+    /// <see cref="Query.QuerySettings.CanStand"/> documents as a function of the pose), and queries place the same
+    /// stances again and again (a roadmap jump turned to face its way in every query whose path takes it, a repair
+    /// placing them anew, the start and goal of every request to the same points, which on the rooftops took up to
+    /// 30 ms each where the point has no stance within the tolerance): what is remembered never changes a result,
+    /// only how soon it comes.
     /// </summary>
     private const int RememberedPlacings = 8_192;
 
     private readonly RememberedResults<Placing, EndpointPlacement> _placings = new(RememberedPlacings);
 
-    /// <summary>What a placement facing a way is asked: the point (metres), tolerance, facing (radians), yaw offsets and lifts tried (by content) and the stance check (by delegate equality).</summary>
-    private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float facing, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand) : IEquatable<Placing>
+    /// <summary>What a placement is asked: the point (metres), tolerance, facing (radians, or none), whether it searches beyond the tolerance, yaw offsets and lifts tried (by content) and the stance check (by delegate equality).</summary>
+    private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float? facing, bool searchBeyond, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand) : IEquatable<Placing>
     {
-        private readonly int _hash = HashCode.Combine(point, tolerance, facing, yaws?.Length ?? -1, yaws is { Length: > 0 } ? yaws[^1] : 0f, lifts?.Length ?? -1, lifts is { Length: > 0 } ? lifts[0] : 0f);
+        private readonly int _hash = HashCode.Combine(point, tolerance, facing, searchBeyond, yaws?.Length ?? -1, yaws is { Length: > 0 } ? yaws[^1] : 0f, lifts?.Length ?? -1, lifts is { Length: > 0 } ? lifts[0] : 0f);
 
         public bool Equals(Placing? other) =>
             other is not null && _hash == other._hash && point == other.Point && tolerance == other.Tolerance && facing == other.Facing
-            && Same(yaws, other.Yaws) && Same(lifts, other.Lifts) && Equals(canStand, other.CanStand);
+            && searchBeyond == other.SearchBeyond && Same(yaws, other.Yaws) && Same(lifts, other.Lifts) && Equals(canStand, other.CanStand);
 
         public override bool Equals(object? obj) => Equals(obj as Placing);
 
         public override int GetHashCode() => _hash;
 
         /// <summary>The placement asked, made anew by <paramref name="sampler"/>.</summary>
-        public EndpointPlacement PlaceWith(TrunkSampler sampler) => sampler.PlaceAnew(point, tolerance, canStand, facing, searchBeyond: false, yaws, lifts);
+        public EndpointPlacement PlaceWith(TrunkSampler sampler) => sampler.PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yaws, lifts);
 
         private Vector3 Point => point;
 
         private EndpointTolerance Tolerance => tolerance;
 
-        private float Facing => facing;
+        private float? Facing => facing;
+
+        private bool SearchBeyond => searchBeyond;
 
         private float[]? Yaws => yaws;
 

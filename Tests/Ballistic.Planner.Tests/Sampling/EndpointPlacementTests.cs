@@ -119,6 +119,54 @@ public sealed class EndpointPlacementTests
         Assert.That(fresh.ContactCentre, Is.EqualTo(first.ContactCentre));
     }
 
+    /// <summary>
+    /// A request's start or goal, placed again by every request to the same point (agents sent to one spot), is
+    /// remembered like a stance placed facing a way, per stance check, and is the stance a scene made anew places:
+    /// over a hole, where the search goes beyond the tolerance, and where a stance stands within it. Before, each
+    /// request placed them anew (on the rooftops, up to 30 ms a request for a point with no stance within the tolerance).
+    /// </summary>
+    [Test]
+    public void ARequestsEndIsRememberedPerStanceCheckAndIsTheSameAsOneMadeAnew()
+    {
+        PlanningScene scene = BesideAHole();
+        var tolerance = new EndpointTolerance(0.3f, 0.25f);
+        int asked = 0;
+        bool Counting(PoseEvaluation pose)
+        {
+            asked++;
+            return pose.Contacts.Count >= 2;
+        }
+
+        foreach (Vector3 point in new[] { new Vector3(-3f, 0f, 1f), Vector3.Zero })
+        {
+            asked = 0;
+            EndpointPlacement first = scene.Sampler.Place(point, tolerance, Counting);
+            int once = asked;
+            EndpointPlacement again = scene.Sampler.Place(point, tolerance, Counting);
+            Assert.That(again, Is.SameAs(first), $"{point}: remembered");
+            Assert.That(asked, Is.EqualTo(once), $"{point}: the check is not asked again");
+
+            EndpointPlacement otherCheck = scene.Sampler.Place(point, tolerance, pose => pose.Contacts.Count >= 2 && ++asked > 0);
+            Assert.That(otherCheck, Is.Not.SameAs(first), $"{point}: placed anew for another stance check");
+            Assert.That(otherCheck.Pose?.Pose, Is.EqualTo(first.Pose?.Pose));
+
+            EndpointPlacement fresh = BesideAHole().Sampler.Place(point, tolerance, Counting);
+            Assert.That((fresh.Placed, fresh.Pose?.Pose, fresh.NearestValid, fresh.ContactCentre), Is.EqualTo((first.Placed, first.Pose?.Pose, first.NearestValid, first.ContactCentre)), $"{point}: as placed anew");
+            if (point == Vector3.Zero)
+            {
+                Assert.That(first.Placed, Is.False, "over the hole: nothing within the tolerance");
+                Assert.That(first.NearestValid, Is.Not.Null, "the nearest stance beyond it is found");
+            }
+            else
+            {
+                Assert.That(first.Placed, Is.True, first.Failure("start", tolerance));
+                Assert.That(once, Is.GreaterThan(0), "the check is asked once");
+            }
+
+            Assert.That(scene.Sampler.PlaceFacing(point, tolerance, 0f, Counting), Is.Not.SameAs(first), $"{point}: a stance placed facing a way is another placement");
+        }
+    }
+
     [Test]
     public void APointWithNoStanceWithinToleranceSaysHowFarTheNearestIs()
     {
