@@ -219,6 +219,58 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// A joint that snaps is seen as a player shows the clip (60 frames a second): the frog's hip turned 40° from one
+    /// moment on while it stands (a step), and turned 40° for one displayed frame and back (a flick), each seen as one
+    /// more snap of that joint than the clip as animated has, and named.
+    /// </summary>
+    [Test]
+    public void AJointThatStepsOrFlicksBetweenTwoFramesIsSeenSnapping()
+    {
+        (PlanningScene scene, _, AnimatedPlan plan) = BundledPlans.Plan("pond", "frog", -0.5f, -5.8f, 0.5f, 4.6f);
+        JumpAnimation animation = plan.Animation!;
+        CharacterModel model = animation.Model;
+        RigLimb limb = model.Limbs[0];
+        int dof = limb.ChainDofSpan[0];
+        string joint = model.Rig.Joints[limb.Chain[0]].Name;
+        float end = animation.Duration;
+
+        // The clip as animated, with the DOF turned 0.7 rad (40°) more from `from` to `to` (edges a millisecond wide).
+        JumpAnimation Turned(float from, float to)
+        {
+            AnimationFrame At(float time, float turn)
+            {
+                (RootPose root, float[] angles) = animation.Sample(time);
+                angles[dof] += turn;
+                return new AnimationFrame(time, root, angles);
+            }
+
+            bool Near(float time) => MathF.Abs(time - from) < 2e-3f || MathF.Abs(time - to) < 2e-3f;
+            List<AnimationFrame> frames = [.. animation.Frames.Where(f => !Near(f.Time)).Select(f => f.Time > from && f.Time < to ? At(f.Time, 0.7f) : f)];
+            frames.AddRange([At(from - 1e-3f, 0f), At(from, 0.7f), At(to, 0.7f)]);
+            if (to < end - 1e-3f)
+            {
+                frames.Add(At(to + 1e-3f, 0f));
+            }
+
+            return new JumpAnimation(model, animation.Moves, animation.Stances, [.. frames.OrderBy(f => f.Time)], animation.ContactPhases, animation.Problems, animation.FailedContactPoses, animation.CollidingFrames, animation.LeadIn, animation.LeadOut);
+        }
+
+        int Snapping(AnimatorEye.Look look) => look.Snaps.Seen.Count(s => s.Score > 1f && s.Seen.StartsWith(joint + " ", StringComparison.Ordinal));
+        AnimatorEye.Look Look(JumpAnimation clip) => AnimatorEye.Read(AnimatedGlbWriter.ToBytes(clip), model).Measure(clip, scene);
+
+        AnimatorEye.Look asAnimated = Look(animation);
+        AnimatorEye.Look stepped = Look(Turned(end - 0.4f, end));
+        AnimatorEye.Look flicked = Look(Turned(end - 0.4f, end - 0.4f + (1f / AnimatorEye.DisplayRate)));
+        Assert.Multiple(() =>
+        {
+            Assert.That(Snapping(stepped), Is.EqualTo(Snapping(asAnimated) + 1), stepped.Snaps.ToString());
+            Assert.That(stepped.Snaps.Seen.Any(s => s.Seen.StartsWith(joint + " turns", StringComparison.Ordinal) && s.Seen.Contains("in the frames either side", StringComparison.Ordinal)), Is.True, stepped.Snaps.ToString());
+            Assert.That(Snapping(flicked), Is.EqualTo(Snapping(asAnimated) + 1), flicked.Snaps.ToString());
+            Assert.That(flicked.Snaps.Seen.Any(s => s.Seen.StartsWith(joint + " turns", StringComparison.Ordinal) && s.Seen.Contains("back in the next", StringComparison.Ordinal)), Is.True, flicked.Snaps.ToString());
+        });
+    }
+
+    /// <summary>
     /// A vertex beside a crate's edge, in the plane of the crate's side and 5 cm out from its back, is outside the
     /// crate on every heading 30 m from the origin, where the two faces' distances differ only by rounding (the eye
     /// read a quadruped's thigh 9 cm inside a crate it walked past when the face nearer by a rounding error decided);

@@ -91,6 +91,15 @@ internal sealed class AnimatorEye
     /// <summary>Least fore-and-aft swing (peak to peak, degrees) of an arm about its shoulder while a walk cruises.</summary>
     public const float LeastArmSwing = 20f;
 
+    /// <summary>Frames a second at which a player shows the clip, for <see cref="LeastSnap"/>.</summary>
+    public const float DisplayRate = 60f;
+
+    /// <summary>Least turn (degrees) of a limb joint from one displayed frame to the next that reads as a snap (<see cref="SnapRatio"/>).</summary>
+    public const float LeastSnap = 15f;
+
+    /// <summary>How many times as far as in the displayed frames either side a joint turns in a snap.</summary>
+    public const float SnapRatio = 3f;
+
     /// <summary>Steepest ground (degrees) on which a cruising walk's hip height, bob, arms and cadence are judged.</summary>
     private const float FlatGround = 10f;
 
@@ -402,6 +411,12 @@ internal sealed class AnimatorEye
             }
         }
 
+        /// <summary>Whether the node has a rotation channel.</summary>
+        public bool Rotates => _r is not null;
+
+        /// <summary>The local rotation at clip time <paramref name="time"/>, as <see cref="LocalAt"/> samples it.</summary>
+        public Quaternion RotationAt(float time) => _r is { } rk ? Quaternion.Normalize(Sample(rk, time, Quaternion.Slerp)) : _rotation;
+
         public Matrix4x4 LocalAt(float time)
         {
             if (_rest is Matrix4x4 rest)
@@ -542,6 +557,7 @@ internal sealed class AnimatorEye
         MeasureLegs(animation, level, look);
         MeasureFootholds(animation, look);
         MeasureWalks(animation, level, look);
+        MeasureSnaps(animation, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
         {
             var arc = animation.Arcs[j];
@@ -968,6 +984,136 @@ internal sealed class AnimatorEye
     }
 
     /// <summary>
+    /// No snaps, as a player shows the clip at <see cref="DisplayRate"/> frames a second: no limb joint (its local
+    /// rotation, sampled as glTF interpolates it) turns more than <see cref="LeastSnap"/>° from one displayed frame to
+    /// the next and more than <see cref="SnapRatio"/> times as far as in the frame before and in the frame after (a
+    /// step), nor more than <see cref="LeastSnap"/>° out and as far back in the next frame, ending less than a
+    /// <see cref="SnapRatio"/>th of that from where it was (a flick). A joint moving fast but smoothly (a push-off) is no
+    /// snap; one that jumps between two slow frames, or out and back, is. One measurement per snapping frame of a joint
+    /// (score above 1), or, where none snaps, one for the frame nearest to snapping.
+    /// </summary>
+    private void MeasureSnaps(JumpAnimation animation, Look look)
+    {
+        (float Score, string Seen) nearest = (0f, "no joint turns");
+        int frames = (int)MathF.Floor(animation.Duration * DisplayRate);
+        var shown = new Quaternion[Math.Max(frames, 0) + 1];
+        var turns = new float[Math.Max(frames, 0)];
+        for (int l = 0; l < _limbJoints.Length; l++)
+        {
+            foreach (Node joint in _limbJoints[l])
+            {
+                if (!_tracks.TryGetValue(joint, out Track? track))
+                {
+                    track = new Track(joint, _clip);
+                    _tracks[joint] = track;
+                }
+
+                if (!track.Rotates)
+                {
+                    continue;
+                }
+
+                for (int f = 0; f <= frames; f++)
+                {
+                    shown[f] = track.RotationAt(f / DisplayRate);
+                }
+
+                for (int f = 0; f < frames; f++)
+                {
+                    turns[f] = Between(shown[f + 1], shown[f]);
+                }
+
+                for (int f = 0; f < frames; f++)
+                {
+                    // A step: one frame turning far more than either beside it. A flick: two frames turning out and back.
+                    float around = MathF.Max(f > 0 ? turns[f - 1] : 0f, f + 1 < frames ? turns[f + 1] : 0f);
+                    float step = MathF.Min(turns[f] / LeastSnap, turns[f] / MathF.Max(SnapRatio * around, 1e-6f));
+                    float flick = f + 1 < frames
+                        ? MathF.Min(MathF.Min(turns[f], turns[f + 1]) / LeastSnap, MathF.Min(turns[f], turns[f + 1]) / MathF.Max(SnapRatio * Between(shown[f + 2], shown[f]), 1e-6f))
+                        : 0f;
+                    float score = MathF.Max(step, flick);
+                    if (score > 1f || score > nearest.Score)
+                    {
+                        float time = (f + 1) / DisplayRate;
+                        string how = step >= flick
+                            ? string.Create(CultureInfo.InvariantCulture, $"turns {turns[f]:0.0}° in the frame to {time:0.000} s, at most {around:0.0}° in the frames either side")
+                            : string.Create(CultureInfo.InvariantCulture, $"turns {turns[f]:0.0}° out in the frame to {time:0.000} s and {turns[f + 1]:0.0}° back in the next, ending {Between(shown[f + 2], shown[f]):0.0}° from where it was");
+                        string seen = $"{joint.Name} {how} ({Where(animation, l, time - (1f / DisplayRate), time)})";
+                        if (score > 1f)
+                        {
+                            look.Snaps.Add(score, seen);
+                        }
+                        else
+                        {
+                            nearest = (score, seen);
+                        }
+                    }
+                }
+            }
+        }
+
+        if (look.Snaps.Seen.Count == 0)
+        {
+            look.Snaps.Add(nearest.Score, "no snap; nearest: " + nearest.Seen);
+        }
+    }
+
+    /// <summary>
+    /// Where in <paramref name="animation"/> the frame from <paramref name="from"/> to <paramref name="to"/> (clip
+    /// seconds) lies, for limb <paramref name="limb"/>: in a flight (after its takeoff, before its landing), a walk, or
+    /// on the ground (near a takeoff or landing); and the limb holding a contact, on its ball or free, or letting go or
+    /// taking hold in that frame.
+    /// </summary>
+    private static string Where(JumpAnimation animation, int limb, float from, float to)
+    {
+        string what = "standing";
+        float nearest = float.PositiveInfinity;
+        for (int j = 0; j < animation.Arcs.Count; j++)
+        {
+            float takeoff = animation.JumpStart(j);
+            float landing = takeoff + animation.Arcs[j].FlightTime;
+            if (to > takeoff && from < landing)
+            {
+                nearest = 0f;
+                what = string.Create(CultureInfo.InvariantCulture, $"jump {j + 1}'s flight, {Math.Max(from - takeoff, 0f):0.00} s after takeoff, {Math.Max(landing - to, 0f):0.00} s before landing");
+            }
+            else if (takeoff - to < nearest && to <= takeoff)
+            {
+                nearest = takeoff - to;
+                what = string.Create(CultureInfo.InvariantCulture, $"{nearest:0.00} s before jump {j + 1}'s takeoff");
+            }
+            else if (from - landing < nearest && from >= landing)
+            {
+                nearest = from - landing;
+                what = string.Create(CultureInfo.InvariantCulture, $"{nearest:0.00} s after jump {j + 1}'s landing");
+            }
+        }
+
+        int move = animation.MoveIndex(to);
+        if (nearest > 0f && move < animation.Moves.Count && animation.Moves[move] is Walk && animation.MoveStart(move) <= from && to <= animation.MoveEnd(move))
+        {
+            what = $"walk (move {move + 1})";
+        }
+
+        string state = "free";
+        foreach (ContactPhase phase in animation.ContactPhases)
+        {
+            if (phase.Limb != limb || phase.To < from - 1e-3f || phase.From > to + 1e-3f)
+            {
+                continue;
+            }
+
+            state = phase.From > from + 1e-3f ? "taking hold" : phase.To < to - 1e-3f ? "letting go" : phase.OnBall ? "on its ball" : "held";
+            if (state is "taking hold" or "letting go")
+            {
+                break;
+            }
+        }
+
+        return $"{what}; its limb {state}";
+    }
+
+    /// <summary>
     /// An upright walk at a natural cadence, judged while each walk cruises (after it turns and speeds up, before it
     /// slows down; every 1/60 s): on level ground (<see cref="LevelGroundAt"/>: not on stairs or slopes; <see cref="LevelFooting"/>: the feet then held level with each other), the median
     /// height of the hips above the contacts of the feet then held at least <see cref="UprightHips"/> L; the hips
@@ -1330,6 +1476,8 @@ internal sealed class AnimatorEye
         public Criterion Cadence { get; } = new(higherPasses: true);
 
         public Criterion ArmSwing { get; } = new(higherPasses: true);
+
+        public Criterion Snaps { get; } = new(higherPasses: false);
 
         public IEnumerable<(string Name, Criterion Criterion)> All =>
             [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside), ("upright", Upright), ("bob", Bob), ("cadence", Cadence), ("arm swing", ArmSwing)];
