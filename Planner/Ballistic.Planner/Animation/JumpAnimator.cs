@@ -342,15 +342,15 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                     // Landing flows into the next crouch: sink, hold as long as the ground time asks, drive up.
                     float sink = StanceDip.SinkTime(landing, landingSpeed);
                     float push = StanceDip.PushTime(landing, next.Arc.TakeoffVelocity.Length());
-                    clock = Dip(landing, clock, sink, s => 1f - ((1f - s) * (1f - s)), frames, frameRate);
+                    clock = Dip(landing, clock, sink, StanceDip.Sink(landing, sink, jump.Arc.LandingVelocity), frames, frameRate);
                     float hold = MathF.Max(StanceDip.MinGroundTime - sink - push, 0.25f * sink);
                     clock = Dip(landing, clock, hold, _ => 1f, frames, frameRate);
-                    clock = Dip(landing, clock, push, s => 1f - (s * s), frames, frameRate);
+                    clock = Dip(landing, clock, push, StanceDip.Push(landing, push, next.Arc.TakeoffVelocity), frames, frameRate);
                 }
                 else
                 {
                     // Absorb, stand, step to the takeoff contacts, crouch on them, drive up.
-                    clock = Absorb(landing, landingSpeed, clock, frames, frameRate);
+                    clock = Absorb(landing, jump.Arc.LandingVelocity, clock, frames, frameRate);
                     Stance stance = Restep(m + 1, jump.Arc.Landing, clip.Landing, following.Takeoff, frameRate);
                     problems.AddRange(stance.Problems);
                     foreach ((int limb, float start, LimbContact? step) in stance.Steps)
@@ -380,7 +380,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             else
             {
                 // A walk follows, or the clip ends: the landing absorbed and the body standing again.
-                clock = Absorb(landing, landingSpeed, clock, frames, frameRate);
+                clock = Absorb(landing, jump.Arc.LandingVelocity, clock, frames, frameRate);
                 if (m + 1 < moves.Count)
                 {
                     stances.Add(clock - landed);
@@ -557,16 +557,18 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             clock = Dip(table, clock, least - settle - push, _ => 1f, frames, frameRate);
         }
 
-        return Dip(table, clock, push, s => 1f - (s * s), frames, frameRate) - from;
+        return Dip(table, clock, push, StanceDip.Push(table, push, arc.TakeoffVelocity), frames, frameRate) - from;
     }
 
     /// <summary>
-    /// A landing at <paramref name="speed"/> m/s absorbed on <paramref name="table"/>'s contact pose: the body keeps
-    /// sinking (decelerating) to its dip, then rises back to the contact pose. Returns the clip time it ends at.
+    /// A landing at <paramref name="velocity"/> (m/s, world) absorbed on <paramref name="table"/>'s contact pose: the
+    /// body keeps sinking (at first as fast as it came down, <see cref="StanceDip.Sink"/>, then decelerating) to its dip,
+    /// then rises back to the contact pose. Returns the clip time it ends at.
     /// </summary>
-    private static float Absorb(StanceDip.Table table, float speed, float from, List<AnimationFrame> frames, float frameRate)
+    private static float Absorb(StanceDip.Table table, Vector3 velocity, float from, List<AnimationFrame> frames, float frameRate)
     {
-        float clock = Dip(table, from, StanceDip.SinkTime(table, speed), s => 1f - ((1f - s) * (1f - s)), frames, frameRate);
+        float sink = StanceDip.SinkTime(table, velocity.Length());
+        float clock = Dip(table, from, sink, StanceDip.Sink(table, sink, velocity), frames, frameRate);
         return Dip(table, clock, StanceDip.RiseTime(table), s => 1f - (s * s * (3f - (2f * s))), frames, frameRate);
     }
 

@@ -327,6 +327,43 @@ internal sealed class StanceDip
     /// <summary>Seconds for the body to drive up from its crouch to the takeoff pose at <paramref name="speed"/> m/s.</summary>
     public static float PushTime(Table table, float speed) => Between(2.5f * table.Depth / MathF.Max(speed, 0.5f), 0.08f, 0.45f * Pendulum(table));
 
+    /// <summary>
+    /// The drive up out of <paramref name="table"/>'s dip over <paramref name="duration"/> seconds into a takeoff at
+    /// <paramref name="velocity"/> (m/s, world): the depth's share (1 at the dip's bottom, 0 at the contact pose) at a
+    /// share of the time, from rest at the bottom to rising along the dip's up axis as fast as the takeoff does (its
+    /// velocity's component along that axis, at most <see cref="MostDipRate"/> times the mean rate; none for a takeoff
+    /// going down), so that the legs extend on into the flight without a jolt. A cubic: at twice the mean rate (the
+    /// push before 2026-12-05, whatever the takeoff) it accelerates evenly.
+    /// </summary>
+    public static Func<float, float> Push(Table table, float duration, Vector3 velocity)
+    {
+        float k = Rate(table, duration, Vector3.Dot(velocity, table.Up));
+        return s => 1f + ((k - 3f) * s * s) + ((2f - k) * s * s * s);
+    }
+
+    /// <summary>
+    /// The sink into <paramref name="table"/>'s dip over <paramref name="duration"/> seconds after a landing at
+    /// <paramref name="velocity"/> (m/s, world): the depth's share (0 at the contact pose, 1 at the dip's bottom) at a
+    /// share of the time, sinking at first as fast as the landing comes down along the dip's up axis (at most
+    /// <see cref="MostDipRate"/> times the mean rate), coming to rest at the bottom: <see cref="Push"/> played backwards.
+    /// </summary>
+    public static Func<float, float> Sink(Table table, float duration, Vector3 velocity)
+    {
+        Func<float, float> push = Push(table, duration, -velocity);
+        return s => push(1f - s);
+    }
+
+    /// <summary>
+    /// Most a push ends (a sink starts) at, in times the dip's mean rate (depth over duration). Up to 3 the depth
+    /// changes one way only; at 3 the push's drive would peak in its last instant, and the spider's free legs, still
+    /// folding with the depth, swept a foot bone into the debris between two frames.
+    /// </summary>
+    internal const float MostDipRate = 2.5f;
+
+    /// <summary>A speed (m/s) along the dip's up axis over the mean rate of a dip of <paramref name="duration"/> seconds, within [0, <see cref="MostDipRate"/>].</summary>
+    private static float Rate(Table table, float duration, float speed) =>
+        table.Depth > 0f && duration > 0f ? Math.Clamp(speed * duration / table.Depth, 0f, MostDipRate) : 2f;
+
     /// <summary>Seconds for the body to rise back to its stance after absorbing, or to settle into a crouch from standing.</summary>
     public static float RiseTime(Table table) => MathF.Max(0.15f, 0.8f * Pendulum(table));
 
