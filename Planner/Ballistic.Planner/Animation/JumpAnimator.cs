@@ -1336,10 +1336,25 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         RigLimb limb = Model.Limbs[l];
         var curve = new SwingCurve(up.Position, down.Position, Vector3.Normalize(up.Normal + down.Normal), MathF.Min(_liftHeight, 0.5f * Vector3.Distance(up.Position, down.Position)));
         float[] q = (float[])leaving.Clone();
+        float[]? arriving = held.GetValueOrDefault(to);
         var across = new Dictionary<int, float[]>();
         for (int i = from + 1; i < to; i++)
         {
             float u = (i - from) / (float)(to - from);
+
+            // Each solve starts from the step before, drawn toward the landing's held angles by a smoothstep's share of
+            // what is left, so that the leg arrives in the landing's own solution, not another one holding the same
+            // point (an ant's foreleg stepping across a hop took its landing pose 38° away in the frame of landing).
+            if (arriving is not null)
+            {
+                float before = Easing.Smooth((i - 1 - from) / (float)(to - from));
+                float pull = before >= 1f - 1e-6f ? 1f : Math.Clamp((Easing.Smooth(u) - before) / (1f - before), 0f, 1f);
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    q[d] = float.Lerp(q[d], arriving[d], pull);
+                }
+            }
+
             Vector3 point = curve.At(u);
             Vector3 normal = -Vector3.Normalize(Vector3.Lerp(up.Normal, down.Normal, Easing.Smooth(u)));
             RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);

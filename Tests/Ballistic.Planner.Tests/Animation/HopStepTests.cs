@@ -96,4 +96,34 @@ public sealed class HopStepTests
 
         Assert.That(across, Is.GreaterThan(0), "some leg holds its contact into the flight and steps across to its landing");
     }
+
+    /// <summary>
+    /// A leg stepping across a jump arrives in the landing's own pose: the ant crossing the curved terrain (a level in
+    /// other tools' shape, the sweep's first request there) holds its left foreleg's takeoff contact to the apex of its
+    /// sixth jump and steps it across to the landing contact. The IK along the lifted curve, each solve from the step
+    /// before, ended on another solution holding the same point, and the leg took the landing's pose in the frame of
+    /// landing (its tarsus 38.5°, its last joint 38.6°); each solve is now drawn toward the landing's angles as the step
+    /// ends, and in the last displayed frame (1/60 s) before it takes hold no joint of the leg turns more than a
+    /// snap's 15°.
+    /// </summary>
+    [Test]
+    public void AnAntsForelegSteppingAcrossArrivesInItsLandingPose()
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("curved");
+        Sweep.Planned planned = Sweep.Plan(Sweep.Prepare("curved", level, "ant"), requests[0].From, requests[0].To);
+        Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
+        JumpAnimation animation = planned.Plan.Animation!;
+        CharacterModel model = animation.Model;
+        Assert.That(animation.Arcs, Has.Count.GreaterThan(5));
+        float landing = animation.JumpStart(5) + animation.Arcs[5].FlightTime;
+        int foreleg = model.Limbs.ToList().FindIndex(l => l.Name == "left_front");
+        ContactPhase taken = animation.ContactPhases.Single(p => p.Limb == foreleg && MathF.Abs(p.From - landing) < 2e-3f);
+        ContactPhase left = animation.ContactPhases.Where(p => p.Limb == foreleg && p.To < taken.From).MaxBy(p => p.To);
+        Assert.That(left.To, Is.GreaterThan(animation.JumpStart(5) + 0.1f), "the foreleg holds its takeoff contact into the flight: it steps across");
+
+        (_, float[] arriving) = animation.Sample(taken.From - (1f / AnimatorEye.DisplayRate));
+        (_, float[] holding) = animation.Sample(taken.From);
+        float turn = model.Limbs[foreleg].Chain.Max(j => model.Rig.JointTurn(j, arriving, holding)) * 180f / MathF.PI;
+        Assert.That(turn, Is.LessThanOrEqualTo(AnimatorEye.LeastSnap), $"the foreleg turns {turn:0.0}° in the frame before it takes hold at {taken.From:0.000} s");
+    }
 }
