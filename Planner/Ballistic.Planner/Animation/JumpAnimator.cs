@@ -1343,12 +1343,12 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             float u = (i - from) / (float)(to - from);
 
             // Each solve starts from the step before, drawn toward the landing's held angles by a smoothstep's share of
-            // what is left, so that the leg arrives in the landing's own solution, not another one holding the same
-            // point (an ant's foreleg stepping across a hop took its landing pose 38° away in the frame of landing).
+            // what is left (as a walk's swing is drawn toward its foothold's), so that the leg arrives in the landing's
+            // own solution, not another one holding the same point (an ant's foreleg stepping across a hop took its
+            // landing pose 38° away in the frame of landing).
             if (arriving is not null)
             {
-                float before = Easing.Smooth((i - 1 - from) / (float)(to - from));
-                float pull = before >= 1f - 1e-6f ? 1f : Math.Clamp((Easing.Smooth(u) - before) / (1f - before), 0f, 1f);
+                float pull = Easing.Pull(i - from, to - from);
                 foreach (int d in limb.ChainDofSpan)
                 {
                     q[d] = float.Lerp(q[d], arriving[d], pull);

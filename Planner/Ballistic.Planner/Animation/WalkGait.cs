@@ -3130,7 +3130,7 @@ internal sealed class WalkGait
             for (int i = hold.From; i <= hold.To; i++)
             {
                 float[] trial = _angles[i];
-                float w = hold.Settle ? Pull(i - hold.From, hold.To - hold.From) : 0f;
+                float w = hold.Settle ? Easing.Pull(i - hold.From, hold.To - hold.From) : 0f;
                 foreach (int d in limb.ChainDofSpan)
                 {
                     trial[d] = float.Lerp(q[d], _end.Angles[d], w);
@@ -3197,21 +3197,6 @@ internal sealed class WalkGait
             }
 
             return false;
-        }
-
-        /// <summary>
-        /// The share of what is left of the way to a target pose to move at step <paramref name="k"/> of
-        /// <paramref name="count"/>, so that a pose moved by these shares alone follows a smoothstep from its start to the target.
-        /// </summary>
-        private static float Pull(int k, int count)
-        {
-            if (k <= 0 || count <= 0)
-            {
-                return 0f;
-            }
-
-            float before = Smooth((k - 1) / (float)count);
-            return before >= 1f - 1e-6f ? 1f : Math.Clamp((Smooth(k / (float)count) - before) / (1f - before), 0f, 1f);
         }
 
         /// <summary>
@@ -3371,7 +3356,7 @@ internal sealed class WalkGait
                     float s = Warp((i - a) / (float)(b - a), slow);
                     float[] trial = keys[i - a];
                     _angles[i].CopyTo(trial, 0);
-                    float w = Pull(i - a, b - a);
+                    float w = Easing.Pull(i - a, b - a);
                     foreach (int d in limb.ChainDofSpan)
                     {
                         trial[d] = float.Lerp(q[d], endAngles[d], w);

@@ -357,14 +357,20 @@ internal sealed class AnimatorEye
     /// </summary>
     private Matrix4x4 WorldAt(Node node, float time)
     {
+        Matrix4x4 local = TrackOf(node).LocalAt(time);
+        return node.VisualParent is Node parent ? local * WorldAt(parent, time) : local;
+    }
+
+    /// <summary><paramref name="node"/>'s channels as keys, read from the clip once.</summary>
+    private Track TrackOf(Node node)
+    {
         if (!_tracks.TryGetValue(node, out Track? track))
         {
             track = new Track(node, _clip);
             _tracks[node] = track;
         }
 
-        Matrix4x4 local = track.LocalAt(time);
-        return node.VisualParent is Node parent ? local * WorldAt(parent, time) : local;
+        return track;
     }
 
     /// <summary>
@@ -1002,12 +1008,7 @@ internal sealed class AnimatorEye
         {
             foreach (Node joint in _limbJoints[l])
             {
-                if (!_tracks.TryGetValue(joint, out Track? track))
-                {
-                    track = new Track(joint, _clip);
-                    _tracks[joint] = track;
-                }
-
+                Track track = TrackOf(joint);
                 if (!track.Rotates)
                 {
                     continue;
