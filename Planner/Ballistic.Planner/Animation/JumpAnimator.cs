@@ -51,6 +51,15 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
     /// <summary>Contact phases are stepped this many times finer than the frame rate, so that held contacts do not slide between frames.</summary>
     private const int ContactSubsteps = 4;
 
+    /// <summary>
+    /// Fastest (radians per second, 900°/s) a limb's joint turns while it holds its takeoff contact into the flight or
+    /// takes its landing contact before it (<see cref="Hold"/>): a soft landing folds the knee 60–90° over 0.2–0.5 s,
+    /// about twice that at its fastest. A limb that would turn faster to stay on its contact (the body already moving
+    /// at the flight's speed) lets go (takes hold) there instead: held on, it turned as far as a frame's 15° in a
+    /// hundredth of a second.
+    /// </summary>
+    internal const float MostHeldTurnRate = 900f * MathF.PI / 180f;
+
     /// <summary>Earliest and latest share of the flight at which its apex pose is keyed.</summary>
     private const float ApexKeyShare = 0.3f;
 
@@ -1372,7 +1381,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
     /// <summary>
     /// Records limb <paramref name="l"/>'s angles at fine step <paramref name="start"/> and onward by
     /// <paramref name="direction"/> while it holds its contact in <paramref name="config"/> by IK (with no bone through
-    /// the level), up to step <paramref name="limit"/>. Returns the last step where it held (the start for a free limb).
+    /// the level) and no joint of it turns faster than <see cref="MostHeldTurnRate"/>, up to step
+    /// <paramref name="limit"/>. Returns the last step where it held (the start for a free limb).
     /// </summary>
     private int Hold(BallisticArc arc, ContactConfiguration config, int l, int start, int direction, int limit, Dictionary<int, float[]> held, float h, int steps)
     {
@@ -1388,11 +1398,12 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
         int last = start;
+        float mostTurn = MostHeldTurnRate * h;
         for (int i = start + direction; direction > 0 ? i <= limit : i >= limit; i += direction)
         {
             RootPose root = arc.PoseAt(i >= steps ? arc.FlightTime : i * h);
             IkResult result = _holdIk.Solve(root, q, limb, contact.Position, -contact.Normal);
-            if (!result.Success)
+            if (!result.Success || !TurnsWithin(held[last], q, limb, mostTurn))
             {
                 break;
             }
@@ -1408,5 +1419,19 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         return last;
+    }
+
+    /// <summary>True when no angle of <paramref name="limb"/>'s chain differs between <paramref name="from"/> and <paramref name="to"/> by more than <paramref name="most"/> (radians).</summary>
+    private static bool TurnsWithin(float[] from, float[] to, RigLimb limb, float most)
+    {
+        foreach (int d in limb.ChainDofSpan)
+        {
+            if (MathF.Abs(to[d] - from[d]) > most)
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 }

@@ -86,8 +86,23 @@ public sealed class HopStepTests
                     (lowest, highest) = (MathF.Min(lowest, y), MathF.Max(highest, y));
                 }
 
+                // While it holds a contact in the air, it turns no faster than a landing folds a knee.
+                float fastest = 0f;
+                foreach (ContactPhase held in (ContactPhase[])[before, after])
+                {
+                    AnimationFrame[] frames = [.. animation.Frames.Where(f => f.Time >= MathF.Max(held.From, takeoff) - 1e-5f && f.Time <= MathF.Min(held.To, landing) + 1e-5f)];
+                    for (int f = 1; f < frames.Length; f++)
+                    {
+                        foreach (int d in limb.ChainDofSpan)
+                        {
+                            fastest = MathF.Max(fastest, MathF.Abs(frames[f].Angles[d] - frames[f - 1].Angles[d]) / (frames[f].Time - frames[f - 1].Time));
+                        }
+                    }
+                }
+
                 Assert.Multiple(() =>
                 {
+                    Assert.That(fastest, Is.LessThanOrEqualTo(JumpAnimator.MostHeldTurnRate * 1.001f), $"{limb.Name} turns {fastest * 180f / MathF.PI:0}°/s holding a contact in the air");
                     Assert.That(lowest, Is.GreaterThanOrEqualTo(-0.002f), $"{limb.Name}'s effector stays on or above the floor from {before.To:0.000} to {after.From:0.000} s");
                     Assert.That(highest, Is.GreaterThanOrEqualTo(MathF.Min(0.01f, Vector3.Distance(before.Position, after.Position) / 3f)), $"{limb.Name} is lifted as it steps across");
                 });
