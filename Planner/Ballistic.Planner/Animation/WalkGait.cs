@@ -214,6 +214,18 @@ internal sealed class WalkGait
     /// </summary>
     public const float MaxJointTurn = 20f * MathF.PI;
 
+    /// <summary>
+    /// A swinging leg's solve that turns a joint faster than this (radians per second, 900°/s) and more than
+    /// <see cref="SwingTurnRatio"/> times as fast as the fine step before has jumped too (<see cref="MaxJointTurn"/>):
+    /// a hip whose abduction reached its limit as the foot left the ground turned its roll 18° in two fine steps, 23° in a
+    /// displayed frame between frames of 2°, which the eye sees snap. Turning faster but accelerating no more sharply
+    /// (a swing under way) is no jump.
+    /// </summary>
+    private const float SwingTurnFloor = 5f * MathF.PI;
+
+    /// <summary>How many times faster than in the fine step before a swinging leg's joint may turn beyond <see cref="SwingTurnFloor"/>: the eye's ratio for a snap (three).</summary>
+    private const float SwingTurnRatio = 3f;
+
     /// <summary>Fine steps per frame interval on which the feet are solved; each becomes a frame.</summary>
     public const int Substeps = 4;
 
@@ -3245,11 +3257,12 @@ internal sealed class WalkGait
         /// Whether <paramref name="ik"/> holds <paramref name="limb"/>'s effector at <paramref name="point"/>, its sole
         /// along <paramref name="normal"/>, at fine step <paramref name="i"/> from <paramref name="trial"/>, with no
         /// joint of the chain turning faster than <see cref="MaxJointTurn"/> from <paramref name="before"/> (the fine
-        /// step before): true leaves the angles solved in <paramref name="trial"/>, false leaves it as it was; the first
+        /// step before), nor faster than <see cref="SwingTurnFloor"/> and <see cref="SwingTurnRatio"/> times its turn
+        /// from <paramref name="earlier"/> (the fine step before that, when the swing has one) to <paramref name="before"/>: true leaves the angles solved in <paramref name="trial"/>, false leaves it as it was; the first
         /// solve that holds the foot but turns a joint faster is kept in <see cref="_held"/> (<paramref name="kept"/>
         /// set), to be taken when no solve holds smoothly.
         /// </summary>
-        private bool Smoothly(LimbIk ik, int i, float[] trial, float[] before, RigLimb limb, Vector3 point, Vector3 normal, ref bool kept)
+        private bool Smoothly(LimbIk ik, int i, float[] trial, float[] before, float[]? earlier, RigLimb limb, Vector3 point, Vector3 normal, ref bool kept)
         {
             float[] seed = _seed;
             Array.Copy(trial, seed, trial.Length);
@@ -3259,9 +3272,11 @@ internal sealed class WalkGait
             }
 
             float most = MaxJointTurn * _h;
+            float floor = SwingTurnFloor * _h;
             foreach (int j in limb.Chain)
             {
-                if (_rig.JointTurn(j, trial, before) > most)
+                float turn = _rig.JointTurn(j, trial, before);
+                if (turn > most || (earlier is not null && turn > floor && turn > SwingTurnRatio * _rig.JointTurn(j, before, earlier)))
                 {
                     if (!kept)
                     {
@@ -3396,7 +3411,8 @@ internal sealed class WalkGait
                         // The sole held flat, else along the curve's normal: the first solve that turns no joint faster
                         // than MaxJointTurn from the step before, else the first that holds; else the sole left free.
                         bool kept = false;
-                        onCurve = Smoothly(_gait._sole.Flat, i, trial, q, limb, p, n, ref kept) || Smoothly(_gait._swingIk, i, trial, q, limb, p, n, ref kept);
+                        float[]? earlier = i - a >= 2 ? keys[i - a - 2] : null;
+                        onCurve = Smoothly(_gait._sole.Flat, i, trial, q, earlier, limb, p, n, ref kept) || Smoothly(_gait._swingIk, i, trial, q, earlier, limb, p, n, ref kept);
                         if (!onCurve && kept)
                         {
                             Array.Copy(_held, trial, trial.Length);
