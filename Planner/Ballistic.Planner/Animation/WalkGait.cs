@@ -3293,6 +3293,82 @@ internal sealed class WalkGait
         }
 
         /// <summary>
+        /// Where a swinging leg's only solve at fine step <paramref name="i"/> (<paramref name="jumped"/>) turns a joint
+        /// past <see cref="MaxJointTurn"/>, or suddenly faster (<see cref="SwingTurnFloor"/>, <see cref="SwingTurnRatio"/>;
+        /// the leg reaching a joint's limit along its curve: a panda's upper arm at 90°, its hand then turning 42° in
+        /// 1/240 s), the <see cref="EaseSteps"/> fine steps before it are solved again on
+        /// the curve, each from its own angles drawn toward <paramref name="jumped"/> by its share of the way, so that the
+        /// leg changes solution over a displayed frame instead of between two fine steps. Kept only when every one of
+        /// them holds the curve (<paramref name="point"/>, <paramref name="normal"/>: the sole's normal there), clear of
+        /// the level at and between the steps, and no joint then turns even half as far in a fine step as in the jump;
+        /// else the steps stay as they were. <paramref name="keys"/> holds the swing's angles from its first fine step
+        /// <paramref name="a"/> on.
+        /// </summary>
+        private void EaseIntoJump(RigLimb limb, int i, int a, float[][] keys, float[] jumped, Func<int, Vector3> point, Func<int, Vector3> normal)
+        {
+            // The step before the eased ones, not the lift-off's own (its contact is checked apart).
+            if (i - a <= EaseSteps + 1)
+            {
+                return;
+            }
+
+            float MaxTurn(float[] x, float[] y)
+            {
+                float m = 0f;
+                foreach (int j in limb.Chain)
+                {
+                    m = MathF.Max(m, _rig.JointTurn(j, x, y));
+                }
+
+                return m;
+            }
+
+            float before = MaxTurn(keys[i - a - 1], jumped);
+            var solved = new float[EaseSteps][];
+            float[] previous = keys[i - a - EaseSteps - 1];
+            float worst = 0f;
+            for (int m = 1; m <= EaseSteps; m++)
+            {
+                int j = i - EaseSteps - 1 + m;
+                float[] attempt = (float[])keys[j - a].Clone();
+                float share = m / (float)(EaseSteps + 1);
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    attempt[d] = float.Lerp(keys[j - a][d], jumped[d], share);
+                }
+
+                if (!_gait._sole.Flat.Reaches(_roots[j], attempt, limb, point(j), normal(j)) && !_gait._swingIk.Reaches(_roots[j], attempt, limb, point(j), normal(j)))
+                {
+                    return;
+                }
+
+                _rig.Solve(_roots[j], attempt, _positions, _rotations);
+                if (_gait._collision.LimbCollides(limb, _positions, _rotations, null) || MidwayCollides(limb, j, previous, attempt, null))
+                {
+                    return;
+                }
+
+                worst = MathF.Max(worst, MaxTurn(previous, attempt));
+                previous = attempt;
+                solved[m - 1] = attempt;
+            }
+
+            worst = MathF.Max(worst, MaxTurn(previous, jumped));
+            if (worst >= 0.5f * before || MidwayCollides(limb, i, previous, jumped, null))
+            {
+                return;
+            }
+
+            for (int m = 1; m <= EaseSteps; m++)
+            {
+                Array.Copy(solved[m - 1], keys[i - EaseSteps - 1 + m - a], jumped.Length);
+            }
+        }
+
+        /// <summary>Fine steps over which a swinging leg eases into a solve that jumps (<see cref="EaseIntoJump"/>): one displayed frame's.</summary>
+        private const int EaseSteps = Substeps;
+
+        /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
         /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
         /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
@@ -3409,7 +3485,8 @@ internal sealed class WalkGait
                         Vector3 n = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(s)));
 
                         // The sole held flat, else along the curve's normal: the first solve that turns no joint faster
-                        // than MaxJointTurn from the step before, else the first that holds; else the sole left free.
+                        // than MaxJointTurn from the step before (nor suddenly faster), else the first that holds, eased
+                        // into over the frame before where the leg can (EaseIntoJump); else the sole left free.
                         bool kept = false;
                         float[]? earlier = i - a >= 2 ? keys[i - a - 2] : null;
                         onCurve = Smoothly(_gait._sole.Flat, i, trial, q, earlier, limb, p, n, ref kept) || Smoothly(_gait._swingIk, i, trial, q, earlier, limb, p, n, ref kept);
@@ -3417,6 +3494,7 @@ internal sealed class WalkGait
                         {
                             Array.Copy(_held, trial, trial.Length);
                             onCurve = true;
+                            EaseIntoJump(limb, i, a, keys, trial, j => Curve(Warp((j - a) / (float)(b - a), slow)), j => Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(Warp((j - a) / (float)(b - a), slow)))));
                         }
 
                         onCurve = onCurve || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);

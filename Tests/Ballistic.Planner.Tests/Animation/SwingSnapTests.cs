@@ -12,10 +12,18 @@ namespace Ballistic.Planner.Tests.Animation;
 /// left the ground, turned its hip's abduction onto its limit and its roll 18° in two fine steps, 23° in a displayed
 /// frame between frames of 2°. A solve that turns a joint faster than 900°/s and three times as fast as the fine step
 /// before is now passed over like one past the absolute bound, for the looser sole, then for the solve that holds.
+/// Where only a solve past the absolute bound holds the curve (a leg reaching a joint's limit), the leg eases into it
+/// over the displayed frame before (<see cref="WalkGait"/>'s swing).
 /// </summary>
 [Category("EndToEnd")]
 public sealed class SwingSnapTests
 {
+    /// <summary>Where the foreign rig's files are written (removed when the fixture ends).</summary>
+    private static readonly string RigFolder = RigFolders.For("swing-snap");
+
+    [OneTimeTearDown]
+    public void RemoveTheRigFiles() => RigFolders.Remove(RigFolder);
+
     [Test]
     public void ALegSwingingAsTheSkeletonTurnsInPlaceDoesNotSnap()
     {
@@ -26,6 +34,23 @@ public sealed class SwingSnapTests
 
         // Swinging legs in its walks, as an importer plays the GLB at 60 frames a second (before: 7 frames, every
         // one a hip, 16–23° each).
+        string[] swinging = [.. look.Snaps.Seen.Where(s => s.Score > 1f && s.Seen.Contains("(walk", StringComparison.Ordinal) && s.Seen.EndsWith("its limb free)", StringComparison.Ordinal)).Select(s => s.Seen)];
+        Assert.That(swinging, Is.Empty, string.Join(Environment.NewLine, swinging));
+    }
+
+    /// <summary>
+    /// The Rigify-style panda (a rig in another tool's shape, foot IK helpers, modelled mid-stride) walking through the
+    /// doorway level's door (the sweep's request 1): its right hind leg reached a joint's limit along its swing, and
+    /// the only solve holding the curve turned its thigh past the gait's 15° a fine step, 43.5° in a displayed frame
+    /// between frames of 5.6°. The leg now changes solution over the frame before: no swinging limb of its walks snaps.
+    /// </summary>
+    [Test]
+    public void APandasLegReachingAJointLimitInItsSwingDoesNotSnap()
+    {
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("doorway", "panda", RigFolder);
+        Sweep.Planned planned = Sweep.Plan(setup, requests[1].From, requests[1].To);
+        Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
+        AnimatorEye.Look look = planned.Report.Look!;
         string[] swinging = [.. look.Snaps.Seen.Where(s => s.Score > 1f && s.Seen.Contains("(walk", StringComparison.Ordinal) && s.Seen.EndsWith("its limb free)", StringComparison.Ordinal)).Select(s => s.Seen)];
         Assert.That(swinging, Is.Empty, string.Join(Environment.NewLine, swinging));
     }
