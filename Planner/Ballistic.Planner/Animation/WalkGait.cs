@@ -3174,6 +3174,11 @@ internal sealed class WalkGait
                     }
                 }
 
+                if (!slipped && ball is null && i - hold.From > EaseSteps + 1)
+                {
+                    EaseIntoHeldJump(limb, hold, i);
+                }
+
                 _rig.Solve(_roots[i], trial, _positions, _rotations);
                 if (_gait._collision.LimbCollides(limb, _positions, _rotations, hold.Point))
                 {
@@ -3182,6 +3187,78 @@ internal sealed class WalkGait
                 }
 
                 Array.Copy(trial, q, q.Length);
+            }
+        }
+
+        /// <summary>
+        /// Where a held foot's solve at fine step <paramref name="i"/> (in <see cref="_angles"/>) turns a joint past
+        /// <see cref="MaxJointTurn"/>, or suddenly faster (<see cref="SwingTurnFloor"/>, <see cref="SwingTurnRatio"/>),
+        /// the leg having gone over to another solution holding the same foothold (a user's human rig's hip twisting
+        /// as its trunk turns over the planted foot), the <see cref="EaseSteps"/> fine steps before it are solved again
+        /// holding the foot flat, each from its own angles drawn toward the new solution by its share of the way, so
+        /// that the leg changes solution over a displayed frame instead of between two fine steps. Kept only when every
+        /// one of them holds the foothold flat (not rolled onto the ball), clear of the level at and between the steps,
+        /// and no joint then turns even half as far in a fine step as in the jump; else the steps stay as they were.
+        /// </summary>
+        private void EaseIntoHeldJump(RigLimb limb, Holding hold, int i)
+        {
+            float[] jumped = _angles[i];
+            float jump = 0f;
+            bool sudden = false;
+            foreach (int j in limb.Chain)
+            {
+                float turn = _rig.JointTurn(j, _angles[i - 1], jumped);
+                jump = MathF.Max(jump, turn);
+                sudden |= turn > MaxJointTurn * _h || (turn > SwingTurnFloor * _h && turn > SwingTurnRatio * _rig.JointTurn(j, _angles[i - 2], _angles[i - 1]));
+            }
+
+            if (!sudden)
+            {
+                return;
+            }
+
+            var solved = new float[EaseSteps][];
+            float[] previous = _angles[i - EaseSteps - 1];
+            float worst = 0f;
+            for (int m = 1; m <= EaseSteps; m++)
+            {
+                int j = i - EaseSteps - 1 + m;
+                float[] attempt = (float[])_angles[j].Clone();
+                float share = m / (float)(EaseSteps + 1);
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    attempt[d] = float.Lerp(_angles[j][d], jumped[d], share);
+                }
+
+                if (!_gait.Hold(_roots[j], attempt, limb, hold.Point, hold.Normal))
+                {
+                    return;
+                }
+
+                _rig.Solve(_roots[j], attempt, _positions, _rotations);
+                if (Vector3.Distance(limb.EffectorPosition(_positions, _rotations), hold.Point) > Touch
+                    || _gait._collision.LimbCollides(limb, _positions, _rotations, hold.Point) || MidwayCollides(limb, j, previous, attempt, hold.Point))
+                {
+                    return;
+                }
+
+                worst = MathF.Max(worst, MostTurn(limb, previous, attempt));
+                previous = attempt;
+                solved[m - 1] = attempt;
+            }
+
+            worst = MathF.Max(worst, MostTurn(limb, previous, jumped));
+            if (worst >= 0.5f * jump || MidwayCollides(limb, i, previous, jumped, hold.Point))
+            {
+                return;
+            }
+
+            for (int m = 1; m <= EaseSteps; m++)
+            {
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    _angles[i - EaseSteps - 1 + m][d] = solved[m - 1][d];
+                }
             }
         }
 
@@ -3312,18 +3389,7 @@ internal sealed class WalkGait
                 return;
             }
 
-            float MaxTurn(float[] x, float[] y)
-            {
-                float m = 0f;
-                foreach (int j in limb.Chain)
-                {
-                    m = MathF.Max(m, _rig.JointTurn(j, x, y));
-                }
-
-                return m;
-            }
-
-            float before = MaxTurn(keys[i - a - 1], jumped);
+            float before = MostTurn(limb, keys[i - a - 1], jumped);
             var solved = new float[EaseSteps][];
             float[] previous = keys[i - a - EaseSteps - 1];
             float worst = 0f;
@@ -3348,12 +3414,12 @@ internal sealed class WalkGait
                     return;
                 }
 
-                worst = MathF.Max(worst, MaxTurn(previous, attempt));
+                worst = MathF.Max(worst, MostTurn(limb, previous, attempt));
                 previous = attempt;
                 solved[m - 1] = attempt;
             }
 
-            worst = MathF.Max(worst, MaxTurn(previous, jumped));
+            worst = MathF.Max(worst, MostTurn(limb, previous, jumped));
             if (worst >= 0.5f * before || MidwayCollides(limb, i, previous, jumped, null))
             {
                 return;
@@ -3365,8 +3431,20 @@ internal sealed class WalkGait
             }
         }
 
-        /// <summary>Fine steps over which a swinging leg eases into a solve that jumps (<see cref="EaseIntoJump"/>): one displayed frame's.</summary>
+        /// <summary>Fine steps over which a leg eases into a solve that jumps (<see cref="EaseIntoJump"/>, <see cref="EaseIntoHeldJump"/>): one displayed frame's.</summary>
         private const int EaseSteps = Substeps;
+
+        /// <summary>The most (radians) any joint of <paramref name="limb"/>'s chain turns from <paramref name="from"/> to <paramref name="to"/>.</summary>
+        private float MostTurn(RigLimb limb, float[] from, float[] to)
+        {
+            float most = 0f;
+            foreach (int j in limb.Chain)
+            {
+                most = MathF.Max(most, _rig.JointTurn(j, from, to));
+            }
+
+            return most;
+        }
 
         /// <summary>
         /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state

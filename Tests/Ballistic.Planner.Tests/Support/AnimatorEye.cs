@@ -1480,6 +1480,10 @@ internal sealed class AnimatorEye
 
         public Criterion Snaps { get; } = new(higherPasses: false);
 
+        /// <summary>The snapping frames seen in walks while the snapping limb is <paramref name="doing"/> ("free", "held", "letting go", …), one line each.</summary>
+        public string[] WalkSnaps(string doing) =>
+            [.. Snaps.Seen.Where(s => s.Score > 1f && s.Seen.Contains("(walk", StringComparison.Ordinal) && s.Seen.EndsWith($"its limb {doing})", StringComparison.Ordinal)).Select(s => s.Seen)];
+
         public IEnumerable<(string Name, Criterion Criterion)> All =>
             [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside), ("upright", Upright), ("bob", Bob), ("cadence", Cadence), ("arm swing", ArmSwing)];
 
