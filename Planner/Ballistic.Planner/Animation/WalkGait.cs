@@ -3191,73 +3191,20 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// Where a held foot's solve at fine step <paramref name="i"/> (in <see cref="_angles"/>) turns a joint past
-        /// <see cref="MaxJointTurn"/>, or suddenly faster (<see cref="SwingTurnFloor"/>, <see cref="SwingTurnRatio"/>),
-        /// the leg having gone over to another solution holding the same foothold (a user's human rig's hip twisting
-        /// as its trunk turns over the planted foot), the <see cref="EaseSteps"/> fine steps before it are solved again
-        /// holding the foot flat, each from its own angles drawn toward the new solution by its share of the way, so
-        /// that the leg changes solution over a displayed frame instead of between two fine steps. Kept only when every
-        /// one of them holds the foothold flat (not rolled onto the ball), clear of the level at and between the steps,
-        /// and no joint then turns even half as far in a fine step as in the jump; else the steps stay as they were.
+        /// Where a held foot's solve at fine step <paramref name="i"/> (in <see cref="_angles"/>) jumps
+        /// (<see cref="Jumps"/>), the leg having gone over to another solution holding the same foothold (a user's human
+        /// rig's hip twisting as its trunk turns over the planted foot), it is eased into (<see cref="EaseInto"/>), the
+        /// foot held flat on its foothold (not rolled onto the ball) at each eased step.
         /// </summary>
         private void EaseIntoHeldJump(RigLimb limb, Holding hold, int i)
         {
             float[] jumped = _angles[i];
-            float jump = 0f;
-            bool sudden = false;
             foreach (int j in limb.Chain)
             {
-                float turn = _rig.JointTurn(j, _angles[i - 1], jumped);
-                jump = MathF.Max(jump, turn);
-                sudden |= turn > MaxJointTurn * _h || (turn > SwingTurnFloor * _h && turn > SwingTurnRatio * _rig.JointTurn(j, _angles[i - 2], _angles[i - 1]));
-            }
-
-            if (!sudden)
-            {
-                return;
-            }
-
-            var solved = new float[EaseSteps][];
-            float[] previous = _angles[i - EaseSteps - 1];
-            float worst = 0f;
-            for (int m = 1; m <= EaseSteps; m++)
-            {
-                int j = i - EaseSteps - 1 + m;
-                float[] attempt = (float[])_angles[j].Clone();
-                float share = m / (float)(EaseSteps + 1);
-                foreach (int d in limb.ChainDofSpan)
+                if (Jumps(j, _rig.JointTurn(j, _angles[i - 1], jumped), _angles[i - 1], _angles[i - 2]))
                 {
-                    attempt[d] = float.Lerp(_angles[j][d], jumped[d], share);
-                }
-
-                if (!_gait.Hold(_roots[j], attempt, limb, hold.Point, hold.Normal))
-                {
+                    EaseInto(limb, i, k => _angles[k], jumped, (k, attempt) => _gait.Hold(_roots[k], attempt, limb, hold.Point, hold.Normal), hold.Point);
                     return;
-                }
-
-                _rig.Solve(_roots[j], attempt, _positions, _rotations);
-                if (Vector3.Distance(limb.EffectorPosition(_positions, _rotations), hold.Point) > Touch
-                    || _gait._collision.LimbCollides(limb, _positions, _rotations, hold.Point) || MidwayCollides(limb, j, previous, attempt, hold.Point))
-                {
-                    return;
-                }
-
-                worst = MathF.Max(worst, MostTurn(limb, previous, attempt));
-                previous = attempt;
-                solved[m - 1] = attempt;
-            }
-
-            worst = MathF.Max(worst, MostTurn(limb, previous, jumped));
-            if (worst >= 0.5f * jump || MidwayCollides(limb, i, previous, jumped, hold.Point))
-            {
-                return;
-            }
-
-            for (int m = 1; m <= EaseSteps; m++)
-            {
-                foreach (int d in limb.ChainDofSpan)
-                {
-                    _angles[i - EaseSteps - 1 + m][d] = solved[m - 1][d];
                 }
             }
         }
@@ -3348,12 +3295,9 @@ internal sealed class WalkGait
                 return false;
             }
 
-            float most = MaxJointTurn * _h;
-            float floor = SwingTurnFloor * _h;
             foreach (int j in limb.Chain)
             {
-                float turn = _rig.JointTurn(j, trial, before);
-                if (turn > most || (earlier is not null && turn > floor && turn > SwingTurnRatio * _rig.JointTurn(j, before, earlier)))
+                if (Jumps(j, _rig.JointTurn(j, trial, before), before, earlier))
                 {
                     if (!kept)
                     {
@@ -3370,46 +3314,51 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// Where a swinging leg's only solve at fine step <paramref name="i"/> (<paramref name="jumped"/>) turns a joint
-        /// past <see cref="MaxJointTurn"/>, or suddenly faster (<see cref="SwingTurnFloor"/>, <see cref="SwingTurnRatio"/>;
-        /// the leg reaching a joint's limit along its curve: a panda's upper arm at 90°, its hand then turning 42° in
-        /// 1/240 s), the <see cref="EaseSteps"/> fine steps before it are solved again on
-        /// the curve, each from its own angles drawn toward <paramref name="jumped"/> by its share of the way, so that the
-        /// leg changes solution over a displayed frame instead of between two fine steps. Kept only when every one of
-        /// them holds the curve (<paramref name="point"/>, <paramref name="normal"/>: the sole's normal there), clear of
-        /// the level at and between the steps, and no joint then turns even half as far in a fine step as in the jump;
-        /// else the steps stay as they were. <paramref name="keys"/> holds the swing's angles from its first fine step
-        /// <paramref name="a"/> on.
+        /// True when joint <paramref name="joint"/> turning <paramref name="turn"/> (radians) in the fine step after
+        /// <paramref name="before"/> jumps: past <see cref="MaxJointTurn"/>, or faster than <see cref="SwingTurnFloor"/>
+        /// and <see cref="SwingTurnRatio"/> times its turn in the step from <paramref name="earlier"/> (when there is one)
+        /// to <paramref name="before"/>.
         /// </summary>
-        private void EaseIntoJump(RigLimb limb, int i, int a, float[][] keys, float[] jumped, Func<int, Vector3> point, Func<int, Vector3> normal)
-        {
-            // The step before the eased ones, not the lift-off's own (its contact is checked apart).
-            if (i - a <= EaseSteps + 1)
-            {
-                return;
-            }
+        private bool Jumps(int joint, float turn, float[] before, float[]? earlier) =>
+            turn > MaxJointTurn * _h
+            || (earlier is not null && turn > SwingTurnFloor * _h && turn > SwingTurnRatio * _rig.JointTurn(joint, before, earlier));
 
-            float before = MostTurn(limb, keys[i - a - 1], jumped);
+        /// <summary>
+        /// Eases <paramref name="limb"/> into a solve that jumps at fine step <paramref name="i"/>
+        /// (<paramref name="jumped"/>, the only one holding its curve or foothold there): the <see cref="EaseSteps"/>
+        /// fine steps before it (angles <paramref name="anglesAt"/>) are solved again by <paramref name="holdAt"/>, each
+        /// from its own angles drawn toward <paramref name="jumped"/> by its share of the way, so that the leg changes
+        /// solution over a displayed frame instead of between two fine steps (a panda's upper arm reaching its 90° limit
+        /// along a swing, its hand then turning 42° in 1/240 s). Kept only when every one of them holds, its effector
+        /// within <see cref="Touch"/> of <paramref name="foothold"/> (a held foot's; <c>null</c> for a swing), the limb
+        /// clear of the level at and between the steps, and no joint then turns even half as far in a fine step as in
+        /// the jump; else the steps stay as they were. The caller makes sure the steps exist (after the segment's first
+        /// fine step and the one before the eased ones).
+        /// </summary>
+        private void EaseInto(RigLimb limb, int i, Func<int, float[]> anglesAt, float[] jumped, Func<int, float[], bool> holdAt, Vector3? foothold)
+        {
+            float jump = MostTurn(limb, anglesAt(i - 1), jumped);
             var solved = new float[EaseSteps][];
-            float[] previous = keys[i - a - EaseSteps - 1];
+            float[] previous = anglesAt(i - EaseSteps - 1);
             float worst = 0f;
             for (int m = 1; m <= EaseSteps; m++)
             {
                 int j = i - EaseSteps - 1 + m;
-                float[] attempt = (float[])keys[j - a].Clone();
+                float[] attempt = (float[])anglesAt(j).Clone();
                 float share = m / (float)(EaseSteps + 1);
                 foreach (int d in limb.ChainDofSpan)
                 {
-                    attempt[d] = float.Lerp(keys[j - a][d], jumped[d], share);
+                    attempt[d] = float.Lerp(attempt[d], jumped[d], share);
                 }
 
-                if (!_gait._sole.Flat.Reaches(_roots[j], attempt, limb, point(j), normal(j)) && !_gait._swingIk.Reaches(_roots[j], attempt, limb, point(j), normal(j)))
+                if (!holdAt(j, attempt))
                 {
                     return;
                 }
 
                 _rig.Solve(_roots[j], attempt, _positions, _rotations);
-                if (_gait._collision.LimbCollides(limb, _positions, _rotations, null) || MidwayCollides(limb, j, previous, attempt, null))
+                if ((foothold is { } point && Vector3.Distance(limb.EffectorPosition(_positions, _rotations), point) > Touch)
+                    || _gait._collision.LimbCollides(limb, _positions, _rotations, foothold) || MidwayCollides(limb, j, previous, attempt, foothold))
                 {
                     return;
                 }
@@ -3420,18 +3369,22 @@ internal sealed class WalkGait
             }
 
             worst = MathF.Max(worst, MostTurn(limb, previous, jumped));
-            if (worst >= 0.5f * before || MidwayCollides(limb, i, previous, jumped, null))
+            if (worst >= 0.5f * jump || MidwayCollides(limb, i, previous, jumped, foothold))
             {
                 return;
             }
 
             for (int m = 1; m <= EaseSteps; m++)
             {
-                Array.Copy(solved[m - 1], keys[i - EaseSteps - 1 + m - a], jumped.Length);
+                float[] angles = anglesAt(i - EaseSteps - 1 + m);
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    angles[d] = solved[m - 1][d];
+                }
             }
         }
 
-        /// <summary>Fine steps over which a leg eases into a solve that jumps (<see cref="EaseIntoJump"/>, <see cref="EaseIntoHeldJump"/>): one displayed frame's.</summary>
+        /// <summary>Fine steps over which a leg eases into a solve that jumps (<see cref="EaseInto"/>): one displayed frame's.</summary>
         private const int EaseSteps = Substeps;
 
         /// <summary>The most (radians) any joint of <paramref name="limb"/>'s chain turns from <paramref name="from"/> to <paramref name="to"/>.</summary>
@@ -3520,6 +3473,16 @@ internal sealed class WalkGait
                 float[] q = startAngles;
                 int failures = 0;
                 bool onCurve = true;
+
+                // The sole held flat on the curve at fine step k, else along its normal (as each step below tries).
+                bool ReachesCurve(int k, float[] attempt)
+                {
+                    float along = Warp((k - a) / (float)(b - a), slow);
+                    Vector3 point = Curve(along);
+                    Vector3 normal = Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(along)));
+                    return _gait._sole.Flat.Reaches(_roots[k], attempt, limb, point, normal) || _gait._swingIk.Reaches(_roots[k], attempt, limb, point, normal);
+                }
+
                 for (int i = a; i <= b; i++)
                 {
                     float s = Warp((i - a) / (float)(b - a), slow);
@@ -3564,7 +3527,7 @@ internal sealed class WalkGait
 
                         // The sole held flat, else along the curve's normal: the first solve that turns no joint faster
                         // than MaxJointTurn from the step before (nor suddenly faster), else the first that holds, eased
-                        // into over the frame before where the leg can (EaseIntoJump); else the sole left free.
+                        // into over the frame before where the leg can (EaseInto); else the sole left free.
                         bool kept = false;
                         float[]? earlier = i - a >= 2 ? keys[i - a - 2] : null;
                         onCurve = Smoothly(_gait._sole.Flat, i, trial, q, earlier, limb, p, n, ref kept) || Smoothly(_gait._swingIk, i, trial, q, earlier, limb, p, n, ref kept);
@@ -3572,7 +3535,11 @@ internal sealed class WalkGait
                         {
                             Array.Copy(_held, trial, trial.Length);
                             onCurve = true;
-                            EaseIntoJump(limb, i, a, keys, trial, j => Curve(Warp((j - a) / (float)(b - a), slow)), j => Vector3.Normalize(Vector3.Lerp(n0, n1, Smooth(Warp((j - a) / (float)(b - a), slow)))));
+                            if (i - a > EaseSteps + 1)
+                            {
+                                // The step before the eased ones is not the lift-off's own (its contact is checked apart).
+                                EaseInto(limb, i, k => keys[k - a], trial, ReachesCurve, null);
+                            }
                         }
 
                         onCurve = onCurve || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
