@@ -204,14 +204,27 @@ internal static class ReducedModelBuilder
     public const float SlopeStep = 2.5f;
 
     /// <summary>
+    /// How far (a share of the leg) the trunk may stand lower than in the contact pose while <see cref="WalkableSlope"/>
+    /// holds the feet on a plane, where they do not hold at its height: a twentieth of the leg, within the stances'
+    /// range (<see cref="StanceLowest"/>) and above the eye's upright walk (hips 0.88 of the leg above the held feet).
+    /// A rig whose legs are straight in its contact pose (most rigs made elsewhere) cannot move its trunk a tenth of its
+    /// leg over a planted foot without bending its knee, on the level or on a slope: at that height the user's human
+    /// and dog walked on no slope at all (0°). Lowered, each foot is first placed on the plane by the full IK (as a
+    /// stance's contacts are solved) and then held as the gait holds it, the trunk moving a fortieth of the leg at a
+    /// time (the gait tracks its feet in fine steps).
+    /// </summary>
+    public const float SlopeSink = 0.05f;
+
+    /// <summary>
     /// The steepest slope (degrees, a multiple of <see cref="SlopeStep"/>, at most
     /// <see cref="WalkingLimits.DefaultMaxSlopeDegrees"/>) the rig's feet can walk on: on a plane of that slope falling
     /// forward, backward, left or right, every foot of the rig holds the point under it in the contact pose by IK with
     /// its sole on the plane as the gait holds it (<see cref="SoleHold"/>), no bone below its effector (toes) under the
     /// plane, while the trunk, upright, stands over it and moves a tenth of <paramref name="legLength"/> either way
-    /// along the plane. Ankles that cannot tilt the sole as far as the ground does (a rig's joint limits) give a lower
-    /// slope: the gait could not hold the feet there, so the planner does not walk there. 0 when the feet cannot even
-    /// stand level.
+    /// along the plane: at the contact pose's height, or <see cref="SlopeSink"/> of the leg lower (legs straight in
+    /// their contact pose reach no further, and a walker lowers its hips). Ankles that cannot tilt the sole as far
+    /// as the ground does (a rig's joint limits) give a lower slope: the gait could not hold the feet there, so the
+    /// planner does not walk there. 0 when the feet cannot even stand level.
     /// </summary>
     /// <param name="model">The character.</param>
     /// <param name="legLength">The root joint's standing height above its contacts, metres.</param>
@@ -293,11 +306,21 @@ internal static class ReducedModelBuilder
         private readonly int[][] _below;
         private readonly float _shift;
 
+        /// <summary>The full IK (restarts and all) that places a foot on the plane under a lowered trunk before it is held.</summary>
+        private readonly LimbIk _place;
+
+        /// <summary><see cref="SlopeSink"/> in metres.</summary>
+        private readonly float _sink;
+
+        /// <summary>The trunk's places along the plane with the trunk lowered (metres): out to the shift, back to the other side, home again, a quarter of the shift at a time.</summary>
+        private readonly float[] _fineShifts;
+
         public FootPlanes(CharacterModel model, float legLength)
         {
             _model = model;
             Rig rig = model.Rig;
             _sole = new SoleHold(rig);
+            _place = new LimbIk(rig, new IkSettings { NormalTolerance = SoleHold.FlatTolerance, ReleaseLimits = true });
             _positions = new Vector3[rig.Joints.Count];
             _rotations = new Quaternion[rig.Joints.Count];
             _feet = [.. model.Limbs.Where(l => l.Kind == LimbKind.Foot)];
@@ -305,19 +328,33 @@ internal static class ReducedModelBuilder
             _stands = [.. _feet.Select(l => l.EffectorPosition(_positions, _rotations))];
             _below = [.. _feet.Select(l => Enumerable.Range(0, rig.Joints.Count).Where(j => j != l.EffectorJoint && rig.IsAncestor(l.EffectorJoint, j)).ToArray())];
             _shift = 0.1f * legLength;
+            _sink = SlopeSink * legLength;
+            _fineShifts = [.. Enumerable.Range(0, 17).Select(i => (i <= 4 ? i : i <= 12 ? 8 - i : i - 16) * 0.25f * _shift)];
         }
 
-        /// <summary>True when every foot holds the plane of unit normal <paramref name="normal"/> (rig frame: +Z forward, +X to the side) while the upright trunk moves forward and back along it.</summary>
-        public bool Hold(Vector3 normal)
+        /// <summary>
+        /// True when every foot holds the plane of unit normal <paramref name="normal"/> (rig frame: +Z forward, +X to
+        /// the side) while the upright trunk moves forward and back along it, at the contact pose's height or
+        /// <see cref="SlopeSink"/> of the leg lower.
+        /// </summary>
+        public bool Hold(Vector3 normal) => HoldAt(normal, 0f) || HoldAt(normal, _sink);
+
+        /// <summary><see cref="Hold"/> with the trunk <paramref name="sink"/> metres lower than in the contact pose (0: at its height, each foot starting from its contact pose).</summary>
+        private bool HoldAt(Vector3 normal, float sink)
         {
             Rig rig = _model.Rig;
             for (int f = 0; f < _feet.Length; f++)
             {
                 float[] q = (float[])_model.ContactPose.Clone();
-                foreach (float x in new[] { 0f, _shift, -_shift, 0f })
+                if (sink > 0f && !_place.Reaches(new RootPose(new Vector3(0f, -sink, 0f), Quaternion.Identity), q, _feet[f], _stands[f], -normal))
+                {
+                    return false;
+                }
+
+                foreach (float x in sink > 0f ? _fineShifts : [0f, _shift, -_shift, 0f])
                 {
                     // The trunk moves along the plane, keeping its height above it.
-                    var root = new RootPose(new Vector3(0f, -x * normal.Z / normal.Y, x), Quaternion.Identity);
+                    var root = new RootPose(new Vector3(0f, (-x * normal.Z / normal.Y) - sink, x), Quaternion.Identity);
                     float[] trial = (float[])q.Clone();
                     if (!_sole.Hold(root, trial, _feet[f], _stands[f], normal))
                     {

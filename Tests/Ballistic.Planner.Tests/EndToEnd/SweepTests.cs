@@ -209,7 +209,7 @@ public sealed class SweepTests
     /// eases over a frame into a solve past 15° a fine step, 114 since a held foot's leg does too. Lower it as snaps are
     /// removed; it only goes down.
     /// </summary>
-    private const int MostSnapFrames = 114;
+    private const int MostSnapFrames = 110;
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, at most one request per

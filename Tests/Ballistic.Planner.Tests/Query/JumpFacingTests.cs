@@ -237,7 +237,8 @@ public sealed class JumpFacingTests
     }
 
     /// <summary>
-    /// On the curved level's slopes the dog cannot walk, so it turns by hops; where a hop in place ahead down the slope
+    /// On the curved level's slopes the dog jumping only (as it did before its walking limit stood its trunk lower to
+    /// reach, when it walked on the level only) turns by hops; where a hop in place ahead down the slope
     /// lands outside its cone and one on the spot has no parabola, it hops back up the slope (or further ahead) to turn:
     /// every jump of a metre or more leaves and lands facing its way (before: the last jump left 69° off its way, no
     /// takeoff facing it linked), and the independent checker passes the path.
@@ -245,14 +246,14 @@ public sealed class JumpFacingTests
     [Test]
     public void ADogThatCannotHopAheadOnASlopeTurnsByAHopBehind()
     {
-        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = CurvedDog(1);
+        (Sweep.Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan) = Foreign("curved", "dog", 1, Locomotion.Jump);
         (float off, float on) = Worst(plan.Result);
         TestContext.Out.WriteLine($"takeoff {off:0}°, landing {on:0}°, {plan.Result.Jumps.Count} jumps, {plan.Result.Jumps.Count(j => !Far(j))} of them hops");
         Assert.Multiple(() =>
         {
             Assert.That(off, Is.LessThanOrEqualTo(AnimatorEye.TakeoffFacing), "worst takeoff heading off the jump's direction, degrees");
             Assert.That(on, Is.LessThanOrEqualTo(AnimatorEye.LandingFacing), "worst landing heading off the jump's direction, degrees");
-            Assert.That(plan.Result.Walks, Is.Empty, "the dog does not walk these slopes: it turns by hops");
+            Assert.That(plan.Result.Walks, Is.Empty, "the dog jumping only turns by hops");
         });
         AuditReport audit = PlanAudit.Check("curved dog", setup.Scene, from, to, plan.Result, plan.Animation);
         Assert.That(plan.Animation, Is.Not.Null, "the path animates");
@@ -297,18 +298,15 @@ public sealed class JumpFacingTests
         Assert.That(audit.Violations, Is.Empty, string.Join("; ", audit.Violations));
     }
 
-    /// <summary>The dog's animated plan of the curved terrain's request <paramref name="request"/>, as the sweep makes it.</summary>
-    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) CurvedDog(int request) => Foreign("curved", "dog", request);
-
-    /// <summary>The animated plan of a foreign rig on a foreign level's request <paramref name="request"/>, as the sweep makes it.</summary>
-    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) Foreign(string levelName, string rig, int request)
+    /// <summary>The animated plan of a foreign rig on a foreign level's request <paramref name="request"/>, as the sweep makes it (walking and jumping unless <paramref name="locomotion"/> says otherwise).</summary>
+    private static (Sweep.Setup Setup, Vector3 From, Vector3 To, AnimatedPlan Plan) Foreign(string levelName, string rig, int request, Locomotion locomotion = Locomotion.WalkAndJump)
     {
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-{rig}-{Guid.NewGuid():N}");
         try
         {
             (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign(levelName, rig, folder);
             (Vector3 from, Vector3 to) = requests[request];
-            (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600 });
+            (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600, Locomotion = locomotion });
             Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
             return (setup, from, to, plan);
         }

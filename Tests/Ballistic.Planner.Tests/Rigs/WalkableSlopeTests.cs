@@ -2,6 +2,7 @@ using System.Numerics;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
+using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Rigs;
 
@@ -76,14 +77,14 @@ public sealed class WalkableSlopeTests
         });
     }
 
-    private static bool AllFeetHold(CharacterModel model, float degrees, Vector3[]? downs = null)
+    private static bool AllFeetHold(CharacterModel model, float degrees, Vector3[]? downs = null, float sink = 0f)
     {
         Rig rig = model.Rig;
         var ik = new LimbIk(rig, new IkSettings { Restarts = 4, MaxIterations = 80 });
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
-        var root = new RootPose(Vector3.Zero, Quaternion.Identity);
-        rig.Solve(root, model.ContactPose, positions, rotations);
+        rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), model.ContactPose, positions, rotations);
+        var root = new RootPose(new Vector3(0f, -sink, 0f), Quaternion.Identity);
         float angle = degrees * MathF.PI / 180f;
         foreach (RigLimb foot in model.Limbs.Where(l => l.Kind == LimbKind.Foot))
         {
@@ -110,6 +111,36 @@ public sealed class WalkableSlopeTests
         }
 
         return true;
+    }
+
+    [TestCase("human", 27.5f)]
+    [TestCase("human-zup", 27.5f)]
+    [TestCase("dog", 20f)]
+    public void RigsMadeElsewhereWithStraightLegsWalkOnSlopes(string name, float expected)
+    {
+        // Rigs made elsewhere stand on straight legs in their contact pose: moving the trunk a tenth of the leg over a
+        // planted foot at that height is out of the leg's reach, so these walked on no slope at all (0°, the level
+        // only). A walker lowers its hips: with the trunk a twentieth of the leg lower they walk on slopes.
+        string folder = Path.Combine(Path.GetTempPath(), $"ballistic-slope-{name}-{Environment.ProcessId}");
+        try
+        {
+            (CharacterModel model, ReducedCharacter reduced) = ForeignCharacters.Named(name).Load(folder);
+            float slope = reduced.Walking.MaxSlopeDegrees;
+            float leg = reduced.Walking.StepHeight / WalkingLimits.StepShare; // the leg the rig's walking comes from
+            Assert.Multiple(() =>
+            {
+                Assert.That(slope, Is.EqualTo(expected), $"{name} walks on slopes of {expected}° (the README's figure)");
+                Assert.That(reduced.Walking.MaxSlopeAlongDegrees, Is.GreaterThanOrEqualTo(slope));
+
+                // An independent check: a fresh IK with restarts holds every foot flat on the derived slope falling
+                // each way with the trunk at its height or a twentieth of the leg lower.
+                Assert.That(AllFeetHold(model, slope) || AllFeetHold(model, slope, sink: ReducedModelBuilder.SlopeSink * leg), Is.True, $"{name}'s feet hold {slope}°");
+            });
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
     }
 
     private static float LegLength(CharacterModel model)

@@ -8,8 +8,8 @@ internal static class TestLevels
 {
     public static readonly LevelMaterial Ground = new("ground", null);
 
-    /// <summary>Adds an axis-aligned horizontal rectangle at height y, split into n × n quads, facing up.</summary>
-    public static LevelBuilder AddFloor(this LevelBuilder builder, float minX, float minZ, float maxX, float maxZ, float y, int n = 4, LevelMaterial? material = null)
+    /// <summary>Adds an axis-aligned horizontal rectangle at height y, split into n × n quads, facing up (then placed by <paramref name="toWorld"/>, if given: a ramp).</summary>
+    public static LevelBuilder AddFloor(this LevelBuilder builder, float minX, float minZ, float maxX, float maxZ, float y, int n = 4, LevelMaterial? material = null, Matrix4x4? toWorld = null)
     {
         var positions = new List<Vector3>();
         var indices = new List<int>();
@@ -33,7 +33,7 @@ internal static class TestLevels
             }
         }
 
-        return builder.AddMesh("floor", positions.ToArray(), indices.ToArray(), Matrix4x4.Identity, material ?? Ground);
+        return builder.AddMesh("floor", positions.ToArray(), indices.ToArray(), toWorld ?? Matrix4x4.Identity, material ?? Ground);
     }
 
     /// <summary>Adds a closed axis-aligned box (outward faces), e.g. a platform or a wall.</summary>
