@@ -58,7 +58,11 @@ public static class PlanReportWriter
         _ => throw new ArgumentOutOfRangeException(nameof(status), status, "Unknown status."),
     };
 
-    /// <summary>Writes the <c>character</c> block of a report: name, trunk, speed limits, gravity, friction, limbs.</summary>
+    /// <summary>
+    /// Writes the <c>character</c> block of a report: name, trunk, speed limits, gravity, friction, limbs, and its
+    /// walking limits under the character spec's own keys (<c>walkSpeed</c> m/s, 0 when it does not walk;
+    /// <c>maxSlope</c> and <c>maxSlopeAlong</c> degrees; <c>stepHeight</c> m), as derived from the rig or given by the spec.
+    /// </summary>
     internal static void WriteCharacter(Utf8JsonWriter w, ReducedCharacter character)
     {
         w.WriteStartObject("character");
@@ -69,6 +73,13 @@ public static class PlanReportWriter
         WriteVector(w, "gravity", new Vector3(0f, -character.Limits.Gravity, 0f));
         w.WriteNumber("friction", character.Friction);
         w.WriteNumber("requiredContacts", character.RequiredContacts);
+        WalkingLimits walking = character.Walking;
+        w.WriteStartObject("walking");
+        w.WriteNumber("walkSpeed", walking.CanWalk ? walking.Speed : 0f);
+        w.WriteNumber("maxSlope", walking.MaxSlopeDegrees);
+        w.WriteNumber("maxSlopeAlong", walking.MaxSlopeAlongDegrees);
+        w.WriteNumber("stepHeight", walking.StepHeight);
+        w.WriteEndObject();
         w.WriteStartArray("limbs");
         foreach (Limb limb in character.Limbs)
         {

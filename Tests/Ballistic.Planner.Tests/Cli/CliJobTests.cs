@@ -88,6 +88,21 @@ public sealed class CliJobTests
             Assert.That(root.TryGetProperty("timings", out _), Is.True);
         });
 
+        // The walking limits under the spec's keys: the skeleton's derived ones (the README's 1.53 m/s, 22.5°, 25°,
+        // 0.24 m), and no walk of the plan faster than its speed.
+        JsonElement walking = root.GetProperty("character").GetProperty("walking");
+        Assert.Multiple(() =>
+        {
+            Assert.That(walking.GetProperty("walkSpeed").GetSingle(), Is.EqualTo(1.53f).Within(0.005f));
+            Assert.That(walking.GetProperty("maxSlope").GetSingle(), Is.EqualTo(22.5f));
+            Assert.That(walking.GetProperty("maxSlopeAlong").GetSingle(), Is.EqualTo(25f));
+            Assert.That(walking.GetProperty("stepHeight").GetSingle(), Is.EqualTo(0.24f).Within(0.005f));
+            foreach (JsonElement move in root.GetProperty("moves").EnumerateArray().Where(m => m.GetProperty("kind").GetString() == "walk"))
+            {
+                Assert.That(move.GetProperty("speed").GetSingle(), Is.LessThanOrEqualTo(walking.GetProperty("walkSpeed").GetSingle() * 1.0001f));
+            }
+        });
+
         // Re-check the physics from the report alone, as another tool would.
         float takeoffMax = root.GetProperty("character").GetProperty("takeoffSpeedMax").GetSingle();
         float landingMax = root.GetProperty("character").GetProperty("landingSpeedMax").GetSingle();
