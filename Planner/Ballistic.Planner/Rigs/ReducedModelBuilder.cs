@@ -351,6 +351,8 @@ internal static class ReducedModelBuilder
                     return false;
                 }
 
+                // At the contact pose's height the trunk's places are the four it always had (the preset characters'
+                // limits, the README's 22.5° and 25°, come from them); lowered, the fine ones.
                 foreach (float x in sink > 0f ? _fineShifts : [0f, _shift, -_shift, 0f])
                 {
                     // The trunk moves along the plane, keeping its height above it.

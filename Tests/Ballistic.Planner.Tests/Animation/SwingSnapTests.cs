@@ -28,14 +28,9 @@ public sealed class SwingSnapTests
     public void ALegSwingingAsTheSkeletonTurnsInPlaceDoesNotSnap()
     {
         (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("block");
-        Sweep.Planned planned = Sweep.Plan(Sweep.Prepare("block", level, "skeleton"), requests[3].From, requests[3].To);
-        Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
-        AnimatorEye.Look look = planned.Report.Look!;
 
-        // Swinging legs in its walks, as an importer plays the GLB at 60 frames a second (before: 7 frames, every
-        // one a hip, 16–23° each).
-        string[] swinging = look.WalkSnaps("free");
-        Assert.That(swinging, Is.Empty, string.Join(Environment.NewLine, swinging));
+        // Swinging legs in its walks (before: 7 frames, every one a hip, 16–23° each).
+        Sweep.AssertNoWalkSnaps(Sweep.Prepare("block", level, "skeleton"), requests[3].From, requests[3].To, "free");
     }
 
     /// <summary>
@@ -48,10 +43,6 @@ public sealed class SwingSnapTests
     public void APandasLegReachingAJointLimitInItsSwingDoesNotSnap()
     {
         (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("doorway", "panda", RigFolder);
-        Sweep.Planned planned = Sweep.Plan(setup, requests[1].From, requests[1].To);
-        Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
-        AnimatorEye.Look look = planned.Report.Look!;
-        string[] swinging = look.WalkSnaps("free");
-        Assert.That(swinging, Is.Empty, string.Join(Environment.NewLine, swinging));
+        Sweep.AssertNoWalkSnaps(setup, requests[1].From, requests[1].To, "free");
     }
 }

@@ -54,6 +54,19 @@ internal static class Sweep
     public static AuditReport Run(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump) =>
         Plan(setup, from, to, seed, maxNodes, locomotion).Report;
 
+    /// <summary>
+    /// Plans the request as <see cref="Plan"/> does and asserts it fully right by the audit, with no snapping frame in its
+    /// walks while the snapping limb is <paramref name="doing"/> ("free", "held", …; <see cref="AnimatorEye.Look.WalkSnaps"/>),
+    /// as an importer plays the GLB at 60 frames a second; the snaps seen are the failure's message.
+    /// </summary>
+    public static void AssertNoWalkSnaps(Setup setup, Vector3 from, Vector3 to, string doing)
+    {
+        Planned planned = Plan(setup, from, to);
+        Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
+        string[] snaps = planned.Report.Look!.WalkSnaps(doing);
+        Assert.That(snaps, Is.Empty, string.Join(Environment.NewLine, snaps));
+    }
+
     /// <summary>As <see cref="Run"/>, keeping the plan and the eye as well as the audit.</summary>
     public static Planned Plan(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
     {
