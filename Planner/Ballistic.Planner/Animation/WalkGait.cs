@@ -595,13 +595,13 @@ internal sealed class WalkGait
         Problems = [.. clip.Problems.Select(p => p with { Jump = move })],
     };
 
-    /// <summary>What a walk's clip is animated from: the walk's ground path, speed and stances' poses (all <see cref="Walk.PoseAt(float)"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
+    /// <summary>What a walk's clip is animated from: the walk's ground path, speed, pitch span and stances' poses (all <see cref="Walk.PoseAt(float)"/> depends on), the poses it starts and ends in, and the frame rate.</summary>
     private sealed record WalkKey(Walk Walk, ContactConfiguration Start, ContactConfiguration End, float FrameRate)
     {
         private readonly int _hash = HashCode.Combine(Walk.Speed, Walk.Path.Count, Walk.Path[0], Walk.Path[^1], Start.Root, End.Root, FrameRate);
 
         public bool Equals(WalkKey? other) =>
-            other is not null && _hash == other._hash && Walk.Speed == other.Walk.Speed && FrameRate == other.FrameRate
+            other is not null && _hash == other._hash && Walk.Speed == other.Walk.Speed && Walk.PitchSpan == other.Walk.PitchSpan && FrameRate == other.FrameRate
             && Walk.From.Pose == other.Walk.From.Pose && Walk.To.Pose == other.Walk.To.Pose && Walk.Path.SequenceEqual(other.Walk.Path)
             && Same(Start, other.Start) && Same(End, other.End);
 
@@ -2129,12 +2129,18 @@ internal sealed class WalkGait
             return clear;
         }
 
-        /// <summary>1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres along it) is under <see cref="LevelGrade"/> (<see cref="HipsLevelGrade"/> for the <paramref name="hips"/>), fading to 0 by <see cref="SteepGrade"/> (<see cref="HipsSteepGrade"/>).</summary>
+        /// <summary>
+        /// 1 where the path's grade over <see cref="LevelWindow"/> either way of <paramref name="distance"/> (metres
+        /// along it) is under <see cref="LevelGrade"/> (<see cref="HipsLevelGrade"/> for the <paramref name="hips"/>),
+        /// fading to 0 by <see cref="SteepGrade"/> (<see cref="HipsSteepGrade"/>). For a trunk that pitches with the
+        /// ground (<see cref="Walk.PitchSpan"/>), the grade is taken from the trunk's own (<see cref="Walk.GradeAt"/>):
+        /// up a plain ramp its legs reach as on the level.
+        /// </summary>
         private float LevelShare(float distance, bool hips = false)
         {
             Vector3 d = _walk.PointAt(distance + LevelWindow) - _walk.PointAt(distance - LevelWindow);
             float across = new Vector2(d.X, d.Z).Length();
-            float grade = across > 1e-3f ? MathF.Abs(d.Y) / across : 0f;
+            float grade = across > 1e-3f ? MathF.Abs((d.Y / across) - _walk.GradeAt(distance)) : 0f;
             (float level, float steep) = hips ? (HipsLevelGrade, HipsSteepGrade) : (LevelGrade, SteepGrade);
             return Math.Clamp((steep - grade) / (steep - level), 0f, 1f);
         }

@@ -63,6 +63,15 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// </summary>
     public float TurnRate { get; init; } = DefaultTurnRate;
 
+    /// <summary>
+    /// Half the distance (metres, along the trunk) between the character's foremost and hindmost feet when its walking
+    /// trunk pitches with the ground, or 0 (the default) for a trunk that walks level: a quadruped's or a spider's
+    /// trunk leans up a ramp or a flight of stairs as its front feet climb ahead of its hind ones, at the ground's
+    /// grade between the points this far ahead of and behind the walk's ground point (<see cref="Roadmaps.Walk.PitchSpan"/>);
+    /// a biped, whose feet stand side by side, stays upright.
+    /// </summary>
+    public float PitchSpan { get; init; }
+
     /// <summary>Tangent of <see cref="MaxSlopeAlongDegrees"/>: the most the ground rises or drops per metre walked.</summary>
     public float MaxGrade => MathF.Tan(MaxSlopeAlongDegrees * MathF.PI / 180f);
 
@@ -85,5 +94,6 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
         : !(StepHeight >= 0f) || !float.IsFinite(StepHeight) || StepHeight > 100f ? $"the step height must lie between 0 and 100 m, not {StepHeight}"
         : CanWalk && StepHeight <= 0f ? "a walking character needs a positive step height"
         : !(TurnRate > 0f) || TurnRate > 100f ? $"the turn rate must lie between 0 and 100 radians per second, not {TurnRate}"
+        : !(PitchSpan >= 0f) || !float.IsFinite(PitchSpan) || PitchSpan > 100f ? $"the span over which the trunk pitches with the ground must lie between 0 and 100 m, not {PitchSpan}"
         : null;
 }

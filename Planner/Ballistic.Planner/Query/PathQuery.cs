@@ -1277,7 +1277,7 @@ public sealed class PathQuery
     {
         var points = new List<Vector3>(first.Path);
         points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
-        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via], first.TurnRate, first.MaxGrade)
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via], first.TurnRate, first.MaxGrade, first.PitchSpan)
         {
             CutFrom = CutFrom([first, second], 0, 2),
             HoppedFrom = first.HoppedFrom.Count == 0 ? second.HoppedFrom : [.. first.HoppedFrom.Union(second.HoppedFrom)],

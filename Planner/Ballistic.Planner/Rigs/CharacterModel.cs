@@ -112,6 +112,29 @@ public sealed class CharacterModel
     }
 
     /// <summary>
+    /// How far (metres, along the trunk's forward axis) the foremost foot stands ahead of the trunk's centre and the
+    /// hindmost behind it in the contact pose; 0 for either where no foot stands on that side.
+    /// </summary>
+    internal (float Ahead, float Behind) FeetAlongTrunk()
+    {
+        var positions = new Vector3[Rig.Joints.Count];
+        var rotations = new Quaternion[Rig.Joints.Count];
+        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        float ahead = 0f;
+        float behind = 0f;
+        foreach (RigLimb limb in Limbs)
+        {
+            if (limb.Kind == LimbKind.Foot)
+            {
+                float z = limb.EffectorPosition(positions, rotations).Z;
+                (ahead, behind) = (MathF.Max(ahead, z), MathF.Max(behind, -z));
+            }
+        }
+
+        return (ahead, behind);
+    }
+
+    /// <summary>
     /// The most a turn of the trunk about its up axis may be (radians, or radians per second), at most
     /// <paramref name="most"/>, so that no foot where the contact pose holds it is carried sideways under the trunk by
     /// more than <paramref name="share"/> of its own leg (<see cref="LegLengths"/>; per second for a rate): a trunk

@@ -176,7 +176,7 @@ internal static class ReducedModelBuilder
         }
 
         float slope = WalkableSlope(model, rootHeight);
-        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope), TurnRate = TurnRate(model) };
+        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope), TurnRate = TurnRate(model), PitchSpan = PitchSpan(model) };
     }
 
     /// <summary>
@@ -198,6 +198,28 @@ internal static class ReducedModelBuilder
     {
         ArgumentNullException.ThrowIfNull(model);
         return model.TurnLimit(TurnSweep, WalkingLimits.DefaultTurnRate);
+    }
+
+    /// <summary>
+    /// Least distance (a share of the longest leg) by which, in the contact pose, some foot stands ahead of the
+    /// trunk's centre and some foot behind it for the walking trunk to pitch with the ground (<see cref="PitchSpan"/>):
+    /// a quadruped's or a spider's legs, not a biped's feet side by side.
+    /// </summary>
+    public const float PitchFeetApart = 0.25f;
+
+    /// <summary>
+    /// Half the distance (metres) between the rig's foremost and hindmost feet in the contact pose, along the trunk,
+    /// when some foot stands at least <see cref="PitchFeetApart"/> of the longest leg ahead of the trunk's centre and
+    /// some as far behind it (a quadruped, a spider): its walking trunk pitches with the ground over that span
+    /// (<see cref="WalkingLimits.PitchSpan"/>), so that on a ramp its front legs do not fold while its hind legs
+    /// stretch. 0 for a rig whose feet stand under its trunk (a biped): it walks upright.
+    /// </summary>
+    public static float PitchSpan(CharacterModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        (float ahead, float behind) = model.FeetAlongTrunk();
+        float apart = PitchFeetApart * model.LegLengths().DefaultIfEmpty(0f).Max();
+        return apart > 0f && ahead >= apart && behind >= apart ? 0.5f * (ahead + behind) : 0f;
     }
 
     /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>

@@ -62,6 +62,10 @@ public sealed record Walk : Move
     private readonly RotationBlend _endTurn;
     private readonly Vector3 _startUpright;
     private readonly Vector3 _endUpright;
+
+    /// <summary>The trunk centre where the walk along the path starts and ends (<see cref="PoseAtDistance(float)"/> at 0 and <see cref="Length"/>), after and before the turns in place.</summary>
+    private readonly Vector3 _startWalking;
+    private readonly Vector3 _endWalking;
     private readonly float _acceleration;
     private readonly float _cruise;
     private readonly float _ramp;
@@ -106,9 +110,13 @@ public sealed record Walk : Move
     /// steeper than that is a step (a stair's riser, a kerb), where the walk slows (<see cref="ClimbShare"/>). By
     /// default none: the walk never slows.
     /// </param>
-    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, or a negative grade.</exception>
-    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity)
-        : this(from, to, path, speed, via, turnRate, maxGrade, [], 1f)
+    /// <param name="pitchSpan">
+    /// Half the distance (metres) between the walker's foremost and hindmost feet, over which its trunk pitches with
+    /// the ground (<see cref="WalkingLimits.PitchSpan"/>, <see cref="PitchSpan"/>); 0 (the default): the trunk walks level.
+    /// </param>
+    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, or a negative grade or pitch span.</exception>
+    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity, float pitchSpan = 0f)
+        : this(from, to, path, speed, via, turnRate, maxGrade, pitchSpan, [], 1f)
     {
     }
 
@@ -126,7 +134,7 @@ public sealed record Walk : Move
             throw new ArgumentOutOfRangeException(nameof(pace), pace, "A walk slows to a pace above 0 and at most 1.");
         }
 
-        return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, stretches, pace);
+        return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, PitchSpan, stretches, pace);
     }
 
     /// <summary>
@@ -149,7 +157,7 @@ public sealed record Walk : Move
         return copy;
     }
 
-    private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, IReadOnlyList<(float From, float To)> slowed, float slowPace)
+    private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, float pitchSpan, IReadOnlyList<(float From, float To)> slowed, float slowPace)
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
@@ -174,6 +182,11 @@ public sealed record Walk : Move
             throw new ArgumentException($"The steepest grade must not be negative, not {maxGrade}.", nameof(maxGrade));
         }
 
+        if (!(pitchSpan >= 0f) || !float.IsFinite(pitchSpan))
+        {
+            throw new ArgumentException($"The span over which the trunk pitches must be finite and not negative, not {pitchSpan}.", nameof(pitchSpan));
+        }
+
         _path = [.. path];
         _distances = new float[_path.Length];
         for (int i = 0; i < _path.Length; i++)
@@ -193,6 +206,7 @@ public sealed record Walk : Move
         Speed = speed;
         TurnRate = turnRate;
         MaxGrade = maxGrade;
+        PitchSpan = pitchSpan;
         Length = _distances[^1];
         _lookup = new SortedLookup(_distances);
         float[]? stepped = Stepped();
@@ -203,14 +217,16 @@ public sealed record Walk : Move
         _pacedLength = _paced is null ? Length : _paced[^1];
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
-        _startHeading = Upright(HeadingAt(0f));
-        _endHeading = Upright(HeadingAt(Length));
+        _startHeading = Facing(HeadingAt(0f), GradeAt(0f));
+        _endHeading = Facing(HeadingAt(Length), GradeAt(Length));
         _startTurn = RotationBlend.Between(from.Pose.Rotation, _startHeading);
         _endTurn = RotationBlend.Between(_endHeading, to.Pose.Rotation);
         StartTurn = TurnTime(Rotations.AngleBetween(from.Pose.Rotation, _startHeading));
         EndTurn = TurnTime(Rotations.AngleBetween(_endHeading, to.Pose.Rotation));
         _startUpright = StoodUp(StartOffset, from.Pose.Rotation);
         _endUpright = StoodUp(EndOffset, to.Pose.Rotation);
+        _startWalking = PoseAtDistance(0f).Position;
+        _endWalking = PoseAtDistance(Length).Position;
 
         // Constant acceleration Speed / RampTime up and down; a walk too short to reach the speed peaks halfway. In
         // paced distance: where the walk slows, the same time covers less of the path.
@@ -393,6 +409,13 @@ public sealed record Walk : Move
 
     /// <summary>The walker's steepest grade (rise per metre across): steeper path segments are steps, where the walk slows (<see cref="ClimbShare"/>); infinite where it never does.</summary>
     public float MaxGrade { get; }
+
+    /// <summary>
+    /// Half the distance (metres) between the walker's foremost and hindmost feet, over which its trunk pitches with
+    /// the ground (<see cref="WalkingLimits.PitchSpan"/>): walking, the trunk's forward axis rises at the ground's
+    /// grade between the path points this far ahead and behind (<see cref="PoseAtDistance(float)"/>). 0: it walks level.
+    /// </summary>
+    public float PitchSpan { get; }
 
     /// <summary>Length of the ground path, metres (3D, along the polyline).</summary>
     public float Length { get; }
@@ -588,7 +611,10 @@ public sealed record Walk : Move
 
     /// <summary>
     /// The trunk's walking pose <paramref name="distance"/> metres along the path (clamped): the ground point plus the
-    /// upright trunk's offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt(float)"/> upright.
+    /// upright trunk's offset (blended smoothly from the start's to the end's), facing <see cref="HeadingAt(float)"/> upright;
+    /// for a walker whose trunk pitches with the ground (<see cref="PitchSpan"/>), facing it pitched up or down at the
+    /// ground's grade over the span, its centre raised by that grade times its offset ahead of the ground point, so
+    /// that its front and hind hips stand as high above the ground under them as on the level.
     /// The upright offset of a stance is its own offset turned as the stance's trunk stands up (the shortest rotation
     /// bringing its up axis to the world's), at the stance's height above the ground point: a trunk leaning with a
     /// slope stands over its contacts to walk, not beside them. It is the stance's offset itself when the trunk does
@@ -606,7 +632,16 @@ public sealed record Walk : Move
     {
         distance = Math.Clamp(distance, 0f, Length);
         float u = Length > 0f ? distance / Length : 1f;
-        Vector3 position = PointAt(distance, ref segment) + Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
+        Vector3 offset = Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
+        Vector3 position = PointAt(distance, ref segment) + offset;
+        if (PitchSpan > 0f)
+        {
+            Vector3 heading = HeadingAt(distance, segment);
+            float grade = GradeAt(distance);
+            Quaternion facing = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Facing(heading, grade);
+            return new RootPose(position + new Vector3(0f, grade * Vector3.Dot(Horizontal(offset), heading), 0f), facing);
+        }
+
         Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance, segment));
         return new RootPose(position, rotation);
     }
@@ -643,14 +678,14 @@ public sealed record Walk : Move
         if (time < StartTurn)
         {
             float s = Smooth(time / StartTurn);
-            return new RootPose(Vector3.Lerp(From.Pose.Position, _path[0] + _startUpright, s), Quaternion.Normalize(_startTurn.At(From.Pose.Rotation, _startHeading, s)));
+            return new RootPose(Vector3.Lerp(From.Pose.Position, _startWalking, s), Quaternion.Normalize(_startTurn.At(From.Pose.Rotation, _startHeading, s)));
         }
 
         float end = StartTurn + WalkTime;
         if (time > end && EndTurn > 0f)
         {
             float s = Smooth((time - end) / EndTurn);
-            return new RootPose(Vector3.Lerp(_path[^1] + _endUpright, To.Pose.Position, s), Quaternion.Normalize(_endTurn.At(_endHeading, To.Pose.Rotation, s)));
+            return new RootPose(Vector3.Lerp(_endWalking, To.Pose.Position, s), Quaternion.Normalize(_endTurn.At(_endHeading, To.Pose.Rotation, s)));
         }
 
         return PoseAtDistance(DistanceAt(time), ref segment);
@@ -668,6 +703,31 @@ public sealed record Walk : Move
     }
 
     private static Vector3 Horizontal(Vector3 v) => new(v.X, 0f, v.Z);
+
+    /// <summary>
+    /// The ground's grade (rise per horizontal metre) along the path at <paramref name="distance"/>, between its points
+    /// <see cref="PitchSpan"/> ahead and behind (each within the path): the trunk's forward axis rises at it
+    /// (<see cref="PoseAtDistance(float)"/>). 0 without a span: the trunk walks level.
+    /// </summary>
+    internal float GradeAt(float distance)
+    {
+        if (!(PitchSpan > 0f))
+        {
+            return 0f;
+        }
+
+        Vector3 ahead = PointAt(MathF.Min(Length, distance + PitchSpan));
+        Vector3 behind = PointAt(MathF.Max(0f, distance - PitchSpan));
+        float run = Horizontal(ahead - behind).Length();
+        return run > 1e-3f ? (ahead.Y - behind.Y) / run : 0f;
+    }
+
+    /// <summary>
+    /// The trunk's rotation facing the horizontal direction <paramref name="heading"/>, its forward axis pitched up
+    /// at <paramref name="grade"/> (rise per metre; down where negative): <see cref="Upright"/> on the level.
+    /// </summary>
+    private static Quaternion Facing(Vector3 heading, float grade) =>
+        grade == 0f ? Upright(heading) : Upright(heading) * Quaternion.CreateFromAxisAngle(Vector3.UnitX, -MathF.Atan(grade));
 
     /// <summary>Upright rotation facing the horizontal direction <paramref name="heading"/>.</summary>
     private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));

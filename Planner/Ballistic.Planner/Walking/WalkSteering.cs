@@ -83,7 +83,7 @@ internal sealed class WalkSteering
             return new WalkResult(null, ground);
         }
 
-        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade);
+        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan);
         return TrunkIsFree(walk) ? new WalkResult(walk, WalkFailure.None) : new WalkResult(null, WalkFailure.TrunkCollides);
     }
 
@@ -106,7 +106,7 @@ internal sealed class WalkSteering
         }
 
         (Vector3[]? path, WalkFailure failure) = _traced.GetOrAdd(new WalkKey(from.Pose, from.ContactCentre, to.Pose, to.ContactCentre), this, static (k, steering) => steering.Trace(k));
-        return path is null ? new WalkResult(null, failure) : new WalkResult(new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade), WalkFailure.None);
+        return path is null ? new WalkResult(null, failure) : new WalkResult(new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan), WalkFailure.None);
     }
 
     /// <summary>Why no walk is even traced from <paramref name="from"/> to <paramref name="to"/> (the character does not walk, or they lie farther apart than <paramref name="maxDistance"/>), or <c>null</c>.</summary>
@@ -143,7 +143,7 @@ internal sealed class WalkSteering
         }
 
         // The trunk's check needs only the poses and the path: stances of those poses stand in for the real ones.
-        var walk = new Walk(new RoadmapNode(-1, key.FromPose, default, []), new RoadmapNode(-2, key.ToPose, default, []), path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade);
+        var walk = new Walk(new RoadmapNode(-1, key.FromPose, default, []), new RoadmapNode(-2, key.ToPose, default, []), path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan);
         return TrunkIsFree(walk) ? ([.. path], WalkFailure.None) : (null, WalkFailure.TrunkCollides);
     }
 
