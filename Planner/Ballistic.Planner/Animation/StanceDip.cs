@@ -290,8 +290,10 @@ internal sealed class StanceDip
     /// surface where it can, otherwise rolling on its point (a heel lifting in a deep crouch, a frog's wrist), the limb
     /// clear of the level. Not a user's skinned paw: rolling on its point, or folding its ankle or wrist more than
     /// <see cref="MaxEffectorFold"/> from <paramref name="reference"/>, presses the sole's blended skin into the
-    /// ground (linear blend skinning; 2.4 cm measured on the tailed quadruped's front paws). Returns why it cannot
-    /// ("cannot hold its contact", "would fold its 'ankle' more than 20°", "enters the level"), or <c>null</c>.
+    /// ground (linear blend skinning; 2.4 cm measured on the tailed quadruped's front paws), and neither may its
+    /// foot's skin sink more than <see cref="BodyCollision.SkinDepth"/> below the surface's plane as the shin leans
+    /// (<see cref="BodyCollision.SoleSink"/>). Returns why it cannot ("cannot hold its contact", "would fold its
+    /// 'ankle' more than 20°", "enters the level", "would press its sole's skin into the ground"), or <c>null</c>.
     /// </summary>
     internal static string? Hold(LimbIk ik, CharacterModel model, BodyCollision collision, in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, float[] reference, Vector3[] positions, Quaternion[] rotations, int seed = 0)
     {
@@ -308,7 +310,16 @@ internal sealed class StanceDip
         }
 
         rig.Solve(root, q, positions, rotations);
-        return collision.LimbCollides(limb, positions, rotations, point) ? "enters the level" : null;
+        if (collision.LimbCollides(limb, positions, rotations, point))
+        {
+            return "enters the level";
+        }
+
+        // A loaded rig's foot skin blended with the shin sinks below the sole as the shin leans (a Rigify panda's, in
+        // a deep crouch on a tread tilted 8°: 1.7 cm): the dip goes no deeper than the skin stays on the ground.
+        return skinned && collision.HasSoleSkin(limb) && collision.SoleSink(limb, positions, rotations, point, Vector3.Normalize(normal)) > BodyCollision.SkinDepth
+            ? "would press its sole's skin into the ground"
+            : null;
     }
 
     /// <summary>

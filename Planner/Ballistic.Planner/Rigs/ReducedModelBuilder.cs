@@ -238,13 +238,26 @@ internal static class ReducedModelBuilder
     public const float SlopeSink = 0.05f;
 
     /// <summary>
+    /// How far (a share of the leg) the trunk may stand lower than in the contact pose in <see cref="WalkableSlope"/>
+    /// for a rig whose feet hold no slope at all (not even <see cref="SlopeStep"/>) at its height or
+    /// <see cref="SlopeSink"/> lower: a tenth of the leg, the hips then at 0.9 of it, still above the gait's cruise
+    /// (<see cref="Animation.WalkGait.CruiseHips"/>, 0.88) and the eye's upright walk. The tailed quadruped's straight
+    /// front legs cannot follow the trunk a fortieth of the leg at a twentieth lower (their solve stalls 2.5 mm short
+    /// at a joint's limit), and the panda's mid-stride legs hold the level there but no slope: both walked on
+    /// exactly level ground alone (0°). Rigs that hold a slope a twentieth lower keep that trial (the user's human and
+    /// dog: a tenth lower would give them the 35° cap, steeper than their gait walks well).
+    /// </summary>
+    public const float LowSlopeSink = 0.1f;
+
+    /// <summary>
     /// The steepest slope (degrees, a multiple of <see cref="SlopeStep"/>, at most
     /// <see cref="WalkingLimits.DefaultMaxSlopeDegrees"/>) the rig's feet can walk on: on a plane of that slope falling
     /// forward, backward, left or right, every foot of the rig holds the point under it in the contact pose by IK with
     /// its sole on the plane as the gait holds it (<see cref="SoleHold"/>), no bone below its effector (toes) under the
     /// plane, while the trunk, upright, stands over it and moves a tenth of <paramref name="legLength"/> either way
     /// along the plane: at the contact pose's height, or <see cref="SlopeSink"/> of the leg lower (legs straight in
-    /// their contact pose reach no further, and a walker lowers its hips). Ankles that cannot tilt the sole as far
+    /// their contact pose reach no further, and a walker lowers its hips), or <see cref="LowSlopeSink"/> lower for a
+    /// rig whose feet hold no slope at all a twentieth lower. Ankles that cannot tilt the sole as far
     /// as the ground does (a rig's joint limits) give a lower slope: the gait could not hold the feet there, so the
     /// planner does not walk there. 0 when the feet cannot even stand level.
     /// </summary>
@@ -253,12 +266,18 @@ internal static class ReducedModelBuilder
     public static float WalkableSlope(CharacterModel model, float legLength)
     {
         ArgumentNullException.ThrowIfNull(model);
-        var feet = new FootPlanes(model, legLength);
-        return Steepest(0f, degrees =>
-        {
-            float angle = degrees * MathF.PI / 180f;
-            return new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX }.All(down => feet.Hold((down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle))));
-        });
+        FootPlanes feet = Planes(model, legLength);
+        return Steepest(0f, degrees => feet.HoldAnyWay(degrees));
+    }
+
+    /// <summary>
+    /// The feet's test for <paramref name="model"/>: with the trunk <see cref="SlopeSink"/> lower where it holds the
+    /// gentlest slope (<see cref="SlopeStep"/>) any way there, else <see cref="LowSlopeSink"/> lower.
+    /// </summary>
+    private static FootPlanes Planes(CharacterModel model, float legLength)
+    {
+        var feet = new FootPlanes(model, legLength, SlopeSink);
+        return feet.HoldAnyWay(SlopeStep) ? feet : new FootPlanes(model, legLength, LowSlopeSink);
     }
 
     /// <summary>
@@ -278,7 +297,7 @@ internal static class ReducedModelBuilder
     public static float WalkableSlopeAlong(CharacterModel model, float legLength, float slope)
     {
         ArgumentNullException.ThrowIfNull(model);
-        var feet = new FootPlanes(model, legLength);
+        FootPlanes feet = Planes(model, legLength);
         float cosAcross = MathF.Cos(slope * MathF.PI / 180f);
         float planes = Steepest(slope, degrees =>
         {
@@ -331,13 +350,13 @@ internal static class ReducedModelBuilder
         /// <summary>The full IK (restarts and all) that places a foot on the plane under a lowered trunk before it is held.</summary>
         private readonly LimbIk _place;
 
-        /// <summary><see cref="SlopeSink"/> in metres.</summary>
+        /// <summary>How far the trunk may stand lower than in the contact pose, metres (<see cref="SlopeSink"/> or <see cref="LowSlopeSink"/> of the leg).</summary>
         private readonly float _sink;
 
         /// <summary>The trunk's places along the plane with the trunk lowered (metres): out to the shift, back to the other side, home again, a quarter of the shift at a time.</summary>
         private readonly float[] _fineShifts;
 
-        public FootPlanes(CharacterModel model, float legLength)
+        public FootPlanes(CharacterModel model, float legLength, float sink)
         {
             _model = model;
             Rig rig = model.Rig;
@@ -350,14 +369,21 @@ internal static class ReducedModelBuilder
             _stands = [.. _feet.Select(l => l.EffectorPosition(_positions, _rotations))];
             _below = [.. _feet.Select(l => Enumerable.Range(0, rig.Joints.Count).Where(j => j != l.EffectorJoint && rig.IsAncestor(l.EffectorJoint, j)).ToArray())];
             _shift = 0.1f * legLength;
-            _sink = SlopeSink * legLength;
+            _sink = sink * legLength;
             _fineShifts = [.. Enumerable.Range(0, 17).Select(i => (i <= 4 ? i : i <= 12 ? 8 - i : i - 16) * 0.25f * _shift)];
+        }
+
+        /// <summary>True when the feet hold planes of <paramref name="degrees"/> falling forward, backward, left and right (<see cref="Hold"/>).</summary>
+        public bool HoldAnyWay(float degrees)
+        {
+            float angle = degrees * MathF.PI / 180f;
+            return new[] { Vector3.UnitZ, -Vector3.UnitZ, Vector3.UnitX, -Vector3.UnitX }.All(down => Hold((down * MathF.Sin(angle)) + (Vector3.UnitY * MathF.Cos(angle))));
         }
 
         /// <summary>
         /// True when every foot holds the plane of unit normal <paramref name="normal"/> (rig frame: +Z forward, +X to
         /// the side) while the upright trunk moves forward and back along it, at the contact pose's height or
-        /// <see cref="SlopeSink"/> of the leg lower.
+        /// <see cref="_sink"/> lower.
         /// </summary>
         public bool Hold(Vector3 normal) => HoldAt(normal, 0f) || HoldAt(normal, _sink);
 

@@ -116,11 +116,14 @@ public sealed class WalkableSlopeTests
     [TestCase("human", 27.5f)]
     [TestCase("human-zup", 27.5f)]
     [TestCase("dog", 20f)]
+    [TestCase("tailed", 15f)]
+    [TestCase("panda", 12.5f)]
     public void RigsMadeElsewhereWithStraightLegsWalkOnSlopes(string name, float expected)
     {
         // Rigs made elsewhere stand on straight legs in their contact pose: moving the trunk a tenth of the leg over a
         // planted foot at that height is out of the leg's reach, so these walked on no slope at all (0°, the level
-        // only). A walker lowers its hips: with the trunk a twentieth of the leg lower they walk on slopes.
+        // only). A walker lowers its hips: with the trunk a twentieth of the leg lower they walk on slopes, and the
+        // tailed quadruped and the panda, whose feet hold no slope there, a tenth lower.
         string folder = Path.Combine(Path.GetTempPath(), $"ballistic-slope-{name}-{Environment.ProcessId}");
         try
         {
@@ -133,8 +136,8 @@ public sealed class WalkableSlopeTests
                 Assert.That(reduced.Walking.MaxSlopeAlongDegrees, Is.GreaterThanOrEqualTo(slope));
 
                 // An independent check: a fresh IK with restarts holds every foot flat on the derived slope falling
-                // each way with the trunk at its height or a twentieth of the leg lower.
-                Assert.That(AllFeetHold(model, slope) || AllFeetHold(model, slope, sink: ReducedModelBuilder.SlopeSink * leg), Is.True, $"{name}'s feet hold {slope}°");
+                // each way with the trunk at its height, or a twentieth or a tenth of the leg lower.
+                Assert.That(AllFeetHold(model, slope) || AllFeetHold(model, slope, sink: ReducedModelBuilder.SlopeSink * leg) || AllFeetHold(model, slope, sink: ReducedModelBuilder.LowSlopeSink * leg), Is.True, $"{name}'s feet hold {slope}°");
             });
         }
         finally
