@@ -117,17 +117,14 @@ public sealed class CharacterModel
     /// </summary>
     internal (float Ahead, float Behind) FeetAlongTrunk()
     {
-        var positions = new Vector3[Rig.Joints.Count];
-        var rotations = new Quaternion[Rig.Joints.Count];
-        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        Vector3[] effectors = ContactPoseEffectors();
         float ahead = 0f;
         float behind = 0f;
-        foreach (RigLimb limb in Limbs)
+        for (int l = 0; l < Limbs.Count; l++)
         {
-            if (limb.Kind == LimbKind.Foot)
+            if (Limbs[l].Kind == LimbKind.Foot)
             {
-                float z = limb.EffectorPosition(positions, rotations).Z;
-                (ahead, behind) = (MathF.Max(ahead, z), MathF.Max(behind, -z));
+                (ahead, behind) = (MathF.Max(ahead, effectors[l].Z), MathF.Max(behind, -effectors[l].Z));
             }
         }
 
@@ -142,14 +139,12 @@ public sealed class CharacterModel
     /// </summary>
     internal float TurnLimit(float share, float most)
     {
-        var positions = new Vector3[Rig.Joints.Count];
-        var rotations = new Quaternion[Rig.Joints.Count];
-        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        Vector3[] effectors = ContactPoseEffectors();
         float[] legs = LegLengths();
         float limit = most;
         for (int l = 0; l < Limbs.Count; l++)
         {
-            float ahead = MathF.Abs(Limbs[l].EffectorPosition(positions, rotations).Z);
+            float ahead = MathF.Abs(effectors[l].Z);
             if (legs[l] > 0f && ahead * most > share * legs[l])
             {
                 limit = MathF.Min(limit, share * legs[l] / ahead);
@@ -157,5 +152,14 @@ public sealed class CharacterModel
         }
 
         return limit;
+    }
+
+    /// <summary>Each limb's contact point (metres, trunk frame: the root at the origin, unturned) in the contact pose.</summary>
+    private Vector3[] ContactPoseEffectors()
+    {
+        var positions = new Vector3[Rig.Joints.Count];
+        var rotations = new Quaternion[Rig.Joints.Count];
+        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        return [.. Limbs.Select(l => l.EffectorPosition(positions, rotations))];
     }
 }

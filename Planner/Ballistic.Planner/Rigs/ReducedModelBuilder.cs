@@ -175,8 +175,9 @@ internal static class ReducedModelBuilder
             return walking;
         }
 
-        float slope = WalkableSlope(model, rootHeight);
-        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = WalkableSlopeAlong(model, rootHeight, slope), TurnRate = TurnRate(model), PitchSpan = PitchSpan(model) };
+        FootPlanes planes = Planes(model, rootHeight);
+        float slope = SteepestHeld(planes);
+        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = SteepestHeldAlong(planes, slope), TurnRate = TurnRate(model), PitchSpan = PitchSpan(model) };
     }
 
     /// <summary>
@@ -266,9 +267,11 @@ internal static class ReducedModelBuilder
     public static float WalkableSlope(CharacterModel model, float legLength)
     {
         ArgumentNullException.ThrowIfNull(model);
-        FootPlanes feet = Planes(model, legLength);
-        return Steepest(0f, degrees => feet.HoldAnyWay(degrees));
+        return SteepestHeld(Planes(model, legLength));
     }
+
+    /// <summary><see cref="WalkableSlope"/> on the feet's test made once.</summary>
+    private static float SteepestHeld(FootPlanes feet) => Steepest(0f, feet.HoldAnyWay);
 
     /// <summary>
     /// The feet's test for <paramref name="model"/>: with the trunk <see cref="SlopeSink"/> lower where it holds the
@@ -297,7 +300,12 @@ internal static class ReducedModelBuilder
     public static float WalkableSlopeAlong(CharacterModel model, float legLength, float slope)
     {
         ArgumentNullException.ThrowIfNull(model);
-        FootPlanes feet = Planes(model, legLength);
+        return SteepestHeldAlong(Planes(model, legLength), slope);
+    }
+
+    /// <summary><see cref="WalkableSlopeAlong"/> on the feet's test made once.</summary>
+    private static float SteepestHeldAlong(FootPlanes feet, float slope)
+    {
         float cosAcross = MathF.Cos(slope * MathF.PI / 180f);
         float planes = Steepest(slope, degrees =>
         {
@@ -350,6 +358,9 @@ internal static class ReducedModelBuilder
         /// <summary>The full IK (restarts and all) that places a foot on the plane under a lowered trunk before it is held.</summary>
         private readonly LimbIk _place;
 
+        /// <summary>Each plane's verdict (by its normal), once tested: the slope tests ask again for the planes they share.</summary>
+        private readonly Dictionary<Vector3, bool> _held = [];
+
         /// <summary>How far the trunk may stand lower than in the contact pose, metres (<see cref="SlopeSink"/> or <see cref="LowSlopeSink"/> of the leg).</summary>
         private readonly float _sink;
 
@@ -385,7 +396,15 @@ internal static class ReducedModelBuilder
         /// the side) while the upright trunk moves forward and back along it, at the contact pose's height or
         /// <see cref="_sink"/> lower.
         /// </summary>
-        public bool Hold(Vector3 normal) => HoldAt(normal, 0f) || HoldAt(normal, _sink);
+        public bool Hold(Vector3 normal)
+        {
+            if (!_held.TryGetValue(normal, out bool held))
+            {
+                _held[normal] = held = HoldAt(normal, 0f) || HoldAt(normal, _sink);
+            }
+
+            return held;
+        }
 
         /// <summary><see cref="Hold"/> with the trunk <paramref name="sink"/> metres lower than in the contact pose (0: at its height, each foot starting from its contact pose).</summary>
         private bool HoldAt(Vector3 normal, float sink)
