@@ -525,12 +525,86 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         StanceDip.Table table = DipOf(first, dips);
         if (Deep(first, table))
         {
-            return first;
+            return Tucked(first, dips);
         }
 
         // A little deeper than the least crouch: the dip is solved in steps, from the contact pose down.
         ContactConfiguration lower = _contacts.Generate(root, estimated, velocity, 1.2f * StanceDip.LeastDepthShare * table.Leg, onEstimates: true);
-        return lower.Valid && DipOf(lower, dips).Depth > table.Depth ? lower : first;
+        return Tucked(lower.Valid && DipOf(lower, dips).Depth > table.Depth ? lower : first, dips);
+    }
+
+    /// <summary>
+    /// Most (radians, 15°) a free limb's joint turns between two depths of a dip before the limb is held tucked in the
+    /// stance itself (<see cref="Tucked"/>).
+    /// </summary>
+    private const float TuckedAtOnce = 15f * MathF.PI / 180f;
+
+    /// <summary>The depths below a dip's contact pose, of its twelve, at which a free limb tucked at once is held tucked in the stance (<see cref="Tucked"/>): its first third, which a drive up crosses fastest.</summary>
+    private const int TuckRows = 4;
+
+    /// <summary>
+    /// <paramref name="config"/> with each free limb that its dip tucks at once near the contact pose (a joint turning
+    /// more than <see cref="TuckedAtOnce"/> between two of its first <see cref="TuckRows"/> depths: a free foot
+    /// hovering just above a dune, which a slight sink would put into it) already tucked as at that depth, where the
+    /// limb is clear of the level in the contact pose and the body dips as deep: the stance shows the limb tucked, and its flight leaves from the tuck.
+    /// Before, the limb folded as the crouch began and unfolded in the last 1/240 s of its drive up, as it reached the
+    /// contact pose again: a Rigify panda's forearm turned 101° in one displayed frame at takeoff.
+    /// </summary>
+    private ContactConfiguration Tucked(ContactConfiguration config, Dictionary<ContactConfiguration, StanceDip.Table> dips)
+    {
+        StanceDip.Table table = DipOf(config, dips);
+        if (!config.Valid || table.Angles.Length < 2)
+        {
+            return config;
+        }
+
+        float[]? angles = null;
+        var tucked = new List<RigLimb>();
+        for (int l = 0; l < Model.Limbs.Count; l++)
+        {
+            RigLimb limb = Model.Limbs[l];
+            if (config.ContactOf(l) is not null)
+            {
+                continue;
+            }
+
+            for (int r = 1; r <= Math.Min(TuckRows, table.Angles.Length - 1); r++)
+            {
+                float most = 0f;
+                foreach (int d in limb.ChainDofSpan)
+                {
+                    most = MathF.Max(most, MathF.Abs(table.Angles[r][d] - table.Angles[r - 1][d]));
+                }
+
+                if (most > TuckedAtOnce)
+                {
+                    angles ??= (float[])config.Angles.Clone();
+                    foreach (int d in limb.ChainDofSpan)
+                    {
+                        angles[d] = table.Angles[r][d];
+                    }
+
+                    tucked.Add(limb);
+                    break;
+                }
+            }
+        }
+
+        if (angles is null)
+        {
+            return config;
+        }
+
+        var positions = new Vector3[Model.Rig.Joints.Count];
+        var rotations = new Quaternion[Model.Rig.Joints.Count];
+        Model.Rig.Solve(config.Root, angles, positions, rotations);
+        if (tucked.Any(limb => _collision.LimbCollides(limb, positions, rotations, null)))
+        {
+            return config;
+        }
+
+        ContactConfiguration held = config with { Angles = angles };
+        return DipOf(held, dips).Depth >= table.Depth - 1e-5f ? held : config;
     }
 
     /// <summary>

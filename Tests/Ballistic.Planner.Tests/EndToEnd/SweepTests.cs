@@ -44,9 +44,9 @@ public sealed class SweepTests
     private static readonly (string Rig, string Level)[] ForeignRigs =
     [
         ("human", "block"), ("human", "stairs"), ("human-zup", "thin-slabs"), ("dog", "block"), ("dog", "curved"),
-        ("tailed", "stairs"), ("tailed", "holes-debris"), ("dog", "doorway"), ("human", "doorway"),
-        ("panda", "block"), ("panda", "holes-debris"), ("panda", "doorway"), ("panda", "stairs"),
-        ("spider", "block"), ("spider", "doorway"),
+        ("tailed", "stairs"), ("tailed", "holes-debris"), ("tailed", "curved"), ("dog", "doorway"), ("human", "doorway"),
+        ("panda", "block"), ("panda", "holes-debris"), ("panda", "doorway"), ("panda", "stairs"), ("panda", "curved"),
+        ("spider", "block"), ("spider", "doorway"), ("spider", "curved"),
     ];
 
     /// <summary>The reports of every case run, by case name, for the whole-sweep share.</summary>
@@ -191,9 +191,25 @@ public sealed class SweepTests
     /// second leg stood 0.62 L sideways of its place. The goal is on a 0.8 m crate, the spider's legs 1.3 m across, and
     /// it lands turned 23° to the crate's sides: no foot held on the top can stand within 0.35 L of its place. Empty
     /// again since the eye measures a foot whose ground ends short of its place from where the ground ends (the feet
-    /// gathered on the top by its edges; 2026-12-04).
+    /// gathered on the top by its edges; 2026-12-04). Since the tailed quadruped, the panda and the spider joined the
+    /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it lists six of their
+    /// plans. The panda takes off 143° off its way (request 1) and 173° (request 2): jumps the facer left as searched
+    /// on the dunes (on request 2, one whose takeoff it could not turn, then landed on a stance turned for the jump
+    /// after it), and no search again found a way round them within 1.5 times the first path's cost (with four
+    /// searches again up to twice the cost, request 1 faces its way; request 2 does not). On
+    /// request 1 a hind foot's skin, blended a fifth with the shin, sinks 1.6 cm at a landing (the eye allows 1.5).
+    /// Every one of the spider's four requests floats a foot 1.5–2.0 cm above the ground at a step's touch-down or
+    /// lift-off: its tarsus skin is weighted a fifth to the tibia, so the drawn foot rises 1.1 cm off the rigid foot
+    /// the gait holds on the ground as the tibia leans, and the foot is still up to 0.8 cm off its point in the steps
+    /// a hold reaches back and on (within the gait's touch). And three of them stand a foot 0.36–0.44 L sideways of
+    /// its place, on dune sides up to 34° across its way, which its level trunk does not roll with.
     /// </summary>
-    private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal);
+    private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
+    {
+        ["facing"] = ["foreign rig/curved/panda/0", "foreign rig/curved/panda/1"],
+        ["soles"] = ["foreign rig/curved/panda/0", "foreign rig/curved/spider/0", "foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
+        ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
+    };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
     internal static IEnumerable<(string Name, AnimatorEye.Criterion Criterion)> Animated(AnimatorEye.Look look) =>
@@ -208,9 +224,12 @@ public sealed class SweepTests
     /// that turns a joint three times as fast as in the fine step before is passed over, 162 since a swinging leg
     /// eases over a frame into a solve past 15° a fine step, 114 since a held foot's leg does too, 110 since rigs made
     /// elsewhere walk slopes, 109 since a quadruped's walking trunk pitches with the ground, 98 since the tailed
-    /// quadruped and the panda walk slopes too. Lower it as snaps are removed; it only goes down.
+    /// quadruped and the panda walk slopes too; 115 once the tailed quadruped, the panda and the spider joined the
+    /// sweep on the curved terrain (2026-12-06: 1, 13 and 3 frames), 97 since a free limb that a dip tucks at once
+    /// near the contact pose stands tucked in the stance (<c>JumpAnimator.Tucked</c>: the panda's 13 frames on the
+    /// curved terrain down to 1, its 6 on the stairs to none). Lower it as snaps are removed; it only goes down.
     /// </summary>
-    private const int MostSnapFrames = 98;
+    private const int MostSnapFrames = 97;
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, at most one request per
