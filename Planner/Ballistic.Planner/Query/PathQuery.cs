@@ -567,8 +567,13 @@ public sealed class PathQuery
         yield return result with { Expansions = expansions };
     }
 
-    /// <summary>How many times at most a request searches again without the jumps it could not turn to face (<see cref="JumpFacer.Unturned"/>).</summary>
-    internal const int FacingSearches = 2;
+    /// <summary>
+    /// How many times at most a request searches again without the jumps it could not turn to face
+    /// (<see cref="JumpFacer.Unturned"/>). Three since 2026-12-06: with two, a Rigify panda crossing the curved terrain
+    /// kept a 2.3 m jump taking off 143° off its way that the third search goes round; a warm desert node-to-node
+    /// request then expands 104 nodes on average instead of 88 (about a tenth more time).
+    /// </summary>
+    internal const int FacingSearches = 3;
 
     /// <summary>A path searched again without unturned jumps is taken only when it costs at most this times the first one searched.</summary>
     internal const float FacingDetour = 1.5f;

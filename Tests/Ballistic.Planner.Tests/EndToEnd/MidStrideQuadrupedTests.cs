@@ -159,7 +159,8 @@ public sealed class MidStrideQuadrupedTests
     /// and just clear of the sand, and its crouch tucks that foot 20 cm up. Checked clear only half-way between two rows
     /// of the dip, the foot swept 2 mm through the sand a third of the way ("front_L sole in the level at 0.050 s"): a
     /// free limb is now checked at seven points between rows (<c>StanceDip</c>). Its eye criteria are not asserted: it
-    /// still takes off once 143° off its way and sinks a sole 1.6 cm (issue 24).
+    /// still sinks a sole 1.6 cm at a landing (issue 24; it took off once 143° off its way until a request searched
+    /// again three times at most).
     /// </summary>
     [Test]
     public void OnTheCurvedTerrainTheCrouchTucksAFreeForefootClearOfTheDune() => FullyRightOn("curved", 0);
