@@ -559,7 +559,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         float[]? angles = null;
-        var tucked = new List<RigLimb>();
+        List<RigLimb>? tucked = null;
         for (int l = 0; l < Model.Limbs.Count; l++)
         {
             RigLimb limb = Model.Limbs[l];
@@ -584,13 +584,13 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                         angles[d] = table.Angles[r][d];
                     }
 
-                    tucked.Add(limb);
+                    (tucked ??= []).Add(limb);
                     break;
                 }
             }
         }
 
-        if (angles is null)
+        if (angles is null || tucked is null)
         {
             return config;
         }
