@@ -757,7 +757,12 @@ internal sealed class WalkGait
         return best;
     }
 
-    /// <summary>IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a surface of normal <paramref name="normal"/>, or rolled onto its ball where it cannot lie flat (<see cref="SoleHold"/>).</summary>
+    /// <summary>
+    /// IK putting <paramref name="limb"/>'s contact point on <paramref name="point"/>, its contact face against a
+    /// surface of normal <paramref name="normal"/>, or rolled onto its ball where it cannot lie flat
+    /// (<see cref="SoleHold"/>); a loaded rig's foot held up to <see cref="MostRaised"/> higher where its skin would
+    /// sink, and not held at all (false) where its skin would still sink deeper than <see cref="SinkAllowed"/>.
+    /// </summary>
     private bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 normal, Vector3? ball = null)
     {
         if (!_sole.Hold(root, q, limb, point, normal, _groundUnder, ball))
@@ -783,13 +788,18 @@ internal sealed class WalkGait
             return true;
         }
 
+        // Where the leg cannot hold it that high, or even MostRaised leaves the skin deeper than SinkAllowed (a Rigify
+        // panda's hind foot on a debris slab, its shin leaning: 2.4 cm), the foot cannot hold there: the GLB would draw
+        // its sole in the ground.
         float[] raised = (float[])q.Clone();
-        if (_sole.Hold(root, raised, limb, point + (up * MathF.Min(sink - SkinSettle, MostRaised)), normal, _groundUnder))
+        if (!_sole.Hold(root, raised, limb, point + (up * MathF.Min(sink - SkinSettle, MostRaised)), normal, _groundUnder))
         {
-            Array.Copy(raised, q, q.Length);
+            return false;
         }
 
-        return true;
+        Array.Copy(raised, q, q.Length);
+        _model.Rig.Solve(root, q, positions, rotations);
+        return !(_collision.SoleSink(limb, positions, rotations, point, up) > SinkAllowed);
     }
 
     /// <summary>How far (metres) a loaded rig's foot skin may sink below a held sole before the foot is held higher (<see cref="BodyCollision.SoleSink"/>): as deep as any skin may lie inside the level (<see cref="BodyCollision.SkinDepth"/>).</summary>
@@ -3410,6 +3420,36 @@ internal sealed class WalkGait
         /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
         /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
         /// </summary>
+        /// <summary>
+        /// How far (metres, along its normal) the foot touching down on <paramref name="target"/> at fine step
+        /// <paramref name="b"/> from <paramref name="seed"/> will be held above its point: a loaded rig's foot is held
+        /// higher where its skin would sink (<see cref="WalkGait.Hold"/>), so its swing comes down there, not to the point
+        /// its skin would sink from. 0 for a foot without skin, or one that cannot hold the point.
+        /// </summary>
+        private float Raised(RigLimb limb, int b, float[] seed, Holding target)
+        {
+            if (!_gait._collision.HasSoleSkin(limb))
+            {
+                return 0f;
+            }
+
+            float[] q = (float[])_angles[b].Clone();
+            foreach (int d in limb.ChainDofSpan)
+            {
+                q[d] = seed[d];
+            }
+
+            if (!_gait.Hold(_roots[b], q, limb, target.Point, target.Normal))
+            {
+                return 0f;
+            }
+
+            // Above the IK's own tolerance only: a foot held on its point is not lifted by the solve's error.
+            _rig.Solve(_roots[b], q, _positions, _rotations);
+            float raised = Vector3.Dot(limb.EffectorPosition(_positions, _rotations) - target.Point, Vector3.Normalize(target.Normal));
+            return raised > _gait._sole.Flat.Settings.PositionTolerance ? raised : 0f;
+        }
+
         private void Swing(int l, Swinging swing, Segment? previous, Segment? next)
         {
             RigLimb limb = _model.Limbs[l];
@@ -3427,7 +3467,8 @@ internal sealed class WalkGait
                 (contact0, ground0) = (held.Point, held.Normal);
                 if (Vector3.Distance(p0, held.Point) <= 2f * _gait._sole.Flat.Settings.PositionTolerance)
                 {
-                    (p0, n0) = (held.Point, -held.Normal);
+                    // On the point, at the height the hold left it (held higher where its skin would sink: Hold).
+                    (p0, n0) = (held.Point + (held.Normal * MathF.Max(0f, Vector3.Dot(p0 - held.Point, held.Normal))), -held.Normal);
                 }
             }
 
@@ -3440,6 +3481,7 @@ internal sealed class WalkGait
             {
                 (p1, n1, contact1, ground1) = (target.Point, -target.Normal, target.Point, target.Normal);
                 endAngles = target.Seed ?? (target.Settle ? _end.Angles : Stance(Time(b) / _walk.Duration));
+                p1 += target.Normal * Raised(limb, b, endAngles, target);
             }
             else
             {

@@ -197,8 +197,9 @@ public sealed class SweepTests
     /// dunes (then landed on a stance turned for the jump after it), and no search again finds a way round it within
     /// 1.5 times the first path's cost. (Request 1 took off 143° off its way while a request searched again twice at
     /// most, not three times: <see cref="PathQuery.FacingSearches"/>.) On
-    /// request 1 a hind foot's skin, blended a fifth with the shin, sinks 1.6 cm at a landing (the eye allows 1.5).
-    /// Every one of the spider's four requests floats a foot 1.5–2.0 cm above the ground at a step's touch-down or
+    /// request 1 a hind foot's skin, blended a fifth with the shin, sank 1.6 cm (the eye allows 1.5) as a walk's step
+    /// touched down: the swing came down to the foothold, 3 mm below where the hold then raised the foot for its skin
+    /// (off the list since a swing comes down to the height its hold holds the foot at). Every one of the spider's four requests floats a foot 1.5–2.0 cm above the ground at a step's touch-down or
     /// lift-off: its tarsus skin is weighted a fifth to the tibia, so the drawn foot rises 1.1 cm off the rigid foot
     /// the gait holds on the ground as the tibia leans, and the foot is still up to 0.8 cm off its point in the steps
     /// a hold reaches back and on (within the gait's touch). And three of them stand a foot 0.36–0.44 L sideways of
@@ -207,7 +208,7 @@ public sealed class SweepTests
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
         ["facing"] = ["foreign rig/curved/panda/1"],
-        ["soles"] = ["foreign rig/curved/panda/0", "foreign rig/curved/spider/0", "foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
+        ["soles"] = ["foreign rig/curved/spider/0", "foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
         ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
     };
 
