@@ -67,6 +67,9 @@ internal sealed class BodyCollision
 
     /// <summary>Per limb: the probes of its foot's skin (<see cref="SoleSink"/>).</summary>
     private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _soleProbes;
+
+    /// <summary>Per limb: its foot's skin as the GLB draws it (<see cref="SoleHeight"/>): a bone's blended points where it has any, else its own.</summary>
+    private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _drawnSoleProbes;
     private readonly (int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes)[] _freeSkins;
 
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
@@ -186,6 +189,11 @@ internal sealed class BodyCollision
         _soleProbes = [.. Enumerable.Range(0, model.Limbs.Count).Select(l => model.Source is null ? [] : _probes[l]
             .Where(p => p.Joint == model.Limbs[l].EffectorJoint || rig.IsAncestor(model.Limbs[l].EffectorJoint, p.Joint)).ToArray())];
 
+        // The points a bone's skin is probed with stand rigidly on it, the blended ones among them too; where that skin
+        // is blended with another bone's (a spider's tarsus, a fifth to its tibia), its blended points are where the GLB
+        // draws it.
+        _drawnSoleProbes = [.. _soleProbes.Select(probes => probes.Where(p => p.Blend is not null || !probes.Any(o => o.Blend is not null && o.Joint == p.Joint)).ToArray())];
+
         // The skin of bones that belong to no limb: those that carry none and hang from none (a tail's tip reaches past
         // its last joint, a head) and the trunk's (a pelvis, a spine, the root bone too: the desert skeleton's pelvis
         // sank 3.3 cm into a dune as it crouched to jump).
@@ -275,6 +283,24 @@ internal sealed class BodyCollision
         }
 
         return deepest;
+    }
+
+    /// <summary>
+    /// How high (metres, along <paramref name="normal"/>) the lowest skin point of <paramref name="limb"/>'s foot, as
+    /// the GLB draws it, lies above the ground plane through <paramref name="contact"/>, negative below it; +∞ where the
+    /// rig has no skin (a character built in code). A loaded rig's foot skin blended with the shin (a spider's tarsus:
+    /// a fifth) rises off its sole as the shin leans.
+    /// </summary>
+    public float SoleHeight(RigLimb limb, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations, Vector3 contact, Vector3 normal)
+    {
+        ArgumentNullException.ThrowIfNull(limb);
+        float lowest = float.PositiveInfinity;
+        foreach ((int Joint, Vector3 Point, SkinBlend[]? Blend) probe in _drawnSoleProbes[IndexOf(limb)])
+        {
+            lowest = MathF.Min(lowest, Vector3.Dot(Posed(probe, positions, rotations) - contact, normal));
+        }
+
+        return lowest;
     }
 
     /// <summary>Whether <paramref name="limb"/>'s foot has skin <see cref="SoleSink"/> reads (a loaded rig's); false for a character built in code.</summary>
