@@ -19,6 +19,8 @@ public sealed class BodySkinTests
 {
     private static readonly Lazy<CharacterModel> Tailed = new(() => ForeignCharacters.Named("tailed").Load().Model);
 
+    private static readonly Lazy<CharacterModel> Spider = new(() => ForeignCharacters.Named("spider").Load().Model);
+
     private static (Vector3[] Positions, Quaternion[] Rotations) Solve(CharacterModel model, RootPose root)
     {
         var positions = new Vector3[model.Rig.Joints.Count];
@@ -208,6 +210,51 @@ public sealed class BodySkinTests
             Assert.That(Sink(lowest + 0.05f), Is.GreaterThanOrEqualTo(0.05f - 1e-4f), "a plane 5 cm above the foot's lowest skin point");
             Assert.That(Sink(lowest - 0.5f), Is.EqualTo(0f), "a plane half a metre under the foot");
             Assert.That(builtCollision.SoleSink(built.Limbs[0], builtPositions, builtRotations, new Vector3(0f, 10f, 0f), Vector3.UnitY), Is.EqualTo(0f), "a character built in code");
+        });
+    }
+
+    /// <summary>
+    /// A foot's sole where the GLB draws it (<see cref="BodyCollision.SoleHeight"/>, by which a walking step's first and
+    /// last moments count in its contact phase only while the drawn foot touches the ground): the spider's tarsus skin
+    /// is blended a fifth with its tibia, so as the tarsus joint bends, the drawn sole leaves the points that stand
+    /// rigidly on the tarsus. In the contact pose the lowest drawn point is the lowest rigid one; with the tarsus
+    /// turned 0.5 rad about its third axis it stands at least 2 mm above it, 2.7 mm measured (on a dune's 34° side,
+    /// as the tibia leaned over a held foot, the drawn foot stood about 1 cm above the rigid one, and the spider's feet
+    /// floated 1.5–2.0 cm in walks where the rigid points were read); a character built in code has no skin and
+    /// reads +∞.
+    /// </summary>
+    [Test]
+    public void AFootsSoleIsReadWhereTheGlbDrawsItNotWhereItsRigidPointsStand()
+    {
+        CharacterModel model = Spider.Value;
+        RigLimb leg = model.Limbs[0];
+        Level floor = new LevelBuilder("floor").AddFloor(-2f, -2f, 2f, 2f, 0f).Build();
+        var collision = new BodyCollision(new TriangleBvh(floor.Triangles), model, floor.Triangles);
+        var root = new RootPose(new Vector3(0f, 1f, 0f), Quaternion.Identity);
+
+        // The lowest drawn point and the lowest of every point read off a plane a metre above the foot.
+        (float Drawn, float Rigid) Lowest(float bend)
+        {
+            float[] q = (float[])model.ContactPose.Clone();
+            q[model.Rig.FirstDof(leg.EffectorJoint) + 2] += bend;
+            var positions = new Vector3[model.Rig.Joints.Count];
+            var rotations = new Quaternion[model.Rig.Joints.Count];
+            model.Rig.Solve(root, q, positions, rotations);
+            var above = new Vector3(positions[leg.EffectorJoint].X, positions[leg.EffectorJoint].Y + 1f, positions[leg.EffectorJoint].Z);
+            return (above.Y + collision.SoleHeight(leg, positions, rotations, above, Vector3.UnitY), above.Y - collision.SoleSink(leg, positions, rotations, above, Vector3.UnitY));
+        }
+
+        (float drawn, float rigid) = Lowest(-0.5f);
+        (float drawnInPose, float rigidInPose) = Lowest(0f);
+        CharacterModel built = CharacterPresets.Model("skeleton");
+        (Vector3[] builtPositions, Quaternion[] builtRotations) = Solve(built, root);
+        var builtCollision = new BodyCollision(new TriangleBvh(floor.Triangles), built, floor.Triangles);
+        Assert.Multiple(() =>
+        {
+            Assert.That(model.Rig.DofsOf(leg.EffectorJoint), Is.EqualTo(3), "the tarsus joint turns about three axes");
+            Assert.That(drawnInPose, Is.EqualTo(rigidInPose).Within(1e-4f), "in the contact pose the drawn sole is the rigid one");
+            Assert.That(drawn - rigid, Is.GreaterThanOrEqualTo(0.002f), $"bent: drawn {drawn:0.0000} m, rigid {rigid:0.0000} m");
+            Assert.That(builtCollision.SoleHeight(built.Limbs[0], builtPositions, builtRotations, Vector3.Zero, Vector3.UnitY), Is.EqualTo(float.PositiveInfinity), "a character built in code");
         });
     }
 }
