@@ -88,17 +88,20 @@ public sealed class ThreadMisuseTests
     }
 
     /// <summary>
-    /// Eight threads make calls (<paramref name="call"/>, each with its own seeded random) while this one steps 240
-    /// ticks; returns how often each status came back and every exception thrown, on either side.
+    /// Eight threads make calls (<paramref name="call"/>, each with its own seeded random) while this one steps, once
+    /// all of them are calling, 240 ticks and on until calls have both met a tick and fallen between ticks (30 s at
+    /// most); returns how often each status came back and every exception thrown, on either side.
     /// </summary>
     private static (ConcurrentDictionary<RuntimeStatus, int> Statuses, ConcurrentQueue<Exception> Thrown) Race(int seed, Action step, Func<Random, RuntimeResult> call)
     {
         var statuses = new ConcurrentDictionary<RuntimeStatus, int>();
         var thrown = new ConcurrentQueue<Exception>();
         int stop = 0;
+        using var calling = new CountdownEvent(8);
         Thread[] threads = [.. Enumerable.Range(0, 8).Select(t => new Thread(() =>
         {
             var random = new Random(seed + t);
+            bool first = true;
             while (Volatile.Read(ref stop) == 0)
             {
                 try
@@ -109,6 +112,12 @@ public sealed class ThreadMisuseTests
                 {
                     thrown.Enqueue(e);
                 }
+
+                if (first)
+                {
+                    first = false;
+                    calling.Signal();
+                }
             }
         }))];
         foreach (Thread thread in threads)
@@ -118,7 +127,12 @@ public sealed class ThreadMisuseTests
 
         try
         {
-            for (int tick = 0; tick < 240; tick++)
+            // Ticks once every thread is calling, 240 of them and on until calls have both met a tick and fallen
+            // between ticks (30 s at most): on two cores the threads may be scheduled only after 240 quick ticks
+            // (a clean clone's CI run saw no call refused), so whether they met is left to the scheduler no longer.
+            calling.Wait(TimeSpan.FromSeconds(30));
+            var clock = System.Diagnostics.Stopwatch.StartNew();
+            for (int tick = 0; tick < 240 || (!Met(statuses) && clock.Elapsed < TimeSpan.FromSeconds(30)); tick++)
             {
                 step();
             }
@@ -138,6 +152,10 @@ public sealed class ThreadMisuseTests
 
         return (statuses, thrown);
     }
+
+    /// <summary>True once calls have been refused for meeting a tick and done between ticks.</summary>
+    private static bool Met(ConcurrentDictionary<RuntimeStatus, int> statuses) =>
+        statuses.GetValueOrDefault(RuntimeStatus.Busy) > 0 && statuses.GetValueOrDefault(RuntimeStatus.Ok) > 0;
 
     /// <summary>Removes <paramref name="agent"/>, asking again while the world's thread is busy (a refused call did nothing).</summary>
     private static RuntimeResult Remove(JumpWorld world, AgentHandle agent)
