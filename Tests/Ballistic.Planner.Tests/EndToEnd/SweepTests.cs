@@ -192,7 +192,7 @@ public sealed class SweepTests
     /// it lands turned 23° to the crate's sides: no foot held on the top can stand within 0.35 L of its place. Empty
     /// again since the eye measures a foot whose ground ends short of its place from where the ground ends (the feet
     /// gathered on the top by its edges; 2026-12-04). Since the tailed quadruped, the panda and the spider joined the
-    /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it listed five of their
+    /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it listed six of their
     /// plans (four now). The panda takes off 173° off its way on request 2: a jump whose takeoff the facer could not turn on the
     /// dunes (then landed on a stance turned for the jump after it), and no search again finds a way round it within
     /// 1.5 times the first path's cost. (Request 1 took off 143° off its way while a request searched again twice at
