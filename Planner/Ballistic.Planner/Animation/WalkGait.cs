@@ -3041,7 +3041,7 @@ internal sealed class WalkGait
                 int earliest = h > 0 ? ((holds[h - 1].To + hold.From) / 2) + 1 : 0;
                 int latest = h + 1 < holds.Count ? (hold.To + holds[h + 1].From) / 2 : _steps;
                 int from = hold.From;
-                while (from > earliest && Near(l, from - 1, hold.Point) && Grounded(l, from - 1, hold))
+                while (from > earliest && Touching(l, from - 1, hold))
                 {
                     from--;
                 }
@@ -3068,7 +3068,7 @@ internal sealed class WalkGait
 
                     if (r == runs.Count - 1)
                     {
-                        while (b < latest && Near(touching, b + 1, point) && (onBall || Grounded(l, b + 1, hold)))
+                        while (b < latest && (onBall ? Near(touching, b + 1, point) : Touching(l, b + 1, hold)))
                         {
                             b++;
                         }
@@ -3139,22 +3139,19 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// True when limb <paramref name="l"/>'s foot skin, as the GLB draws it at fine step <paramref name="i"/>, lies
-        /// within <see cref="BodyCollision.SkinDepth"/> of <paramref name="hold"/>'s ground; always for a foot without
-        /// skin. A swing's first and last steps, within <see cref="Touch"/> of the foothold, count in its contact phase
-        /// only while the drawn foot touches the ground: a spider's tarsus skin, blended a fifth with its tibia, is drawn
-        /// 1.1 cm above the rigid foot, and 0.8 cm more off the ground is a foot in the air.
+        /// True when limb <paramref name="l"/>'s effector lies within <see cref="Touch"/> of <paramref name="hold"/>'s
+        /// point at fine step <paramref name="i"/> (<see cref="Near(int, int, Vector3)"/>) and a loaded rig's foot skin,
+        /// as the GLB draws it, within <see cref="BodyCollision.SkinDepth"/> of the hold's ground. A swing's first and
+        /// last steps count in its contact phase only while the drawn foot touches the ground: a spider's tarsus skin,
+        /// blended a fifth with its tibia, is drawn 1.1 cm above the rigid foot, and 0.8 cm more off the ground is a
+        /// foot in the air.
         /// </summary>
-        private bool Grounded(int l, int i, Holding hold)
+        private bool Touching(int l, int i, Holding hold)
         {
             RigLimb limb = _model.Limbs[l];
-            if (!_gait._collision.HasSoleSkin(limb))
-            {
-                return true;
-            }
-
             _rig.Solve(_roots[i], _angles[i], _positions, _rotations);
-            return _gait._collision.SoleHeight(limb, _positions, _rotations, hold.Point, Vector3.Normalize(hold.Normal)) <= BodyCollision.SkinDepth;
+            return Vector3.Distance(limb.EffectorPosition(_positions, _rotations), hold.Point) <= Touch
+                && (!_gait._collision.HasSoleSkin(limb) || _gait._collision.SoleHeight(limb, _positions, _rotations, hold.Point, Vector3.Normalize(hold.Normal)) <= BodyCollision.SkinDepth);
         }
 
         /// <summary>True when limb <paramref name="l"/>'s effector lies within <see cref="Touch"/> of <paramref name="point"/> at fine step <paramref name="i"/>.</summary>
@@ -3435,11 +3432,6 @@ internal sealed class WalkGait
         }
 
         /// <summary>
-        /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
-        /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
-        /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
-        /// </summary>
-        /// <summary>
         /// How far (metres, along its normal) the foot touching down on <paramref name="target"/> at fine step
         /// <paramref name="b"/> from <paramref name="seed"/> will be held above its point: a loaded rig's foot is held
         /// higher where its skin would sink (<see cref="WalkGait.Hold"/>), so its swing comes down there, not to the point
@@ -3452,7 +3444,9 @@ internal sealed class WalkGait
                 return 0f;
             }
 
-            float[] q = (float[])_angles[b].Clone();
+            // In _along, which the touch-down's own solve fills again later.
+            float[] q = _along;
+            _angles[b].CopyTo(q, 0);
             foreach (int d in limb.ChainDofSpan)
             {
                 q[d] = seed[d];
@@ -3469,6 +3463,11 @@ internal sealed class WalkGait
             return raised > _gait._sole.Flat.Settings.PositionTolerance ? raised : 0f;
         }
 
+        /// <summary>
+        /// A swing from the limb's state at its first fine step (holding a point, or free) to the next segment's state
+        /// at its last: the effector on a lifted curve, the sole turning from one ground to the next where the leg can
+        /// keep it so, the limb's angles drawn toward its stance angles; raised until no bone touches the level.
+        /// </summary>
         private void Swing(int l, Swinging swing, Segment? previous, Segment? next)
         {
             RigLimb limb = _model.Limbs[l];

@@ -204,7 +204,7 @@ public sealed class SweepTests
     /// weighted a fifth to the tibia, so the drawn foot rises 1.1 cm off the rigid foot the gait holds on the ground as
     /// the tibia leans, and the hold's contact phase took in the steps before and after it in which the rigid foot was
     /// within the gait's touch (0.8 cm) of its point (off the list since those steps count only while the drawn foot
-    /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Grounded</c>). And three of them stand a foot 0.36–0.44 L
+    /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Touching</c>). And three of them stand a foot 0.36–0.44 L
     /// sideways of its place, on dune sides up to 34° across its way, which its level trunk does not roll with.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
