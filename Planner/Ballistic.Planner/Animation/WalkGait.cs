@@ -602,7 +602,7 @@ internal sealed class WalkGait
 
         public bool Equals(WalkKey? other) =>
             other is not null && _hash == other._hash && Walk.Speed == other.Walk.Speed && Walk.PitchSpan == other.Walk.PitchSpan && FrameRate == other.FrameRate
-            && Walk.From.Pose == other.Walk.From.Pose && Walk.To.Pose == other.Walk.To.Pose && Walk.Path.SequenceEqual(other.Walk.Path)
+            && Walk.From.Pose == other.Walk.From.Pose && Walk.To.Pose == other.Walk.To.Pose && Walk.Path.SequenceEqual(other.Walk.Path) && Walk.CrossGrades.SequenceEqual(other.Walk.CrossGrades)
             && Same(Start, other.Start) && Same(End, other.End);
 
         public override int GetHashCode() => _hash;

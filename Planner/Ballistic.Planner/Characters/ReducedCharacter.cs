@@ -207,6 +207,13 @@ public sealed class ReducedCharacter
                 // Characters whose limit is the same whichever way the ground falls keep the fingerprint they had.
                 Append(hash, Walking.MaxSlopeAlongDegrees);
             }
+
+            if (Walking.RollSpan > 0f)
+            {
+                // A trunk rolling with the ground checks and times its walks otherwise; others keep their fingerprint.
+                hash.AppendData("roll"u8);
+                Append(hash, Walking.RollSpan);
+            }
         }
 
         return HexText.Lower(hash.GetHashAndReset());

@@ -72,6 +72,16 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// </summary>
     public float PitchSpan { get; init; }
 
+    /// <summary>
+    /// Half the distance (metres, across the trunk) between the character's leftmost and rightmost feet when its
+    /// walking trunk rolls with the ground, or 0 (the default) for a trunk that walks level across: a spider or an
+    /// ant, whose legs sprawl out to its sides, keeps its body parallel to a dune's side, its uphill feet no higher
+    /// under it and its downhill feet no lower than on the level, at the ground's rise between the points this far
+    /// left and right of the walk's ground point (<see cref="Roadmaps.Walk.CrossGradeAt"/>); a mammal, whose legs stand
+    /// under its hips, keeps its trunk level across and stretches its downhill legs.
+    /// </summary>
+    public float RollSpan { get; init; }
+
     /// <summary>Tangent of <see cref="MaxSlopeAlongDegrees"/>: the most the ground rises or drops per metre walked.</summary>
     public float MaxGrade => MathF.Tan(MaxSlopeAlongDegrees * MathF.PI / 180f);
 
@@ -95,5 +105,6 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
         : CanWalk && StepHeight <= 0f ? "a walking character needs a positive step height"
         : !(TurnRate > 0f) || TurnRate > 100f ? $"the turn rate must lie between 0 and 100 radians per second, not {TurnRate}"
         : !(PitchSpan >= 0f) || !float.IsFinite(PitchSpan) || PitchSpan > 100f ? $"the span over which the trunk pitches with the ground must lie between 0 and 100 m, not {PitchSpan}"
+        : !(RollSpan >= 0f) || !float.IsFinite(RollSpan) || RollSpan > 100f ? $"the span over which the trunk rolls with the ground must lie between 0 and 100 m, not {RollSpan}"
         : null;
 }

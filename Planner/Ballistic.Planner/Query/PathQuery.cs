@@ -1281,8 +1281,10 @@ public sealed class PathQuery
     private static Walk Joined(Walk first, Walk second)
     {
         var points = new List<Vector3>(first.Path);
-        points.AddRange(second.Path.Skip(points[^1] == second.Path[0] ? 1 : 0));
-        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via], first.TurnRate, first.MaxGrade, first.PitchSpan)
+        int skip = points[^1] == second.Path[0] ? 1 : 0;
+        points.AddRange(second.Path.Skip(skip));
+        float[]? cross = first.CrossGrades.Count > 0 && second.CrossGrades.Count > 0 ? [.. first.CrossGrades, .. second.CrossGrades.Skip(skip)] : null;
+        return new Walk(first.From, second.To, points, first.Speed, [.. first.Via, first.To, .. second.Via], first.TurnRate, first.MaxGrade, first.PitchSpan, cross)
         {
             CutFrom = CutFrom([first, second], 0, 2),
             HoppedFrom = first.HoppedFrom.Count == 0 ? second.HoppedFrom : [.. first.HoppedFrom.Union(second.HoppedFrom)],

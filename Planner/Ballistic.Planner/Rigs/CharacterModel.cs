@@ -132,6 +132,38 @@ public sealed class CharacterModel
     }
 
     /// <summary>
+    /// How far (metres, along the trunk's left axis) the leftmost foot stands left of the trunk's centre and the
+    /// rightmost right of it in the contact pose (0 for either where no foot stands on that side), and the most any
+    /// foot stands out sideways of its own hip, as a share of its own leg (<see cref="LegLengths"/>).
+    /// </summary>
+    internal (float Left, float Right, float Sprawl) FeetAcrossTrunk()
+    {
+        Vector3[] effectors = ContactPoseEffectors();
+        float[] legs = LegLengths();
+        var positions = new Vector3[Rig.Joints.Count];
+        var rotations = new Quaternion[Rig.Joints.Count];
+        Rig.Solve(new RootPose(Vector3.Zero, Quaternion.Identity), ContactPose, positions, rotations);
+        float left = 0f;
+        float right = 0f;
+        float sprawl = 0f;
+        for (int l = 0; l < Limbs.Count; l++)
+        {
+            if (Limbs[l].Kind != LimbKind.Foot)
+            {
+                continue;
+            }
+
+            (left, right) = (MathF.Max(left, effectors[l].X), MathF.Max(right, -effectors[l].X));
+            if (legs[l] > 0f)
+            {
+                sprawl = MathF.Max(sprawl, MathF.Abs(effectors[l].X - positions[Limbs[l].RootJoint].X) / legs[l]);
+            }
+        }
+
+        return (left, right, sprawl);
+    }
+
+    /// <summary>
     /// The most a turn of the trunk about its up axis may be (radians, or radians per second), at most
     /// <paramref name="most"/>, so that no foot where the contact pose holds it is carried sideways under the trunk by
     /// more than <paramref name="share"/> of its own leg (<see cref="LegLengths"/>; per second for a rate): a trunk

@@ -447,7 +447,7 @@ public static class CharacterSpecFile
                 throw Error("key 'maxSlopeAlong'", $"{along} degrees is below the steepest slope walked any way ({slope} degrees, {(spec.MaxSlope is null ? "derived from the rig" : "key 'maxSlope'")}); give at least that.");
             }
 
-            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, slope, step) { MaxSlopeAlongDegrees = along, TurnRate = derived.TurnRate, PitchSpan = derived.PitchSpan }));
+            reduced = Named(() => reduced.WithWalking(new WalkingLimits(speed, slope, step) { MaxSlopeAlongDegrees = along, TurnRate = derived.TurnRate, PitchSpan = derived.PitchSpan, RollSpan = derived.RollSpan }));
         }
 
         return (model, reduced);

@@ -177,7 +177,7 @@ internal static class ReducedModelBuilder
 
         FootPlanes planes = Planes(model, rootHeight);
         float slope = SteepestHeld(planes);
-        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = SteepestHeldAlong(planes, slope), TurnRate = TurnRate(model), PitchSpan = PitchSpan(model) };
+        return walking with { MaxSlopeDegrees = slope, MaxSlopeAlongDegrees = SteepestHeldAlong(planes, slope), TurnRate = TurnRate(model), PitchSpan = PitchSpan(model), RollSpan = RollSpan(model) };
     }
 
     /// <summary>
@@ -221,6 +221,27 @@ internal static class ReducedModelBuilder
         (float ahead, float behind) = model.FeetAlongTrunk();
         float apart = PitchFeetApart * model.LegLengths().DefaultIfEmpty(0f).Max();
         return apart > 0f && ahead >= apart && behind >= apart ? 0.5f * (ahead + behind) : 0f;
+    }
+
+    /// <summary>
+    /// Least distance (a share of its own leg) some foot stands out sideways of its hip in the contact pose for the
+    /// rig's walking trunk to roll with the ground (<see cref="RollSpan"/>): legs that sprawl, a spider's (1.5 of its
+    /// leg) or an ant's (1.7), not a mammal's under its hips (0 for every quadruped and biped made here or elsewhere).
+    /// </summary>
+    public const float SprawlShare = 0.5f;
+
+    /// <summary>
+    /// Half the distance (metres) between the rig's leftmost and rightmost feet in the contact pose, across the
+    /// trunk, when some foot stands at least <see cref="SprawlShare"/> of its own leg out sideways of its hip (a
+    /// spider, an ant): its walking trunk rolls with the ground over that span (<see cref="WalkingLimits.RollSpan"/>),
+    /// so that on a dune's side its downhill feet reach the ground where they stand on the level, not under its body.
+    /// 0 for a rig whose feet stand under its hips: its trunk walks level across.
+    /// </summary>
+    public static float RollSpan(CharacterModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        (float left, float right, float sprawl) = model.FeetAcrossTrunk();
+        return sprawl >= SprawlShare && left > 0f && right > 0f ? 0.5f * (left + right) : 0f;
     }
 
     /// <summary>Steps (degrees) of the slopes tried by <see cref="WalkableSlope"/>.</summary>

@@ -51,6 +51,9 @@ public sealed record Walk : Move
     private RoadmapNode _to;
     private readonly float[] _distances;
 
+    /// <summary>The ground's rise per metre toward the walker's left at each path point (<see cref="CrossGrades"/>), or <c>null</c>: the trunk does not roll.</summary>
+    private readonly float[]? _cross;
+
     /// <summary>Finds the segment under a distance in <see cref="_distances"/> (<see cref="PointAt(float)"/>).</summary>
     private readonly SortedLookup _lookup;
 
@@ -114,9 +117,14 @@ public sealed record Walk : Move
     /// Half the distance (metres) between the walker's foremost and hindmost feet, over which its trunk pitches with
     /// the ground (<see cref="WalkingLimits.PitchSpan"/>, <see cref="PitchSpan"/>); 0 (the default): the trunk walks level.
     /// </param>
-    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, or a negative grade or pitch span.</exception>
-    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity, float pitchSpan = 0f)
-        : this(from, to, path, speed, via, turnRate, maxGrade, pitchSpan, [], 1f)
+    /// <param name="crossGrades">
+    /// For a walker whose trunk rolls with the ground (<see cref="WalkingLimits.RollSpan"/>): the ground's rise per
+    /// metre toward the walker's left (across the path, level) at each path point, one per point; walking, the
+    /// trunk's left axis rises at it (<see cref="PoseAtDistance(float)"/>). <c>null</c> (the default): the trunk does not roll.
+    /// </param>
+    /// <exception cref="ArgumentException">Fewer than two points, a point not finite, a speed or turn rate not positive, a negative grade or pitch span, or cross grades not one finite value per point.</exception>
+    public Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via = null, float turnRate = WalkingLimits.DefaultTurnRate, float maxGrade = float.PositiveInfinity, float pitchSpan = 0f, IReadOnlyList<float>? crossGrades = null)
+        : this(from, to, path, speed, via, turnRate, maxGrade, pitchSpan, crossGrades, [], 1f)
     {
     }
 
@@ -134,7 +142,7 @@ public sealed record Walk : Move
             throw new ArgumentOutOfRangeException(nameof(pace), pace, "A walk slows to a pace above 0 and at most 1.");
         }
 
-        return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, PitchSpan, stretches, pace);
+        return new(From, To, _path, Speed, Via, TurnRate, MaxGrade, PitchSpan, _cross, stretches, pace);
     }
 
     /// <summary>
@@ -157,7 +165,7 @@ public sealed record Walk : Move
         return copy;
     }
 
-    private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, float pitchSpan, IReadOnlyList<(float From, float To)> slowed, float slowPace)
+    private Walk(RoadmapNode from, RoadmapNode to, IReadOnlyList<Vector3> path, float speed, IReadOnlyList<RoadmapNode>? via, float turnRate, float maxGrade, float pitchSpan, IReadOnlyList<float>? crossGrades, IReadOnlyList<(float From, float To)> slowed, float slowPace)
     {
         ArgumentNullException.ThrowIfNull(from);
         ArgumentNullException.ThrowIfNull(to);
@@ -187,6 +195,12 @@ public sealed record Walk : Move
             throw new ArgumentException($"The span over which the trunk pitches must be finite and not negative, not {pitchSpan}.", nameof(pitchSpan));
         }
 
+        if (crossGrades is not null && (crossGrades.Count != path.Count || crossGrades.Any(g => !float.IsFinite(g))))
+        {
+            throw new ArgumentException($"A walk's cross grades must be one finite value per path point ({path.Count}), not {crossGrades.Count}{(crossGrades.Any(g => !float.IsFinite(g)) ? " with one not finite" : "")}.", nameof(crossGrades));
+        }
+
+        _cross = crossGrades is null ? null : [.. crossGrades];
         _path = [.. path];
         _distances = new float[_path.Length];
         for (int i = 0; i < _path.Length; i++)
@@ -217,8 +231,8 @@ public sealed record Walk : Move
         _pacedLength = _paced is null ? Length : _paced[^1];
         StartOffset = from.Pose.Position - _path[0];
         EndOffset = to.Pose.Position - _path[^1];
-        _startHeading = Facing(HeadingAt(0f), GradeAt(0f));
-        _endHeading = Facing(HeadingAt(Length), GradeAt(Length));
+        _startHeading = Facing(HeadingAt(0f), GradeAt(0f), CrossGradeAt(0f));
+        _endHeading = Facing(HeadingAt(Length), GradeAt(Length), CrossGradeAt(Length));
         _startTurn = RotationBlend.Between(from.Pose.Rotation, _startHeading);
         _endTurn = RotationBlend.Between(_endHeading, to.Pose.Rotation);
         StartTurn = TurnTime(Rotations.AngleBetween(from.Pose.Rotation, _startHeading));
@@ -416,6 +430,12 @@ public sealed record Walk : Move
     /// grade between the path points this far ahead and behind (<see cref="PoseAtDistance(float)"/>). 0: it walks level.
     /// </summary>
     public float PitchSpan { get; }
+
+    /// <summary>
+    /// The ground's rise per metre toward the walker's left at each path point, for a walker whose trunk rolls with
+    /// the ground (<see cref="WalkingLimits.RollSpan"/>); empty for one whose trunk does not roll.
+    /// </summary>
+    internal IReadOnlyList<float> CrossGrades => _cross ?? [];
 
     /// <summary>Length of the ground path, metres (3D, along the polyline).</summary>
     public float Length { get; }
@@ -634,12 +654,15 @@ public sealed record Walk : Move
         float u = Length > 0f ? distance / Length : 1f;
         Vector3 offset = Vector3.Lerp(_startUpright, _endUpright, Smooth(u));
         Vector3 position = PointAt(distance, ref segment) + offset;
-        if (PitchSpan > 0f)
+        if (PitchSpan > 0f || _cross is not null)
         {
             Vector3 heading = HeadingAt(distance, segment);
             float grade = GradeAt(distance);
-            Quaternion facing = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Facing(heading, grade);
-            return new RootPose(position + new Vector3(0f, grade * Vector3.Dot(Horizontal(offset), heading), 0f), facing);
+            float cross = CrossGradeAt(distance);
+            Quaternion facing = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Facing(heading, grade, cross);
+            Vector3 flat = Horizontal(offset);
+            float rise = (grade * Vector3.Dot(flat, heading)) + (cross * Vector3.Dot(flat, LeftOf(heading)));
+            return new RootPose(position + new Vector3(0f, rise, 0f), facing);
         }
 
         Quaternion rotation = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Upright(HeadingAt(distance, segment));
@@ -723,11 +746,31 @@ public sealed record Walk : Move
     }
 
     /// <summary>
-    /// The trunk's rotation facing the horizontal direction <paramref name="heading"/>, its forward axis pitched up
-    /// at <paramref name="grade"/> (rise per metre; down where negative): <see cref="Upright"/> on the level.
+    /// The ground's rise per metre toward the walker's left at <paramref name="distance"/> along the path, between
+    /// the path points' <see cref="CrossGrades"/>: the trunk's left axis rises at it (<see cref="PoseAtDistance(float)"/>).
+    /// 0 for a walker whose trunk does not roll.
     /// </summary>
-    private static Quaternion Facing(Vector3 heading, float grade) =>
-        grade == 0f ? Upright(heading) : Upright(heading) * Quaternion.CreateFromAxisAngle(Vector3.UnitX, -MathF.Atan(grade));
+    internal float CrossGradeAt(float distance) =>
+        _cross is null ? 0f : Along(_lookup, _distances, _cross, Math.Clamp(distance, 0f, Length));
+
+    /// <summary>
+    /// The trunk's rotation facing the horizontal direction <paramref name="heading"/>, its forward axis pitched up
+    /// at <paramref name="grade"/> (rise per metre; down where negative) and its left axis rolled up at
+    /// <paramref name="cross"/> (rise per metre toward its left): <see cref="Upright"/> on the level.
+    /// </summary>
+    private static Quaternion Facing(Vector3 heading, float grade, float cross)
+    {
+        Quaternion rotation = Upright(heading);
+        if (grade != 0f)
+        {
+            rotation *= Quaternion.CreateFromAxisAngle(Vector3.UnitX, -MathF.Atan(grade));
+        }
+
+        return cross != 0f ? rotation * Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.Atan(cross)) : rotation;
+    }
+
+    /// <summary>The walker's left (level, unit) when it faces the horizontal direction <paramref name="heading"/>: the trunk's +X turned as <see cref="Upright"/> turns it.</summary>
+    private static Vector3 LeftOf(Vector3 heading) => new(heading.Z, 0f, -heading.X);
 
     /// <summary>Upright rotation facing the horizontal direction <paramref name="heading"/>.</summary>
     private static Quaternion Upright(Vector3 heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.Atan2(heading.X, heading.Z));

@@ -83,7 +83,7 @@ internal sealed class WalkSteering
             return new WalkResult(null, ground);
         }
 
-        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan);
+        var walk = new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan, crossGrades: CrossGrades(path, from.Pose));
         return TrunkIsFree(walk) ? new WalkResult(walk, WalkFailure.None) : new WalkResult(null, WalkFailure.TrunkCollides);
     }
 
@@ -105,8 +105,8 @@ internal sealed class WalkSteering
             return new WalkResult(null, refused);
         }
 
-        (Vector3[]? path, WalkFailure failure) = _traced.GetOrAdd(new WalkKey(from.Pose, from.ContactCentre, to.Pose, to.ContactCentre), this, static (k, steering) => steering.Trace(k));
-        return path is null ? new WalkResult(null, failure) : new WalkResult(new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan), WalkFailure.None);
+        (Vector3[]? path, float[]? cross, WalkFailure failure) = _traced.GetOrAdd(new WalkKey(from.Pose, from.ContactCentre, to.Pose, to.ContactCentre), this, static (k, steering) => steering.Trace(k));
+        return path is null ? new WalkResult(null, failure) : new WalkResult(new Walk(from, to, path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan, crossGrades: cross), WalkFailure.None);
     }
 
     /// <summary>Why no walk is even traced from <paramref name="from"/> to <paramref name="to"/> (the character does not walk, or they lie farther apart than <paramref name="maxDistance"/>), or <c>null</c>.</summary>
@@ -127,24 +127,96 @@ internal sealed class WalkSteering
     /// <summary>Walks each generation of <see cref="SteerRemembered"/> keeps (a ground path of a few dozen points each).</summary>
     private const int RememberedWalks = 4_096;
 
-    private readonly RememberedResults<WalkKey, (Vector3[]? Path, WalkFailure Failure)> _traced = new(RememberedWalks);
+    private readonly RememberedResults<WalkKey, (Vector3[]? Path, float[]? Cross, WalkFailure Failure)> _traced = new(RememberedWalks);
 
     /// <summary>What a remembered walk depends on: its stances' root poses and contact centres (metres).</summary>
     private readonly record struct WalkKey(RootPose FromPose, Vector3 From, RootPose ToPose, Vector3 To);
 
-    /// <summary>The ground path of the walk <paramref name="key"/> asks for and the trunk's check along it, as <see cref="Steer"/> makes them: the path, or why there is none.</summary>
-    private (Vector3[]? Path, WalkFailure Failure) Trace(WalkKey key)
+    /// <summary>The ground path of the walk <paramref name="key"/> asks for (with its cross grades) and the trunk's check along it, as <see cref="Steer"/> makes them: the path, or why there is none.</summary>
+    private (Vector3[]? Path, float[]? Cross, WalkFailure Failure) Trace(WalkKey key)
     {
         var path = new List<Vector3>();
         WalkFailure ground = TraceGround(key.From, key.To, path, out _);
         if (ground != WalkFailure.None)
         {
-            return (null, ground);
+            return (null, null, ground);
         }
 
         // The trunk's check needs only the poses and the path: stances of those poses stand in for the real ones.
-        var walk = new Walk(new RoadmapNode(-1, key.FromPose, default, []), new RoadmapNode(-2, key.ToPose, default, []), path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan);
-        return TrunkIsFree(walk) ? ([.. path], WalkFailure.None) : (null, WalkFailure.TrunkCollides);
+        float[]? cross = CrossGrades(path, key.FromPose);
+        var walk = new Walk(new RoadmapNode(-1, key.FromPose, default, []), new RoadmapNode(-2, key.ToPose, default, []), path, Limits.Speed, turnRate: Limits.TurnRate, maxGrade: Limits.MaxGrade, pitchSpan: Limits.PitchSpan, crossGrades: cross);
+        return TrunkIsFree(walk) ? ([.. path], cross, WalkFailure.None) : (null, null, WalkFailure.TrunkCollides);
+    }
+
+    /// <summary>
+    /// For a walker whose trunk rolls with the ground (<see cref="WalkingLimits.RollSpan"/>), the ground's rise per
+    /// metre toward its left at each point of <paramref name="path"/> (<see cref="Walk.CrossGradeAt"/>); <c>null</c>
+    /// for one whose trunk does not roll. At each point the ground is found <see cref="WalkingLimits.RollSpan"/> to
+    /// either side, across the path's heading (the stance's own heading, <paramref name="from"/>, for a turn in
+    /// place), within the rise the walkable slope across allows plus a step: the grade is the rise from the right
+    /// side's ground to the left's, or from the path's point to the one side found (a kerb's top or a wall beyond
+    /// the other), 0 where neither is; it is kept within that slope and averaged over the points within the span
+    /// along the path, so that the trunk rolls as smoothly as it pitches.
+    /// </summary>
+    private float[]? CrossGrades(IReadOnlyList<Vector3> path, in RootPose from)
+    {
+        float span = Limits.RollSpan;
+        if (!(span > 0f))
+        {
+            return null;
+        }
+
+        Vector3 heading = new(path[^1].X - path[0].X, 0f, path[^1].Z - path[0].Z);
+        if (heading.LengthSquared() < 1e-8f)
+        {
+            heading = from.Forward with { Y = 0f };
+        }
+
+        heading = heading.LengthSquared() < 1e-8f ? Vector3.UnitZ : Vector3.Normalize(heading);
+        var left = new Vector3(heading.Z, 0f, -heading.X);
+        float steepest = MathF.Tan(Limits.MaxSlopeDegrees * MathF.PI / 180f);
+        float window = (span * steepest) + _maxRise;
+        var raw = new float[path.Count];
+        for (int i = 0; i < path.Count; i++)
+        {
+            Vector3 p = path[i];
+            float? up = Rise(p + (left * span));
+            float? down = Rise(p - (left * span));
+            float grade = (up, down) switch
+            {
+                (float l, float r) => (l - r) / (2f * span),
+                (float l, null) => l / span,
+                (null, float r) => -r / span,
+                _ => 0f,
+            };
+            raw[i] = Math.Clamp(grade, -steepest, steepest);
+
+            float? Rise(Vector3 q) =>
+                _world.Raycast(new Vector3(q.X, p.Y + window, q.Z), -Vector3.UnitY, 2f * window, out RayHit hit) ? hit.Point.Y - p.Y : null;
+        }
+
+        var along = new float[path.Count];
+        for (int i = 1; i < path.Count; i++)
+        {
+            along[i] = along[i - 1] + Vector3.Distance(path[i - 1], path[i]);
+        }
+
+        var grades = new float[path.Count];
+        for (int i = 0; i < path.Count; i++)
+        {
+            (float sum, int count) = (0f, 0);
+            for (int j = 0; j < path.Count; j++)
+            {
+                if (MathF.Abs(along[j] - along[i]) <= span + 1e-4f)
+                {
+                    (sum, count) = (sum + raw[j], count + 1);
+                }
+            }
+
+            grades[i] = sum / count;
+        }
+
+        return grades;
     }
 
     /// <summary>

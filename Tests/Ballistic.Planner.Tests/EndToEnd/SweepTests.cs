@@ -193,7 +193,7 @@ public sealed class SweepTests
     /// again since the eye measures a foot whose ground ends short of its place from where the ground ends (the feet
     /// gathered on the top by its edges; 2026-12-04). Since the tailed quadruped, the panda and the spider joined the
     /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it listed six of their
-    /// plans (four now). The panda takes off 173° off its way on request 2: a jump whose takeoff the facer could not turn on the
+    /// plans (three now). The panda takes off 173° off its way on request 2: a jump whose takeoff the facer could not turn on the
     /// dunes (then landed on a stance turned for the jump after it), and no search again finds a way round it within
     /// 1.5 times the first path's cost. (Request 1 took off 143° off its way while a request searched again twice at
     /// most, not three times: <see cref="PathQuery.FacingSearches"/>.) On
@@ -204,13 +204,16 @@ public sealed class SweepTests
     /// weighted a fifth to the tibia, so the drawn foot rises 1.1 cm off the rigid foot the gait holds on the ground as
     /// the tibia leans, and the hold's contact phase took in the steps before and after it in which the rigid foot was
     /// within the gait's touch (0.8 cm) of its point (off the list since those steps count only while the drawn foot
-    /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Touching</c>). And three of them stand a foot 0.36–0.44 L
-    /// sideways of its place, on dune sides up to 34° across its way, which its level trunk does not roll with.
+    /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Touching</c>). And three of them stood a foot 0.36–0.44 L
+    /// sideways of its place, on dune sides up to 34° across its way, with its trunk level across (request 3 is off
+    /// the list since a sprawling rig's walking trunk rolls with the ground: <see cref="Ballistic.Planner.Characters.WalkingLimits.RollSpan"/>);
+    /// on requests 1 and 2 a foot still stands 0.40 and 0.37 L aside, mid-swing as the trunk turns in place at the
+    /// walk's end, and on a dune's convex crest.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
         ["facing"] = ["foreign rig/curved/panda/1"],
-        ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/curved/spider/3"],
+        ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
@@ -229,9 +232,11 @@ public sealed class SweepTests
     /// quadruped and the panda walk slopes too; 115 once the tailed quadruped, the panda and the spider joined the
     /// sweep on the curved terrain (2026-12-06: 1, 13 and 3 frames), 97 since a free limb that a dip tucks at once
     /// near the contact pose stands tucked in the stance (<c>JumpAnimator.Tucked</c>: the panda's 13 frames on the
-    /// curved terrain down to 1, its 6 on the stairs to none). Lower it as snaps are removed; it only goes down.
+    /// curved terrain down to 1, its 6 on the stairs to none), 94 since a sprawling rig's walking trunk rolls with the
+    /// ground (<see cref="Ballistic.Planner.Characters.WalkingLimits.RollSpan"/>: three of the spider's dune walks).
+    /// Lower it as snaps are removed; it only goes down.
     /// </summary>
-    private const int MostSnapFrames = 97;
+    private const int MostSnapFrames = 94;
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, at most one request per
