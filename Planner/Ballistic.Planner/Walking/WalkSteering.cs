@@ -201,19 +201,28 @@ internal sealed class WalkSteering
             along[i] = along[i - 1] + Vector3.Distance(path[i - 1], path[i]);
         }
 
+        // The points within the span of each (a run, the distances along the path rising), summed in order.
         var grades = new float[path.Count];
+        (int first, int last) = (0, 0);
         for (int i = 0; i < path.Count; i++)
         {
-            (float sum, int count) = (0f, 0);
-            for (int j = 0; j < path.Count; j++)
+            while (along[i] - along[first] > span + 1e-4f)
             {
-                if (MathF.Abs(along[j] - along[i]) <= span + 1e-4f)
-                {
-                    (sum, count) = (sum + raw[j], count + 1);
-                }
+                first++;
             }
 
-            grades[i] = sum / count;
+            while (last + 1 < path.Count && along[last + 1] - along[i] <= span + 1e-4f)
+            {
+                last++;
+            }
+
+            float sum = 0f;
+            for (int j = first; j <= last; j++)
+            {
+                sum += raw[j];
+            }
+
+            grades[i] = sum / (last - first + 1);
         }
 
         return grades;
