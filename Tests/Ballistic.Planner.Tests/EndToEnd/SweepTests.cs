@@ -207,8 +207,8 @@ public sealed class SweepTests
     /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Touching</c>). And three of them stood a foot 0.36–0.44 L
     /// sideways of its place, on dune sides up to 34° across its way, with its trunk level across (request 3 is off
     /// the list since a sprawling rig's walking trunk rolls with the ground: <see cref="Ballistic.Planner.Characters.WalkingLimits.RollSpan"/>);
-    /// on requests 1 and 2 a foot still stands 0.40 and 0.37 L aside, mid-swing as the trunk turns in place at the
-    /// walk's end, and on a dune's convex crest.
+    /// on requests 1 and 2 a foot still stands 0.40 and 0.37 L aside: held while the trunk turns 17° in place at the
+    /// walk's end (drifting sideways under it), and on a dune's convex crest.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
