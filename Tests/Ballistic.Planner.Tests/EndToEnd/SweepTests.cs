@@ -205,9 +205,9 @@ public sealed class SweepTests
     /// the tibia leans, and the hold's contact phase took in the steps before and after it in which the rigid foot was
     /// within the gait's touch (0.8 cm) of its point (off the list since those steps count only while the drawn foot
     /// is within 1.5 cm of the ground: <c>WalkGait</c>'s <c>Touching</c>). And three of them stood a foot 0.36–0.44 L
-    /// sideways of its place, on dune sides up to 34° across its way, with its trunk level across (request 3 is off
+    /// sideways of its place, on dune sides up to 34° across its way, with its trunk level across (request 4 is off
     /// the list since a sprawling rig's walking trunk rolls with the ground: <see cref="Ballistic.Planner.Characters.WalkingLimits.RollSpan"/>);
-    /// on requests 1 and 2 a foot still stands 0.40 and 0.37 L aside: held while the trunk turns 17° in place at the
+    /// on requests 2 and 3 a foot still stands 0.40 and 0.37 L aside: held while the trunk turns 17° in place at the
     /// walk's end (drifting sideways under it), and on a dune's convex crest.
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
