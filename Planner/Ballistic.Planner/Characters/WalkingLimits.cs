@@ -77,7 +77,7 @@ public sealed record WalkingLimits(float Speed, float MaxSlopeDegrees, float Ste
     /// walking trunk rolls with the ground, or 0 (the default) for a trunk that walks level across: a spider or an
     /// ant, whose legs sprawl out to its sides, keeps its body parallel to a dune's side, its uphill feet no higher
     /// under it and its downhill feet no lower than on the level, at the ground's rise between the points this far
-    /// left and right of the walk's ground point (<see cref="Roadmaps.Walk.CrossGradeAt"/>); a mammal, whose legs stand
+    /// left and right of the walk's ground point (<see cref="Roadmaps.Walk.CrossGradeAt(float)"/>); a mammal, whose legs stand
     /// under its hips, keeps its trunk level across and stretches its downhill legs.
     /// </summary>
     public float RollSpan { get; init; }

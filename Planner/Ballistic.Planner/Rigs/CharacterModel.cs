@@ -138,7 +138,6 @@ public sealed class CharacterModel
     /// </summary>
     internal (float Left, float Right, float Sprawl) FeetAcrossTrunk()
     {
-        Vector3[] effectors = ContactPoseEffectors();
         float[] legs = LegLengths();
         var positions = new Vector3[Rig.Joints.Count];
         var rotations = new Quaternion[Rig.Joints.Count];
@@ -153,10 +152,11 @@ public sealed class CharacterModel
                 continue;
             }
 
-            (left, right) = (MathF.Max(left, effectors[l].X), MathF.Max(right, -effectors[l].X));
+            float x = Limbs[l].EffectorPosition(positions, rotations).X;
+            (left, right) = (MathF.Max(left, x), MathF.Max(right, -x));
             if (legs[l] > 0f)
             {
-                sprawl = MathF.Max(sprawl, MathF.Abs(effectors[l].X - positions[Limbs[l].RootJoint].X) / legs[l]);
+                sprawl = MathF.Max(sprawl, MathF.Abs(x - positions[Limbs[l].RootJoint].X) / legs[l]);
             }
         }
 

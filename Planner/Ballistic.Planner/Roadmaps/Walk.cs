@@ -658,7 +658,7 @@ public sealed record Walk : Move
         {
             Vector3 heading = HeadingAt(distance, segment);
             float grade = GradeAt(distance);
-            float cross = CrossGradeAt(distance);
+            float cross = CrossGradeAt(distance, segment);
             Quaternion facing = distance <= 0f ? _startHeading : distance >= Length ? _endHeading : Facing(heading, grade, cross);
             Vector3 flat = Horizontal(offset);
             float rise = (grade * Vector3.Dot(flat, heading)) + (cross * Vector3.Dot(flat, LeftOf(heading)));
@@ -750,8 +750,26 @@ public sealed record Walk : Move
     /// the path points' <see cref="CrossGrades"/>: the trunk's left axis rises at it (<see cref="PoseAtDistance(float)"/>).
     /// 0 for a walker whose trunk does not roll.
     /// </summary>
-    internal float CrossGradeAt(float distance) =>
-        _cross is null ? 0f : Along(_lookup, _distances, _cross, Math.Clamp(distance, 0f, Length));
+    internal float CrossGradeAt(float distance) => CrossGradeAt(distance, -1);
+
+    /// <summary><see cref="CrossGradeAt(float)"/> with its path points found from <paramref name="segment"/>, the path index near <paramref name="distance"/> (the same grade whatever it is).</summary>
+    private float CrossGradeAt(float distance, int segment)
+    {
+        if (_cross is null)
+        {
+            return 0f;
+        }
+
+        distance = Math.Clamp(distance, 0f, Length);
+        int i = _lookup.FirstAtOrAbove(distance, ref segment);
+        if (i == 0 || _distances[i] == distance)
+        {
+            return _cross[i];
+        }
+
+        float span = _distances[i] - _distances[i - 1];
+        return span > 0f ? float.Lerp(_cross[i - 1], _cross[i], Math.Clamp((distance - _distances[i - 1]) / span, 0f, 1f)) : _cross[i];
+    }
 
     /// <summary>
     /// The trunk's rotation facing the horizontal direction <paramref name="heading"/>, its forward axis pitched up

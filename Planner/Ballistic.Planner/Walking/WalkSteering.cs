@@ -150,7 +150,7 @@ internal sealed class WalkSteering
 
     /// <summary>
     /// For a walker whose trunk rolls with the ground (<see cref="WalkingLimits.RollSpan"/>), the ground's rise per
-    /// metre toward its left at each point of <paramref name="path"/> (<see cref="Walk.CrossGradeAt"/>); <c>null</c>
+    /// metre toward its left at each point of <paramref name="path"/> (<see cref="Walk.CrossGradeAt(float)"/>); <c>null</c>
     /// for one whose trunk does not roll. At each point the ground is found <see cref="WalkingLimits.RollSpan"/> to
     /// either side, across the path's heading (the stance's own heading, <paramref name="from"/>, for a turn in
     /// place), within the rise the walkable slope across allows plus a step: the grade is the rise from the right

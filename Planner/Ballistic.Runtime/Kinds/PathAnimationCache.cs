@@ -138,7 +138,7 @@ internal sealed class PathAnimationCache : IJumpAnimator, IStepwiseAnimator
         {
             (Jump x, Jump y) => Same(x.Takeoff, y.Takeoff) && Same(x.Landing, y.Landing) && Same(x.Arc, y.Arc) && SameOrigin(x, y),
             (Walk x, Walk y) => Same(x.From, y.From) && Same(x.To, y.To) && Same(x.Speed, y.Speed) && Same(x.TurnRate, y.TurnRate) && Same(x.PitchSpan, y.PitchSpan)
-                && x.Path.Count == y.Path.Count && x.Path.Zip(y.Path).All(p => Same(p.First, p.Second)) && x.CrossGrades.Zip(y.CrossGrades).All(g => Same(g.First, g.Second)) && x.CrossGrades.Count == y.CrossGrades.Count
+                && x.Path.Count == y.Path.Count && x.Path.Zip(y.Path).All(p => Same(p.First, p.Second)) && x.CrossGrades.Count == y.CrossGrades.Count && x.CrossGrades.Zip(y.CrossGrades).All(g => Same(g.First, g.Second))
                 && x.Via.Count == y.Via.Count && x.Via.Zip(y.Via).All(n => Same(n.First, n.Second)) && SameOrigin(x, y),
             _ => false,
         };
