@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
 using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Rigs;
 
@@ -26,6 +27,17 @@ internal sealed class HoldRefiner
     private readonly BodyCollision _collision;
     private readonly LimbIk _ik;
 
+    /// <summary>
+    /// Whether each frame's holds are solved and checked once and remembered for the intervals on either side of it
+    /// (true, the default) or again for every interval (tests: the refinement is the same to the bit).
+    /// </summary>
+    internal bool RemembersFrames { get; init; } = true;
+
+    /// <summary>How many times a limb's hold at a frame was solved and checked (limb bones against the level), over every clip refined.</summary>
+    internal int HoldChecks => _holdChecks;
+
+    private int _holdChecks;
+
     /// <summary>Creates a refiner for <paramref name="model"/>'s clips, checking bones with <paramref name="collision"/>.</summary>
     public HoldRefiner(CharacterModel model, BodyCollision collision)
     {
@@ -34,8 +46,73 @@ internal sealed class HoldRefiner
         _ik = new LimbIk(model.Rig, new IkSettings { Restarts = 0, MaxIterations = 24, PositionTolerance = 0.5f * Tolerance });
     }
 
-    /// <summary>Joint positions and rotations solved for one clip (each call has its own: the refiner is thread-safe).</summary>
-    private sealed record Pose(Vector3[] Positions, Quaternion[] Rotations);
+    /// <summary>
+    /// Joint positions and rotations solved for one clip (each call has its own: the refiner is thread-safe), and how
+    /// each limb holds its phase at the frames of the clip checked last: a frame ends one interval and starts the next,
+    /// and a halved interval's halves share its ends, so each frame is solved and checked once.
+    /// </summary>
+    private sealed class Pose(HoldRefiner refiner, Vector3[] positions, Quaternion[] rotations)
+    {
+        /// <summary>Holds known at the frames still in use (a few: an interval's ends and its halvings' middles).</summary>
+        private readonly List<(AnimationFrame Frame, int Index, (Vector3 Touching, Vector3 Normal, bool Clear) Hold)> _holds = [];
+
+        /// <summary>The frame <see cref="Positions"/> holds solved, or <c>null</c> (another pose: <see cref="Overwritten"/>).</summary>
+        private AnimationFrame? _solved;
+
+        public Vector3[] Positions => positions;
+
+        public Quaternion[] Rotations => rotations;
+
+        /// <summary>
+        /// At <paramref name="frame"/>, where the limb of <paramref name="phase"/> (index <paramref name="index"/> in
+        /// the clip's phases) touches, its effector's normal, and whether none of its bones is in the level; solved
+        /// into <see cref="Positions"/> when not known yet.
+        /// </summary>
+        public (Vector3 Touching, Vector3 Normal, bool Clear) HoldAt(AnimationFrame frame, int index, ContactPhase phase)
+        {
+            foreach ((AnimationFrame known, int i, (Vector3, Vector3, bool) hold) in CollectionsMarshal.AsSpan(_holds))
+            {
+                if (i == index && ReferenceEquals(known, frame))
+                {
+                    return hold;
+                }
+            }
+
+            Interlocked.Increment(ref refiner._holdChecks);
+            if (!ReferenceEquals(_solved, frame) || !refiner.RemembersFrames)
+            {
+                refiner._model.Rig.Solve(frame.Root, frame.Angles, positions, rotations);
+                _solved = frame;
+            }
+
+            RigLimb limb = refiner._model.Limbs[phase.Limb];
+            (Vector3, Vector3, bool) solved = (phase.Touching(limb, positions, rotations), limb.EffectorNormal(rotations), !refiner._collision.LimbCollides(limb, positions, rotations, phase.Position));
+            if (refiner.RemembersFrames)
+            {
+                _holds.Add((frame, index, solved));
+            }
+
+            return solved;
+        }
+
+        /// <summary>Notes that <see cref="Positions"/> and <see cref="Rotations"/> are about to hold a pose of no frame of the clip.</summary>
+        public void Overwritten() => _solved = null;
+
+        /// <summary>Forgets every frame but <paramref name="kept"/>: the intervals before it are refined.</summary>
+        public void KeepOnly(AnimationFrame kept)
+        {
+            int count = 0;
+            for (int i = 0; i < _holds.Count; i++)
+            {
+                if (ReferenceEquals(_holds[i].Frame, kept))
+                {
+                    _holds[count++] = _holds[i];
+                }
+            }
+
+            _holds.RemoveRange(count, _holds.Count - count);
+        }
+    }
 
     /// <summary>
     /// The frames of <paramref name="clip"/> with frames added where a held contact would not hold between two of
@@ -51,12 +128,13 @@ internal sealed class HoldRefiner
             return (refined, failures);
         }
 
-        var pose = new Pose(new Vector3[_model.Rig.Joints.Count], new Quaternion[_model.Rig.Joints.Count]);
+        var pose = new Pose(this, new Vector3[_model.Rig.Joints.Count], new Quaternion[_model.Rig.Joints.Count]);
         refined.Add(frames[0]);
         for (int k = 1; k < frames.Count; k++)
         {
             Between(clip, pose, frames[k - 1], frames[k], 0, refined, failures);
             refined.Add(frames[k]);
+            pose.KeepOnly(frames[k]);
         }
 
         return (refined, failures);
@@ -75,10 +153,27 @@ internal sealed class HoldRefiner
 
         // The phases held across the interval, and how each limb holds at its two frames (each frame solved once):
         // the midpoint must do as well.
-        ContactPhase[] held = [.. clip.ContactPhases.Where(p => p.From <= a.Time + 1e-5f && p.To >= b.Time - 1e-5f)];
-        if (held.Length == 0)
+        IReadOnlyList<ContactPhase> phases = clip.ContactPhases;
+        int count = 0;
+        for (int i = 0; i < phases.Count; i++)
+        {
+            count += phases[i].From <= a.Time + 1e-5f && phases[i].To >= b.Time - 1e-5f ? 1 : 0;
+        }
+
+        if (count == 0)
         {
             return;
+        }
+
+        var held = new ContactPhase[count];
+        int[] indices = new int[count];
+        for (int i = 0, h = 0; i < phases.Count; i++)
+        {
+            if (phases[i].From <= a.Time + 1e-5f && phases[i].To >= b.Time - 1e-5f)
+            {
+                (held[h], indices[h]) = (phases[i], i);
+                h++;
+            }
         }
 
         float time = a.Time + (0.5f * span);
@@ -94,30 +189,27 @@ internal sealed class HoldRefiner
         var atB = new Vector3[held.Length];
         var normals = new Vector3[held.Length];
         var clear = new bool[held.Length];
-        rig.Solve(a.Root, a.Angles, positions, rotations);
         for (int h = 0; h < held.Length; h++)
         {
-            RigLimb limb = _model.Limbs[held[h].Limb];
-            atA[h] = held[h].Touching(limb, positions, rotations);
-            normals[h] = limb.EffectorNormal(rotations);
-            clear[h] = !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
-        }
-
-        rig.Solve(b.Root, b.Angles, positions, rotations);
-        for (int h = 0; h < held.Length; h++)
-        {
-            RigLimb limb = _model.Limbs[held[h].Limb];
-            atB[h] = held[h].Touching(limb, positions, rotations);
-            clear[h] &= !_collision.LimbCollides(limb, positions, rotations, held[h].Position);
+            (atA[h], normals[h], clear[h]) = pose.HoldAt(a, indices[h], held[h]);
+            (atB[h], _, bool clearB) = pose.HoldAt(b, indices[h], held[h]);
+            clear[h] &= clearB;
         }
 
         bool changed = false;
+        bool solved = false; // whether the pose holds the midpoint's angles solved
         for (int h = 0; h < held.Length; h++)
         {
             ContactPhase phase = held[h];
             RigLimb limb = _model.Limbs[phase.Limb];
             float allowed = MathF.Max(Vector3.Distance(atA[h], phase.Position), Vector3.Distance(atB[h], phase.Position)) + Tolerance;
-            rig.Solve(root, angles, positions, rotations);
+            if (!solved)
+            {
+                pose.Overwritten();
+                rig.Solve(root, angles, positions, rotations);
+                solved = true;
+            }
+
             if (Holds(limb, phase, pose, allowed, clear[h]))
             {
                 continue;
@@ -127,15 +219,17 @@ internal sealed class HoldRefiner
             // turned as at the first).
             float[] trial = (float[])angles.Clone();
             RigLimb touching = phase.TouchingLimb(limb);
-            bool solved = _ik.Reaches(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]);
+            bool reached = _ik.Reaches(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]);
+            pose.Overwritten();
             rig.Solve(root, trial, positions, rotations);
-            if (!(solved && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)
+            if (!(reached && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)
             {
                 failures.Add((phase.Limb, time));
+                solved = false; // the pose holds the trial, not the angles kept
                 continue;
             }
 
-            angles = trial;
+            angles = trial; // the pose holds them solved
             changed = true;
         }
 
