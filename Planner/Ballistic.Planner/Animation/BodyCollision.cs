@@ -42,16 +42,19 @@ internal sealed class BodyCollision
     private const float ContactPlane = 0.01f;
 
     /// <summary>How far (metres) around a skin point the level's surface is looked for: deeper points are not seen.</summary>
-    private const float SkinReach = 0.1f;
+    internal const float SkinReach = 0.1f;
 
     /// <summary>
     /// Metres within which two triangles count as equally near a point (an edge or corner they share): well above the
     /// rounding of single-precision coordinates tens of metres from the origin, well below any depth that matters.
     /// </summary>
-    private const float EdgeTie = 1e-4f;
+    internal const float EdgeTie = 1e-4f;
 
     /// <summary>Half-thickness of a limb bone's box, metres.</summary>
     private const float Thickness = 0.002f;
+
+    /// <summary>Least height (metres) in front of a triangle's plane at which <see cref="Inside"/> takes a point to be in front of it without the full test.</summary>
+    private const float FrontMargin = 1e-3f;
 
     private readonly TriangleBvh _bvh;
     private readonly CharacterModel _model;
@@ -71,6 +74,13 @@ internal sealed class BodyCollision
     /// <summary>Per limb: its foot's skin as the GLB draws it (<see cref="SoleHeight"/>): a bone's blended points where it has any, else its own.</summary>
     private readonly (int Joint, Vector3 Point, SkinBlend[]? Blend)[][] _drawnSoleProbes;
     private readonly (int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes)[] _freeSkins;
+
+    /// <summary>Per bone of <see cref="_freeSkins"/>: how far from its joint its posed skin can lie.</summary>
+    private readonly SkinReachBound[] _freeReach;
+
+    /// <summary>The skin of bones that belong to no limb (<see cref="OtherBoneColliding(ReadOnlySpan{Vector3}, ReadOnlySpan{Quaternion})"/>), each bone's probes with the bound of how far from its joint they lie posed.</summary>
+    internal IEnumerable<(int Joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] Probes, SkinReachBound Bound)> FreeSkins =>
+        _freeSkins.Select((f, i) => (f.Joint, f.Probes, _freeReach[i]));
 
     /// <summary>Each thread's list of triangles near a limb's skin (the check runs at every fine step of every limb).</summary>
     [ThreadStatic]
@@ -207,6 +217,8 @@ internal sealed class BodyCollision
         _freeSkins = [.. free.Select(j => (j, skin[j].Concat(spread.Count == rig.Joints.Count ? spread[j] : []).Distinct().Select(p => (j, p, (SkinBlend[]?)null))
             .Concat(blends.Count == rig.Joints.Count ? blends[j].Where(b => b.All(part => free.Contains(part.Joint))).Select(b => (j, Vector3.Zero, (SkinBlend[]?)b)) : [])
             .ToArray()))];
+
+        _freeReach = [.. _freeSkins.Select(f => SkinReachBound.Of(f.Probes))];
 
         // A bone's radius is measured over its parent's skin (the flesh around the segment). Where that skin is probed
         // point by point, spread over its faces (a loaded rig's), the segment is checked thin: half its radius around
@@ -360,7 +372,7 @@ internal sealed class BodyCollision
     }
 
     /// <summary>Where a skin probe lies posed (world metres): on its bone, or for a blended one, where linear blend skinning puts it.</summary>
-    private static Vector3 Posed((int Joint, Vector3 Point, SkinBlend[]? Blend) probe, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
+    internal static Vector3 Posed((int Joint, Vector3 Point, SkinBlend[]? Blend) probe, ReadOnlySpan<Vector3> positions, ReadOnlySpan<Quaternion> rotations)
     {
         if (probe.Blend is not SkinBlend[] blend)
         {
@@ -385,12 +397,32 @@ internal sealed class BodyCollision
     /// The search stops at the first triangle within <see cref="SkinDepth"/> of the point (false; <paramref name="by"/>
     /// that triangle, <paramref name="depth"/> 0): no nearer one can make the point deeper than that.
     /// </summary>
-    private bool Inside(Vector3 p, List<int> near, out int by, out float depth)
+    internal bool Inside(Vector3 p, List<int> near, out int by, out float depth)
     {
+        // A point in front of the plane of every triangle near it lies behind none of them, whichever is nearest: not
+        // inside (most skin points, above the ground they move over). The margin keeps a point within rounding of a
+        // plane, whose side the closest point below could read either way, for the full test.
+        ReadOnlySpan<int> triangles = CollectionsMarshal.AsSpan(near);
+        bool behind = false;
+        foreach (int t in triangles)
+        {
+            if (Vector3.Dot(p - _triangles![t].A, _shapes[t].Normal) <= FrontMargin)
+            {
+                behind = true;
+                break;
+            }
+        }
+
+        if (!behind)
+        {
+            (by, depth) = (-1, 0f);
+            return false;
+        }
+
         List<(int Triangle, float Distance, float Front)> candidates = s_candidates ??= [];
         candidates.Clear();
         float nearest = SkinReach;
-        foreach (int t in CollectionsMarshal.AsSpan(near))
+        foreach (int t in triangles)
         {
             ref readonly (Aabb Bounds, Vector3 Normal) shape = ref _shapes[t];
             float bound = (nearest + EdgeTie) * (nearest + EdgeTie);
@@ -457,9 +489,14 @@ internal sealed class BodyCollision
             return bone;
         }
 
-        foreach ((int joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] probes) in _freeSkins)
+        for (int f = 0; f < _freeSkins.Length; f++)
         {
-            if (SkinInside(probes, positions, rotations))
+            // A bone whose skin lies in a sphere around its joint with no triangle near it is passed without posing it
+            // (the trunk's, the head's, most of the time): none of its points could be inside.
+            (int joint, (int Joint, Vector3 Point, SkinBlend[]? Blend)[] probes) = _freeSkins[f];
+            float radius = _freeReach[f].Radius(positions, joint);
+            Vector3 centre = positions[joint];
+            if (_bvh.AnyTriangleNear(new Aabb(centre - new Vector3(radius), centre + new Vector3(radius)).Inflate(SkinReach)) && SkinInside(probes, positions, rotations))
             {
                 return joint;
             }
@@ -540,5 +577,52 @@ internal sealed class BodyCollision
         }
 
         throw new ArgumentException($"Limb '{limb.Name}' is not a limb of {_model.Name}.", nameof(limb));
+    }
+
+    /// <summary>
+    /// What bounds how far from their joint a bone's skin probes lie posed: a rigid point its own offset's length; a
+    /// blended one, linear blend skinning's weighted sum, its weights' total times the farthest of its bones' joints
+    /// (from this one) plus that bone's offset.
+    /// </summary>
+    internal readonly record struct SkinReachBound(float Rigid, float Weight, (int Joint, float Reach)[] Parts)
+    {
+        /// <summary>Added to every bound (metres, and as a share): rounding in posing, never in the bound's favour.</summary>
+        private const float Slack = 1e-3f;
+
+        /// <summary>The bound of <paramref name="probes"/>.</summary>
+        public static SkinReachBound Of((int Joint, Vector3 Point, SkinBlend[]? Blend)[] probes)
+        {
+            float rigid = 0f;
+            float weight = 0f;
+            var parts = new SortedDictionary<int, float>();
+            foreach ((_, Vector3 point, SkinBlend[]? blend) in probes)
+            {
+                if (blend is null)
+                {
+                    rigid = MathF.Max(rigid, point.Length());
+                    continue;
+                }
+
+                weight = MathF.Max(weight, blend.Sum(part => MathF.Abs(part.Weight)));
+                foreach (SkinBlend part in blend)
+                {
+                    parts[part.Joint] = MathF.Max(parts.GetValueOrDefault(part.Joint), part.Point.Length());
+                }
+            }
+
+            return new SkinReachBound(rigid, weight, [.. parts.Select(p => (p.Key, p.Value))]);
+        }
+
+        /// <summary>How far (metres) from <paramref name="joint"/>'s position every probe lies at most, posed at <paramref name="positions"/>.</summary>
+        public float Radius(ReadOnlySpan<Vector3> positions, int joint)
+        {
+            float blended = 0f;
+            foreach ((int part, float reach) in Parts)
+            {
+                blended = MathF.Max(blended, Vector3.Distance(positions[part], positions[joint]) + reach);
+            }
+
+            return (MathF.Max(Rigid, Weight * blended) * (1f + Slack)) + Slack;
+        }
     }
 }

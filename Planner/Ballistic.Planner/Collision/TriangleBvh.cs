@@ -139,11 +139,24 @@ internal sealed class TriangleBvh : ICollisionWorld
     internal void TrianglesNear(Aabb box, List<int> results)
     {
         ArgumentNullException.ThrowIfNull(results);
+        Near(box, results);
+    }
+
+    /// <summary>
+    /// Whether some triangle's bounding box meets <paramref name="box"/>: <see cref="TrianglesNear"/> would add one. It
+    /// stops at the first.
+    /// </summary>
+    internal bool AnyTriangleNear(Aabb box) => Near(box, results: null);
+
+    /// <summary>The triangles whose bounding boxes meet <paramref name="box"/>, added to <paramref name="results"/> in the hierarchy's order; with none, whether there is one (stopping at the first).</summary>
+    private bool Near(Aabb box, List<int>? results)
+    {
         if (_nodes.Length == 0 || box.IsEmpty)
         {
-            return;
+            return false;
         }
 
+        bool found = false;
         Span<int> stack = stackalloc int[StackSize];
         int top = 0;
         stack[top++] = 0;
@@ -161,7 +174,13 @@ internal sealed class TriangleBvh : ICollisionWorld
                 {
                     if (_triangleBounds[i].Intersects(box))
                     {
+                        if (results is null)
+                        {
+                            return true;
+                        }
+
                         results.Add(_originalIndex[i]);
+                        found = true;
                     }
                 }
 
@@ -171,6 +190,8 @@ internal sealed class TriangleBvh : ICollisionWorld
             stack[top++] = node.Start;
             stack[top++] = node.Start + 1;
         }
+
+        return found;
     }
 
     /// <summary>Adds to <paramref name="results"/> every triangle that touches the axis-aligned box.</summary>
