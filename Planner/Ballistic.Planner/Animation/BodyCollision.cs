@@ -395,7 +395,9 @@ internal sealed class BodyCollision
     /// <see cref="EdgeTie"/> (the point is nearest an edge or corner they share), the one it is most in front of
     /// decides: a point beside a crate, below its top's plane, is nearest the top's edge and in front of the side.
     /// The search stops at the first triangle within <see cref="SkinDepth"/> of the point (false; <paramref name="by"/>
-    /// that triangle, <paramref name="depth"/> 0): no nearer one can make the point deeper than that.
+    /// that triangle, <paramref name="depth"/> 0): no nearer one can make the point deeper than that. A point more than
+    /// <see cref="FrontMargin"/> in front of the plane of every triangle of <paramref name="near"/> is not searched at
+    /// all (false; <paramref name="by"/> −1, <paramref name="depth"/> 0): whichever is nearest, it is in front of it.
     /// </summary>
     internal bool Inside(Vector3 p, List<int> near, out int by, out float depth)
     {

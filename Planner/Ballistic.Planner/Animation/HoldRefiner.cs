@@ -61,6 +61,9 @@ internal sealed class HoldRefiner
 
         public Vector3[] Positions => positions;
 
+        /// <summary>How many holds were solved and checked for this clip.</summary>
+        public int Checks { get; private set; }
+
         public Quaternion[] Rotations => rotations;
 
         /// <summary>
@@ -78,7 +81,7 @@ internal sealed class HoldRefiner
                 }
             }
 
-            Interlocked.Increment(ref refiner._holdChecks);
+            Checks++;
             if (!ReferenceEquals(_solved, frame) || !refiner.RemembersFrames)
             {
                 refiner._model.Rig.Solve(frame.Root, frame.Angles, positions, rotations);
@@ -136,6 +139,8 @@ internal sealed class HoldRefiner
             refined.Add(frames[k]);
             pose.KeepOnly(frames[k]);
         }
+
+        Interlocked.Add(ref _holdChecks, pose.Checks);
 
         return (refined, failures);
     }
