@@ -113,26 +113,19 @@ internal static class BenchCommand
         Roadmap roadmap = new RoadmapBaker(desertScene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 1_000, Threads = Environment.ProcessorCount }).Roadmap;
         var query = new PathQuery(desertScene, roadmap);
         var random = new Random(3);
-        var queryTimes = new List<double>();
-        int found = 0;
         const int warmUp = 100;
-        for (int q = 0; q < warmUp + Math.Max(100, runs * 40); q++)
-        {
-            RoadmapNode a = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
-            RoadmapNode b = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
-            Vector3 from = a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position;
-            Vector3 to = b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position;
-            var clock = Stopwatch.StartNew();
-            PlanResult result = query.Plan(from, to, new QuerySettings { Locomotion = Locomotion.Jump });
-            if (q >= warmUp)
-            {
-                queryTimes.Add(clock.Elapsed.TotalMilliseconds);
-                found += result.Status == PlannerStatus.Exact ? 1 : 0;
-            }
-        }
+        int count = Math.Max(100, runs * 40);
+
+        // Each request between two new random nodes (jump only, the jumps turned to face their way), timed one by one:
+        // from the nodes' first contacts (both ends placed and steered into the roadmap), then between other nodes
+        // (their own random pairs, so that the steering pairs below stay those drawn before).
+        (List<double> pointTimes, int pointFound) = TimeQueries(roadmap, random, warmUp, count, (a, b) =>
+            query.Plan(a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position, b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position, new QuerySettings { Locomotion = Locomotion.Jump }));
+        (List<double> nodeTimes, int nodeFound) = TimeQueries(roadmap, new Random(4), warmUp, count, (a, b) => query.Plan(a, b, new QuerySettings { Locomotion = Locomotion.Jump }));
 
         output.WriteLine();
-        output.WriteLine($"query on a {roadmap.Nodes.Count}-node, {roadmap.Edges.Count}-jump desert roadmap: median {Median(queryTimes):0.000} ms over {queryTimes.Count} queries after {warmUp} warm-up queries ({found} found a path)");
+        output.WriteLine($"query on a {roadmap.Nodes.Count}-node, {roadmap.Edges.Count}-jump desert roadmap: median {Median(pointTimes):0.000} ms, p95 {Percentile(pointTimes, 0.95):0.000} ms over {pointTimes.Count} queries after {warmUp} warm-up queries ({pointFound} found a path)");
+        output.WriteLine($"node to node on it: median {Median(nodeTimes):0.000} ms, p95 {Percentile(nodeTimes, 0.95):0.000} ms over {nodeTimes.Count} queries after {warmUp} warm-up queries ({nodeFound} found a path)");
 
         ParabolaSteering steering = desertScene.Steering;
         var pairs = new List<(RoadmapNode A, RoadmapNode B)>();
@@ -265,6 +258,37 @@ internal static class BenchCommand
     {
         string? path = CliInputs.FindBundledLevel(name);
         return path is null ? CliInputs.Generated(name) : CliInputs.LoadLevel(path);
+    }
+
+    /// <summary>
+    /// Times (milliseconds) of <paramref name="count"/> requests between random nodes of <paramref name="roadmap"/>
+    /// made by <paramref name="plan"/>, after <paramref name="warmUp"/> untimed ones, and how many found a path.
+    /// </summary>
+    private static (List<double> Times, int Found) TimeQueries(Roadmap roadmap, Random random, int warmUp, int count, Func<RoadmapNode, RoadmapNode, PlanResult> plan)
+    {
+        var times = new List<double>(count);
+        int found = 0;
+        for (int q = 0; q < warmUp + count; q++)
+        {
+            RoadmapNode a = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            RoadmapNode b = roadmap.Nodes[random.Next(roadmap.Nodes.Count)];
+            long start = Stopwatch.GetTimestamp();
+            PlanResult result = plan(a, b);
+            if (q >= warmUp)
+            {
+                times.Add(Stopwatch.GetElapsedTime(start).TotalMilliseconds);
+                found += result.Status == PlannerStatus.Exact ? 1 : 0;
+            }
+        }
+
+        return (times, found);
+    }
+
+    /// <summary>The value below which a share <paramref name="share"/> (0 to 1) of <paramref name="values"/> lies (nearest rank).</summary>
+    private static double Percentile(List<double> values, double share)
+    {
+        var sorted = values.Order().ToList();
+        return sorted[Math.Clamp((int)Math.Ceiling(share * sorted.Count) - 1, 0, sorted.Count - 1)];
     }
 
     private static double Median(List<double> values)

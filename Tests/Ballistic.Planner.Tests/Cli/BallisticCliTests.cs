@@ -37,6 +37,31 @@ public sealed class BallisticCliTests
         });
     }
 
+    /// <summary>
+    /// `bench` times the desert's queries one by one and prints each kind's median and 95th percentile: point to point
+    /// and node to node, every request finding a path, the tail never under the median.
+    /// </summary>
+    [Test]
+    public void BenchPrintsTheQueriesMedianAndTail()
+    {
+        (int code, string output, string error) = Run("bench", "--only", "desert", "--runs", "1");
+        var lines = output.Split('\n').Where(l => l.StartsWith("query on a ", StringComparison.Ordinal) || l.StartsWith("node to node on it", StringComparison.Ordinal)).ToArray();
+        Assert.Multiple(() =>
+        {
+            Assert.That(code, Is.Zero, error);
+            Assert.That(lines, Has.Length.EqualTo(2), output);
+            foreach (string line in lines)
+            {
+                System.Text.RegularExpressions.Match m = System.Text.RegularExpressions.Regex.Match(line, @"median ([0-9.]+) ms, p95 ([0-9.]+) ms over 100 queries after 100 warm-up queries \(100 found a path\)");
+                Assert.That(m.Success, Is.True, line);
+                double median = double.Parse(m.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
+                double tail = double.Parse(m.Groups[2].Value, System.Globalization.CultureInfo.InvariantCulture);
+                Assert.That(median, Is.GreaterThan(0d), line);
+                Assert.That(tail, Is.GreaterThanOrEqualTo(median), line);
+            }
+        });
+    }
+
     private static (int Code, string Output, string Error) Run(params string[] args)
     {
         using var output = new StringWriter();
