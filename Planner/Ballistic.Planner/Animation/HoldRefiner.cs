@@ -61,10 +61,10 @@ internal sealed class HoldRefiner
 
         public Vector3[] Positions => positions;
 
+        public Quaternion[] Rotations => rotations;
+
         /// <summary>How many holds were solved and checked for this clip.</summary>
         public int Checks { get; private set; }
-
-        public Quaternion[] Rotations => rotations;
 
         /// <summary>
         /// At <paramref name="frame"/>, where the limb of <paramref name="phase"/> (index <paramref name="index"/> in
@@ -194,9 +194,14 @@ internal sealed class HoldRefiner
         var atB = new Vector3[held.Length];
         var normals = new Vector3[held.Length];
         var clear = new bool[held.Length];
+        // Frame a for every limb, then frame b: each is solved at most once (alternating would solve each once a limb).
         for (int h = 0; h < held.Length; h++)
         {
             (atA[h], normals[h], clear[h]) = pose.HoldAt(a, indices[h], held[h]);
+        }
+
+        for (int h = 0; h < held.Length; h++)
+        {
             (atB[h], _, bool clearB) = pose.HoldAt(b, indices[h], held[h]);
             clear[h] &= clearB;
         }
