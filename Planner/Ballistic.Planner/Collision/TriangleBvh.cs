@@ -79,6 +79,17 @@ internal sealed class TriangleBvh : ICollisionWorld
     }
 
     /// <summary>
+    /// Adds to <paramref name="results"/>, in the order <see cref="OverlappingTriangles"/> would, the index of every
+    /// triangle whose bounds meet <paramref name="box"/>'s and whose leaf the box is not separated from: a superset of
+    /// the triangles the box touches, for a caller that tests each triangle exactly itself.
+    /// </summary>
+    internal void TrianglesNearBox(in OrientedBox box, List<int> results)
+    {
+        ArgumentNullException.ThrowIfNull(results);
+        Visit(box, results, exact: false);
+    }
+
+    /// <summary>
     /// The first triangle met by the segment <c>origin + t·direction</c>, <c>t ∈ [0, maxT]</c> (both faces count).
     /// </summary>
     /// <returns>True with the hit when the segment meets the level.</returns>
@@ -205,7 +216,8 @@ internal sealed class TriangleBvh : ICollisionWorld
         OverlappingTriangles(new OrientedBox(box.Center, box.HalfExtents, Quaternion.Identity), results);
     }
 
-    private bool Visit(in OrientedBox box, List<int>? results)
+    /// <summary>Walks the tree for <paramref name="box"/>: the triangles it touches (when not <paramref name="exact"/>, those whose bounds meet its bounds), added to <paramref name="results"/>, or when that is <c>null</c> whether there is one.</summary>
+    private bool Visit(in OrientedBox box, List<int>? results, bool exact = true)
     {
         if (_nodes.Length == 0)
         {
@@ -234,7 +246,7 @@ internal sealed class TriangleBvh : ICollisionWorld
             {
                 for (int i = node.Start; i < node.Start + node.Count; i++)
                 {
-                    if (_triangleBounds[i].Intersects(boxBounds) && box.Intersects(_triangles[i]))
+                    if (_triangleBounds[i].Intersects(boxBounds) && (!exact || box.Intersects(_triangles[i])))
                     {
                         if (results is null)
                         {

@@ -47,7 +47,30 @@ internal sealed class ContactEstimator
         _surfaces = surfaces;
         _character = character;
         PoseValidator = poseValidator;
+        _triangles = level.Triangles as Triangle[] ?? [.. level.Triangles];
+        _normals = new Vector3[_triangles.Length];
+        _centres = new Vector3[_triangles.Length];
+        _radii = new float[_triangles.Length];
+        for (int t = 0; t < _normals.Length; t++)
+        {
+            Triangle triangle = _triangles[t];
+            _normals[t] = triangle.Normal;
+            _centres[t] = triangle.Centroid;
+            _radii[t] = MathF.Sqrt(MathF.Max(Vector3.DistanceSquared(triangle.A, _centres[t]), MathF.Max(Vector3.DistanceSquared(triangle.B, _centres[t]), Vector3.DistanceSquared(triangle.C, _centres[t]))));
+        }
     }
+
+    /// <summary>Each triangle's centroid (world metres), by index: with <see cref="_radii"/>, a ball holding it.</summary>
+    private readonly Vector3[] _centres;
+
+    /// <summary>Each triangle's farthest vertex from its centroid (metres), by index.</summary>
+    private readonly float[] _radii;
+
+    /// <summary>The level's triangles (<see cref="Level.Triangles"/>), by index.</summary>
+    private readonly Triangle[] _triangles;
+
+    /// <summary>Each triangle's unit normal (<see cref="Triangle.Normal"/>), by index.</summary>
+    private readonly Vector3[] _normals;
 
     /// <summary>The extra test valid poses must pass; <c>null</c> when there is none.</summary>
     public IPoseValidator? PoseValidator { get; }
@@ -101,11 +124,15 @@ internal sealed class ContactEstimator
         Limb limb = _character.Limbs[limbIndex];
         OrientedBox workspace = limb.WorkspaceAt(pose);
         scratch.Clear();
-        _bvh.OverlappingTriangles(workspace, scratch);
+        _bvh.TrianglesNearBox(workspace, scratch);
         if (scratch.Count == 0)
         {
             return false;
         }
+
+        // Each near triangle is tested against Wk in Wk's frame, once for the overlap and the clipping alike; those
+        // no part of the limb may touch are passed over before.
+        Quaternion toLocal = Quaternion.Conjugate(workspace.Rotation);
 
         // Area, area-weighted centroid and normal of the intersection, per surface (few per workspace: a list); the
         // acceptable triangles' pieces inside Wk are kept for placing the contact on one of them.
@@ -121,14 +148,22 @@ internal sealed class ContactEstimator
                 continue;
             }
 
-            Triangle triangle = _level.Triangles[t];
-            Vector3 normal = triangle.Normal;
+            Vector3 normal = _normals[t];
             if (!limb.Filter.Accepts(normal))
             {
                 continue;
             }
 
-            (float area, Vector3 centroid) = BoxClipper.ClipArea(workspace, triangle);
+            ref readonly Triangle triangle = ref _triangles[t];
+            Vector3 v0 = Vector3.Transform(triangle.A - workspace.Center, toLocal);
+            Vector3 v1 = Vector3.Transform(triangle.B - workspace.Center, toLocal);
+            Vector3 v2 = Vector3.Transform(triangle.C - workspace.Center, toLocal);
+            if (!BoxClipper.Overlaps(workspace, v0, v1, v2))
+            {
+                continue;
+            }
+
+            (float area, Vector3 centroid) = BoxClipper.ClipLocal(workspace, triangle, v0, v1, v2);
             if (area <= 0f || !FacesTrunk(normal, centroid, pose.Position))
             {
                 continue;
@@ -217,7 +252,15 @@ internal sealed class ContactEstimator
                 continue;
             }
 
-            Triangle triangle = _level.Triangles[piece.Triangle];
+            // A triangle whose ball lies farther than the nearest point found cannot hold a nearer one (with a margin
+            // far above rounding, so that the same point is found as when every triangle is measured).
+            float beyond = Vector3.Distance(aim, _centres[piece.Triangle]) - _radii[piece.Triangle];
+            if (beyond > 0f && beyond * beyond > (nearest * 1.001f) + 1e-8f)
+            {
+                continue;
+            }
+
+            ref readonly Triangle triangle = ref _triangles[piece.Triangle];
             Vector3 closest = triangle.ClosestPoint(aim);
             float distance = Vector3.DistanceSquared(closest, aim);
             if (distance < nearest)

@@ -17,22 +17,49 @@ internal static class BoxClipper
     /// </summary>
     public static (float Area, Vector3 Centroid) ClipArea(in OrientedBox box, in Triangle triangle)
     {
-        Span<Vector3> a = stackalloc Vector3[MaxVertices];
-        Span<Vector3> b = stackalloc Vector3[MaxVertices];
-        a[0] = box.ToLocal(triangle.A);
-        a[1] = box.ToLocal(triangle.B);
-        a[2] = box.ToLocal(triangle.C);
-        int count = 3;
+        Quaternion inverse = Quaternion.Conjugate(box.Rotation);
+        return ClipLocal(box, triangle, Vector3.Transform(triangle.A - box.Center, inverse), Vector3.Transform(triangle.B - box.Center, inverse), Vector3.Transform(triangle.C - box.Center, inverse));
+    }
+
+    /// <summary>
+    /// Whether <paramref name="box"/> and the triangle whose vertices in the box's frame (<see cref="OrientedBox.ToLocal"/>)
+    /// are <paramref name="v0"/>, <paramref name="v1"/>, <paramref name="v2"/> share a point: at once when all three
+    /// lie inside the box, else by <see cref="BoxTriangleOverlap.CenteredBoxIntersects"/>.
+    /// </summary>
+    public static bool Overlaps(in OrientedBox box, Vector3 v0, Vector3 v1, Vector3 v2)
+    {
         Vector3 h = box.HalfExtents;
-        if (Inside(a[0], h) && Inside(a[1], h) && Inside(a[2], h))
+        return (Inside(v0, h) && Inside(v1, h) && Inside(v2, h)) || BoxTriangleOverlap.CenteredBoxIntersects(h, v0, v1, v2);
+    }
+
+    /// <summary>
+    /// <see cref="ClipArea"/> of <paramref name="triangle"/> given its vertices in the box's frame
+    /// (<see cref="OrientedBox.ToLocal"/> of A, B and C), computed once by the caller.
+    /// </summary>
+    public static (float Area, Vector3 Centroid) ClipLocal(in OrientedBox box, in Triangle triangle, Vector3 v0, Vector3 v1, Vector3 v2)
+    {
+        Vector3 h = box.HalfExtents;
+        if (Inside(v0, h) && Inside(v1, h) && Inside(v2, h))
         {
             // Wholly inside: nothing to clip.
             return (triangle.Area, triangle.Centroid);
         }
 
+        Span<Vector3> a = stackalloc Vector3[MaxVertices];
+        Span<Vector3> b = stackalloc Vector3[MaxVertices];
+        a[0] = v0;
+        a[1] = v1;
+        a[2] = v2;
+        int count = 3;
+
         for (int axis = 0; axis < 3 && count > 0; axis++)
         {
             float limit = axis == 0 ? h.X : axis == 1 ? h.Y : h.Z;
+            if (Within(a[..count], axis, limit))
+            {
+                continue; // clipping by this axis's two planes would give the polygon back as it is
+            }
+
             count = ClipPlane(a[..count], b, axis, limit, sign: 1f);
             count = ClipPlane(b[..count], a, axis, limit, sign: -1f);
         }
@@ -83,6 +110,20 @@ internal static class BoxClipper
         }
 
         return count;
+    }
+
+    /// <summary>Whether every vertex lies within both planes ±<paramref name="limit"/> of <paramref name="axis"/>, boundary included (<see cref="ClipPlane"/> keeps it whole).</summary>
+    private static bool Within(ReadOnlySpan<Vector3> polygon, int axis, float limit)
+    {
+        foreach (Vector3 v in polygon)
+        {
+            if (!(MathF.Abs(Component(v, axis)) <= limit))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     private static bool Inside(Vector3 p, Vector3 h) => MathF.Abs(p.X) <= h.X && MathF.Abs(p.Y) <= h.Y && MathF.Abs(p.Z) <= h.Z;

@@ -101,6 +101,66 @@ public sealed class ContactEstimatorTests
     }
 
     [Test]
+    public void AContactIsTheNearestPointUnderItsHomeOfItsSurfacesPatchInTheWorkspace([Values("curved", "field")] string name)
+    {
+        // The definition worked out over every triangle of the level: of the pieces of the contact's surface inside
+        // the limb's workspace (touching it with some area, facing the trunk, accepted by the limb), the one whose
+        // nearest point to the limb's home is nearest gives the contact: that point, or the piece's centre when the
+        // point lies outside the workspace. Neither level has a brink for the ledge rule to move a foot off.
+        (Level level, _) = ForeignLevels.Get(name);
+        ReducedCharacter skeleton = CharacterPresets.Skeleton();
+        ContactEstimator estimator = Estimator(level, skeleton);
+        SurfaceSet surfaces = SurfaceSet.Build(level);
+        var bvh = new TriangleBvh(level.Triangles);
+        var random = new Random(17);
+        int checkedContacts = 0;
+        int clippedPieces = 0;
+        for (int i = 0; i < 120; i++)
+        {
+            float x = -5f + (10f * (float)random.NextDouble());
+            float z = -5f + (10f * (float)random.NextDouble());
+            bvh.Raycast(new Vector3(x, 20f, z), new Vector3(0f, -40f, 0f), 1f, out RayHit ground);
+            var pose = new RootPose(ground.Point + new Vector3(0f, 0.9f + (0.3f * (float)random.NextDouble()), 0f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, (float)random.NextDouble() * 6.3f));
+            foreach (Contact c in estimator.Evaluate(pose).Contacts)
+            {
+                Limb limb = skeleton.Limbs[c.Limb];
+                OrientedBox workspace = limb.WorkspaceAt(pose);
+                Vector3 aim = pose.ToWorld(limb.Home!.Value);
+                float nearest = float.PositiveInfinity;
+                Vector3 expected = default;
+                for (int t = 0; t < level.Triangles.Count; t++)
+                {
+                    Triangle triangle = level.Triangles[t];
+                    if (surfaces.SurfaceOf(t) != c.Surface || !limb.Filter.Accepts(triangle.Normal) || !workspace.Intersects(triangle))
+                    {
+                        continue;
+                    }
+
+                    (float area, Vector3 centre) = BoxClipper.ClipArea(workspace, triangle);
+                    if (!(area > 0f) || !ContactEstimator.FacesTrunk(triangle.Normal, centre, pose.Position))
+                    {
+                        continue;
+                    }
+
+                    clippedPieces += area < triangle.Area * 0.999f ? 1 : 0;
+                    Vector3 closest = triangle.ClosestPoint(aim);
+                    if (Vector3.DistanceSquared(closest, aim) < nearest)
+                    {
+                        nearest = Vector3.DistanceSquared(closest, aim);
+                        expected = workspace.Contains(closest) ? closest : centre;
+                    }
+                }
+
+                Assert.That(Vector3.Distance(c.Position, expected), Is.LessThan(1e-5f), $"pose {i}, {limb.Name}");
+                checkedContacts++;
+            }
+        }
+
+        Assert.That(checkedContacts, Is.GreaterThan(150));
+        Assert.That(clippedPieces, Is.GreaterThan(150), "pieces cut by the workspace's faces");
+    }
+
+    [Test]
     public void TooHighOrInsideTheFloorIsInvalid()
     {
         Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, 0f).Build();
