@@ -130,8 +130,8 @@ internal sealed class ContactEstimator
             return false;
         }
 
-        // Each near triangle is tested against Wk in Wk's frame, once for the overlap and the clipping alike; those
-        // no part of the limb may touch are passed over before.
+        // Each near triangle is put in Wk's frame once, for the overlap test and the clipping alike; those no part of
+        // the limb may touch are passed over before.
         Quaternion toLocal = Quaternion.Conjugate(workspace.Rotation);
 
         // Area, area-weighted centroid and normal of the intersection, per surface (few per workspace: a list); the
@@ -158,12 +158,7 @@ internal sealed class ContactEstimator
             Vector3 v0 = Vector3.Transform(triangle.A - workspace.Center, toLocal);
             Vector3 v1 = Vector3.Transform(triangle.B - workspace.Center, toLocal);
             Vector3 v2 = Vector3.Transform(triangle.C - workspace.Center, toLocal);
-            if (!BoxClipper.Overlaps(workspace, v0, v1, v2))
-            {
-                continue;
-            }
-
-            (float area, Vector3 centroid) = BoxClipper.ClipLocal(workspace, triangle, v0, v1, v2);
+            (float area, Vector3 centroid) = BoxClipper.OverlapArea(workspace, triangle, v0, v1, v2);
             if (area <= 0f || !FacesTrunk(normal, centroid, pose.Position))
             {
                 continue;

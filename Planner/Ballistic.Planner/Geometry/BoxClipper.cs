@@ -22,15 +22,29 @@ internal static class BoxClipper
     }
 
     /// <summary>
-    /// Whether <paramref name="box"/> and the triangle whose vertices in the box's frame (<see cref="OrientedBox.ToLocal"/>)
-    /// are <paramref name="v0"/>, <paramref name="v1"/>, <paramref name="v2"/> share a point: at once when all three
-    /// lie inside the box, else by <see cref="BoxTriangleOverlap.CenteredBoxIntersects"/>.
+    /// <see cref="ClipLocal"/>, but area 0 (centroid the box's centre) wherever the separating-axis test
+    /// (<see cref="BoxTriangleOverlap.CenteredBoxIntersects"/>) finds the box and the triangle apart. That test is
+    /// needed only where the clipped area is below <see cref="GrazeArea"/>: a larger piece is a true overlap, not a
+    /// rounding of the clip along a face the triangle grazes.
     /// </summary>
-    public static bool Overlaps(in OrientedBox box, Vector3 v0, Vector3 v1, Vector3 v2)
+    public static (float Area, Vector3 Centroid) OverlapArea(in OrientedBox box, in Triangle triangle, Vector3 v0, Vector3 v1, Vector3 v2)
     {
         Vector3 h = box.HalfExtents;
-        return (Inside(v0, h) && Inside(v1, h) && Inside(v2, h)) || BoxTriangleOverlap.CenteredBoxIntersects(h, v0, v1, v2);
+        Vector3 min = Vector3.Min(Vector3.Min(v0, v1), v2);
+        Vector3 max = Vector3.Max(Vector3.Max(v0, v1), v2);
+        if (min.X > h.X || max.X < -h.X || min.Y > h.Y || max.Y < -h.Y || min.Z > h.Z || max.Z < -h.Z)
+        {
+            return (0f, box.Center); // all three beyond one face
+        }
+
+        (float Area, Vector3 Centroid) clipped = ClipLocal(box, triangle, v0, v1, v2);
+        return clipped.Area > 0f && clipped.Area < GrazeArea && !BoxTriangleOverlap.CenteredBoxIntersects(h, v0, v1, v2)
+            ? (0f, box.Center)
+            : clipped;
     }
+
+    /// <summary>Clipped areas (square metres, a square millimetre) below which <see cref="OverlapArea"/> asks the separating-axis test.</summary>
+    public const float GrazeArea = 1e-6f;
 
     /// <summary>
     /// <see cref="ClipArea"/> of <paramref name="triangle"/> given its vertices in the box's frame
