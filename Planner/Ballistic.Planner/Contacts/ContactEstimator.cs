@@ -47,6 +47,7 @@ internal sealed class ContactEstimator
         _surfaces = surfaces;
         _character = character;
         PoseValidator = poseValidator;
+        _tryOrder = [.. Enumerable.Range(0, character.Limbs.Count).OrderBy(l => character.Limbs[l].Kind == LimbKind.Hand ? 0 : 1)];
         _triangles = level.Triangles as Triangle[] ?? [.. level.Triangles];
         _normals = new Vector3[_triangles.Length];
         _centres = new Vector3[_triangles.Length];
@@ -100,11 +101,56 @@ internal sealed class ContactEstimator
             }
         }
 
-        if (contacts.Count < _character.RequiredContacts)
+        return contacts.Count < _character.RequiredContacts
+            ? new PoseEvaluation(pose, PoseValidity.TooFewContacts, contacts, default)
+            : Judged(pose, contacts);
+    }
+
+    /// <summary>
+    /// <see cref="EvaluateContacts"/> of a pose wanted only when valid: the same evaluation when it is valid, otherwise
+    /// <c>null</c>, given up as soon as the limbs left to try could no longer make up
+    /// <see cref="ReducedCharacter.RequiredContacts"/>. Hands are tried before feet (in a stance a hand touches least
+    /// often, so a stance whose feet reach nothing is refused without trying its last foot); the contacts are listed
+    /// in limb order all the same.
+    /// </summary>
+    internal PoseEvaluation? ValidOrNull(in RootPose pose)
+    {
+        int count = _character.Limbs.Count;
+        Span<Contact> found = count <= 32 ? stackalloc Contact[count] : new Contact[count];
+        Span<bool> touches = count <= 32 ? stackalloc bool[count] : new bool[count];
+        List<int> touched = s_scratch ??= new List<int>(64);
+        int missing = 0;
+        foreach (int limbIndex in _tryOrder)
         {
-            return new PoseEvaluation(pose, PoseValidity.TooFewContacts, contacts, default);
+            if (TryEstimate(limbIndex, pose, touched, out found[limbIndex]))
+            {
+                touches[limbIndex] = true;
+            }
+            else if (count - ++missing < _character.RequiredContacts)
+            {
+                return null;
+            }
         }
 
+        var contacts = new List<Contact>(count);
+        for (int limbIndex = 0; limbIndex < count; limbIndex++)
+        {
+            if (touches[limbIndex])
+            {
+                contacts.Add(found[limbIndex]);
+            }
+        }
+
+        PoseEvaluation judged = Judged(pose, contacts);
+        return judged.IsValid ? judged : null;
+    }
+
+    /// <summary>The limbs in the order <see cref="ValidOrNull"/> tries them: hands, then feet, each in limb order.</summary>
+    private readonly int[] _tryOrder;
+
+    /// <summary>The evaluation of a pose with enough <paramref name="contacts"/> (in limb order): their cone, and the validator's word.</summary>
+    private PoseEvaluation Judged(in RootPose pose, List<Contact> contacts)
+    {
         if (Contact.ConeOf(contacts) is not { } cone)
         {
             return new PoseEvaluation(pose, PoseValidity.ForceClosure, contacts, default);

@@ -478,8 +478,7 @@ internal sealed class TrunkSampler
             position += push * Settings.RepairStep;
         }
 
-        PoseEvaluation evaluation = _estimator.EvaluateContacts(new RootPose(position, rotation));
-        return evaluation.IsValid ? evaluation : null;
+        return _estimator.ValidOrNull(new RootPose(position, rotation));
     }
 
     /// <summary>The triangles a trial trunk overlaps (<see cref="TryPose(int, Vector3, float, float, ref long)"/>), kept per thread between trials.</summary>

@@ -161,6 +161,54 @@ public sealed class ContactEstimatorTests
     }
 
     [Test]
+    public void AStanceWantedOnlyWhenValidIsTheWholeEvaluationOrNone([Values("stairs", "thin-slabs", "curved")] string name, [Values("skeleton", "ant")] string character)
+    {
+        // The sampler's shortcut (hands tried first, given up once too few limbs are left) against the evaluation
+        // that tries every limb: the same contacts in the same order and the same cone when valid, nothing otherwise.
+        (Level level, _) = ForeignLevels.Get(name);
+        ReducedCharacter body = CharacterPresets.Get(character);
+        ContactEstimator estimator = Estimator(level, body);
+        var bvh = new TriangleBvh(level.Triangles);
+        var random = new Random(23);
+        int valid = 0;
+        int none = 0;
+        int some = 0;
+        for (int i = 0; i < 400; i++)
+        {
+            float x = -5f + (10f * (float)random.NextDouble());
+            float z = -5f + (10f * (float)random.NextDouble());
+            if (!bvh.Raycast(new Vector3(x, 20f, z), new Vector3(0f, -40f, 0f), 1f, out RayHit ground))
+            {
+                continue;
+            }
+
+            var pose = new RootPose(ground.Point + new Vector3(0f, 1.8f * (float)random.NextDouble(), 0f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, (float)random.NextDouble() * 6.3f));
+            PoseEvaluation whole = estimator.EvaluateContacts(pose);
+            PoseEvaluation? quick = estimator.ValidOrNull(pose);
+            if (whole.IsValid)
+            {
+                Assert.That(quick, Is.Not.Null, $"pose {i}");
+                Assert.That(quick!.Contacts, Is.EqualTo(whole.Contacts), $"pose {i}: contacts");
+                Assert.That(quick.Cone, Is.EqualTo(whole.Cone), $"pose {i}: cone");
+                valid++;
+            }
+            else
+            {
+                Assert.That(quick, Is.Null, $"pose {i}: {whole.Validity}");
+                none += whole.Contacts.Count == 0 ? 1 : 0;
+                some += whole.Contacts.Count > 0 ? 1 : 0;
+            }
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(valid, Is.GreaterThan(30), "valid");
+            Assert.That(none, Is.GreaterThan(30), "touching nothing");
+            Assert.That(some, Is.GreaterThan(0), "touching, too little");
+        });
+    }
+
+    [Test]
     public void TooHighOrInsideTheFloorIsInvalid()
     {
         Level level = new LevelBuilder("t").AddFloor(-5f, -5f, 5f, 5f, 0f).Build();
