@@ -49,13 +49,11 @@ internal sealed class ContactEstimator
         PoseValidator = poseValidator;
         _tryOrder = [.. Enumerable.Range(0, character.Limbs.Count).OrderBy(l => character.Limbs[l].Kind == LimbKind.Hand ? 0 : 1)];
         _triangles = level.Triangles as Triangle[] ?? [.. level.Triangles];
-        _normals = new Vector3[_triangles.Length];
         _centres = new Vector3[_triangles.Length];
         _radii = new float[_triangles.Length];
-        for (int t = 0; t < _normals.Length; t++)
+        for (int t = 0; t < _triangles.Length; t++)
         {
             Triangle triangle = _triangles[t];
-            _normals[t] = triangle.Normal;
             _centres[t] = triangle.Centroid;
             _radii[t] = MathF.Sqrt(MathF.Max(Vector3.DistanceSquared(triangle.A, _centres[t]), MathF.Max(Vector3.DistanceSquared(triangle.B, _centres[t]), Vector3.DistanceSquared(triangle.C, _centres[t]))));
         }
@@ -69,9 +67,6 @@ internal sealed class ContactEstimator
 
     /// <summary>The level's triangles (<see cref="Level.Triangles"/>), by index.</summary>
     private readonly Triangle[] _triangles;
-
-    /// <summary>Each triangle's unit normal (<see cref="Triangle.Normal"/>), by index.</summary>
-    private readonly Vector3[] _normals;
 
     /// <summary>The extra test valid poses must pass; <c>null</c> when there is none.</summary>
     public IPoseValidator? PoseValidator { get; }
@@ -194,7 +189,7 @@ internal sealed class ContactEstimator
                 continue;
             }
 
-            Vector3 normal = _normals[t];
+            Vector3 normal = _surfaces.NormalOf(t);
             if (!limb.Filter.Accepts(normal))
             {
                 continue;

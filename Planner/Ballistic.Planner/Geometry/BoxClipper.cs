@@ -17,8 +17,7 @@ internal static class BoxClipper
     /// </summary>
     public static (float Area, Vector3 Centroid) ClipArea(in OrientedBox box, in Triangle triangle)
     {
-        Quaternion inverse = Quaternion.Conjugate(box.Rotation);
-        return ClipLocal(box, triangle, Vector3.Transform(triangle.A - box.Center, inverse), Vector3.Transform(triangle.B - box.Center, inverse), Vector3.Transform(triangle.C - box.Center, inverse));
+        return ClipLocal(box, triangle, box.ToLocal(triangle.A), box.ToLocal(triangle.B), box.ToLocal(triangle.C));
     }
 
     /// <summary>
@@ -30,11 +29,9 @@ internal static class BoxClipper
     public static (float Area, Vector3 Centroid) OverlapArea(in OrientedBox box, in Triangle triangle, Vector3 v0, Vector3 v1, Vector3 v2)
     {
         Vector3 h = box.HalfExtents;
-        Vector3 min = Vector3.Min(Vector3.Min(v0, v1), v2);
-        Vector3 max = Vector3.Max(Vector3.Max(v0, v1), v2);
-        if (min.X > h.X || max.X < -h.X || min.Y > h.Y || max.Y < -h.Y || min.Z > h.Z || max.Z < -h.Z)
+        if (BoxTriangleOverlap.BeyondAFace(h, v0, v1, v2))
         {
-            return (0f, box.Center); // all three beyond one face
+            return (0f, box.Center);
         }
 
         (float Area, Vector3 Centroid) clipped = ClipLocal(box, triangle, v0, v1, v2);

@@ -11,10 +11,7 @@ internal static class BoxTriangleOverlap
     /// </summary>
     public static bool CenteredBoxIntersects(Vector3 h, Vector3 v0, Vector3 v1, Vector3 v2)
     {
-        // Box face axes: the triangle's bounds against the box.
-        Vector3 min = Vector3.Min(Vector3.Min(v0, v1), v2);
-        Vector3 max = Vector3.Max(Vector3.Max(v0, v1), v2);
-        if (min.X > h.X || max.X < -h.X || min.Y > h.Y || max.Y < -h.Y || min.Z > h.Z || max.Z < -h.Z)
+        if (BeyondAFace(h, v0, v1, v2))
         {
             return false;
         }
@@ -35,6 +32,17 @@ internal static class BoxTriangleOverlap
         return !SeparatedOnEdgeAxes(h, e0, v0, v1, v2) &&
                !SeparatedOnEdgeAxes(h, e1, v0, v1, v2) &&
                !SeparatedOnEdgeAxes(h, e2, v0, v1, v2);
+    }
+
+    /// <summary>
+    /// The box face axes, the first of <see cref="CenteredBoxIntersects"/>'s tests: true when all three vertices (in
+    /// the box's frame) lie beyond the same face of the box [−h, h].
+    /// </summary>
+    public static bool BeyondAFace(Vector3 h, Vector3 v0, Vector3 v1, Vector3 v2)
+    {
+        Vector3 min = Vector3.Min(Vector3.Min(v0, v1), v2);
+        Vector3 max = Vector3.Max(Vector3.Max(v0, v1), v2);
+        return min.X > h.X || max.X < -h.X || min.Y > h.Y || max.Y < -h.Y || min.Z > h.Z || max.Z < -h.Z;
     }
 
     /// <summary>Tests the three axes (unit x, y, z) × <paramref name="edge"/>.</summary>

@@ -11,11 +11,13 @@ internal sealed class SurfaceSet
 {
     private readonly int[] _surfaceOfTriangle;
     private readonly ContactSurface[] _surfaces;
+    private readonly Vector3[] _normals;
 
-    private SurfaceSet(int[] surfaceOfTriangle, ContactSurface[] surfaces)
+    private SurfaceSet(int[] surfaceOfTriangle, ContactSurface[] surfaces, Vector3[] normals)
     {
         _surfaceOfTriangle = surfaceOfTriangle;
         _surfaces = surfaces;
+        _normals = normals;
     }
 
     /// <summary>The surfaces, indexed by <see cref="ContactSurface.Id"/>.</summary>
@@ -23,6 +25,9 @@ internal sealed class SurfaceSet
 
     /// <summary>The surface of triangle <paramref name="triangle"/>, or −1 when it lies in a surface too small for contacts.</summary>
     public int SurfaceOf(int triangle) => _surfaceOfTriangle[triangle];
+
+    /// <summary>The unit normal of triangle <paramref name="triangle"/> (<see cref="Geometry.Triangle.Normal"/>), worked out once when the set is built.</summary>
+    public Vector3 NormalOf(int triangle) => _normals[triangle];
 
     /// <summary>Groups the level's triangles.</summary>
     public static SurfaceSet Build(Level level, SurfaceSettings? settings = null)
@@ -120,7 +125,7 @@ internal sealed class SurfaceSet
             }
         }
 
-        return new SurfaceSet(surfaceOf, [.. surfaces]);
+        return new SurfaceSet(surfaceOf, [.. surfaces], normals);
     }
 
     /// <summary>Maps each triangle corner to a welded vertex id (positions quantised to the tolerance).</summary>
