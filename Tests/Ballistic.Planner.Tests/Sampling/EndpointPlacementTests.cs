@@ -4,6 +4,7 @@ using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
+using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
 using Ballistic.Planner.Tests.Support;
 
@@ -229,6 +230,61 @@ public sealed class EndpointPlacementTests
         Assert.That(plan.Status, Is.EqualTo(PlannerStatus.Exact));
         Assert.That(plan.Jumps, Is.Empty);
         Assert.That(plan.Start, Is.SameAs(plan.Goal));
+    }
+
+    /// <summary>
+    /// A jump's stance is turned to face the jump at no more than its own height (a stance under a ceiling stays as
+    /// low), but a roadmap crouch lower than the sampler's whole lift range has no upright lift that low: turned, such
+    /// a stance is tried at the range's lowest lift too. On the desert's roadmap, crouches turned every eighth of a
+    /// turn, where they stand and shifted along the way as the facer shifts them, are placed wherever a stance at the
+    /// range's lowest lift is; each faces the way asked, stands within the tolerance, and no taller than that lift (to
+    /// within 15 cm: the ground's tilt and the contacts' centre below the trunk's surface point).
+    /// </summary>
+    [Test]
+    public void ACrouchTurnedToFaceAJumpIsPlacedWhereverAStanceAtTheLowestUprightLiftIs()
+    {
+        PlanningScene scene = SharedLevels.Scene("desert", "skeleton");
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 400, Threads = 2 }).Roadmap;
+        float lowest = scene.Sampler.Lift.Min;
+        RoadmapNode[] crouches = [.. roadmap.Nodes.Where(n => JumpFacer.Height(n) < lowest - 0.01f).Take(16)];
+        Assume.That(crouches, Has.Length.GreaterThanOrEqualTo(12), "the desert's roadmap has crouches below the lift range");
+        var tolerance = new EndpointTolerance(0.2f, 0.3f);
+        int tried = 0;
+        int standsLow = 0;
+        int refused = 0;
+        float tallest = 0f;
+        foreach (RoadmapNode crouch in crouches)
+        {
+            for (int eighth = 0; eighth < 8; eighth++)
+            {
+                float facing = eighth * MathF.PI / 4f;
+                var along = new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
+                foreach (float shift in new[] { 0f, JumpFacer.HopShift, -JumpFacer.HopShift })
+                {
+                    Vector3 point = crouch.ContactCentre + (shift * along);
+                    EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(crouch));
+                    EndpointPlacement low = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, lowest);
+                    tried++;
+                    standsLow += low.Placed ? 1 : 0;
+                    if (!turned.Placed)
+                    {
+                        refused += low.Placed ? 1 : 0;
+                        continue;
+                    }
+
+                    AssertWithin(turned, point, tolerance.Across, tolerance.UpDown);
+                    Vector3 now = turned.Pose!.Pose.Forward;
+                    float off = MathF.Abs(MathF.IEEERemainder(MathF.Atan2(now.X, now.Z) - facing, 2f * MathF.PI)) * 180f / MathF.PI;
+                    Assert.That(off, Is.LessThanOrEqualTo(15f), "faces the way asked, within the yaws tried (10°) and what the ground's tilt adds");
+                    tallest = MathF.Max(tallest, turned.Pose.Pose.Position.Y - TrunkSampler.ContactCentre(turned.Pose).Y);
+                }
+            }
+        }
+
+        TestContext.Out.WriteLine($"{tried} turned placements of {crouches.Length} crouches; {standsLow} stand at the lowest lift ({lowest:0.000} m); {refused} of those refused to the crouch; tallest {tallest:0.000} m");
+        Assert.That(standsLow, Is.GreaterThan(tried / 2), "the lowest lift stands on most of these spots");
+        Assert.That(refused, Is.Zero, "a crouch turned is placed wherever a stance at the range's lowest lift is");
+        Assert.That(tallest, Is.LessThanOrEqualTo(lowest + 0.15f), "no taller than the range's lowest lift, but for the ground's tilt and where the contacts stand below the trunk's surface point");
     }
 
     private static void AssertWithin(EndpointPlacement placed, Vector3 point, float across, float upDown)
