@@ -224,9 +224,9 @@ internal sealed class TrunkSampler
     /// <paramref name="yawOffsets"/> (radians, tried in order) are tried: a stance that must face within a bound of a
     /// heading (a jump's takeoff) is never placed facing elsewhere. With <paramref name="height"/> (metres of the
     /// trunk above the surface: the stance it replaces stands that high, under a ceiling or in a cave, say), the trunk
-    /// is tried at that height first, then at the stance range's lifts up to it, highest first, or, when it stands
-    /// lower than the whole range (a crouch), at the range's lowest lift; without it, at all the range's lifts,
-    /// highest first.
+    /// is tried at that height first, then at the stance range's lifts up to it, highest first; a stance lower than
+    /// the whole range (a crouch) that stands nowhere within the tolerance at its own height is tried at the range's
+    /// lowest lift. Without a height, at all the range's lifts, highest first.
     /// </summary>
     internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand, float? height = null)
     {
@@ -239,17 +239,19 @@ internal sealed class TrunkSampler
         if (height is float h)
         {
             // The stance replaced's own height first (even below the range: a crouch a sample repaired into place),
-            // then no taller than it (a taller trunk may hit what the old one cleared), the highest first. A crouch
-            // lower than the whole range has no such lift: turned, its feet often no longer reach the ground its old
-            // heading reached (a trunk held low over a block's top has its feet's workspaces inside the block), and
-            // it is tried at the range's lowest lift too, the least taller it can stand. Without that, on the desert
-            // 644 of the 651 turned stances the first 256 node-to-node requests placed in vain were such crouches,
-            // each placement trying every pose within its tolerance first.
+            // then no taller than it (a taller trunk may hit what the old one cleared), the highest first.
             float own = _lift.Max > _lift.Min ? (h - _lift.Min) / (_lift.Max - _lift.Min) : 0f;
             lifts = [own, .. UprightLifts.Where(l => _lift.Lerp(l) <= h + LiftSlack).OrderByDescending(l => l)];
             if (lifts.Length == 1 && own < 0f)
             {
-                lifts = [own, 0f];
+                // A crouch lower than the whole range has no such lift: turned, its feet often no longer reach the
+                // ground its old heading reached (a trunk held low over a block's top has its feet's workspaces
+                // inside the block). Where no pose of its own height stands within the tolerance, it is tried at the
+                // range's lowest lift, the least taller it can stand. Without that, on the desert 644 of the 651
+                // turned stances the first 256 node-to-node requests placed in vain were such crouches, and each
+                // jump end tried up to ten such placements (JumpFacer).
+                EndpointPlacement crouched = PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts);
+                return crouched.Placed ? crouched : PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, [0f]);
             }
         }
 

@@ -235,10 +235,11 @@ public sealed class EndpointPlacementTests
     /// <summary>
     /// A jump's stance is turned to face the jump at no more than its own height (a stance under a ceiling stays as
     /// low), but a roadmap crouch lower than the sampler's whole lift range has no upright lift that low: turned, such
-    /// a stance is tried at the range's lowest lift too. On the desert's roadmap, crouches turned every eighth of a
-    /// turn, where they stand and shifted along the way as the facer shifts them, are placed wherever a stance at the
-    /// range's lowest lift is; each faces the way asked, stands within the tolerance, and no taller than that lift (to
-    /// within 15 cm: the ground's tilt and the contacts' centre below the trunk's surface point).
+    /// a stance that stands nowhere within the tolerance at its own height is tried at the range's lowest lift. On the
+    /// desert's roadmap, crouches turned every eighth of a turn, where they stand and shifted along the way as the
+    /// facer shifts them, are placed wherever a stance at the range's lowest lift is; each faces the way asked, stands
+    /// within the tolerance, and no taller than that lift (to within 15 cm: the ground's tilt and the contacts' centre
+    /// below the trunk's surface point).
     /// </summary>
     [Test]
     public void ACrouchTurnedToFaceAJumpIsPlacedWhereverAStanceAtTheLowestUprightLiftIs()
