@@ -3231,15 +3231,28 @@ internal sealed class WalkGait
         private void EaseIntoHeldJump(RigLimb limb, Holding hold, int i)
         {
             float[] jumped = _angles[i];
-            foreach (int j in limb.Chain)
+            if (!Jumped(limb, jumped, _angles[i - 1], _angles[i - 2]))
             {
-                if (Jumps(j, _rig.JointTurn(j, _angles[i - 1], jumped), _angles[i - 1], _angles[i - 2]))
-                {
-                    EaseInto(limb, i, k => _angles[k], jumped, (k, attempt) => _gait.Hold(_roots[k], attempt, limb, hold.Point, hold.Normal), hold.Point);
-                    return;
-                }
+                return;
+            }
+
+            // Over as many steps as keep each joint under MostBlendTurn a displayed frame where the hold began early
+            // enough (the foot pivoting on its foothold over a tenth of a second, not in one frame), else over one frame.
+            bool HoldAt(int k, float[] attempt) => _gait.Hold(_roots[k], attempt, limb, hold.Point, hold.Normal);
+            int wide = EaseSpan(limb, _angles[i - 1], jumped);
+            if (wide <= EaseSteps || i - hold.From <= wide + 1 || !EaseInto(limb, i, k => _angles[k], jumped, HoldAt, hold.Point, wide))
+            {
+                EaseInto(limb, i, k => _angles[k], jumped, HoldAt, hold.Point);
             }
         }
+
+        /// <summary>
+        /// Fine steps over which easing into a solve that jumps from <paramref name="before"/> to
+        /// <paramref name="jumped"/> turns no joint of <paramref name="limb"/> more than <see cref="MostBlendTurn"/> a
+        /// displayed frame (<see cref="EaseInto"/> draws the steps toward it evenly).
+        /// </summary>
+        private int EaseSpan(RigLimb limb, float[] before, float[] jumped) =>
+            (int)MathF.Ceiling(MostTurn(limb, before, jumped) * Substeps / MostBlendTurn) - 1;
 
         /// <summary>Holds at fine step <paramref name="i"/> from the hold's known angles, then from the stance angles, when the limb's own fail.</summary>
         private bool Reseeded(int i, float[] trial, RigLimb limb, Holding hold, float[] q, Vector3? ball)
@@ -3357,27 +3370,29 @@ internal sealed class WalkGait
 
         /// <summary>
         /// Eases <paramref name="limb"/> into a solve that jumps at fine step <paramref name="i"/>
-        /// (<paramref name="jumped"/>, the only one holding its curve or foothold there): the <see cref="EaseSteps"/>
-        /// fine steps before it (angles <paramref name="anglesAt"/>) are solved again by <paramref name="holdAt"/>, each
-        /// from its own angles drawn toward <paramref name="jumped"/> by its share of the way, so that the leg changes
-        /// solution over a displayed frame instead of between two fine steps (a panda's upper arm reaching its 90° limit
+        /// (<paramref name="jumped"/>, the only one holding its curve or foothold there): the <paramref name="steps"/>
+        /// fine steps before it (<see cref="EaseSteps"/> unless the caller asks for more; angles
+        /// <paramref name="anglesAt"/>) are solved again by <paramref name="holdAt"/>, each from its own angles drawn
+        /// toward <paramref name="jumped"/> by its share of the way, so that the leg changes solution over a displayed
+        /// frame or more instead of between two fine steps (a panda's upper arm reaching its 90° limit
         /// along a swing, its hand then turning 42° in 1/240 s). Kept only when every one of them holds, its effector
         /// within <see cref="Touch"/> of <paramref name="foothold"/> (a held foot's; <c>null</c> for a swing), the limb
         /// clear of the level at and between the steps, and no joint then turns even half as far in a fine step as in
-        /// the jump; else the steps stay as they were. The caller makes sure the steps exist (after the segment's first
-        /// fine step and the one before the eased ones).
+        /// the jump (over more steps than <see cref="EaseSteps"/>, none faster than <see cref="BlendLimit"/> allows); else
+        /// the steps stay as they were. The caller makes sure the steps exist (after the segment's first fine step and the
+        /// one before the eased ones). True when it eased.
         /// </summary>
-        private void EaseInto(RigLimb limb, int i, Func<int, float[]> anglesAt, float[] jumped, Func<int, float[], bool> holdAt, Vector3? foothold)
+        private bool EaseInto(RigLimb limb, int i, Func<int, float[]> anglesAt, float[] jumped, Func<int, float[], bool> holdAt, Vector3? foothold, int steps = EaseSteps)
         {
             float jump = MostTurn(limb, anglesAt(i - 1), jumped);
-            var solved = new float[EaseSteps][];
-            float[] previous = anglesAt(i - EaseSteps - 1);
+            var solved = new float[steps][];
+            float[] previous = anglesAt(i - steps - 1);
             float worst = 0f;
-            for (int m = 1; m <= EaseSteps; m++)
+            for (int m = 1; m <= steps; m++)
             {
-                int j = i - EaseSteps - 1 + m;
+                int j = i - steps - 1 + m;
                 float[] attempt = (float[])anglesAt(j).Clone();
-                float share = m / (float)(EaseSteps + 1);
+                float share = m / (float)(steps + 1);
                 foreach (int d in limb.ChainDofSpan)
                 {
                     attempt[d] = float.Lerp(attempt[d], jumped[d], share);
@@ -3385,14 +3400,14 @@ internal sealed class WalkGait
 
                 if (!holdAt(j, attempt))
                 {
-                    return;
+                    return false;
                 }
 
                 _rig.Solve(_roots[j], attempt, _positions, _rotations);
                 if ((foothold is { } point && Vector3.Distance(limb.EffectorPosition(_positions, _rotations), point) > Touch)
                     || _gait._collision.LimbCollides(limb, _positions, _rotations, foothold) || MidwayCollides(limb, j, previous, attempt, foothold))
                 {
-                    return;
+                    return false;
                 }
 
                 worst = MathF.Max(worst, MostTurn(limb, previous, attempt));
@@ -3400,21 +3415,186 @@ internal sealed class WalkGait
                 solved[m - 1] = attempt;
             }
 
+            // Eased over more than a frame, no faster than the eye allows a frame in any fine step, or than the leg's
+            // own fastest step there by more than an even share of the jump (as Unsnap).
             worst = MathF.Max(worst, MostTurn(limb, previous, jumped));
-            if (worst >= 0.5f * jump || MidwayCollides(limb, i, previous, jumped, foothold))
+            if (worst >= 0.5f * jump || (steps > EaseSteps && worst > BlendLimit(limb, anglesAt, i - steps - 1, i - 1, jump / (steps + 1))) || MidwayCollides(limb, i, previous, jumped, foothold))
             {
-                return;
+                return false;
             }
 
-            for (int m = 1; m <= EaseSteps; m++)
+            for (int m = 1; m <= steps; m++)
             {
-                float[] angles = anglesAt(i - EaseSteps - 1 + m);
+                float[] angles = anglesAt(i - steps - 1 + m);
                 foreach (int d in limb.ChainDofSpan)
                 {
                     angles[d] = solved[m - 1][d];
                 }
             }
+
+            return true;
         }
+
+        /// <summary>Whether any joint of <paramref name="limb"/>'s chain jumps from <paramref name="before"/> to <paramref name="after"/> (<see cref="Jumps"/>).</summary>
+        private bool Jumped(RigLimb limb, float[] after, float[] before, float[]? earlier)
+        {
+            foreach (int j in limb.Chain)
+            {
+                if (Jumps(j, _rig.JointTurn(j, after, before), before, earlier))
+                {
+                    return true;
+                }
+            }
+
+            return false;
+        }
+
+        /// <summary>
+        /// Blends a swinging <paramref name="limb"/> across a solve that jumped to another solution of the leg between
+        /// fine steps <paramref name="from"/> and <paramref name="to"/> of the swing from <paramref name="a"/> to
+        /// <paramref name="b"/> (angles <paramref name="keys"/>, by step from <paramref name="a"/>; the steps between
+        /// the two, if any, eased into the new solution over a displayed frame, <see cref="EaseInto"/>): the jump, less
+        /// the leg's own motion either side of it, is spread over the steps around it along a smoothstep (an offset
+        /// blend: the steps before drawn toward the new solution, those after away from it toward the old), over as many
+        /// steps as keep every joint under <see cref="MostBlendTurn"/> a displayed frame, within the swing (its
+        /// lift-off and touch-down steps stay as they are). The foot leaves its curve a little while the leg turns from
+        /// one solution to the other in the air. One displayed frame is too short for a jump the eye sees: a skeleton's
+        /// hip whose rotation reached its limit mid-swing on the desert turned 52° between two frames of 4°. Kept only
+        /// when every step blended is clear of the level, and between steps, and no joint turns faster in any fine step
+        /// of it than <see cref="BlendLimit"/> allows; false otherwise, the steps as they were.
+        /// </summary>
+        private bool Unsnap(RigLimb limb, int a, int b, float[][] keys, int from, int to)
+        {
+            float[] before = keys[from - a];
+            float[] after = keys[to - a];
+            float jump = MostTurn(limb, before, after);
+            float perStep = MostBlendTurn / Substeps;
+            int gap = to - from;
+            if (!(jump > gap * perStep))
+            {
+                return false;
+            }
+
+            // The jump less the leg's own motion (the mean of the steps either side, over the gap).
+            ReadOnlySpan<int> dofs = limb.ChainDofSpan;
+            var offset = new float[dofs.Length];
+            for (int k = 0; k < dofs.Length; k++)
+            {
+                int d = dofs[k];
+                float own = 0f;
+                int sides = 0;
+                if (from > a)
+                {
+                    own += before[d] - keys[from - a - 1][d];
+                    sides++;
+                }
+
+                if (to < b)
+                {
+                    own += keys[to - a + 1][d] - after[d];
+                    sides++;
+                }
+
+                offset[k] = after[d] - before[d] - (sides > 0 ? gap * own / sides : 0f);
+            }
+
+            // A smoothstep over n steps turns at most 1.5/n of the way in one: n so that is perStep, around the jump as
+            // the swing leaves room (steps a + 1 to b − 1 may change).
+            int span = Math.Min(Math.Max((int)MathF.Ceiling(1.5f * jump / perStep), gap + 1), b - a - 1);
+            int first = Math.Max(a + 1, ((from + to) / 2) - (span / 2));
+            int last = Math.Min(b - 1, first + span - 1);
+            first = Math.Max(a + 1, last - span + 1);
+            if (first > from + 1 || last < to - 1 || (first > from && last < to))
+            {
+                return false; // the window must hold the steps eased into the jump and one step beside it
+            }
+
+            // Blended copies of the steps first..last, checked before any is kept: each the leg's own motion (the
+            // steps before the jump; those after it less the jump; between the two, the way from one to the other)
+            // plus its smoothstep share of the jump.
+            var blended = new float[last - first + 1][];
+            for (int j = first; j <= last; j++)
+            {
+                float w = Easing.Smooth((j - first + 1) / (float)(last - first + 2));
+                float[] angles = (float[])keys[j - a].Clone();
+                for (int k = 0; k < dofs.Length; k++)
+                {
+                    int d = dofs[k];
+                    float own = j <= from ? keys[j - a][d]
+                        : j >= to ? keys[j - a][d] - offset[k]
+                        : float.Lerp(before[d], after[d] - offset[k], (j - from) / (float)gap);
+                    angles[d] = own + (offset[k] * w);
+                }
+
+                _rig.Clamp(angles);
+                blended[j - first] = angles;
+            }
+
+            // No step turns faster than the eye allows a frame, or than the leg's own fastest step around the jump by
+            // more than the blend's steepest share (BlendLimit: a swing under way turns fast on its own).
+            float fastest = MathF.Max(BlendLimit(limb, k => keys[k - a], first - 1, from, 1.5f * perStep), BlendLimit(limb, k => keys[k - a], to, last + 1, 1.5f * perStep));
+            float[] previous = keys[first - a - 1];
+            for (int j = first; j <= last + 1; j++)
+            {
+                float[] angles = j <= last ? blended[j - first] : keys[j - a];
+                if (MostTurn(limb, previous, angles) > fastest)
+                {
+                    return false;
+                }
+
+                // Clear of the level with no contact excused, at each step and between steps, the touch-down's too: the
+                // swing's own checks excuse the foothold's bones next to it, but a blend may bring the foot down
+                // early (a desert walk's foot in a dune 2 ms before its touch-down).
+                _rig.Solve(_roots[j], angles, _positions, _rotations);
+                if ((j <= last && _gait._collision.LimbCollides(limb, _positions, _rotations, null)) || MidwayCollides(limb, j, previous, angles, null))
+                {
+                    return false;
+                }
+
+                previous = angles;
+            }
+
+            for (int j = first; j <= last; j++)
+            {
+                foreach (int d in dofs)
+                {
+                    keys[j - a][d] = blended[j - first][d];
+                }
+            }
+
+            return true;
+        }
+
+        /// <summary>
+        /// Fastest (radians a fine step) a joint of <paramref name="limb"/> may turn in a blend or wide ease over the
+        /// fine steps <paramref name="from"/> to <paramref name="to"/> (angles <paramref name="anglesAt"/>): what the eye
+        /// allows a frame (<see cref="MostBlendedTurn"/>), or the leg's own fastest step there plus
+        /// <paramref name="share"/>, the blend's steepest share of the jump (a swing under way turns fast on its own).
+        /// </summary>
+        private float BlendLimit(RigLimb limb, Func<int, float[]> anglesAt, int from, int to, float share)
+        {
+            float own = 0f;
+            for (int j = from + 1; j <= to; j++)
+            {
+                own = MathF.Max(own, MostTurn(limb, anglesAt(j - 1), anglesAt(j)));
+            }
+
+            return MathF.Max(MostBlendedTurn * _h, own + share);
+        }
+
+        /// <summary>
+        /// Most a leg's joint turns in a displayed frame (radians, 10°) while <see cref="Unsnap"/> blends it across a
+        /// solve that jumped, or <see cref="EaseInto"/> eases a held foot's leg into one over more than a frame: two
+        /// thirds of the turn the eye sees snap (15°).
+        /// </summary>
+        private const float MostBlendTurn = 10f * MathF.PI / 180f;
+
+        /// <summary>
+        /// A joint may always turn this fast in a fine step of a blend (<see cref="Unsnap"/>) or a wide ease
+        /// (<see cref="EaseInto"/>) that is kept, radians per second (900°/s: 15° a displayed frame at 60 frames a second,
+        /// the least turn the eye sees snap); faster only where the leg turns as fast on its own (<see cref="BlendLimit"/>).
+        /// </summary>
+        private const float MostBlendedTurn = 5f * MathF.PI;
 
         /// <summary>Fine steps over which a leg eases into a solve that jumps (<see cref="EaseInto"/>): one displayed frame's.</summary>
         private const int EaseSteps = Substeps;
@@ -3520,6 +3700,7 @@ internal sealed class WalkGait
             float[][]? best = null;
             int bestFailures = int.MaxValue;
             int pool = 0;
+            var jumps = new List<(int From, int To)>();
             foreach (float share in Lifts)
             {
                 // Each try's angles go into one of two reused pools, the best try's kept in the other.
@@ -3539,6 +3720,7 @@ internal sealed class WalkGait
                 float[] q = startAngles;
                 int failures = 0;
                 bool onCurve = true;
+                jumps.Clear();
 
                 // The sole held flat on the curve at fine step k, else along its normal (as each step below tries).
                 bool ReachesCurve(int k, float[] attempt)
@@ -3583,6 +3765,10 @@ internal sealed class WalkGait
                         }
 
                         failures += solved ? 0 : 1;
+                        if (solved && Jumped(limb, trial, q, i - a >= 2 ? keys[i - a - 2] : null))
+                        {
+                            jumps.Add((i - 1, i));
+                        }
                     }
                     else if (i > a && i < b && onCurve)
                     {
@@ -3601,14 +3787,20 @@ internal sealed class WalkGait
                         {
                             Array.Copy(_held, trial, trial.Length);
                             onCurve = true;
-                            if (i - a > EaseSteps + 1)
+
+                            // The step before the eased ones is not the lift-off's own (its contact is checked apart).
+                            bool eased = i - a > EaseSteps + 1 && EaseInto(limb, i, k => keys[k - a], trial, ReachesCurve, null);
+                            jumps.Add((eased ? i - EaseSteps - 1 : i - 1, i));
+                        }
+                        else if (!onCurve)
+                        {
+                            // Neither sole holds the curve: the effector alone on it.
+                            onCurve = _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
+                            if (onCurve && Jumped(limb, trial, q, earlier))
                             {
-                                // The step before the eased ones is not the lift-off's own (its contact is checked apart).
-                                EaseInto(limb, i, k => keys[k - a], trial, ReachesCurve, null);
+                                jumps.Add((i - 1, i));
                             }
                         }
-
-                        onCurve = onCurve || _gait._swingIk.Reaches(_roots[i], trial, limb, p, null);
                     }
 
                     _rig.Solve(_roots[i], trial, _positions, _rotations);
@@ -3629,6 +3821,13 @@ internal sealed class WalkGait
                     }
 
                     q = trial;
+                }
+
+                // Each solve that jumped to another solution of the leg (eased into over a frame or not), blended
+                // across over the steps around it where the leg can (Unsnap).
+                foreach ((int from, int to) in jumps)
+                {
+                    Unsnap(limb, a, b, keys, from, to);
                 }
 
                 if (failures < bestFailures)

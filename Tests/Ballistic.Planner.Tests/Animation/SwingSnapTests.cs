@@ -39,6 +39,33 @@ public sealed class SwingSnapTests
     /// the only solve holding the curve turned its thigh past the gait's 15° a fine step, 43.5° in a displayed frame
     /// between frames of 5.6°. The leg now changes solution over the frame before: no swinging limb of its walks snaps.
     /// </summary>
+    /// <summary>
+    /// A skeleton's leg reaching a joint's limit mid-swing goes over to another solution, 18–34° in a displayed frame
+    /// between frames of 2–5° (the curved terrain's requests 0 and 2: a hip twice, a knee once). Easing that over the one
+    /// frame before did not hide it from the eye; the jump is now blended over the steps around it (a tenth of a second
+    /// for a 40° jump).
+    /// </summary>
+    [TestCase("curved", 0)]
+    [TestCase("curved", 2)]
+    public void ASkeletonsHipReachingItsLimitMidSwingDoesNotSnap(string levelName, int request)
+    {
+        (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get(levelName);
+        Sweep.AssertNoWalkSnaps(Sweep.Prepare(levelName, level, "skeleton"), requests[request].From, requests[request].To, "free");
+    }
+
+    /// <summary>
+    /// Quadrupeds made elsewhere on the curved terrain (the sweep's requests there): the dog's right front paw turned
+    /// 53° in a displayed frame between frames of 11° in its swing, the tailed quadruped's upper arm 28° between frames
+    /// of 3°. Blended across, no swinging limb of their walks snaps.
+    /// </summary>
+    [TestCase("dog", 1)]
+    [TestCase("tailed", 2)]
+    public void AQuadrupedsSwingingLegDoesNotSnapOnTheDunes(string rig, int request)
+    {
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("curved", rig, RigFolder);
+        Sweep.AssertNoWalkSnaps(setup, requests[request].From, requests[request].To, "free");
+    }
+
     [Test]
     public void APandasLegReachingAJointLimitInItsSwingDoesNotSnap()
     {
