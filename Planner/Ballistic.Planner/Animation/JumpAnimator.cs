@@ -950,6 +950,11 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         bool Airborne(int l, int i) => !(held[l].ContainsKey(i) && (i <= breaks[l] || i >= makes[l]));
+
+        // Each limb's angular velocity (radians a fine step, per degree of freedom) as it leaves the ground: its last
+        // held step's, or, letting go at takeoff, the drive up's as it ends (Kicks); null where none is carried on.
+        var kicks = new float[]?[limbs];
+        int kickSteps = (int)MathF.Round(KickTime / h);
         void LimbAt(int l, int i, float[] target)
         {
             RigLimb limb = Model.Limbs[l];
@@ -996,6 +1001,23 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                     ? (i <= apex ? float.Lerp(from[d], top[d], (i - breaks[l]) / (float)(apex - breaks[l])) : float.Lerp(top[d], to[d], (i - apex) / (float)(makes[l] - apex)))
                     : float.Lerp(from[d], to[d], (i - breaks[l]) / (float)(makes[l] - breaks[l]));
             }
+
+            // Leaving the ground, the limb carries on at the speed it left with and eases into its way to the apex
+            // over KickTime: x(1 − x/K)² steps of the difference, its slope that difference at the break and 0 at K.
+            if (kicks[l] is { } kick && i > breaks[l] && i - breaks[l] < kickSteps)
+            {
+                float x = i - breaks[l];
+                float g = x * (1f - (x / kickSteps)) * (1f - (x / kickSteps));
+                ReadOnlySpan<int> dofs = limb.ChainDofSpan;
+                for (int c = 0; c < dofs.Length; c++)
+                {
+                    int d = dofs[c];
+                    float along = (top[d] - from[d]) / (apex - breaks[l]);
+                    target[d] += (kick[c] - along) * g;
+                }
+
+                rig.Clamp(target);
+            }
         }
 
         float[] probe = new float[rig.DofCount];
@@ -1020,6 +1042,41 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
             {
                 lifted[l] = across;
                 steppingAcross[l] = true;
+            }
+        }
+
+        Kicks(arc, takeoff, held, breaks, apex, kickSteps, h, dips, kicks);
+        for (int l = 0; l < limbs; l++)
+        {
+            // Kept only where the limb stays clear of the level with it, at each step and between steps.
+            if (kicks[l] is null || steppingAcross[l])
+            {
+                kicks[l] = null;
+                continue;
+            }
+
+            float[]? previous = null;
+            for (int i = breaks[l] + 1; i < breaks[l] + kickSteps && kicks[l] is not null; i++)
+            {
+                int frame = Array.FindLastIndex(times, t => t <= i);
+                float[] now = (float[])angles[Math.Max(frame, 0)].Clone();
+                LimbAt(l, i, now);
+                rig.Solve(arc.PoseAt(Time(i)), now, positions, rotations);
+                bool clear = !_collision.LimbCollides(Model.Limbs[l], positions, rotations, null);
+                if (clear && previous is not null)
+                {
+                    Array.Copy(now, half, half.Length);
+                    foreach (int d in Model.Limbs[l].ChainDofs)
+                    {
+                        half[d] = 0.5f * (previous[d] + now[d]);
+                    }
+
+                    rig.Solve(arc.PoseAt(Time(i) - (0.5f * h)), half, halfPositions, halfRotations);
+                    clear = !_collision.LimbCollides(Model.Limbs[l], halfPositions, halfRotations, null);
+                }
+
+                kicks[l] = clear ? kicks[l] : null;
+                previous = now;
             }
         }
 
@@ -1493,6 +1550,58 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         return last;
+    }
+
+    /// <summary>
+    /// How long (seconds, 0.1) a limb leaving the ground carries on at the speed it left with, easing into its way to
+    /// the flight's apex pose: a frog's wrist or ankle, extending 15–16° a frame as its drive up ended, stopped dead
+    /// at takeoff (2–4° a frame on), which the eye sees snap.
+    /// </summary>
+    private const float KickTime = 0.1f;
+
+    /// <summary>
+    /// Fills <paramref name="kicks"/>: each limb's angular velocity as it leaves the ground (radians a fine step of
+    /// <paramref name="h"/> seconds, per degree of freedom of its chain), from its last two held fine steps where it
+    /// holds its takeoff contact into the flight, else from the drive up out of the takeoff's dip as it ends
+    /// (<see cref="StanceDip.Push"/>: rising along the dip's up axis at the rate the push ends with, the angles moving
+    /// from the dip's first depth to the contact pose); null for a limb without room to ease before the apex
+    /// (<paramref name="kickSteps"/> fine steps) or leaving at rest.
+    /// </summary>
+    private void Kicks(BallisticArc arc, ContactConfiguration takeoff, Dictionary<int, float[]>[] held, int[] breaks, int apex, int kickSteps, float h, Dictionary<ContactConfiguration, StanceDip.Table> dips, float[]?[] kicks)
+    {
+        StanceDip.Table? table = takeoff.Valid ? DipOf(takeoff, dips) : null;
+        float rate = 0f;
+        if (table is { Depth: > 0f, Angles.Length: >= 2 })
+        {
+            // The depth's share falls at k times the mean rate as the push ends (its slope at 1 is −k).
+            float push = StanceDip.PushTime(table, arc.TakeoffVelocity.Length());
+            Func<float, float> share = StanceDip.Push(table, push, arc.TakeoffVelocity);
+            const float Ds = 1e-3f;
+            float k = (share(1f - Ds) - share(1f)) / Ds;
+            rate = k > 0f && push > 0f ? (table.Angles.Length - 1) * k / push * h : 0f;
+        }
+
+        for (int l = 0; l < kicks.Length; l++)
+        {
+            kicks[l] = null;
+            int b = breaks[l];
+            if (b + kickSteps >= apex || kickSteps < 2)
+            {
+                continue;
+            }
+
+            ReadOnlySpan<int> dofs = Model.Limbs[l].ChainDofSpan;
+            var kick = new float[dofs.Length];
+            for (int c = 0; c < dofs.Length; c++)
+            {
+                int d = dofs[c];
+                kick[c] = b > 0 && held[l].TryGetValue(b - 1, out float[]? before)
+                    ? held[l][b][d] - before[d]
+                    : table is not null && rate > 0f ? (table.Angles[0][d] - table.Angles[1][d]) * rate : 0f;
+            }
+
+            kicks[l] = kick.Any(v => v != 0f) ? kick : null;
+        }
     }
 
     /// <summary>True when no angle of <paramref name="limb"/>'s chain differs between <paramref name="from"/> and <paramref name="to"/> by more than <paramref name="most"/> (radians).</summary>
