@@ -1046,6 +1046,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         }
 
         Kicks(arc, takeoff, held, breaks, apex, kickSteps, h, dips, kicks);
+        float[] kickNow = new float[rig.DofCount];
+        float[] kickBefore = new float[rig.DofCount];
         for (int l = 0; l < limbs; l++)
         {
             // Kept only where the limb stays clear of the level with it, at each step and between steps.
@@ -1055,20 +1057,26 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 continue;
             }
 
-            float[]? previous = null;
+            // The trunk's angles of the frame at or before each step, as the checks below take them.
+            int frame = 0;
+            bool first = true;
             for (int i = breaks[l] + 1; i < breaks[l] + kickSteps && kicks[l] is not null; i++)
             {
-                int frame = Array.FindLastIndex(times, t => t <= i);
-                float[] now = (float[])angles[Math.Max(frame, 0)].Clone();
-                LimbAt(l, i, now);
-                rig.Solve(arc.PoseAt(Time(i)), now, positions, rotations);
-                bool clear = !_collision.LimbCollides(Model.Limbs[l], positions, rotations, null);
-                if (clear && previous is not null)
+                while (frame + 1 < times.Length && times[frame + 1] <= i)
                 {
-                    Array.Copy(now, half, half.Length);
+                    frame++;
+                }
+
+                Array.Copy(angles[frame], kickNow, kickNow.Length);
+                LimbAt(l, i, kickNow);
+                rig.Solve(arc.PoseAt(Time(i)), kickNow, positions, rotations);
+                bool clear = !_collision.LimbCollides(Model.Limbs[l], positions, rotations, null);
+                if (clear && !first)
+                {
+                    Array.Copy(kickNow, half, half.Length);
                     foreach (int d in Model.Limbs[l].ChainDofs)
                     {
-                        half[d] = 0.5f * (previous[d] + now[d]);
+                        half[d] = 0.5f * (kickBefore[d] + kickNow[d]);
                     }
 
                     rig.Solve(arc.PoseAt(Time(i) - (0.5f * h)), half, halfPositions, halfRotations);
@@ -1076,7 +1084,8 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 }
 
                 kicks[l] = clear ? kicks[l] : null;
-                previous = now;
+                (kickBefore, kickNow) = (kickNow, kickBefore);
+                first = false;
             }
         }
 
