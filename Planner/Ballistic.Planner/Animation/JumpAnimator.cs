@@ -1582,11 +1582,9 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
         float rate = 0f;
         if (table is { Depth: > 0f, Angles.Length: >= 2 })
         {
-            // The depth's share falls at k times the mean rate as the push ends (its slope at 1 is −k).
+            // The depth's share falls at k times the mean rate as the push ends.
             float push = StanceDip.PushTime(table, arc.TakeoffVelocity.Length());
-            Func<float, float> share = StanceDip.Push(table, push, arc.TakeoffVelocity);
-            const float Ds = 1e-3f;
-            float k = (share(1f - Ds) - share(1f)) / Ds;
+            float k = StanceDip.PushEndRate(table, push, arc.TakeoffVelocity);
             rate = k > 0f && push > 0f ? (table.Angles.Length - 1) * k / push * h : 0f;
         }
 
@@ -1609,7 +1607,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                     : table is not null && rate > 0f ? (table.Angles[0][d] - table.Angles[1][d]) * rate : 0f;
             }
 
-            kicks[l] = kick.Any(v => v != 0f) ? kick : null;
+            kicks[l] = kick.AsSpan().ContainsAnyExcept(0f) ? kick : null;
         }
     }
 

@@ -371,9 +371,16 @@ internal sealed class StanceDip
     /// </summary>
     public static Func<float, float> Push(Table table, float duration, Vector3 velocity)
     {
-        float k = Rate(table, duration, Vector3.Dot(velocity, table.Up));
+        float k = PushEndRate(table, duration, velocity);
         return s => 1f + ((k - 3f) * s * s) + ((2f - k) * s * s * s);
     }
+
+    /// <summary>
+    /// The rate at which <see cref="Push"/> (over <paramref name="duration"/> seconds into a takeoff at
+    /// <paramref name="velocity"/>, m/s, world) ends rising, in times the dip's mean rate (depth over duration): its
+    /// depth share falls that many times faster than on average in its last instant.
+    /// </summary>
+    public static float PushEndRate(Table table, float duration, Vector3 velocity) => Rate(table, duration, Vector3.Dot(velocity, table.Up));
 
     /// <summary>
     /// The sink into <paramref name="table"/>'s dip over <paramref name="duration"/> seconds after a landing at
