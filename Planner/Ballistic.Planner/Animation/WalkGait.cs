@@ -3568,7 +3568,7 @@ internal sealed class WalkGait
         /// <summary>
         /// Fastest (radians a fine step) a joint of <paramref name="limb"/> may turn in a blend or wide ease over the
         /// fine steps <paramref name="from"/> to <paramref name="to"/> (angles <paramref name="anglesAt"/>): what the eye
-        /// allows a frame (<see cref="MostBlendedTurn"/>), or the leg's own fastest step there plus
+        /// allows a frame (<see cref="SwingTurnFloor"/>, below which no turn counts as a jump), or the leg's own fastest step there plus
         /// <paramref name="share"/>, the blend's steepest share of the jump (a swing under way turns fast on its own).
         /// </summary>
         private float BlendLimit(RigLimb limb, Func<int, float[]> anglesAt, int from, int to, float share)
@@ -3579,7 +3579,7 @@ internal sealed class WalkGait
                 own = MathF.Max(own, MostTurn(limb, anglesAt(j - 1), anglesAt(j)));
             }
 
-            return MathF.Max(MostBlendedTurn * _h, own + share);
+            return MathF.Max(SwingTurnFloor * _h, own + share);
         }
 
         /// <summary>
@@ -3588,13 +3588,6 @@ internal sealed class WalkGait
         /// thirds of the turn the eye sees snap (15°).
         /// </summary>
         private const float MostBlendTurn = 10f * MathF.PI / 180f;
-
-        /// <summary>
-        /// A joint may always turn this fast in a fine step of a blend (<see cref="Unsnap"/>) or a wide ease
-        /// (<see cref="EaseInto"/>) that is kept, radians per second (900°/s: 15° a displayed frame at 60 frames a second,
-        /// the least turn the eye sees snap); faster only where the leg turns as fast on its own (<see cref="BlendLimit"/>).
-        /// </summary>
-        private const float MostBlendedTurn = 5f * MathF.PI;
 
         /// <summary>Fine steps over which a leg eases into a solve that jumps (<see cref="EaseInto"/>): one displayed frame's.</summary>
         private const int EaseSteps = Substeps;
@@ -3701,6 +3694,7 @@ internal sealed class WalkGait
             int bestFailures = int.MaxValue;
             int pool = 0;
             var jumps = new List<(int From, int To)>();
+            var bestJumps = new List<(int From, int To)>();
             foreach (float share in Lifts)
             {
                 // Each try's angles go into one of two reused pools, the best try's kept in the other.
@@ -3823,24 +3817,27 @@ internal sealed class WalkGait
                     q = trial;
                 }
 
-                // Each solve that jumped to another solution of the leg (eased into over a frame or not), blended
-                // across over the steps around it where the leg can (Unsnap).
-                foreach ((int from, int to) in jumps)
-                {
-                    Unsnap(limb, a, b, keys, from, to);
-                }
-
                 if (failures < bestFailures)
                 {
                     bestFailures = failures;
                     best = keys;
                     pool = 1 - pool;
+                    bestJumps.Clear();
+                    bestJumps.AddRange(jumps);
                 }
 
                 if (failures == 0)
                 {
                     break;
                 }
+            }
+
+            // Each solve of the try kept that jumped to another solution of the leg (eased into over a frame or not),
+            // blended across over the steps around it where the leg can (Unsnap; it changes no try's failures, so it
+            // waits for the one kept).
+            foreach ((int from, int to) in bestJumps)
+            {
+                Unsnap(limb, a, b, best!, from, to);
             }
 
             for (int i = a; i <= b; i++)
