@@ -68,6 +68,7 @@ internal sealed class JumpFacer
     private readonly Func<PoseEvaluation, bool>? _canStand;
     private readonly Func<RootPose, IReadOnlyList<Contact>, Vector3, bool>? _canPush;
     private readonly IReadOnlyList<RootPose> _refused;
+    private readonly WalkBarrier? _barrier;
     private int _nextId;
 
     /// <summary>Whether the jump being faced (or the last one, for the moves after it) turns by hops only: the request does not walk, or the repair gave it back once (its turn walks did not animate).</summary>
@@ -83,8 +84,10 @@ internal sealed class JumpFacer
     /// <param name="canStand">The request's extra stance check, or <c>null</c>.</param>
     /// <param name="refused">Stances the body could not crouch or absorb on for a faced jump (<see cref="QuerySettings.RefusedTurns"/>), or <c>null</c>: not placed again.</param>
     /// <param name="canPush">Whether the body pushes off with a velocity (absorbs it, given reversed) at either end of a turn hop (<see cref="QuerySettings.CanPush"/>), or <c>null</c>: not checked.</param>
-    public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand, IReadOnlyList<RootPose>? refused = null, Func<RootPose, IReadOnlyList<Contact>, Vector3, bool>? canPush = null)
+    /// <param name="barrier">The ground the request no longer walks over (<see cref="QuerySettings.NoWalkSpots"/>), or <c>null</c>: no walk passing it is made.</param>
+    public JumpFacer(PlanningScene scene, bool walking, Func<PoseEvaluation, bool>? canStand, IReadOnlyList<RootPose>? refused = null, Func<RootPose, IReadOnlyList<Contact>, Vector3, bool>? canPush = null, WalkBarrier? barrier = null)
     {
+        _barrier = barrier;
         _scene = scene;
         _walking = walking;
         _canStand = canStand;
@@ -239,6 +242,10 @@ internal sealed class JumpFacer
         return move.To;
     }
 
+    /// <summary>The walk from <paramref name="from"/> to <paramref name="to"/> (<see cref="Walking.WalkSteering.SteerRemembered"/>), or <c>null</c> when there is none or it passes ground the request no longer walks over.</summary>
+    private Walk? SteerWalk(RoadmapNode from, RoadmapNode to) =>
+        _scene.Walking.SteerRemembered(from, to).Walk is Walk walk && _barrier?.Bars(walk) != true ? walk : null;
+
     /// <summary><paramref name="move"/> steered again from <paramref name="from"/> to its own end, or <c>null</c>.</summary>
     private Move? Restart(Move move, RoadmapNode from, IReadOnlySet<(int From, int To)>? rejected)
     {
@@ -249,7 +256,7 @@ internal sealed class JumpFacer
 
         if (move is Walk walk)
         {
-            return walk.Via.Count == 0 && !_hops && _scene.Walking.SteerRemembered(from, walk.To).Walk is Walk steered ? steered : null;
+            return walk.Via.Count == 0 && !_hops && SteerWalk(from, walk.To) is Walk steered ? steered : null;
         }
 
         SteeringResult r = _scene.Steering.SteerRemembered(from.Pose, from.Cone, move.To.Pose, move.To.Cone);
@@ -330,7 +337,7 @@ internal sealed class JumpFacer
         {
             if (result.Count > 0 && result[^1] is Walk before && before.Via.Count == 0 && !_hops &&
                 rejected?.Contains((before.From.Id, faced.From.Id)) != true &&
-                _scene.Walking.SteerRemembered(before.From, faced.From).Walk is Walk steered)
+                SteerWalk(before.From, faced.From) is Walk steered)
             {
                 result[^1] = steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom };
             }
@@ -591,12 +598,12 @@ internal sealed class JumpFacer
                 }
 
                 if (before is not null && rejected?.Contains((before.From.Id, node.Id)) != true
-                    && _scene.Walking.SteerRemembered(before.From, node).Walk is Walk steered)
+                    && SteerWalk(before.From, node) is Walk steered)
                 {
                     return (swung, steered with { CutFrom = [.. before.CutFrom.Union(cut)], HoppedFrom = before.HoppedFrom }, true);
                 }
 
-                if (rejected?.Contains((current.Id, node.Id)) != true && _scene.Walking.SteerRemembered(current, node).Walk is Walk walk)
+                if (rejected?.Contains((current.Id, node.Id)) != true && SteerWalk(current, node) is Walk walk)
                 {
                     return (swung, walk with { CutFrom = cut }, false);
                 }

@@ -35,8 +35,12 @@ internal sealed class JumpRepair
     /// <summary>Rounds that added spots to hop over (<see cref="HopSpots"/>) after which walk problems set walks aside again.</summary>
     public const int HopRounds = 4;
 
+    /// <summary>Rounds that added ground no longer walked over (<see cref="NoWalkSpots"/>) after which a walk failing there counts toward <see cref="WalkRounds"/> again.</summary>
+    public const int NoWalkRounds = 4;
+
     private readonly HashSet<(int From, int To)> _excluded = [];
     private readonly List<Vector3> _spots = [];
+    private readonly List<Vector3> _noWalk = [];
     private int _walksSetAside;
     private readonly HashSet<(int From, int To)> _uncut = [];
     private readonly HashSet<(int From, int To)> _unfaced = [];
@@ -121,12 +125,25 @@ internal sealed class JumpRepair
     public bool HoppingAllowed => HopFailures < HopRounds;
 
     /// <summary>
+    /// Ground points (world metres) where a walk failed again after a hop over them was tried (or hopping is spent):
+    /// the next searches walk nowhere near them (<see cref="QuerySettings.NoWalkSpots"/>) and jump there instead,
+    /// walking elsewhere, rather than give up walking everywhere.
+    /// </summary>
+    public IReadOnlyList<Vector3> NoWalkSpots => _noWalk;
+
+    /// <summary>Rounds so far that added spots to <see cref="NoWalkSpots"/>.</summary>
+    public int NoWalkFailures { get; private set; }
+
+    /// <summary>False once <see cref="NoWalkRounds"/> rounds added ground no longer walked over: a walk failing at a known spot then counts toward <see cref="WalkRounds"/>.</summary>
+    public bool BarringAllowed => NoWalkFailures < NoWalkRounds;
+
+    /// <summary>
     /// True when a request that has searched <paramref name="searches"/> times has no search left of
     /// <paramref name="limit"/>: the rounds whose walks failed (at most <see cref="WalkRounds"/>), whose cut moves
     /// failed (<see cref="CutRounds"/>) or that found spots to hop over (<see cref="HopRounds"/>) do not count, so the
     /// jumps-only fallback has every round.
     /// </summary>
-    public bool IsExhausted(int searches, int limit) => searches - WalkFailures - CutFailures - HopFailures >= limit;
+    public bool IsExhausted(int searches, int limit) => searches - WalkFailures - CutFailures - HopFailures - NoWalkFailures >= limit;
 
     /// <summary>
     /// The settings of the next search: <paramref name="settings"/>, with <see cref="Locomotion.Jump"/> once
@@ -150,6 +167,11 @@ internal sealed class JumpRepair
         if (_spots.Count > 0)
         {
             settings = settings with { HopSpots = [.. _spots] };
+        }
+
+        if (_noWalk.Count > 0)
+        {
+            settings = settings with { NoWalkSpots = [.. _noWalk] };
         }
 
         if (_unfaced.Count > 0)
@@ -194,6 +216,7 @@ internal sealed class JumpRepair
         bool walkFailed = false;
         bool cutFailed = false;
         bool hopped = false;
+        bool barred = false;
 
         // Stances placed for a cut or faced jump on which the body cannot crouch (absorb), refused now: the next search
         // places another, and a walk made from the same jumps into (out of) one is made again with it.
@@ -284,6 +307,23 @@ internal sealed class JumpRepair
                 continue;
             }
 
+            if (move is Walk again && move.HoppedFrom.Count == 0 && WalkFailures + 1 >= WalkRounds && BarringAllowed && problems.All(p => p.IsLocated) && Bar(again, problems))
+            {
+                // A walk failing where a hop was tried (or hopping is spent) in the round that would end walking:
+                // no walk goes there any more, and the request jumps there and walks elsewhere, instead of giving up
+                // walking everywhere.
+                barred = true;
+                _excluded.Add((move.From.Id, move.To.Id));
+                foreach ((int from, int to) in again.Segments)
+                {
+                    _excluded.Add((from, to));
+                }
+
+                Record(move, problems.First().Reason);
+                added++;
+                continue;
+            }
+
             walkFailed |= move is Walk || move.HoppedFrom.Count > 0;
             bool any = false;
             if (move.HoppedFrom.Count > 0)
@@ -322,6 +362,7 @@ internal sealed class JumpRepair
         }
 
         HopFailures += hopped ? 1 : 0;
+        NoWalkFailures += barred ? 1 : 0;
         return added;
     }
 
@@ -407,6 +448,22 @@ internal sealed class JumpRepair
 
         _spots.AddRange(found);
         return true;
+    }
+
+    /// <summary>Adds the ground points of <paramref name="problems"/> on <paramref name="walk"/> to <see cref="NoWalkSpots"/>; true when one is new (none within <see cref="JumpTightener.SpotRadius"/> of a known one).</summary>
+    private bool Bar(Walk walk, IEnumerable<JumpProblem> problems)
+    {
+        bool any = false;
+        foreach (Vector3 found in problems.Select(p => walk.PointAt(p.Along)))
+        {
+            if (!_noWalk.Any(s => new Vector2(s.X - found.X, s.Z - found.Z).Length() <= JumpTightener.SpotRadius))
+            {
+                _noWalk.Add(found);
+                any = true;
+            }
+        }
+
+        return any;
     }
 
     /// <summary>

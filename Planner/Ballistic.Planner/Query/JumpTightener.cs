@@ -67,6 +67,9 @@ internal sealed class JumpTightener
     private readonly SurfaceCosts? _surfaces;
     private int _nextId;
 
+    /// <summary>The ground the current request no longer walks over (<see cref="QuerySettings.NoWalkSpots"/>): no walk passing it is made; <c>null</c> for none.</summary>
+    internal WalkBarrier? Barrier { get; set; }
+
     /// <summary>Creates the tightener of a scene's jumps.</summary>
     public JumpTightener(PlanningScene scene)
     {
@@ -420,7 +423,7 @@ internal sealed class JumpTightener
 
         var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
         (RoadmapNode first, RoadmapNode second) = toStance ? (own, node) : (node, own);
-        if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.SteerRemembered(first, second).Walk is not Walk walk)
+        if (rejected?.Contains((first.Id, second.Id)) == true || _scene.Walking.SteerRemembered(first, second).Walk is not Walk walk || Barrier?.Bars(walk) == true)
         {
             return new Candidate(null, null);
         }

@@ -67,6 +67,9 @@ public sealed class PathQuery
     private bool _walking;
     private IReadOnlySet<int>? _noTakeoffs;
     private IReadOnlySet<int>? _noLandings;
+
+    /// <summary>The ground this request no longer walks over (<see cref="QuerySettings.NoWalkSpots"/>), or <c>null</c>.</summary>
+    private WalkBarrier? _barrier;
     private JumpTightener? _tightener;
     private (int From, int To)? _lostWalk;
 
@@ -365,6 +368,7 @@ public sealed class PathQuery
         _walking = settings.Locomotion == Locomotion.WalkAndJump && _scene.Walking.Limits.CanWalk;
         _noTakeoffs = settings.NoTakeoffs;
         _noLandings = settings.NoLandings;
+        _barrier = _walking ? WalkBarrier.Of(settings.NoWalkSpots, _scene.Character) : null;
         _effort = _walking ? settings.JumpEffort : 0f;
         _heightEffort = _walking ? settings.JumpHeightEffort : 0f;
         _preferFaced = _walking && !settings.FaceJumps && settings.PreferFacedJumps;
@@ -387,7 +391,7 @@ public sealed class PathQuery
 
                 yield return null;
 
-                if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk)
+                if (_walking && _scene.Walking.SteerRemembered(start, goal, settings.MaxDirectWalk).Walk is Walk walk && _barrier?.Bars(walk) != true)
                 {
                     _extra.Add(new Extra(start.Id, goal.Id, WalkCost(walk), default, walk));
                 }
@@ -600,6 +604,7 @@ public sealed class PathQuery
             if (settings.TightenJumps)
             {
                 _tightener ??= new JumpTightener(_scene);
+                _tightener.Barrier = _barrier;
                 path = _tightener.Tighten(path, ref nextId, settings.MinCutWalk, rejected, settings.UncutJumps, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
                 yield return true;
                 path = Shortcut(path, settings, rejected, walksOnly: true);
@@ -609,6 +614,7 @@ public sealed class PathQuery
             if (settings.HopSpots is { Count: > 0 } spots)
             {
                 _tightener ??= new JumpTightener(_scene);
+                _tightener.Barrier = _barrier;
                 path = _tightener.Hop(path, spots, ref nextId, 0.5f * settings.MinCutWalk, rejected, settings.CanStand, () => Stopped(termination, clock, start, goal) is not null);
                 yield return true;
             }
@@ -650,7 +656,7 @@ public sealed class PathQuery
         int n = _roadmap.Nodes.Count;
         var startEnd = new PlacedEnd(this, _startPoint is Vector3 from && start.Id <= n ? from : null, start, n, settings);
         var goalEnd = new PlacedEnd(this, _goalPoint is Vector3 to && (goal.Id == n + 1 || goal.Id < n) ? to : null, goal, n + 1, settings);
-        var facer = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns, settings.CanPush);
+        var facer = new JumpFacer(_scene, walking, settings.CanStand, settings.RefusedTurns, settings.CanPush, _barrier);
         List<Move> faced = facer.Face(path, ref nextId, rejected, settings.UncutJumps, settings.UnfacedJumps, startEnd.Place, goalEnd.Place, () => Stopped(termination, clock, null, null) is not null);
         unturned = [.. facer.Unturned];
         startPlacement = faced.Count > 0 ? startEnd.PlacementOf(faced[0].From) : null;
@@ -709,6 +715,7 @@ public sealed class PathQuery
 
         int roadmapCount = _roadmap.Nodes.Count;
         Reject(rejected, generation);
+        Bar(generation);
         _extraNext.Clear();
         _extraRejected.Clear();
         _goalEntries.Clear();
@@ -790,6 +797,33 @@ public sealed class PathQuery
             for (int i = walkOffsets[from], end = walkOffsets[from + 1]; i < end; i++)
             {
                 if (walkTargets[i] == to)
+                {
+                    _rejectedWalk[i] = generation;
+                }
+            }
+        }
+    }
+
+    /// <summary>
+    /// Marks the roadmap's walk slots whose ground path passes the request's <see cref="_barrier"/> as not to be taken
+    /// by the search of <paramref name="generation"/>. A walk runs straight, seen from above, between its stances'
+    /// contact centres (<see cref="WalkSteering"/>), so the segment between them is its path's trace.
+    /// </summary>
+    private void Bar(int generation)
+    {
+        if (_barrier is not { } barrier)
+        {
+            return;
+        }
+
+        ReadOnlySpan<int> walkOffsets = _roadmap.WalkOffsets;
+        ReadOnlySpan<int> walkTargets = _roadmap.WalkTargets;
+        for (int from = 0; from < _roadmap.Nodes.Count; from++)
+        {
+            Vector3 a = _roadmap.Nodes[from].ContactCentre;
+            for (int i = walkOffsets[from], end = walkOffsets[from + 1]; i < end; i++)
+            {
+                if (barrier.Bars(a, _roadmap.Nodes[walkTargets[i]].ContactCentre))
                 {
                     _rejectedWalk[i] = generation;
                 }
@@ -1092,7 +1126,7 @@ public sealed class PathQuery
             RoadmapNode node = _roadmap.Node(j);
             Walk? steered = (fromNode ? _scene.Walking.SteerRemembered(stance, node, distance) : _scene.Walking.SteerRemembered(node, stance, distance)).Walk;
             yield return null;
-            if (steered is Walk walk)
+            if (steered is Walk walk && _barrier?.Bars(walk) != true)
             {
                 _extra.Add(new Extra(a, b, WalkCost(walk), default, walk));
                 if (++connected >= settings.Connections * 2)
@@ -1207,7 +1241,7 @@ public sealed class PathQuery
                 }
 
                 float saving = costs[j] - costs[i] - 1e-3f;
-                if (_scene.Walking.SteerRemembered(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving)
+                if (_scene.Walking.SteerRemembered(a, b, settings.MaxDirectWalk).Walk is Walk walk && WalkCost(walk) < saving && _barrier?.Bars(walk) != true)
                 {
                     best = walksOnly ? walk with { CutFrom = CutFrom(path, i, j) } : walk;
                 }

@@ -187,6 +187,15 @@ public sealed record QuerySettings
     public IReadOnlyList<Vector3>? HopSpots { get; init; }
 
     /// <summary>
+    /// Ground points (world metres) where the body could neither walk nor hop over (the animated planner's repair
+    /// fills it: a walk failed again where a hop was tried): no walk passes within the body's half-width of one, seen
+    /// from above (the farthest its contact pose holds a foot from the trunk, at least
+    /// <see cref="JumpTightener.SpotRadius"/>), neither the roadmap's nor one the path's post-processing would make;
+    /// the request jumps there instead, and walks everywhere else. <c>null</c> for none.
+    /// </summary>
+    public IReadOnlyList<Vector3>? NoWalkSpots { get; init; }
+
+    /// <summary>
     /// Stances (node ids, as searched) no jump takes off from: the body cannot crouch on them (the animated
     /// planner's repair fills it); walks still leave them. <c>null</c> for none.
     /// </summary>

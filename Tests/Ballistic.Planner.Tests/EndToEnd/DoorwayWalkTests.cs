@@ -142,4 +142,34 @@ public sealed class DoorwayWalkTests
             Assert.That(atWall[h].Max(), Is.LessThan(open[h].Min()), $"{hands[h].Name} is held in at the wall");
         }
     }
+
+    /// <summary>
+    /// An eight-legged spider whose legs span 1.3 m cannot walk through the 0.9 m door, nor hop through it on the line
+    /// its walk took (its legs meet the jambs either way), from one room's corner to the other's (the foreign doorway
+    /// level's request 1). Before, its walks failing there twice made the request give up walking everywhere: nine
+    /// jumps from corner to corner. The spot where the walk failed again after its hop failed is now barred to walks
+    /// (<see cref="QuerySettings.NoWalkSpots"/>, the spider's half-width round it): it walks in both rooms and jumps
+    /// through the door, with the physics right by the audit and every criterion of the animator's eye the sweep asks
+    /// of every plan.
+    /// </summary>
+    [Test]
+    public void ASpiderTooWideForTheDoorWalksInBothRoomsAndJumpsThroughIt()
+    {
+        (Sweep.Setup setup, (Vector3 From, Vector3 To)[] requests) = Sweep.PrepareForeign("doorway", "spider", RigFolder);
+        (AnimatedPlan plan, AuditReport report, _) = Sweep.Plan(setup, requests[1].From, requests[1].To);
+        Walk[] walks = [.. plan.Result.Walks];
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+            Assert.That(report.Violations, Is.Empty, report.ToString());
+            Assert.That(walks.Where(w => w.Path.All(p => p.X < -0.1f)).Sum(w => w.Length), Is.GreaterThan(1f), "walks in the first room");
+            Assert.That(walks.Where(w => w.Path.All(p => p.X > 0.1f)).Sum(w => w.Length), Is.GreaterThan(1f), "walks in the second room");
+            Assert.That(plan.Result.Jumps, Has.Some.Matches<Jump>(j => j.From.ContactCentre.X < -0.1f && j.To.ContactCentre.X > 0.1f), "jumps through the door");
+            Assert.That(plan.Result.Jumps, Has.Count.LessThan(9), "fewer jumps than it took with no walk at all");
+            foreach ((string name, AnimatorEye.Criterion criterion) in SweepTests.Animated(report.Look!))
+            {
+                Assert.That(criterion.Passes, Is.True, $"{name}: {criterion}");
+            }
+        });
+    }
 }

@@ -177,6 +177,54 @@ public sealed class WalkHopTests
         });
     }
 
+    /// <summary>
+    /// Ground the body can neither walk over nor hop (a spider's legs, 1.3 m across, meeting a 0.9 m door's jambs
+    /// whether it walks or hops through): the walk failing there again, in the round that would have ended walking,
+    /// bars the spot instead (<see cref="JumpRepair.NoWalkSpots"/>), and the request walks everywhere else. Before, it
+    /// gave up walking for the whole request: the doorway's spider went from corner to corner in nine jumps.
+    /// </summary>
+    [Test]
+    public void TheRepairRecordBarsASpotWhereAWalkFailsAgainAfterItsHopFailedInsteadOfGivingUpWalking()
+    {
+        (_, _, JumpAnimator real) = Floor.Value;
+        PlanResult walked = Plan(null);
+        var walk = (Walk)walked.Moves[0];
+        var simple = new SimpleMoveAnimator(real);
+        JumpAnimation located = Problems(simple, walked.Moves, new JumpProblem(0, "l2 cannot swing to its next foothold (4.90 m along the walk)", 4.9f));
+        var repair = new JumpRepair();
+        repair.Reject(walked.Moves, located); // a spot to hop over
+        PlanResult hopped = Plan([walk.PointAt(4.9f)]);
+        int jump = hopped.Moves.ToList().FindIndex(m => m is Jump);
+        repair.Reject(hopped.Moves, Problems(simple, hopped.Moves, new JumpProblem(jump, "r2 passes through the level in flight")));
+        Assume.That((repair.WalkFailures, repair.HopFailures, repair.NoWalkSpots.Count), Is.EqualTo((1, 1, 0)), "the hop failed: one round with a failed walk");
+
+        // The walk fails there again: the round would end walking; the spot is barred instead.
+        var settings = new QuerySettings();
+        repair.Reject(walked.Moves, located);
+        Assert.Multiple(() =>
+        {
+            Assert.That(repair.NoWalkSpots, Has.Count.EqualTo(1));
+            Assert.That(Vector3.Distance(repair.NoWalkSpots[0], walk.PointAt(4.9f)), Is.LessThan(1e-4f), "the ground point of the problem");
+            Assert.That(repair.WalksAllowed, Is.True, "walking goes on elsewhere");
+            Assert.That(repair.WalkFailures, Is.EqualTo(1));
+            Assert.That(repair.NoWalkFailures, Is.EqualTo(1));
+            Assert.That(repair.Excluded, Does.Contain((walk.From.Id, walk.To.Id)), "the walk itself is set aside too");
+            Assert.That(repair.Adjust(settings).NoWalkSpots, Is.EqualTo(repair.NoWalkSpots));
+            Assert.That(repair.Adjust(settings).Locomotion, Is.EqualTo(Locomotion.WalkAndJump));
+            Assert.That(repair.IsExhausted(3, 1), Is.False, "a round that barred a spot does not count against the searches");
+        });
+
+        // A walk failing again at a barred spot (it is not searched again; its problem found twice) is the round that ends walking.
+        repair.Reject(walked.Moves, located);
+        Assert.That(repair.WalksAllowed, Is.False);
+
+        // A first failure at a known spot still only sets the walk aside, as before: the search finds another walk.
+        var once = new JumpRepair();
+        once.Reject(walked.Moves, located);
+        once.Reject(walked.Moves, located);
+        Assert.That((once.NoWalkSpots.Count, once.WalkFailures, once.WalksAllowed), Is.EqualTo((0, 1, true)));
+    }
+
     [TestCase(0)]
     [TestCase(2)]
     public void ARuntimeAgentWhoseWalkFailsAtOneSpotHopsOverItAndArrives(int threads)
