@@ -18,7 +18,10 @@ namespace Ballistic.Planner.Query;
 /// the search gave, failing only far from the placed one, hops over where it failed and keeps the jump turned
 /// (the searched walk would step there alike). A walk whose problems the animator places on its path keeps
 /// being walked but hops over those spots (<see cref="HopSpots"/>, <see cref="QuerySettings.HopSpots"/>), for
-/// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A stance the body cannot
+/// <see cref="HopRounds"/> rounds; a hop that does not animate either sets the walk aside. A walk failing again at a
+/// spot in the round that would end walking (its hop failed there, or hopping is spent) bars that spot to walks
+/// instead (<see cref="NoWalkSpots"/>, for <see cref="NoWalkRounds"/> rounds): the request jumps there and walks
+/// everywhere else. A stance the body cannot
 /// crouch on (or absorb a landing on), or where no limb reaches the level, is set aside as a takeoff (a landing) for
 /// every jump, since each would have the same contact pose there (<see cref="NoTakeoffs"/>, <see cref="NoLandings"/>); walks still use it.
 /// Such stances found by earlier requests can be set aside before the first search (<see cref="Remember"/>: the
