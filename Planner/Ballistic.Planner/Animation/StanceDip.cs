@@ -223,13 +223,15 @@ internal sealed class StanceDip
                 }
 
                 // Half-way to the flexion pose at the deepest (a foot no farther than FoldSideways from its place);
-                // else as it was; else tucked up fully; else half or a quarter of the way on from where it was to the
-                // flexion pose. Each clear at this depth and half-way between its angles and the last depth's at the
-                // depth between, as a player interpolates the rows: a spider's free leg, raised for its landing,
-                // tucked fully in one row and swept through a plank between them.
+                // else as it was; else a quarter, then half of the way on from where it was to the flexion pose; else
+                // tucked up fully: the least move that stays clear first, so that a limb does not tuck fully at one
+                // depth and unfold at the next (a Rigify panda's free forelimb absorbing a landing on a 29° dune face,
+                // 33° and 35° in a displayed frame between frames of 9–15°). Each clear at this depth and half-way
+                // between its angles and the last depth's at the depth between, as a player interpolates the rows: a
+                // spider's free leg, raised for its landing, tucked fully in one row and swept through a plank between them.
                 RigLimb limb = _model.Limbs[l];
                 bool clear = false;
-                foreach ((bool onFromLast, float share) in ((bool, float)[])[(false, 0.5f * fold), (true, 0f), (true, 1f), (true, 0.5f), (true, 0.25f)])
+                foreach ((bool onFromLast, float share) in ((bool, float)[])[(false, 0.5f * fold), (true, 0f), (true, 0.25f), (true, 0.5f), (true, 1f)])
                 {
                     float[] folded = (float[])next.Clone();
                     foreach (int d in limb.ChainDofSpan)

@@ -64,6 +64,12 @@ public sealed class PathQuery
 
     /// <summary>Whether this request walks, its jumps are not turned afterwards and faced ones are preferred (<see cref="QuerySettings.PreferFacedJumps"/>): jumps that do not face their way cost <see cref="UnfacedJumpCost"/> more.</summary>
     private bool _preferFaced;
+
+    /// <summary>Whether this request walks and turns its jumps to face their way afterwards (<see cref="QuerySettings.FaceJumps"/>): a jump the facer could not turn costs <see cref="UnfacedJumpCost"/> more (<see cref="TurnCost"/>).</summary>
+    private bool _facing;
+
+    /// <summary>Per roadmap node: whether no turn is physical on it (<see cref="Unturnable"/>), found once.</summary>
+    private readonly bool[] _unturnable;
     private bool _walking;
     private IReadOnlySet<int>? _noTakeoffs;
     private IReadOnlySet<int>? _noLandings;
@@ -125,6 +131,7 @@ public sealed class PathQuery
         _heuristicStamp = new int[count];
         _rejectedJump = new int[roadmap.OutgoingTargets.Length];
         _rejectedWalk = new int[roadmap.WalkTargets.Length];
+        _unturnable = [.. roadmap.Nodes.Select(Unturnable)];
     }
 
     /// <summary>The roadmap searched.</summary>
@@ -372,6 +379,7 @@ public sealed class PathQuery
         _effort = _walking ? settings.JumpEffort : 0f;
         _heightEffort = _walking ? settings.JumpHeightEffort : 0f;
         _preferFaced = _walking && !settings.FaceJumps && settings.PreferFacedJumps;
+        _facing = _walking && settings.FaceJumps;
         float walkDistance = settings.MaxWalkDistance ?? Planning.BakeSettings.DefaultMaxWalkDistance(_scene.Walking.Limits);
 
         // Extra edges of the request: start → roadmap, roadmap → goal, start → goal (a roadmap node has its own).
@@ -862,6 +870,8 @@ public sealed class PathQuery
         float effort = _effort;
         float heightEffort = _heightEffort;
         bool preferFaced = _preferFaced;
+        bool facing = _facing;
+        bool[] unturnable = _unturnable;
         bool surfaces = _surfaces is not null;
         float[] cost = _cost;
         int[] reached = _reached;
@@ -911,7 +921,7 @@ public sealed class PathQuery
                         continue;
                     }
 
-                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : facing && (unturnable[node] || unturnable[targets[i]]) ? TurnCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
@@ -1183,6 +1193,29 @@ public sealed class PathQuery
     {
         RoadmapEdge e = _roadmap.Edges[edge];
         return JumpFacer.Faces(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To], e.Arc) ? 0f : UnfacedJumpCost;
+    }
+
+    /// <summary>
+    /// What roadmap edge <paramref name="edge"/>, taking off from or landing on a stance where no turn is physical
+    /// (<see cref="Unturnable"/>), costs on top of its effort in a search whose jumps are turned afterwards:
+    /// <see cref="UnfacedJumpCost"/> when it does not face its way, since the facer cannot turn it there either. A Rigify
+    /// panda crossing the curved terrain landed on a dune face tilted 33° (its friction cone 26.6° wide) and took off
+    /// from it 173° off its way: no turn walk there, and no hop, in place or 0.15–0.3 m any way, within the cones.
+    /// </summary>
+    private float TurnCost(int edge)
+    {
+        RoadmapEdge e = _roadmap.Edges[edge];
+        return JumpFacer.Faces(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To], e.Arc) ? 0f : UnfacedJumpCost;
+    }
+
+    /// <summary>
+    /// Whether no turn is physical on <paramref name="node"/>: its friction cone's axis tilts further from vertical than
+    /// the cone is wide (a hop in place, straight up, would slip) and than the character walks (no turn walk).
+    /// </summary>
+    private bool Unturnable(RoadmapNode node)
+    {
+        float tilt = MathF.Acos(Math.Clamp(Vector3.Normalize(node.Cone.Axis).Y, -1f, 1f));
+        return tilt > node.Cone.HalfAngle && tilt > _scene.Walking.Limits.MaxSlopeDegrees * MathF.PI / 180f;
     }
 
     /// <summary>

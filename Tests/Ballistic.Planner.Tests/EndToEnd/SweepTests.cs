@@ -193,9 +193,10 @@ public sealed class SweepTests
     /// again since the eye measures a foot whose ground ends short of its place from where the ground ends (the feet
     /// gathered on the top by its edges; 2026-12-04). Since the tailed quadruped, the panda and the spider joined the
     /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it listed six of their
-    /// plans (three now). The panda takes off 173° off its way on request 2: a jump whose takeoff the facer could not turn on the
-    /// dunes (then landed on a stance turned for the jump after it), and no search again finds a way round it within
-    /// 1.5 times the first path's cost. (Request 1 took off 143° off its way while a request searched again twice at
+    /// plans (three now). The panda takes off 161° off its way on request 2 (173° until a jump the facer cannot turn
+    /// cost more in the search, 2026-12-06: <c>PathQuery.TurnCost</c>): its start is ringed by dune faces tilted 31–33°,
+    /// steeper than its friction cone is wide (26.6°) and than it walks, where no turn walk and no hop passes, and every
+    /// way out leaves from one. (Request 1 took off 143° off its way while a request searched again twice at
     /// most, not three times: <see cref="PathQuery.FacingSearches"/>.) On
     /// request 1 a hind foot's skin, blended a fifth with the shin, sank 1.6 cm (the eye allows 1.5) as a walk's step
     /// touched down: the swing came down to the foothold, 3 mm below where the hold then raised the foot for its skin
