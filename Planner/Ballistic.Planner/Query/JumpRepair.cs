@@ -310,25 +310,14 @@ internal sealed class JumpRepair
                 continue;
             }
 
-            if (move is Walk again && move.HoppedFrom.Count == 0 && WalkFailures + 1 >= WalkRounds && BarringAllowed && problems.All(p => p.IsLocated) && Bar(again, problems))
-            {
-                // A walk failing where a hop was tried (or hopping is spent) in the round that would end walking:
-                // no walk goes there any more, and the request jumps there and walks elsewhere, instead of giving up
-                // walking everywhere.
-                barred = true;
-                _excluded.Add((move.From.Id, move.To.Id));
-                foreach ((int from, int to) in again.Segments)
-                {
-                    _excluded.Add((from, to));
-                }
-
-                Record(move, problems.First().Reason);
-                added++;
-                continue;
-            }
-
-            walkFailed |= move is Walk || move.HoppedFrom.Count > 0;
-            bool any = false;
+            // A walk failing where a hop was tried (or hopping is spent) in the round that would end walking: set aside
+            // as any failed move, and no walk goes there any more, the request jumping there and walking elsewhere,
+            // instead of giving up walking everywhere.
+            bool barring = move is Walk again && move.HoppedFrom.Count == 0 && WalkFailures + 1 >= WalkRounds && BarringAllowed
+                && problems.All(p => p.IsLocated) && Bar(again, problems);
+            barred |= barring;
+            walkFailed |= !barring && (move is Walk || move.HoppedFrom.Count > 0);
+            bool any = barring;
             if (move.HoppedFrom.Count > 0)
             {
                 foreach ((int, int) searched in move.HoppedFrom)
@@ -444,7 +433,7 @@ internal sealed class JumpRepair
     private bool AddSpots(Walk walk, IEnumerable<JumpProblem> problems)
     {
         Vector3[] found = [.. problems.Select(p => walk.PointAt(p.Along))];
-        if (found.Any(f => _spots.Any(s => new Vector2(s.X - f.X, s.Z - f.Z).Length() <= JumpTightener.SpotRadius)))
+        if (found.Any(f => Known(_spots, f)))
         {
             return false;
         }
@@ -459,7 +448,7 @@ internal sealed class JumpRepair
         bool any = false;
         foreach (Vector3 found in problems.Select(p => walk.PointAt(p.Along)))
         {
-            if (!_noWalk.Any(s => new Vector2(s.X - found.X, s.Z - found.Z).Length() <= JumpTightener.SpotRadius))
+            if (!Known(_noWalk, found))
             {
                 _noWalk.Add(found);
                 any = true;
@@ -468,6 +457,10 @@ internal sealed class JumpRepair
 
         return any;
     }
+
+    /// <summary>True when one of <paramref name="spots"/> lies within <see cref="JumpTightener.SpotRadius"/> of <paramref name="point"/>, seen from above.</summary>
+    private static bool Known(List<Vector3> spots, Vector3 point) =>
+        spots.Exists(s => new Vector2(s.X - point.X, s.Z - point.Z).Length() <= JumpTightener.SpotRadius);
 
     /// <summary>
     /// The reason of a request whose search failed with <paramref name="searchReason"/> after jumps were set aside;
