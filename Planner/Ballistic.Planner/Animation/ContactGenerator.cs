@@ -288,8 +288,9 @@ internal sealed class ContactGenerator
     }
 
     /// <summary>
-    /// Puts limb <paramref name="l"/> in a free pose that does not pass through the level: the contact pose, the
-    /// flexion pose, the extending pose or a database sample (nearest the contact pose first). For a foot, first only
+    /// Puts limb <paramref name="l"/> in a free pose that does not pass through the level: the pose it hangs in
+    /// standing (<see cref="CharacterModel.HangingPose"/>: the contact pose, or a T-posed rig's hands at its sides), for
+    /// a hand hanging straighter down (<see cref="CharacterModel.LoweredPose"/>), the flexion pose, the extending pose or a database sample (nearest the contact pose first). For a foot, first only
     /// those that keep it within <see cref="FreeSideways"/> of the standing leg sideways (along the trunk's left) of
     /// where the contact pose holds it: a panda's forefoot left free on a flight, its place in the riser ahead, was
     /// splayed 0.45 L aside in the flexion pose.
@@ -300,7 +301,7 @@ internal sealed class ContactGenerator
         Rig rig = Model.Rig;
         var positions = new Vector3[rig.Joints.Count];
         var rotations = new Quaternion[rig.Joints.Count];
-        PoseChain(q, limb, Model.ContactPose);
+        PoseChain(q, limb, Model.HangingPose);
         rig.Solve(root, q, positions, rotations);
         if (!_collision.LimbCollides(limb, positions, rotations, null))
         {
@@ -317,12 +318,13 @@ internal sealed class ContactGenerator
             return;
         }
 
-        PoseChain(q, limb, Model.ContactPose);
+        PoseChain(q, limb, Model.HangingPose);
 
-        // The first free pose (with inPlace, within most of the place sideways) clear of the level, set in q.
+        // The first free pose (with inPlace, within most of the place sideways) clear of the level, set in q: a hand
+        // first hanging straighter down.
         bool Free(bool inPlace)
         {
-            foreach (float[] pose in new[] { Model.FlexionPose, Model.ExtendingPose })
+            foreach (float[] pose in limb.Kind == LimbKind.Hand ? [Model.LoweredPose, Model.FlexionPose, Model.ExtendingPose] : new[] { Model.FlexionPose, Model.ExtendingPose })
             {
                 PoseChain(q, limb, pose);
                 rig.Solve(at, q, positions, rotations);

@@ -66,6 +66,31 @@ public sealed class CharacterModel
     /// <summary>The pose limbs take when in contact (standing, ready).</summary>
     public float[] ContactPose { get; }
 
+    /// <summary>
+    /// The pose a limb with no contact takes while the body stands (<see cref="ContactPose"/> by default): a rig
+    /// loaded from a spec that gives no contact pose and modelled with its arms held out (a T- or A-pose, as Mixamo and
+    /// most humanoid exports are) has its free hands hanging at its sides here instead (<see cref="HangingArms"/>).
+    /// </summary>
+    /// <exception cref="RigException">The pose has the wrong number of angles or leaves a joint's limits.</exception>
+    internal float[] HangingPose
+    {
+        get => _hanging ?? ContactPose;
+        init => _hanging = value.Length == Rig.DofCount && Rig.WithinLimits(value)
+            ? value
+            : throw new RigException($"Character '{Name}': the hanging pose must give {Rig.DofCount} angles within the joint limits.");
+    }
+
+    private readonly float[]? _hanging;
+
+    /// <summary>
+    /// <see cref="HangingPose"/> with every hand hanging close to straight down at its side (<see cref="HangingArms"/>):
+    /// where a free hand's own hanging pose would touch the level (a dune's flank beside the body), it is tried before
+    /// the flexion pose, so that the arm stays down.
+    /// </summary>
+    internal float[] LoweredPose => _lowered ??= HangingArms.Derive(Rig, Limbs, HangingPose, every: true);
+
+    private float[]? _lowered;
+
     /// <summary>The crouched pose before takeoff and after landing.</summary>
     public float[] FlexionPose { get; }
 

@@ -410,7 +410,10 @@ public static class CharacterSpecFile
         (float[] tucked, float[] stretched) = spec.Poses.ContainsKey("flexion") && spec.Poses.ContainsKey("extending") ? (contact, contact) : FlightPoses.Derive(rig, rigLimbs, contact);
         float[] flexion = spec.Poses.ContainsKey("flexion") ? PoseFrom(rig, spec, "flexion", specPath) : tucked;
         float[] extending = spec.Poses.ContainsKey("extending") ? PoseFrom(rig, spec, "extending", specPath) : stretched;
-        CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, contact, flexion, extending) { Source = source });
+        // A rig modelled with its arms out (a T- or A-pose) whose spec gives no contact pose stands with its free hands
+        // hanging at its sides, not held out as in its bind pose.
+        float[] hanging = spec.Poses.ContainsKey("contact") ? contact : HangingArms.Derive(rig, rigLimbs, contact);
+        CharacterModel model = Named(() => new CharacterModel(spec.Name, rig, rigLimbs, trunk, radii, contact, flexion, extending) { Source = source, HangingPose = hanging });
         ReducedCharacter reduced = Named(() => ReducedModelBuilder.Derive(
             model,
             spec.RequiredContacts ?? DefaultRequiredContacts(rigLimbs),

@@ -105,7 +105,7 @@ internal static class FlightPoses
     /// <paramref name="reach"/> times <paramref name="toward"/> (turning its contact normal as its direction turns);
     /// failing that, at points part of the way back toward the rest direction; failing all, it stays as it is.
     /// </summary>
-    private static void Place(LimbIk ik, RootPose root, float[] q, RigLimb limb, Vector3 hip, float reach, Vector3 rest, Vector3 toward, Vector3 normal)
+    internal static void Place(LimbIk ik, RootPose root, float[] q, RigLimb limb, Vector3 hip, float reach, Vector3 rest, Vector3 toward, Vector3 normal)
     {
         for (int k = 0; k < 4; k++)
         {

@@ -91,6 +91,12 @@ internal sealed class AnimatorEye
     /// <summary>Least fore-and-aft swing (peak to peak, degrees) of an arm about its shoulder while a walk cruises.</summary>
     public const float LeastArmSwing = 20f;
 
+    /// <summary>
+    /// Most angle (degrees) off straight down of a free arm (shoulder to wrist) while the body stands before its first
+    /// move and after its last: arms held out there read as a rig left in its T- or A-pose, not a body at rest.
+    /// </summary>
+    public const float MostRestingArm = 45f;
+
     /// <summary>Frames a second at which a player shows the clip, for <see cref="LeastSnap"/>.</summary>
     public const float DisplayRate = 60f;
 
@@ -304,6 +310,33 @@ internal sealed class AnimatorEye
         }
 
         return new AnimatorEye(clip, trunk, forward, leg > 0f ? leg : 0.5f, [.. vertices], [.. bindings], [.. owner.Select(n => n.Name ?? "?")], feet, limbJoints, left, pairs, [.. legs], effectors, [.. arms], legOf);
+    }
+
+    /// <summary>
+    /// Arms at rest: at the clip's first and last instants, while the body stands before its first move and after its
+    /// last, each arm holding no contact hangs within <see cref="MostRestingArm"/> of the trunk's down (shoulder to
+    /// wrist; the trunk stands tilted with the ground on a slope, and the arms with it), as the importer poses the GLB;
+    /// an arm with no room to hang (the level within its length and a hand's breadth straight below its shoulder: a
+    /// ledge, a dune's flank) is not measured.
+    /// </summary>
+    private void MeasureArmsAtRest(JumpAnimation animation, TriangleBvh level, Look look)
+    {
+        foreach (float time in new[] { 0f, animation.Duration })
+        {
+            foreach ((string name, Node shoulder, Node wrist, _) in _arms)
+            {
+                bool held = animation.ContactPhases.Any(p => animation.Model.Limbs[p.Limb].Name == name && time >= p.From - 1e-4f && time <= p.To + 1e-4f);
+                Vector3 top = WorldAt(shoulder, time).Translation;
+                Vector3 arm = WorldAt(wrist, time).Translation - top;
+                if (held || arm.LengthSquared() < 1e-8f || level.Raycast(top, new Vector3(0f, -(arm.Length() + 0.1f), 0f), 1f, out _))
+                {
+                    continue;
+                }
+
+                float off = Degrees(Vector3.Normalize(arm), -UpAt(time));
+                look.ArmsAtRest.Add(off / MostRestingArm, $"{name} hangs {off:0}° off the trunk's down standing at {time:0.00} s");
+            }
+        }
     }
 
     /// <summary>A left foot and its right partner (their effector bones).</summary>
@@ -538,6 +571,13 @@ internal sealed class AnimatorEye
         return f.LengthSquared() > 1e-8f ? Vector3.Normalize(f) : Vector3.Zero;
     }
 
+    /// <summary>The trunk's own up at <paramref name="time"/> (unit, world), tilting with it.</summary>
+    public Vector3 UpAt(float time)
+    {
+        Quaternion now = Rotation(WorldAt(_trunk, time));
+        return Vector3.Normalize(Vector3.Transform(Vector3.Cross(_restForward, _restLeft), now * Quaternion.Conjugate(_restTrunk)));
+    }
+
     /// <summary>
     /// The trunk's own left at <paramref name="time"/> (unit, world), rolling with it: sideways in the trunk's frame,
     /// so that an insect standing across a slope with its body parallel to the ground is measured the way it stands,
@@ -564,6 +604,7 @@ internal sealed class AnimatorEye
         MeasureFootholds(animation, look);
         MeasureWalks(animation, level, look);
         MeasureSnaps(animation, look);
+        MeasureArmsAtRest(animation, level, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
         {
             var arc = animation.Arcs[j];
@@ -1478,6 +1519,8 @@ internal sealed class AnimatorEye
 
         public Criterion ArmSwing { get; } = new(higherPasses: true);
 
+        public Criterion ArmsAtRest { get; } = new(higherPasses: false);
+
         public Criterion Snaps { get; } = new(higherPasses: false);
 
         /// <summary>The snapping frames seen in walks while the snapping limb is <paramref name="doing"/> ("free", "held", "letting go", …), one line each.</summary>
@@ -1485,7 +1528,7 @@ internal sealed class AnimatorEye
             [.. Snaps.Seen.Where(s => s.Score > 1f && s.Seen.Contains("(walk", StringComparison.Ordinal) && s.Seen.EndsWith($"its limb {doing})", StringComparison.Ordinal)).Select(s => s.Seen)];
 
         public IEnumerable<(string Name, Criterion Criterion)> All =>
-            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside), ("upright", Upright), ("bob", Bob), ("cadence", Cadence), ("arm swing", ArmSwing)];
+            [("facing", Facing), ("crouch", Crouch), ("absorb", Absorb), ("ground time", GroundTime), ("soles", Soles), ("flight pose", FlightPose), ("crossing", Crossing), ("under hips", UnderHips), ("footholds", Footholds), ("inside", Inside), ("upright", Upright), ("bob", Bob), ("cadence", Cadence), ("arm swing", ArmSwing), ("arms at rest", ArmsAtRest)];
 
         public override string ToString() => string.Join("; ", All.Where(c => !c.Criterion.Passes).Select(c => string.Create(CultureInfo.InvariantCulture, $"{c.Name}: {c.Criterion}")));
     }

@@ -6,11 +6,12 @@ namespace Ballistic.Planner.Tests.Support;
 /// <summary>
 /// Levels in the shapes other tools export, not ours: unwelded triangle soups placed by node transforms (some
 /// modelled Z-up and turned, some scaled), single-sided planes, thin slabs, fine curved terrain, stairs, a block to
-/// stand on, a floor with holes and rotated debris, a low cave, and a wide open field. Each comes with requests a user would make.
+/// stand on, a floor with holes and rotated debris, a low cave, a wide open field, a maze, a two-storey house with a
+/// front door and a staircase with a landing, and a cluttered floor at a rat's scale. Each comes with requests a user would make.
 /// </summary>
 internal static class ForeignLevels
 {
-    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway", "beam"];
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway", "beam", "maze", "house", "clutter"];
 
     /// <summary>A level and the start/goal pairs a user would try on it.</summary>
     public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
@@ -24,6 +25,9 @@ internal static class ForeignLevels
         "field" => Field(),
         "doorway" => Doorway(),
         "beam" => Beam(),
+        "maze" => Maze(),
+        "house" => House(),
+        "clutter" => Clutter(),
         _ => throw new ArgumentException($"no foreign level '{name}'"),
     };
 
@@ -49,6 +53,103 @@ internal static class ForeignLevels
         AddSoupBox(b, "wall_right", new Vector3(-0.1f, 0f, half), new Vector3(0.1f, 4f, 4f));
         AddSoupBox(b, "lintel", new Vector3(-0.1f, 2.1f, -half), new Vector3(0.1f, 4f, half));
         return b.Build();
+    }
+
+    /// <summary>
+    /// A hedge maze as a level designer blocks one out: a 12 × 10 m floor inside a wall, five walls 0.8 m high and
+    /// 0.3 m thick across it, each open at one end in turn (2 m gaps), so that its 1.7 m corridors wind from west to
+    /// east. Requests: into the next corridor round a wall's open end, through a gap straight ahead, and from the first
+    /// corridor to the last.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Maze()
+    {
+        var b = new LevelBuilder("maze (foreign)");
+        AddSoupQuad(b, "floor", new Vector3(-6f, 0f, -5f), new Vector3(6f, 0f, -5f), new Vector3(6f, 0f, 5f), new Vector3(-6f, 0f, 5f), 6);
+        AddSoupBox(b, "wall_west", new Vector3(-6.3f, 0f, -5.3f), new Vector3(-6f, 0.8f, 5.3f));
+        AddSoupBox(b, "wall_east", new Vector3(6f, 0f, -5.3f), new Vector3(6.3f, 0.8f, 5.3f));
+        AddSoupBox(b, "wall_south", new Vector3(-6f, 0f, -5.3f), new Vector3(6f, 0.8f, -5f));
+        AddSoupBox(b, "wall_north", new Vector3(-6f, 0f, 5f), new Vector3(6f, 0.8f, 5.3f));
+        for (int k = 0; k < 5; k++)
+        {
+            float x = -4f + (2f * k);
+            (float from, float to) = k % 2 == 0 ? (-3f, 5f) : (-5f, 3f); // open to the south, then to the north
+            AddSoupBox(b, $"hedge_{k}", new Vector3(x - 0.15f, 0f, from), new Vector3(x + 0.15f, 0.8f, to));
+        }
+
+        return (b.Build(), [
+            (new Vector3(-5f, 0f, -1f), new Vector3(-3f, 0f, -1f)),
+            (new Vector3(-1f, 0f, 4f), new Vector3(-3f, 0f, 4f)),
+            (new Vector3(-5f, 0f, 4f), new Vector3(5f, 0f, -4f)),
+        ]);
+    }
+
+    /// <summary>The maze's walls between corridors (<see cref="Maze"/>): x (metres) of each, and the z range it spans.</summary>
+    internal static (float X, float From, float To)[] MazeHedges { get; } =
+        [.. Enumerable.Range(0, 5).Select(k => (-4f + (2f * k), k % 2 == 0 ? -3f : -5f, k % 2 == 0 ? 5f : 3f))];
+
+    /// <summary>
+    /// A two-storey house as an architect's export has one: 12 × 8 m inside 20 cm walls 6 m high under a roof slab, a front door 1.2 m
+    /// wide and 2.1 m high in the west wall, a staircase along the north wall of two flights of 8 steps (17.6 cm
+    /// risers, 28 cm treads, 1.2 m wide, each step a box) with a 1.2 m landing between them, up to a gallery 2.82 m up
+    /// (a 20 cm slab on nothing, across the east end); the yard outside the door. Requests: in through the door, up
+    /// both flights to the gallery, and from the gallery down and out.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) House()
+    {
+        const float rise = 0.176f;
+        const float run = 0.28f;
+        var b = new LevelBuilder("house (foreign)");
+        AddSoupQuad(b, "ground", new Vector3(-11f, 0f, -6f), new Vector3(6.2f, 0f, -6f), new Vector3(6.2f, 0f, 6f), new Vector3(-11f, 0f, 6f), 6);
+        AddSoupBox(b, "wall_front_south", new Vector3(-6.2f, 0f, -4.2f), new Vector3(-6f, 6f, -0.6f));
+        AddSoupBox(b, "wall_front_north", new Vector3(-6.2f, 0f, 0.6f), new Vector3(-6f, 6f, 4.2f));
+        AddSoupBox(b, "door_lintel", new Vector3(-6.2f, 2.1f, -0.6f), new Vector3(-6f, 6f, 0.6f));
+        AddSoupBox(b, "wall_back", new Vector3(6f, 0f, -4.2f), new Vector3(6.2f, 6f, 4.2f));
+        AddSoupBox(b, "wall_south", new Vector3(-6f, 0f, -4.2f), new Vector3(6f, 6f, -4f));
+        AddSoupBox(b, "wall_north", new Vector3(-6f, 0f, 4f), new Vector3(6f, 6f, 4.2f));
+        AddSoupBox(b, "roof", new Vector3(-6.2f, 6f, -4.2f), new Vector3(6.2f, 6.2f, 4.2f));
+        for (int s = 0; s < 8; s++)
+        {
+            float x0 = -1f + (run * s);
+            AddSoupBox(b, $"step_a{s}", new Vector3(x0, 0f, 2.8f), new Vector3(x0 + run, rise * (s + 1), 4f));
+        }
+
+        float landing = -1f + (8f * run);
+        AddSoupBox(b, "landing", new Vector3(landing, 0f, 2.8f), new Vector3(landing + 1.2f, 8f * rise, 4f));
+        for (int s = 0; s < 8; s++)
+        {
+            float x0 = landing + 1.2f + (run * s);
+            AddSoupBox(b, $"step_b{s}", new Vector3(x0, 0f, 2.8f), new Vector3(x0 + run, rise * (s + 9), 4f));
+        }
+
+        float gallery = landing + 1.2f + (8f * run);
+        AddSoupBox(b, "gallery", new Vector3(gallery, (16f * rise) - 0.2f, -4f), new Vector3(6f, 16f * rise, 4f));
+        return (b.Build(), [
+            (new Vector3(-9f, 0f, 0f), new Vector3(-3.5f, 0f, 0f)),
+            (new Vector3(-3f, 0f, 2f), new Vector3(5.3f, 16f * rise, 0f)),
+            (new Vector3(5.3f, 16f * rise, -2f), new Vector3(-9f, 0f, -2f)),
+        ]);
+    }
+
+    /// <summary>
+    /// A kitchen floor at a rat's scale, 3 × 2 m of unwelded tiles: a book 3 cm thick, a board 6 cm high and a
+    /// 15 cm box lying about, and a 12 cm gap between two floor boards over a 20 cm drop. Requests of 1 to 2.5 m:
+    /// across the floor past the book, onto the box, and over the gap.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Clutter()
+    {
+        var b = new LevelBuilder("clutter (foreign)");
+        AddSoupQuad(b, "floor_west", new Vector3(-1.5f, 0f, -1f), new Vector3(0.6f, 0f, -1f), new Vector3(0.6f, 0f, 1f), new Vector3(-1.5f, 0f, 1f), 12);
+        AddSoupQuad(b, "floor_east", new Vector3(0.72f, 0f, -1f), new Vector3(1.5f, 0f, -1f), new Vector3(1.5f, 0f, 1f), new Vector3(0.72f, 0f, 1f), 4);
+        AddSoupQuad(b, "cellar", new Vector3(0.5f, -0.2f, -1f), new Vector3(0.8f, -0.2f, -1f), new Vector3(0.8f, -0.2f, 1f), new Vector3(0.5f, -0.2f, 1f), 1);
+        Matrix4x4 turned = Matrix4x4.CreateRotationY(0.4f) * Matrix4x4.CreateTranslation(-0.6f, 0f, 0.3f);
+        AddSoupBox(b, "book", new Vector3(-0.12f, 0f, -0.09f), new Vector3(0.12f, 0.03f, 0.09f), turned);
+        AddSoupBox(b, "board", new Vector3(-0.2f, 0f, -0.7f), new Vector3(0.2f, 0.06f, -0.5f));
+        AddSoupBox(b, "box", new Vector3(-1.2f, 0f, -0.8f), new Vector3(-0.9f, 0.15f, -0.5f));
+        return (b.Build(), [
+            (new Vector3(-1.2f, 0f, 0.5f), new Vector3(0.2f, 0f, 0.2f)),
+            (new Vector3(-0.5f, 0f, -0.2f), new Vector3(-1.05f, 0.15f, -0.65f)),
+            (new Vector3(0f, 0f, 0f), new Vector3(1.2f, 0f, 0f)),
+        ]);
     }
 
     /// <summary>
