@@ -70,9 +70,15 @@ internal static class Sweep
     /// <summary>As <see cref="Run"/>, keeping the plan and the eye as well as the audit.</summary>
     public static Planned Plan(Setup setup, Vector3 from, Vector3 to, int seed = 1, int maxNodes = 600, Locomotion locomotion = Locomotion.WalkAndJump)
     {
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Locomotion = locomotion });
+        return Audit(setup, from, to, plan);
+    }
+
+    /// <summary>Audits <paramref name="plan"/> (of the request from <paramref name="from"/> to <paramref name="to"/>, on a roadmap of the caller's) as <see cref="Plan"/> does: the audit, and the eye's look at its GLB when exact.</summary>
+    public static Planned Audit(Setup setup, Vector3 from, Vector3 to, AnimatedPlan plan)
+    {
         string name = $"{setup.LevelName}/{setup.Scene.Character.Name} ({from.X:0.#}, {from.Y:0.##}, {from.Z:0.#}) → ({to.X:0.#}, {to.Y:0.##}, {to.Z:0.#})";
         PlanningScene scene = setup.Scene;
-        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = seed, Threads = 2, MaxNodes = maxNodes, Locomotion = locomotion });
         AuditReport report = PlanAudit.Check(name, scene, from, to, plan.Result, plan.Animation);
         AnimatorEye? eye = null;
         if (plan.Result.Status == PlannerStatus.Exact && plan.Animation is { } animation)
