@@ -143,7 +143,7 @@ internal static class PlanAudit
     }
 
     /// <summary>
-    /// A walk as its promises say: ground path points at most 0.25 m apart, each on the ground (within 2 cm, found by
+    /// A walk as its promises say: ground path points at most 0.25 m apart, each on the ground (within 1 cm, found by
     /// a ray of our own), from one stance's contacts to the other's; no rise or drop between neighbouring points
     /// beyond the step height plus the steepest slope over their distance; no ground steeper than the slope at two
     /// neighbouring points; the trunk box as it moves (<see cref="Walk.PoseAt(float)"/>, turning in place included) clear
@@ -215,7 +215,7 @@ internal static class PlanAudit
             }
 
             report.MaxWalkGroundError = MathF.Max(report.MaxWalkGroundError, MathF.Abs(hit.Point.Y - p.Y));
-            if (MathF.Abs(hit.Point.Y - p.Y) > 0.02f)
+            if (MathF.Abs(hit.Point.Y - p.Y) > 0.01f)
             {
                 Fail($"path point {i} lies {MathF.Abs(hit.Point.Y - p.Y) * 100f:0.0} cm off the ground");
             }
