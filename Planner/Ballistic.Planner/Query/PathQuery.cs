@@ -65,7 +65,7 @@ public sealed class PathQuery
     /// <summary>Whether this request walks, its jumps are not turned afterwards and faced ones are preferred (<see cref="QuerySettings.PreferFacedJumps"/>): jumps that do not face their way cost <see cref="UnfacedJumpCost"/> more.</summary>
     private bool _preferFaced;
 
-    /// <summary>Whether this request walks and turns its jumps to face their way afterwards (<see cref="QuerySettings.FaceJumps"/>): a jump the facer could not turn costs <see cref="UnfacedJumpCost"/> more (<see cref="TurnCost"/>).</summary>
+    /// <summary>Whether this request walks and turns its jumps to face their way afterwards (<see cref="QuerySettings.FaceJumps"/>): a jump the facer could not turn costs <see cref="UnfacedJumpCost"/> more (<see cref="FacingCost"/>).</summary>
     private bool _facing;
 
     /// <summary>Per roadmap node: whether no turn is physical on it (<see cref="Unturnable"/>), found once.</summary>
@@ -921,7 +921,7 @@ public sealed class PathQuery
                         continue;
                     }
 
-                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced ? FacingCost(edges[i]) : facing && (unturnable[node] || unturnable[targets[i]]) ? TurnCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
+                    Relax(node, targets[i], here + times[i] + effort + (heightEffort * heights[i]) + (preferFaced || (facing && (unturnable[node] || unturnable[targets[i]])) ? FacingCost(edges[i]) : 0f) + (surfaces ? LandingCost(edges[i]) : 0f), edges[i], FromJump, ref heuristic);
                 }
 
                 if (walks)
@@ -1188,21 +1188,15 @@ public sealed class PathQuery
         return known;
     }
 
-    /// <summary>What roadmap edge <paramref name="edge"/> costs on top of its effort in a search whose jumps are not turned afterwards: <see cref="UnfacedJumpCost"/> when it does not face its way.</summary>
-    private float FacingCost(int edge)
-    {
-        RoadmapEdge e = _roadmap.Edges[edge];
-        return JumpFacer.Faces(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To], e.Arc) ? 0f : UnfacedJumpCost;
-    }
-
     /// <summary>
-    /// What roadmap edge <paramref name="edge"/>, taking off from or landing on a stance where no turn is physical
-    /// (<see cref="Unturnable"/>), costs on top of its effort in a search whose jumps are turned afterwards:
-    /// <see cref="UnfacedJumpCost"/> when it does not face its way, since the facer cannot turn it there either. A Rigify
-    /// panda crossing the curved terrain landed on a dune face tilted 33° (its friction cone 26.6° wide) and took off
-    /// from it 173° off its way: no turn walk there, and no hop, in place or 0.15–0.3 m any way, within the cones.
+    /// What roadmap edge <paramref name="edge"/> costs on top of its effort when it does not face its way
+    /// (<see cref="UnfacedJumpCost"/>): in a search whose jumps are not turned afterwards, and in one whose jumps are
+    /// turned for an edge taking off from or landing on a stance where no turn is physical (<see cref="Unturnable"/>),
+    /// since the facer cannot turn it there either (a Rigify panda crossing the curved terrain landed on a dune face
+    /// tilted 33°, its friction cone 26.6° wide, and took off from it 173° off its way: no turn walk there, and no hop,
+    /// in place or 0.15–0.3 m any way, within the cones).
     /// </summary>
-    private float TurnCost(int edge)
+    private float FacingCost(int edge)
     {
         RoadmapEdge e = _roadmap.Edges[edge];
         return JumpFacer.Faces(_roadmap.Nodes[e.From], _roadmap.Nodes[e.To], e.Arc) ? 0f : UnfacedJumpCost;

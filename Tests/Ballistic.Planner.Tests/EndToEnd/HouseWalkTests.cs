@@ -31,7 +31,7 @@ public sealed class HouseWalkTests
     {
         (Sweep.Setup setup, Roadmap roadmap) = House.Value;
         Vector3 from = new(x, y, z);
-        Vector3 gallery = new(5.3f, 16f * 0.176f, 0f);
+        Vector3 gallery = ForeignLevels.House().Requests[1].To; // on the gallery, the sweep's goal up the stairs
         AnimatedPlan plan = setup.Planner.Plan(roadmap, from, gallery);
         AuditReport report = Sweep.Audit(setup, from, gallery, plan).Report;
         TestContext.Out.WriteLine(report);

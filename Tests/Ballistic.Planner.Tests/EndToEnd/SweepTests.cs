@@ -195,7 +195,7 @@ public sealed class SweepTests
     /// gathered on the top by its edges; 2026-12-04). Since the tailed quadruped, the panda and the spider joined the
     /// sweep on the curved terrain (2026-12-06; the tailed quadruped passes everything there), it listed six of their
     /// plans (three now). The panda takes off 161° off its way on request 2 (173° until a jump the facer cannot turn
-    /// cost more in the search, 2026-12-06: <c>PathQuery.TurnCost</c>): its start is ringed by dune faces tilted 31–33°,
+    /// cost more in the search, 2026-12-06: <c>PathQuery.FacingCost</c>): its start is ringed by dune faces tilted 31–33°,
     /// steeper than its friction cone is wide (26.6°) and than it walks, where no turn walk and no hop passes, and every
     /// way out leaves from one. (Request 1 took off 143° off its way while a request searched again twice at
     /// most, not three times: <see cref="PathQuery.FacingSearches"/>.) On

@@ -82,10 +82,6 @@ internal static class ForeignLevels
         ]);
     }
 
-    /// <summary>The maze's walls between corridors (<see cref="Maze"/>): x (metres) of each, and the z range it spans.</summary>
-    internal static (float X, float From, float To)[] MazeHedges { get; } =
-        [.. Enumerable.Range(0, 5).Select(k => (-4f + (2f * k), k % 2 == 0 ? -3f : -5f, k % 2 == 0 ? 5f : 3f))];
-
     /// <summary>
     /// A two-storey house as an architect's export has one: 12 × 8 m inside 20 cm walls 6 m high under a roof slab, a front door 1.2 m
     /// wide and 2.1 m high in the west wall, a staircase along the north wall of two flights of 8 steps (17.6 cm
