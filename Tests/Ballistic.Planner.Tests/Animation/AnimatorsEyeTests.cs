@@ -396,6 +396,45 @@ public sealed class AnimatorsEyeTests
     }
 
     /// <summary>
+    /// An arm is read for its swing only where it has room to swing (issue 24: arms are held in through an opening):
+    /// the same walk judged between two walls along its line, 0.3 m either side of it (a passage a little wider than
+    /// the skeleton's shoulders, 0.36 m apart, where a walker holds its arms in), has no swing read, its hips still
+    /// judged; between walls 1.2 m either side its arms are read as on the open platform.
+    /// </summary>
+    [Test]
+    public void AnArmIsReadForItsSwingOnlyWhereItHasRoomToSwing()
+    {
+        (AnimatorEye.Look open, AnimatorEye.Look narrow) = AcrossFirstPlatformOn(Passage(0.3f));
+        (_, AnimatorEye.Look wide) = AcrossFirstPlatformOn(Passage(1.2f));
+        Assert.Multiple(() =>
+        {
+            Assert.That(open.ArmSwing.Seen, Is.Not.Empty, "on the open platform the arms are judged");
+            Assert.That(narrow.Upright.Seen, Is.Not.Empty, "between the walls the hips are judged");
+            Assert.That(narrow.ArmSwing.Seen, Is.Empty, narrow.ArmSwing.ToString());
+            Assert.That(wide.ArmSwing.Seen.Select(s => s.Score), Is.EqualTo(open.ArmSwing.Seen.Select(s => s.Score)), "walls 1.2 m away leave the arms room");
+        });
+    }
+
+    /// <summary>
+    /// A level floor at y = 0 from x = −9 to −2 m and z = −3 to 3 m, with two walls 2 m high and 0.2 m thick along the
+    /// line of <see cref="WalkWorld.AcrossFirstPlatform"/>'s walk (from (−7.3, 0.5) to (−3.8, −0.3)), their faces
+    /// <paramref name="aside"/> metres either side of it.
+    /// </summary>
+    private static Level Passage(float aside)
+    {
+        var b = new LevelBuilder($"passage {aside} m");
+        b.AddFloor(-9f, -3f, -2f, 3f, 0f);
+        var from = new Vector2(-7.3f, 0.5f);
+        var to = new Vector2(-3.8f, -0.3f);
+        float yaw = MathF.Atan2(-(to.Y - from.Y), to.X - from.X); // about +Y, taking +X toward the walk's direction
+        Vector2 middle = 0.5f * (from + to);
+        Matrix4x4 place = Matrix4x4.CreateRotationY(yaw) * Matrix4x4.CreateTranslation(middle.X, 0f, middle.Y);
+        ForeignLevels.AddSoupBox(b, "wall_left", new Vector3(-3f, 0f, -aside - 0.2f), new Vector3(3f, 2f, -aside), place);
+        ForeignLevels.AddSoupBox(b, "wall_right", new Vector3(-3f, 0f, aside), new Vector3(3f, 2f, aside + 0.2f), place);
+        return b.Build();
+    }
+
+    /// <summary>
     /// A walk's bob and arm swing are read over an unbroken stride of level ground: the same walk, judged on a floor
     /// level under two strips of 0.4 m 1.8 m apart (each a fifth of a stride, together spanning more than one), is
     /// judged upright there but on neither its bob nor its swing (before, the two strips were read as one stride: the

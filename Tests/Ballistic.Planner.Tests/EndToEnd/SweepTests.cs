@@ -217,15 +217,15 @@ public sealed class SweepTests
     /// through the door, and its right front foot, set down 0.31 L inward of its place and 15 cm from the wall, drifts
     /// further inward as the trunk turns over it, to 0.62 L. The human rig, since its free hands hang at its sides
     /// standing instead of held out in its T-pose (<c>CharacterModel.HangingPose</c>, 2026-12-06), goes from one
-    /// room's corner to the other's (request 3) in three walks after setting aside two, not two: its right hand swings
+    /// room's corner to the other's (request 3) in three walks after setting aside two, not two: its right hand swung
     /// 19.9° against its leg (the eye wants 20°) over the one stride of level ground of its second walk, which passes
-    /// the 0.9 m door with its arms held in.
+    /// the 0.9 m door with its arms held in, as issue 24 asks (off the list since the eye reads an arm's swing only where
+    /// it has room to swing, not past a jamb: <c>AnimatorEye.ArmHasRoom</c>; its freest arm swings 40°, 2026-12-07).
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
         ["facing"] = ["foreign rig/curved/panda/1"],
         ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/doorway/spider/1"],
-        ["arm swing"] = ["foreign rig/doorway/human/2"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>

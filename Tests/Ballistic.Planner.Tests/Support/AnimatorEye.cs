@@ -602,7 +602,7 @@ internal sealed class AnimatorEye
         MeasureInside(animation, scene.Level.Triangles, level, look);
         MeasureLegs(animation, level, look);
         MeasureFootholds(animation, look);
-        MeasureWalks(animation, level, look);
+        MeasureWalks(animation, scene.Level.Triangles, level, look);
         MeasureSnaps(animation, look);
         MeasureArmsAtRest(animation, level, look);
         for (int j = 0; j < animation.Arcs.Count; j++)
@@ -1164,9 +1164,10 @@ internal sealed class AnimatorEye
     /// per second on level ground (the mean time between successive placements there), each step at least <see cref="LeastStep"/> L; each arm swinging at least
     /// <see cref="LeastArmSwing"/>° fore and aft about its shoulder (the range of the shoulder-to-wrist direction's angle
     /// above or below the trunk's side plane), against the leg on its side (forward as it goes back), read where the
-    /// level ground spans at least a stride of that leg (<see cref="Stride"/>).
+    /// level ground spans at least a stride of that leg (<see cref="Stride"/>) with room for the arm to swing
+    /// (<see cref="ArmHasRoom"/>: not past a door's jamb or beside a wall, where it is rightly held in).
     /// </summary>
-    private void MeasureWalks(JumpAnimation animation, TriangleBvh level, Look look)
+    private void MeasureWalks(JumpAnimation animation, IReadOnlyList<Triangle> triangles, TriangleBvh level, Look look)
     {
         int feet = _legs.Length;
         for (int m = 0; m < animation.Moves.Count; m++)
@@ -1188,7 +1189,7 @@ internal sealed class AnimatorEye
             var heights = new List<float>();
             var times = new List<float>();
             var arms = _arms.Select(_ => new List<(float Arm, float Leg)>()).ToArray();
-            var armTimes = new List<float>();
+            var armTimes = _arms.Select(_ => new List<float>()).ToArray();
             for (float t = from; t <= to + 1e-6f; t += 1f / 60f)
             {
                 if (LevelGround(level, t) is not float groundY)
@@ -1249,11 +1250,16 @@ internal sealed class AnimatorEye
                 }
 
                 Vector3 heading = HeadingAt(t);
-                armTimes.Add(t);
                 for (int a = 0; a < _arms.Length; a++)
                 {
                     (_, Node shoulder, Node wrist, int partner) = _arms[a];
                     Vector3 arm = WorldAt(wrist, t).Translation - WorldAt(shoulder, t).Translation;
+                    if (!ArmHasRoom(triangles, level, a, t, heading, arm.Length()))
+                    {
+                        continue; // held in by a jamb or a wall beside it: not a free swing
+                    }
+
+                    armTimes[a].Add(t);
                     float angle = MathF.Asin(Math.Clamp(Vector3.Dot(Vector3.Normalize(arm), heading), -1f, 1f)) * 180f / MathF.PI;
                     float legAhead = partner < 0 ? 0f : Vector3.Dot(WorldAt(_legs[partner].Ankle, t).Translation - WorldAt(_legs[partner].Hip, t).Translation, heading);
                     arms[a].Add((angle, legAhead));
@@ -1313,9 +1319,9 @@ internal sealed class AnimatorEye
                     // 30–39° on the plan's other walks), and so do two short stretches a second apart.
                     float armStride = Stride(animation, m, _arms[a].Leg);
                     (float Score, string Seen)? worstSwing = null;
-                    foreach ((int first, int last) in Stretches(armTimes))
+                    foreach ((int first, int last) in Stretches(armTimes[a]))
                     {
-                        if (!(armTimes[last] - armTimes[first] >= armStride))
+                        if (!(armTimes[a][last] - armTimes[a][first] >= armStride))
                         {
                             continue;
                         }
@@ -1399,6 +1405,56 @@ internal sealed class AnimatorEye
             }
         }
     }
+
+    /// <summary>
+    /// True when arm <paramref name="a"/> has room to swing at <paramref name="time"/>: no wall (a surface facing
+    /// sideways, not a floor or a ceiling) within <see cref="ArmClearance"/> of the arm as it would hang, a little out
+    /// from the shoulder, swung <see cref="ArmRoomSwing"/>° forward or back along <paramref name="heading"/>. An arm
+    /// passing a door's jamb or walking beside a wall is rightly held in, not swung (issue 24).
+    /// </summary>
+    private bool ArmHasRoom(IReadOnlyList<Triangle> triangles, TriangleBvh level, int a, float time, Vector3 heading, float length)
+    {
+        Vector3 shoulder = WorldAt(_arms[a].Shoulder, time).Translation;
+        Vector3 left = LeftAt(time);
+        Vector3 centre = _arms.Length > 1 ? _arms.Where((_, i) => i != a).Select(o => WorldAt(o.Shoulder, time).Translation).Aggregate(Vector3.Zero, (x, y) => x + y) / (_arms.Length - 1) : TrunkAt(time);
+        Vector3 outward = Vector3.Dot(shoulder - centre, left) >= 0f ? left : -left;
+        Vector3 down = -UpAt(time);
+        float reach = length + ArmClearance;
+        List<int> near = s_near ??= [];
+        near.Clear();
+        level.TrianglesNearBox(new OrientedBox(shoulder, new Vector3(reach + 0.1f), Quaternion.Identity), near);
+        foreach (float degrees in (float[])[-ArmRoomSwing, 0f, ArmRoomSwing])
+        {
+            float angle = degrees * MathF.PI / 180f;
+            Vector3 hand = shoulder + (((MathF.Cos(angle) * down) + (MathF.Sin(angle) * heading)) * length) + (outward * ArmOutward);
+            for (int k = 1; k <= 4; k++)
+            {
+                Vector3 p = Vector3.Lerp(shoulder, hand, k / 4f);
+                foreach (int i in near)
+                {
+                    Triangle triangle = triangles[i];
+                    if (MathF.Abs(triangle.Normal.Y) < 0.7f && Vector3.Distance(triangle.ClosestPoint(p), p) < ArmClearance)
+                    {
+                        return false;
+                    }
+                }
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>How far (metres) a wall must stay from a freely swinging arm (<see cref="ArmHasRoom"/>): the forearm's and hand's half thickness and a little air.</summary>
+    private const float ArmClearance = 0.1f;
+
+    /// <summary>How far (metres) outward of its shoulder a freely swinging hand hangs (<see cref="ArmHasRoom"/>).</summary>
+    private const float ArmOutward = 0.05f;
+
+    /// <summary>The swing (degrees either way of hanging) an arm needs room for (<see cref="ArmHasRoom"/>): a little more than <see cref="LeastArmSwing"/>.</summary>
+    private const float ArmRoomSwing = 30f;
+
+    [ThreadStatic]
+    private static List<int>? s_near;
 
     /// <summary>
     /// The rise and fall (leg lengths, 5th to 95th percentile) of <paramref name="heights"/> from sample
