@@ -15,6 +15,7 @@ using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Steering;
 using Ballistic.Runtime.Baking;
 
 namespace Ballistic.Cli;

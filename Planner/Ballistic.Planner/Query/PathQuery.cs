@@ -574,7 +574,8 @@ public sealed class PathQuery
         string moves = _walking ? "moves (jumps or walks)" : "jumps";
         string holds = _walking ? $"{n} nodes, {_roadmap.Edges.Count} jumps, {_roadmap.Walks.Count} walks" : $"{n} nodes, {_roadmap.Edges.Count} jumps";
         PlanResult result = path is null
-            ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : ""), start, goal, clock)
+            ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : "")
+                + NoPathGap.Describe(_scene, _roadmap, start, goal, [.. _extra.Select(e => (e.From, e.To))], _walking, rejected), start, goal, clock)
             : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
         yield return result with { Expansions = expansions };
     }

@@ -1,6 +1,4 @@
-using Ballistic.Planner.Steering;
-
-namespace Ballistic.Cli;
+namespace Ballistic.Planner.Steering;
 
 /// <summary>What a refused jump candidate's <see cref="SteeringFailure"/> means, in words a level designer reads.</summary>
 internal static class SteeringFailureText
