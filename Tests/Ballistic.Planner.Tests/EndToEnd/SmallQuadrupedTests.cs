@@ -81,6 +81,11 @@ public sealed class SmallQuadrupedTests
         Assert.That(look.Bob.Seen, Is.Not.Empty, "its hips rise and fall with its steps");
         Assert.That(look.Inside.Worst!.Value.Score, Is.GreaterThanOrEqualTo(4f), $"no vertex, the tail's included, 5 mm inside the level: {look.Inside}");
 
+        // Judged at its own size, no joint snaps: a frame's turn counts from 15° × √(0.9 m ÷ its leg), about 69°
+        // (at 15°, its paws lifting read as dozens of snapping frames).
+        Assert.That(eye.SnapFloor, Is.EqualTo(AnimatorEye.LeastSnap * MathF.Sqrt(AnimatorEye.HumanLeg / eye.Leg)).Within(1e-3f));
+        Assert.That(look.Snaps.Seen.Count(s => s.Score > 1f), Is.Zero, $"no joint snaps at the rat's size: {look.Snaps}");
+
         // Each foot's steps, from one contact to the next while the walk cruises (not the re-steps of its turns in place).
         var steps = new List<float>();
         var air = new List<float>();

@@ -47,7 +47,7 @@ public sealed class SweepTests
         ("human", "block"), ("human", "stairs"), ("human-zup", "thin-slabs"), ("dog", "block"), ("dog", "curved"),
         ("tailed", "stairs"), ("tailed", "holes-debris"), ("tailed", "curved"), ("dog", "doorway"), ("human", "doorway"),
         ("panda", "block"), ("panda", "holes-debris"), ("panda", "doorway"), ("panda", "stairs"), ("panda", "curved"),
-        ("spider", "block"), ("spider", "doorway"), ("spider", "curved"), ("dog", "maze"), ("human", "house"),
+        ("spider", "block"), ("spider", "doorway"), ("spider", "curved"), ("dog", "maze"), ("human", "house"), ("rat", "clutter"),
     ];
 
     /// <summary>The reports of every case run, by case name, for the whole-sweep share.</summary>
@@ -233,7 +233,7 @@ public sealed class SweepTests
         look.All.Where(c => c.Name is "crouch" or "absorb" or "ground time" or "soles" or "flight pose" or "crossing" or "footholds" or "inside" or "bob" or "arm swing");
 
     /// <summary>
-    /// Most frames (60 a second) in which a limb joint of some plan of the whole sweep snaps (<see cref="AnimatorEye.LeastSnap"/>):
+    /// Most frames (60 a second) in which a limb joint of some plan of the whole sweep snaps (<see cref="AnimatorEye.SnapFloor"/>):
     /// 1,203 when first measured (2026-12-05), 1,135 since a crouch's drive up ends as fast as its takeoff rises (and a
     /// landing's sink starts as fast as it came down), 1,133 since a leg stepping across a jump arrives in the landing's
     /// own pose, 242 since a limb holds a contact in the air only while its joints turn no faster than 900°/s
@@ -250,10 +250,13 @@ public sealed class SweepTests
     /// 10° a frame (2026-12-06: 20 frames of swinging limbs, 4 of held legs and 1 letting go gone, one of a panda's swinging foot come),
     /// 55 since a limb leaving the ground carries on at the speed it left with (the frog's 15 frames at its takeoffs);
     /// 63 once the maze and the two-storey house joined the sweep (2026-12-06: twelve requests of the skeleton, the dog
-    /// and the human rig, 8 frames, none of them in the plans that were there before).
+    /// and the human rig, 8 frames, none of them in the plans that were there before); 57 since a rig smaller than a
+    /// person is judged at its own size (<see cref="AnimatorEye.SnapFloor"/>, 2026-12-07: the panda's 3 frames, the
+    /// tailed quadruped's 2 and the spider's 1, turns and flicks of 17–21°, no longer count; the rat on the cluttered
+    /// floor, joining the sweep that day, brings none, 155 at 15°).
     /// Lower it as snaps are removed; it goes up only when new requests join the sweep, by what they bring.
     /// </summary>
-    private const int MostSnapFrames = 63;
+    private const int MostSnapFrames = 57;
 
     /// <summary>
     /// Over the whole sweep (when every case ran): at least 95 % of the requests fully right, at most one request per

@@ -100,8 +100,30 @@ internal sealed class AnimatorEye
     /// <summary>Frames a second at which a player shows the clip, for <see cref="LeastSnap"/>.</summary>
     public const float DisplayRate = 60f;
 
-    /// <summary>Least turn (degrees) of a limb joint from one displayed frame to the next that reads as a snap (<see cref="SnapRatio"/>).</summary>
+    /// <summary>
+    /// Least turn (degrees) of a limb joint from one displayed frame to the next that reads as a snap
+    /// (<see cref="SnapRatio"/>) for a rig of a grown person's size (legs <see cref="HumanLeg"/> long or longer); a
+    /// smaller rig's is this times √(<see cref="HumanLeg"/> ÷ <see cref="Leg"/>) (<see cref="SnapFloor"/>).
+    /// </summary>
     public const float LeastSnap = 15f;
+
+    /// <summary>
+    /// A grown person's leg length (metres, hip height above the sole): the size the reference figures are for
+    /// (the animation notes give adult human values, to be scaled to a rig by its leg and dynamic similarity) and on
+    /// which <see cref="LeastSnap"/> was judged (the skeleton's legs are 0.91 m, the armature human's 0.95 m).
+    /// </summary>
+    public const float HumanLeg = 0.9f;
+
+    /// <summary>
+    /// Least turn (degrees) of a limb joint from one displayed frame to the next that reads as a snap on this rig:
+    /// <see cref="LeastSnap"/>, scaled for a rig whose legs are shorter than <see cref="HumanLeg"/> by
+    /// √(<see cref="HumanLeg"/> ÷ <see cref="Leg"/>): animals of different sizes move alike at equal Froude numbers,
+    /// their motions lasting in proportion to √(leg ÷ g), as the gait's least step time does
+    /// (<see cref="WalkGait.FullSizeLeg"/>). A 4.2 cm rat's feet step about nine times a second, each swing two or three
+    /// frames at 60 frames a second: a forearm's 24° in the frame its paw lifts is its motion, not a snap (its floor
+    /// is 69°; a 0.5 m dog's 20°, the 0.36 m spider's 24°).
+    /// </summary>
+    public float SnapFloor => LeastSnap * MathF.Max(1f, MathF.Sqrt(HumanLeg / Leg));
 
     /// <summary>How many times as far as in the displayed frames either side a joint turns in a snap.</summary>
     public const float SnapRatio = 3f;
@@ -1032,9 +1054,9 @@ internal sealed class AnimatorEye
 
     /// <summary>
     /// No snaps, as a player shows the clip at <see cref="DisplayRate"/> frames a second: no limb joint (its local
-    /// rotation, sampled as glTF interpolates it) turns more than <see cref="LeastSnap"/>° from one displayed frame to
+    /// rotation, sampled as glTF interpolates it) turns more than <see cref="SnapFloor"/>° from one displayed frame to
     /// the next and more than <see cref="SnapRatio"/> times as far as in the frame before and in the frame after (a
-    /// step), nor more than <see cref="LeastSnap"/>° out and as far back in the next frame, ending less than a
+    /// step), nor more than <see cref="SnapFloor"/>° out and as far back in the next frame, ending less than a
     /// <see cref="SnapRatio"/>th of that from where it was (a flick). A joint moving fast but smoothly (a push-off) is no
     /// snap; one that jumps between two slow frames, or out and back, is. One measurement per snapping frame of a joint
     /// (score above 1), or, where none snaps, one for the frame nearest to snapping.
@@ -1042,6 +1064,7 @@ internal sealed class AnimatorEye
     private void MeasureSnaps(JumpAnimation animation, Look look)
     {
         (float Score, string Seen) nearest = (0f, "no joint turns");
+        float floor = SnapFloor;
         int frames = (int)MathF.Floor(animation.Duration * DisplayRate);
         var shown = new Quaternion[Math.Max(frames, 0) + 1];
         var turns = new float[Math.Max(frames, 0)];
@@ -1069,9 +1092,9 @@ internal sealed class AnimatorEye
                 {
                     // A step: one frame turning far more than either beside it. A flick: two frames turning out and back.
                     float around = MathF.Max(f > 0 ? turns[f - 1] : 0f, f + 1 < frames ? turns[f + 1] : 0f);
-                    float step = MathF.Min(turns[f] / LeastSnap, turns[f] / MathF.Max(SnapRatio * around, 1e-6f));
+                    float step = MathF.Min(turns[f] / floor, turns[f] / MathF.Max(SnapRatio * around, 1e-6f));
                     float flick = f + 1 < frames
-                        ? MathF.Min(MathF.Min(turns[f], turns[f + 1]) / LeastSnap, MathF.Min(turns[f], turns[f + 1]) / MathF.Max(SnapRatio * Between(shown[f + 2], shown[f]), 1e-6f))
+                        ? MathF.Min(MathF.Min(turns[f], turns[f + 1]) / floor, MathF.Min(turns[f], turns[f + 1]) / MathF.Max(SnapRatio * Between(shown[f + 2], shown[f]), 1e-6f))
                         : 0f;
                     float score = MathF.Max(step, flick);
                     if (score > 1f || score > nearest.Score)

@@ -6,12 +6,12 @@ namespace Ballistic.Planner.Tests.Support;
 /// <summary>
 /// Levels in the shapes other tools export, not ours: unwelded triangle soups placed by node transforms (some
 /// modelled Z-up and turned, some scaled), single-sided planes, thin slabs, fine curved terrain, stairs, a block to
-/// stand on, a floor with holes and rotated debris, a low cave, a wide open field, a maze, and a two-storey house with
-/// a front door and a staircase with a landing. Each comes with requests a user would make.
+/// stand on, a floor with holes and rotated debris, a low cave, a wide open field, a maze, a two-storey house with
+/// a front door and a staircase with a landing, and a cluttered floor at a rat's scale. Each comes with requests a user would make.
 /// </summary>
 internal static class ForeignLevels
 {
-    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway", "beam", "maze", "house"];
+    public static IReadOnlyList<string> Names { get; } = ["thin-slabs", "curved", "stairs", "block", "holes-debris", "cave", "field", "doorway", "beam", "maze", "house", "clutter"];
 
     /// <summary>A level and the start/goal pairs a user would try on it.</summary>
     public static (Level Level, (Vector3 From, Vector3 To)[] Requests) Get(string name) => name switch
@@ -27,6 +27,7 @@ internal static class ForeignLevels
         "beam" => Beam(),
         "maze" => Maze(),
         "house" => House(),
+        "clutter" => Clutter(),
         _ => throw new ArgumentException($"no foreign level '{name}'"),
     };
 
@@ -122,6 +123,28 @@ internal static class ForeignLevels
             (new Vector3(-9f, 0f, 0f), new Vector3(-3.5f, 0f, 0f)),
             (new Vector3(-3f, 0f, 2f), new Vector3(5.3f, 16f * rise, 0f)),
             (new Vector3(5.3f, 16f * rise, -2f), new Vector3(-9f, 0f, -2f)),
+        ]);
+    }
+
+    /// <summary>
+    /// A kitchen floor at a rat's scale, 3 × 2 m of unwelded tiles: a book 3 cm thick, a board 6 cm high and an 8 cm
+    /// box lying about, and a 12 cm gap between two floor boards over a 20 cm drop. Requests of 1 to 1.5 m: across the
+    /// floor past the book, onto the box, and over the gap.
+    /// </summary>
+    internal static (Level Level, (Vector3 From, Vector3 To)[] Requests) Clutter()
+    {
+        var b = new LevelBuilder("clutter (foreign)");
+        AddSoupQuad(b, "floor_west", new Vector3(-1.5f, 0f, -1f), new Vector3(0.6f, 0f, -1f), new Vector3(0.6f, 0f, 1f), new Vector3(-1.5f, 0f, 1f), 12);
+        AddSoupQuad(b, "floor_east", new Vector3(0.72f, 0f, -1f), new Vector3(1.5f, 0f, -1f), new Vector3(1.5f, 0f, 1f), new Vector3(0.72f, 0f, 1f), 4);
+        AddSoupQuad(b, "cellar", new Vector3(0.5f, -0.2f, -1f), new Vector3(0.8f, -0.2f, -1f), new Vector3(0.8f, -0.2f, 1f), new Vector3(0.5f, -0.2f, 1f), 1);
+        Matrix4x4 turned = Matrix4x4.CreateRotationY(0.4f) * Matrix4x4.CreateTranslation(-0.6f, 0f, 0.3f);
+        AddSoupBox(b, "book", new Vector3(-0.12f, 0f, -0.09f), new Vector3(0.12f, 0.03f, 0.09f), turned);
+        AddSoupBox(b, "board", new Vector3(-0.2f, 0f, -0.7f), new Vector3(0.2f, 0.06f, -0.5f));
+        AddSoupBox(b, "box", new Vector3(-1.2f, 0f, -0.8f), new Vector3(-0.9f, 0.08f, -0.5f));
+        return (b.Build(), [
+            (new Vector3(-1.2f, 0f, 0.5f), new Vector3(0.2f, 0f, 0.2f)),
+            (new Vector3(-0.5f, 0f, -0.2f), new Vector3(-1.05f, 0.08f, -0.65f)),
+            (new Vector3(0f, 0f, 0f), new Vector3(1.2f, 0f, 0f)),
         ]);
     }
 
