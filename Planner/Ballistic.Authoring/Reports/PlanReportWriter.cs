@@ -23,8 +23,9 @@ namespace Ballistic.Authoring.Reports;
 /// "via"}</c> with its ground path resampled to points at most <see cref="MaxWalkPointSpacing"/> apart; a
 /// <c>summary</c> of the moves; and, with an animation, the clip times of every move. <c>jumps</c> lists the jump
 /// moves only. Besides the moves it states where the start and goal stances stand relative to the requested points
-/// (<c>start</c>, <c>goal</c>: contact centre, distances across and up/down) and the jumps set aside because the body
-/// could not perform them (<c>rejectedJumps</c>, with reasons). <see cref="PlanReportReader"/> reads it back.
+/// (<c>start</c>, <c>goal</c>: contact centre, distances across and up/down) and the moves set aside because the body
+/// could not perform them (<c>rejectedJumps</c>: each one's <c>kind</c>, <c>jump</c> or <c>walk</c>, with its
+/// reason). <see cref="PlanReportReader"/> reads it back.
 /// </summary>
 public static class PlanReportWriter
 {
@@ -327,6 +328,7 @@ public static class PlanReportWriter
             foreach (RejectedJump rejected in report.Rejected)
             {
                 w.WriteStartObject();
+                w.WriteString("kind", rejected.IsWalk ? "walk" : "jump");
                 Vector("from", rejected.Takeoff.Pose.Position);
                 Vector("to", rejected.Landing.Pose.Position);
                 w.WriteString("reason", rejected.Reason);

@@ -401,7 +401,7 @@ internal sealed class JumpRepair
     /// <summary>Lists <paramref name="move"/> among the moves set aside, counting walks apart from jumps for the messages.</summary>
     private void Record(Move move, string reason)
     {
-        _setAside.Add(new RejectedJump(move.From, move.To, reason));
+        _setAside.Add(new RejectedJump(move.From, move.To, reason) { IsWalk = move is Walk });
         _walksSetAside += move is Walk ? 1 : 0;
     }
 

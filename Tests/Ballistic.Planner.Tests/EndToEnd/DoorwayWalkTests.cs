@@ -1,4 +1,6 @@
 using System.Numerics;
+using System.Text.Json.Nodes;
+using Ballistic.Authoring.Reports;
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
@@ -63,6 +65,13 @@ public sealed class DoorwayWalkTests
         Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
         Assert.That(plan.Result.Moves, Has.All.InstanceOf<Walk>(), plan.Result.Reason);
         Assert.That(report.FullyRight, Is.True, report.ToString());
+
+        // The walks set aside on the way are in the plan report as walks, each with the gait's problem.
+        Assert.That(plan.Rejected.Where(r => r.IsWalk), Is.Not.Empty, "walks were set aside on this route");
+        var written = new PlanReport("doorway", setup.Scene, new Vector3(2.5f, 0f, -3f), new Vector3(-2.5f, 0f, -1f), 0, 0, 1, 0, plan.Result, new Dictionary<string, double>()) { Rejected = plan.Rejected };
+        var rejected = (JsonArray)JsonNode.Parse(PlanReportWriter.ToJsonString(written))!["rejectedJumps"]!;
+        Assert.That(rejected.Select(r => r!["kind"]!.GetValue<string>()), Is.EqualTo(plan.Rejected.Select(r => r.IsWalk ? "walk" : "jump")));
+        Assert.That(rejected.Where(r => r!["kind"]!.GetValue<string>() == "walk").Select(r => r!["reason"]!.GetValue<string>()), Has.All.Contain(" along the walk"));
     }
 
     /// <summary>
