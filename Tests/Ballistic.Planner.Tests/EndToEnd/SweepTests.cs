@@ -220,7 +220,8 @@ public sealed class SweepTests
     /// room's corner to the other's (request 3) in three walks after setting aside two, not two: its right hand swung
     /// 19.9° against its leg (the eye wants 20°) over the one stride of level ground of its second walk, which passes
     /// the 0.9 m door with its arms held in, as issue 24 asks (off the list since the eye reads an arm's swing only where
-    /// it has room to swing, not past a jamb: <c>AnimatorEye.ArmHasRoom</c>; its freest arm swings 40°, 2026-12-07).
+    /// it has room to swing, not past a jamb: <c>AnimatorEye.ArmHasRoom</c>; the least swing read on it is now 40°,
+    /// its left hand on its first walk, 2026-12-07).
     /// </summary>
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
