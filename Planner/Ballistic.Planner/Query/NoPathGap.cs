@@ -165,14 +165,14 @@ internal static class NoPathGap
         RoadmapNode far = NodeOf(b);
         Vector3 step = far.ContactCentre - near.ContactCentre;
         float limit = scene.Character.TakeoffSpeedMax;
-        string gap = Text($"; the easiest jump between them, from {Point(near.ContactCentre)} to {Point(far.ContactCentre)} ({new Vector2(step.X, step.Z).Length():0.0} m across, {MathF.Abs(step.Y):0.0} m {(step.Y >= 0f ? "up" : "down")}), needs a takeoff of at least {least:0.00} m/s");
+        string gap = string.Create(CultureInfo.InvariantCulture, $"; the easiest jump between them, from {Point(near.ContactCentre)} to {Point(far.ContactCentre)} ({new Vector2(step.X, step.Z).Length():0.0} m across, {MathF.Abs(step.Y):0.0} m {(step.Y >= 0f ? "up" : "down")}), needs a takeoff of at least {least:0.00} m/s");
         if (least > limit)
         {
-            return text + gap + Text($", above the character's {limit:0.00} m/s");
+            return text + gap + string.Create(CultureInfo.InvariantCulture, $", above the character's {limit:0.00} m/s");
         }
 
         SteeringResult jump = scene.Steering.Steer(near.Pose, near.Cone, far.Pose, far.Cone);
-        string refused = Text($" (the character's limit: {limit:0.00} m/s), ") + (jump.Succeeded
+        string refused = string.Create(CultureInfo.InvariantCulture, $" (the character's limit: {limit:0.00} m/s), ") + (jump.Succeeded
             ? "and steers: the roadmap is too sparse there (bake more nodes)"
             : "and is refused: " + SteeringFailureText.Describe(jump.Failure));
         if (walking && scene.Walking.Limits.CanWalk)
@@ -195,17 +195,15 @@ internal static class NoPathGap
     {
         0 => "no stance of the roadmap",
         1 => "1 stance",
-        _ => Text($"{count} stances"),
+        _ => string.Create(CultureInfo.InvariantCulture, $"{count} stances"),
     };
 
     /// <summary>" (all within X m of it)" when the stances lie within 10 m of <paramref name="end"/> (a side closed in), else empty.</summary>
     private static string Spread(List<int> side, RoadmapNode end, Func<int, RoadmapNode> nodeOf)
     {
         float farthest = side.Count == 0 ? 0f : side.Max(id => Vector3.Distance(nodeOf(id).ContactCentre, end.ContactCentre));
-        return farthest <= 10f ? Text($" (all within {farthest:0.0} m of it)") : "";
+        return farthest <= 10f ? string.Create(CultureInfo.InvariantCulture, $" (all within {farthest:0.0} m of it)") : "";
     }
 
-    private static string Point(Vector3 p) => Text($"({p.X:0.0}, {p.Y:0.0}, {p.Z:0.0})");
-
-    private static string Text(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+    private static string Point(Vector3 p) => string.Create(CultureInfo.InvariantCulture, $"({p.X:0.0}, {p.Y:0.0}, {p.Z:0.0})");
 }
