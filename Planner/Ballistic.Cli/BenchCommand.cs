@@ -123,9 +123,16 @@ internal static class BenchCommand
             query.Plan(a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position, b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position, new QuerySettings { Locomotion = Locomotion.Jump }));
         (List<double> nodeTimes, int nodeFound) = TimeQueries(roadmap, new Random(4), warmUp, count, (a, b) => query.Plan(a, b, new QuerySettings { Locomotion = Locomotion.Jump }));
 
+        // The same requests again, in the same order (the same seeds draw the same pairs): routes taken before, as a
+        // game's agents take them again, with the placements and arcs the scene remembered from the first time.
+        (List<double> pointAgain, int pointFoundAgain) = TimeQueries(roadmap, new Random(3), warmUp, count, (a, b) =>
+            query.Plan(a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position, b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position, new QuerySettings { Locomotion = Locomotion.Jump }));
+        (List<double> nodeAgain, int nodeFoundAgain) = TimeQueries(roadmap, new Random(4), warmUp, count, (a, b) => query.Plan(a, b, new QuerySettings { Locomotion = Locomotion.Jump }));
+
         output.WriteLine();
         output.WriteLine($"query on a {roadmap.Nodes.Count}-node, {roadmap.Edges.Count}-jump desert roadmap: median {Median(pointTimes):0.000} ms, p95 {Percentile(pointTimes, 0.95):0.000} ms over {pointTimes.Count} queries after {warmUp} warm-up queries ({pointFound} found a path)");
         output.WriteLine($"node to node on it: median {Median(nodeTimes):0.000} ms, p95 {Percentile(nodeTimes, 0.95):0.000} ms over {nodeTimes.Count} queries after {warmUp} warm-up queries ({nodeFound} found a path)");
+        output.WriteLine($"the same requests again (routes taken before): point to point median {Median(pointAgain):0.000} ms, p95 {Percentile(pointAgain, 0.95):0.000} ms ({pointFoundAgain} found a path); node to node median {Median(nodeAgain):0.000} ms, p95 {Percentile(nodeAgain, 0.95):0.000} ms ({nodeFoundAgain} found a path)");
 
         ParabolaSteering steering = desertScene.Steering;
         var pairs = new List<(RoadmapNode A, RoadmapNode B)>();

@@ -39,7 +39,8 @@ public sealed class BallisticCliTests
 
     /// <summary>
     /// `bench` times the desert's queries one by one and prints each kind's median and 95th percentile: point to point
-    /// and node to node, every request finding a path, the tail never under the median.
+    /// and node to node, every request finding a path, the tail never under the median; then the same requests again
+    /// (routes taken before, what the scene remembered reused), each kind finding as many paths as the first time.
     /// </summary>
     [Test]
     public void BenchPrintsTheQueriesMedianAndTail()
@@ -58,6 +59,17 @@ public sealed class BallisticCliTests
                 double tail = double.Parse(m.Groups[2].Value, System.Globalization.CultureInfo.InvariantCulture);
                 Assert.That(median, Is.GreaterThan(0d), line);
                 Assert.That(tail, Is.GreaterThanOrEqualTo(median), line);
+            }
+
+            string again = output.Split('\n').Single(l => l.StartsWith("the same requests again", StringComparison.Ordinal));
+            var kinds = System.Text.RegularExpressions.Regex.Matches(again, @"(point to point|node to node) median ([0-9.]+) ms, p95 ([0-9.]+) ms \(([0-9]+) found a path\)");
+            Assert.That(kinds, Has.Count.EqualTo(2), again);
+            foreach (System.Text.RegularExpressions.Match m in kinds)
+            {
+                double median = double.Parse(m.Groups[2].Value, System.Globalization.CultureInfo.InvariantCulture);
+                Assert.That(median, Is.GreaterThan(0d), again);
+                Assert.That(double.Parse(m.Groups[3].Value, System.Globalization.CultureInfo.InvariantCulture), Is.GreaterThanOrEqualTo(median), again);
+                Assert.That(m.Groups[4].Value, Is.EqualTo("100"), $"{m.Groups[1].Value}: the same requests find the same number of paths again ({again})");
             }
         });
     }
