@@ -33,87 +33,28 @@ internal static class NoPathGap
         int n = roadmap.Nodes.Count;
         int count = Math.Max(n, Math.Max(start.Id, goal.Id) + 1);
         RoadmapNode NodeOf(int id) => id == start.Id ? start : id == goal.Id ? goal : roadmap.Nodes[id];
-        bool Allowed(int from, int to) => rejected?.Contains((from, to)) != true;
 
-        // Forward from the start.
-        var forward = new bool[count];
-        var stack = new Stack<int>();
-        forward[start.Id] = true;
-        stack.Push(start.Id);
-        while (stack.TryPop(out int node))
-        {
-            void Visit(int next)
-            {
-                if (!forward[next] && Allowed(node, next))
-                {
-                    forward[next] = true;
-                    stack.Push(next);
-                }
-            }
-
-            foreach ((int from, int to) in links)
-            {
-                if (from == node)
-                {
-                    Visit(to);
-                }
-            }
-
-            if (node < n)
-            {
-                foreach (int next in roadmap.OutgoingTargets[roadmap.OutgoingOffsets[node]..roadmap.OutgoingOffsets[node + 1]])
-                {
-                    Visit(next);
-                }
-
-                if (walking)
-                {
-                    foreach (int next in roadmap.WalkTargets[roadmap.WalkOffsets[node]..roadmap.WalkOffsets[node + 1]])
-                    {
-                        Visit(next);
-                    }
-                }
-            }
-        }
-
-        // Backward from the goal, over the moves reversed.
-        var into = new List<int>[count];
-        void Into(int from, int to) => (into[to] ??= []).Add(from);
-        foreach ((int from, int to) in links)
-        {
-            Into(from, to);
-        }
-
+        // Every move of the search's graph (from id, to id): the request's links, the roadmap's jumps and, for a
+        // request that walks, its walks; what the start reaches along them, and what reaches the goal.
+        var moves = new List<(int From, int To)>(links);
         for (int node = 0; node < n; node++)
         {
             foreach (int next in roadmap.OutgoingTargets[roadmap.OutgoingOffsets[node]..roadmap.OutgoingOffsets[node + 1]])
             {
-                Into(node, next);
+                moves.Add((node, next));
             }
 
             if (walking)
             {
                 foreach (int next in roadmap.WalkTargets[roadmap.WalkOffsets[node]..roadmap.WalkOffsets[node + 1]])
                 {
-                    Into(node, next);
+                    moves.Add((node, next));
                 }
             }
         }
 
-        var backward = new bool[count];
-        backward[goal.Id] = true;
-        stack.Push(goal.Id);
-        while (stack.TryPop(out int node))
-        {
-            foreach (int from in into[node] ?? [])
-            {
-                if (!backward[from] && Allowed(from, node))
-                {
-                    backward[from] = true;
-                    stack.Push(from);
-                }
-            }
-        }
+        bool[] forward = Reach(start.Id, moves, count, reversed: false, rejected);
+        bool[] backward = Reach(goal.Id, moves, count, reversed: true, rejected);
 
         var starts = new List<int>();
         var goals = new List<int>();
@@ -182,6 +123,52 @@ internal static class NoPathGap
         }
 
         return text + gap + refused;
+    }
+
+    /// <summary>
+    /// The ids (below <paramref name="count"/>) reached from <paramref name="origin"/> along <paramref name="moves"/>
+    /// not in <paramref name="rejected"/>: forward, or against the moves' direction (<paramref name="reversed"/>: the
+    /// ids that reach <paramref name="origin"/>). The moves are laid out in compressed rows by the end walked from.
+    /// </summary>
+    private static bool[] Reach(int origin, List<(int From, int To)> moves, int count, bool reversed, IReadOnlySet<(int From, int To)>? rejected)
+    {
+        var offsets = new int[count + 1];
+        foreach ((int from, int to) in moves)
+        {
+            offsets[(reversed ? to : from) + 1]++;
+        }
+
+        for (int i = 0; i < count; i++)
+        {
+            offsets[i + 1] += offsets[i];
+        }
+
+        var next = new int[count];
+        Array.Copy(offsets, next, count);
+        var ends = new int[moves.Count];
+        foreach ((int from, int to) in moves)
+        {
+            ends[next[reversed ? to : from]++] = reversed ? from : to;
+        }
+
+        var reached = new bool[count];
+        var stack = new Stack<int>();
+        reached[origin] = true;
+        stack.Push(origin);
+        while (stack.TryPop(out int node))
+        {
+            for (int i = offsets[node]; i < offsets[node + 1]; i++)
+            {
+                int other = ends[i];
+                if (!reached[other] && rejected?.Contains(reversed ? (other, node) : (node, other)) != true)
+                {
+                    reached[other] = true;
+                    stack.Push(other);
+                }
+            }
+        }
+
+        return reached;
     }
 
     /// <summary>The least takeoff speed (m/s) of a ballistic jump displaced by <paramref name="d"/> (world metres) under gravity <paramref name="g"/> (m/s²).</summary>
