@@ -15,7 +15,7 @@ using BodyPointRunner = Ballistic.Runtime.Systems.BodyPointSystem;
 using LocomotionRunner = Ballistic.Runtime.Systems.LocomotionSystem;
 using PathRequestRunner = Ballistic.Runtime.Systems.PathRequestSystem;
 using PoseRunner = Ballistic.Runtime.Systems.PoseSystem;
-using RoadmapSearch = Ballistic.Runtime.Systems.RoadmapSearch;
+using RoadmapSearch = Ballistic.Runtime.Kinds.RoadmapSearch;
 
 namespace Ballistic.Runtime;
 

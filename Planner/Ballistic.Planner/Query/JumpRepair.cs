@@ -508,9 +508,10 @@ internal sealed class JumpRepair
     /// <summary>
     /// The stances this request set aside as takeoffs (<paramref name="stance"/> <see cref="ProblemStance.Takeoff"/>)
     /// or landings, by node id, with the animator's reason: those it found itself and those it was told
-    /// (<see cref="Remember"/>).
+    /// (<see cref="Remember"/>). The record's own dictionary, for reading only (a concrete type, so that a caller
+    /// enumerating it allocates nothing).
     /// </summary>
-    internal IReadOnlyDictionary<int, string> StancesSetAside(ProblemStance stance) => stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons;
+    internal Dictionary<int, string> StancesSetAside(ProblemStance stance) => stance == ProblemStance.Takeoff ? _takeoffReasons : _landingReasons;
 
     /// <summary>"no jump was searched from 1 stance the body cannot crouch on, as earlier requests found (stance 12: …)".</summary>
     private string Remembered()

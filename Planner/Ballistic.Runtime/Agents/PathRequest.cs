@@ -1,16 +1,23 @@
 using System.Numerics;
-using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Agents;
 
-/// <summary>One agent's request for a path: started on a tick within the budget, searched and animated in the background, delivered on a fixed later tick.</summary>
-internal sealed class PathRequest(AgentHandle agent, Vector3 target)
+/// <summary>
+/// One agent's request for a path: started on a tick within the budget, searched and animated in the background,
+/// delivered on a fixed later tick. Pooled by the world's <see cref="PathQueue"/>: made ready for each use by
+/// <see cref="Reset"/> and given back once delivered or dropped with its job ended, so that a crowd sent to new targets
+/// allocates no request on the tick thread once the pool has grown. Each keeps its own <see cref="RequestJob"/>, reused
+/// with it.
+/// </summary>
+internal sealed class PathRequest
 {
-    public AgentHandle Agent { get; } = agent;
+    /// <summary>The agent that asked.</summary>
+    public AgentHandle Agent { get; private set; }
 
-    public Vector3 Target { get; } = target;
+    /// <summary>The point asked for, world metres.</summary>
+    public Vector3 Target { get; private set; }
 
     /// <summary>The roadmap edge to perform as the whole path, with no search (<see cref="JumpWorld.PerformJump"/>); −1 to search. Only the job's first round performs it; once set aside, its later rounds search.</summary>
     public int ForcedEdge { get; set; } = -1;
@@ -21,9 +28,6 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// </summary>
     public IReadOnlyList<Move>? ForcedMoves { get; set; }
 
-    /// <summary>Moves set aside because the body could not perform them, with why.</summary>
-    public JumpRepair Repair { get; } = new();
-
     /// <summary>The stance searched from.</summary>
     public RoadmapNode? Start { get; set; }
 
@@ -33,21 +37,30 @@ internal sealed class PathRequest(AgentHandle agent, Vector3 target)
     /// <summary>The tick on which the path is delivered to its agent.</summary>
     public long DueTick { get; set; }
 
-    /// <summary>
-    /// The request's search and animation queued or running in the background (null when run on the tick): its result
-    /// is null when the tick thread claimed and ran the work itself (<see cref="Outcome"/> then holds it).
-    /// </summary>
-    public Task<RequestOutcome?>? Job { get; set; }
+    /// <summary>The request's search and animation, run on a background thread or on the tick; reused with the request.</summary>
+    public RequestJob Job { get; } = new();
 
-    /// <summary>
-    /// Runs the work <see cref="Job"/> runs, here and now, unless a thread has already started it (then null): the
-    /// tick thread waiting for the request runs it itself while no background thread has.
-    /// </summary>
-    public Func<RequestOutcome?>? RunHere { get; set; }
+    /// <summary>True while the job is queued for or run by the world's background threads (<see cref="Systems.RequestWorkers"/>).</summary>
+    public bool InBackground { get; set; }
 
-    /// <summary>The outcome of the search and animation run on the tick thread.</summary>
+    /// <summary>The outcome of the search and animation once read on the tick thread (run there, or its background job ended).</summary>
     public RequestOutcome? Outcome { get; set; }
 
     /// <summary>True once a tick stopped waiting for this request's animation (<see cref="Core.WorldSettings.MaxAnimationWait"/> spent): it is delivered at the first tick its animation is ready.</summary>
     public bool Late { get; set; }
+
+    /// <summary>Makes the request ready for a new use: <paramref name="agent"/>'s, to <paramref name="target"/> (world metres), performing roadmap edge <paramref name="forcedEdge"/> (−1: searching).</summary>
+    public void Reset(AgentHandle agent, Vector3 target, int forcedEdge)
+    {
+        Agent = agent;
+        Target = target;
+        ForcedEdge = forcedEdge;
+        ForcedMoves = null;
+        Start = null;
+        Character = null;
+        DueTick = 0;
+        InBackground = false;
+        Outcome = null;
+        Late = false;
+    }
 }

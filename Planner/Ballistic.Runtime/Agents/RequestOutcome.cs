@@ -1,6 +1,7 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Paths;
 
 namespace Ballistic.Runtime.Agents;
 
@@ -10,4 +11,5 @@ namespace Ballistic.Runtime.Agents;
 /// <param name="Animation">The clean path's whole-body animation; <c>null</c> when there is none.</param>
 /// <param name="Error">An exception the search or animator threw (never expected), or <c>null</c>.</param>
 /// <param name="Searching">True when <paramref name="Error"/> came from the search, false from the animator.</param>
-internal sealed record RequestOutcome(PlanResult? Search, IReadOnlyList<Move> Moves, JumpAnimation? Animation, Exception? Error, bool Searching);
+/// <param name="Path">The clean path as its agent follows it (<see cref="Moves"/> animated by <see cref="Animation"/>, to the request's target), made by the job's thread so that the tick delivering it allocates nothing; <c>null</c> when there is none.</param>
+internal sealed record RequestOutcome(PlanResult? Search, IReadOnlyList<Move> Moves, JumpAnimation? Animation, Exception? Error, bool Searching, AgentPath? Path = null);

@@ -33,8 +33,7 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly List<CharacterKind?> _kinds;
     private readonly List<RoadmapSearch?> _searches;
     private readonly List<PathRequest> _inFlight = [];
-    private readonly TaskScheduler? _scheduler;
-    private readonly CancellationTokenSource _shutdown = new();
+    private readonly RequestWorkers? _workers;
     private readonly Budget _slice = new();
 
     /// <summary>The jobs advanced on the tick thread in slices (no background threads), by request, until they end.</summary>
@@ -53,7 +52,7 @@ internal sealed class PathRequestSystem : IDisposable
         _searches = searches;
         if (settings.AnimationThreads > 0)
         {
-            _scheduler = new ConcurrentExclusiveSchedulerPair(TaskScheduler.Default, settings.AnimationThreads).ConcurrentScheduler;
+            _workers = new RequestWorkers(settings.AnimationThreads);
         }
     }
 
@@ -84,6 +83,7 @@ internal sealed class PathRequestSystem : IDisposable
             int slot = request.Agent.Index;
             if (!Current(request))
             {
+                _queue.Return(request); // replaced or cancelled before it started
                 continue;
             }
 
@@ -92,11 +92,11 @@ internal sealed class PathRequestSystem : IDisposable
             request.Start = _agents.Stance[slot]!;
             StanceLessons lessons = Lessons(kind);
             request.Character = lessons.Kind;
-            request.Repair.Start = request.Start.Id;
-            lessons.Teach(request.Repair);
             request.DueTick = tick + _settings.PathLatencyTicks;
-            var job = new RequestJob(lessons.Kind, _searches[kind]!, request, _settings.RepairRounds, _settings.AnimationFrameRate);
-            if (_scheduler is null)
+            request.Outcome = null;
+            RequestJob job = request.Job;
+            job.Begin(lessons.Kind, _searches[kind]!, request, lessons.Taught, _settings.RepairRounds, _settings.AnimationFrameRate);
+            if (_workers is null)
             {
                 // Advanced on this thread: whole now, or in slices from this tick on (Advance).
                 bool whole = _settings.PlanningTimePerTick is null;
@@ -105,16 +105,11 @@ internal sealed class PathRequestSystem : IDisposable
                 {
                     _stepped[request] = job;
                 }
-
-                request.Job = null;
-                request.RunHere = null;
             }
             else
             {
-                request.Outcome = null;
-                Func<RequestOutcome?> run = job.TryRun;
-                request.RunHere = run;
-                request.Job = Task.Factory.StartNew(run, _shutdown.Token, TaskCreationOptions.None, _scheduler);
+                request.InBackground = true;
+                _workers.Enqueue(job);
             }
 
             _inFlight.Add(request);
@@ -132,7 +127,7 @@ internal sealed class PathRequestSystem : IDisposable
     private void Advance()
     {
         LastTickSteps = 0;
-        if (_scheduler is not null || _settings.PlanningTimePerTick is not { } budget)
+        if (_workers is not null || _settings.PlanningTimePerTick is not { } budget)
         {
             return;
         }
@@ -178,10 +173,15 @@ internal sealed class PathRequestSystem : IDisposable
                 if (_stepped.Remove(request, out RequestJob? dropped))
                 {
                     dropped.Dispose(); // advanced on this thread: dropped where it stands
+                    _queue.Return(request);
                 }
                 else if (!ready)
                 {
                     _inFlight[kept++] = request; // let the job finish before dropping it
+                }
+                else
+                {
+                    _queue.Return(request);
                 }
 
                 continue;
@@ -204,25 +204,18 @@ internal sealed class PathRequestSystem : IDisposable
             }
 
             int slot = request.Agent.Index;
-            RequestOutcome outcome;
-            try
-            {
-                outcome = request.Outcome ?? request.Job!.GetAwaiter().GetResult()
-                    ?? throw new InvalidOperationException("A request's job ended with no outcome.");
-            }
-            catch (Exception e) when (e is not OutOfMemoryException)
-            {
-                outcome = new RequestOutcome(null, [], null, e, Searching: false);
-            }
+            RequestOutcome outcome = request.Outcome ?? request.Job.Outcome
+                ?? new RequestOutcome(null, [], null, new InvalidOperationException("A request's job ended with no outcome."), Searching: false);
 
             // What the request found about its roadmap's stances, for the requests started from the next tick on.
             int kind = _agents.Kind[slot];
-            if (outcome.Error is null && _kinds[kind] is { } owner && ReferenceEquals(owner, request.Character))
+            if (outcome.Error is null && _kinds[kind] is { } owner && ReferenceEquals(owner, request.Character) && request.Job.Repair is { } repair)
             {
-                Lessons(kind).Learn(request.Repair);
+                Lessons(kind).Learn(repair);
             }
 
             Conclude(slot, request, outcome, tick, time);
+            _queue.Return(request);
         }
 
         _inFlight.RemoveRange(kept, _inFlight.Count - kept);
@@ -247,7 +240,7 @@ internal sealed class PathRequestSystem : IDisposable
     }
 
     /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>
-    private bool Ready(PathRequest request) => request.Outcome is not null || (!_stepped.ContainsKey(request) && (request.Job is null || request.Job.IsCompleted));
+    private bool Ready(PathRequest request) => request.Outcome is not null || (!_stepped.ContainsKey(request) && (!request.InBackground || request.Job.Ended));
 
     /// <summary>
     /// Waits for the in-flight request at <paramref name="index"/> within what is left of this tick's
@@ -264,29 +257,21 @@ internal sealed class PathRequestSystem : IDisposable
             return Finish(request, stepped, ref waitStart);
         }
 
-        Task<RequestOutcome?> job = request.Job!;
-        try
+        if (_settings.MaxAnimationWait is not { } limit)
         {
-            if (_settings.MaxAnimationWait is not { } limit)
+            while (!Ready(request))
             {
-                while (!Ready(request))
+                if (!Help(index))
                 {
-                    if (!Help(index))
-                    {
-                        job.Wait();
-                    }
+                    _workers!.WaitFor(request.Job, null);
                 }
-
-                return true;
             }
 
-            TimeSpan left = WaitLeft(limit, ref waitStart);
-            return left > TimeSpan.Zero && job.Wait(left);
+            return true;
         }
-        catch (AggregateException)
-        {
-            return true; // the job failed: it ended, and reading its outcome next says how
-        }
+
+        TimeSpan left = WaitLeft(limit, ref waitStart);
+        return left > TimeSpan.Zero && _workers!.WaitFor(request.Job, left);
     }
 
     /// <summary>
@@ -343,12 +328,12 @@ internal sealed class PathRequestSystem : IDisposable
         for (int j = index; j < _inFlight.Count; j++)
         {
             PathRequest other = _inFlight[j];
-            if (Ready(other) || other.RunHere is not { } run || !Current(other))
+            if (Ready(other) || !other.InBackground || !Current(other))
             {
                 continue;
             }
 
-            if (run() is { } outcome)
+            if (other.Job.TryRun() is { } outcome)
             {
                 other.Outcome = outcome;
                 return true;
@@ -384,7 +369,7 @@ internal sealed class PathRequestSystem : IDisposable
             return;
         }
 
-        var path = new AgentPath(request.Target, outcome.Moves, animation);
+        AgentPath path = outcome.Path ?? new AgentPath(request.Target, outcome.Moves, animation);
         _agents.Request[slot] = null;
         _agents.Stance[slot] = null;
         _agents.Path[slot] = path;
@@ -428,24 +413,14 @@ internal sealed class PathRequestSystem : IDisposable
 
     public void Dispose()
     {
-        _shutdown.Cancel();
+        // The background threads finish the jobs they are running; the queued ones are not run.
+        _workers?.Dispose();
         foreach (PathRequest request in _inFlight)
         {
             if (_stepped.TryGetValue(request, out RequestJob? stepped))
             {
                 stepped.Dispose();
             }
-
-            try
-            {
-                request.Job?.Wait();
-            }
-            catch (AggregateException)
-            {
-                // cancelled or failed: nobody waits for it any more
-            }
         }
-
-        _shutdown.Dispose();
     }
 }

@@ -1,6 +1,7 @@
 using Ballistic.Planner.Animation;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Agents;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Runtime.Systems;
@@ -27,32 +28,26 @@ internal sealed class StanceLessons(CharacterKind kind)
     /// <summary>Keeps the roadmap stances <paramref name="repair"/> (a delivered request's) set aside, with their reasons; placed stances (ids past the roadmap's) are the request's own and are not kept.</summary>
     public void Learn(JumpRepair repair)
     {
-        Learn(repair.StancesSetAside(ProblemStance.Takeoff), _noTakeoffs);
-        Learn(repair.StancesSetAside(ProblemStance.Landing), _noLandings);
-    }
-
-    /// <summary>Sets aside in <paramref name="repair"/> (a request about to start) every stance learned, in node order.</summary>
-    public void Teach(JumpRepair repair)
-    {
-        foreach ((int node, string reason) in _noTakeoffs)
+        if (Learn(repair.StancesSetAside(ProblemStance.Takeoff), _noTakeoffs) | Learn(repair.StancesSetAside(ProblemStance.Landing), _noLandings))
         {
-            repair.Remember(node, ProblemStance.Takeoff, reason);
-        }
-
-        foreach ((int node, string reason) in _noLandings)
-        {
-            repair.Remember(node, ProblemStance.Landing, reason);
+            Taught = new TaughtStances([.. _noTakeoffs.Select(p => (p.Key, p.Value))], [.. _noLandings.Select(p => (p.Key, p.Value))]);
         }
     }
 
-    private void Learn(IReadOnlyDictionary<int, string> found, SortedDictionary<int, string> into)
+    /// <summary>Every stance learned so far, in node order: what a request started now is taught (<see cref="TaughtStances.Teach"/>).</summary>
+    public TaughtStances Taught { get; private set; } = TaughtStances.None;
+
+    private bool Learn(Dictionary<int, string> found, SortedDictionary<int, string> into)
     {
+        bool learned = false;
         foreach ((int node, string reason) in found)
         {
             if (node >= 0 && node < Roadmap.Nodes.Count)
             {
-                into.TryAdd(node, reason);
+                learned |= into.TryAdd(node, reason);
             }
         }
+
+        return learned;
     }
 }

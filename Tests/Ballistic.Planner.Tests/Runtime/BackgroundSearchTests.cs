@@ -64,6 +64,63 @@ public sealed class BackgroundSearchTests
         }
     }
 
+    /// <summary>
+    /// A crowd sent to a new target whenever it arrives or fails, with a background thread and a real-time world's
+    /// bounded wait: once the pools have grown, the tick thread allocates nothing, neither in the ticks that start
+    /// requests and deliver their paths nor in the game's calls that send agents on. The request, its job and its
+    /// repair record are reused or made on the job's thread, the path its agent follows too, and the kind's stance
+    /// lessons are taught from arrays made when they were learned.
+    /// </summary>
+    [Test]
+    public void ACrowdSentToNewTargetsAllocatesNothingOnTheTickThread()
+    {
+        using var world = new JumpWorld(RuntimeWorlds.DesertSkeleton.Scene.Level, RuntimeWorlds.JumpOnly with { AnimationThreads = 1, MaxAnimationWait = TimeSpan.FromSeconds(30) });
+        KindHandle kind = world.AddKind(RuntimeWorlds.DesertSkeleton).Kind;
+        Roadmap roadmap = RuntimeWorlds.DesertSkeleton.Roadmap;
+        var random = new Random(5);
+        Vector3 Anywhere() => RuntimeWorlds.Point(roadmap.Nodes[random.Next(roadmap.Nodes.Count)]);
+        for (int i = 0; i < 40; i++)
+        {
+            AgentHandle agent = world.AddAgent(kind, Anywhere()).Agent;
+            Assert.That(world.SetTarget(agent, Anywhere()).Ok, Is.True);
+        }
+
+        var sendOn = new List<AgentHandle>(64);
+        int started = 0;
+        int delivered = 0;
+        long allocated = 0;
+        for (int tick = 0; tick < 900; tick++)
+        {
+            bool measured = tick >= 300; // the first 5 s grow the pools, the queues and the event buffer
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            world.Step();
+            sendOn.Clear();
+            foreach (JumpEvent e in world.Events)
+            {
+                delivered += measured && e.Kind is JumpEventKind.PathFound or JumpEventKind.PathFailed ? 1 : 0;
+                if (e.Kind is JumpEventKind.TargetReached or JumpEventKind.PathFailed)
+                {
+                    sendOn.Add(e.Agent);
+                }
+            }
+
+            foreach (AgentHandle agent in sendOn)
+            {
+                world.SetTarget(agent, Anywhere());
+            }
+
+            started += measured ? world.LastTickSearches : 0;
+            allocated += measured ? GC.GetAllocatedBytesForCurrentThread() - before : 0;
+        }
+
+        Assert.Multiple(() =>
+        {
+            Assert.That(started, Is.GreaterThanOrEqualTo(20), "requests started while measured");
+            Assert.That(delivered, Is.GreaterThanOrEqualTo(20), "outcomes delivered while measured");
+            Assert.That(allocated, Is.Zero, $"bytes allocated on the tick thread over 600 ticks ({started} requests started, {delivered} delivered)");
+        });
+    }
+
     [Test]
     public void AFailedSearchIsToldExactlyPathLatencyTicksAfterItsStartWhateverTheThreads()
     {

@@ -9,7 +9,6 @@ using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Events;
 using Ballistic.Runtime.Kinds;
 using Ballistic.Runtime.Paths;
-using Ballistic.Runtime.Systems;
 
 namespace Ballistic.Planner.Tests.Runtime;
 

@@ -2,9 +2,8 @@ using System.Numerics;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Runtime.Core;
-using Ballistic.Runtime.Kinds;
 
-namespace Ballistic.Runtime.Systems;
+namespace Ballistic.Runtime.Kinds;
 
 /// <summary>
 /// The searches of one character kind, on any thread: path queries over the kind's roadmap, each search renting one
