@@ -3,28 +3,48 @@ using Ballistic.Runtime.Agents;
 namespace Ballistic.Runtime.Systems;
 
 /// <summary>
-/// A world's background threads for path requests (<see cref="Core.WorldSettings.AnimationThreads"/> of them, made
-/// when the first job is queued): each takes the oldest queued job and runs it unless the tick thread claimed it first
-/// (<see cref="RequestJob.RunInBackground"/>). Queuing a job, running it and waiting for it allocate nothing once the
-/// queue has grown, where a task per request allocated on the tick thread. Queue and wait on one thread (the tick's);
-/// the threads stop, finishing the jobs they are running, on <see cref="Dispose"/>.
+/// A world's background work on path requests, at most <see cref="Core.WorldSettings.AnimationThreads"/> jobs at once
+/// on the .NET thread pool: a queue of begun jobs, drained by as many reusable work items as that, each taking the
+/// oldest queued job and running it unless the tick thread claimed it first (<see cref="RequestJob.RunInBackground"/>).
+/// Queuing a job, running it and waiting for it allocate nothing once the queue has grown, where a task per request
+/// allocated on the tick thread. Queue and wait on one thread (the tick's); <see cref="Dispose"/> lets the running jobs
+/// finish and runs no queued one.
 /// </summary>
-internal sealed class RequestWorkers(int count) : IDisposable
+internal sealed class RequestWorkers : IDisposable
 {
     private readonly Queue<RequestJob> _queue = new();
-    private readonly object _work = new();
+    private readonly Stack<Drainer> _idle = new();
+    private readonly int _count;
+    private readonly object _gate = new();
     private readonly object _done = new();
-    private Thread[]? _threads;
     private bool _stopping;
 
-    /// <summary>Queues <paramref name="job"/> (begun) for the next free thread.</summary>
+    /// <summary>Work on at most <paramref name="count"/> jobs at once.</summary>
+    public RequestWorkers(int count)
+    {
+        _count = count;
+        for (int i = 0; i < count; i++)
+        {
+            _idle.Push(new Drainer(this));
+        }
+    }
+
+    /// <summary>Queues <paramref name="job"/> (begun) for the next free work item, and sends one to the thread pool when one is idle.</summary>
     public void Enqueue(RequestJob job)
     {
-        _threads ??= Started();
-        lock (_work)
+        Drainer? idle = null;
+        lock (_gate)
         {
             _queue.Enqueue(job);
-            Monitor.Pulse(_work);
+            if (!_stopping && _idle.Count > 0)
+            {
+                idle = _idle.Pop();
+            }
+        }
+
+        if (idle is not null)
+        {
+            ThreadPool.UnsafeQueueUserWorkItem(idle, preferLocal: false);
         }
     }
 
@@ -64,60 +84,47 @@ internal sealed class RequestWorkers(int count) : IDisposable
         return true;
     }
 
-    private Thread[] Started()
-    {
-        var threads = new Thread[count];
-        for (int i = 0; i < count; i++)
-        {
-            threads[i] = new Thread(Work) { IsBackground = true, Name = $"Ballistic path requests {i + 1}" };
-            threads[i].Start();
-        }
-
-        return threads;
-    }
-
-    private void Work()
-    {
-        while (true)
-        {
-            RequestJob job;
-            lock (_work)
-            {
-                while (_queue.Count == 0 && !_stopping)
-                {
-                    Monitor.Wait(_work);
-                }
-
-                if (_stopping)
-                {
-                    return;
-                }
-
-                job = _queue.Dequeue();
-            }
-
-            if (job.RunInBackground())
-            {
-                lock (_done)
-                {
-                    Monitor.PulseAll(_done);
-                }
-            }
-        }
-    }
-
-    /// <summary>Stops the threads: the jobs still queued are not run; those running are finished first.</summary>
+    /// <summary>Runs no more queued jobs and waits until those running have ended.</summary>
     public void Dispose()
     {
-        lock (_work)
+        lock (_gate)
         {
             _stopping = true;
-            Monitor.PulseAll(_work);
+            while (_idle.Count < _count)
+            {
+                Monitor.Wait(_gate);
+            }
         }
+    }
 
-        foreach (Thread thread in _threads ?? [])
+    /// <summary>One of the work items: on a pool thread, runs queued jobs one after the other until none is left (or the work stops), then goes idle.</summary>
+    private sealed class Drainer(RequestWorkers workers) : IThreadPoolWorkItem
+    {
+        public void Execute()
         {
-            thread.Join();
+            while (true)
+            {
+                RequestJob job;
+                lock (workers._gate)
+                {
+                    if (workers._stopping || workers._queue.Count == 0)
+                    {
+                        workers._idle.Push(this);
+                        Monitor.PulseAll(workers._gate);
+                        return;
+                    }
+
+                    job = workers._queue.Dequeue();
+                }
+
+                if (job.RunInBackground())
+                {
+                    lock (workers._done)
+                    {
+                        Monitor.PulseAll(workers._done);
+                    }
+                }
+            }
         }
     }
 }
