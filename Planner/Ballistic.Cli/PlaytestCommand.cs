@@ -10,6 +10,7 @@ using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Rigs;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Runtime.Core;
 using Ballistic.Runtime.Kinds;
 
 namespace Ballistic.Cli;
@@ -34,9 +35,10 @@ internal static class PlaytestCommand
         Option<string> locomotion = CliCommands.LocomotionOption();
         Option<double> jumpEffort = CliCommands.JumpEffortOption();
         Option<double> jumpHeightEffort = CliCommands.JumpHeightEffortOption();
+        Option<bool> realTime = new("--real-time") { Description = "Step the world as a game does: each tick at its moment on the wall clock, a tick waiting at most 0.25 s for a late request (the Godot server's world). The tick times are then what a game's main thread pays; the run then depends on the machine." };
         var command = new Command("playtest", "Many agents navigate the level by walks and jumps, headless, toward random targets; writes a report and a map of where they failed.")
         {
-            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output, locomotion, jumpEffort, jumpHeightEffort,
+            level, character, agents, seconds, seed, roadmap, maxNodes, threads, output, locomotion, jumpEffort, jumpHeightEffort, realTime,
         };
         command.SetAction(parse => CliCommands.Guard(parse, () =>
         {
@@ -53,6 +55,7 @@ internal static class PlaytestCommand
                 Locomotion = CliCommands.ParseLocomotion(parse.GetValue(locomotion)!),
                 JumpEffort = CliCommands.Effort(parse.GetValue(jumpEffort), "--jump-effort"),
                 JumpHeightEffort = CliCommands.Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
+                RealTime = parse.GetValue(realTime),
             };
             if (settings.Problem() is { } problem)
             {
@@ -116,6 +119,11 @@ internal static class PlaytestCommand
             if (result.TickTimes is { } cost)
             {
                 stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"ticks: median {cost.MedianMilliseconds:0.###} ms, p95 {cost.P95Milliseconds:0.###} ms, worst {cost.WorstMilliseconds:0.###} ms on the tick thread ({cost.OverFrame} longer than a 60 Hz frame); {cost.CpuMillisecondsPerTick:0.###} ms of CPU per tick on all threads; {cost.BytesAllocatedPerTick:0} bytes allocated per tick on the tick thread"));
+            }
+
+            if (settings.RealTime)
+            {
+                stdout.WriteLine($"real time: {result.LateRequests} requests delivered after their due tick (a tick waits at most {WorldSettings.RealTimeAnimationWait.TotalSeconds:0.##} s for one)");
             }
 
             stdout.WriteLine($"targets: {result.TargetsReached} reached, {result.TargetsFailed} failed; {result.JumpsTaken} jumps and {result.WalksTaken} walks ({result.WalkedMetres:0.#} m) taken");

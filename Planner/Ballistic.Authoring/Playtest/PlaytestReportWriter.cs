@@ -50,6 +50,7 @@ public static class PlaytestReportWriter
             w.WriteString("locomotion", result.Settings.Locomotion == Locomotion.Jump ? "jump" : "walk_and_jump");
             w.WriteNumber("jumpEffort", result.Settings.JumpEffort);
             w.WriteNumber("jumpHeightEffort", result.Settings.JumpHeightEffort);
+            w.WriteBoolean("realTime", result.Settings.RealTime);
             w.WriteEndObject();
 
             w.WriteStartObject("roadmap");
@@ -63,6 +64,7 @@ public static class PlaytestReportWriter
             w.WriteNumber("ticks", result.Ticks);
             w.WriteBoolean("cancelled", result.Cancelled);
             w.WriteNumber("wallSeconds", Math.Round(result.WallSeconds, 3));
+            w.WriteNumber("lateRequests", result.LateRequests);
             w.WriteNumber("agentsSpawned", result.Agents.Count);
             w.WriteNumber("targetsSet", result.Agents.Sum(a => a.Targets.Count));
             w.WriteNumber("targetsReached", result.TargetsReached);

@@ -35,6 +35,9 @@ public sealed record PlaytestResult(PlaytestSettings Settings, CharacterKind Kin
     /// <summary>What the ticks cost on this machine (<see cref="PlaytestTickTimes"/>); <c>null</c> when no tick ran.</summary>
     public PlaytestTickTimes? TickTimes { get; init; }
 
+    /// <summary>Requests a tick stopped waiting for (<see cref="Runtime.JumpWorld.LateRequests"/>): delivered after their due tick, in a real-time run (<see cref="PlaytestSettings.RealTime"/>) on a machine too slow for the crowd; always 0 offline.</summary>
+    public long LateRequests { get; init; }
+
     /// <summary>
     /// Agents stuck where they stand: those that reached no target and failed at least <see cref="StuckFailures"/>,
     /// every one asked from the same point (within a centimetre): a stance the level lets the character stand on but

@@ -45,7 +45,8 @@ public static class PlaytestRunner
         {
             TickRate = settings.TickRate,
             AnimationThreads = settings.AnimationThreads,
-            MaxAnimationWait = null, // a playtest is offline: the same at any thread count and machine speed
+            // Offline by default: the same at any thread count and machine speed. In real time, as the Godot server's world.
+            MaxAnimationWait = settings.RealTime ? WorldSettings.RealTimeAnimationWait : null,
             Locomotion = settings.Locomotion,
             JumpEffort = settings.JumpEffort,
             JumpHeightEffort = settings.JumpHeightEffort,
@@ -80,12 +81,23 @@ public static class PlaytestRunner
         var tickMilliseconds = new List<double>((int)Math.Min(ticks, 1_000_000));
         long allocated = 0;
         TimeSpan cpuStart = Process.GetCurrentProcess().TotalProcessorTime;
+        long firstTick = Stopwatch.GetTimestamp();
         for (long tick = 0; tick < ticks; tick++)
         {
             if (cancellationToken.IsCancellationRequested)
             {
                 cancelled = true;
                 break;
+            }
+
+            if (settings.RealTime)
+            {
+                // The tick's moment on the wall clock, as a game's fixed-rate loop waits for it.
+                TimeSpan due = TimeSpan.FromSeconds(tick / (double)settings.TickRate) - Stopwatch.GetElapsedTime(firstTick);
+                if (due > TimeSpan.Zero)
+                {
+                    Thread.Sleep(due);
+                }
             }
 
             long allocatedBefore = GC.GetAllocatedBytesForCurrentThread();
@@ -154,7 +166,7 @@ public static class PlaytestRunner
             connected += (settings.Locomotion == Locomotion.Jump ? roadmap.Reaches(from, to) : roadmap.ReachesWalking(from, to)) ? 1 : 0;
         }
 
-        return new PlaytestResult(settings, kind, agents, world.Tick, clock.Elapsed.TotalSeconds, settings.ReachabilityPairs, connected, cancelled) { TickTimes = tickTimes };
+        return new PlaytestResult(settings, kind, agents, world.Tick, clock.Elapsed.TotalSeconds, settings.ReachabilityPairs, connected, cancelled) { TickTimes = tickTimes, LateRequests = world.LateRequests };
     }
 
     private static void SendSomewhere(JumpWorld world, AgentHandle handle, PlaytestAgent agent, Roadmap roadmap, Random random)

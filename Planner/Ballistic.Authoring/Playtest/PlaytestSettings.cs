@@ -33,6 +33,17 @@ public sealed record PlaytestSettings
     /// <summary>What a jump costs on top of <see cref="JumpEffort"/> per metre of its takeoff's energy height, seconds per metre (<see cref="Runtime.Core.WorldSettings.JumpHeightEffort"/>).</summary>
     public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
 
+    /// <summary>
+    /// Whether the world is stepped as a game steps it: each tick at its moment on the wall clock (1 / <see cref="TickRate"/>
+    /// seconds apart; at once when behind), with a real-time world's wait for late requests
+    /// (<see cref="Runtime.Core.WorldSettings.RealTime"/>, the Godot server's: a tick waits at most a quarter of a second
+    /// for a request due on it, which then arrives at the first tick it is ready). The tick times are then what a
+    /// game's main thread pays, and the run depends on the machine: a request late here arrives a tick later than on a
+    /// faster machine (<see cref="PlaytestResult.LateRequests"/>). False (the default): offline, as fast as the
+    /// machine goes, the tick thread solving requests while it waits, the same for a seed at any thread count.
+    /// </summary>
+    public bool RealTime { get; init; }
+
     /// <summary>The first invalid setting as one sentence, or <c>null</c>.</summary>
     public string? Problem() =>
         Agents is < 1 or > 100_000 ? $"--agents must be 1–100000, not {Agents}"

@@ -75,6 +75,30 @@ public sealed class PlaytestTests
         Assert.That(PlaytestTickTimes.From([], TimeSpan.Zero, 0), Is.Null);
     }
 
+    /// <summary>
+    /// A real-time playtest steps the world as a game does: each tick at its moment on the wall clock, so the run
+    /// lasts at least the simulated time; its report says it ran in real time and how many requests arrived after
+    /// their due tick. An offline run (the default) has none late and says so.
+    /// </summary>
+    [Test]
+    public void ARealTimePlaytestStepsAtTheTickRateAndCountsLateRequests()
+    {
+        var settings = new PlaytestSettings { Agents = 3, Seconds = 1.5, Seed = 4, AnimationThreads = 1, ReachabilityPairs = 10, Locomotion = Locomotion.WalkAndJump, RealTime = true };
+        PlaytestResult result = PlaytestRunner.Run(WalkingPaths.Kind, settings);
+        JsonNode report = JsonNode.Parse(PlaytestReportWriter.ToJson(result, "Scenes/levels/desert.glb"))!;
+        JsonNode offline = JsonNode.Parse(PlaytestReportWriter.ToJson(Run.Value, "Scenes/levels/desert.glb"))!;
+        Assert.Multiple(() =>
+        {
+            Assert.That(result.Ticks, Is.EqualTo(90));
+            Assert.That(result.WallSeconds, Is.GreaterThanOrEqualTo(89 / 60.0), "the last tick at 89/60 s on the wall clock, not sooner");
+            Assert.That(result.LateRequests, Is.GreaterThanOrEqualTo(0));
+            Assert.That((bool)report["settings"]!["realTime"]!, Is.True);
+            Assert.That((long)report["summary"]!["lateRequests"]!, Is.EqualTo(result.LateRequests));
+            Assert.That((bool)offline["settings"]!["realTime"]!, Is.False);
+            Assert.That((long)offline["summary"]!["lateRequests"]!, Is.Zero, "offline, every request is waited for");
+        });
+    }
+
     [Test]
     public void TheSameSeedGivesTheSamePlaytestWhateverTheThreads()
     {
