@@ -59,9 +59,11 @@ public sealed class DeterminismTests
         List<string> inline = Scenario(threads: 0);
         List<string> one = Scenario(threads: 1);
         List<string> four = Scenario(threads: 4);
+        List<string> eight = Scenario(threads: 8);
         Assert.That(inline.Count(l => l.Contains("JumpStarted", StringComparison.Ordinal)), Is.GreaterThan(8), "agents jumped");
         Assert.That(one, Is.EqualTo(inline));
         Assert.That(four, Is.EqualTo(inline));
+        Assert.That(eight, Is.EqualTo(inline), "more work items than cores");
     }
 
     [Test]
