@@ -40,9 +40,6 @@ internal sealed class PathRequest
     /// <summary>The request's search and animation, run on a background thread or on the tick; reused with the request.</summary>
     public RequestJob Job { get; } = new();
 
-    /// <summary>True while the job is queued for or run by the world's background threads (<see cref="Systems.RequestWorkers"/>).</summary>
-    public bool InBackground { get; set; }
-
     /// <summary>The outcome of the search and animation once read on the tick thread (run there, or its background job ended).</summary>
     public RequestOutcome? Outcome { get; set; }
 
@@ -59,7 +56,6 @@ internal sealed class PathRequest
         Start = null;
         Character = null;
         DueTick = 0;
-        InBackground = false;
         Outcome = null;
         Late = false;
     }

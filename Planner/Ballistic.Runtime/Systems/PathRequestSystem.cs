@@ -36,8 +36,8 @@ internal sealed class PathRequestSystem : IDisposable
     private readonly RequestWorkers? _workers;
     private readonly Budget _slice = new();
 
-    /// <summary>The jobs advanced on the tick thread in slices (no background threads), by request, until they end.</summary>
-    private readonly Dictionary<PathRequest, RequestJob> _stepped = new(ReferenceEqualityComparer.Instance);
+    /// <summary>The requests whose jobs are advanced on the tick thread in slices (no background threads), until they end.</summary>
+    private readonly HashSet<PathRequest> _stepped = new(ReferenceEqualityComparer.Instance);
 
     /// <summary>Per kind slot: the stances its delivered requests found the body cannot crouch on or absorb a landing on (<see cref="StanceLessons"/>).</summary>
     private readonly List<StanceLessons?> _lessons = [];
@@ -93,7 +93,6 @@ internal sealed class PathRequestSystem : IDisposable
             StanceLessons lessons = Lessons(kind);
             request.Character = lessons.Kind;
             request.DueTick = tick + _settings.PathLatencyTicks;
-            request.Outcome = null;
             RequestJob job = request.Job;
             job.Begin(lessons.Kind, _searches[kind]!, request, lessons.Taught, _settings.RepairRounds, _settings.AnimationFrameRate);
             if (_workers is null)
@@ -103,12 +102,11 @@ internal sealed class PathRequestSystem : IDisposable
                 request.Outcome = whole ? job.Run() : null;
                 if (!whole)
                 {
-                    _stepped[request] = job;
+                    _stepped.Add(request);
                 }
             }
             else
             {
-                request.InBackground = true;
                 _workers.Enqueue(job);
             }
 
@@ -135,7 +133,7 @@ internal sealed class PathRequestSystem : IDisposable
         long began = System.Diagnostics.Stopwatch.GetTimestamp();
         foreach (PathRequest request in _inFlight)
         {
-            if (!_stepped.TryGetValue(request, out RequestJob? job) || !Current(request))
+            if (!_stepped.Contains(request) || !Current(request))
             {
                 continue;
             }
@@ -147,6 +145,7 @@ internal sealed class PathRequestSystem : IDisposable
                 break;
             }
 
+            RequestJob job = request.Job;
             int before = job.Steps;
             _slice.Left = left;
             request.Outcome = job.Advance(_slice);
@@ -170,9 +169,9 @@ internal sealed class PathRequestSystem : IDisposable
             bool ready = Ready(request);
             if (!Current(request))
             {
-                if (_stepped.Remove(request, out RequestJob? dropped))
+                if (_stepped.Remove(request))
                 {
-                    dropped.Dispose(); // advanced on this thread: dropped where it stands
+                    request.Job.Dispose(); // advanced on this thread: dropped where it stands
                     _queue.Return(request);
                 }
                 else if (!ready)
@@ -240,7 +239,7 @@ internal sealed class PathRequestSystem : IDisposable
     }
 
     /// <summary>True when the request's outcome can be read now: run on the tick thread, or its job ended.</summary>
-    private bool Ready(PathRequest request) => request.Outcome is not null || (!_stepped.ContainsKey(request) && (!request.InBackground || request.Job.Ended));
+    private bool Ready(PathRequest request) => request.Outcome is not null || (!_stepped.Contains(request) && (_workers is null || request.Job.Ended));
 
     /// <summary>
     /// Waits for the in-flight request at <paramref name="index"/> within what is left of this tick's
@@ -252,9 +251,9 @@ internal sealed class PathRequestSystem : IDisposable
     private bool Await(int index, ref long waitStart)
     {
         PathRequest request = _inFlight[index];
-        if (_stepped.TryGetValue(request, out RequestJob? stepped))
+        if (_stepped.Contains(request))
         {
-            return Finish(request, stepped, ref waitStart);
+            return Finish(request, request.Job, ref waitStart);
         }
 
         if (_settings.MaxAnimationWait is not { } limit)
@@ -328,7 +327,7 @@ internal sealed class PathRequestSystem : IDisposable
         for (int j = index; j < _inFlight.Count; j++)
         {
             PathRequest other = _inFlight[j];
-            if (Ready(other) || !other.InBackground || !Current(other))
+            if (Ready(other) || _workers is null || !Current(other))
             {
                 continue;
             }
@@ -417,9 +416,9 @@ internal sealed class PathRequestSystem : IDisposable
         _workers?.Dispose();
         foreach (PathRequest request in _inFlight)
         {
-            if (_stepped.TryGetValue(request, out RequestJob? stepped))
+            if (_stepped.Contains(request))
             {
-                stepped.Dispose();
+                request.Job.Dispose();
             }
         }
     }
