@@ -86,6 +86,11 @@ internal sealed class LimbIk
     private IkResult Solve(in RootPose root, Span<float> q, RigLimb limb, Vector3 target, Vector3? targetNormal, int seed, Span<float> nearest, bool giveUpOutOfReach)
     {
         ArgumentNullException.ThrowIfNull(limb);
+        if (q.Length != Rig.DofCount)
+        {
+            throw new ArgumentException($"The IK needs {Rig.DofCount} angles, not {q.Length}.", nameof(q));
+        }
+
         float[] trial = s_trial is { } scratch && scratch.Length == q.Length ? scratch : s_trial = new float[q.Length];
         q.CopyTo(trial);
         int iterations = 0;
@@ -145,11 +150,15 @@ internal sealed class LimbIk
         Span<double> jacobian = stackalloc double[rows * n];
         Span<double> error = stackalloc double[rows];
         Span<double> step = stackalloc double[n];
+        Span<Vector3> axes = stackalloc Vector3[n];
+        Span<Quaternion> turns = stackalloc Quaternion[n];
+        ReadOnlySpan<int> chain = limb.ChainSpan;
 
         Vector3 goalNormal = targetNormal is Vector3 tn ? Vector3.Normalize(tn) : Vector3.UnitY;
         float positionError = float.PositiveInfinity;
         float normalError = 0f;
-        Rig.Solve(root, q, positions, rotations);
+        // Only the chain's own joints and those that place it are read: the rest of the rig is not solved.
+        Rig.SolveChain(root, limb.Lineage, q, positions, rotations);
         float beyond = giveUpOutOfReach ? Vector3.Distance(positions[limb.RootJoint], target) - ChainReach(limb) : 0f;
         outOfReach = beyond > Settings.PositionTolerance + ReachSlack;
         if (outOfReach)
@@ -158,10 +167,12 @@ internal sealed class LimbIk
         }
         for (int iteration = 0; iteration < Settings.MaxIterations; iteration++)
         {
-            // Only the limb's own angles change from one iteration to the next: only its joints move.
+            // Only the limb's own angles change from one iteration to the next: only its joints move. Each of their
+            // turns is computed once, for the pose and for the axes.
+            Rig.Turns(chain, q, turns);
             if (iteration > 0)
             {
-                Rig.SolveChain(root, limb.Chain, q, positions, rotations);
+                Rig.SolveChain(root, chain, turns, positions, rotations);
             }
 
             Vector3 p = limb.EffectorPosition(positions, rotations);
@@ -189,10 +200,11 @@ internal sealed class LimbIk
                 error[4] = Settings.NormalWeight * Vector3.Dot(omega, v);
             }
 
+            Rig.WorldAxes(chain, turns, rotations, axes);
             for (int c = 0; c < n; c++)
             {
                 int dof = limb.ChainDofs[c];
-                Vector3 axis = Rig.WorldAxis(dof, q, rotations);
+                Vector3 axis = axes[c];
                 Vector3 linear = Vector3.Cross(axis, p - positions[Rig.JointOfDof(dof)]);
                 jacobian[c] = linear.X;
                 jacobian[n + c] = linear.Y;

@@ -184,10 +184,13 @@ public sealed class Rig
     }
 
     /// <summary>Joint <paramref name="j"/>'s world position and rotation from its parent's (the root pose for joint 0).</summary>
-    private void SolveJoint(int j, in RootPose root, ReadOnlySpan<float> q, Span<Vector3> positions, Span<Quaternion> rotations)
+    private void SolveJoint(int j, in RootPose root, ReadOnlySpan<float> q, Span<Vector3> positions, Span<Quaternion> rotations) =>
+        Place(j, LocalRotation(j, q), root, positions, rotations);
+
+    /// <summary>Joint <paramref name="j"/>'s world position and rotation from its parent's (the root pose for joint 0) and its own <paramref name="local"/> rotation.</summary>
+    private void Place(int j, Quaternion local, in RootPose root, Span<Vector3> positions, Span<Quaternion> rotations)
     {
         Joint joint = _joints[j];
-        Quaternion local = LocalRotation(j, q);
         if (j == 0)
         {
             positions[0] = root.ToWorld(RootOffset + joint.Offset);
@@ -216,5 +219,78 @@ public sealed class Rig
         }
 
         return Vector3.Normalize(Vector3.Transform(_dofs[dof].Axis, frame));
+    }
+
+    /// <summary>
+    /// The turns of <paramref name="chain"/>'s degrees of freedom under <paramref name="q"/> into
+    /// <paramref name="turns"/>: a joint's axes one after another, each joint's after its parent's (a limb's
+    /// <see cref="RigLimb.ChainDofs"/> order), each the rotation <see cref="LocalRotation"/> multiplies in for it.
+    /// </summary>
+    internal void Turns(ReadOnlySpan<int> chain, ReadOnlySpan<float> q, Span<Quaternion> turns)
+    {
+        int i = 0;
+        foreach (int joint in chain)
+        {
+            for (int d = _firstDof[joint]; d < _firstDof[joint + 1]; d++)
+            {
+                turns[i++] = Quaternion.CreateFromAxisAngle(_dofs[d].Axis, q[d]);
+            }
+        }
+    }
+
+    /// <summary>
+    /// <see cref="SolveChain(in RootPose, IReadOnlyList{int}, ReadOnlySpan{float}, Span{Vector3}, Span{Quaternion})"/> from the turns <see cref="Turns"/> gives for the same chain and angles: the same
+    /// numbers bit for bit, each turn computed once for this and for <see cref="WorldAxes"/>.
+    /// </summary>
+    internal void SolveChain(in RootPose root, ReadOnlySpan<int> chain, ReadOnlySpan<Quaternion> turns, Span<Vector3> positions, Span<Quaternion> rotations)
+    {
+        int i = 0;
+        foreach (int j in chain)
+        {
+            Quaternion local = _joints[j].RestRotation;
+            for (int d = _firstDof[j]; d < _firstDof[j + 1]; d++)
+            {
+                local *= turns[i++];
+            }
+
+            Place(j, local, root, positions, rotations);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="WorldAxis"/> of each degree of freedom of <paramref name="chain"/> (in <see cref="Turns"/>' order)
+    /// into <paramref name="axes"/>, from the turns <see cref="Turns"/> gives for the same angles: the same numbers bit
+    /// for bit, a joint's axes from one running product of its rest rotation and its earlier axes' turns instead of
+    /// that product made anew for each axis (the IK asks for a limb's axes at every iteration).
+    /// </summary>
+    internal void WorldAxes(ReadOnlySpan<int> chain, ReadOnlySpan<Quaternion> turns, ReadOnlySpan<Quaternion> rotations, Span<Vector3> axes)
+    {
+        int i = 0;
+        foreach (int j in chain)
+        {
+            int first = i;
+            Quaternion parent;
+            if (j == 0)
+            {
+                Quaternion local = _joints[0].RestRotation;
+                for (int d = _firstDof[0]; d < _firstDof[1]; d++)
+                {
+                    local *= turns[first + (d - _firstDof[0])];
+                }
+
+                parent = rotations[0] * Quaternion.Conjugate(local);
+            }
+            else
+            {
+                parent = rotations[_joints[j].Parent];
+            }
+
+            Quaternion frame = parent * _joints[j].RestRotation;
+            for (int d = _firstDof[j]; d < _firstDof[j + 1]; d++)
+            {
+                axes[i] = Vector3.Normalize(Vector3.Transform(_dofs[d].Axis, frame));
+                frame *= turns[i++];
+            }
+        }
     }
 }

@@ -69,7 +69,16 @@ public sealed class RigLimb
         EffectorOffset = effectorOffset;
         ContactNormal = Vector3.Normalize(contactNormal);
         Filter = filter;
-        Chain = [.. chain];
+        _chain = [.. chain];
+        Chain = Array.AsReadOnly(_chain);
+        var lineage = new List<int>();
+        for (int j = rig.Joints[root].Parent; j >= 0; j = rig.Joints[j].Parent)
+        {
+            lineage.Add(j);
+        }
+
+        lineage.Reverse();
+        Lineage = [.. lineage, .. chain];
         _chainDofs = [.. dofs];
         ChainDofs = Array.AsReadOnly(_chainDofs);
         Ball = kind == LimbKind.Foot && FindBall(rig, effector, effectorOffset, ContactNormal) is Vector3 ball ? new RigLimb(this, ball) : null;
@@ -85,7 +94,9 @@ public sealed class RigLimb
         EffectorOffset = ball;
         ContactNormal = limb.ContactNormal;
         Filter = limb.Filter;
+        _chain = limb._chain;
         Chain = limb.Chain;
+        Lineage = limb.Lineage;
         _chainDofs = limb._chainDofs;
         ChainDofs = limb.ChainDofs;
     }
@@ -119,6 +130,12 @@ public sealed class RigLimb
         return best;
     }
 
+    /// <summary>
+    /// The joints whose poses place the chain: <see cref="RootJoint"/>'s ancestors from the rig's first joint, then
+    /// <see cref="Chain"/>, each after its parent (what the IK solves, instead of the whole rig).
+    /// </summary>
+    internal int[] Lineage { get; }
+
     /// <summary>Limb name, e.g. <c>left_foot</c>.</summary>
     public string Name { get; }
 
@@ -146,10 +163,15 @@ public sealed class RigLimb
     /// <summary>Indices of the degrees of freedom that move the effector.</summary>
     public IReadOnlyList<int> ChainDofs { get; }
 
+    /// <summary><see cref="Chain"/> as a span: walked by the IK's inner loop without an enumerator.</summary>
+    internal ReadOnlySpan<int> ChainSpan => _chain;
+
     /// <summary><see cref="ChainDofs"/> as a span: walked by the animation's inner loops without an enumerator.</summary>
     internal ReadOnlySpan<int> ChainDofSpan => _chainDofs;
 
     private readonly int[] _chainDofs;
+
+    private readonly int[] _chain;
 
     /// <summary>
     /// A foot touching at its ball instead of its contact point (the same chain, its effector offset the ball: the

@@ -58,11 +58,16 @@ internal sealed class SoleHold
     /// its ball, its heel lowering as far as the hold allows, rather than dropping flat at once), the heel raised
     /// up to <see cref="MostRoll"/> (<see cref="RigLimb.Ball"/>; a foot without a toe bone does not roll).
     /// </summary>
-    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?>? groundUnder = null, Vector3? ball = null) =>
-        (ball is not null && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
-        || Flat.Reaches(root, q, limb, point, -groundNormal)
-        || (groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
-        || Loose.Reaches(root, q, limb, point, -groundNormal);
+    public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?>? groundUnder = null, Vector3? ball = null)
+    {
+        // A foot on its ball tries to stay there first; when that fails, the same roll is not tried again after the
+        // flat hold (a failed solve leaves q as it was, so it would fail the same way).
+        bool rolledFirst = ball is not null && groundUnder is not null;
+        return (rolledFirst && Roll(root, q, limb, point, groundNormal, groundUnder!, ball))
+            || Flat.Reaches(root, q, limb, point, -groundNormal)
+            || (!rolledFirst && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
+            || Loose.Reaches(root, q, limb, point, -groundNormal);
+    }
 
     /// <summary>The heel raised, the ball held (<see cref="Hold"/>).</summary>
     private bool Roll(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?> groundUnder, Vector3? ball0)
@@ -75,7 +80,7 @@ internal sealed class SoleHold
         int joints = _rig.Joints.Count;
         Span<Vector3> positions = joints <= 128 ? stackalloc Vector3[joints] : new Vector3[joints];
         Span<Quaternion> rotations = joints <= 128 ? stackalloc Quaternion[joints] : new Quaternion[joints];
-        _rig.Solve(root, q, positions, rotations);
+        _rig.SolveChain(root, limb.Lineage, q, positions, rotations); // only the foot is read
         Vector3 up = Vector3.Normalize(groundNormal);
         Vector3 toBall = ball.EffectorOffset - limb.EffectorOffset;
         Vector3 along = Vector3.Transform(toBall, rotations[limb.EffectorJoint]);

@@ -318,6 +318,66 @@ public sealed class RigTests
     }
 
     [Test]
+    public void ALimbsTurnsGiveItsPoseAndAxesWhatTheWholeRigsSolveGivesBitForBit()
+    {
+        // The humanoid's limbs, and a limb whose chain starts at the rig's root joint, itself turning on two axes.
+        var crane = new Rig(
+            [
+                new Joint("base", -1, Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 0.4f), [new JointAxis(Vector3.UnitY, -3f, 3f), new JointAxis(Vector3.UnitX, -1f, 1f)]),
+                new Joint("arm", 0, new Vector3(0f, 0.5f, 0f), Quaternion.Identity, [new JointAxis(Vector3.UnitX, -2f, 2f)]),
+                new Joint("hand", 1, new Vector3(0f, 0.4f, 0.1f), Quaternion.CreateFromAxisAngle(Vector3.UnitY, 1.2f), [new JointAxis(Vector3.UnitZ, -1f, 1f), new JointAxis(Vector3.UnitX, -1f, 1f), new JointAxis(Vector3.UnitY, -1f, 1f)]),
+            ],
+            new Vector3(0f, 0.1f, 0f));
+        var craneHand = new RigLimb(crane, "hand", LimbKind.Hand, "base", "hand", new Vector3(0f, 0.1f, 0f), Vector3.UnitY, NormalFilter.None);
+        CharacterModel model = Humanoid.Value;
+        var random = new Random(5);
+        var root = new RootPose(new Vector3(1f, 0.8f, -3f), Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(0.2f, 1f, 0.1f)), 0.7f));
+        foreach ((Rig rig, RigLimb limb, float[] basis) in model.Limbs.Select(l => (model.Rig, l, model.ContactPose)).Append((crane, craneHand, crane.Neutral())))
+        {
+            for (int trial = 0; trial < 5; trial++)
+            {
+                float[] q = RandomPose(rig, limb, random, basis);
+                var full = new Vector3[rig.Joints.Count];
+                var fullRotations = new Quaternion[rig.Joints.Count];
+                rig.Solve(root, q, full, fullRotations);
+                var positions = new Vector3[rig.Joints.Count];
+                var rotations = new Quaternion[rig.Joints.Count];
+                rig.SolveChain(root, limb.Lineage, q, positions, rotations);
+                var turned = new Vector3[rig.Joints.Count];
+                var turnedRotations = new Quaternion[rig.Joints.Count];
+                ((Span<Vector3>)full).CopyTo(turned);
+                ((Span<Quaternion>)fullRotations).CopyTo(turnedRotations);
+                var turns = new Quaternion[limb.ChainDofs.Count];
+                rig.Turns(limb.ChainSpan, q, turns);
+                rig.SolveChain(root, limb.ChainSpan, turns, turned, turnedRotations);
+                var axes = new Vector3[limb.ChainDofs.Count];
+                rig.WorldAxes(limb.ChainSpan, turns, fullRotations, axes);
+                Assert.Multiple(() =>
+                {
+                    Assert.That(limb.Lineage[^limb.Chain.Count..], Is.EqualTo(limb.Chain), $"{limb.Name}: the lineage ends with the chain");
+                    Assert.That(limb.Lineage[0], Is.EqualTo(0), $"{limb.Name}: the lineage starts at the root joint");
+                    foreach (int j in limb.Lineage)
+                    {
+                        Assert.That(positions[j], Is.EqualTo(full[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s position from the lineage");
+                        Assert.That(rotations[j], Is.EqualTo(fullRotations[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s rotation from the lineage");
+                    }
+
+                    foreach (int j in limb.Chain)
+                    {
+                        Assert.That(turned[j], Is.EqualTo(full[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s position from the turns");
+                        Assert.That(turnedRotations[j], Is.EqualTo(fullRotations[j]), $"{limb.Name}: joint {rig.Joints[j].Name}'s rotation from the turns");
+                    }
+
+                    for (int c = 0; c < axes.Length; c++)
+                    {
+                        Assert.That(axes[c], Is.EqualTo(rig.WorldAxis(limb.ChainDofs[c], q, fullRotations)), $"{limb.Name}: the axis of degree of freedom {limb.ChainDofs[c]}");
+                    }
+                });
+            }
+        }
+    }
+
+    [Test]
     public void LimbsNamingMissingBonesAreRejectedByName()
     {
         Rig rig = Humanoid.Value.Rig;
