@@ -407,6 +407,7 @@ internal sealed class LimbIk
             s44 += j4 * j4;
         }
 
+        // Off the diagonal the row-by-row loop adds 0 too: kept, so that each entry is made by the same operations.
         a[0] = s00 + dd;
         a[5] = s10 + 0;
         a[6] = s11 + dd;

@@ -224,7 +224,7 @@ public sealed class Rig
     /// <summary>
     /// The turns of <paramref name="chain"/>'s degrees of freedom under <paramref name="q"/> into
     /// <paramref name="turns"/>: a joint's axes one after another, each joint's after its parent's (a limb's
-    /// <see cref="RigLimb.ChainDofs"/> order), each the rotation <see cref="LocalRotation"/> multiplies in for it.
+    /// <see cref="RigLimb.ChainDofs"/> order), each the rotation <see cref="LocalRotation(int, ReadOnlySpan{float})"/> multiplies in for it.
     /// </summary>
     internal void Turns(ReadOnlySpan<int> chain, ReadOnlySpan<float> q, Span<Quaternion> turns)
     {
@@ -247,14 +247,21 @@ public sealed class Rig
         int i = 0;
         foreach (int j in chain)
         {
-            Quaternion local = _joints[j].RestRotation;
-            for (int d = _firstDof[j]; d < _firstDof[j + 1]; d++)
-            {
-                local *= turns[i++];
-            }
-
-            Place(j, local, root, positions, rotations);
+            Place(j, LocalRotation(j, turns[i..]), root, positions, rotations);
+            i += DofsOf(j);
         }
+    }
+
+    /// <summary><see cref="LocalRotation(int, ReadOnlySpan{float})"/> of joint <paramref name="joint"/> from its axes' turns (<see cref="Turns"/>), first of <paramref name="turns"/>: the same product, bit for bit.</summary>
+    private Quaternion LocalRotation(int joint, ReadOnlySpan<Quaternion> turns)
+    {
+        Quaternion r = _joints[joint].RestRotation;
+        for (int k = 0; k < DofsOf(joint); k++)
+        {
+            r *= turns[k];
+        }
+
+        return r;
     }
 
     /// <summary>
@@ -268,23 +275,7 @@ public sealed class Rig
         int i = 0;
         foreach (int j in chain)
         {
-            int first = i;
-            Quaternion parent;
-            if (j == 0)
-            {
-                Quaternion local = _joints[0].RestRotation;
-                for (int d = _firstDof[0]; d < _firstDof[1]; d++)
-                {
-                    local *= turns[first + (d - _firstDof[0])];
-                }
-
-                parent = rotations[0] * Quaternion.Conjugate(local);
-            }
-            else
-            {
-                parent = rotations[_joints[j].Parent];
-            }
-
+            Quaternion parent = j == 0 ? rotations[0] * Quaternion.Conjugate(LocalRotation(0, turns[i..])) : rotations[_joints[j].Parent];
             Quaternion frame = parent * _joints[j].RestRotation;
             for (int d = _firstDof[j]; d < _firstDof[j + 1]; d++)
             {

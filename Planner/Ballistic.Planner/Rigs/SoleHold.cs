@@ -60,12 +60,11 @@ internal sealed class SoleHold
     /// </summary>
     public bool Hold(in RootPose root, float[] q, RigLimb limb, Vector3 point, Vector3 groundNormal, Func<Vector3, Vector3?>? groundUnder = null, Vector3? ball = null)
     {
-        // A foot on its ball tries to stay there first; when that fails, the same roll is not tried again after the
-        // flat hold (a failed solve leaves q as it was, so it would fail the same way).
-        bool rolledFirst = ball is not null && groundUnder is not null;
-        return (rolledFirst && Roll(root, q, limb, point, groundNormal, groundUnder!, ball))
+        // A foot on its ball tries to stay there before the flat hold, a foot off it after; a roll that failed is not
+        // tried again (a failed solve leaves q as it was, so it would fail the same way).
+        return (ball is not null && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
             || Flat.Reaches(root, q, limb, point, -groundNormal)
-            || (!rolledFirst && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, ball))
+            || (ball is null && groundUnder is not null && Roll(root, q, limb, point, groundNormal, groundUnder, null))
             || Loose.Reaches(root, q, limb, point, -groundNormal);
     }
 
