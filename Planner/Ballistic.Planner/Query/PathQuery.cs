@@ -696,7 +696,7 @@ public sealed class PathQuery
 
         private RoadmapNode? PlaceAt(Vector3 p, float facing, float[] yaws)
         {
-            EndpointPlacement placed = query._scene.Sampler.PlaceFacingWithin(p, settings.Tolerance, facing, yaws, settings.CanStand, JumpFacer.Height(old));
+            EndpointPlacement placed = query._scene.Sampler.PlaceFacingWithin(p, settings.Tolerance, facing, yaws, settings.CanStand, JumpFacer.Height(query._scene.Sampler, old));
             if (placed.Pose is not { } pose)
             {
                 return null;

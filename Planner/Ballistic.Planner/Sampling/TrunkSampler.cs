@@ -226,9 +226,11 @@ internal sealed class TrunkSampler
     /// trunk above the surface: the stance it replaces stands that high, under a ceiling or in a cave, say), the trunk
     /// is tried at that height first, then at the stance range's lifts up to it, highest first; a stance lower than
     /// the whole range (a crouch) that stands nowhere within the tolerance at its own height is tried at the range's
-    /// lowest lift. Without a height, at all the range's lifts, highest first.
+    /// lowest lift. Without a height, at all the range's lifts, highest first. With <paramref name="standing"/>, a
+    /// pose is measured by where it stands (<see cref="StandingCentre"/>: the centre of the contacts that hold it up),
+    /// not by all its contacts' centre, and <see cref="EndpointPlacement.ContactCentre"/> is that point.
     /// </summary>
-    internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand, float? height = null)
+    internal EndpointPlacement PlaceFacingWithin(Vector3 point, EndpointTolerance tolerance, float facing, float[] yawOffsets, Func<PoseEvaluation, bool>? canStand, float? height = null, bool standing = false)
     {
         if (!float.IsFinite(facing))
         {
@@ -250,12 +252,12 @@ internal sealed class TrunkSampler
                 // range's lowest lift, the least taller it can stand. Without that, on the desert 644 of the 651
                 // turned stances the first 256 node-to-node requests placed in vain were such crouches, and each
                 // jump end tried up to ten such placements (JumpFacer).
-                EndpointPlacement crouched = PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts);
-                return crouched.Placed ? crouched : PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, [0f]);
+                EndpointPlacement crouched = PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts, standing);
+                return crouched.Placed ? crouched : PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, [0f], standing);
             }
         }
 
-        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts);
+        return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts, standing);
     }
 
     /// <summary>How much higher (metres) than the height asked a lift of <see cref="PlaceFacingWithin"/> may stand.</summary>
@@ -267,11 +269,11 @@ internal sealed class TrunkSampler
     /// <summary>Yaws of <see cref="Place(Vector3, EndpointTolerance, Func{PoseEvaluation, bool}?)"/>: eighths of a turn from 0.</summary>
     private static readonly float[] AllYaws = [.. Enumerable.Range(0, 8).Select(y => y * MathF.PI / 4f)];
 
-    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null, float[]? liftOrder = null)
+    private EndpointPlacement PlaceNear(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets = null, float[]? liftOrder = null, bool standing = false)
     {
         // A request's start or goal (placed again by every request to the same point: agents sent to one spot), or a
         // stance placed facing a way (a jump turned to face it, a takeoff moved along walkable ground): remembered.
-        return _placings.GetOrAdd(new Placing(point, tolerance, facing, searchBeyond, yawOffsets, liftOrder, canStand), this, static (k, sampler) => k.PlaceWith(sampler));
+        return _placings.GetOrAdd(new Placing(point, tolerance, facing, searchBeyond, yawOffsets, liftOrder, canStand, standing), this, static (k, sampler) => k.PlaceWith(sampler));
     }
 
     /// <summary>
@@ -288,21 +290,21 @@ internal sealed class TrunkSampler
 
     private readonly RememberedResults<Placing, EndpointPlacement> _placings = new(RememberedPlacings);
 
-    /// <summary>What a placement is asked: the point (metres), tolerance, facing (radians, or none), whether it searches beyond the tolerance, yaw offsets and lifts tried (by content) and the stance check (by delegate equality).</summary>
-    private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float? facing, bool searchBeyond, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand) : IEquatable<Placing>
+    /// <summary>What a placement is asked: the point (metres), tolerance, facing (radians, or none), whether it searches beyond the tolerance, yaw offsets and lifts tried (by content), the stance check (by delegate equality) and whether a pose is measured by where it stands.</summary>
+    private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float? facing, bool searchBeyond, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand, bool standing) : IEquatable<Placing>
     {
-        private readonly int _hash = HashCode.Combine(point, tolerance, facing, searchBeyond, yaws?.Length ?? -1, yaws is { Length: > 0 } ? yaws[^1] : 0f, lifts?.Length ?? -1, lifts is { Length: > 0 } ? lifts[0] : 0f);
+        private readonly int _hash = HashCode.Combine(point, tolerance, facing, searchBeyond, yaws?.Length ?? -1, yaws is { Length: > 0 } ? yaws[^1] : 0f, lifts?.Length ?? -1, HashCode.Combine(lifts is { Length: > 0 } ? lifts[0] : 0f, standing));
 
         public bool Equals(Placing? other) =>
             other is not null && _hash == other._hash && point == other.Point && tolerance == other.Tolerance && facing == other.Facing
-            && searchBeyond == other.SearchBeyond && Same(yaws, other.Yaws) && Same(lifts, other.Lifts) && Equals(canStand, other.CanStand);
+            && searchBeyond == other.SearchBeyond && standing == other.Standing && Same(yaws, other.Yaws) && Same(lifts, other.Lifts) && Equals(canStand, other.CanStand);
 
         public override bool Equals(object? obj) => Equals(obj as Placing);
 
         public override int GetHashCode() => _hash;
 
         /// <summary>The placement asked, made anew by <paramref name="sampler"/>.</summary>
-        public EndpointPlacement PlaceWith(TrunkSampler sampler) => sampler.PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yaws, lifts);
+        public EndpointPlacement PlaceWith(TrunkSampler sampler) => sampler.PlaceAnew(point, tolerance, canStand, facing, searchBeyond, yaws, lifts, standing);
 
         private Vector3 Point => point;
 
@@ -311,6 +313,8 @@ internal sealed class TrunkSampler
         private float? Facing => facing;
 
         private bool SearchBeyond => searchBeyond;
+
+        private bool Standing => standing;
 
         private float[]? Yaws => yaws;
 
@@ -322,7 +326,7 @@ internal sealed class TrunkSampler
     }
 
     /// <summary><see cref="PlaceNear"/> without the remembered placements.</summary>
-    private EndpointPlacement PlaceAnew(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets, float[]? liftOrder)
+    private EndpointPlacement PlaceAnew(Vector3 point, EndpointTolerance tolerance, Func<PoseEvaluation, bool>? canStand, float? facing, bool searchBeyond, float[]? yawOffsets, float[]? liftOrder, bool standing)
     {
         float[] yaws = facing is null ? AllYaws : yawOffsets ?? EighthTurns;
         tolerance.Validate();
@@ -369,7 +373,7 @@ internal sealed class TrunkSampler
                                 continue;
                             }
 
-                            Vector3 centre = ContactCentre(pose);
+                            Vector3 centre = standing ? StandingCentre(pose.Contacts, pose.Pose.Position) : ContactCentre(pose);
                             float across = new Vector2(centre.X - point.X, centre.Z - point.Z).Length();
                             float upDown = MathF.Abs(centre.Y - point.Y);
                             if (across <= tolerance.Across && upDown <= tolerance.UpDown)
@@ -415,6 +419,47 @@ internal sealed class TrunkSampler
     {
         ArgumentNullException.ThrowIfNull(pose);
         return Contact.Centre(pose.Contacts, pose.Pose.Position);
+    }
+
+    /// <summary>
+    /// Where a stance stands (world metres): the centre of the contacts that hold it up, not of hands resting higher
+    /// than the character's step height (<see cref="ReducedCharacter.StepReach"/>) above its feet's centre, which lean
+    /// on something: a hand on a block's top beside the feet raises the contacts' centre by a third of the block's
+    /// height and draws it toward the block. A stance with no foot on the level, or no hand that high, stands at its
+    /// contacts' centre (<paramref name="none"/> when it has no contact).
+    /// </summary>
+    internal Vector3 StandingCentre(IReadOnlyList<Contact> contacts, Vector3 none)
+    {
+        ArgumentNullException.ThrowIfNull(contacts);
+        float feet = 0f;
+        int footCount = 0;
+        foreach (Contact contact in contacts)
+        {
+            if (_character.Limbs[contact.Limb].Kind == LimbKind.Foot)
+            {
+                feet += contact.Position.Y;
+                footCount++;
+            }
+        }
+
+        if (footCount == 0)
+        {
+            return Contact.Centre(contacts, none);
+        }
+
+        float lean = (feet / footCount) + _character.StepReach;
+        Vector3 sum = Vector3.Zero;
+        int count = 0;
+        foreach (Contact contact in contacts)
+        {
+            if (_character.Limbs[contact.Limb].Kind == LimbKind.Foot || !(contact.Position.Y > lean))
+            {
+                sum += contact.Position;
+                count++;
+            }
+        }
+
+        return count == contacts.Count ? Contact.Centre(contacts, none) : sum / count;
     }
 
     /// <summary>Every triangle met by the vertical segment at (x, z) of <paramref name="column"/> from <paramref name="top"/> down to <paramref name="bottom"/>, top first.</summary>

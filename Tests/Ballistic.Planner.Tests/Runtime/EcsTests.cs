@@ -443,7 +443,8 @@ public sealed class EcsTests
             Assert.That(played[3].Reason, Does.StartWith("SetTarget of the agent pending as pending add 3 of playback 1"));
             Assert.That(buffered.GetTarget(agent), Is.EqualTo(direct.GetTarget(agent)), "the target recorded on the pending handle reached the agent");
 
-            for (int tick = 0; tick < 600 && direct.GetTarget(agent) is not null; tick++)
+            // 15 s at most: the route takes 10.5 s (628 ticks, the request's planning included).
+            for (int tick = 0; tick < 900 && direct.GetTarget(agent) is not null; tick++)
             {
                 direct.Step();
                 buffered.Step();

@@ -1,5 +1,6 @@
 using System.Numerics;
 using Ballistic.Authoring.Characters;
+using Ballistic.Planner.Characters;
 using Ballistic.Planner.Contacts;
 using Ballistic.Planner.Levels;
 using Ballistic.Planner.Planning;
@@ -247,7 +248,7 @@ public sealed class EndpointPlacementTests
         PlanningScene scene = SharedLevels.Scene("desert", "skeleton");
         Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 400, Threads = 2 }).Roadmap;
         float lowest = scene.Sampler.Lift.Min;
-        RoadmapNode[] crouches = [.. roadmap.Nodes.Where(n => JumpFacer.Height(n) < lowest - 0.01f).Take(16)];
+        RoadmapNode[] crouches = [.. roadmap.Nodes.Where(n => JumpFacer.Height(scene.Sampler, n) < lowest - 0.01f).Take(16)];
         Assume.That(crouches, Has.Length.GreaterThanOrEqualTo(12), "the desert's roadmap has crouches below the lift range");
         var tolerance = new EndpointTolerance(0.2f, 0.3f);
         int tried = 0;
@@ -262,9 +263,9 @@ public sealed class EndpointPlacementTests
                 var along = new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
                 foreach (float shift in new[] { 0f, JumpFacer.HopShift, -JumpFacer.HopShift })
                 {
-                    Vector3 point = crouch.ContactCentre + (shift * along);
-                    EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(crouch));
-                    EndpointPlacement low = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, lowest);
+                    Vector3 point = scene.Sampler.StandingCentre(crouch.Contacts, crouch.Pose.Position) + (shift * along);
+                    EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(scene.Sampler, crouch), standing: true);
+                    EndpointPlacement low = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, lowest, standing: true);
                     tried++;
                     standsLow += low.Placed ? 1 : 0;
                     if (!turned.Placed)
@@ -273,11 +274,11 @@ public sealed class EndpointPlacementTests
                         continue;
                     }
 
-                    AssertWithin(turned, point, tolerance.Across, tolerance.UpDown);
+                    AssertWithin(turned, point, tolerance.Across, tolerance.UpDown, scene.Sampler);
                     Vector3 now = turned.Pose!.Pose.Forward;
                     float off = MathF.Abs(MathF.IEEERemainder(MathF.Atan2(now.X, now.Z) - facing, 2f * MathF.PI)) * 180f / MathF.PI;
                     Assert.That(off, Is.LessThanOrEqualTo(15f), "faces the way asked, within the yaws tried (10°) and what the ground's tilt adds");
-                    tallest = MathF.Max(tallest, turned.Pose.Pose.Position.Y - TrunkSampler.ContactCentre(turned.Pose).Y);
+                    tallest = MathF.Max(tallest, turned.Pose.Pose.Position.Y - scene.Sampler.StandingCentre(turned.Pose.Contacts, turned.Pose.Pose.Position).Y);
                 }
             }
         }
@@ -288,9 +289,76 @@ public sealed class EndpointPlacementTests
         Assert.That(tallest, Is.LessThanOrEqualTo(lowest + 0.15f), "no taller than the range's lowest lift, but for the ground's tilt and where the contacts stand below the trunk's surface point");
     }
 
-    private static void AssertWithin(EndpointPlacement placed, Vector3 point, float across, float upDown)
+    /// <summary>
+    /// A stance leaning a hand on a block's top beside its feet (the desert's roadmap has them: feet in the sand, a hand
+    /// on a sandstone block 1.1 m up) has its contacts' centre a third of the way up the block. Turned to face a jump,
+    /// it is placed where it stands (<see cref="TrunkSampler.StandingCentre"/>: the centre of the contacts holding it up), as
+    /// the facer asks: measured by all its contacts, no stance on its feet alone stood within the tolerance of it, and
+    /// every spot, yaw and lift was tried in vain. Each placed stance stands within the tolerance of where the old one
+    /// stood, and faces the way asked; a frog, which stands on its hands as on its feet, stands at its contacts' centre.
+    /// </summary>
+    [Test]
+    public void AStanceLeaningAHandOnABlockIsTurnedWhereItStands()
     {
-        Vector3 centre = TrunkSampler.ContactCentre(placed.Pose!);
+        PlanningScene scene = SharedLevels.Scene("desert", "skeleton");
+        Roadmap roadmap = new RoadmapBaker(scene).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 400, Threads = 2 }).Roadmap;
+        // Where the test expects a stance to stand: the centre of its contacts but hands higher than a step above its
+        // feet.
+        Vector3 StandsAt(RoadmapNode n)
+        {
+            Contact[] feet = [.. n.Contacts.Where(c => scene.Character.Limbs[c.Limb].Kind == LimbKind.Foot)];
+            float lean = (feet.Sum(c => c.Position.Y) / feet.Length) + scene.Character.StepReach;
+            Contact[] standing = [.. n.Contacts.Where(c => scene.Character.Limbs[c.Limb].Kind == LimbKind.Foot || c.Position.Y <= lean)];
+            return standing.Aggregate(Vector3.Zero, (sum, c) => sum + c.Position) / standing.Length;
+        }
+
+        RoadmapNode[] leaning = [.. roadmap.Nodes.Where(n => n.Contacts.Any(c => scene.Character.Limbs[c.Limb].Kind == LimbKind.Foot) && n.ContactCentre.Y - StandsAt(n).Y > 0.3f).Take(8)];
+        Assume.That(leaning, Has.Length.GreaterThanOrEqualTo(3), "the desert's roadmap has stances leaning a hand on a block");
+        var tolerance = new EndpointTolerance(0.2f, 0.3f);
+        int tried = 0;
+        int placed = 0;
+        int byAll = 0;
+        foreach (RoadmapNode stance in leaning)
+        {
+            Assert.That(stance.Contacts.Any(c => scene.Character.Limbs[c.Limb].Kind == LimbKind.Hand), "what raises the centre is a hand");
+            Vector3 stands = scene.Sampler.StandingCentre(stance.Contacts, stance.Pose.Position);
+            Assert.That(Vector3.Distance(stands, StandsAt(stance)), Is.LessThan(1e-5f), "it stands where its feet are");
+            for (int quarter = 0; quarter < 4; quarter++)
+            {
+                float facing = quarter * MathF.PI / 2f;
+                tried++;
+                EndpointPlacement all = scene.Sampler.PlaceFacingWithin(stance.ContactCentre, tolerance, facing, JumpFacer.Yaws, null, stance.Pose.Position.Y - stance.ContactCentre.Y);
+                byAll += all.Placed ? 1 : 0;
+                EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(stands, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(scene.Sampler, stance), standing: true);
+                if (!turned.Placed)
+                {
+                    continue;
+                }
+
+                placed++;
+                AssertWithin(turned, stands, tolerance.Across, tolerance.UpDown, scene.Sampler);
+                Vector3 now = turned.Pose!.Pose.Forward;
+                float off = MathF.Abs(MathF.IEEERemainder(MathF.Atan2(now.X, now.Z) - facing, 2f * MathF.PI)) * 180f / MathF.PI;
+                Assert.That(off, Is.LessThanOrEqualTo(15f), "faces the way asked, within the yaws tried (10°) and what the ground's tilt adds");
+            }
+        }
+
+        TestContext.Out.WriteLine($"{leaning.Length} stances leaning a hand, {tried} turns: {placed} placed where the stance stands, {byAll} measured by all the contacts");
+        Assert.That(placed, Is.GreaterThan(tried / 2), "most turns stand where the stance stood");
+        Assert.That(placed, Is.GreaterThan(byAll), "measured by all its contacts, the hand's block keeps most turns from standing");
+
+        // A frog stands on its hands as much as on its feet: its stances stand at their contacts' centre.
+        PlanningScene pond = SharedLevels.Scene("pond", "frog");
+        Roadmap frogs = new RoadmapBaker(pond).Bake(new BakeSettings { Locomotion = Locomotion.Jump, Seed = 7, MaxNodes = 100, Threads = 2 }).Roadmap;
+        RoadmapNode[] onHands = [.. frogs.Nodes.Where(n => n.Contacts.Any(c => pond.Character.Limbs[c.Limb].Kind == LimbKind.Hand) && n.Contacts.Any(c => pond.Character.Limbs[c.Limb].Kind == LimbKind.Foot))];
+        Assume.That(onHands, Is.Not.Empty, "the frog stands on hands and feet");
+        Assert.That(onHands.Select(n => pond.Sampler.StandingCentre(n.Contacts, n.Pose.Position)), Is.EqualTo(onHands.Select(n => n.ContactCentre)), "a frog stands where all its contacts are");
+    }
+
+    /// <summary>Asserts <paramref name="placed"/> stands within the tolerance of <paramref name="point"/>: its contacts' centre, or where it stands when placed so (<paramref name="standing"/>, the sampler that placed it).</summary>
+    private static void AssertWithin(EndpointPlacement placed, Vector3 point, float across, float upDown, TrunkSampler? standing = null)
+    {
+        Vector3 centre = standing is null ? TrunkSampler.ContactCentre(placed.Pose!) : standing.StandingCentre(placed.Pose!.Contacts, placed.Pose.Pose.Position);
         Assert.Multiple(() =>
         {
             Assert.That(new Vector2(centre.X - point.X, centre.Z - point.Z).Length(), Is.LessThanOrEqualTo(across));
