@@ -446,7 +446,7 @@ internal sealed class JumpFacer
         {
             foreach (float[] yaws in (float[][])[Yaws, WideYaws])
             {
-                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, Height(_scene.Sampler, old), standing: true);
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, Height(_scene.Sampler, old), Leans(old));
                 if (placed.Pose is { } pose && !Refused(pose.Pose))
                 {
                     var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
@@ -489,7 +489,7 @@ internal sealed class JumpFacer
         float toward = MathF.IEEERemainder(Way(before.Arc) - facing, 2f * MathF.PI);
         float sign = toward >= 0f ? 1f : -1f;
         float[] yaws = Far(before) ? [.. RelandYaws.Select(y => y * sign)] : [.. Yaws, .. WideYaws];
-        EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(Standing(current), Placement, facing, yaws, _canStand, Height(_scene.Sampler, current), standing: true);
+        EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(Standing(current), Placement, facing, yaws, _canStand, Height(_scene.Sampler, current), Leans(current));
         if (placed.Pose is not { } pose || Refused(pose.Pose))
         {
             yield break;
@@ -578,7 +578,7 @@ internal sealed class JumpFacer
             {
                 Vector3 point = Standing(landing) - (way * (reach * length));
                 point.Y = Standing(jump.From).Y;
-                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, yaw, Yaws, _canStand, Height(_scene.Sampler, jump.From), standing: true);
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, yaw, Yaws, _canStand, Height(_scene.Sampler, jump.From), Leans(jump.From));
                 if (placed.Pose is not { } pose || Refused(pose.Pose))
                 {
                     continue;
@@ -624,14 +624,24 @@ internal sealed class JumpFacer
 
     /// <summary>
     /// Where <paramref name="node"/> stands (world metres, <see cref="TrunkSampler.StandingCentre"/>: the centre of its
-    /// contacts but a hand leaning on something higher than a step above its feet): a stance turned in its place
-    /// stands within <see cref="Placement"/> of it, measured the same way. Measured by all its contacts, a stance leaning a hand on a
-    /// block's top beside its feet stood a third of the block's height above the ground, where no stance on its feet
-    /// alone came within the tolerance: of the 916 turned stances 2,000 new node-to-node requests on the desert placed
-    /// in vain, each after trying every spot, yaw and lift, 568 had stood within it across but not up and down (two fifths of
-    /// the requests' time went to those 568).
+    /// contacts but a hand leaning on something higher than a step above its feet). A stance turned in the place of
+    /// one that leans so stands within <see cref="Placement"/> of it, measured the same way (<see cref="Leans"/>); of
+    /// one that does not, its contacts' centre does, as before. Measured by all its contacts, a stance leaning a hand
+    /// on a block's top beside its feet stood a third of the block's height above the ground, where no stance on its
+    /// feet alone came within the tolerance: of the 916 turned stances 2,000 new node-to-node requests on the desert
+    /// placed in vain, each after trying every spot, yaw and lift, 568 had stood within it across but not up and down
+    /// (two fifths of the requests' time went to those 568).
     /// </summary>
     private Vector3 Standing(RoadmapNode node) => _scene.Sampler.StandingCentre(node.Contacts, node.Pose.Position);
+
+    /// <summary>
+    /// Whether <paramref name="node"/> leans a hand on something (<see cref="Standing"/> is not its contacts' centre):
+    /// then its turned stances are measured by where they stand, a turn leaning on the block as well as one on its feet
+    /// alone. A stance that leans on nothing is turned as before, into a stance whose contacts' centre stands where its
+    /// did: measured where it stands, a turn leaning a hand on a block beside it was taken first (the skeleton's jump up
+    /// onto the block level's block), and that turn could not take off.
+    /// </summary>
+    private bool Leans(RoadmapNode node) => Standing(node) != node.ContactCentre;
 
     /// <summary>How far (metres) from a stance a stance turned by a hop is placed, along the jump: a hop in place needs some ground to cover to stay long enough in the air.</summary>
     public const float HopShift = 0.15f;
