@@ -263,9 +263,12 @@ public sealed class EndpointPlacementTests
                 var along = new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
                 foreach (float shift in new[] { 0f, JumpFacer.HopShift, -JumpFacer.HopShift })
                 {
-                    Vector3 point = scene.Sampler.StandingCentre(crouch.Contacts, crouch.Pose.Position) + (shift * along);
-                    EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(scene.Sampler, crouch), standing: true);
-                    EndpointPlacement low = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, lowest, standing: true);
+                    // As the facer places it: where the crouch stands, measured so only when it leans a hand on something.
+                    Vector3 stands = scene.Sampler.StandingCentre(crouch.Contacts, crouch.Pose.Position);
+                    bool leans = stands != crouch.ContactCentre;
+                    Vector3 point = stands + (shift * along);
+                    EndpointPlacement turned = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, JumpFacer.Height(scene.Sampler, crouch), leans);
+                    EndpointPlacement low = scene.Sampler.PlaceFacingWithin(point, tolerance, facing, JumpFacer.Yaws, null, lowest, leans);
                     tried++;
                     standsLow += low.Placed ? 1 : 0;
                     if (!turned.Placed)
@@ -274,11 +277,11 @@ public sealed class EndpointPlacementTests
                         continue;
                     }
 
-                    AssertWithin(turned, point, tolerance.Across, tolerance.UpDown, scene.Sampler);
+                    AssertWithin(turned, point, tolerance.Across, tolerance.UpDown, leans ? scene.Sampler : null);
                     Vector3 now = turned.Pose!.Pose.Forward;
                     float off = MathF.Abs(MathF.IEEERemainder(MathF.Atan2(now.X, now.Z) - facing, 2f * MathF.PI)) * 180f / MathF.PI;
                     Assert.That(off, Is.LessThanOrEqualTo(15f), "faces the way asked, within the yaws tried (10°) and what the ground's tilt adds");
-                    tallest = MathF.Max(tallest, turned.Pose.Pose.Position.Y - scene.Sampler.StandingCentre(turned.Pose.Contacts, turned.Pose.Pose.Position).Y);
+                    tallest = MathF.Max(tallest, turned.Pose.Pose.Position.Y - (leans ? scene.Sampler.StandingCentre(turned.Pose.Contacts, turned.Pose.Pose.Position) : TrunkSampler.ContactCentre(turned.Pose)).Y);
                 }
             }
         }
