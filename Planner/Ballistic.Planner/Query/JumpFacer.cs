@@ -14,7 +14,8 @@ namespace Ballistic.Planner.Query;
 /// <see cref="MinDistance"/> across whose takeoff (landing) heading is more than <see cref="TakeoffTurn"/>
 /// (<see cref="LandingTurn"/>) off its direction, a new takeoff (landing) stance is placed where the old one stands,
 /// facing the jump (<see cref="TrunkSampler.PlaceFacingWithin"/>: contacts on the level, within
-/// <see cref="Placement"/> of the old ones, the request's <see cref="QuerySettings.CanStand"/>), and the jump is
+/// <see cref="Placement"/> of where the old one stands (<see cref="Standing"/>), the request's
+/// <see cref="QuerySettings.CanStand"/>), and the jump is
 /// steered again between the stances it uses (friction cones of the contacts it actually stands on, speed limits,
 /// trunk sweep). A new landing is placed only where the character can turn back into the old one, or, when the
 /// jump after travels <see cref="MinDistance"/> or more and would leave the old one off its way, where that jump
@@ -441,12 +442,14 @@ internal sealed class JumpFacer
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Placements(RoadmapNode old, float facing, float side, Func<RoadmapNode, List<Move>?> link)
     {
         Vector3 centre = Standing(old);
+        float height = Height(_scene.Sampler, old);
+        bool leans = Leans(old);
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
         foreach (Vector3 point in _hops ? [centre + ahead, centre + (2f * ahead), centre, centre - ahead, centre - (2f * ahead)] : (Vector3[])[centre, centre + ahead, centre + (2f * ahead), centre - ahead, centre - (2f * ahead)])
         {
             foreach (float[] yaws in (float[][])[Yaws, WideYaws])
             {
-                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, Height(_scene.Sampler, old), Leans(old));
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, height, leans);
                 if (placed.Pose is { } pose && !Refused(pose.Pose))
                 {
                     var node = new RoadmapNode(_nextId++, pose.Pose, pose.Cone, pose.Contacts);
@@ -567,7 +570,11 @@ internal sealed class JumpFacer
         Vector3 forward = landing.Pose.Forward;
         float heading = MathF.Atan2(forward.X, forward.Z);
         float side = MathF.IEEERemainder(Way(jump.Arc) - heading, 2f * MathF.PI) >= 0f ? 1f : -1f;
-        Vector3 across = Standing(landing) - Standing(jump.From);
+        Vector3 landed = Standing(landing);
+        Vector3 stood = Standing(jump.From);
+        float height = Height(_scene.Sampler, jump.From);
+        bool leans = Leans(jump.From);
+        Vector3 across = landed - stood;
         float length = new Vector2(across.X, across.Z).Length();
         Walk? before = result.Count > 0 && result[^1] is Walk w && w.Via.Count == 0 ? w : null;
         foreach (float swing in SwingYaws)
@@ -576,9 +583,9 @@ internal sealed class JumpFacer
             var way = new Vector3(MathF.Sin(yaw), 0f, MathF.Cos(yaw));
             foreach (float reach in SwingReach)
             {
-                Vector3 point = Standing(landing) - (way * (reach * length));
-                point.Y = Standing(jump.From).Y;
-                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, yaw, Yaws, _canStand, Height(_scene.Sampler, jump.From), Leans(jump.From));
+                Vector3 point = landed - (way * (reach * length));
+                point.Y = stood.Y;
+                EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, yaw, Yaws, _canStand, height, leans);
                 if (placed.Pose is not { } pose || Refused(pose.Pose))
                 {
                     continue;
