@@ -8,13 +8,31 @@ namespace Ballistic.Planner.Geometry;
 /// kept in the newer. For work that queries repeat (placing the same stances, steering the same pairs): since a result
 /// depends on its key alone, what is remembered never changes one, only how soon it comes, whatever the order or
 /// the threads that asked.
+/// <para>
+/// A thread inside a <see cref="KeptResults.Keep"/> scope (a query being prepared ahead of time) keeps what it makes
+/// or recalls for good, outside the two generations: results that every later query over the roadmap would otherwise
+/// make again once the generations forgot them.
+/// </para>
 /// </summary>
 internal sealed class RememberedResults<TKey, TValue>(int capacity)
     where TKey : notnull
 {
     private readonly object _lock = new();
+    private readonly Dictionary<TKey, TValue> _kept = [];
     private Dictionary<TKey, TValue> _newer = [];
     private Dictionary<TKey, TValue> _older = [];
+
+    /// <summary>How many results are kept for good (made or recalled inside a <see cref="KeptResults.Keep"/> scope).</summary>
+    public int KeptCount
+    {
+        get
+        {
+            lock (_lock)
+            {
+                return _kept.Count;
+            }
+        }
+    }
 
     /// <summary>The result for <paramref name="key"/>: remembered, or made by <paramref name="make"/> (outside the lock) and remembered.</summary>
     public TValue GetOrAdd<TState>(TKey key, TState state, Func<TKey, TState, TValue> make)
@@ -64,7 +82,7 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
     {
         lock (_lock)
         {
-            foreach (Dictionary<TKey, TValue> generation in (Dictionary<TKey, TValue>[])[_newer, _older])
+            foreach (Dictionary<TKey, TValue> generation in (Dictionary<TKey, TValue>[])[_kept, _newer, _older])
             {
                 if (generation.TryGetValue(key, out TValue? known) && EqualityComparer<TValue>.Default.Equals(known, value))
                 {
@@ -79,25 +97,52 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
     {
         lock (_lock)
         {
-            return _newer.ContainsKey(key) || _older.ContainsKey(key);
+            return _kept.ContainsKey(key) || _newer.ContainsKey(key) || _older.ContainsKey(key);
         }
     }
 
-    /// <summary>The value remembered for <paramref name="key"/>, kept in the newer generation; under the lock.</summary>
+    /// <summary>
+    /// The value remembered for <paramref name="key"/>: kept for good, or found in a generation and kept in the newer
+    /// (for good instead, inside a <see cref="KeptResults.Keep"/> scope on this thread); under the lock.
+    /// </summary>
     private bool Recall(TKey key, [MaybeNullWhen(false)] out TValue value)
     {
+        if (_kept.TryGetValue(key, out value))
+        {
+            return true;
+        }
+
         if (_newer.TryGetValue(key, out value) || _older.TryGetValue(key, out value))
         {
-            _newer[key] = value;
+            if (KeptResults.Keeping)
+            {
+                _newer.Remove(key);
+                _older.Remove(key);
+                _kept[key] = value;
+            }
+            else
+            {
+                _newer[key] = value;
+            }
+
             return true;
         }
 
         return false;
     }
 
-    /// <summary>Keeps <paramref name="value"/> in the newer generation, which becomes the older when full; under the lock.</summary>
+    /// <summary>
+    /// Keeps <paramref name="value"/> for good inside a <see cref="KeptResults.Keep"/> scope on this thread, else in the
+    /// newer generation, which becomes the older when full; under the lock.
+    /// </summary>
     private void Remember(TKey key, TValue value)
     {
+        if (KeptResults.Keeping)
+        {
+            _kept[key] = value;
+            return;
+        }
+
         if (_newer.Count >= capacity)
         {
             (_older, _newer) = (_newer, []);

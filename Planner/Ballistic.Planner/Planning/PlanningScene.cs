@@ -55,6 +55,9 @@ public sealed class PlanningScene
     /// <summary>The walking steering method with the character's walking limits (it finds no walk for a character that does not walk).</summary>
     internal WalkSteering Walking { get; }
 
+    /// <summary>Placements, arcs and walks the scene keeps for good (<see cref="Query.PathQuery.Prepare"/>), in all.</summary>
+    internal int KeptCount => Sampler.KeptCount + Steering.KeptCount + Walking.KeptCount;
+
     /// <summary>Builds the scene.</summary>
     /// <param name="level">The level.</param>
     /// <param name="character">The character.</param>

@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Numerics;
 using Ballistic.Planner.Contacts;
+using Ballistic.Planner.Geometry;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Sampling;
@@ -145,6 +146,106 @@ public sealed class PathQuery
 
     /// <summary>The roadmap searched.</summary>
     public Roadmap Roadmap => _roadmap;
+
+    /// <summary>
+    /// Prepares the roadmap's moves ahead of time (at a level's load), so that later queries over it recall most of
+    /// what they would otherwise work out as they go. Every pair of nodes linked by a roadmap jump or walk is planned
+    /// once as a request of its own (node to node, with <paramref name="settings"/>), and what those requests work out
+    /// (stances turned to face a jump, the arcs linking them, walks traced) is kept in the scene for good, where its
+    /// bounded memory of recent results forgets it once queries over a large roadmap have moved on. What is kept
+    /// changes no path, only how soon it comes. Prepare with the settings of the queries to come (tolerance,
+    /// locomotion, stance check, jump facing): what is kept is keyed by them. Costs seconds and tens of megabytes on a
+    /// 1,000-node roadmap (the README gives figures); the scene keeps the memory while it lives.
+    /// </summary>
+    /// <param name="settings">The settings of the queries to prepare for; the defaults when <c>null</c>.</param>
+    /// <param name="threads">Threads preparing at once, each with a query of its own; 1 prepares on this thread only.</param>
+    /// <param name="termination">
+    /// Stops the preparation early, polled between pairs (its clock and cancellation parts,
+    /// <see cref="TerminationCondition.ShouldStopNow"/>); <c>null</c> for none. What was prepared stays kept.
+    /// </param>
+    /// <returns>How many node pairs were prepared: every pair linked by a roadmap jump or walk, fewer when stopped early.</returns>
+    /// <exception cref="ArgumentException">The settings' jump costs are negative or not finite.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="threads"/> is below 1.</exception>
+    public int Prepare(QuerySettings? settings = null, int threads = 1, TerminationCondition? termination = null)
+    {
+        settings = Checked(settings);
+        ArgumentOutOfRangeException.ThrowIfLessThan(threads, 1);
+        List<(int From, int To)> pairs = PairsToPrepare();
+        var clock = Stopwatch.StartNew();
+        int prepared = 0;
+        bool stopped = false;
+        void PrepareOne(PathQuery query, (int From, int To) pair)
+        {
+            using KeptResults.Scope keeping = KeptResults.Keep();
+            query.Plan(_roadmap.Nodes[pair.From], _roadmap.Nodes[pair.To], settings);
+            Interlocked.Increment(ref prepared);
+        }
+
+        bool StopNow() => Volatile.Read(ref stopped) || (termination?.ShouldStopNow(clock.Elapsed, out _, out _) ?? false);
+        if (threads == 1)
+        {
+            foreach ((int From, int To) pair in pairs)
+            {
+                if (StopNow())
+                {
+                    break;
+                }
+
+                PrepareOne(this, pair);
+            }
+
+            return prepared;
+        }
+
+        Parallel.For(
+            0,
+            pairs.Count,
+            new ParallelOptions { MaxDegreeOfParallelism = threads },
+            () => new PathQuery(_scene, _roadmap),
+            (i, loop, query) =>
+            {
+                if (StopNow())
+                {
+                    Volatile.Write(ref stopped, true);
+                    loop.Stop();
+                }
+                else
+                {
+                    PrepareOne(query, pairs[i]);
+                }
+
+                return query;
+            },
+            static _ => { });
+        return prepared;
+    }
+
+    /// <summary>The node pairs a roadmap jump or walk links, each once, by takeoff node then landing node.</summary>
+    private List<(int From, int To)> PairsToPrepare()
+    {
+        var pairs = new List<(int From, int To)>();
+        var targets = new SortedSet<int>();
+        for (int node = 0; node < _roadmap.Nodes.Count; node++)
+        {
+            targets.Clear();
+            foreach (int edge in _roadmap.Outgoing(node))
+            {
+                targets.Add(_roadmap.EdgeTargets[edge]);
+            }
+
+            for (int entry = _roadmap.WalkOffsets[node]; entry < _roadmap.WalkOffsets[node + 1]; entry++)
+            {
+                targets.Add(_roadmap.WalkTargets[entry]);
+            }
+
+            foreach (int target in targets)
+            {
+                pairs.Add((node, target));
+            }
+        }
+
+        return pairs;
+    }
 
     /// <summary>A* expansions between two pauses of a search run in steps, where the termination condition is polled (<see cref="PollEvery"/> by default); positive.</summary>
     internal int SliceExpansions

@@ -90,6 +90,9 @@ internal sealed class ParabolaSteering
 
     private readonly RememberedResults<SteerKey, SteeringResult> _remembered = new(RememberedSteers);
 
+    /// <summary>Arcs kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
+    internal int KeptCount => _remembered.KeptCount;
+
     /// <summary>What a remembered steer was asked: both poses and cones, and whether the steepest arcs were tried first.</summary>
     private readonly record struct SteerKey(RootPose From, FrictionCone FromCone, RootPose To, FrictionCone ToCone, bool Steep);
 

@@ -129,6 +129,9 @@ internal sealed class WalkSteering
 
     private readonly RememberedResults<WalkKey, (Vector3[]? Path, float[]? Cross, WalkFailure Failure)> _traced = new(RememberedWalks);
 
+    /// <summary>Walks kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
+    internal int KeptCount => _traced.KeptCount;
+
     /// <summary>What a remembered walk depends on: its stances' root poses and contact centres (metres).</summary>
     private readonly record struct WalkKey(RootPose FromPose, Vector3 From, RootPose ToPose, Vector3 To);
 

@@ -133,4 +133,66 @@ public sealed class RememberedResultsTests
             Assert.That(solves, Is.EqualTo(3));
         });
     }
+
+    [Test]
+    public void WhatAThreadMakesOrRecallsWhileKeepingIsNeverForgottenAndOtherThreadsRememberAsBefore()
+    {
+        var memory = new RememberedResults<int, string>(2);
+        int made = 0;
+        string Make(int key, int salt)
+        {
+            Interlocked.Increment(ref made);
+            return $"{key}:{salt}";
+        }
+
+        memory.GetOrAdd(100, 1, Make); // remembered in a generation before the scope
+        int keptByOther = -1;
+        using (KeptResults.Keep())
+        {
+            Assert.That(KeptResults.Keeping, Is.True);
+            for (int k = 0; k < 5; k++)
+            {
+                memory.GetOrAdd(k, 1, Make);
+            }
+
+            Assert.That(memory.GetOrAdd(100, 2, Make), Is.EqualTo("100:1"), "recalled from its generation");
+
+            // Another thread, outside any scope, while this one keeps: what it makes goes into the generations.
+            var other = new Thread(() =>
+            {
+                memory.GetOrAdd(200, 1, Make);
+                keptByOther = memory.KeptCount;
+            });
+            other.Start();
+            other.Join();
+        }
+
+        Assert.That(KeptResults.Keeping, Is.False, "the scope ended");
+        Assert.That(keptByOther, Is.EqualTo(6), "keys 0–4 and 100 kept; 200, made by another thread, is not");
+
+        // Many generations later, the kept keys are still there; 200 was forgotten.
+        for (int k = 1_000; k < 1_010; k++)
+        {
+            memory.GetOrAdd(k, 1, Make);
+        }
+
+        int before = made;
+        Assert.Multiple(() =>
+        {
+            for (int k = 0; k < 5; k++)
+            {
+                Assert.That(memory.GetOrAdd(k, 9, Make), Is.EqualTo($"{k}:1"), $"key {k} kept");
+            }
+
+            Assert.That(memory.GetOrAdd(100, 9, Make), Is.EqualTo("100:1"), "a result recalled while keeping is kept too");
+            Assert.That(made, Is.EqualTo(before), "nothing kept was made again");
+            Assert.That(memory.GetOrAdd(200, 9, Make), Is.EqualTo("200:9"), "forgotten: made anew");
+            Assert.That(memory.KeptCount, Is.EqualTo(6));
+        });
+
+        // A failed solve is forgotten even when kept.
+        memory.Forget(3, "3:1");
+        Assert.That(memory.GetOrAdd(3, 9, Make), Is.EqualTo("3:9"));
+        Assert.That(memory.KeptCount, Is.EqualTo(5));
+    }
 }
