@@ -304,7 +304,7 @@ public sealed class JumpWorld : IDisposable
         KindHandle handle = NewKind(kind.Name);
         Level = kind.Scene.Level;
         _kinds[handle.Index] = kind;
-        _searches[handle.Index] = new RoadmapSearch(kind, Settings);
+        SetSearch(handle.Index, new RoadmapSearch(kind, Settings));
         return new AddKindResult(RuntimeResult.Success, handle);
     }
 
@@ -343,7 +343,7 @@ public sealed class JumpWorld : IDisposable
         _kindAlive[index] = true;
         _kindNames[index] = string.IsNullOrWhiteSpace(name) ? $"kind {index}" : name;
         _kinds[index] = null;
-        _searches[index] = null;
+        SetSearch(index, null);
         return new KindHandle(index, _kindGenerations[index]);
     }
 
@@ -356,6 +356,9 @@ public sealed class JumpWorld : IDisposable
 
     /// <summary>The kind's scene, roadmap and animator; <c>null</c> while it has no roadmap (or is unknown).</summary>
     public CharacterKind? GetKindCharacter(KindHandle kind) => IsValid(kind) ? _kinds[kind.Index] : null;
+
+    /// <summary>The background preparation of the kind's searches (<see cref="WorldSettings.PrepareSearches"/>), or <c>null</c>.</summary>
+    internal Task<int>? PreparationOf(KindHandle kind) => IsValid(kind) ? _searches[kind.Index]?.Preparation : null;
 
     /// <summary>
     /// Removes a kind: its agents leave the simulation for good (<see cref="AgentLifecycle.Detached"/>), each with a
@@ -372,7 +375,7 @@ public sealed class JumpWorld : IDisposable
         string reason = $"kind '{_kindNames[kind.Index]}' was removed";
         int count = Lift(kind.Index, AgentLifecycle.Detached, reason, everyone: true);
         _kinds[kind.Index] = null;
-        _searches[kind.Index] = null;
+        SetSearch(kind.Index, null);
         _kindAlive[kind.Index] = false;
         _freeKinds.Push(kind.Index);
         return new RuntimeResult(RuntimeStatus.Ok, $"{reason}: {Count(count)} detached");
@@ -476,7 +479,7 @@ public sealed class JumpWorld : IDisposable
             // Cleared: its agents leave the simulation and wait for a roadmap.
             int lifted = Lift(kind.Index, AgentLifecycle.Waiting, $"kind '{name}' lost its roadmap: the agent waits for a new one", everyone: false);
             _kinds[kind.Index] = null;
-            _searches[kind.Index] = null;
+            SetSearch(kind.Index, null);
             return new RuntimeResult(RuntimeStatus.Ok, $"kind '{name}' cleared: {Count(lifted)} wait for a roadmap");
         }
 
@@ -495,7 +498,7 @@ public sealed class JumpWorld : IDisposable
         Level = replacement.Scene.Level;
         bool joining = _kinds[kind.Index] is null;
         _kinds[kind.Index] = replacement;
-        _searches[kind.Index] = new RoadmapSearch(replacement, Settings);
+        SetSearch(kind.Index, new RoadmapSearch(replacement, Settings));
         if (joining)
         {
             return Join(kind.Index, replacement);
@@ -1485,8 +1488,20 @@ public sealed class JumpWorld : IDisposable
         if (!_disposed)
         {
             _disposed = true;
+            foreach (RoadmapSearch? search in _searches)
+            {
+                search?.StopPreparing();
+            }
+
             _requests.Dispose();
         }
+    }
+
+    /// <summary>Sets kind <paramref name="index"/>'s searches, stopping the preparation of those they replace.</summary>
+    private void SetSearch(int index, RoadmapSearch? search)
+    {
+        _searches[index]?.StopPreparing();
+        _searches[index] = search;
     }
 
     /// <summary>The stance an agent of <paramref name="kind"/> takes at <paramref name="point"/>, with its pose's joint angles.</summary>

@@ -47,8 +47,23 @@ public sealed record WorldSettings
     /// <summary>The <see cref="MaxAnimationWait"/> of worlds stepped in real time (the Godot server's): a quarter of a second.</summary>
     public static readonly TimeSpan RealTimeAnimationWait = TimeSpan.FromSeconds(0.25);
 
-    /// <summary>The defaults of a world stepped in real time, as the Godot server's: <see cref="MaxAnimationWait"/> is <see cref="RealTimeAnimationWait"/>.</summary>
-    public static WorldSettings RealTime => new() { MaxAnimationWait = RealTimeAnimationWait };
+    /// <summary>
+    /// The defaults of a world stepped in real time, as the Godot server's: <see cref="MaxAnimationWait"/> is
+    /// <see cref="RealTimeAnimationWait"/>, and each kind's searches are prepared in the background
+    /// (<see cref="PrepareSearches"/>).
+    /// </summary>
+    public static WorldSettings RealTime => new() { MaxAnimationWait = RealTimeAnimationWait, PrepareSearches = true };
+
+    /// <summary>
+    /// True: whenever a kind gets a roadmap (<see cref="JumpWorld.AddKind"/>, <see cref="JumpWorld.ReplaceKind"/>), one
+    /// background thread prepares its searches (<see cref="PathQuery.Prepare"/>, with the settings its requests
+    /// use), so that requests over the roadmap recall the stances turned to face its jumps and the arcs linking them
+    /// instead of working them out as they go: seconds of one thread and tens of megabytes for a 1,000-node roadmap,
+    /// stopped when the kind is removed or replaced or the world disposed. Requests are served meanwhile. It changes no
+    /// path, trajectory or event, only how soon a request is solved. False by default (tests and tools that make
+    /// worlds by the dozen); true in <see cref="RealTime"/>.
+    /// </summary>
+    public bool PrepareSearches { get; init; }
 
     /// <summary>
     /// Threads searching and animating path requests in the background; 0 runs them on the tick (tests, single-threaded
