@@ -134,6 +134,21 @@ internal static class BenchCommand
         output.WriteLine($"node to node on it: median {Median(nodeTimes):0.000} ms, p95 {Percentile(nodeTimes, 0.95):0.000} ms over {nodeTimes.Count} queries after {warmUp} warm-up queries ({nodeFound} found a path)");
         output.WriteLine($"the same requests again (routes taken before): point to point median {Median(pointAgain):0.000} ms, p95 {Percentile(pointAgain, 0.95):0.000} ms ({pointFoundAgain} found a path); node to node median {Median(nodeAgain):0.000} ms, p95 {Percentile(nodeAgain, 0.95):0.000} ms ({nodeFoundAgain} found a path)");
 
+        // The same new routes on a scene of their own whose query was prepared first (PathQuery.Prepare, as a game's
+        // world does at a level's load): every roadmap jump planned once ahead of time, what it placed and steered kept.
+        var preparedScene = PlanningScene.Create(desert, desertScene.Character);
+        var prepared = new PathQuery(preparedScene, roadmap);
+        GC.Collect();
+        long heapBefore = GC.GetTotalMemory(forceFullCollection: true);
+        var preparing = Stopwatch.StartNew();
+        int preparedPairs = prepared.Prepare(new QuerySettings { Locomotion = Locomotion.Jump }, Environment.ProcessorCount);
+        double prepareSeconds = preparing.Elapsed.TotalSeconds;
+        double keptMegabytes = (GC.GetTotalMemory(forceFullCollection: true) - heapBefore) / 1e6;
+        (List<double> pointPrepared, int pointFoundPrepared) = TimeQueries(roadmap, new Random(3), warmUp, count, (a, b) =>
+            prepared.Plan(a.Contacts.Count > 0 ? a.Contacts[0].Position : a.Pose.Position, b.Contacts.Count > 0 ? b.Contacts[0].Position : b.Pose.Position, new QuerySettings { Locomotion = Locomotion.Jump }));
+        (List<double> nodePrepared, int nodeFoundPrepared) = TimeQueries(roadmap, new Random(4), warmUp, count, (a, b) => prepared.Plan(a, b, new QuerySettings { Locomotion = Locomotion.Jump }));
+        output.WriteLine($"new routes after preparing the query ({preparedPairs:N0} node pairs on {Environment.ProcessorCount} threads in {prepareSeconds:0.0} s, {preparedScene.KeptCount:N0} results kept, {keptMegabytes:0} MB): point to point median {Median(pointPrepared):0.000} ms, p95 {Percentile(pointPrepared, 0.95):0.000} ms ({pointFoundPrepared} found a path); node to node median {Median(nodePrepared):0.000} ms, p95 {Percentile(nodePrepared, 0.95):0.000} ms ({nodeFoundPrepared} found a path)");
+
         ParabolaSteering steering = desertScene.Steering;
         var pairs = new List<(RoadmapNode A, RoadmapNode B)>();
         for (int i = 0; i < 20_000; i++)

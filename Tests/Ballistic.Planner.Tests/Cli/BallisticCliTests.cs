@@ -40,7 +40,8 @@ public sealed class BallisticCliTests
     /// <summary>
     /// `bench` times the desert's queries one by one and prints each kind's median and 95th percentile: point to point
     /// and node to node, every request finding a path, the tail never under the median; then the same requests again
-    /// (routes taken before, what the scene remembered reused), each kind finding as many paths as the first time.
+    /// (routes taken before, what the scene remembered reused), each kind finding as many paths as the first time; then
+    /// the first requests again on a scene whose query was prepared, finding as many paths.
     /// </summary>
     [Test]
     public void BenchPrintsTheQueriesMedianAndTail()
@@ -70,6 +71,19 @@ public sealed class BallisticCliTests
                 Assert.That(median, Is.GreaterThan(0d), again);
                 Assert.That(double.Parse(m.Groups[3].Value, System.Globalization.CultureInfo.InvariantCulture), Is.GreaterThanOrEqualTo(median), again);
                 Assert.That(m.Groups[4].Value, Is.EqualTo("100"), $"{m.Groups[1].Value}: the same requests find the same number of paths again ({again})");
+            }
+
+            // The same new routes on a prepared query's scene: the node pairs prepared and what was kept, and as many paths.
+            string prepared = output.Split('\n').Single(l => l.StartsWith("new routes after preparing the query", StringComparison.Ordinal));
+            System.Text.RegularExpressions.Match counts = System.Text.RegularExpressions.Regex.Match(prepared, @"\(([0-9,]+) node pairs on [0-9]+ threads in [0-9.]+ s, ([0-9,]+) results kept, [0-9]+ MB\)");
+            Assert.That(counts.Success, Is.True, prepared);
+            Assert.That(int.Parse(counts.Groups[1].Value, System.Globalization.NumberStyles.AllowThousands, System.Globalization.CultureInfo.InvariantCulture), Is.GreaterThan(1_000), prepared);
+            Assert.That(int.Parse(counts.Groups[2].Value, System.Globalization.NumberStyles.AllowThousands, System.Globalization.CultureInfo.InvariantCulture), Is.GreaterThan(1_000), prepared);
+            var preparedKinds = System.Text.RegularExpressions.Regex.Matches(prepared, @"(point to point|node to node) median ([0-9.]+) ms, p95 ([0-9.]+) ms \(([0-9]+) found a path\)");
+            Assert.That(preparedKinds, Has.Count.EqualTo(2), prepared);
+            foreach (System.Text.RegularExpressions.Match m in preparedKinds)
+            {
+                Assert.That(m.Groups[4].Value, Is.EqualTo("100"), $"{m.Groups[1].Value}: the prepared query finds as many paths ({prepared})");
             }
         });
     }
