@@ -243,7 +243,7 @@ internal sealed class TrunkSampler
             // The stance replaced's own height first (even below the range: a crouch a sample repaired into place),
             // then no taller than it (a taller trunk may hit what the old one cleared), the highest first.
             float own = _lift.Max > _lift.Min ? (h - _lift.Min) / (_lift.Max - _lift.Min) : 0f;
-            lifts = [own, .. UprightLifts.Where(l => _lift.Lerp(l) <= h + LiftSlack).OrderByDescending(l => l)];
+            lifts = [own, .. LiftsUpTo(h + LiftSlack)];
             if (lifts.Length == 1 && own < 0f)
             {
                 // A crouch lower than the whole range has no such lift: turned, its feet often no longer reach the
@@ -258,6 +258,24 @@ internal sealed class TrunkSampler
         }
 
         return PlaceNear(point, tolerance, canStand, facing, searchBeyond: false, yawOffsets, lifts, standing);
+    }
+
+    /// <summary><see cref="UprightLifts"/> highest first.</summary>
+    private static readonly float[] DescendingLifts = [.. UprightLifts.OrderDescending()];
+
+    /// <summary>
+    /// The <see cref="UprightLifts"/> whose trunk stands no higher than <paramref name="height"/> (metres), highest
+    /// first: a tail of <see cref="DescendingLifts"/>, whose heights do not rise.
+    /// </summary>
+    private ReadOnlySpan<float> LiftsUpTo(float height)
+    {
+        int first = 0;
+        while (first < DescendingLifts.Length && !(_lift.Lerp(DescendingLifts[first]) <= height))
+        {
+            first++;
+        }
+
+        return DescendingLifts.AsSpan(first);
     }
 
     /// <summary>How much higher (metres) than the height asked a lift of <see cref="PlaceFacingWithin"/> may stand.</summary>
