@@ -357,8 +357,13 @@ public sealed class JumpWorld : IDisposable
     /// <summary>The kind's scene, roadmap and animator; <c>null</c> while it has no roadmap (or is unknown).</summary>
     public CharacterKind? GetKindCharacter(KindHandle kind) => IsValid(kind) ? _kinds[kind.Index] : null;
 
-    /// <summary>The background preparation of the kind's searches (<see cref="WorldSettings.PrepareSearches"/>), or <c>null</c>.</summary>
-    internal Task<int>? PreparationOf(KindHandle kind) => IsValid(kind) ? _searches[kind.Index]?.Preparation : null;
+    /// <summary>
+    /// The background preparation of the kind's searches (<see cref="WorldSettings.PrepareSearches"/>), for a loading
+    /// screen to wait for: it completes with the node pairs prepared (fewer when the kind was removed or given another
+    /// roadmap meanwhile), or is cancelled when that happened before it began. <c>null</c> when the world does not
+    /// prepare, or the kind is unknown or has no roadmap.
+    /// </summary>
+    public Task<int>? GetKindPreparation(KindHandle kind) => IsValid(kind) ? _searches[kind.Index]?.Preparation : null;
 
     /// <summary>
     /// Removes a kind: its agents leave the simulation for good (<see cref="AgentLifecycle.Detached"/>), each with a

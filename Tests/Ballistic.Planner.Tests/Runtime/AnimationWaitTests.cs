@@ -72,9 +72,7 @@ public sealed class AnimationWaitTests
     {
         Assert.That(new WorldSettings().MaxAnimationWait, Is.Null);
         Assert.That(WorldSettings.RealTime.MaxAnimationWait, Is.EqualTo(WorldSettings.RealTimeAnimationWait));
-        Assert.That(WorldSettings.RealTime.PrepareSearches, Is.True, "a game's kinds are prepared in the background");
-        Assert.That(new WorldSettings().PrepareSearches, Is.False);
-        Assert.That(WorldSettings.RealTime with { MaxAnimationWait = null, PrepareSearches = false }, Is.EqualTo(new WorldSettings()), "otherwise the defaults");
+        Assert.That(WorldSettings.RealTime with { MaxAnimationWait = null }, Is.EqualTo(new WorldSettings()), "otherwise the defaults");
         string server = File.ReadAllText(Path.Combine(Support.RepositoryFiles.Root, "addons", "ballistic", "Nodes", "JumpNavigationServer.cs"));
         Assert.That(server, Does.Contain("new(WorldSettings.RealTime)"), "the Godot server's world is made with them");
         Assert.That(new WorldSettings { MaxAnimationWait = TimeSpan.Zero }.Problem(), Does.Contain("MaxAnimationWait must be positive"));

@@ -27,7 +27,7 @@ public sealed class SearchPreparationTests
             var settings = new WorldSettings { AnimationThreads = 1, Locomotion = Locomotion.WalkAndJump, PrepareSearches = prepare };
             using var world = new JumpWorld(scene.Level, settings);
             KindHandle handle = world.AddKind(kind).Kind;
-            Task<int>? preparation = world.PreparationOf(handle);
+            Task<int>? preparation = world.GetKindPreparation(handle);
             Assert.That(preparation is null, Is.EqualTo(!prepare));
             prepared = 0;
             if (preparation is not null)
@@ -65,9 +65,9 @@ public sealed class SearchPreparationTests
         var scene = PlanningScene.Create(desert.Scene.Level, desert.Scene.Character);
         using var world = new JumpWorld(scene.Level, RuntimeWorlds.JumpOnly with { PrepareSearches = true });
         KindHandle handle = world.AddKind(new CharacterKind(scene, desert.Roadmap, desert.Animator)).Kind;
-        Task<int> preparation = world.PreparationOf(handle)!;
+        Task<int> preparation = world.GetKindPreparation(handle)!;
         Assert.That(world.RemoveKind(handle).Ok, Is.True);
-        Assert.That(world.PreparationOf(handle), Is.Null, "the kind is gone");
+        Assert.That(world.GetKindPreparation(handle), Is.Null, "the kind is gone");
         Assert.That(SpinWait.SpinUntil(() => preparation.IsCompleted, TimeSpan.FromMinutes(1)), Is.True, "the preparation ends");
         Assert.That(preparation.IsCanceled || preparation.Result < pairs, Is.True, "stopped before the end");
     }
