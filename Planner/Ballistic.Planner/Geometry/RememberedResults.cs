@@ -112,11 +112,22 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
             return true;
         }
 
-        if (_newer.TryGetValue(key, out value) || _older.TryGetValue(key, out value))
+        if (_newer.TryGetValue(key, out value))
         {
             if (KeptResults.Keeping)
             {
                 _newer.Remove(key);
+                _older.Remove(key);
+                _kept[key] = value;
+            }
+
+            return true;
+        }
+
+        if (_older.TryGetValue(key, out value))
+        {
+            if (KeptResults.Keeping)
+            {
                 _older.Remove(key);
                 _kept[key] = value;
             }

@@ -93,8 +93,19 @@ internal sealed class ParabolaSteering
     /// <summary>Arcs kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
     internal int KeptCount => _remembered.KeptCount;
 
-    /// <summary>What a remembered steer was asked: both poses and cones, and whether the steepest arcs were tried first.</summary>
-    private readonly record struct SteerKey(RootPose From, FrictionCone FromCone, RootPose To, FrictionCone ToCone, bool Steep);
+    /// <summary>
+    /// What a remembered steer was asked: both poses and cones, and whether the steepest arcs were tried first; its hash
+    /// made once, when asked (a lookup that misses the kept results hashes it again in each generation).
+    /// </summary>
+    private readonly record struct SteerKey(RootPose From, FrictionCone FromCone, RootPose To, FrictionCone ToCone, bool Steep)
+    {
+        private readonly int _hash = HashCode.Combine(From, FromCone, To, ToCone, Steep);
+
+        public bool Equals(SteerKey other) =>
+            _hash == other._hash && From == other.From && FromCone == other.FromCone && To == other.To && ToCone == other.ToCone && Steep == other.Steep;
+
+        public override int GetHashCode() => _hash;
+    }
 
     /// <summary>Fractions of the admissible angle interval tried in order by <see cref="SteerSteep"/>.</summary>
     private static readonly double[] SteepFractions = [0.875, 0.75, 0.625, 0.5];
