@@ -34,6 +34,15 @@ internal sealed class RememberedResults<TKey, TValue>(int capacity)
         }
     }
 
+    /// <summary>Gives back the kept results' spare room (their table grew by doubling while a preparation kept them).</summary>
+    public void TrimKept()
+    {
+        lock (_lock)
+        {
+            _kept.TrimExcess();
+        }
+    }
+
     /// <summary>The result for <paramref name="key"/>: remembered, or made by <paramref name="make"/> (outside the lock) and remembered.</summary>
     public TValue GetOrAdd<TState>(TKey key, TState state, Func<TKey, TState, TValue> make)
     {

@@ -58,6 +58,14 @@ public sealed class PlanningScene
     /// <summary>Placements, arcs and walks the scene keeps for good (<see cref="Query.PathQuery.Prepare"/>), in all.</summary>
     internal int KeptCount => Sampler.KeptCount + Steering.KeptCount + Walking.KeptCount;
 
+    /// <summary>Gives back the spare room of what the scene keeps for good, once a preparation is done.</summary>
+    internal void TrimKept()
+    {
+        Sampler.TrimKept();
+        Steering.TrimKept();
+        Walking.TrimKept();
+    }
+
     /// <summary>Builds the scene.</summary>
     /// <param name="level">The level.</param>
     /// <param name="character">The character.</param>

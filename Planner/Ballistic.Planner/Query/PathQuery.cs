@@ -194,6 +194,7 @@ public sealed class PathQuery
                 PrepareOne(this, pair);
             }
 
+            _scene.TrimKept();
             return prepared;
         }
 
@@ -217,6 +218,7 @@ public sealed class PathQuery
                 return query;
             },
             static _ => { });
+        _scene.TrimKept();
         return prepared;
     }
 

@@ -311,6 +311,9 @@ internal sealed class TrunkSampler
     /// <summary>Placements kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
     internal int KeptCount => _placings.KeptCount;
 
+    /// <summary>Gives back the spare room of the placements kept for good.</summary>
+    internal void TrimKept() => _placings.TrimKept();
+
     /// <summary>What a placement is asked: the point (metres), tolerance, facing (radians, or none), whether it searches beyond the tolerance, yaw offsets and lifts tried (by content), the stance check (by delegate equality) and whether a pose is measured by where it stands.</summary>
     private sealed class Placing(Vector3 point, EndpointTolerance tolerance, float? facing, bool searchBeyond, float[]? yaws, float[]? lifts, Func<PoseEvaluation, bool>? canStand, bool standing) : IEquatable<Placing>
     {

@@ -93,6 +93,9 @@ internal sealed class ParabolaSteering
     /// <summary>Arcs kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
     internal int KeptCount => _remembered.KeptCount;
 
+    /// <summary>Gives back the spare room of the arcs kept for good.</summary>
+    internal void TrimKept() => _remembered.TrimKept();
+
     /// <summary>
     /// What a remembered steer was asked: both poses and cones, and whether the steepest arcs were tried first; its hash
     /// made once, when asked (a lookup that misses the kept results hashes it again in each generation).

@@ -132,6 +132,9 @@ internal sealed class WalkSteering
     /// <summary>Walks kept for good (a prepared query's, <see cref="Query.PathQuery.Prepare"/>).</summary>
     internal int KeptCount => _traced.KeptCount;
 
+    /// <summary>Gives back the spare room of the walks kept for good.</summary>
+    internal void TrimKept() => _traced.TrimKept();
+
     /// <summary>What a remembered walk depends on: its stances' root poses and contact centres (metres).</summary>
     private readonly record struct WalkKey(RootPose FromPose, Vector3 From, RootPose ToPose, Vector3 To);
 

@@ -190,6 +190,12 @@ public sealed class RememberedResultsTests
             Assert.That(memory.KeptCount, Is.EqualTo(6));
         });
 
+        // Trimmed, the kept results are all still there.
+        memory.TrimKept();
+        before = made;
+        Assert.That(Enumerable.Range(0, 5).Select(k => memory.GetOrAdd(k, 9, Make)), Is.EqualTo(Enumerable.Range(0, 5).Select(k => $"{k}:1")));
+        Assert.That(made, Is.EqualTo(before));
+
         // A failed solve is forgotten even when kept.
         memory.Forget(3, "3:1");
         Assert.That(memory.GetOrAdd(3, 9, Make), Is.EqualTo("3:9"));
