@@ -309,7 +309,7 @@ internal sealed class JumpFacer
 
             if (_scene.Steering.SteerRemembered(from.Pose, from.Cone, to.Pose, to.Cone) is { Succeeded: true } r)
             {
-                faced = new Jump(from, to, r.Arc) with { CutFrom = cut };
+                faced = new Jump(from, to, r.Arc) { CutFrom = cut };
                 turnIn = up?.Moves;
                 turnBack = down?.Moves;
                 break;
@@ -364,7 +364,7 @@ internal sealed class JumpFacer
     /// </summary>
     private IEnumerable<(RoadmapNode Node, List<Move>? Moves)> Ends(Func<float, float[], RoadmapNode?>? place, float facing, Func<IEnumerable<(RoadmapNode Node, List<Move>? Moves)>> turned)
     {
-        foreach (float[] yaws in place is null ? [] : (float[][])[Yaws, WideYaws])
+        foreach (float[] yaws in place is null ? [] : YawSets)
         {
             if (place!(facing, yaws) is { } end && !Refused(end.Pose))
             {
@@ -447,7 +447,7 @@ internal sealed class JumpFacer
         Vector3 ahead = side * HopShift * new Vector3(MathF.Sin(facing), 0f, MathF.Cos(facing));
         foreach (Vector3 point in _hops ? [centre + ahead, centre + (2f * ahead), centre, centre - ahead, centre - (2f * ahead)] : (Vector3[])[centre, centre + ahead, centre + (2f * ahead), centre - ahead, centre - (2f * ahead)])
         {
-            foreach (float[] yaws in (float[][])[Yaws, WideYaws])
+            foreach (float[] yaws in YawSets)
             {
                 EndpointPlacement placed = _scene.Sampler.PlaceFacingWithin(point, Placement, facing, yaws, _canStand, height, leans);
                 if (placed.Pose is { } pose && !Refused(pose.Pose))
@@ -509,7 +509,7 @@ internal sealed class JumpFacer
         }
 
         IReadOnlyList<(int From, int To)> own = before.CutFrom.Count > 0 ? before.CutFrom : [(before.From.Id, before.To.Id)];
-        Jump landing = new Jump(before.From, node, r.Arc) with { CutFrom = [.. own.Union(cut)], HoppedFrom = before.HoppedFrom };
+        Jump landing = new Jump(before.From, node, r.Arc) { CutFrom = [.. own.Union(cut)], HoppedFrom = before.HoppedFrom };
 
         _relanded = (node, landing);
         yield return (node, []);
@@ -598,7 +598,7 @@ internal sealed class JumpFacer
                     continue;
                 }
 
-                Jump swung = new Jump(node, landing, r.Arc) with { CutFrom = cut };
+                Jump swung = new Jump(node, landing, r.Arc) { CutFrom = cut };
                 if (StillOff(swung))
                 {
                     continue;
@@ -621,10 +621,25 @@ internal sealed class JumpFacer
     }
 
     /// <summary>Whether <paramref name="pose"/> is where the body could not crouch or absorb for a faced jump before (<see cref="QuerySettings.RefusedTurns"/>).</summary>
-    private bool Refused(RootPose pose) => _refused.Any(r => JumpRepair.IsRefused(r, pose));
+    private bool Refused(RootPose pose)
+    {
+        // A loop, not Any with a lambda: a closure per call, on every placement the facer recalls.
+        for (int i = 0; i < _refused.Count; i++)
+        {
+            if (JumpRepair.IsRefused(_refused[i], pose))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
 
     /// <summary>Yaws (radians, from the jump's direction) a new stance is tried at when none at <see cref="Yaws"/> steers: still within the eye's 30° at takeoff.</summary>
     internal static readonly float[] WideYaws = [20f * MathF.PI / 180f, -20f * MathF.PI / 180f];
+
+    /// <summary><see cref="Yaws"/>, then <see cref="WideYaws"/>: the yaw sets a new stance is placed at, in order (declared after both, so that both are set).</summary>
+    private static readonly float[][] YawSets = [Yaws, WideYaws];
 
     /// <summary>The trunk's height (metres) above where <paramref name="node"/> stands (<see cref="TrunkSampler.StandingCentre"/>): a stance replacing it stands as high (a cave's ceiling, a doorway).</summary>
     internal static float Height(TrunkSampler sampler, RoadmapNode node) => node.Pose.Position.Y - sampler.StandingCentre(node.Contacts, node.Pose.Position).Y;
@@ -683,7 +698,7 @@ internal sealed class JumpFacer
         return hop.Succeeded && hop.Arc.FlightTime >= MinHopFlight
             && _canPush?.Invoke(from.Pose, from.Contacts, hop.Arc.TakeoffVelocity) != false
             && _canPush?.Invoke(to.Pose, to.Contacts, -hop.Arc.LandingVelocity) != false
-            ? [new Jump(from, to, hop.Arc) with { CutFrom = cut }]
+            ? [new Jump(from, to, hop.Arc) { CutFrom = cut }]
             : null;
     }
 

@@ -457,11 +457,11 @@ internal sealed class TrunkSampler
         ArgumentNullException.ThrowIfNull(contacts);
         float feet = 0f;
         int footCount = 0;
-        foreach (Contact contact in contacts)
+        for (int i = 0; i < contacts.Count; i++) // indexed: a foreach over the interface boxes its enumerator, on a query's hot path
         {
-            if (_character.Limbs[contact.Limb].Kind == LimbKind.Foot)
+            if (_character.Limbs[contacts[i].Limb].Kind == LimbKind.Foot)
             {
-                feet += contact.Position.Y;
+                feet += contacts[i].Position.Y;
                 footCount++;
             }
         }
@@ -474,8 +474,9 @@ internal sealed class TrunkSampler
         float lean = (feet / footCount) + _character.StepReach;
         Vector3 sum = Vector3.Zero;
         int count = 0;
-        foreach (Contact contact in contacts)
+        for (int i = 0; i < contacts.Count; i++)
         {
+            Contact contact = contacts[i];
             if (_character.Limbs[contact.Limb].Kind == LimbKind.Foot || !(contact.Position.Y > lean))
             {
                 sum += contact.Position;
