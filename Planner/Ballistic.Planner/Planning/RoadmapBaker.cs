@@ -597,8 +597,8 @@ public sealed class RoadmapBaker
 
     private static RoadmapNode ToNode(PoseEvaluation pose, int id) => new(id, pose.Pose, pose.Cone, pose.Contacts);
 
-    /// <summary>Runs <paramref name="body"/> for 0..count−1, polling <paramref name="stopNow"/> before each item; true when it stopped the run early.</summary>
-    private static bool RunParallel(int count, int threads, Func<bool> stopNow, Action<int> body)
+    /// <summary>Runs <paramref name="body"/> for 0..count−1 on up to <paramref name="threads"/> threads (in order on this one for 1), polling <paramref name="stopNow"/> before each item; true when it stopped the run early.</summary>
+    internal static bool RunParallel(int count, int threads, Func<bool> stopNow, Action<int> body)
     {
         bool stopped = false;
         if (threads <= 1 || count <= 1)

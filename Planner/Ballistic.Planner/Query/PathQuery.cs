@@ -173,51 +173,20 @@ public sealed class PathQuery
         List<(int From, int To)> pairs = PairsToPrepare();
         var clock = Stopwatch.StartNew();
         int prepared = 0;
-        bool stopped = false;
-        void PrepareOne(PathQuery query, (int From, int To) pair)
-        {
-            using KeptResults.Scope keeping = KeptResults.Keep();
-            query.Plan(_roadmap.Nodes[pair.From], _roadmap.Nodes[pair.To], settings);
-            Interlocked.Increment(ref prepared);
-        }
 
-        bool StopNow() => Volatile.Read(ref stopped) || (termination?.ShouldStopNow(clock.Elapsed, out _, out _) ?? false);
-        if (threads == 1)
+        // Each thread plans with a query of its own (a query is not thread-safe): this one, or one made for a worker.
+        var queries = new System.Collections.Concurrent.ConcurrentBag<PathQuery> { this };
+        RoadmapBaker.RunParallel(pairs.Count, threads, () => termination?.ShouldStopNow(clock.Elapsed, out _, out _) ?? false, i =>
         {
-            foreach ((int From, int To) pair in pairs)
+            PathQuery query = queries.TryTake(out PathQuery? idle) ? idle : new PathQuery(_scene, _roadmap);
+            using (KeptResults.Keep())
             {
-                if (StopNow())
-                {
-                    break;
-                }
-
-                PrepareOne(this, pair);
+                query.Plan(_roadmap.Nodes[pairs[i].From], _roadmap.Nodes[pairs[i].To], settings);
             }
 
-            _scene.TrimKept();
-            return prepared;
-        }
-
-        Parallel.For(
-            0,
-            pairs.Count,
-            new ParallelOptions { MaxDegreeOfParallelism = threads },
-            () => new PathQuery(_scene, _roadmap),
-            (i, loop, query) =>
-            {
-                if (StopNow())
-                {
-                    Volatile.Write(ref stopped, true);
-                    loop.Stop();
-                }
-                else
-                {
-                    PrepareOne(query, pairs[i]);
-                }
-
-                return query;
-            },
-            static _ => { });
+            queries.Add(query);
+            Interlocked.Increment(ref prepared);
+        });
         _scene.TrimKept();
         return prepared;
     }
