@@ -33,10 +33,25 @@ internal sealed class HoldRefiner
     /// </summary>
     internal bool RemembersFrames { get; init; } = true;
 
-    /// <summary>How many times a limb's hold at a frame was solved and checked (limb bones against the level), over every clip refined.</summary>
+    /// <summary>
+    /// Whether a held limb's bones are checked against the level at an interval's two frames only when they are in it
+    /// at the midpoint (true, the default: the check at the ends only decides whether a midpoint in the level counts,
+    /// and a midpoint clear of it holds whatever the ends) or at every frame (tests: the refinement is the same to the bit).
+    /// </summary>
+    internal bool ChecksEndsWhenNeeded { get; init; } = true;
+
+    /// <summary>How many times a limb's hold at a frame was solved (and, checking every frame, its bones checked against the level), over every clip refined.</summary>
     internal int HoldChecks => _holdChecks;
 
+    /// <summary>How many times a held limb's bones were checked against the level, at frames and between them, over every clip refined.</summary>
+    internal int BoneChecks => _boneChecks;
+
+    /// <summary>How many times a held limb's bones were found in the level at a frame, over every clip refined (checking every frame, or asked by a midpoint in the level).</summary>
+    internal int EndsInLevel => _endsInLevel;
+
     private int _holdChecks;
+    private int _boneChecks;
+    private int _endsInLevel;
 
     /// <summary>Creates a refiner for <paramref name="model"/>'s clips, checking bones with <paramref name="collision"/>.</summary>
     public HoldRefiner(CharacterModel model, BodyCollision collision)
@@ -53,32 +68,41 @@ internal sealed class HoldRefiner
     /// </summary>
     private sealed class Pose(HoldRefiner refiner, Vector3[] positions, Quaternion[] rotations)
     {
-        /// <summary>Holds known at the frames still in use (a few: an interval's ends and its halvings' middles).</summary>
-        private readonly List<(AnimationFrame Frame, int Index, (Vector3 Touching, Vector3 Normal, bool Clear) Hold)> _holds = [];
+        /// <summary>Holds known at the frames still in use (a few: an interval's ends and its halvings' middles); Clear is null until checked.</summary>
+        private readonly List<(AnimationFrame Frame, int Index, Vector3 Touching, Vector3 Normal, bool? Clear)> _holds = [];
 
         /// <summary>The frame <see cref="Positions"/> holds solved, or <c>null</c> (another pose: <see cref="Overwritten"/>).</summary>
         private AnimationFrame? _solved;
+
+        /// <summary>Joint positions and rotations for a frame's bones checked while <see cref="Positions"/> holds a midpoint (<see cref="ClearAt"/>).</summary>
+        private readonly Vector3[] _endPositions = new Vector3[positions.Length];
+        private readonly Quaternion[] _endRotations = new Quaternion[rotations.Length];
+        private AnimationFrame? _endSolved;
 
         public Vector3[] Positions => positions;
 
         public Quaternion[] Rotations => rotations;
 
-        /// <summary>How many holds were solved and checked for this clip.</summary>
+        /// <summary>How many holds were solved for this clip.</summary>
         public int Checks { get; private set; }
+
+        /// <summary>How many times a held limb's bones were checked against the level for this clip.</summary>
+        public int BoneChecks { get; set; }
+
+        /// <summary>How many of those checks at a frame found a bone in the level.</summary>
+        public int EndsInLevel { get; private set; }
 
         /// <summary>
         /// At <paramref name="frame"/>, where the limb of <paramref name="phase"/> (index <paramref name="index"/> in
-        /// the clip's phases) touches, its effector's normal, and whether none of its bones is in the level; solved
-        /// into <see cref="Positions"/> when not known yet.
+        /// the clip's phases) touches, its effector's normal, and, checking every frame
+        /// (<see cref="ChecksEndsWhenNeeded"/> off) or when known, whether none of its bones is in the level
+        /// (else <c>null</c>: <see cref="ClearAt"/>); solved into <see cref="Positions"/> when not known yet.
         /// </summary>
-        public (Vector3 Touching, Vector3 Normal, bool Clear) HoldAt(AnimationFrame frame, int index, ContactPhase phase)
+        public (Vector3 Touching, Vector3 Normal, bool? Clear) HoldAt(AnimationFrame frame, int index, ContactPhase phase)
         {
-            foreach ((AnimationFrame known, int i, (Vector3, Vector3, bool) hold) in CollectionsMarshal.AsSpan(_holds))
+            if (Known(frame, index) is int k)
             {
-                if (i == index && ReferenceEquals(known, frame))
-                {
-                    return hold;
-                }
+                return (_holds[k].Touching, _holds[k].Normal, _holds[k].Clear);
             }
 
             Checks++;
@@ -89,13 +113,67 @@ internal sealed class HoldRefiner
             }
 
             RigLimb limb = refiner._model.Limbs[phase.Limb];
-            (Vector3, Vector3, bool) solved = (phase.Touching(limb, positions, rotations), limb.EffectorNormal(rotations), !refiner._collision.LimbCollides(limb, positions, rotations, phase.Position));
-            if (refiner.RemembersFrames)
+            Vector3 touching = phase.Touching(limb, positions, rotations);
+            Vector3 normal = limb.EffectorNormal(rotations);
+            bool? clear = null;
+            if (!refiner.ChecksEndsWhenNeeded)
             {
-                _holds.Add((frame, index, solved));
+                BoneChecks++;
+                clear = !refiner._collision.LimbCollides(limb, positions, rotations, phase.Position);
+                EndsInLevel += clear.Value ? 0 : 1;
             }
 
-            return solved;
+            if (refiner.RemembersFrames)
+            {
+                _holds.Add((frame, index, touching, normal, clear));
+            }
+
+            return (touching, normal, clear);
+        }
+
+        /// <summary>
+        /// Whether none of the bones of the limb of <paramref name="phase"/> is in the level at
+        /// <paramref name="frame"/>: checked when first asked, in buffers of its own (<see cref="Positions"/> may hold
+        /// a midpoint), and remembered with the frame's hold.
+        /// </summary>
+        public bool ClearAt(AnimationFrame frame, int index, ContactPhase phase)
+        {
+            int? k = Known(frame, index);
+            if (k is int known && _holds[known].Clear is bool clear)
+            {
+                return clear;
+            }
+
+            if (!ReferenceEquals(_endSolved, frame) || !refiner.RemembersFrames)
+            {
+                refiner._model.Rig.Solve(frame.Root, frame.Angles, _endPositions, _endRotations);
+                _endSolved = frame;
+            }
+
+            BoneChecks++;
+            bool checkedClear = !refiner._collision.LimbCollides(refiner._model.Limbs[phase.Limb], _endPositions, _endRotations, phase.Position);
+            EndsInLevel += checkedClear ? 0 : 1;
+            if (k is int i)
+            {
+                _holds[i] = _holds[i] with { Clear = checkedClear };
+            }
+
+            return checkedClear;
+        }
+
+        /// <summary>Where the hold of phase <paramref name="index"/> at <paramref name="frame"/> is in <see cref="_holds"/>, or <c>null</c>.</summary>
+        private int? Known(AnimationFrame frame, int index)
+        {
+            ReadOnlySpan<(AnimationFrame Frame, int Index, Vector3 Touching, Vector3 Normal, bool? Clear)> holds = CollectionsMarshal.AsSpan(_holds);
+            for (int i = 0; i < holds.Length; i++)
+            {
+                if (holds[i].Index == index && ReferenceEquals(holds[i].Frame, frame))
+                {
+                    return i;
+                }
+            }
+
+            return null;
         }
 
         /// <summary>Notes that <see cref="Positions"/> and <see cref="Rotations"/> are about to hold a pose of no frame of the clip.</summary>
@@ -141,6 +219,8 @@ internal sealed class HoldRefiner
         }
 
         Interlocked.Add(ref _holdChecks, pose.Checks);
+        Interlocked.Add(ref _boneChecks, pose.BoneChecks);
+        Interlocked.Add(ref _endsInLevel, pose.EndsInLevel);
 
         return (refined, failures);
     }
@@ -193,18 +273,28 @@ internal sealed class HoldRefiner
         var atA = new Vector3[held.Length];
         var atB = new Vector3[held.Length];
         var normals = new Vector3[held.Length];
-        var clear = new bool[held.Length];
+        var clearA = new bool?[held.Length];
+        var clearB = new bool?[held.Length];
         // Frame a for every limb, then frame b: each is solved at most once (alternating would solve each once a limb).
         for (int h = 0; h < held.Length; h++)
         {
-            (atA[h], normals[h], clear[h]) = pose.HoldAt(a, indices[h], held[h]);
+            (atA[h], normals[h], clearA[h]) = pose.HoldAt(a, indices[h], held[h]);
         }
 
         for (int h = 0; h < held.Length; h++)
         {
-            (atB[h], _, bool clearB) = pose.HoldAt(b, indices[h], held[h]);
-            clear[h] &= clearB;
+            (atB[h], _, clearB[h]) = pose.HoldAt(b, indices[h], held[h]);
         }
+
+        // Whether the limb's bones are clear of the level at both frames, so that the midpoint must be too: asked only
+        // of a midpoint in the level.
+        bool Clear(int h) => (clearA[h] ??= pose.ClearAt(a, indices[h], held[h])) && (clearB[h] ??= pose.ClearAt(b, indices[h], held[h]));
+
+        // True when, in the pose last solved, the limb touches within allowed metres of its phase's point
+        // (ContactPhase.Touching) and none of its bones is in the level, unless one is at either frame already.
+        bool Holds(RigLimb limb, ContactPhase phase, float allowed, int h) =>
+            Vector3.Distance(phase.Touching(limb, pose.Positions, pose.Rotations), phase.Position) <= allowed
+            && (!InLevel(limb, phase, pose) || !Clear(h));
 
         bool changed = false;
         bool solved = false; // whether the pose holds the midpoint's angles solved
@@ -220,7 +310,7 @@ internal sealed class HoldRefiner
                 solved = true;
             }
 
-            if (Holds(limb, phase, pose, allowed, clear[h]))
+            if (Holds(limb, phase, allowed, h))
             {
                 continue;
             }
@@ -232,7 +322,7 @@ internal sealed class HoldRefiner
             bool reached = _ik.Reaches(root, trial, touching, Vector3.Lerp(atA[h], atB[h], 0.5f), normals[h]);
             pose.Overwritten();
             rig.Solve(root, trial, positions, rotations);
-            if (!(reached && Holds(limb, phase, pose, allowed, clear[h])) && depth >= MaxDepth)
+            if (!(reached && Holds(limb, phase, allowed, h)) && depth >= MaxDepth)
             {
                 failures.Add((phase.Limb, time));
                 solved = false; // the pose holds the trial, not the angles kept
@@ -261,8 +351,10 @@ internal sealed class HoldRefiner
         }
     }
 
-    /// <summary>True when, in the pose last solved, <paramref name="limb"/> touches within <paramref name="allowed"/> metres of <paramref name="phase"/>'s point (<see cref="ContactPhase.Touching"/>) and, when <paramref name="clear"/>, none of its bones is in the level.</summary>
-    private bool Holds(RigLimb limb, ContactPhase phase, Pose pose, float allowed, bool clear) =>
-        Vector3.Distance(phase.Touching(limb, pose.Positions, pose.Rotations), phase.Position) <= allowed
-        && (!clear || !_collision.LimbCollides(limb, pose.Positions, pose.Rotations, phase.Position));
+    /// <summary>True when, in the pose last solved, a bone of <paramref name="limb"/> (holding <paramref name="phase"/>'s point) is in the level.</summary>
+    private bool InLevel(RigLimb limb, ContactPhase phase, Pose pose)
+    {
+        pose.BoneChecks++;
+        return _collision.LimbCollides(limb, pose.Positions, pose.Rotations, phase.Position);
+    }
 }
