@@ -1074,7 +1074,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                 if (clear && !first)
                 {
                     Array.Copy(kickNow, half, half.Length);
-                    foreach (int d in Model.Limbs[l].ChainDofs)
+                    foreach (int d in Model.Limbs[l].ChainDofSpan)
                     {
                         half[d] = 0.5f * (kickBefore[d] + kickNow[d]);
                     }
@@ -1190,7 +1190,7 @@ public sealed class JumpAnimator : IJumpAnimator, IStepwiseAnimator
                         int other = i - 1 == breaks[l] ? i - 1 : i + 1;
                         Array.Copy(probe, half, half.Length);
                         LimbAt(l, other, half);
-                        foreach (int d in Model.Limbs[l].ChainDofs)
+                        foreach (int d in Model.Limbs[l].ChainDofSpan)
                         {
                             half[d] = 0.5f * (half[d] + probe[d]);
                         }

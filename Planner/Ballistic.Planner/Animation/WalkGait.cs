@@ -1160,6 +1160,20 @@ internal sealed class WalkGait
 
         private bool IsFoot(int l) => _model.Limbs[l].Kind == LimbKind.Foot;
 
+        /// <summary>True when some foot holds a contact at <paramref name="t"/> (seconds into the walk, within 0.1 ms).</summary>
+        private bool FootDown(float t)
+        {
+            foreach (ContactPhase p in _phases)
+            {
+                if (IsFoot(p.Limb) && t >= p.From - 1e-4f && t <= p.To + 1e-4f)
+                {
+                    return true;
+                }
+            }
+
+            return false;
+        }
+
         /// <summary>The walk animated.</summary>
         public Clip Animate() => AnimateWithFewer(int.MaxValue) ?? throw new UnreachableException("A run without a problem limit always finishes.");
 
@@ -1384,8 +1398,7 @@ internal sealed class WalkGait
             {
                 for (int i = 0; i <= _steps; i++)
                 {
-                    float t = Time(i);
-                    if (!_phases.Any(p => IsFoot(p.Limb) && t >= p.From - 1e-4f && t <= p.To + 1e-4f))
+                    if (!FootDown(Time(i)))
                     {
                         Fail(feet[0], "is in the air with every other foot", i);
                         break;
@@ -2010,7 +2023,21 @@ internal sealed class WalkGait
             {
                 Vector3 p = Vector3.Lerp(a, b, k / (float)pieces);
                 Vector3 q = Vector3.Lerp(a, b, (k + 1) / (float)pieces);
-                if (bvh.Raycast(p, q - p, 1f, out RayHit hit) && !held.Any(c => Vector3.Distance(hit.Point, c) <= near))
+                if (bvh.Raycast(p, q - p, 1f, out RayHit hit) && !Near(held, hit.Point, near))
+                {
+                    return true;
+                }
+            }
+
+            return false;
+        }
+
+        /// <summary>True when a point of <paramref name="points"/> is within <paramref name="distance"/> metres of <paramref name="point"/>.</summary>
+        private static bool Near(List<Vector3> points, Vector3 point, float distance)
+        {
+            foreach (Vector3 p in points)
+            {
+                if (Vector3.Distance(point, p) <= distance)
                 {
                     return true;
                 }
@@ -3340,7 +3367,7 @@ internal sealed class WalkGait
                 return false;
             }
 
-            foreach (int j in limb.Chain)
+            foreach (int j in limb.ChainSpan)
             {
                 if (Jumps(j, _rig.JointTurn(j, trial, before), before, earlier))
                 {
@@ -3438,7 +3465,7 @@ internal sealed class WalkGait
         /// <summary>Whether any joint of <paramref name="limb"/>'s chain jumps from <paramref name="before"/> to <paramref name="after"/> (<see cref="Jumps"/>).</summary>
         private bool Jumped(RigLimb limb, float[] after, float[] before, float[]? earlier)
         {
-            foreach (int j in limb.Chain)
+            foreach (int j in limb.ChainSpan)
             {
                 if (Jumps(j, _rig.JointTurn(j, after, before), before, earlier))
                 {
@@ -3596,7 +3623,7 @@ internal sealed class WalkGait
         private float MostTurn(RigLimb limb, float[] from, float[] to)
         {
             float most = 0f;
-            foreach (int j in limb.Chain)
+            foreach (int j in limb.ChainSpan)
             {
                 most = MathF.Max(most, _rig.JointTurn(j, from, to));
             }
