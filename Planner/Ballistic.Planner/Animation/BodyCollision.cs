@@ -61,6 +61,19 @@ internal sealed class BodyCollision
     private readonly int[][] _limbBones;
     private readonly int[] _otherBones;
     private readonly float[] _otherThickness;
+
+    /// <summary>
+    /// How far (metres) beyond its ends' bounds a bone of no limb checked as a box of its thickness can reach: twice
+    /// the thickest, so that a box around every such bone's ends grown by it holds every bone's box.
+    /// </summary>
+    private readonly float _otherReach;
+
+    /// <summary>
+    /// Whether <see cref="OtherBoneColliding(ReadOnlySpan{Vector3})"/> looks for a triangle near a box around all the
+    /// bones of no limb before checking them one by one (true, the default) or checks each every time (tests: the same
+    /// answer).
+    /// </summary>
+    internal bool BoxesOtherBones { get; init; } = true;
     private readonly Triangle[]? _triangles;
 
     /// <summary>Each level triangle's bounds and unit normal (<see cref="Inside"/> reads them for every skin point), computed once.</summary>
@@ -227,6 +240,7 @@ internal sealed class BodyCollision
         // skin: 4 cm beyond the body, in a door's jamb the body cleared).
         var probed = new HashSet<int>(spread.Count == rig.Joints.Count ? _freeSkins.Select(f => f.Joint) : []);
         _otherThickness = [.. others.Select(j => probed.Contains(rig.Joints[j].Parent) ? Thickness : MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
+        _otherReach = (2f * _otherThickness.DefaultIfEmpty(Thickness).Max()) + 1e-3f;
     }
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>
@@ -514,6 +528,16 @@ internal sealed class BodyCollision
     public int OtherBoneColliding(ReadOnlySpan<Vector3> positions)
     {
         Rig rig = _model.Rig;
+        if (_otherBones.Length == 0)
+        {
+            return -1;
+        }
+
+        if (BoxesOtherBones && !AnyTriangleNearOtherBones(positions))
+        {
+            return -1;
+        }
+
         for (int i = 0; i < _otherBones.Length; i++)
         {
             int j = _otherBones[i];
@@ -524,6 +548,28 @@ internal sealed class BodyCollision
         }
 
         return -1;
+    }
+
+    /// <summary>
+    /// Whether a triangle's bounds meet the box around the ends of every bone of no limb, grown by
+    /// <see cref="_otherReach"/>: with none, no such bone's box touches the level.
+    /// </summary>
+    private bool AnyTriangleNearOtherBones(ReadOnlySpan<Vector3> positions)
+    {
+        // With no triangle near the box (a trunk upright over open ground, in the air), no bone's box can touch one,
+        // and one query says so.
+        Rig rig = _model.Rig;
+        Vector3 min = new(float.PositiveInfinity);
+        Vector3 max = new(float.NegativeInfinity);
+        foreach (int j in _otherBones)
+        {
+            Vector3 a = positions[rig.Joints[j].Parent];
+            Vector3 b = positions[j];
+            min = Vector3.Min(min, Vector3.Min(a, b));
+            max = Vector3.Max(max, Vector3.Max(a, b));
+        }
+
+        return _bvh.AnyTriangleNear(new Aabb(min - new Vector3(_otherReach), max + new Vector3(_otherReach)));
     }
 
     /// <summary>True when the segment from <paramref name="a"/> to <paramref name="b"/>, less the part near <paramref name="contact"/>, touches the level (as a 2 mm thin box).</summary>
