@@ -67,13 +67,6 @@ internal sealed class BodyCollision
     /// the thickest, so that a box around every such bone's ends grown by it holds every bone's box.
     /// </summary>
     private readonly float _otherReach;
-
-    /// <summary>
-    /// Whether <see cref="OtherBoneColliding(ReadOnlySpan{Vector3})"/> looks for a triangle near a box around all the
-    /// bones of no limb before checking them one by one (true, the default) or checks each every time (tests: the same
-    /// answer).
-    /// </summary>
-    internal bool BoxesOtherBones { get; init; } = true;
     private readonly Triangle[]? _triangles;
 
     /// <summary>Each level triangle's bounds and unit normal (<see cref="Inside"/> reads them for every skin point), computed once.</summary>
@@ -242,6 +235,13 @@ internal sealed class BodyCollision
         _otherThickness = [.. others.Select(j => probed.Contains(rig.Joints[j].Parent) ? Thickness : MathF.Max(Thickness, 0.5f * model.BoneRadii[j]))];
         _otherReach = (2f * _otherThickness.DefaultIfEmpty(Thickness).Max()) + 1e-3f;
     }
+
+    /// <summary>
+    /// Whether <see cref="OtherBoneColliding(ReadOnlySpan{Vector3})"/> looks for a triangle near a box around all the
+    /// bones of no limb before checking them one by one (true, the default) or checks each every time (tests: the same
+    /// answer).
+    /// </summary>
+    internal bool BoxesOtherBones { get; init; } = true;
 
     /// <summary>The bones (joint indices; each is the segment from its parent) checked with limb <paramref name="limb"/>.</summary>
     public IReadOnlyList<int> LimbBones(int limb) => _limbBones[limb];

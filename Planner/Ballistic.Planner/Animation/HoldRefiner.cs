@@ -118,6 +118,8 @@ internal sealed class HoldRefiner
             bool? clear = null;
             if (!refiner.ChecksEndsWhenNeeded)
             {
+                // The tests' reference: checked here, on the pose just solved, not through ClearAt, so that a fault in
+                // ClearAt cannot hide in both ways of refining.
                 BoneChecks++;
                 clear = !refiner._collision.LimbCollides(limb, positions, rotations, phase.Position);
                 EndsInLevel += clear.Value ? 0 : 1;

@@ -2023,7 +2023,7 @@ internal sealed class WalkGait
             {
                 Vector3 p = Vector3.Lerp(a, b, k / (float)pieces);
                 Vector3 q = Vector3.Lerp(a, b, (k + 1) / (float)pieces);
-                if (bvh.Raycast(p, q - p, 1f, out RayHit hit) && !Near(held, hit.Point, near))
+                if (bvh.Raycast(p, q - p, 1f, out RayHit hit) && !AnyWithin(held, hit.Point, near))
                 {
                     return true;
                 }
@@ -2033,7 +2033,7 @@ internal sealed class WalkGait
         }
 
         /// <summary>True when a point of <paramref name="points"/> is within <paramref name="distance"/> metres of <paramref name="point"/>.</summary>
-        private static bool Near(List<Vector3> points, Vector3 point, float distance)
+        private static bool AnyWithin(List<Vector3> points, Vector3 point, float distance)
         {
             foreach (Vector3 p in points)
             {

@@ -84,9 +84,8 @@ public sealed class HoldRefinerTests
         {
             foreach ((string name, JumpAnimation clip, BodyCollision collision) in clips)
             {
-                WalkWorld world = name.StartsWith("desert", StringComparison.Ordinal) ? desert : gap;
-                var lazy = new HoldRefiner(world.Model, collision);
-                var every = new HoldRefiner(world.Model, collision) { ChecksEndsWhenNeeded = false };
+                var lazy = new HoldRefiner(clip.Model, collision);
+                var every = new HoldRefiner(clip.Model, collision) { ChecksEndsWhenNeeded = false };
                 (List<AnimationFrame> frames, List<(int Limb, float Time)> failures) = lazy.Refine(clip);
                 (List<AnimationFrame> expected, List<(int Limb, float Time)> expectedFailures) = every.Refine(clip);
                 Assert.That(frames.Select(f => (f.Time, f.Root)), Is.EqualTo(expected.Select(f => (f.Time, f.Root))), name);
@@ -94,7 +93,7 @@ public sealed class HoldRefinerTests
                 Assert.That(failures, Is.EqualTo(expectedFailures), name);
                 if (collision == cubed)
                 {
-                    (List<AnimationFrame> clear, _) = new HoldRefiner(world.Model, Collision(gap)).Refine(clip);
+                    (List<AnimationFrame> clear, _) = new HoldRefiner(clip.Model, Collision(gap)).Refine(clip);
                     Assert.That(expected.Count(f => f.Time > between - 0.05f && f.Time < between + 0.05f), Is.GreaterThan(clear.Count(f => f.Time > between - 0.05f && f.Time < between + 0.05f)), "frames added where the leg passes the cube");
                 }
 
