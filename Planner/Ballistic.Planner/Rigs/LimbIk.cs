@@ -153,6 +153,8 @@ internal sealed class LimbIk
         Span<Vector3> axes = stackalloc Vector3[n];
         Span<Quaternion> turns = stackalloc Quaternion[n];
         ReadOnlySpan<int> chain = limb.ChainSpan;
+        ReadOnlySpan<int> chainDofs = limb.ChainDofSpan;
+        ReadOnlySpan<JointAxis> dofs = Rig.DofSpan;
 
         Vector3 goalNormal = targetNormal is Vector3 tn ? Vector3.Normalize(tn) : Vector3.UnitY;
         float positionError = float.PositiveInfinity;
@@ -203,7 +205,7 @@ internal sealed class LimbIk
             Rig.WorldAxes(chain, turns, rotations, axes);
             for (int c = 0; c < n; c++)
             {
-                int dof = limb.ChainDofs[c];
+                int dof = chainDofs[c];
                 Vector3 axis = axes[c];
                 Vector3 linear = Vector3.Cross(axis, p - positions[Rig.JointOfDof(dof)]);
                 jacobian[c] = linear.X;
@@ -223,8 +225,8 @@ internal sealed class LimbIk
             bool dropped = false;
             for (int c = 0; c < n && Settings.ReleaseLimits; c++)
             {
-                int dof = limb.ChainDofs[c];
-                JointAxis range = Rig.Dofs[dof];
+                int dof = chainDofs[c];
+                ref readonly JointAxis range = ref dofs[dof];
                 if ((q[dof] <= range.Min + LimitSlack && step[c] < 0) || (q[dof] >= range.Max - LimitSlack && step[c] > 0))
                 {
                     for (int r = 0; r < rows; r++)
@@ -250,8 +252,8 @@ internal sealed class LimbIk
             double scale = largest > Settings.MaxStep ? Settings.MaxStep / largest : 1.0;
             for (int c = 0; c < n; c++)
             {
-                int dof = limb.ChainDofs[c];
-                q[dof] = Rig.Dofs[dof].Clamp(q[dof] + (float)(step[c] * scale));
+                int dof = chainDofs[c];
+                q[dof] = dofs[dof].Clamp(q[dof] + (float)(step[c] * scale));
             }
         }
 
@@ -279,10 +281,14 @@ internal sealed class LimbIk
         }
     }
 
-    /// <summary>Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e with a Cholesky factorisation of the small m × m system.</summary>
+    /// <summary>
+    /// Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e with a Cholesky factorisation of the small m × m system. The IK's two shapes (five
+    /// rows: a position and a normal target; three: a position) are solved with every entry in a local
+    /// (<see cref="SolveFive"/>, <see cref="SolveThree"/>): the same operations in the same order as the loops of
+    /// <see cref="SolveRows"/>, so the same step to the last bit, without their index arithmetic and bounds checks.
+    /// </summary>
     internal static void SolveSmall(ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n, double damping)
     {
-        Span<double> a = stackalloc double[MaxRows * MaxRows];
         if (j.Length < m * n || e.Length < m || dq.Length < n || m > MaxRows)
         {
             throw new ArgumentException($"A {m} × {n} step needs a Jacobian of {m * n}, an error of {m} and a step of {n} values, at most {MaxRows} rows.");
@@ -291,15 +297,31 @@ internal sealed class LimbIk
         // The products J Jᵀ by references into the rows (no bounds check per term: the lengths are checked above), each
         // sum in the same order as ever, so the step is the same to the last bit.
         ref double first = ref MemoryMarshal.GetReference(j);
+        Span<double> a = stackalloc double[MaxRows * MaxRows];
         if (m == 5)
         {
             Products5(ref first, n, a, damping * damping);
+            SolveFive(a, ref first, e, dq, n);
+        }
+        else if (m == 3)
+        {
+            Products(ref first, m, n, a, damping);
+            SolveThree(a, ref first, e, dq, n);
         }
         else
         {
             Products(ref first, m, n, a, damping);
+            SolveRows(a, j, e, dq, m, n);
         }
+    }
 
+    /// <summary>
+    /// The small solver's loops (any number of rows up to <see cref="MaxRows"/>): the Cholesky factor L of
+    /// <paramref name="a"/> (J Jᵀ + λ² I, its lower triangle, <paramref name="m"/> × <paramref name="m"/>) in place,
+    /// then L Lᵀ x = e forward and back, then Δq = Jᵀ x. The reference the unrolled shapes are tested against.
+    /// </summary>
+    internal static void SolveRows(Span<double> a, ReadOnlySpan<double> j, ReadOnlySpan<double> e, Span<double> dq, int m, int n)
+    {
         // Cholesky: A = L Lᵀ, in place in the lower triangle.
         for (int r = 0; r < m; r++)
         {
@@ -347,6 +369,79 @@ internal sealed class LimbIk
             }
 
             dq[c] = sum;
+        }
+    }
+
+    /// <summary>The Cholesky factor's diagonal entry from what is left of the system's: never below √1e-18.</summary>
+    private static double Diagonal(double rest) => Math.Sqrt(Math.Max(rest, 1e-18));
+
+    /// <summary>
+    /// <see cref="SolveRows"/> for five rows (<paramref name="a"/> filled by <see cref="Products5"/>, the Jacobian's
+    /// rows of <paramref name="n"/> from <paramref name="first"/>), every subtraction in the loops' order.
+    /// </summary>
+    private static void SolveFive(ReadOnlySpan<double> a, ref double first, ReadOnlySpan<double> e, Span<double> dq, int n)
+    {
+        double l00 = Diagonal(a[0]);
+        double l10 = a[5] / l00;
+        double l11 = Diagonal(a[6] - (l10 * l10));
+        double l20 = a[10] / l00;
+        double l21 = (a[11] - (l20 * l10)) / l11;
+        double l22 = Diagonal(a[12] - (l20 * l20) - (l21 * l21));
+        double l30 = a[15] / l00;
+        double l31 = (a[16] - (l30 * l10)) / l11;
+        double l32 = (a[17] - (l30 * l20) - (l31 * l21)) / l22;
+        double l33 = Diagonal(a[18] - (l30 * l30) - (l31 * l31) - (l32 * l32));
+        double l40 = a[20] / l00;
+        double l41 = (a[21] - (l40 * l10)) / l11;
+        double l42 = (a[22] - (l40 * l20) - (l41 * l21)) / l22;
+        double l43 = (a[23] - (l40 * l30) - (l41 * l31) - (l42 * l32)) / l33;
+        double l44 = Diagonal(a[24] - (l40 * l40) - (l41 * l41) - (l42 * l42) - (l43 * l43));
+
+        double x0 = e[0] / l00;
+        double x1 = (e[1] - (l10 * x0)) / l11;
+        double x2 = (e[2] - (l20 * x0) - (l21 * x1)) / l22;
+        double x3 = (e[3] - (l30 * x0) - (l31 * x1) - (l32 * x2)) / l33;
+        double x4 = (e[4] - (l40 * x0) - (l41 * x1) - (l42 * x2) - (l43 * x3)) / l44;
+
+        x4 /= l44;
+        x3 = (x3 - (l43 * x4)) / l33;
+        x2 = (x2 - (l32 * x3) - (l42 * x4)) / l22;
+        x1 = (x1 - (l21 * x2) - (l31 * x3) - (l41 * x4)) / l11;
+        x0 = (x0 - (l10 * x1) - (l20 * x2) - (l30 * x3) - (l40 * x4)) / l00;
+
+        ref double r1 = ref Unsafe.Add(ref first, n);
+        ref double r2 = ref Unsafe.Add(ref first, 2 * n);
+        ref double r3 = ref Unsafe.Add(ref first, 3 * n);
+        ref double r4 = ref Unsafe.Add(ref first, 4 * n);
+        for (int c = 0; c < n; c++)
+        {
+            dq[c] = 0 + (Unsafe.Add(ref first, c) * x0) + (Unsafe.Add(ref r1, c) * x1) + (Unsafe.Add(ref r2, c) * x2) + (Unsafe.Add(ref r3, c) * x3) + (Unsafe.Add(ref r4, c) * x4);
+        }
+    }
+
+    /// <summary><see cref="SolveFive"/> for three rows (a position target; <paramref name="a"/> filled by <see cref="Products"/>).</summary>
+    private static void SolveThree(ReadOnlySpan<double> a, ref double first, ReadOnlySpan<double> e, Span<double> dq, int n)
+    {
+        double l00 = Diagonal(a[0]);
+        double l10 = a[3] / l00;
+        double l11 = Diagonal(a[4] - (l10 * l10));
+        double l20 = a[6] / l00;
+        double l21 = (a[7] - (l20 * l10)) / l11;
+        double l22 = Diagonal(a[8] - (l20 * l20) - (l21 * l21));
+
+        double x0 = e[0] / l00;
+        double x1 = (e[1] - (l10 * x0)) / l11;
+        double x2 = (e[2] - (l20 * x0) - (l21 * x1)) / l22;
+
+        x2 /= l22;
+        x1 = (x1 - (l21 * x2)) / l11;
+        x0 = (x0 - (l10 * x1) - (l20 * x2)) / l00;
+
+        ref double r1 = ref Unsafe.Add(ref first, n);
+        ref double r2 = ref Unsafe.Add(ref first, 2 * n);
+        for (int c = 0; c < n; c++)
+        {
+            dq[c] = 0 + (Unsafe.Add(ref first, c) * x0) + (Unsafe.Add(ref r1, c) * x1) + (Unsafe.Add(ref r2, c) * x2);
         }
     }
 

@@ -73,6 +73,9 @@ public sealed class Rig
     /// <summary>The degrees of freedom in configuration order.</summary>
     internal IReadOnlyList<JointAxis> Dofs => _dofs;
 
+    /// <summary><see cref="Dofs"/> as a span: read by the IK's inner loops without an interface call per axis.</summary>
+    internal ReadOnlySpan<JointAxis> DofSpan => _dofs;
+
     /// <summary>The root joint's position in the trunk frame, metres.</summary>
     public Vector3 RootOffset { get; }
 

@@ -272,6 +272,42 @@ public sealed class RigTests
         }
     }
 
+    /// <summary>
+    /// The small solver's unrolled shapes (five rows, three rows) give the step its loops give to the last bit:
+    /// Jacobians of one to twelve columns whose values differ in size by up to nine orders and are sometimes exactly
+    /// zero (a column dropped at its limit), dampings down to none (a system near singular, its diagonal floored).
+    /// </summary>
+    [Test]
+    public void UnrolledSmallSolvesAreTheLoopsStepsBitForBit()
+    {
+        var random = new Random(23);
+        int compared = 0;
+        foreach (int m in new[] { 3, 5 })
+        {
+            for (int n = 1; n <= 12; n++)
+            {
+                for (int trial = 0; trial < 60; trial++)
+                {
+                    double[] j = [.. Enumerable.Range(0, m * n).Select(_ => random.Next(6) == 0 ? 0.0 : (random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-6, 3)))];
+                    double[] e = [.. Enumerable.Range(0, m).Select(_ => (random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-4, 1)))];
+                    double damping = trial % 10 == 0 ? 0.0 : 0.03 * random.NextDouble();
+                    double[] unrolled = new double[n];
+                    double[] looped = new double[n];
+                    LimbIk.SolveSmall(j, e, unrolled, m, n, damping);
+                    double[] a = new double[25];
+                    LimbIk.Products(ref j[0], m, n, a, damping);
+                    LimbIk.SolveRows(a, j, e, looped, m, n);
+                    long[] unrolledBits = [.. unrolled.Select(BitConverter.DoubleToInt64Bits)];
+                    long[] loopedBits = [.. looped.Select(BitConverter.DoubleToInt64Bits)];
+                    Assert.That(unrolledBits, Is.EqualTo(loopedBits).AsCollection, $"{m} rows, {n} columns, trial {trial}");
+                    compared += looped.Count(v => v != 0 && double.IsFinite(v));
+                }
+            }
+        }
+
+        Assert.That(compared, Is.GreaterThan(5000), "nonzero finite steps compared");
+    }
+
     [Test]
     public void SmallSolverRefusesSpansTooShortForTheStep()
     {
