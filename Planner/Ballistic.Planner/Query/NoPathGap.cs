@@ -83,27 +83,14 @@ internal static class NoPathGap
         // The easiest gap between the two sides: the pair a jump across needs the least takeoff speed for (a ballistic
         // jump of the trunk rising h over d across needs at least √(g (h + √(h² + d²)))), and what refuses a move there.
         float g0 = scene.Steering.Limits.Gravity;
-        (float least, int a, int b) = (float.PositiveInfinity, -1, -1);
-        foreach (int f in starts)
-        {
-            Vector3 p = NodeOf(f).Pose.Position;
-            foreach (int g in goals)
-            {
-                float speed = LeastSpeed(NodeOf(g).Pose.Position - p, g0);
-                if (speed < least)
-                {
-                    (least, a, b) = (speed, f, g);
-                }
-            }
-        }
-
+        (float least, int a, int b) = Easiest([.. starts.Select(id => NodeOf(id).Pose.Position)], [.. goals.Select(id => NodeOf(id).Pose.Position)], g0);
         if (a < 0)
         {
             return text;
         }
 
-        RoadmapNode near = NodeOf(a);
-        RoadmapNode far = NodeOf(b);
+        RoadmapNode near = NodeOf(starts[a]);
+        RoadmapNode far = NodeOf(goals[b]);
         Vector3 step = far.ContactCentre - near.ContactCentre;
         float limit = scene.Character.TakeoffSpeedMax;
         string gap = string.Create(CultureInfo.InvariantCulture, $"; the easiest jump between them, from {Point(near.ContactCentre)} to {Point(far.ContactCentre)} ({new Vector2(step.X, step.Z).Length():0.0} m across, {MathF.Abs(step.Y):0.0} m {(step.Y >= 0f ? "up" : "down")}), needs a takeoff of at least {least:0.00} m/s");
@@ -170,6 +157,127 @@ internal static class NoPathGap
 
         return reached;
     }
+
+    /// <summary>
+    /// The pair (index into <paramref name="from"/>, index into <paramref name="to"/>; world positions) a jump between
+    /// needs the least takeoff speed for (<see cref="LeastSpeed"/>), and that speed: the first such pair scanning
+    /// <paramref name="from"/> in order and, for each, <paramref name="to"/> in order (<see cref="EasiestByEveryPair"/>
+    /// gives the same). (∞, −1, −1) when either side is empty. Two large sides (two islands of a big roadmap, thousands
+    /// of stances each) are not scanned pair by pair: <paramref name="to"/> is put in a grid across, and from each
+    /// point of <paramref name="from"/> the grid's cells are visited ring by ring outward, a cell only when the least
+    /// speed any point in it could need (the cell's lowest point, at its nearest across) is below the best so far, and
+    /// the rings only while one could be.
+    /// </summary>
+    internal static (float Least, int From, int To) Easiest(IReadOnlyList<Vector3> from, IReadOnlyList<Vector3> to, float g)
+    {
+        if ((long)from.Count * to.Count <= PairsScanned)
+        {
+            return EasiestByEveryPair(from, to, g);
+        }
+
+        // The grid: about four points a cell, over the bounds of `to` across (x, z); each cell's points in list order and its lowest height.
+        float minX = float.PositiveInfinity, minZ = float.PositiveInfinity, maxX = float.NegativeInfinity, maxZ = float.NegativeInfinity, lowest = float.PositiveInfinity;
+        foreach (Vector3 q in to)
+        {
+            (minX, maxX, minZ, maxZ, lowest) = (MathF.Min(minX, q.X), MathF.Max(maxX, q.X), MathF.Min(minZ, q.Z), MathF.Max(maxZ, q.Z), MathF.Min(lowest, q.Y));
+        }
+
+        float size = MathF.Max(MathF.Max(maxX - minX, maxZ - minZ) / MathF.Sqrt(to.Count / 4f), 1e-3f);
+        int columns = Math.Min(1024, (int)((maxX - minX) / size) + 1);
+        int rows = Math.Min(1024, (int)((maxZ - minZ) / size) + 1);
+        size = MathF.Max((maxX - minX) / columns, (maxZ - minZ) / rows) * (1f + 1e-6f) + 1e-6f;
+        var cells = new List<int>[columns * rows];
+        var cellLow = new float[columns * rows];
+        Array.Fill(cellLow, float.PositiveInfinity);
+        for (int i = 0; i < to.Count; i++)
+        {
+            int cell = Cell(to[i].X, minX, columns) + (columns * Cell(to[i].Z, minZ, rows));
+            (cells[cell] ??= []).Add(i);
+            cellLow[cell] = MathF.Min(cellLow[cell], to[i].Y);
+        }
+
+        // Distances across to a cell are taken this much short (metres): a point rounded into a cell may lie a few ulps outside it.
+        float slack = (1e-5f * (MathF.Abs(minX) + MathF.Abs(minZ) + (columns * size) + (rows * size))) + 1e-5f;
+        (float least, int a, int b) = (float.PositiveInfinity, -1, -1);
+        for (int f = 0; f < from.Count; f++)
+        {
+            Vector3 p = from[f];
+            int cx = Cell(p.X, minX, columns);
+            int cz = Cell(p.Z, minZ, rows);
+            int rings = Math.Max(Math.Max(cx, columns - 1 - cx), Math.Max(cz, rows - 1 - cz));
+            for (int ring = 0; ring <= rings; ring++)
+            {
+                // Every cell of this ring and beyond lies at least (ring − 1) cells across from p.
+                if (Pruned(Bound(lowest - p.Y, MathF.Max(0f, ((ring - 1) * size) - slack), g), least))
+                {
+                    break;
+                }
+
+                for (int z = cz - ring; z <= cz + ring; z++)
+                {
+                    for (int x = cx - ring; x <= cx + ring; x++)
+                    {
+                        if ((Math.Abs(x - cx) != ring && Math.Abs(z - cz) != ring) || x < 0 || z < 0 || x >= columns || z >= rows || cells[x + (columns * z)] is not List<int> points)
+                        {
+                            continue;
+                        }
+
+                        float dx = MathF.Max(0f, MathF.Max(minX + (x * size) - p.X, p.X - (minX + ((x + 1) * size))));
+                        float dz = MathF.Max(0f, MathF.Max(minZ + (z * size) - p.Z, p.Z - (minZ + ((z + 1) * size))));
+                        if (Pruned(Bound(cellLow[x + (columns * z)] - p.Y, MathF.Max(0f, MathF.Sqrt((dx * dx) + (dz * dz)) - slack), g), least))
+                        {
+                            continue;
+                        }
+
+                        foreach (int t in points)
+                        {
+                            // As the scan pair by pair would: a lower speed, or for this same point an equal one further up the list.
+                            float speed = LeastSpeed(to[t] - p, g);
+                            if (speed < least || (speed == least && a == f && t < b))
+                            {
+                                (least, a, b) = (speed, f, t);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+
+        return (least, a, b);
+
+        int Cell(float v, float min, int count) => Math.Clamp((int)((v - min) / size), 0, count - 1);
+    }
+
+    /// <summary>Sides whose pairs number at most this are scanned pair by pair (<see cref="EasiestByEveryPair"/>).</summary>
+    internal const int PairsScanned = 16_384;
+
+    /// <summary><see cref="Easiest"/> by every pair, in order: the reference.</summary>
+    internal static (float Least, int From, int To) EasiestByEveryPair(IReadOnlyList<Vector3> from, IReadOnlyList<Vector3> to, float g)
+    {
+        (float least, int a, int b) = (float.PositiveInfinity, -1, -1);
+        for (int f = 0; f < from.Count; f++)
+        {
+            for (int t = 0; t < to.Count; t++)
+            {
+                float speed = LeastSpeed(to[t] - from[f], g);
+                if (speed < least)
+                {
+                    (least, a, b) = (speed, f, t);
+                }
+            }
+        }
+
+        return (least, a, b);
+    }
+
+    /// <summary>
+    /// <see cref="LeastSpeed"/> of a jump rising <paramref name="rise"/> over <paramref name="across"/> metres: a
+    /// lower bound of it for any jump rising more or travelling farther across.
+    /// </summary>
+    private static float Bound(float rise, float across, float g) => MathF.Sqrt(g * (rise + MathF.Sqrt((rise * rise) + (across * across))));
+
+    /// <summary>Whether a cell (or a ring of cells) whose jumps need at least <paramref name="bound"/> can hold none below <paramref name="least"/>, with room for rounding; never for a bound that is not a number.</summary>
+    private static bool Pruned(float bound, float least) => bound > (least * (1f + 1e-4f)) + 1e-6f;
 
     /// <summary>The least takeoff speed (m/s) of a ballistic jump displaced by <paramref name="d"/> (world metres) under gravity <paramref name="g"/> (m/s²).</summary>
     internal static float LeastSpeed(Vector3 d, float g)

@@ -86,6 +86,54 @@ public sealed class NoPathGapTests
         });
     }
 
+    /// <summary>
+    /// Two large sides' easiest gap, found through a grid of one side, is the pair a scan of every pair finds, tie
+    /// for tie: 40 seeded pairs of islands of 150 to 400 stances each (a side spread over a dune field or bunched on a
+    /// roof, the islands apart, overlapping, one above the other, some stances of either side outside the other's
+    /// bounds), every third with one side mirrored across a stance of the other, so that two pairs need exactly the least speed.
+    /// </summary>
+    [Test]
+    public void TheEasiestGapBetweenTwoLargeSidesIsThePairEveryPairScanFinds()
+    {
+        var random = new Random(29);
+        int tied = 0;
+        for (int trial = 0; trial < 40; trial++)
+        {
+            List<Vector3> Island(int count, Vector3 centre, float spread, float height)
+            {
+                var points = new List<Vector3>(count);
+                for (int i = 0; i < count; i++)
+                {
+                    points.Add(centre + new Vector3(((random.NextSingle() * 2f) - 1f) * spread, random.NextSingle() * height, ((random.NextSingle() * 2f) - 1f) * spread * (trial % 4 == 0 ? 0.05f : 1f)));
+                }
+
+                return points;
+            }
+
+            List<Vector3> from = Island(150 + random.Next(250), new Vector3(random.NextSingle() * 20f, 0f, random.NextSingle() * 20f), 2f + (random.NextSingle() * 30f), random.NextSingle() * 8f);
+            List<Vector3> to = Island(150 + random.Next(250), new Vector3(random.NextSingle() * 40f, (random.NextSingle() * 10f) - 5f, random.NextSingle() * 40f), 1f + (random.NextSingle() * 20f), random.NextSingle() * 6f);
+            if (trial % 3 == 0)
+            {
+                // Ties: the side's stances mirrored across the first stance of the other (the same speed from there to
+                // the bit), listed after them; that stance the nearest one by far, the others 200 m off.
+                Vector3 first = from[0];
+                to.AddRange([.. to.Select(q => new Vector3((2f * first.X) - q.X, q.Y, q.Z))]);
+                for (int i = 1; i < from.Count; i++)
+                {
+                    from[i] += new Vector3(200f, 0f, 200f);
+                }
+            }
+
+            Assert.That((long)from.Count * to.Count, Is.GreaterThan(NoPathGap.PairsScanned), "sides large enough for the grid");
+            (float Least, int From, int To) byGrid = NoPathGap.Easiest(from, to, 9.81f);
+            (float Least, int From, int To) byPairs = NoPathGap.EasiestByEveryPair(from, to, 9.81f);
+            Assert.That(byGrid, Is.EqualTo(byPairs), $"trial {trial}");
+            tied += to.Count(q => NoPathGap.LeastSpeed(q - from[byPairs.From], 9.81f) == byPairs.Least) > 1 ? 1 : 0;
+        }
+
+        Assert.That(tied, Is.GreaterThan(5), "trials in which several stances need exactly the least speed");
+    }
+
     private static string NoPath(Level level, Vector3 from, Vector3 to)
     {
         var scene = PlanningScene.Create(level, CharacterPresets.Skeleton());
