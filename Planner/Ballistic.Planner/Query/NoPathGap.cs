@@ -213,31 +213,45 @@ internal static class NoPathGap
                     break;
                 }
 
-                for (int z = cz - ring; z <= cz + ring; z++)
+                // The ring's cells only, not the square inside it: its bottom and top rows, then its two sides between.
+                for (int x = cx - ring; x <= cx + ring; x++)
                 {
-                    for (int x = cx - ring; x <= cx + ring; x++)
+                    Open(x, cz - ring);
+                    if (ring > 0)
                     {
-                        if ((Math.Abs(x - cx) != ring && Math.Abs(z - cz) != ring) || x < 0 || z < 0 || x >= columns || z >= rows || cells[x + (columns * z)] is not List<int> points)
-                        {
-                            continue;
-                        }
+                        Open(x, cz + ring);
+                    }
+                }
 
-                        float dx = MathF.Max(0f, MathF.Max(minX + (x * size) - p.X, p.X - (minX + ((x + 1) * size))));
-                        float dz = MathF.Max(0f, MathF.Max(minZ + (z * size) - p.Z, p.Z - (minZ + ((z + 1) * size))));
-                        if (Pruned(Bound(cellLow[x + (columns * z)] - p.Y, MathF.Max(0f, MathF.Sqrt((dx * dx) + (dz * dz)) - slack), g), least))
-                        {
-                            continue;
-                        }
+                for (int z = cz - ring + 1; z <= cz + ring - 1; z++)
+                {
+                    Open(cx - ring, z);
+                    Open(cx + ring, z);
+                }
+            }
 
-                        foreach (int t in points)
-                        {
-                            // As the scan pair by pair would: a lower speed, or for this same point an equal one further up the list.
-                            float speed = LeastSpeed(to[t] - p, g);
-                            if (speed < least || (speed == least && a == f && t < b))
-                            {
-                                (least, a, b) = (speed, f, t);
-                            }
-                        }
+            // Cell (x, z)'s points from p, unless the cell is outside the grid, empty, or too far across or too high to hold a better pair.
+            void Open(int x, int z)
+            {
+                if (x < 0 || z < 0 || x >= columns || z >= rows || cells[x + (columns * z)] is not List<int> points)
+                {
+                    return;
+                }
+
+                float dx = MathF.Max(0f, MathF.Max(minX + (x * size) - p.X, p.X - (minX + ((x + 1) * size))));
+                float dz = MathF.Max(0f, MathF.Max(minZ + (z * size) - p.Z, p.Z - (minZ + ((z + 1) * size))));
+                if (Pruned(Bound(cellLow[x + (columns * z)] - p.Y, MathF.Max(0f, MathF.Sqrt((dx * dx) + (dz * dz)) - slack), g), least))
+                {
+                    return;
+                }
+
+                foreach (int t in points)
+                {
+                    // As the scan pair by pair would: a lower speed, or for this same point an equal one further up the list.
+                    float speed = LeastSpeed(to[t] - p, g);
+                    if (speed < least || (speed == least && a == f && t < b))
+                    {
+                        (least, a, b) = (speed, f, t);
                     }
                 }
             }
