@@ -2402,6 +2402,9 @@ internal sealed class WalkGait
         /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
         /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
         /// at most one, none shorter than the least half-cycle (<see cref="MinHalfCycle"/>, shorter for short legs: <see cref="FullSizeLeg"/>).
+        /// Where the first and last leave less than a half-cycle between them, there are two, split where half the cost
+        /// is reached (a turn in place made first is half made there), each at least a half-cycle (or half the walk).
+        /// A walk shorter than two half-cycles, or costing at most one, is split at half its time.
         /// </summary>
         private float[] Boundaries(int[] group, int first)
         {
@@ -2446,7 +2449,11 @@ internal sealed class WalkGait
             float span = lastStart - firstEnd;
             if (span < _halfCycle)
             {
-                return [0f, 0.5f * duration, duration];
+                // Two half-cycles, split even in cost: a short walk that is mostly a turn in place turns most of the
+                // way in its first half, and a group held on the start contacts until half its time drifts from under
+                // its hips (a spider's front foot, 0.6 m from its trunk's centre, 0.62 L as the trunk turned 23°).
+                float least = MathF.Min(_halfCycle, 0.5f * duration);
+                return [0f, Math.Clamp(TimeAtCost(0.5f * total), least, duration - least), duration];
             }
 
             float c0 = CostAt(firstEnd);

@@ -172,6 +172,52 @@ public sealed class WalkGaitTests
     }
 
     /// <summary>
+    /// A spider's short walk that is mostly a turn in place (23° in 0.49 s, then 4 cm in 0.3 s) lets go of its start
+    /// contacts by the time its trunk has made about three quarters of the turn (73–77 %): its two half-cycles are
+    /// split even in how far the trunk moves and turns, not in time. Before, they were split at half the walk's time,
+    /// and the group held on the start contacts until the turn, done first, was over (99 %): on the doorway level (the
+    /// sweep's request 2 there) the spider's right front foot, 0.6 m from its trunk's centre, held its contact as the
+    /// trunk turned 23° and was 0.62 L sideways of its place; 0.51 L now.
+    /// </summary>
+    [Test]
+    public void ASpiderTurningInAShortWalkLetsGoOfItsStartContactsWhileItTurns()
+    {
+        WalkWorld world = WalkWorld.Create(ForeignLevels.Get("doorway").Level, "spider");
+        Vector3 facing = Vector3.Normalize(new Vector3(MathF.Sin(0.4f), 0f, MathF.Cos(0.4f)));
+        RoadmapNode from = world.Stance(new Vector3(-3f, 0f, 2.5f), 0, Vector3.UnitZ);
+        RoadmapNode to = world.Stance(WalkWorld.Centre(from) + (0.02f * facing), 1, facing);
+        Walk walk = world.Walk(from, to);
+        float turn = Rotations.AngleBetween(from.Pose.Rotation, to.Pose.Rotation);
+        TestContext.Out.WriteLine($"turn {turn * 180f / MathF.PI:0.0}°, start turn {walk.StartTurn:0.00} s, end turn {walk.EndTurn:0.00} s, {walk.Length:0.00} m, {walk.Duration:0.00} s");
+        Assert.That(walk.StartTurn + walk.EndTurn, Is.GreaterThan(0.5f * walk.Duration), "mostly a turn in place");
+        JumpAnimation animation = world.Animator.Animate([walk]);
+        Assert.That(animation.Problems.Select(p => p.Reason), Is.Empty);
+        Assert.Multiple(() =>
+        {
+            for (int l = 0; l < world.Model.Limbs.Count; l++)
+            {
+                if (world.Model.Limbs[l].Kind != LimbKind.Foot || from.Contacts.Count == 0)
+                {
+                    continue;
+                }
+
+                // The foot's first hold (from the walk's start) and how far the trunk has turned when it ends.
+                ContactPhase first = animation.ContactPhases.Where(c => c.Limb == l).MinBy(c => c.From);
+                float turned = Rotations.AngleBetween(from.Pose.Rotation, animation.RootAt(first.To).Rotation) / turn;
+                TestContext.Out.WriteLine($"{world.Model.Limbs[l].Name}: held {first.From:0.00}-{first.To:0.00} s, trunk {turned:P0} round");
+                Assert.That(turned, Is.LessThanOrEqualTo(LetGoShare), $"{world.Model.Limbs[l].Name} lets go of its start contact");
+            }
+        });
+    }
+
+    /// <summary>
+    /// The most of its turn a trunk has made when a foot lets go of its start contact in
+    /// <see cref="ASpiderTurningInAShortWalkLetsGoOfItsStartContactsWhileItTurns"/>: half, and what it turns while the
+    /// swings overlap either side of the boundary.
+    /// </summary>
+    private const float LetGoShare = 0.8f;
+
+    /// <summary>
     /// A walk whose upright steps cannot all be held (here beside a block, where the stance the walk ends on is cramped)
     /// is walked again with shorter steps only around the trouble, not at the classic short step all along: seen in
     /// the GLB, the walk keeps its upright cadence (before: 3.4 steps a second, 0.49 L each, on this walk in the sweep).

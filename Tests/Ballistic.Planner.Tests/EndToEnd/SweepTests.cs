@@ -215,7 +215,10 @@ public sealed class SweepTests
     /// failed was barred to walks instead of ending walking for the whole request (2026-12-06: three walks and five
     /// jumps, <see cref="QuerySettings.NoWalkSpots"/>); its new route turns 50° in place beside the wall before jumping
     /// through the door, and its right front foot, set down 0.31 L inward of its place and 15 cm from the wall, drifts
-    /// further inward as the trunk turns over it, to 0.62 L. The human rig, since its free hands hang at its sides
+    /// further inward as the trunk turns over it, to 0.62 L (0.51 L since a short walk's two half-cycles are split where
+    /// half its cost is reached, not at half its time, 2026-12-07: the turn in place is made first, and the group on
+    /// the start contacts held them until 99 % of it was made; see
+    /// <see cref="Animation.WalkGaitTests.ASpiderTurningInAShortWalkLetsGoOfItsStartContactsWhileItTurns"/>). The human rig, since its free hands hang at its sides
     /// standing instead of held out in its T-pose (<c>CharacterModel.HangingPose</c>, 2026-12-06), goes from one
     /// room's corner to the other's (request 3) in three walks after setting aside two, not two: its right hand swung
     /// 19.9° against its leg (the eye wants 20°) over the one stride of level ground of its second walk, which passes
