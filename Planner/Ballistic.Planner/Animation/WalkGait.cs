@@ -2402,9 +2402,11 @@ internal sealed class WalkGait
         /// as long as the feet that stay on the start contacts can hold them (half a cycle of cost at most), the last
         /// from when the feet can hold the end contacts (half a cycle at most); those between are even in cost, each
         /// at most one, none shorter than the least half-cycle (<see cref="MinHalfCycle"/>, shorter for short legs: <see cref="FullSizeLeg"/>).
-        /// Where the first and last leave less than a half-cycle between them, there are two, split where half the cost
-        /// is reached (a turn in place made first is half made there), each at least a half-cycle (or half the walk).
-        /// A walk shorter than two half-cycles, or costing at most one, is split at half its time.
+        /// Where the first and last, each kept to at least a half-cycle and to its half of the walk, would leave less
+        /// than a half-cycle between them (a short walk that is mostly a turn in place, made first), there are three
+        /// where they fit, the first and last half a cycle of cost long, drawn toward even in time as far as each needs
+        /// to last a half-cycle; else two, split where half the cost is reached. A walk shorter than two half-cycles,
+        /// or costing at most one, is split at half its time.
         /// </summary>
         private float[] Boundaries(int[] group, int first)
         {
@@ -2449,9 +2451,27 @@ internal sealed class WalkGait
             float span = lastStart - firstEnd;
             if (span < _halfCycle)
             {
-                // Two half-cycles, split even in cost: a short walk that is mostly a turn in place turns most of the
-                // way in its first half, and a group held on the start contacts until half its time drifts from under
-                // its hips (a spider's front foot, 0.6 m from its trunk's centre, 0.62 L as the trunk turned 23°).
+                // The first and last half-cycles would meet: a short walk that is mostly a turn in place, made first.
+                // Held on the start contacts until half its time, a group drifts from under its hips while the turn is
+                // made (a spider's front foot, 0.6 m from its trunk's centre, 0.62 L sideways as the trunk turned 23°).
+                // Where three half-cycles fit, the first ends and the last starts at half a cycle of cost from either
+                // end (as the feet can hold the start and end contacts), drawn toward even in time as far as needed for
+                // each to last a half-cycle; else two, split where half the cost is reached.
+                if (duration >= 3f * _halfCycle)
+                {
+                    float early = MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f)));
+                    float late = MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f)));
+                    for (float blend = 0f; ; blend = MathF.Min(1f, blend + 0.1f))
+                    {
+                        float[] three = [0f, float.Lerp(early, duration / 3f, blend), float.Lerp(late, 2f * duration / 3f, blend), duration];
+                        bool even = three[1] >= _halfCycle - 1e-4f && three[2] - three[1] >= _halfCycle - 1e-4f && duration - three[2] >= _halfCycle - 1e-4f;
+                        if (even || blend >= 1f)
+                        {
+                            return three;
+                        }
+                    }
+                }
+
                 float least = MathF.Min(_halfCycle, 0.5f * duration);
                 return [0f, Math.Clamp(TimeAtCost(0.5f * total), least, duration - least), duration];
             }

@@ -215,9 +215,10 @@ public sealed class SweepTests
     /// failed was barred to walks instead of ending walking for the whole request (2026-12-06: three walks and five
     /// jumps, <see cref="QuerySettings.NoWalkSpots"/>); its new route turns 50° in place beside the wall before jumping
     /// through the door, and its right front foot, set down 0.31 L inward of its place and 15 cm from the wall, drifts
-    /// further inward as the trunk turns over it, to 0.62 L (0.51 L since a short walk's two half-cycles are split where
-    /// half its cost is reached, not at half its time, 2026-12-07: the turn in place is made first, and the group on
-    /// the start contacts held them until 99 % of it was made; see
+    /// further inward as the trunk turns over it, to 0.62 L (off the list since a short walk that is mostly a turn in
+    /// place is stepped in three half-cycles where they fit, not two split at half its time: the turn is made first,
+    /// and the group on the start contacts held them until 99 % of it was made, 47 % now, the foot 0.27 L from its
+    /// place, 2026-12-07; see
     /// <see cref="Animation.WalkGaitTests.ASpiderTurningInAShortWalkLetsGoOfItsStartContactsWhileItTurns"/>). The human rig, since its free hands hang at its sides
     /// standing instead of held out in its T-pose (<c>CharacterModel.HangingPose</c>, 2026-12-06), goes from one
     /// room's corner to the other's (request 3) in three walks after setting aside two, not two: its right hand swung
@@ -229,7 +230,7 @@ public sealed class SweepTests
     private static readonly Dictionary<string, string[]> NotYetEveryPlan = new(StringComparer.Ordinal)
     {
         ["facing"] = ["foreign rig/curved/panda/1"],
-        ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2", "foreign rig/doorway/spider/1"],
+        ["under hips"] = ["foreign rig/curved/spider/1", "foreign rig/curved/spider/2"],
     };
 
     /// <summary>The animator's criteria every plan of the sweep must pass.</summary>
@@ -303,7 +304,16 @@ public sealed class SweepTests
             Assert.That(readme, Does.Contain(figures), "the README's sweep figures");
             Assert.That(readme.Contains(snapFigures, StringComparison.Ordinal), Is.True, $"the README says \"{snapFigures}\"");
             Assert.That(snapFrames, Is.LessThanOrEqualTo(MostSnapFrames), "snapping frames over the whole sweep");
+            Assert.That(readme.Contains(NotYetFigure(), StringComparison.Ordinal), Is.True, $"the README says \"{NotYetFigure()}\" (the plans not yet passing every criterion)");
         });
+    }
+
+    /// <summary>The README's count of the plans <see cref="NotYetEveryPlan"/> lists ("but three: `SweepTests.NotYetEveryPlan`").</summary>
+    private static string NotYetFigure()
+    {
+        int plans = NotYetEveryPlan.Values.SelectMany(p => p).Distinct(StringComparer.Ordinal).Count();
+        string[] words = ["none", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine"];
+        return $"but {(plans < words.Length ? words[plans] : plans.ToString(CultureInfo.InvariantCulture))}: `SweepTests.NotYetEveryPlan`";
     }
 
     private static (Sweep.Setup, (Vector3 From, Vector3 To)[]) Prepare(string kind, string levelName, string character)
