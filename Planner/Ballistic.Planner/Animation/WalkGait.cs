@@ -2446,8 +2446,13 @@ internal sealed class WalkGait
                 return [0f, 0.5f * duration, duration];
             }
 
-            float firstEnd = Math.Clamp(MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f))), _halfCycle, 0.5f * duration);
-            float lastStart = Math.Clamp(MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f))), 0.5f * duration, duration - _halfCycle);
+            // Half a cycle of cost from either end, as far as the feet can hold the start (end) contacts: probed once.
+            float halfIn = TimeAtCost(0.5f);
+            float halfOut = TimeAtCost(total - 0.5f);
+            float early = MathF.Min(halfIn, HoldUntil(group, 1 - first, halfIn));
+            float late = MathF.Max(halfOut, HoldFrom(halfOut));
+            float firstEnd = Math.Clamp(early, _halfCycle, 0.5f * duration);
+            float lastStart = Math.Clamp(late, 0.5f * duration, duration - _halfCycle);
             float span = lastStart - firstEnd;
             if (span < _halfCycle)
             {
@@ -2459,8 +2464,6 @@ internal sealed class WalkGait
                 // each to last a half-cycle; else two, split where half the cost is reached.
                 if (duration >= 3f * _halfCycle)
                 {
-                    float early = MathF.Min(TimeAtCost(0.5f), HoldUntil(group, 1 - first, TimeAtCost(0.5f)));
-                    float late = MathF.Max(TimeAtCost(total - 0.5f), HoldFrom(TimeAtCost(total - 0.5f)));
                     for (float blend = 0f; ; blend = MathF.Min(1f, blend + 0.1f))
                     {
                         float[] three = [0f, float.Lerp(early, duration / 3f, blend), float.Lerp(late, 2f * duration / 3f, blend), duration];
