@@ -163,7 +163,8 @@ internal static class CliCommands
         Option<string> locomotion = LocomotionOption();
         Option<double> jumpEffort = JumpEffortOption();
         Option<double> jumpHeightEffort = JumpHeightEffortOption();
-        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort };
+        Option<bool> refine = new("--refine") { Description = "When baking: once start and goal connect, bake on while the route jumps where a walk might cost less (a maze's wall walked round, not vaulted), up to --max-nodes." };
+        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort, refine };
         command.SetAction(parse => Guard(parse, () =>
         {
             string levelPath = parse.GetValue(level)!;
@@ -186,7 +187,13 @@ internal static class CliCommands
                 Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
                 JumpEffort = Effort(parse.GetValue(jumpEffort), "--jump-effort"),
                 JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
+                Refine = parse.GetValue(refine),
             };
+            if (pipeline.Refine && pipeline.RoadmapPath is not null)
+            {
+                throw new CliException("--refine bakes on from the request: it goes without --roadmap.");
+            }
+
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);
             if (glbPath is not null && !parse.GetValue(animate))

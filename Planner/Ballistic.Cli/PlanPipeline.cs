@@ -54,6 +54,9 @@ internal sealed class PlanPipeline
     /// <summary>Seconds of walking per metre of a jump's energy height (<see cref="QuerySettings.JumpHeightEffort"/>).</summary>
     public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
 
+    /// <summary>Bakes on past the first connection while a cheaper route may exist (<see cref="BakeSettings.Refine"/>); without a roadmap only.</summary>
+    public bool Refine { get; init; }
+
     /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }
 
@@ -86,7 +89,7 @@ internal sealed class PlanPipeline
         }
         else
         {
-            var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance, Locomotion = Locomotion };
+            var settings = new BakeSettings { Seed = Seed, Threads = Threads, MaxNodes = MaxNodes, TimeLimit = TimeLimit, Tolerance = Tolerance, Locomotion = Locomotion, Refine = Refine };
             ConsoleProgress progress = ConsoleProgress.For(error, MaxNodes);
             (plan, BakeResult bake) = planner.BakeAndPlan(From, To, settings, TerminationCondition.Cancellation(Cancellation), progress, Query());
             progress.Finish();

@@ -40,7 +40,10 @@ public sealed class AnimatedPlanner
     /// times, 9 hops), the roadmap is baked on the same way, with stances on the ground within a hop of an end raised
     /// above the other (<see cref="BakeSettings.ApproachRaisedEnds"/>), and the request planned again, as long as that
     /// shortens the route and the budget allows (the frog: 196 nodes, 2 hops, the straight distance; 5 hops on 392
-    /// nodes without the stances near the raised goal); the shortest exact plan is kept.
+    /// nodes without the stances near the raised goal); the shortest exact plan is kept. With
+    /// <see cref="BakeSettings.Refine"/>, a route that jumps where a walk might cost less (<see cref="Costly"/>) is baked on
+    /// the same way while that lowers its cost by <see cref="CheaperBy"/> at least, each larger roadmap searched before it
+    /// is animated (a search that finds nothing cheaper keeps the route found before).
     /// </summary>
     /// <param name="from">Requested start point, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
@@ -68,6 +71,7 @@ public sealed class AnimatedPlanner
         query = (query ?? new QuerySettings()) with { Tolerance = bake.Tolerance, Locomotion = bake.Locomotion };
         BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
         (AnimatedPlan Plan, BakeResult Bake, float Detour)? best = null;
+        BakeOn mode = BakeOn.Not;
         while (true)
         {
             if (result.Status is PlannerStatus.InvalidStart or PlannerStatus.InvalidGoal or PlannerStatus.Cancelled)
@@ -81,19 +85,32 @@ public sealed class AnimatedPlanner
                 return (new AnimatedPlan(failed, null, [], 0), result);
             }
 
+            if (mode == BakeOn.Cheaper && best is { } cheapest
+                && !(new PathQuery(_scene, result.Roadmap).Plan(from, to, Searched(query), rejected: null, termination) is { Status: PlannerStatus.Exact } searched && Cheaper(searched, cheapest.Plan.Result)))
+            {
+                // The larger roadmap's search finds nothing cheaper: the route found before is kept, not animated again.
+                return (cheapest.Plan, cheapest.Bake);
+            }
+
             AnimatedPlan plan = Plan(result.Roadmap, from, to, query, termination: termination);
             int nodes = result.Roadmap.Nodes.Count;
             if (plan.Result.Status == PlannerStatus.Exact)
             {
                 float detour = Detour(plan.Result);
-                if (best is { } before && detour >= before.Detour)
+                if (best is { } before && (mode == BakeOn.Cheaper ? !Cheaper(plan.Result, before.Plan.Result) : detour >= before.Detour))
                 {
-                    // Baking on did not shorten the route: the one found before is kept.
+                    // Baking on did not shorten (or cheapen) the route: the one found before is kept.
                     return (before.Plan, before.Bake);
                 }
 
+                if (best is null)
+                {
+                    mode = detour > DetourLimit ? BakeOn.Shorter : bake.Refine && Costly(plan.Result, bake.Locomotion) ? BakeOn.Cheaper : BakeOn.Not;
+                }
+
                 best = (plan, result, detour);
-                if (detour <= DetourLimit || nodes >= budget || result.Status != PlannerStatus.Exact)
+                bool again = mode == BakeOn.Shorter ? detour > DetourLimit : mode == BakeOn.Cheaper && Costly(plan.Result, bake.Locomotion);
+                if (!again || nodes >= budget || result.Status != PlannerStatus.Exact)
                 {
                     return (plan, result);
                 }
@@ -109,9 +126,53 @@ public sealed class AnimatedPlanner
             }
 
             int next = Math.Min(budget, Math.Max(64, 2 * nodes));
-            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next, ApproachRaisedEnds = best is not null }, termination, progress);
+            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next, ApproachRaisedEnds = mode == BakeOn.Shorter }, termination, progress);
         }
     }
+
+    /// <summary>Why <see cref="BakeAndPlan"/> bakes on after its first exact plan.</summary>
+    private enum BakeOn
+    {
+        /// <summary>It does not: the route neither wanders nor costs more than a walk could.</summary>
+        Not,
+
+        /// <summary>The route wanders (<see cref="DetourLimit"/>): baked on while that shortens it.</summary>
+        Shorter,
+
+        /// <summary>The route jumps and costs more than a walk could (<see cref="Costly"/>; <see cref="BakeSettings.Refine"/>): baked on while that cheapens it.</summary>
+        Cheaper,
+    }
+
+    /// <summary>The query settings <see cref="Plan"/> searches with, for a search made without animating.</summary>
+    private QuerySettings Searched(QuerySettings query) => query with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
+
+    /// <summary>
+    /// Whether a route that jumps costs more (<see cref="PlanResult.Cost"/>) than walking <see cref="DetourLimit"/>
+    /// times the straight distance between its ends would (at the character's walking speed, on surfaces of no extra
+    /// cost): a walk round might then be cheaper, and the first connection's roadmap, grown only until the start
+    /// reached the goal, holds none. A hedge maze's hedge vaulted on the first connection, though walking round its open
+    /// end costs less by the same costs, is such a route (informed sampling: a better route lies within what the best
+    /// one found costs).
+    /// </summary>
+    private bool Costly(PlanResult plan, Locomotion locomotion)
+    {
+        float speed = _scene.Character.Walking.Speed;
+        if (locomotion != Locomotion.WalkAndJump || !(speed > 0f) || plan.Jumps.Count == 0 || plan.Moves.Count == 0)
+        {
+            return false;
+        }
+
+        Vector3 a = plan.Moves[0].From.ContactCentre;
+        Vector3 b = plan.Moves[^1].To.ContactCentre;
+        float straight = MathF.Max(1f, new Vector2(b.X - a.X, b.Z - a.Z).Length());
+        return plan.Cost > DetourLimit * straight / speed;
+    }
+
+    /// <summary>Whether <paramref name="plan"/> costs at least <see cref="CheaperBy"/> less than <paramref name="than"/> (<see cref="PlanResult.Cost"/>).</summary>
+    private static bool Cheaper(PlanResult plan, PlanResult than) => plan.Cost < (1f - CheaperBy) * than.Cost;
+
+    /// <summary>The share (5 %) by which a route found by baking on must cost less than the one before to be taken instead (<see cref="BakeAndPlan"/>).</summary>
+    internal const float CheaperBy = 0.05f;
 
     /// <summary>
     /// Routes longer than this many times the straight distance between their ends (<see cref="Detour"/>) are planned

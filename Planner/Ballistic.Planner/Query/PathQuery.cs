@@ -657,7 +657,7 @@ public sealed class PathQuery
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : "")
                 + NoPathGap.Describe(_scene, _roadmap, start, goal, [.. _extra.Select(e => (e.From, e.To))], _walking, rejected), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement };
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement, Cost = path.Sum(CostOf) };
         yield return result with { Expansions = expansions };
     }
 

@@ -28,6 +28,12 @@ public sealed record PlanResult(PlannerStatus Status, string Reason, RoadmapNode
     /// </summary>
     public int Expansions { get; init; }
 
+    /// <summary>
+    /// The path's cost in the search that found it, seconds: walking time (times the surfaces' travel costs) plus each
+    /// jump's flight time and efforts (<see cref="QuerySettings.JumpCost(in Steering.BallisticArc)"/>); 0 when no path was found.
+    /// </summary>
+    internal float Cost { get; init; }
+
     /// <summary>The jump moves of <see cref="Moves"/>, in order.</summary>
     public IReadOnlyList<Jump> Jumps
     {
