@@ -167,6 +167,11 @@ internal static class CliCommands
         var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort, refine };
         command.SetAction(parse => Guard(parse, () =>
         {
+            if (parse.GetValue(refine) && parse.GetValue(roadmap) is not null)
+            {
+                throw new CliException("--refine bakes on from the request: it goes without --roadmap.");
+            }
+
             string levelPath = parse.GetValue(level)!;
             (ReducedCharacter reduced, CharacterModel model) = CliInputs.Character(parse.GetValue(character)!, parse.InvocationConfiguration.Error);
             var pipeline = new PlanPipeline
@@ -189,11 +194,6 @@ internal static class CliCommands
                 JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
                 Refine = parse.GetValue(refine),
             };
-            if (pipeline.Refine && pipeline.RoadmapPath is not null)
-            {
-                throw new CliException("--refine bakes on from the request: it goes without --roadmap.");
-            }
-
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);
             if (glbPath is not null && !parse.GetValue(animate))

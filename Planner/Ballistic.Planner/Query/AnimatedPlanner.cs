@@ -85,14 +85,15 @@ public sealed class AnimatedPlanner
                 return (new AnimatedPlan(failed, null, [], 0), result);
             }
 
+            var search = new PathQuery(_scene, result.Roadmap);
             if (mode == BakeOn.Cheaper && best is { } cheapest
-                && !(new PathQuery(_scene, result.Roadmap).Plan(from, to, Searched(query), rejected: null, termination) is { Status: PlannerStatus.Exact } searched && Cheaper(searched, cheapest.Plan.Result)))
+                && !(search.Plan(from, to, Searched(query), rejected: null, termination) is { Status: PlannerStatus.Exact } searched && Cheaper(searched, cheapest.Plan.Result)))
             {
                 // The larger roadmap's search finds nothing cheaper: the route found before is kept, not animated again.
                 return (cheapest.Plan, cheapest.Bake);
             }
 
-            AnimatedPlan plan = Plan(result.Roadmap, from, to, query, termination: termination);
+            AnimatedPlan plan = PlanOn(search, from, to, query, DefaultRounds, 60f, termination);
             int nodes = result.Roadmap.Nodes.Count;
             if (plan.Result.Status == PlannerStatus.Exact)
             {
@@ -143,7 +144,7 @@ public sealed class AnimatedPlanner
         Cheaper,
     }
 
-    /// <summary>The query settings <see cref="Plan"/> searches with, for a search made without animating.</summary>
+    /// <summary>The query settings a plan searches with: the animator's checks of where the body can stand and push.</summary>
     private QuerySettings Searched(QuerySettings query) => query with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
 
     /// <summary>
@@ -162,10 +163,7 @@ public sealed class AnimatedPlanner
             return false;
         }
 
-        Vector3 a = plan.Moves[0].From.ContactCentre;
-        Vector3 b = plan.Moves[^1].To.ContactCentre;
-        float straight = MathF.Max(1f, new Vector2(b.X - a.X, b.Z - a.Z).Length());
-        return plan.Cost > DetourLimit * straight / speed;
+        return plan.Cost > DetourLimit * Straight(plan) / speed;
     }
 
     /// <summary>Whether <paramref name="plan"/> costs at least <see cref="CheaperBy"/> less than <paramref name="than"/> (<see cref="PlanResult.Cost"/>).</summary>
@@ -192,7 +190,6 @@ public sealed class AnimatedPlanner
             return 1f;
         }
 
-        static float Across(Vector3 a, Vector3 b) => new Vector2(b.X - a.X, b.Z - a.Z).Length();
         float run = 0f;
         foreach (Move move in plan.Moves)
         {
@@ -209,9 +206,14 @@ public sealed class AnimatedPlanner
             }
         }
 
-        float straight = MathF.Max(1f, Across(plan.Moves[0].From.ContactCentre, plan.Moves[^1].To.ContactCentre));
-        return run / straight;
+        return run / Straight(plan);
     }
+
+    /// <summary>The distance (metres, on the ground plane, at least 1 m) between the contact centres of <paramref name="plan"/>'s first and last stances.</summary>
+    private static float Straight(PlanResult plan) => MathF.Max(1f, Across(plan.Moves[0].From.ContactCentre, plan.Moves[^1].To.ContactCentre));
+
+    /// <summary>The distance (metres) from <paramref name="a"/> to <paramref name="b"/> on the ground plane.</summary>
+    private static float Across(Vector3 a, Vector3 b) => new Vector2(b.X - a.X, b.Z - a.Z).Length();
 
     /// <summary>Plans from <paramref name="from"/> to <paramref name="to"/> (world metres) on <paramref name="roadmap"/> and animates the path.</summary>
     /// <param name="roadmap">A roadmap baked for the scene's level and character.</param>
@@ -229,9 +231,14 @@ public sealed class AnimatedPlanner
     public AnimatedPlan Plan(Roadmap roadmap, Vector3 from, Vector3 to, QuerySettings? settings = null, int rounds = DefaultRounds, float frameRate = 60f, TerminationCondition? termination = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(rounds, 1);
-        var query = new PathQuery(_scene, roadmap);
-        settings = (settings ?? new QuerySettings()) with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
-        var repair = new JumpRepair(roadmap.Nodes.Count + 2);
+        return PlanOn(new PathQuery(_scene, roadmap), from, to, settings ?? new QuerySettings(), rounds, frameRate, termination);
+    }
+
+    /// <summary><see cref="Plan(Roadmap, Vector3, Vector3, QuerySettings?, int, float, TerminationCondition?)"/> on <paramref name="query"/> (one that may have searched the same roadmap before: <see cref="BakeAndPlan"/>'s refining search).</summary>
+    private AnimatedPlan PlanOn(PathQuery query, Vector3 from, Vector3 to, QuerySettings settings, int rounds, float frameRate, TerminationCondition? termination)
+    {
+        settings = Searched(settings);
+        var repair = new JumpRepair(query.Roadmap.Nodes.Count + 2);
         using var job = new PlanJob((r, stop) => query.PlanSteps(from, to, r.Adjust(settings), r.Excluded, stop), Animator, repair, rounds, frameRate) { Termination = termination };
         (PlanResult result, JumpAnimation? animation, int round) = job.Run();
         return new AnimatedPlan(result, animation, repair.SetAside, round);

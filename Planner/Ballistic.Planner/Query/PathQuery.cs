@@ -595,7 +595,7 @@ public sealed class PathQuery
             yield break;
         }
 
-        float searched = path?.Sum(CostOf) ?? 0f;
+        float searched = path is null ? 0f : CostOf(path);
         var finished = new Finished();
         foreach (bool _ in Finish(path, start, goal, settings, rejected, termination, clock, finished))
         {
@@ -621,7 +621,7 @@ public sealed class PathQuery
 
                 List<Move>? other = research.Path;
                 expansions += research.Expansions;
-                if (research.Cut is not null || _lostWalk is not null || other is null || other.Sum(CostOf) > FacingDetour * searched)
+                if (research.Cut is not null || _lostWalk is not null || other is null || CostOf(other) > FacingDetour * searched)
                 {
                     break;
                 }
@@ -657,7 +657,7 @@ public sealed class PathQuery
         PlanResult result = path is null
             ? Fail(PlannerStatus.NoPath, $"the roadmap ({holds}) holds no sequence of {moves} from the start to the goal" + (rejected is { Count: > 0 } ? $" without the {Moves(rejected.Count)} set aside" : "")
                 + NoPathGap.Describe(_scene, _roadmap, start, goal, [.. _extra.Select(e => (e.From, e.To))], _walking, rejected), start, goal, clock)
-            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement, Cost = path.Sum(CostOf) };
+            : new PlanResult(PlannerStatus.Exact, $"{Describe(path)} found", start, goal, path, clock.Elapsed) { StartPlacement = startPlacement, GoalPlacement = goalPlacement, Cost = CostOf(path) };
         yield return result with { Expansions = expansions };
     }
 
@@ -1257,6 +1257,18 @@ public sealed class PathQuery
     }
 
     /// <summary>A move's cost in the search, seconds: a walk's length over its speed, a jump's flight time plus the effort.</summary>
+    /// <summary>What <paramref name="path"/> costs in this search, seconds (<see cref="CostOf(Move)"/> of each move).</summary>
+    private float CostOf(List<Move> path)
+    {
+        float cost = 0f;
+        foreach (Move move in path)
+        {
+            cost += CostOf(move);
+        }
+
+        return cost;
+    }
+
     private float CostOf(Move move) => move is Jump jump ? JumpCost(jump.From, jump.To, jump.Arc) : WalkCost((Walk)move);
 
     /// <summary>A jump's cost in this search, seconds: its flight time, plus (walking allowed) the efforts of <see cref="QuerySettings.JumpCost(in BallisticArc, float, float)"/>.</summary>
