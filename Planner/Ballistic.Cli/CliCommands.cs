@@ -163,13 +163,13 @@ internal static class CliCommands
         Option<string> locomotion = LocomotionOption();
         Option<double> jumpEffort = JumpEffortOption();
         Option<double> jumpHeightEffort = JumpHeightEffortOption();
-        Option<bool> refine = new("--refine") { Description = "When baking: once start and goal connect, bake on while the route jumps where a walk might cost less (a maze's wall walked round, not vaulted), up to --max-nodes." };
-        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort, refine };
+        Option<bool> noRefine = new("--no-refine") { Description = "When baking: plan on the roadmap as it stands when start and goal first connect, not baked on while the route jumps where a walk might cost less (without it, a maze's wall is walked round, not vaulted)." };
+        var command = new Command("plan", "Plan walks and jumps from one point to another, animate the whole body and write a report.") { level, character, roadmap, from, to, seed, threads, maxNodes, timeLimit, report, svg, animate, glb, tolerance, locomotion, jumpEffort, jumpHeightEffort, noRefine };
         command.SetAction(parse => Guard(parse, () =>
         {
-            if (parse.GetValue(refine) && parse.GetValue(roadmap) is not null)
+            if (parse.GetValue(noRefine) && parse.GetValue(roadmap) is not null)
             {
-                throw new CliException("--refine bakes on from the request: it goes without --roadmap.");
+                throw new CliException("--no-refine is about baking from the request: it goes without --roadmap.");
             }
 
             string levelPath = parse.GetValue(level)!;
@@ -192,7 +192,7 @@ internal static class CliCommands
                 Locomotion = ParseLocomotion(parse.GetValue(locomotion)!),
                 JumpEffort = Effort(parse.GetValue(jumpEffort), "--jump-effort"),
                 JumpHeightEffort = Effort(parse.GetValue(jumpHeightEffort), "--jump-height-effort", "seconds per metre"),
-                Refine = parse.GetValue(refine),
+                Refine = !parse.GetValue(noRefine),
             };
             string reportPath = parse.GetValue(report)!;
             string? glbPath = parse.GetValue(glb);

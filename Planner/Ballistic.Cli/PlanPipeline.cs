@@ -54,8 +54,8 @@ internal sealed class PlanPipeline
     /// <summary>Seconds of walking per metre of a jump's energy height (<see cref="QuerySettings.JumpHeightEffort"/>).</summary>
     public float JumpHeightEffort { get; init; } = QuerySettings.DefaultJumpHeightEffort;
 
-    /// <summary>Bakes on past the first connection while a cheaper route may exist (<see cref="BakeSettings.Refine"/>); without a roadmap only.</summary>
-    public bool Refine { get; init; }
+    /// <summary>Bakes on past the first connection while a cheaper route may exist (<see cref="BakeSettings.Refine"/>; <c>true</c> by default); without a roadmap only.</summary>
+    public bool Refine { get; init; } = true;
 
     /// <summary>Cancels the bake or the plan (Ctrl-C, SIGTERM): the report then has status cancelled.</summary>
     public CancellationToken Cancellation { get; init; }

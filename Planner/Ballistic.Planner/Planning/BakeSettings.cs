@@ -47,15 +47,15 @@ public sealed record BakeSettings
 
     /// <summary>
     /// For <see cref="Query.AnimatedPlanner.BakeAndPlan"/> only: once the start reaches the goal, bake on (to twice the
-    /// nodes, up to <see cref="MaxNodes"/>) and search again while the route jumps and costs (walking seconds, jump
-    /// efforts included) more than walking 1.5 times the straight distance between its ends would, keeping a route only
-    /// when it costs at least 5 % less. A bake that stops at the first connection holds no walk round what that
-    /// connection jumps: a maze's hedge is vaulted whatever jump effort is set; refined, the skeleton walks round it.
-    /// Off by default: a route refined this way costs less by the search's costs but has not been through the
-    /// animator's checks every default route has. A roadmap baked for the whole level (<see cref="StopWhenConnected"/>
-    /// off, as the editor bakes one) needs none of this.
+    /// nodes, up to <see cref="MaxNodes"/>) while the searched route jumps and costs (walking seconds, jump efforts
+    /// included) more than walking 1.5 times the straight distance between its ends would, keeping a larger roadmap only
+    /// when its route costs at least 5 % less; the route kept is then animated. A bake that stops at the first
+    /// connection holds no walk round what that connection jumps: a maze's hedge would be vaulted whatever jump effort is
+    /// set; refined, the skeleton walks round it. <c>true</c> by default; <c>false</c> plans on the first connection's
+    /// roadmap. A roadmap baked for the whole level (<see cref="StopWhenConnected"/> off, as the editor bakes one) needs
+    /// none of this.
     /// </summary>
-    public bool Refine { get; init; }
+    public bool Refine { get; init; } = true;
 
     /// <summary>
     /// With a start and a goal: sample a corridor between them first, widening it as it fills, then the whole level

@@ -40,10 +40,11 @@ public sealed class AnimatedPlanner
     /// times, 9 hops), the roadmap is baked on the same way, with stances on the ground within a hop of an end raised
     /// above the other (<see cref="BakeSettings.ApproachRaisedEnds"/>), and the request planned again, as long as that
     /// shortens the route and the budget allows (the frog: 196 nodes, 2 hops, the straight distance; 5 hops on 392
-    /// nodes without the stances near the raised goal); the shortest exact plan is kept. With
-    /// <see cref="BakeSettings.Refine"/>, a route that jumps where a walk might cost less (<see cref="Costly"/>) is baked on
-    /// the same way while that lowers its cost by <see cref="CheaperBy"/> at least, each larger roadmap searched before it
-    /// is animated (a search that finds nothing cheaper keeps the route found before).
+    /// nodes without the stances near the raised goal); the shortest exact plan is kept. Before any of this, with
+    /// <see cref="BakeSettings.Refine"/> (the default), a first connection whose route jumps where a walk might cost less
+    /// (<see cref="Costly"/>) is baked on the same way while each larger roadmap's route, searched but not animated,
+    /// costs at least <see cref="CheaperBy"/> less (a hedge vaulted on the first connection, walked round on 64 nodes);
+    /// the cheapest roadmap's route is then animated and repaired as above.
     /// </summary>
     /// <param name="from">Requested start point, world metres.</param>
     /// <param name="to">Requested goal point, world metres.</param>
@@ -70,8 +71,15 @@ public sealed class AnimatedPlanner
         bake = bake with { CanStand = Animator.CanStand };
         query = (query ?? new QuerySettings()) with { Tolerance = bake.Tolerance, Locomotion = bake.Locomotion };
         BakeResult result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = true }, termination, progress);
+        PathQuery? refined = null;
+        (BakeResult Bake, PathQuery Search, float Cost)? unrefined = null;
+        if (bake.Refine)
+        {
+            (result, refined, unrefined) = Refined(baker, result, from, to, bake, budget, query, termination, progress);
+        }
+
         (AnimatedPlan Plan, BakeResult Bake, float Detour)? best = null;
-        BakeOn mode = BakeOn.Not;
+        bool shorter = false;
         while (true)
         {
             if (result.Status is PlannerStatus.InvalidStart or PlannerStatus.InvalidGoal or PlannerStatus.Cancelled)
@@ -85,33 +93,33 @@ public sealed class AnimatedPlanner
                 return (new AnimatedPlan(failed, null, [], 0), result);
             }
 
-            var search = new PathQuery(_scene, result.Roadmap);
-            if (mode == BakeOn.Cheaper && best is { } cheapest
-                && !(search.Plan(from, to, Searched(query), rejected: null, termination) is { Status: PlannerStatus.Exact } searched && Cheaper(searched, cheapest.Plan.Result)))
+            AnimatedPlan plan = PlanOn(refined ?? new PathQuery(_scene, result.Roadmap), from, to, query, DefaultRounds, 60f, termination);
+            refined = null;
+            if (unrefined is { } first && plan.Result.Status is not (PlannerStatus.Cancelled or PlannerStatus.Timeout) && !(plan.Result.Status == PlannerStatus.Exact && plan.Result.Cost < first.Cost))
             {
-                // The larger roadmap's search finds nothing cheaper: the route found before is kept, not animated again.
-                return (cheapest.Plan, cheapest.Bake);
+                // The refined roadmap's route lost what it saved in repair (its walks set aside for jumps): the first
+                // connection's route is animated too, and the cheaper exact plan kept (the first at an equal cost).
+                AnimatedPlan firstPlan = PlanOn(first.Search, from, to, query, DefaultRounds, 60f, termination);
+                if (firstPlan.Result.Status == PlannerStatus.Exact && (plan.Result.Status != PlannerStatus.Exact || firstPlan.Result.Cost <= plan.Result.Cost))
+                {
+                    (plan, result) = (firstPlan, first.Bake);
+                }
             }
 
-            AnimatedPlan plan = PlanOn(search, from, to, query, DefaultRounds, 60f, termination);
+            unrefined = null;
             int nodes = result.Roadmap.Nodes.Count;
             if (plan.Result.Status == PlannerStatus.Exact)
             {
                 float detour = Detour(plan.Result);
-                if (best is { } before && (mode == BakeOn.Cheaper ? !Cheaper(plan.Result, before.Plan.Result) : detour >= before.Detour))
+                if (best is { } before && detour >= before.Detour)
                 {
-                    // Baking on did not shorten (or cheapen) the route: the one found before is kept.
+                    // Baking on did not shorten the route: the one found before is kept.
                     return (before.Plan, before.Bake);
                 }
 
-                if (best is null)
-                {
-                    mode = detour > DetourLimit ? BakeOn.Shorter : bake.Refine && Costly(plan.Result, bake.Locomotion) ? BakeOn.Cheaper : BakeOn.Not;
-                }
-
+                shorter |= best is null && detour > DetourLimit;
                 best = (plan, result, detour);
-                bool again = mode == BakeOn.Shorter ? detour > DetourLimit : mode == BakeOn.Cheaper && Costly(plan.Result, bake.Locomotion);
-                if (!again || nodes >= budget || result.Status != PlannerStatus.Exact)
+                if (!shorter || detour <= DetourLimit || nodes >= budget || result.Status != PlannerStatus.Exact)
                 {
                     return (plan, result);
                 }
@@ -127,21 +135,49 @@ public sealed class AnimatedPlanner
             }
 
             int next = Math.Min(budget, Math.Max(64, 2 * nodes));
-            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next, ApproachRaisedEnds = mode == BakeOn.Shorter }, termination, progress);
+            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next, ApproachRaisedEnds = shorter }, termination, progress);
         }
     }
 
-    /// <summary>Why <see cref="BakeAndPlan"/> bakes on after its first exact plan.</summary>
-    private enum BakeOn
+    /// <summary>
+    /// <see cref="BakeSettings.Refine"/>: the roadmap <paramref name="connected"/> (baked until the start reached the
+    /// goal), or one baked on from it while its searched route jumps and costs more than a walk could
+    /// (<see cref="Costly"/>) and each larger roadmap's route costs at least <see cref="CheaperBy"/> less (twice the
+    /// nodes each time, up to <paramref name="budget"/>); with the query that searched the roadmap kept, for its plan to
+    /// reuse, and, when a larger roadmap was kept, the first connection with its query and its route's cost (for
+    /// <see cref="BakeAndPlan"/> to fall back on when the cheaper route does not animate as cheaply). Routes are only
+    /// searched here, never animated.
+    /// </summary>
+    private (BakeResult Bake, PathQuery? Search, (BakeResult Bake, PathQuery Search, float Cost)? First) Refined(RoadmapBaker baker, BakeResult connected, Vector3 from, Vector3 to, BakeSettings bake, int budget, QuerySettings query, TerminationCondition? termination, IProgress<BakeState>? progress)
     {
-        /// <summary>It does not: the route neither wanders nor costs more than a walk could.</summary>
-        Not,
+        if (connected.Status != PlannerStatus.Exact || bake.Locomotion != Locomotion.WalkAndJump)
+        {
+            return (connected, null, null);
+        }
 
-        /// <summary>The route wanders (<see cref="DetourLimit"/>): baked on while that shortens it.</summary>
-        Shorter,
+        var search = new PathQuery(_scene, connected.Roadmap);
+        PlanResult route = search.Plan(from, to, Searched(query), rejected: null, termination);
+        (BakeResult, PathQuery, float) first = (connected, search, route.Cost);
+        while (route.Status == PlannerStatus.Exact && Costly(route) && connected.Roadmap.Nodes.Count < budget)
+        {
+            int next = Math.Min(budget, Math.Max(64, 2 * connected.Roadmap.Nodes.Count));
+            BakeResult larger = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next }, termination, progress);
+            if (larger.Status != PlannerStatus.Exact)
+            {
+                break;
+            }
 
-        /// <summary>The route jumps and costs more than a walk could (<see cref="Costly"/>; <see cref="BakeSettings.Refine"/>): baked on while that cheapens it.</summary>
-        Cheaper,
+            var largerSearch = new PathQuery(_scene, larger.Roadmap);
+            PlanResult cheaper = largerSearch.Plan(from, to, Searched(query), rejected: null, termination);
+            if (cheaper.Status != PlannerStatus.Exact || !Cheaper(cheaper, route))
+            {
+                break;
+            }
+
+            (connected, search, route) = (larger, largerSearch, cheaper);
+        }
+
+        return (connected, search, ReferenceEquals(search, first.Item2) ? null : first);
     }
 
     /// <summary>The query settings a plan searches with: the animator's checks of where the body can stand and push.</summary>
@@ -155,10 +191,10 @@ public sealed class AnimatedPlanner
     /// end costs less by the same costs, is such a route (informed sampling: a better route lies within what the best
     /// one found costs).
     /// </summary>
-    private bool Costly(PlanResult plan, Locomotion locomotion)
+    private bool Costly(PlanResult plan)
     {
         float speed = _scene.Character.Walking.Speed;
-        if (locomotion != Locomotion.WalkAndJump || !(speed > 0f) || plan.Jumps.Count == 0 || plan.Moves.Count == 0)
+        if (!(speed > 0f) || plan.Jumps.Count == 0 || plan.Moves.Count == 0)
         {
             return false;
         }

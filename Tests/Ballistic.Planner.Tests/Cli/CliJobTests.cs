@@ -326,7 +326,7 @@ public sealed class CliJobTests
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-height-effort", "-1"], "--jump-height-effort takes 0 to 3600 seconds per metre, not -1"),
             (["plan", "--level", level, "--character", "skeleton", "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--jump-effort", "lots"], "--jump-effort takes a number"),
             (["playtest", "--level", level, "--character", "skeleton", "--out", _folder, "--jump-effort", "1e9"], "--jump-effort takes 0 to 3600 seconds"),
-            (["plan", "--level", level, "--character", "skeleton", "--roadmap", Path.Combine(_folder, "x.roadmap"), "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--refine"], "--refine bakes on from the request: it goes without --roadmap."),
+            (["plan", "--level", level, "--character", "skeleton", "--roadmap", Path.Combine(_folder, "x.roadmap"), "--from", "-6,0,0", "--to", "11.5,1,0", "--report", report, "--no-refine"], "--no-refine is about baking from the request: it goes without --roadmap."),
         };
         foreach ((string[] args, string expected) in cases)
         {

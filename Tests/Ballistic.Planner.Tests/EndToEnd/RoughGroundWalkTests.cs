@@ -1,5 +1,7 @@
 using System.Numerics;
 using Ballistic.Planner.Levels;
+using Ballistic.Planner.Planning;
+using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
 using Ballistic.Planner.Tests.Support;
 
@@ -19,7 +21,10 @@ public sealed class RoughGroundWalkTests
     {
         (Level level, (Vector3 From, Vector3 To)[] requests) = ForeignLevels.Get("holes-debris");
         Sweep.Setup setup = Sweep.Prepare("holes-debris", level, "skeleton");
-        Sweep.Planned planned = Sweep.Plan(setup, requests[2].From, requests[2].To);
+        // Planned on the first connection's roadmap (not refined): baked on, the request walks elsewhere, off the rubble.
+        (Vector3 from, Vector3 to) = requests[2];
+        (AnimatedPlan plan, _) = setup.Planner.BakeAndPlan(from, to, new BakeSettings { Seed = 1, Threads = 2, MaxNodes = 600, Refine = false });
+        Sweep.Planned planned = Sweep.Audit(setup, from, to, plan);
         Assert.That(planned.Report.FullyRight, Is.True, planned.Report.ToString());
 
         // The plan's moves are those animated (PlanJob): the slowed walk, whose time the animation takes.

@@ -1,15 +1,17 @@
 using System.Numerics;
+using Ballistic.Planner.Animation;
 using Ballistic.Planner.Planning;
 using Ballistic.Planner.Query;
 using Ballistic.Planner.Roadmaps;
+using Ballistic.Planner.Tests.Runtime;
 using Ballistic.Planner.Tests.Support;
 
 namespace Ballistic.Planner.Tests.Query;
 
 /// <summary>
 /// A route found on the first connection's roadmap may jump where a walk would cost less, the walk never sampled
-/// because the bake stopped as soon as the start reached the goal: with <see cref="BakeSettings.Refine"/>,
-/// <see cref="AnimatedPlanner.BakeAndPlan"/> bakes on and searches again while the route jumps and costs more than
+/// because the bake stopped as soon as the start reached the goal: with <see cref="BakeSettings.Refine"/> (the
+/// default), <see cref="AnimatedPlanner.BakeAndPlan"/> bakes on and searches again while the route jumps and costs more than
 /// walking <see cref="AnimatedPlanner.DetourLimit"/> times the straight distance would, and keeps a route only when it
 /// costs at least <see cref="AnimatedPlanner.CheaperBy"/> less (issue 24: the skeleton vaulted a maze's 0.8 m hedges
 /// instead of walking round their ends, whatever jump effort a designer set).
@@ -19,7 +21,7 @@ public sealed class CostlyRouteTests
 {
     private static readonly Lazy<Sweep.Setup> MazeSkeleton = new(() => Sweep.Prepare("maze", ForeignLevels.Get("maze").Level, "skeleton"));
 
-    private static readonly BakeSettings Settings = new() { Seed = 1, Threads = 2, MaxNodes = 600, Refine = true };
+    private static readonly BakeSettings Settings = new() { Seed = 1, Threads = 2, MaxNodes = 600 };
 
     /// <summary>Whether <paramref name="move"/> is a jump across the hedge at x = −4 m (open to the south of z = −3 m).</summary>
     private static bool Vaults(Move move) => move is Jump jump && (jump.Arc.Start.X + 4f) * (jump.Arc.End.X + 4f) < 0f;
@@ -81,7 +83,7 @@ public sealed class CostlyRouteTests
         });
     }
 
-    /// <summary>Not refined (the default), the same request keeps the first connection's vault, on its roadmap.</summary>
+    /// <summary>Not refined (<see cref="BakeSettings.Refine"/> off), the same request keeps the first connection's vault, on its roadmap.</summary>
     [Test]
     public void UnrefinedTheFirstConnectionsRouteIsKept()
     {
@@ -115,6 +117,28 @@ public sealed class CostlyRouteTests
         {
             Assert.That(plan.Result.Moves.Any(Vaults), Is.True, "it vaults the hedge");
             Assert.That(bake.Roadmap.Nodes.Count, Is.EqualTo(first.Roadmap.Nodes.Count), "the first connection's roadmap");
+        });
+    }
+
+    /// <summary>
+    /// The refined roadmap's route (3 walks round the hedge) is searched but may not animate: with every move but a jump
+    /// across the hedge refused, its walks are set aside and its repair ends on a vault, no cheaper than the first
+    /// connection's; that route is animated too and kept, on its own roadmap (the smaller one, at an equal cost).
+    /// </summary>
+    [Test]
+    public void ARefinedRouteTheBodyCannotPerformFallsBackToTheFirstConnectionsRoute()
+    {
+        Sweep.Setup setup = MazeSkeleton.Value;
+        (Vector3 from, Vector3 to) = ForeignLevels.Get("maze").Requests[0];
+        var animator = new RefusingAnimator(new SimpleMoveAnimator((JumpAnimator)setup.Planner.Animator), m => !Vaults(m), "cannot move here");
+        (AnimatedPlan plan, BakeResult bake) = new AnimatedPlanner(setup.Scene, animator).BakeAndPlan(from, to, Settings);
+        TestContext.Out.WriteLine($"{bake.Roadmap.Nodes.Count} nodes, {plan.Result.Reason}, {animator.PathsRefused} paths refused, {plan.Rounds} rounds");
+        Assert.That(plan.Result.Status, Is.EqualTo(PlannerStatus.Exact), plan.Result.Reason);
+        Assert.Multiple(() =>
+        {
+            Assert.That(plan.Result.Moves, Has.Count.EqualTo(1).And.All.Matches<Move>(Vaults), "the first connection's vault");
+            Assert.That(animator.PathsRefused, Is.GreaterThan(0), "the refined route was animated first, and refused");
+            Assert.That(bake.Roadmap.Nodes, Has.Count.EqualTo(2), "on the first connection's roadmap");
         });
     }
 }
