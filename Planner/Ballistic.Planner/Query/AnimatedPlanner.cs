@@ -134,8 +134,7 @@ public sealed class AnimatedPlanner
                 return (plan, result);
             }
 
-            int next = Math.Min(budget, Math.Max(64, 2 * nodes));
-            result = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next, ApproachRaisedEnds = shorter }, termination, progress);
+            result = BakeOn(baker, bake with { ApproachRaisedEnds = shorter }, from, to, nodes, budget, termination, progress);
         }
     }
 
@@ -157,11 +156,10 @@ public sealed class AnimatedPlanner
 
         var search = new PathQuery(_scene, connected.Roadmap);
         PlanResult route = search.Plan(from, to, Searched(query), rejected: null, termination);
-        (BakeResult, PathQuery, float) first = (connected, search, route.Cost);
+        (BakeResult Bake, PathQuery Search, float Cost) first = (connected, search, route.Cost);
         while (route.Status == PlannerStatus.Exact && Costly(route) && connected.Roadmap.Nodes.Count < budget)
         {
-            int next = Math.Min(budget, Math.Max(64, 2 * connected.Roadmap.Nodes.Count));
-            BakeResult larger = baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = next }, termination, progress);
+            BakeResult larger = BakeOn(baker, bake, from, to, connected.Roadmap.Nodes.Count, budget, termination, progress);
             if (larger.Status != PlannerStatus.Exact)
             {
                 break;
@@ -177,8 +175,15 @@ public sealed class AnimatedPlanner
             (connected, search, route) = (larger, largerSearch, cheaper);
         }
 
-        return (connected, search, ReferenceEquals(search, first.Item2) ? null : first);
+        return (connected, search, ReferenceEquals(search, first.Search) ? null : first);
     }
+
+    /// <summary>
+    /// The roadmap for the request baked on past <paramref name="nodes"/> (the same seed: it holds the smaller one), to
+    /// twice the nodes, at least 64, at most <paramref name="budget"/>.
+    /// </summary>
+    private static BakeResult BakeOn(RoadmapBaker baker, BakeSettings bake, Vector3 from, Vector3 to, int nodes, int budget, TerminationCondition? termination, IProgress<BakeState>? progress) =>
+        baker.Bake(bake with { Start = from, Goal = to, StopWhenConnected = false, MaxNodes = Math.Min(budget, Math.Max(64, 2 * nodes)) }, termination, progress);
 
     /// <summary>The query settings a plan searches with: the animator's checks of where the body can stand and push.</summary>
     private QuerySettings Searched(QuerySettings query) => query with { CanStand = Animator.CanStand, CanPush = Animator.CanPush };
